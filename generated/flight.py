@@ -1,0 +1,155 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/flight.py
+# Template:  derive/templates/kernels.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# ----------------------------------------------------------------------------------------------
+"""Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+NAN = math.nan
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+
+
+@njit(cache=True)
+def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).
+
+    Report equations: sec2.1-touchdown, sec2.2.2.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground [m]
+        b_xd_apex: horizontal apex speed [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive [rad]
+        q_r_td: touchdown leg length [m]
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+
+    Returns a tuple:
+        td_q_r: touchdown leg length [m]
+        td_q_rd: touchdown leg length rate [m/s]
+        td_q_th: touchdown leg angle [rad]
+        td_q_thd: touchdown leg angle rate [rad/s]
+        t_flight: time from apex to touchdown [s]
+        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+    """
+    # Total ops: 24
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not ((b_y_apex > 0.0) and (g_f > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    drop = b_y_apex - q_r_td*math.cos(q_th_td)
+    # touchdown height below apex
+    if not (True):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+    # touchdown state from the derived Cartesian -> polar map
+    _x0 = math.sin(q_th_td)
+    _x1 = math.cos(q_th_td)
+    _x2 = math.sqrt(g_f)
+    _x3 = math.sqrt(2.0)
+    _x4 = math.sqrt(drop)
+    _x5 = _x3*_x4
+    td_q_r = q_r_td
+    td_q_rd = -_x0*b_xd_apex - _x1*_x2*_x5
+    td_q_th = q_th_td
+    td_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
+    t_flight = _x5/_x2
+    return (td_q_r, td_q_rd, td_q_th, td_q_thd, t_flight, STATUS_OK)
+
+
+@njit(cache=True, parallel=True)
+def apex_to_touchdown_batch(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, out, status):
+    """Parallel batch form of :func:`apex_to_touchdown` over 1-D float64 arrays of equal length.
+
+    Writes output j of element i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Column order: td_q_r, td_q_rd, td_q_th, td_q_thd, t_flight.
+    """
+    for i in prange(out.shape[0]):
+        res = apex_to_touchdown(b_y_apex[i], b_xd_apex[i], q_th_td[i], q_r_td[i], g_f[i])
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True)
+def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
+    """Ballistic ascent from a polar liftoff state to the next apex.
+
+    Report equations: sec2.1-apex, sec2.2.2.
+
+    Arguments:
+        q_r: leg length q_r [m]
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+
+    Returns a tuple:
+        apex_b_y: next apex height above the ground [m]
+        apex_b_xd: next apex horizontal speed [m/s]
+        t_flight: time from liftoff to the apex [s]
+        dx_flight: horizontal distance travelled from liftoff to the apex [m]
+        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+    """
+    # Total ops: 19
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f)):
+        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not ((g_f > 0.0) and (q_r > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # Cartesian liftoff state relative to the toe
+    _x0 = math.sin(q_th)
+    _x1 = _x0*q_r
+    _x2 = math.cos(q_th)
+    _x3 = _x2*q_r
+    b_x = -_x1
+    b_xd = -_x0*q_rd - _x3*q_thd
+    b_y = _x3
+    b_yd = -_x1*q_thd + _x2*q_rd
+    # liftoff requires an upward velocity
+    if not ((b_yd > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+    # the runner moves in +x
+    if not ((b_xd > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+    # apex where b_yd(t) = 0
+    _x4 = (1.0/g_f)
+    _x5 = _x4*b_yd
+    apex_b_y = (0.5)*_x4*b_yd**2 + b_y
+    apex_b_xd = b_xd
+    t_flight = _x5
+    dx_flight = _x5*b_xd
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, STATUS_OK)
+
+
+@njit(cache=True, parallel=True)
+def liftoff_to_apex_batch(q_r, q_rd, q_th, q_thd, g_f, out, status):
+    """Parallel batch form of :func:`liftoff_to_apex` over 1-D float64 arrays of equal length.
+
+    Writes output j of element i to ``out[i, j]`` (shape (n, 4)) and its status code to
+    ``status[i]`` (int64). Column order: apex_b_y, apex_b_xd, t_flight, dx_flight.
+    """
+    for i in prange(out.shape[0]):
+        res = liftoff_to_apex(q_r[i], q_rd[i], q_th[i], q_thd[i], g_f[i])
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        status[i] = res[4]

@@ -1,0 +1,48 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/status.py
+# Template:  derive/templates/status.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# ----------------------------------------------------------------------------------------------
+"""Status codes returned by every generated kernel and by the exact simulator.
+
+Kernels return NaN outputs plus one of these codes instead of raising; the runtime turns a code
+into a message with :data:`MESSAGES`.
+"""
+
+from enum import IntEnum
+
+
+class Status(IntEnum):
+    """Outcome of a kernel call or a simulation."""
+
+    OK = 0
+    INVALID_INPUT = 1
+    APEX_TOO_LOW = 2
+    TOUCHDOWN_NOT_COMPRESSING = 3
+    NO_REAL_SOLUTION = 4
+    TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+    NO_LIFTOFF = 6
+    FALL = 7
+    LIFTOFF_DOWNWARD = 8
+    LIFTOFF_BACKWARD = 9
+    RECOMPRESSION = 10
+    INTEGRATION_FAILED = 11
+
+
+#: Human-readable message for each status code.
+MESSAGES = {
+    0: "ok",
+    1: "an input is not finite or outside its valid range",
+    2: "the apex is not above the touchdown height q_r_td*cos(q_th_td): no touchdown",
+    3: "the leg is not compressing at touchdown (q_rd_td \u003e= 0): no stance phase starts",
+    4: "the radial quadrature (9)-(11) has no real solution (b^2 \u003c= 0, negative discriminant)",
+    5: "the touchdown leg length lies outside the approximate radial oscillation (11)",
+    6: "the leg never extends back to the liftoff length q_r_lo",
+    7: "the body reaches the ground (the leg passes horizontal) during stance",
+    8: "the body moves downward at liftoff (b_yd \u003c= 0): no flight phase",
+    9: "the body moves backward at liftoff (b_xd \u003c= 0)",
+    10: "the leg starts compressing again after the bottom (the decompression stiffness k_d is too soft)",
+    11: "the numerical integrator failed",
+}
