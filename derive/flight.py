@@ -7,15 +7,30 @@ touches flat ground. Liftoff -> apex: the body rises until b_yd = 0.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
 from . import mechanics
-from .symbols import b_x, b_xd, b_xd_apex, b_y, b_y_apex, b_yd, g_f, q_r, q_r_td, q_rd, q_th, q_th_td, q_thd, t
+from .symbols import (
+    b_x,
+    b_xd,
+    b_xd_apex,
+    b_y,
+    b_y_apex,
+    b_yd,
+    g_f,
+    q_r,
+    q_r_td,
+    q_rd,
+    q_th,
+    q_th_td,
+    q_thd,
+    t,
+)
 
 
-@lru_cache(maxsize=None)
+@cache
 def apex_to_touchdown():
     """Descent time and touchdown polar state from an apex state and a touchdown leg posture.
 
@@ -43,7 +58,7 @@ def apex_to_touchdown():
     }
 
 
-@lru_cache(maxsize=None)
+@cache
 def liftoff_to_apex():
     """Next apex (height, speed), rise time and horizontal travel from a liftoff state.
 

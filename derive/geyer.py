@@ -12,7 +12,7 @@ measured from touchdown.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
@@ -50,14 +50,14 @@ from .symbols import (
 SMALL_ANGLE = {sp.cos(q_th): 1, sp.sin(q_th): 0}
 
 
-@lru_cache(maxsize=None)
+@cache
 def assumption1_equations():
     """Eqs (4)-(5): the Euler-Lagrange equations (2)-(3) with cos q_th ~ 1, sin q_th ~ 0."""
     el_r, el_th = mechanics.euler_lagrange_polar()
     return (sp.expand(el_r.subs(SMALL_ANGLE)), sp.expand(el_th.subs(SMALL_ANGLE)))
 
 
-@lru_cache(maxsize=None)
+@cache
 def energy_assumption1():
     """Eq (6): the energy of the Assumption-1 Lagrangian, with q_thd = p_th / (m q_r^2).
 
@@ -69,7 +69,10 @@ def energy_assumption1():
 
 
 def dimensionless_substitution():
-    """Eq (7): q_r = l0 (1 + rho), q_rd = l0 rho_d, p_th = m l0^2 omega, E = m l0^2 epsilon / 2, k = m omega0^2."""
+    """Eq (7) as a substitution.
+
+    q_r = l0 (1 + rho), q_rd = l0 rho_d, p_th = m l0^2 omega, E = m l0^2 epsilon / 2, k = m omega0^2.
+    """
     return {
         q_r: l0 * (1 + rho),
         q_rd: l0 * rho_d,
@@ -79,7 +82,7 @@ def dimensionless_substitution():
     }
 
 
-@lru_cache(maxsize=None)
+@cache
 def dimensionless_energy():
     """Eq (8), solved for epsilon: epsilon = 2 E / (m l0^2) with (7) substituted into (6)."""
     sub = dimensionless_substitution()
@@ -87,13 +90,13 @@ def dimensionless_energy():
     return sp.expand(sp.solve(eq, epsilon)[0])
 
 
-@lru_cache(maxsize=None)
+@cache
 def taylor_inverse_square():
     """Assumption 2: 1 / (1 + rho)^2 ~ 1 - 2 rho + 3 rho^2 (Taylor series at rho = 0)."""
     return sp.series(1 / (1 + rho) ** 2, rho, 0, 3).removeO()
 
 
-@lru_cache(maxsize=None)
+@cache
 def radial_quadratic():
     """Eq (9): rho_d^2 = lambda rho^2 + mu rho + nu after Assumption 2; returns (lambda, mu, nu)."""
     eps_expr = dimensionless_energy()
@@ -108,11 +111,14 @@ def radial_quadratic():
 
 
 def antiderivative(lam_=lam, mu_=mu, nu_=nu):
-    """Eq (10), corrected: int drho / sqrt(lambda rho^2 + mu rho + nu), for lambda < 0 < mu^2 - 4 lambda nu."""
+    """Eq (10), corrected: int drho / sqrt(lambda rho^2 + mu rho + nu).
+
+    Valid for lambda < 0 < mu^2 - 4 lambda nu.
+    """
     return -1 / sp.sqrt(-lam_) * sp.asin((2 * lam_ * rho + mu_) / sp.sqrt(mu_**2 - 4 * lam_ * nu_))
 
 
-@lru_cache(maxsize=None)
+@cache
 def radial_solution_parameters():
     """Eq (11): omega0_hat, a, b of rho(t) = a + b sin(omega0_hat t), the inverse of (10).
 
@@ -131,7 +137,7 @@ def radial_solution(time=t):
     return a + b * sp.sin(omega0_hat * time)
 
 
-@lru_cache(maxsize=None)
+@cache
 def event_phases():
     """Eqs (12)-(14) with n = 0: phases omega0_hat t of touchdown, bottom and liftoff.
 
@@ -160,7 +166,7 @@ def leg_length_ratio(q_r_x):
     return (q_r_x / l0 - 1 - a) / b
 
 
-@lru_cache(maxsize=None)
+@cache
 def angular_rate():
     """Eq (17) and its linearization: q_thd = omega / (1 + rho)^2 ~ omega (1 - 2 rho)."""
     exact = (p_th / (m * q_r**2)).subs(dimensionless_substitution())
@@ -168,7 +174,7 @@ def angular_rate():
     return sp.simplify(exact), sp.expand(linear)
 
 
-@lru_cache(maxsize=None)
+@cache
 def leg_angle(t_td=None):
     """Eqs (18)-(19): q_th(t) = q_th_td + int_{t_td}^{t} omega (1 - 2 rho(tau)) dtau."""
     t_td = sp.Symbol("t_td", real=True) if t_td is None else t_td
@@ -178,7 +184,7 @@ def leg_angle(t_td=None):
     return q_th_td + sp.integrate(integrand, (tau, t_td, t)), t_td
 
 
-@lru_cache(maxsize=None)
+@cache
 def stance_time_general():
     """Stance time (t_lo - t_td) and bottom time (t_b - t_td) for any touchdown/liftoff leg length."""
     ph = event_phases()
@@ -194,7 +200,7 @@ def stance_time_general():
     }
 
 
-@lru_cache(maxsize=None)
+@cache
 def touchdown_parameters():
     """omega, epsilon from a touchdown state (q_r_td, q_rd_td, q_thd_td) via (7)-(8).
 
@@ -207,7 +213,7 @@ def touchdown_parameters():
     return {"omega": omega_td, "epsilon": sp.simplify(eps_td), "rho_td": rho_td, "omega0": sp.sqrt(k / m)}
 
 
-@lru_cache(maxsize=None)
+@cache
 def touchdown_shifted_solution():
     """Eqs (21)-(22): q_r(t), q_th(t) with touchdown at t = 0, for q_r_td = l0 (b > 0).
 

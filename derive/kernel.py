@@ -35,6 +35,10 @@ class Guard:
     def __post_init__(self):
         if self.status not in _STATUS:
             raise ValueError(f"unknown status {self.status!r}")
+        if self.condition in (sp.true, sp.false) or isinstance(self.condition, bool):
+            # SymPy folded the condition through symbol assumptions (e.g. a positive=True symbol):
+            # the run-time check would vanish. Build it from kernel.real(...) symbols instead.
+            raise ValueError(f"guard for {self.status} folds to the constant {self.condition}")
 
 
 @dataclass(frozen=True)
@@ -93,7 +97,7 @@ def _cse_stage(stage: Stage, counter: list[int]):
     counter[0] = start + len(replacements)
     ops = sum(sp.count_ops(e) for _, e in replacements) + sum(sp.count_ops(e) for e in reduced)
     temps = [(str(sym), to_code(expr)) for sym, expr in replacements]
-    assigns = [(str(n), to_code(e)) for n, e in zip(names, reduced)]
+    assigns = [(str(n), to_code(e)) for n, e in zip(names, reduced, strict=True)]
     return temps, assigns, int(ops)
 
 
@@ -117,7 +121,12 @@ def lower(kernel: Kernel) -> dict:
                 "temps": temps,
                 "assigns": assigns,
                 "guards": [
-                    {"code": to_code(g.condition), "status": _STATUS[g.status], "name": g.status, "doc": g.doc}
+                    {
+                        "code": to_code(g.condition),
+                        "status": _STATUS[g.status],
+                        "name": g.status,
+                        "doc": g.doc,
+                    }
                     for g in stage.guards
                 ],
             }

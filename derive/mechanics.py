@@ -10,7 +10,7 @@ each function returns the same SymPy objects on every call.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
@@ -66,7 +66,7 @@ def _functions_to_symbols(expr):
     return sp.sympify(expr).subs(d2).subs(d1).subs(d0)
 
 
-@lru_cache(maxsize=None)
+@cache
 def lagrangian_polar(stiffness=k, gravity=g_s):
     """Eq (1): L = T - V, with T and V computed from the Cartesian body position.
 
@@ -79,7 +79,7 @@ def lagrangian_polar(stiffness=k, gravity=g_s):
     return sp.simplify(_functions_to_symbols(kinetic - potential))
 
 
-@lru_cache(maxsize=None)
+@cache
 def euler_lagrange_polar(stiffness=k, gravity=g_s):
     """Eqs (2)-(3): d/dt(dL/dqdot_j) - dL/dq_j for j = r, theta (expressions equal to zero)."""
     pos = body_position(q_r_t, q_th_t)
@@ -94,7 +94,7 @@ def euler_lagrange_polar(stiffness=k, gravity=g_s):
     return tuple(eqs)
 
 
-@lru_cache(maxsize=None)
+@cache
 def stance_polar_rhs(stiffness=k, gravity=g_s):
     """First-order polar stance dynamics (q_rd, q_rdd, q_thd, q_thdd), solved from (2)-(3).
 
@@ -106,7 +106,7 @@ def stance_polar_rhs(stiffness=k, gravity=g_s):
     return (q_rd, sp.expand(sol[q_rdd]), q_thd, sp.expand(sol[q_thdd]))
 
 
-@lru_cache(maxsize=None)
+@cache
 def hamiltonian(stiffness=k, gravity=g_s):
     """Eq (27): H(q_r, q_th, p_r, p_th) by the Legendre transform of (1)."""
     lag = lagrangian_polar(stiffness, gravity)
@@ -117,17 +117,14 @@ def hamiltonian(stiffness=k, gravity=g_s):
     return sp.simplify(ham)
 
 
-@lru_cache(maxsize=None)
+@cache
 def hamiltonian_vector_field(stiffness=k, gravity=g_s):
     """Eqs (28)-(29): (dq_r/dt, dq_th/dt, dp_r/dt, dp_th/dt) = (dH/dp_r, dH/dp_th, -dH/dq_r, -dH/dq_th)."""
     ham = hamiltonian(stiffness, gravity)
-    return tuple(
-        sp.simplify(e)
-        for e in (ham.diff(p_r), ham.diff(p_th), -ham.diff(q_r), -ham.diff(q_th))
-    )
+    return tuple(sp.simplify(e) for e in (ham.diff(p_r), ham.diff(p_th), -ham.diff(q_r), -ham.diff(q_th)))
 
 
-@lru_cache(maxsize=None)
+@cache
 def stance_energy(stiffness=k, gravity=g_s):
     """Total stance energy in the polar state: H of (27) with p_r = m q_rd, p_th = m q_r^2 q_thd."""
     ham = hamiltonian(stiffness, gravity)
@@ -135,7 +132,7 @@ def stance_energy(stiffness=k, gravity=g_s):
     return sp.expand(ham.subs({p_r: lag.diff(q_rd), p_th: lag.diff(q_thd)}))
 
 
-@lru_cache(maxsize=None)
+@cache
 def stance_cartesian_rhs(stiffness=k, gravity=g_s):
     """Cartesian stance dynamics (section 2.2.1, flat ground, toe at the origin).
 
@@ -157,17 +154,15 @@ def stance_cartesian_rhs(stiffness=k, gravity=g_s):
     return (b_xd, ax, b_yd, ay)
 
 
-@lru_cache(maxsize=None)
+@cache
 def flight_rhs(gravity=g_f):
     """Ballistic flight dynamics (section 2.2.2): (b_xd, 0, b_yd, -g_f), from L = T - m g_f b_y."""
     lag = sp.Rational(1, 2) * m * (b_x_t.diff(t) ** 2 + b_y_t.diff(t) ** 2) - m * gravity * b_y_t
-    accel = [
-        sp.solve(sp.diff(lag.diff(c.diff(t)), t) - lag.diff(c), c.diff(t, 2))[0] for c in (b_x_t, b_y_t)
-    ]
+    accel = [sp.solve(sp.diff(lag.diff(c.diff(t)), t) - lag.diff(c), c.diff(t, 2))[0] for c in (b_x_t, b_y_t)]
     return (b_xd, sp.simplify(accel[0]), b_yd, sp.simplify(accel[1]))
 
 
-@lru_cache(maxsize=None)
+@cache
 def polar_to_cartesian():
     """(q_r, q_rd, q_th, q_thd) -> (b_x, b_xd, b_y, b_yd), by differentiating the body position."""
     pos = body_position(q_r_t, q_th_t)
@@ -176,7 +171,7 @@ def polar_to_cartesian():
     return tuple(_functions_to_symbols(e) for e in out)
 
 
-@lru_cache(maxsize=None)
+@cache
 def cartesian_to_polar():
     """(b_x, b_xd, b_y, b_yd) -> (q_r, q_rd, q_th, q_thd), the inverse of :func:`polar_to_cartesian`.
 
@@ -193,7 +188,7 @@ def cartesian_to_polar():
     return (radius, q_rd_expr, sp.atan2(-b_x, b_y), q_thd_expr)
 
 
-@lru_cache(maxsize=None)
+@cache
 def ballistic_flight():
     """Closed-form flight (section 2.2.2) solved by dsolve: (b_x(t), b_xd(t), b_y(t), b_yd(t)).
 

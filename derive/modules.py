@@ -72,7 +72,7 @@ def _plain(name, summary, equations, args, names_docs, exprs, notes=""):
         summary=summary,
         equations=equations,
         args=args,
-        stages=(Stage(tuple(zip((o.symbol for o in outs), exprs))),),
+        stages=(Stage(tuple(zip((o.symbol for o in outs), exprs, strict=True))),),
         outputs=outs,
         with_status=False,
         batch=False,
@@ -167,7 +167,10 @@ def flight_kernels() -> tuple[Kernel, ...]:
             Guard(sp.And(positive(q_r_td, g_f, b_y_apex), sp.Abs(q_th_td) < sp.pi / 2), "INVALID_INPUT"),
         ),
         stages=(
-            Stage(((drop, atd["drop"]),), (Guard(drop > 0, "APEX_TOO_LOW", "touchdown height below apex"),)),
+            Stage(
+                ((drop, atd["drop"]),),
+                (Guard(real(drop) > 0, "APEX_TOO_LOW", "touchdown height below apex"),),
+            ),
             Stage(
                 (
                     (_sym("td_q_r"), r_out),
@@ -190,7 +193,7 @@ def flight_kernels() -> tuple[Kernel, ...]:
         ),
     )
     lta = flight.liftoff_to_apex()
-    cart = tuple(zip((b_x, b_xd, b_y, b_yd), lta["liftoff_cartesian"]))
+    cart = tuple(zip((b_x, b_xd, b_y, b_yd), lta["liftoff_cartesian"], strict=True))
     lo_to_apex = Kernel(
         name="liftoff_to_apex",
         summary="Ballistic ascent from a polar liftoff state to the next apex.",
@@ -250,7 +253,7 @@ def _geyer_common_stages(with_liftoff: bool):
         Stage(
             ((w_hat, sol["omega0_hat"]), (a_, sol["a"]), (b2, sol["b2"])),
             (Guard(b2 > 0, "NO_REAL_SOLUTION", "eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0"),),
-            comment="eq (9)-(11): frequency, offset and squared amplitude of rho(t) = a + b sin(omega0_hat t)",
+            comment="eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)",
         ),
     ]
     ratios = [(b_, sp.sqrt(b2)), (s_td, geyer.leg_length_ratio(q_r_td).subs(b, b_))]
@@ -258,7 +261,9 @@ def _geyer_common_stages(with_liftoff: bool):
     if with_liftoff:
         ratios.append((s_lo, geyer.leg_length_ratio(q_r_lo).subs(b, b_)))
         guards.append(Guard(sp.Abs(s_lo) <= 1, "NO_LIFTOFF", "eq (14) needs |s_lo| <= 1"))
-    stages.append(Stage(tuple(ratios), tuple(guards), comment="eq (12)-(14): sin(phase) at touchdown/liftoff"))
+    stages.append(
+        Stage(tuple(ratios), tuple(guards), comment="eq (12)-(14): sin(phase) at touchdown/liftoff")
+    )
     return stages, {"s_td": s_td, "s_lo": s_lo, "omega": omega, "omega0_hat": w_hat, "a": a_, "b": b_}
 
 
@@ -302,7 +307,7 @@ def geyer_kernels() -> tuple[Kernel, ...]:
     lo_q_th = _sym("lo_q_th")
     stages.append(
         Stage(
-            tuple((_sym(n), e) for n, e in zip(names, exprs)),
+            tuple((_sym(n), e) for n, e in zip(names, exprs, strict=True)),
             (Guard(sp.Abs(lo_q_th) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
             comment="eq (13)-(14), (19), (17): events, then the bottom and liftoff states",
         )
@@ -325,10 +330,12 @@ def geyer_kernels() -> tuple[Kernel, ...]:
         equations=GEYER_EQS,
         args=STANCE_TD_ARGS + PARAM_ARGS + (Arg(q_r_lo, "liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0"),),
         extra_input_guards=(
-            Guard(sp.And(_PARAM_GUARD.condition, positive(q_r_lo), real(q_r_lo) <= real(l0)), "INVALID_INPUT"),
+            Guard(
+                sp.And(_PARAM_GUARD.condition, positive(q_r_lo), real(q_r_lo) <= real(l0)), "INVALID_INPUT"
+            ),
         ),
         stages=tuple(stages),
-        outputs=_outputs(list(zip(names, docs))),
+        outputs=_outputs(list(zip(names, docs, strict=True))),
         notes=(
             "Assumption 1 (small sweep: angular momentum conserved), Assumption 2 (small compression: "
             "1/(1+rho)^2 ~ 1 - 2 rho + 3 rho^2). Leg-angle rates use the exact (17) with the conserved "
@@ -341,7 +348,10 @@ def geyer_kernels() -> tuple[Kernel, ...]:
     state_t = _geyer_state_at_phase(ph_td_t + sym_t["omega0_hat"] * tt, ph_td_t, sym_t)
     out_t = ["q_r_t", "q_rd_t", "q_th_t", "q_thd_t"]
     stages_t.append(
-        Stage(tuple((_sym(n), e) for n, e in zip(out_t, state_t)), comment="eq (11), (19), (17) at t")
+        Stage(
+            tuple((_sym(n), e) for n, e in zip(out_t, state_t, strict=True)),
+            comment="eq (11), (19), (17) at t",
+        )
     )
     state_at = Kernel(
         name="geyer_stance_state_at",

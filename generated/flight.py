@@ -55,7 +55,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
-    if not (True):
+    if not ((drop > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
     # touchdown state from the derived Cartesian -> polar map
     _x0 = math.sin(q_th_td)

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d5f4fa7aa6b5293f
+#   flight.py sha256:62f7ff0b4b56a482
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map and apex-return map (report section 3.1, eqs 7-26)."""
 
@@ -81,7 +81,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     _x2 = omega0**2
     _x3 = q_r_td**2
     epsilon = (_x0*_x2 - _x1*_x2*l0 + _x1*g_s + _x2*_x3 + _x3*q_thd_td**2 + q_rd_td**2)/_x0
-    # eq (9)-(11): frequency, offset and squared amplitude of rho(t) = a + b sin(omega0_hat t)
+    # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
     _x4 = omega**2
     _x5 = 3.0*_x4 + omega0**2
     _x6 = -_x4*l0 + g_s
@@ -198,7 +198,7 @@ def geyer_stance_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s):
     _x2 = omega0**2
     _x3 = q_r_td**2
     epsilon = (_x0*_x2 - _x1*_x2*l0 + _x1*g_s + _x2*_x3 + _x3*q_thd_td**2 + q_rd_td**2)/_x0
-    # eq (9)-(11): frequency, offset and squared amplitude of rho(t) = a + b sin(omega0_hat t)
+    # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
     _x4 = omega**2
     _x5 = 3.0*_x4 + omega0**2
     _x6 = -_x4*l0 + g_s
@@ -284,6 +284,13 @@ def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_
         res = geyer_apex_return(
             b_y_apex[i], b_xd_apex[i], q_th_td[i], m[i], l0[i], k[i], g_s[i], g_f[i], q_r_td[i], q_r_lo[i]
         )
-        for j in range(9):
-            out[i, j] = res[j]
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
         status[i] = res[9]

@@ -17,7 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
-
+from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import MESSAGES, Status
 from slipmaps.runtime import simulate as sim
@@ -71,7 +71,7 @@ def test_eq1_eq6_energy_conserved_within_each_subphase(params, height, speed, q_
     drift_c = np.max(np.abs(e_c - e_c[0])) / abs(e_c[0])
     drift_d = np.max(np.abs(e_d - e_d[0])) / abs(e_d[0])
     # Measured max relative drift over all samples (steps + DOP853 interpolants) of these cases:
-    # 7.6e-12 (compression), 1.0e-11 (decompression).
+    # 9.1e-12 (compression), 7.7e-12 (decompression).
     assert drift_c < 2e-10, drift_c
     assert drift_d < 2e-10, drift_d
 
@@ -86,12 +86,13 @@ def test_eq2_eq3_polar_stance_matches_cartesian_stance(params, height, speed, q_
     polar = simulate_stance(params, res.touchdown)
     cart = simulate_stance_cartesian(params, res.touchdown)
     assert cart.status == polar.status == Status.OK
-    # Measured over these cases: states <= 1.3e-11 (SI units), times <= 1.0e-12 s.
-    np.testing.assert_allclose(cart.liftoff, polar.liftoff, rtol=0, atol=5e-10)
-    np.testing.assert_allclose(cart.bottom, polar.bottom, rtol=0, atol=5e-10)
+    # Measured over these cases: liftoff states <= 5.8e-11 (q_rd of ~3 m/s, i.e. 2e-11 relative),
+    # bottom states <= 2.1e-11 (SI units), times <= 7.7e-13 s.
+    np.testing.assert_allclose(cart.liftoff, polar.liftoff, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(cart.bottom, polar.bottom, rtol=0, atol=1e-9)
     assert cart.t_stance == pytest.approx(polar.t_stance, rel=0, abs=5e-11)
     assert cart.t_bottom == pytest.approx(polar.t_bottom, rel=0, abs=5e-11)
-    np.testing.assert_allclose(cart.liftoff_cartesian, polar.liftoff_cartesian, rtol=0, atol=5e-10)
+    np.testing.assert_allclose(cart.liftoff_cartesian, polar.liftoff_cartesian, rtol=0, atol=1e-9)
 
 
 def test_polar_and_cartesian_agree_on_failures():
@@ -134,7 +135,7 @@ def test_eq13_eq16_symmetric_fixed_point_mirrors_touchdown():
     # Same height and (by energy conservation) the same speed at the next apex.
     assert res.next_apex == pytest.approx((height, speed), abs=1e-10)
     # The root is located to ~1e-14 rad; the mirror errors are set by the integration, measured:
-    # q_th 2.4e-13, q_rd 1.5e-12, q_thd 1.5e-12, t_bottom - t_stance/2 1.0e-13 s.
+    # q_th 2.4e-13, q_rd 1.5e-12, q_thd 1.5e-12, t_bottom - t_stance/2 1.0e-13 s, bottom q_th 9.8e-13.
     assert lo[0] == pytest.approx(td[0], abs=1e-12)
     assert lo[2] == pytest.approx(-td[2], abs=1e-10)
     assert lo[1] == pytest.approx(-td[1], abs=1e-10)
@@ -165,8 +166,8 @@ def test_eq97_eq98_energy_jump_at_bottom(params):
     e_lo = _stance_energy(params, res.liftoff, params.k_d)
     jump = 0.5 * (params.k_d - params.k_c) * (params.l0 - res.bottom[0]) ** 2  # eq 97
     assert abs(jump) > 1e-3 * e_td
-    # Measured |E_lo - (E_td + jump)| / E_td <= 6e-12.
-    assert abs(e_lo - (e_td + jump)) < 2e-10 * e_td
+    # Measured |E_lo - (E_td + jump)| / E_td <= 6.8e-13 (jumps of 42 J, -25 J and 0.64 J).
+    assert abs(e_lo - (e_td + jump)) < 2e-11 * e_td
     # The jump is exactly the stiffness change at the (continuous) bottom state.
     e_b_c = _stance_energy(params, res.bottom, params.k_c)
     e_b_d = _stance_energy(params, res.bottom, params.k_d)
@@ -177,7 +178,7 @@ def test_eq97_eq98_energy_jump_at_bottom(params):
     h1, v1 = res.next_apex
     e_next = params.m * (params.g_f * h1 + v1**2 / 2)
     assert e_td == pytest.approx(e_apex, rel=1e-13)
-    assert e_next - e_apex == pytest.approx(jump, rel=0, abs=2e-10 * e_td)
+    assert e_next - e_apex == pytest.approx(jump, rel=0, abs=2e-11 * e_td)
 
 
 def test_softer_decompression_spring_lowers_the_next_apex():
@@ -282,7 +283,9 @@ def test_no_liftoff_within_t_max():
 
 def test_integration_failure_is_a_result(monkeypatch):
     def failing_solve_ivp(fun, t_span, y0, **kwargs):
-        return types.SimpleNamespace(status=-1, message="step size too small", t=np.array([0.0]), y=y0[:, None])
+        return types.SimpleNamespace(
+            status=-1, message="step size too small", t=np.array([0.0]), y=y0[:, None]
+        )
 
     monkeypatch.setattr(sim, "solve_ivp", failing_solve_ivp)
     res = simulate_step(HUMAN_RUNNER, 1.0, 5.0, 0.3)
@@ -293,7 +296,9 @@ def test_integration_failure_is_a_result(monkeypatch):
         raise ValueError("bad")
 
     monkeypatch.setattr(sim, "solve_ivp", raising_solve_ivp)
-    _assert_failure(simulate_stance_cartesian(HUMAN_RUNNER, (1.0, -1.0, 0.3, -4.0)), Status.INTEGRATION_FAILED)
+    _assert_failure(
+        simulate_stance_cartesian(HUMAN_RUNNER, (1.0, -1.0, 0.3, -4.0)), Status.INTEGRATION_FAILED
+    )
 
 
 def test_from_touchdown_equals_step():
@@ -387,10 +392,17 @@ def test_random_valid_inputs_never_raise(params, q_rd, q_th, q_thd, height, spee
         assert res.message
         if res.status == Status.OK:
             assert _finite(res.touchdown) and _finite(res.bottom) and _finite(res.liftoff)
-            assert 0.0 < res.t_bottom < res.t_stance
+            assert 0.0 <= res.t_bottom < res.t_stance
             assert res.liftoff[0] == pytest.approx(params.q_r_lo, abs=1e-9)
             assert res.bottom[0] <= min(res.touchdown[0], res.liftoff[0])
         if isinstance(res, StepResult) and res.status == Status.OK:
             assert _finite(res.next_apex) and _finite((res.t_ascent, res.dx_ascent))
             assert res.next_apex[0] >= res.liftoff[0] * math.cos(res.liftoff[2])
             assert res.next_apex[1] > 0.0
+
+
+def test_flight_kernel_reports_apex_too_low():
+    # The simulator checks this itself (so no NaN state reaches the stance), but the generated
+    # kernel must agree: an apex below the touchdown height is APEX_TOO_LOW, not OK with NaNs.
+    out = gen_flight.apex_to_touchdown(0.9, 5.0, 0.4, 1.0, 9.81)
+    assert Status(int(out[-1])) == Status.APEX_TOO_LOW, out
