@@ -204,12 +204,18 @@ def stance_time_general():
 def touchdown_parameters():
     """omega, epsilon from a touchdown state (q_r_td, q_rd_td, q_thd_td) via (7)-(8).
 
-    p_th = m q_r_td^2 q_thd_td; rho_td = q_r_td / l0 - 1; epsilon from (8) (exact, before the
-    Taylor step of Assumption 2).
+    p_th = m q_r_td^2 q_thd_td and rho_td = q_r_td / l0 - 1. epsilon is the energy (8) of the
+    approximated system, i.e. with Assumption 2's Taylor polynomial for 1/(1+rho)^2, evaluated at
+    touchdown: then the quadratic (9) passes through (rho_td, rho_d_td), so the approximate
+    solution (11) starts at the given touchdown leg length *and* rate. At q_r_td = l0 (rho_td = 0,
+    the report's setting) this is the exact (8); for a shorter touchdown leg the exact (8) would
+    make (11) start with a slightly different q_rd.
     """
     omega_td = q_r_td**2 * q_thd_td / l0**2
     rho_td = q_r_td / l0 - 1
-    eps_td = dimensionless_energy().subs({rho: rho_td, rho_d: q_rd_td / l0, omega: omega_td})
+    # Second order in rho, exactly as in radial_quadratic (only omega^2/(1+rho)^2 is not polynomial).
+    taylor_energy = sp.series(dimensionless_energy(), rho, 0, 3).removeO()
+    eps_td = taylor_energy.subs({rho: rho_td, rho_d: q_rd_td / l0, omega: omega_td})
     return {"omega": omega_td, "epsilon": sp.simplify(eps_td), "rho_td": rho_td, "omega0": sp.sqrt(k / m)}
 
 

@@ -164,7 +164,10 @@ def flight_kernels() -> tuple[Kernel, ...]:
             Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive"),
         ),
         extra_input_guards=(
-            Guard(sp.And(positive(q_r_td, g_f, b_y_apex), sp.Abs(q_th_td) < sp.pi / 2), "INVALID_INPUT"),
+            Guard(
+                sp.And(positive(q_r_td, g_f), real(b_y_apex) >= 0, sp.Abs(q_th_td) < sp.pi / 2),
+                "INVALID_INPUT",
+            ),
         ),
         stages=(
             Stage(
@@ -257,7 +260,10 @@ def _geyer_common_stages(with_liftoff: bool):
         ),
     ]
     ratios = [(b_, sp.sqrt(b2)), (s_td, geyer.leg_length_ratio(q_r_td).subs(b, b_))]
-    guards = [Guard(sp.Abs(s_td) <= 1, "TOUCHDOWN_OUTSIDE_OSCILLATION", "eq (12) needs |s_td| <= 1")]
+    guards = [
+        Guard(1 + a_ - b_ > 0, "FALL", "the leg collapses: bottom leg length l0 (1 + a - b) <= 0"),
+        Guard(sp.Abs(s_td) <= 1, "TOUCHDOWN_OUTSIDE_OSCILLATION", "eq (12) needs |s_td| <= 1"),
+    ]
     if with_liftoff:
         ratios.append((s_lo, geyer.leg_length_ratio(q_r_lo).subs(b, b_)))
         guards.append(Guard(sp.Abs(s_lo) <= 1, "NO_LIFTOFF", "eq (14) needs |s_lo| <= 1"))
@@ -357,8 +363,8 @@ def geyer_kernels() -> tuple[Kernel, ...]:
         name="geyer_stance_state_at",
         summary="Geyer et al.'s approximate stance trajectory: the polar state a time t after touchdown.",
         equations=("11", "17", "19"),
-        args=(Arg(tt, "time since touchdown [s]"),) + STANCE_TD_ARGS + PARAM_ARGS,
-        extra_input_guards=(_PARAM_GUARD,),
+        args=(Arg(tt, "time since touchdown [s], >= 0"),) + STANCE_TD_ARGS + PARAM_ARGS,
+        extra_input_guards=(Guard(sp.And(_PARAM_GUARD.condition, real(tt) >= 0), "INVALID_INPUT"),),
         stages=tuple(stages_t),
         outputs=_outputs(
             [

@@ -37,4 +37,9 @@ STATUS_CODES: tuple[tuple[str, int, str], ...] = (
         "the leg starts compressing again after the bottom (the decompression stiffness k_d is too soft)",
     ),
     ("INTEGRATION_FAILED", 11, "the numerical integrator failed"),
+    (
+        "NUMERICAL_RANGE",
+        12,
+        "an output overflowed or is NaN (inputs far outside a physical range)",
+    ),
 )

@@ -25,9 +25,10 @@ STATUS_LIFTOFF_DOWNWARD = 8
 STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).
 
@@ -51,7 +52,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     # Total ops: 24
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f)):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((b_y_apex > 0.0) and (g_f > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
+    if not ((b_y_apex >= 0.0) and (g_f > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
@@ -69,10 +70,13 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     td_q_th = q_th_td
     td_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
     t_flight = _x5/_x2
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(td_q_r) and math.isfinite(td_q_rd) and math.isfinite(td_q_th) and math.isfinite(td_q_thd) and math.isfinite(t_flight)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
     return (td_q_r, td_q_rd, td_q_th, td_q_thd, t_flight, STATUS_OK)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, error_model="numpy")
 def apex_to_touchdown_batch(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, out, status):
     """Parallel batch form of :func:`apex_to_touchdown` over 1-D float64 arrays of equal length.
 
@@ -89,7 +93,7 @@ def apex_to_touchdown_batch(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, out, stat
         status[i] = res[5]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     """Ballistic ascent from a polar liftoff state to the next apex.
 
@@ -136,10 +140,13 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     apex_b_xd = b_xd
     t_flight = _x5
     dx_flight = _x5*b_xd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight)):
+        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, STATUS_OK)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, error_model="numpy")
 def liftoff_to_apex_batch(q_r, q_rd, q_th, q_thd, g_f, out, status):
     """Parallel batch form of :func:`liftoff_to_apex` over 1-D float64 arrays of equal length.
 

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:62f7ff0b4b56a482
+#   flight.py sha256:90530e956fef316d
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map and apex-return map (report section 3.1, eqs 7-26)."""
 
@@ -28,9 +28,10 @@ STATUS_LIFTOFF_DOWNWARD = 8
 STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     """Geyer et al.'s approximate stance map: touchdown state -> bottom and liftoff states.
 
@@ -64,7 +65,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
         lo_q_thd: liftoff leg angle rate p_th / (m q_r_lo^2), eq (17) [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
     """
-    # Total ops: 120
+    # Total ops: 131
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     if not ((q_r_lo <= l0) and (q_r_td <= l0) and (g_s > 0.0) and (k > 0.0) and (l0 > 0.0) and (m > 0.0) and (q_r_lo > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
@@ -76,29 +77,31 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     if not ((q_rd_td < 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # eq (8) at touchdown: epsilon = 2 E / (m l0^2)
-    _x0 = l0**2
-    _x1 = 2.0*q_r_td
-    _x2 = omega0**2
-    _x3 = q_r_td**2
-    epsilon = (_x0*_x2 - _x1*_x2*l0 + _x1*g_s + _x2*_x3 + _x3*q_thd_td**2 + q_rd_td**2)/_x0
+    _x0 = l0**4
+    _x1 = q_r_td**4*q_thd_td**2
+    _x2 = l0 - q_r_td
+    epsilon = (_x0*q_rd_td**2 + _x1*l0**2 + _x2*(_x2*(_x0*omega0**2 + 3.0*_x1) - 2.0*l0*(-_x1 + g_s*l0**3)) + 2.0*g_s*l0**5)/l0**6
     # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
-    _x4 = omega**2
-    _x5 = 3.0*_x4 + omega0**2
-    _x6 = -_x4*l0 + g_s
-    omega0_hat = math.sqrt(_x5)
-    a = -_x6/(_x5*l0)
-    b2 = (-_x5*l0*(2.0*g_s + l0*(_x4 - epsilon)) + _x6**2)/(_x5**2*l0**2)
+    _x3 = omega**2
+    _x4 = 3.0*_x3 + omega0**2
+    _x5 = -_x3*l0 + g_s
+    omega0_hat = math.sqrt(_x4)
+    a = -_x5/(_x4*l0)
+    b2 = (-_x4*l0*(2.0*g_s + l0*(_x3 - epsilon)) + _x5**2)/(_x4**2*l0**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
     # eq (12)-(14): sin(phase) at touchdown/liftoff
-    _x7 = math.sqrt(b2)
-    _x8 = (1.0/_x7)
-    _x9 = (1.0/l0)
-    _x10 = a + 1.0
-    b = _x7
-    s_td = _x8*(-_x10 + _x9*q_r_td)
-    s_lo = _x8*(-_x10 + _x9*q_r_lo)
+    _x6 = math.sqrt(b2)
+    _x7 = (1.0/_x6)
+    _x8 = (1.0/l0)
+    _x9 = a + 1.0
+    b = _x6
+    s_td = _x7*(_x8*q_r_td - _x9)
+    s_lo = _x7*(_x8*q_r_lo - _x9)
+    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    if not ((a - b + 1.0 > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
     # eq (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
@@ -106,36 +109,39 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     if not ((abs(s_lo) <= 1.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
     # eq (13)-(14), (19), (17): events, then the bottom and liftoff states
-    _x11 = (1.0/omega0_hat)
-    _x12 = math.asin(s_td)
-    _x13 = math.asin(s_lo)
-    _x14 = a + 1.0
-    _x15 = _x14 - b
-    _x16 = math.pi*_x11*omega
-    _x17 = _x11*(math.pi - _x12)
-    _x18 = _x11*b
-    _x19 = 2.0*omega
-    _x20 = -_x17*omega + _x19*(_x17*a + _x18*math.sqrt(1.0 - s_td**2)) + q_th_td
-    _x21 = _x14 + b*s_lo
-    _x22 = math.sqrt(1.0 - s_lo**2)
-    _x23 = _x11*(_x13 + 2.0*math.pi)
-    t_bottom = _x11*(_x12 + (0.5)*math.pi)
-    t_stance = _x11*(_x12 + _x13 + math.pi)
-    b_q_r = _x15*l0
+    _x10 = (1.0/omega0_hat)
+    _x11 = math.asin(s_td)
+    _x12 = math.asin(s_lo)
+    _x13 = a + 1.0
+    _x14 = _x13 - b
+    _x15 = math.pi*_x10*omega
+    _x16 = _x10*(math.pi - _x11)
+    _x17 = _x10*b
+    _x18 = 2.0*omega
+    _x19 = -_x16*omega + _x18*(_x16*a + _x17*math.sqrt(1.0 - s_td**2)) + q_th_td
+    _x20 = _x13 + b*s_lo
+    _x21 = math.sqrt(1.0 - s_lo**2)
+    _x22 = _x10*(_x12 + 2.0*math.pi)
+    t_bottom = _x10*(_x11 + (0.5)*math.pi)
+    t_stance = _x10*(_x11 + _x12 + math.pi)
+    b_q_r = _x14*l0
     b_q_rd = 0.0
-    b_q_th = -3.0*_x16*a + (1.5)*_x16 + _x20
-    b_q_thd = omega/_x15**2
-    lo_q_r = _x21*l0
-    lo_q_rd = _x22*b*l0*omega0_hat
-    lo_q_th = -_x19*(-_x18*_x22 + _x23*a) + _x20 + _x23*omega
-    lo_q_thd = omega/_x21**2
+    b_q_th = -3.0*_x15*a + (1.5)*_x15 + _x19
+    b_q_thd = omega/_x14**2
+    lo_q_r = _x20*l0
+    lo_q_rd = _x21*b*l0*omega0_hat
+    lo_q_th = -_x18*(-_x17*_x21 + _x22*a) + _x19 + _x22*omega
+    lo_q_thd = omega/_x20**2
     # the leg stays above horizontal
     if not ((abs(lo_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(b_q_r) and math.isfinite(b_q_rd) and math.isfinite(b_q_th) and math.isfinite(b_q_thd) and math.isfinite(lo_q_r) and math.isfinite(lo_q_rd) and math.isfinite(lo_q_th) and math.isfinite(lo_q_thd)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
     return (t_bottom, t_stance, b_q_r, b_q_rd, b_q_th, b_q_thd, lo_q_r, lo_q_rd, lo_q_th, lo_q_thd, STATUS_OK)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, error_model="numpy")
 def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
     """Parallel batch form of :func:`geyer_stance` over 1-D float64 arrays of equal length.
 
@@ -157,14 +163,14 @@ def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo
         status[i] = res[10]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def geyer_stance_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s):
     """Geyer et al.'s approximate stance trajectory: the polar state a time t after touchdown.
 
     Report equations: 11, 17, 19.
 
     Arguments:
-        t: time since touchdown [s]
+        t: time since touchdown [s], >= 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_rd_td: touchdown leg length rate q_rd_td [m/s], negative (compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
@@ -181,10 +187,10 @@ def geyer_stance_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s):
         q_thd_t: leg angle rate at t, eq (17) [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
     """
-    # Total ops: 96
+    # Total ops: 107
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)):
         return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((q_r_td <= l0) and (g_s > 0.0) and (k > 0.0) and (l0 > 0.0) and (m > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
+    if not ((t >= 0.0) and (q_r_td <= l0) and (g_s > 0.0) and (k > 0.0) and (l0 > 0.0) and (m > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # eq (7) at touchdown: omega0 = sqrt(k / m), omega = p_th / (m l0^2)
     omega0 = math.sqrt(k)/math.sqrt(m)
@@ -193,48 +199,53 @@ def geyer_stance_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s):
     if not ((q_rd_td < 0.0)):
         return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # eq (8) at touchdown: epsilon = 2 E / (m l0^2)
-    _x0 = l0**2
-    _x1 = 2.0*q_r_td
-    _x2 = omega0**2
-    _x3 = q_r_td**2
-    epsilon = (_x0*_x2 - _x1*_x2*l0 + _x1*g_s + _x2*_x3 + _x3*q_thd_td**2 + q_rd_td**2)/_x0
+    _x0 = l0**4
+    _x1 = q_r_td**4*q_thd_td**2
+    _x2 = l0 - q_r_td
+    epsilon = (_x0*q_rd_td**2 + _x1*l0**2 + _x2*(_x2*(_x0*omega0**2 + 3.0*_x1) - 2.0*l0*(-_x1 + g_s*l0**3)) + 2.0*g_s*l0**5)/l0**6
     # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
-    _x4 = omega**2
-    _x5 = 3.0*_x4 + omega0**2
-    _x6 = -_x4*l0 + g_s
-    omega0_hat = math.sqrt(_x5)
-    a = -_x6/(_x5*l0)
-    b2 = (-_x5*l0*(2.0*g_s + l0*(_x4 - epsilon)) + _x6**2)/(_x5**2*l0**2)
+    _x3 = omega**2
+    _x4 = 3.0*_x3 + omega0**2
+    _x5 = -_x3*l0 + g_s
+    omega0_hat = math.sqrt(_x4)
+    a = -_x5/(_x4*l0)
+    b2 = (-_x4*l0*(2.0*g_s + l0*(_x3 - epsilon)) + _x5**2)/(_x4**2*l0**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
         return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
     # eq (12)-(14): sin(phase) at touchdown/liftoff
-    _x7 = math.sqrt(b2)
-    b = _x7
-    s_td = (-a - 1.0 + q_r_td/l0)/_x7
+    _x6 = math.sqrt(b2)
+    b = _x6
+    s_td = (-a - 1.0 + q_r_td/l0)/_x6
+    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    if not ((a - b + 1.0 > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_FALL)
     # eq (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
         return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
     # eq (11), (19), (17) at t
-    _x8 = math.asin(s_td)
-    _x9 = -_x8 + omega0_hat*t
-    _x10 = a - b*math.sin(_x9) + 1.0
-    _x11 = math.cos(_x9)
-    _x12 = math.pi - _x8
-    _x13 = (1.0/omega0_hat)
-    _x14 = _x13*omega
-    _x15 = _x9 + math.pi
-    _x16 = _x13*a
-    _x17 = _x13*b
-    _x18 = 2.0*omega
-    q_r_t = _x10*l0
-    q_rd_t = -_x11*b*l0*omega0_hat
-    q_th_t = -_x12*_x14 + _x14*_x15 - _x18*(_x11*_x17 + _x15*_x16) + _x18*(_x12*_x16 + _x17*math.sqrt(1.0 - s_td**2)) + q_th_td
-    q_thd_t = omega/_x10**2
+    _x7 = math.asin(s_td)
+    _x8 = -_x7 + omega0_hat*t
+    _x9 = a - b*math.sin(_x8) + 1.0
+    _x10 = math.cos(_x8)
+    _x11 = math.pi - _x7
+    _x12 = (1.0/omega0_hat)
+    _x13 = _x12*omega
+    _x14 = _x8 + math.pi
+    _x15 = _x12*a
+    _x16 = _x12*b
+    _x17 = 2.0*omega
+    q_r_t = _x9*l0
+    q_rd_t = -_x10*b*l0*omega0_hat
+    q_th_t = -_x11*_x13 + _x13*_x14 - _x17*(_x10*_x16 + _x14*_x15) + _x17*(_x11*_x15 + _x16*math.sqrt(1.0 - s_td**2)) + q_th_td
+    q_thd_t = omega/_x9**2
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(q_r_t) and math.isfinite(q_rd_t) and math.isfinite(q_th_t) and math.isfinite(q_thd_t)):
+        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
     return (q_r_t, q_rd_t, q_th_t, q_thd_t, STATUS_OK)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, error_model="numpy")
 def geyer_stance_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, out, status):
     """Parallel batch form of :func:`geyer_stance_state_at` over 1-D float64 arrays of equal length.
 
@@ -250,7 +261,7 @@ def geyer_stance_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k,
         status[i] = res[4]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
     """Apex-return map: exact flight, Geyer et al.'s stance map (section 3.1).
 
@@ -261,6 +272,9 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, 
     Returns a tuple: next apex height [m], next apex speed [m/s], time apex -> touchdown [s],
     stance time [s], time liftoff -> apex [s], liftoff state (q_r, q_rd, q_th, q_thd), status.
     """
+    # stance parameters first, so an invalid one is reported as such whatever the flight does
+    if not (math.isfinite(m) and m > 0.0 and math.isfinite(l0) and l0 > 0.0 and math.isfinite(k) and k > 0.0 and math.isfinite(g_s) and g_s > 0.0 and math.isfinite(q_r_lo) and 0.0 < q_r_lo <= l0 and q_r_td <= l0):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     td = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if td[5] != STATUS_OK:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, td[5])
@@ -274,7 +288,7 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, 
     return (ap[0], ap[1], td[4], st[1], ap[2], lo[0], lo[1], lo[2], lo[3], STATUS_OK)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, error_model="numpy")
 def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
     """Parallel batch form of :func:`geyer_apex_return` over 1-D float64 arrays of equal length.
 

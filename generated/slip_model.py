@@ -25,9 +25,10 @@ STATUS_LIFTOFF_DOWNWARD = 8
 STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     """Polar stance vector field d/dt (q_r, q_rd, q_th, q_thd) from the Euler-Lagrange equations.
 
@@ -59,7 +60,7 @@ def stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     return (d_q_r, d_q_rd, d_q_th, d_q_thd)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s):
     """Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.
 
@@ -93,7 +94,7 @@ def stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s):
     return (d_b_x, d_b_xd, d_b_y, d_b_yd)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     """Total stance energy, the Hamiltonian (27) evaluated at p_r = m q_rd, p_th = m q_r^2 q_thd.
 
@@ -120,7 +121,7 @@ def stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     return energy
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def polar_to_cartesian(q_r, q_rd, q_th, q_thd):
     """Polar stance state -> Cartesian body state relative to the toe.
 
@@ -150,7 +151,7 @@ def polar_to_cartesian(q_r, q_rd, q_th, q_thd):
     return (out_b_x, out_b_xd, out_b_y, out_b_yd)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cartesian_to_polar(b_x, b_xd, b_y, b_yd):
     """Cartesian body state relative to the toe -> polar stance state (inverse of polar_to_cartesian).
 

@@ -29,6 +29,7 @@ class Status(IntEnum):
     LIFTOFF_BACKWARD = 9
     RECOMPRESSION = 10
     INTEGRATION_FAILED = 11
+    NUMERICAL_RANGE = 12
 
 
 #: Human-readable message for each status code.
@@ -45,4 +46,5 @@ MESSAGES = {
     9: "the body moves backward at liftoff (b_xd \u003c= 0)",
     10: "the leg starts compressing again after the bottom (the decompression stiffness k_d is too soft)",
     11: "the numerical integrator failed",
+    12: "an output overflowed or is NaN (inputs far outside a physical range)",
 }

@@ -19,7 +19,7 @@ from slipmaps.generated.status import MESSAGES, Status
 
 from .params import SlipParams
 from .simulate import StepResult, simulate_step
-from .validate import check_params, check_range, float_array, leg_angle, non_negative, positive
+from .validate import broadcast_params, check_params, check_range, float_array, leg_angle, non_negative
 
 __all__ = ["ApexReturn", "APEX_COLUMNS", "apex_return_exact", "apex_return_geyer", "apex_return_geyer_batch"]
 
@@ -56,7 +56,7 @@ class ApexReturn:
 
 def _check_apex(apex_height, apex_speed, q_th_td) -> tuple[float, float, float]:
     return (
-        positive("apex_height", apex_height),
+        non_negative("apex_height", apex_height),
         non_negative("apex_speed", apex_speed),
         leg_angle("q_th_td", q_th_td),
     )
@@ -103,13 +103,12 @@ def apex_return_geyer_batch(
     h = float_array("apex_height", apex_height, n)
     v = float_array("apex_speed", apex_speed, n)
     th = float_array("q_th_td", q_th_td, n)
-    check_range("apex_height", h, h > 0, "apex_height > 0")
+    check_range("apex_height", h, h >= 0, "apex_height >= 0")
     check_range("apex_speed", v, v >= 0, "apex_speed >= 0")
     check_range("q_th_td", th, np.abs(th) < math.pi / 2, "|q_th_td| < pi/2")
-    prm = [
-        np.full(n, x)
-        for x in (params.m, params.l0, params.k, params.g_s, params.g_f, params.q_r_td, params.q_r_lo)
-    ]
+    prm = broadcast_params(
+        n, params.m, params.l0, params.k, params.g_s, params.g_f, params.q_r_td, params.q_r_lo
+    )
     out = np.empty((n, len(APEX_COLUMNS)))
     status = np.empty(n, dtype=np.int64)
     gen_geyer.geyer_apex_return_batch(h, v, th, *prm, out, status)

@@ -21,7 +21,7 @@ from slipmaps.generated import geyer as gen_geyer
 from slipmaps.generated.status import MESSAGES, Status
 
 from .params import SlipParams
-from .validate import PolarState, check_params, check_range, float_array, polar_state
+from .validate import PolarState, broadcast_params, check_params, check_range, float_array, polar_state
 
 __all__ = [
     "StanceMapResult",
@@ -105,7 +105,7 @@ def geyer_stance_batch(params: SlipParams, touchdowns) -> tuple[np.ndarray, np.n
     params = check_params(params)
     cols = _touchdown_arrays(params, touchdowns)
     n = cols[0].shape[0]
-    prm = [np.full(n, v) for v in (*_params_tuple(params), params.q_r_lo)]
+    prm = broadcast_params(n, *_params_tuple(params), params.q_r_lo)
     out = np.empty((n, len(STANCE_COLUMNS)))
     status = np.empty(n, dtype=np.int64)
     gen_geyer.geyer_stance_batch(*cols, *prm, out, status)
@@ -121,7 +121,7 @@ def geyer_stance_trajectory(params: SlipParams, touchdown, t) -> tuple[np.ndarra
     td = polar_state(params, touchdown)
     times = float_array("t", np.atleast_1d(t))
     n = times.shape[0]
-    args = [np.full(n, v) for v in (*td, *_params_tuple(params))]
+    args = broadcast_params(n, *td, *_params_tuple(params))
     out = np.empty((n, 4))
     status = np.empty(n, dtype=np.int64)
     gen_geyer.geyer_stance_state_at_batch(times, *args, out, status)

@@ -97,3 +97,8 @@ def check_range(name: str, arr: np.ndarray, ok: np.ndarray, rule: str) -> None:
     bad = np.flatnonzero(~ok)
     if bad.size:
         raise ValueError(f"{name}[{bad[0]}] must satisfy {rule}, got {arr[bad[0]]!r}")
+
+
+def broadcast_params(n: int, *values: float) -> list[np.ndarray]:
+    """Each scalar as a read-only length-``n`` float64 view with stride 0 (no copy) for batch kernels."""
+    return [np.broadcast_to(np.float64(v), (n,)) for v in values]
