@@ -61,6 +61,7 @@ from pathlib import Path
 from slipmaps.generated.status import Status
 
 from .apex_maps import apex_return_geyer
+from .observables import QUANTITIES, Quantity, approx_values, exact_values
 from .params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from .simulate import DEFAULT_RTOL, simulate_step
 from .stance_maps import geyer_stance
@@ -84,29 +85,6 @@ __all__ = [
 # ----------------------------------------------------------------------------------------------
 # Quantities
 # ----------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Quantity:
-    """One compared quantity. ``rel_scale`` names the scale of its relative error (None: no relative
-    error; "self": the exact value; "compression": l0 - exact q_r_b; "sweep": |exact q_th - q_th_td|)."""
-
-    key: str
-    label: str
-    unit: str
-    rel_scale: str | None
-
-
-#: The compared quantities, in table order.
-QUANTITIES: tuple[Quantity, ...] = (
-    Quantity("t_stance", "stance time t_s", "s", "self"),
-    Quantity("t_bottom", "bottom time t_b", "s", "self"),
-    Quantity("b_q_r", "bottom leg length q_r_b", "m", "compression"),
-    Quantity("b_q_th", "bottom leg angle q_th_b", "rad", "sweep"),
-    Quantity("lo_q_rd", "liftoff leg rate q_rd_lo", "m/s", "self"),
-    Quantity("lo_q_th", "liftoff leg angle q_th_lo", "rad", "sweep"),
-    Quantity("lo_q_thd", "liftoff angle rate q_thd_lo", "rad/s", "self"),
-    Quantity("apex_height", "next apex height", "m", "self"),
-    Quantity("apex_speed", "next apex speed", "m/s", "self"),
-)
 _BY_KEY = {q.key: q for q in QUANTITIES}
 _REL_SCALE_TEXT = {
     "self": "exact value",
@@ -214,7 +192,6 @@ class Record:
         return self.abs_error(key) / ref if ref > 0.0 else math.nan
 
 
-_NAN4 = (math.nan,) * 4
 
 
 def _point(params: SlipParams, h: float, v: float, th: float) -> Record:
@@ -226,32 +203,8 @@ def _point(params: SlipParams, h: float, v: float, th: float) -> Record:
         st = geyer_stance(params, ex.touchdown)
         if not st.ok:
             approx_status = st.status
-    ex_b, ex_lo = ex.bottom or _NAN4, ex.liftoff or _NAN4
-    exact = {
-        "l0": params.l0,
-        "t_stance": ex.t_stance,
-        "t_bottom": ex.t_bottom,
-        "b_q_r": ex_b[0],
-        "b_q_th": ex_b[2],
-        "lo_q_rd": ex_lo[1],
-        "lo_q_th": ex_lo[2],
-        "lo_q_thd": ex_lo[3],
-        "apex_height": ex.next_apex[0],
-        "apex_speed": ex.next_apex[1],
-    }
-    ap_b, ap_lo = (st.bottom, st.liftoff) if st is not None else (_NAN4, _NAN4)
-    approx = {
-        "l0": params.l0,
-        "t_stance": st.t_stance if st is not None else math.nan,
-        "t_bottom": st.t_bottom if st is not None else math.nan,
-        "b_q_r": ap_b[0],
-        "b_q_th": ap_b[2],
-        "lo_q_rd": ap_lo[1],
-        "lo_q_th": ap_lo[2],
-        "lo_q_thd": ap_lo[3],
-        "apex_height": ar.next_apex[0],
-        "apex_speed": ar.next_apex[1],
-    }
+    exact = {"l0": params.l0, **exact_values(ex)}
+    approx = {"l0": params.l0, **approx_values(st, ar.next_apex)}
     return Record(
         apex_height=h,
         apex_speed=v,

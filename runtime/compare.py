@@ -16,6 +16,7 @@ import numpy as np
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import MESSAGES, Status
 
+from .observables import QUANTITIES, approx_values, exact_values
 from .params import SlipParams
 from .simulate import StepResult, simulate_from_touchdown, simulate_step
 from .stance_maps import geyer_stance, geyer_stance_trajectory
@@ -110,20 +111,8 @@ def compare(
         next_apex = (up[0], up[1])
     else:
         approx_status, next_apex = approx.status, (math.nan, math.nan)
-    nan4 = (math.nan,) * 4
-    ex_b = exact.bottom or nan4
-    ex_lo = exact.liftoff or nan4
-    rows = (
-        Row("stance time t_s", "s", exact.t_stance, approx.t_stance),
-        Row("bottom time t_b", "s", exact.t_bottom, approx.t_bottom),
-        Row("bottom leg length q_r_b", "m", ex_b[0], approx.bottom[0]),
-        Row("bottom leg angle q_th_b", "rad", ex_b[2], approx.bottom[2]),
-        Row("liftoff leg rate q_rd_lo", "m/s", ex_lo[1], approx.liftoff[1]),
-        Row("liftoff leg angle q_th_lo", "rad", ex_lo[2], approx.liftoff[2]),
-        Row("liftoff angle rate q_thd_lo", "rad/s", ex_lo[3], approx.liftoff[3]),
-        Row("next apex height", "m", exact.next_apex[0], next_apex[0]),
-        Row("next apex speed", "m/s", exact.next_apex[1], next_apex[1]),
-    )
+    ex_vals, ap_vals = exact_values(exact), approx_values(approx, next_apex)
+    rows = tuple(Row(q.label, q.unit, ex_vals[q.key], ap_vals[q.key]) for q in QUANTITIES)
     return Comparison(params, td, exact.status, approx_status, rows, exact, approx.t_stance)
 
 
