@@ -19,13 +19,8 @@ from .symbols import (
     b_y,
     b_y_apex,
     b_yd,
-    g_f,
-    q_r,
     q_r_td,
-    q_rd,
-    q_th,
     q_th_td,
-    q_thd,
     t,
 )
 
@@ -74,6 +69,3 @@ def liftoff_to_apex():
         "b_xd_apex": xd_t.subs(t, t_apex),
         "dx_flight": sp.simplify((x_t - b_x).subs(t, t_apex)),
     }
-
-
-__all__ = ["apex_to_touchdown", "liftoff_to_apex", "q_r", "q_rd", "q_th", "q_thd", "g_f"]

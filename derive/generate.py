@@ -16,12 +16,12 @@ import sympy as sp
 
 from .kernel import lower
 from .modules import MODULES
+from .registry import render_equation_table
 from .render import render
 from .status import STATUS_CODES
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
-DOCS = ROOT / "docs"
 
 VERSIONS = {"sympy": sp.__version__, "jinja2": jinja2.__version__}
 _STATUSES = [{"name": n, "code": c, "message": msg} for n, c, msg in STATUS_CODES]
@@ -72,8 +72,6 @@ def build_files() -> dict[str, str]:
         modules=[{"name": s.name, "doc": s.doc} for s in MODULES],
         **common,
     )
-    from .registry import render_equation_table
-
     table = render_equation_table()
     files["docs/equations.md"] = table
     files["README.md"] = _readme_with_table(table)

@@ -22,7 +22,6 @@ from .symbols import (
     a,
     b,
     epsilon,
-    g_s,
     k,
     l0,
     lam,
@@ -237,26 +236,6 @@ def touchdown_shifted_solution():
     return q_r_t.subs(bp, b), q_th_t.subs(bp, b)
 
 
-def stance_map_exprs():
-    """The kernel's stages for the general touchdown state and leg lengths (eqs 7-20).
-
-    Returns (params_stage, oscillation_stage, event_values): lists of (name, expr) with the
-    quantities of each stage, in the symbols of the earlier stages.
-    """
-    td = touchdown_parameters()
-    sol = radial_solution_parameters()
-    lam_, mu_, nu_ = radial_quadratic()
-    gen = stance_time_general()
-    stage1 = {
-        "omega": td["omega"],
-        "epsilon": td["epsilon"],
-        "omega0_hat": sol["omega0_hat"].subs(omega0, td["omega0"]),
-        "a": sol["a"].subs(omega0, td["omega0"]),
-        "b2": sol["b2"].subs(omega0, td["omega0"]),
-    }
-    return stage1, (lam_, mu_, nu_), gen
-
-
 __all__ = [
     "assumption1_equations",
     "energy_assumption1",
@@ -273,12 +252,4 @@ __all__ = [
     "stance_time_general",
     "touchdown_parameters",
     "touchdown_shifted_solution",
-    "stance_map_exprs",
-    "q_r_lo",
-    "q_rd_td",
-    "q_th_td",
-    "g_s",
-    "lam",
-    "mu",
-    "nu",
 ]

@@ -239,7 +239,6 @@ GEYER_EQS = ("7", "8", "9", "10", "11", "12", "13", "14", "17", "18", "19", "20"
 
 def _geyer_common_stages(with_liftoff: bool):
     """Stages shared by the Geyer kernels: (7)-(8) at touchdown, (9)-(11) parameters, guards."""
-    stage1, _, _ = geyer.stance_map_exprs()
     td = geyer.touchdown_parameters()
     om0 = sp.Symbol("omega0", positive=True)
     omega, epsilon = sp.Symbol("omega", real=True), sp.Symbol("epsilon", real=True)
