@@ -192,8 +192,6 @@ class Record:
         return self.abs_error(key) / ref if ref > 0.0 else math.nan
 
 
-
-
 def _point(params: SlipParams, h: float, v: float, th: float) -> Record:
     ex = simulate_step(params, h, v, th)
     ar = apex_return_geyer(params, h, v, th)
