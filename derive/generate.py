@@ -1,22 +1,34 @@
 """Render every generated file from the derivations, or check that the committed ones are current.
 
+Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
+(``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
+(the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` and ``docs/maps.md``;
+the equation and map tables of ``README.md`` (between their markers).
+
 Deterministic: the same sources give byte-identical files (no timestamps, SymPy pinned, ordered
 CSE, ``repr`` floats). Files are written only when their content changes, so numba's on-disk
-cache (keyed on the file's modification time and size) stays valid for unchanged modules.
+cache (keyed on the file's modification time and size) stays valid for unchanged modules. A
+module that calls kernels of another records that module's content hash in its header.
 """
 
 from __future__ import annotations
 
 import difflib
 import hashlib
+import pprint
 from pathlib import Path
 
 import jinja2
 import sympy as sp
 
-from .kernel import lower
-from .modules import MODULES
-from .registry import render_equation_table
+from . import docs
+from .equations import render_equation_table
+from .ir import Module
+from .lower import lower
+from .maps import all_maps
+from .mapspec import MapSpec
+from .model.kernels import MODULES as MODEL_MODULES
+from .model.kernels import flight_kernels
 from .render import render
 from .status import STATUS_CODES
 
@@ -39,6 +51,51 @@ def _require_checkout() -> None:
         )
 
 
+def modules() -> tuple[Module, ...]:
+    """Every generated kernel module, callees before callers."""
+    flights = flight_kernels()
+    return MODEL_MODULES + tuple(spec.module(flights) for spec in all_maps())
+
+
+def _render_module(mod: Module, files: dict[str, str]) -> str:
+    kernels = [lower(k) for k in mod.kernels()]
+    callees: dict[str, set[str]] = {}
+    for k in kernels:
+        for module, name in k["callees"]:
+            callees.setdefault(module, set()).add(name)
+    missing = sorted(m for m in callees if f"generated/{m}.py" not in files)
+    if missing:
+        raise RuntimeError(f"module {mod.name} calls into {missing}, which must be generated before it")
+    return render(
+        "kernels.py.j2",
+        source=mod.source,
+        template="derive/templates/kernels.py.j2",
+        depends=[{"name": f"{m}.py", "sha256": _sha(files[f"generated/{m}.py"])} for m in sorted(callees)],
+        module_doc=mod.doc,
+        imports=[f"from .{m} import {', '.join(sorted(names))}" for m, names in sorted(callees.items())],
+        kernels=kernels,
+        versions=VERSIONS,
+        statuses=_STATUSES,
+    )
+
+
+def _index(specs: tuple[MapSpec, ...]) -> dict:
+    from . import catalog
+
+    def rows(group) -> list[dict]:
+        return [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in group.fields()]
+
+    return {
+        "STANCE_OUTPUTS": rows(catalog.STANCE),
+        "APEX_OUTPUTS": rows(catalog.APEX_RETURN),
+        "TRAJECTORY_OUTPUTS": rows(catalog.TRAJECTORY),
+        "GROUPS": {**catalog.STANCE.subgroups(), **catalog.APEX_RETURN.subgroups()},
+        "TOUCHDOWN": [a.name for a in catalog.TOUCHDOWN],
+        "PARAMS": {name: arg.doc for name, arg in catalog.PARAMS.items()},
+        "MAPS": [s.index_row() for s in specs],
+    }
+
+
 def build_files() -> dict[str, str]:
     """Every generated file as {path relative to the repository root: content}."""
     _require_checkout()
@@ -51,46 +108,35 @@ def build_files() -> dict[str, str]:
         depends=[],
         **common,
     )
-    for spec in MODULES:
-        depends = [{"name": f"{d}.py", "sha256": _sha(files[f"generated/{d}.py"])} for d in spec.depends]
-        files[f"generated/{spec.name}.py"] = render(
-            "kernels.py.j2",
-            source=spec.source,
-            template="derive/templates/kernels.py.j2",
-            depends=depends,
-            module_doc=spec.doc,
-            imports=list(spec.imports),
-            apex_returns=list(spec.apex_returns),
-            kernels=[lower(k) for k in spec.build()],
-            **common,
-        )
+    mods = modules()
+    for mod in mods:
+        files[f"generated/{mod.name}.py"] = _render_module(mod, files)
+    specs = all_maps()
+    index = _index(specs)
+    files["generated/maps_index.py"] = render(
+        "maps_index.py.j2",
+        source="derive/mapspec.py",
+        template="derive/templates/maps_index.py.j2",
+        depends=[],
+        tables=[(name, pprint.pformat(value, width=100, sort_dicts=False)) for name, value in index.items()],
+        **common,
+    )
     files["generated/__init__.py"] = render(
         "init.py.j2",
-        source="derive/modules.py",
+        source="derive/generate.py",
         template="derive/templates/init.py.j2",
         depends=[],
-        modules=[{"name": s.name, "doc": s.doc} for s in MODULES],
+        modules=[{"name": m.name, "doc": m.doc} for m in mods],
         **common,
     )
     table = render_equation_table()
     files["docs/equations.md"] = table
-    files["README.md"] = _readme_with_table(table)
+    files["docs/maps.md"] = docs.maps_page(index)
+    readme = (ROOT / "README.md").read_text()
+    readme = docs.replace_between(readme, "equations", table.split("\n", 2)[2])
+    readme = docs.replace_between(readme, "maps", docs.maps_table(index))
+    files["README.md"] = readme
     return files
-
-
-README_BEGIN = "<!-- equations:begin (generated by `slipmaps generate` from derive/report_eqs.py) -->"
-README_END = "<!-- equations:end -->"
-
-
-def _readme_with_table(table: str) -> str:
-    """README.md with the equation-status table between its markers replaced by ``table``."""
-    text = (ROOT / "README.md").read_text()
-    if README_BEGIN not in text or README_END not in text:
-        raise RuntimeError(f"README.md lacks the markers {README_BEGIN!r} / {README_END!r}")
-    head, rest = text.split(README_BEGIN, 1)
-    _, tail = rest.split(README_END, 1)
-    body = table.split("\n", 2)[2]  # drop the generated-comment line and the title
-    return f"{head}{README_BEGIN}\n{body}{README_END}{tail}"
 
 
 def _stale(files: dict[str, str]) -> list[str]:

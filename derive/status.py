@@ -42,4 +42,14 @@ STATUS_CODES: tuple[tuple[str, int, str], ...] = (
         12,
         "an output overflowed or is NaN (inputs far outside a physical range)",
     ),
+    (
+        "NOT_CONVERGED",
+        13,
+        "the fixed-point iteration did not converge within its bound (raise iterations or tol)",
+    ),
+    (
+        "ENERGY_DEFICIT",
+        14,
+        "the approximate liftoff state needs more energy than the touchdown state has (no real q_rd_lo)",
+    ),
 )

@@ -1,6 +1,6 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/modules.py
+# Source:    derive/generate.py
 # Template:  derive/templates/init.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
@@ -10,6 +10,13 @@
 Modules:
     slip_model: SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2).
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
-    geyer: Geyer et al.'s approximate stance map and apex-return map (report section 3.1, eqs 7-26).
+    geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels.
+    gravity_type0: Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return kernels.
+    gravity_type1: Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and apex-return kernels.
+    gravity_type2: Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return kernels.
+    gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels.
+    gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time and apex-return kernels.
+    gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels.
+    maps_index: the index of every declared map (plain data).
     status: status codes shared by all kernels and the exact simulator.
 """

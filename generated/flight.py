@@ -1,6 +1,6 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/flight.py
+# Source:    derive/model/flight.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
@@ -26,6 +26,8 @@ STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
 STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
 
 
 @njit(cache=True, error_model="numpy")
@@ -35,24 +37,23 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     Report equations: sec2.1-touchdown, sec2.2.2.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m]
+        b_y_apex: apex height of the body above the ground [m], >= 0
         b_xd_apex: horizontal apex speed [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive [rad]
-        q_r_td: touchdown leg length [m]
+        q_th_td: touchdown leg angle from the vertical [rad], |q_th_td| < pi/2
+        q_r_td: touchdown leg length [m], > 0
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
 
     Returns a tuple:
-        td_q_r: touchdown leg length [m]
-        td_q_rd: touchdown leg length rate [m/s]
-        td_q_th: touchdown leg angle [rad]
-        td_q_thd: touchdown leg angle rate [rad/s]
-        t_flight: time from apex to touchdown [s]
-        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+        touchdown_q_r: leg length [m]
+        touchdown_q_rd: leg length rate [m/s]
+        touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        touchdown_q_thd: leg angle rate [rad/s]
+        t_flight: time from the apex to touchdown [s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 24
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((b_y_apex >= 0.0) and (g_f > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
@@ -65,32 +66,15 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     _x3 = math.sqrt(2.0)
     _x4 = math.sqrt(drop)
     _x5 = _x3*_x4
-    td_q_r = q_r_td
-    td_q_rd = -_x0*b_xd_apex - _x1*_x2*_x5
-    td_q_th = q_th_td
-    td_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
+    touchdown_q_r = q_r_td
+    touchdown_q_rd = -_x0*b_xd_apex - _x1*_x2*_x5
+    touchdown_q_th = q_th_td
+    touchdown_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
     t_flight = _x5/_x2
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(td_q_r) and math.isfinite(td_q_rd) and math.isfinite(td_q_th) and math.isfinite(td_q_thd) and math.isfinite(t_flight)):
+    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight)):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (td_q_r, td_q_rd, td_q_th, td_q_thd, t_flight, STATUS_OK)
-
-
-@njit(cache=True, parallel=True, error_model="numpy")
-def apex_to_touchdown_batch(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, out, status):
-    """Parallel batch form of :func:`apex_to_touchdown` over 1-D float64 arrays of equal length.
-
-    Writes output j of element i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Column order: td_q_r, td_q_rd, td_q_th, td_q_thd, t_flight.
-    """
-    for i in prange(out.shape[0]):
-        res = apex_to_touchdown(b_y_apex[i], b_xd_apex[i], q_th_td[i], q_r_td[i], g_f[i])
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -100,7 +84,7 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     Report equations: sec2.1-apex, sec2.2.2.
 
     Arguments:
-        q_r: leg length q_r [m]
+        q_r: liftoff leg length q_r [m], > 0
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
@@ -111,12 +95,11 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
         apex_b_xd: next apex horizontal speed [m/s]
         t_flight: time from liftoff to the apex [s]
         dx_flight: horizontal distance travelled from liftoff to the apex [m]
-        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 19
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f)):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((g_f > 0.0) and (q_r > 0.0)):
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
         return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -130,8 +113,8 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
         return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
-    # the runner moves in +x
-    if not ((b_xd > 0.0)):
+    # the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait
+    if not ((b_xd >= -1e-09*math.sqrt(g_f*q_r))):
         return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
     # apex where b_yd(t) = 0
     _x4 = (1.0/g_f)
@@ -144,19 +127,3 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight)):
         return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, STATUS_OK)
-
-
-@njit(cache=True, parallel=True, error_model="numpy")
-def liftoff_to_apex_batch(q_r, q_rd, q_th, q_thd, g_f, out, status):
-    """Parallel batch form of :func:`liftoff_to_apex` over 1-D float64 arrays of equal length.
-
-    Writes output j of element i to ``out[i, j]`` (shape (n, 4)) and its status code to
-    ``status[i]`` (int64). Column order: apex_b_y, apex_b_xd, t_flight, dx_flight.
-    """
-    for i in prange(out.shape[0]):
-        res = liftoff_to_apex(q_r[i], q_rd[i], q_th[i], q_thd[i], g_f[i])
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        status[i] = res[4]

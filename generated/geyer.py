@@ -1,13 +1,13 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/geyer.py
+# Source:    derive/maps/geyer.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:90530e956fef316d
+#   flight.py sha256:0415a4657ea8ce78
 # ----------------------------------------------------------------------------------------------
-"""Geyer et al.'s approximate stance map and apex-return map (report section 3.1, eqs 7-26)."""
+"""Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
 
 import math
 
@@ -29,9 +29,149 @@ STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
 STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
 
 
 @njit(cache=True, error_model="numpy")
+def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
+    """Geyer et al.'s radial solution (11) from a touchdown state: omega, omega0_hat, a, b, phase.
+
+    Report equations: 7, 8, 9, 10, 11, 12.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+
+    Returns a tuple:
+        omega: omega = p_th / (m l0^2), eq (7) [rad/s]
+        omega0_hat: frequency of (11) [rad/s]
+        a: offset of rho(t) in (11)
+        b: amplitude of rho(t) in (11)
+        phase_td: touchdown phase omega0_hat t_td, eq (12) [rad]
+        s_td: sin(phase_td) = (q_r_td / l0 - 1 - a) / b
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 56
+    # eq (7) at touchdown: omega0^2 = k/m, omega = p_th/(m l0^2), rho and its rate
+    _x1 = (1.0/l0)
+    _x0 = _x1
+    omega0_sq = k/m
+    omega = _x1**2*q_r_td**2*q_thd_td
+    rho_td = _x0*q_r_td - 1.0
+    rho_d_td = _x0*q_rd_td
+    # stance starts compressing
+    if not ((q_rd_td < 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
+    _x2 = omega**2
+    _x3 = 2.0*g_s/l0
+    epsilon = _x2 + _x3 + rho_d_td**2 + rho_td**2*(3.0*_x2 + omega0_sq) + rho_td*(-2.0*_x2 + _x3)
+    # eq (9): rho_d^2 = lambda rho^2 + mu rho + nu
+    _x4 = omega**2
+    _x5 = 2.0*g_s/l0
+    lam = -3.0*_x4 - omega0_sq
+    mu = 2.0*_x4 - _x5
+    nu = -_x4 - _x5 + epsilon
+    # eq (10)-(11): frequency, offset, squared amplitude of rho = a + b sin(omega0_hat t)
+    _x6 = (1.0/lam)
+    omega0_hat = math.sqrt(-lam)
+    a = -0.5*_x6*mu
+    b2 = (0.25)*_x6**2*(-4.0*lam*nu + mu**2)
+    # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
+    if not ((b2 > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+    # eq (12): sin(phase) at touchdown
+    _x7 = math.sqrt(b2)
+    b = _x7
+    s_td = (-a - 1.0 + q_r_td/l0)/_x7
+    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    if not ((a - b + 1.0 > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    # eq (12) needs |s_td| <= 1
+    if not ((abs(s_td) <= 1.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+    # eq (12), n = 0: compressing root
+    phase_td = math.pi - math.asin(s_td)
+    # (internal helper: its callers check that their outputs are finite)
+    return (omega, omega0_hat, a, b, phase_td, s_td, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def geyer_liftoff_phase(a, b, l0, q_r_lo):
+    """Geyer et al.'s liftoff phase omega0_hat t_lo, eq (14) with n = 0.
+
+    Report equations: 14.
+
+    Arguments:
+        a: offset a of (11)
+        b: amplitude b of (11)
+        l0: rest leg length l0 [m]
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+
+    Returns a tuple:
+        phase_lo: liftoff phase omega0_hat t_lo, eq (14) [rad]
+        s_lo: sin(phase_lo) = (q_r_lo / l0 - 1 - a) / b
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 7
+    # eq (14): sin(phase) at liftoff
+    s_lo = (-a - 1.0 + q_r_lo/l0)/b
+    # eq (14) needs |s_lo| <= 1
+    if not ((abs(s_lo) <= 1.0)):
+        return (NAN, NAN, STATUS_NO_LIFTOFF)
+    # eq (14), n = 0: extending root
+    phase_lo = math.asin(s_lo) + 2.0*math.pi
+    # (internal helper: its callers check that their outputs are finite)
+    return (phase_lo, s_lo, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def geyer_state(phase, phase_td, q_th_td, omega, omega0_hat, a, b, l0):
+    """Geyer et al.'s approximate stance state at the phase omega0_hat t: (11), (19), (17).
+
+    Report equations: 11, 17, 19.
+
+    The leg angle uses the linearization (18)-(19) of (17); the rate the exact (17) with the
+    conserved angular momentum.
+
+    Arguments:
+        phase: phase omega0_hat t [rad]
+        phase_td: touchdown phase omega0_hat t_td [rad]
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        omega: omega = p_th / (m l0^2) [rad/s]
+        omega0_hat: frequency omega0_hat [rad/s]
+        a: offset a of (11)
+        b: amplitude b of (11)
+        l0: rest leg length l0 [m]
+
+    Returns a tuple:
+        q_r: leg length [m]
+        q_rd: leg length rate [m/s]
+        q_th: leg angle from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate [rad/s]
+    """
+    # Total ops: 31
+    _x0 = a + b*math.sin(phase) + 1.0
+    _x1 = math.cos(phase)
+    _x2 = (1.0/omega0_hat)
+    _x3 = _x2*omega
+    _x4 = _x2*a
+    _x5 = _x2*b
+    _x6 = 2.0*omega
+    q_r = _x0*l0
+    q_rd = _x1*b*l0*omega0_hat
+    q_th = _x3*phase - _x3*phase_td - _x6*(-_x1*_x5 + _x4*phase) + _x6*(_x4*phase_td - _x5*math.cos(phase_td)) + q_th_td
+    q_thd = omega/_x0**2
+    return (q_r, q_rd, q_th, q_thd)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     """Geyer et al.'s approximate stance map: touchdown state -> bottom and liftoff states.
 
@@ -43,113 +183,88 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s], negative (compressing)
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
         m: body mass m [kg]
         l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
     Returns a tuple:
-        t_bottom: time from touchdown to the bottom (eq 13 - eq 12) [s]
-        t_stance: stance time t_lo - t_td (eq 14 - eq 12; eq 20 when q_r_td = q_r_lo = l0) [s]
-        b_q_r: bottom leg length l0 (1 + a - b) [m]
-        b_q_rd: bottom leg length rate (0 by construction) [m/s]
-        b_q_th: bottom leg angle, eq (19) [rad]
-        b_q_thd: bottom leg angle rate p_th / (m q_r^2), eq (17) [rad/s]
-        lo_q_r: liftoff leg length (= q_r_lo) [m]
-        lo_q_rd: liftoff leg length rate l0 b omega0_hat cos(phase_lo), from (11) [m/s]
-        lo_q_th: liftoff leg angle, eq (19) [rad]
-        lo_q_thd: liftoff leg angle rate p_th / (m q_r_lo^2), eq (17) [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 131
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo)):
+    # Total ops: 54
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((q_r_lo <= l0) and (q_r_td <= l0) and (g_s > 0.0) and (k > 0.0) and (l0 > 0.0) and (m > 0.0) and (q_r_lo > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # eq (7) at touchdown: omega0 = sqrt(k / m), omega = p_th / (m l0^2)
-    omega0 = math.sqrt(k)/math.sqrt(m)
-    omega = q_r_td**2*q_thd_td/l0**2
-    # stance starts compressing
-    if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # eq (8) at touchdown: epsilon = 2 E / (m l0^2)
-    _x0 = l0**4
-    _x1 = q_r_td**4*q_thd_td**2
-    _x2 = l0 - q_r_td
-    epsilon = (_x0*q_rd_td**2 + _x1*l0**2 + _x2*(_x2*(_x0*omega0**2 + 3.0*_x1) - 2.0*l0*(-_x1 + g_s*l0**3)) + 2.0*g_s*l0**5)/l0**6
-    # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
-    _x3 = omega**2
-    _x4 = 3.0*_x3 + omega0**2
-    _x5 = -_x3*l0 + g_s
-    omega0_hat = math.sqrt(_x4)
-    a = -_x5/(_x4*l0)
-    b2 = (-_x4*l0*(2.0*g_s + l0*(_x3 - epsilon)) + _x5**2)/(_x4**2*l0**2)
-    # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
-    if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (12)-(14): sin(phase) at touchdown/liftoff
-    _x6 = math.sqrt(b2)
-    _x7 = (1.0/_x6)
-    _x8 = (1.0/l0)
-    _x9 = a + 1.0
-    b = _x6
-    s_td = _x7*(_x8*q_r_td - _x9)
-    s_lo = _x7*(_x8*q_r_lo - _x9)
-    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
-    if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # eq (12) needs |s_td| <= 1
-    if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
-    # eq (14) needs |s_lo| <= 1
-    if not ((abs(s_lo) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
-    # eq (13)-(14), (19), (17): events, then the bottom and liftoff states
-    _x10 = (1.0/omega0_hat)
-    _x11 = math.asin(s_td)
-    _x12 = math.asin(s_lo)
-    _x13 = a + 1.0
-    _x14 = _x13 - b
-    _x15 = math.pi*_x10*omega
-    _x16 = _x10*(math.pi - _x11)
-    _x17 = _x10*b
-    _x18 = 2.0*omega
-    _x19 = -_x16*omega + _x18*(_x16*a + _x17*math.sqrt(1.0 - s_td**2)) + q_th_td
-    _x20 = _x13 + b*s_lo
-    _x21 = math.sqrt(1.0 - s_lo**2)
-    _x22 = _x10*(_x12 + 2.0*math.pi)
-    t_bottom = _x10*(_x11 + (0.5)*math.pi)
-    t_stance = _x10*(_x11 + _x12 + math.pi)
-    b_q_r = _x14*l0
-    b_q_rd = 0.0
-    b_q_th = -3.0*_x15*a + (1.5)*_x15 + _x19
-    b_q_thd = omega/_x14**2
-    lo_q_r = _x20*l0
-    lo_q_rd = _x21*b*l0*omega0_hat
-    lo_q_th = -_x18*(-_x17*_x21 + _x22*a) + _x19 + _x22*omega
-    lo_q_thd = omega/_x20**2
+    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
+    _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
+    if _c0[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+    omega = _c0[0]
+    omega0_hat = _c0[1]
+    a = _c0[2]
+    b = _c0[3]
+    phase_td = _c0[4]
+    s_td = _c0[5]
+    _c1 = geyer_liftoff_phase(a, b, l0, q_r_lo)
+    if _c1[2] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+    phase_lo = _c1[0]
+    s_lo = _c1[1]
+    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
+    _x0 = (1.0/omega0_hat)
+    _x1 = a + 1.0
+    _x2 = _x1 - b
+    _x3 = _x0*omega
+    _x4 = _x0*phase_td
+    _x5 = _x0*b
+    _x6 = 2.0*omega
+    _x7 = -_x4*omega + _x6*(_x4*a + _x5*math.sqrt(1.0 - s_td**2)) + q_th_td
+    _x8 = math.sqrt(1.0 - s_lo**2)
+    _x9 = _x0*phase_lo
+    t_bottom = _x0*(-phase_td + (1.5)*math.pi)
+    t_stance = _x0*(phase_lo - phase_td)
+    bottom_q_r = _x2*l0
+    bottom_q_rd = 0.0
+    bottom_q_th = -3.0*math.pi*_x3*a + (1.5)*math.pi*_x3 + _x7
+    bottom_q_thd = omega/_x2**2
+    liftoff_q_r = q_r_lo
+    liftoff_q_rd = _x8*b*l0*omega0_hat
+    liftoff_q_th = -_x6*(-_x5*_x8 + _x9*a) + _x7 + _x9*omega
+    liftoff_q_thd = omega/(_x1 + b*s_lo)**2
     # the leg stays above horizontal
-    if not ((abs(lo_q_th) < (0.5)*math.pi)):
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(b_q_r) and math.isfinite(b_q_rd) and math.isfinite(b_q_th) and math.isfinite(b_q_thd) and math.isfinite(lo_q_r) and math.isfinite(lo_q_rd) and math.isfinite(lo_q_th) and math.isfinite(lo_q_thd)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, b_q_r, b_q_rd, b_q_th, b_q_thd, lo_q_r, lo_q_rd, lo_q_th, lo_q_thd, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
 def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
-    """Parallel batch form of :func:`geyer_stance` over 1-D float64 arrays of equal length.
+    """Parallel batch form of :func:`geyer_stance`.
 
-    Writes output j of element i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Column order: t_bottom, t_stance, b_q_r, b_q_rd, b_q_th, b_q_thd, lo_q_r, lo_q_rd, lo_q_th, lo_q_thd.
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = geyer_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m[i], l0[i], k[i], g_s[i], q_r_lo[i])
+        res = geyer_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -164,96 +279,68 @@ def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_stance_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s):
-    """Geyer et al.'s approximate stance trajectory: the polar state a time t after touchdown.
+def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
+    """Geyer et al.'s approximate stance map: the polar state a time t after touchdown.
 
-    Report equations: 11, 17, 19.
+    Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
     Arguments:
-        t: time since touchdown [s], >= 0
+        t: time since touchdown t [s], >= 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s], negative (compressing)
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
         m: body mass m [kg]
         l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
     Returns a tuple:
-        q_r_t: leg length at t, eq (11) [m]
-        q_rd_t: leg length rate at t [m/s]
-        q_th_t: leg angle at t, eq (19) [rad]
-        q_thd_t: leg angle rate at t, eq (17) [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed guard; all other outputs are then NaN.
+        q_r: leg length [m]
+        q_rd: leg length rate [m/s]
+        q_th: leg angle from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 107
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)):
+    # Total ops: 2
+    # inputs: finite and inside their domains
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    if not ((t >= 0.0) and (q_r_td <= l0) and (g_s > 0.0) and (k > 0.0) and (l0 > 0.0) and (m > 0.0) and (q_r_td > 0.0) and (abs(q_th_td) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # eq (7) at touchdown: omega0 = sqrt(k / m), omega = p_th / (m l0^2)
-    omega0 = math.sqrt(k)/math.sqrt(m)
-    omega = q_r_td**2*q_thd_td/l0**2
-    # stance starts compressing
-    if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
-    # eq (8) at touchdown: epsilon = 2 E / (m l0^2)
-    _x0 = l0**4
-    _x1 = q_r_td**4*q_thd_td**2
-    _x2 = l0 - q_r_td
-    epsilon = (_x0*q_rd_td**2 + _x1*l0**2 + _x2*(_x2*(_x0*omega0**2 + 3.0*_x1) - 2.0*l0*(-_x1 + g_s*l0**3)) + 2.0*g_s*l0**5)/l0**6
-    # eq (9)-(11): frequency, offset, squared amplitude of rho(t) = a + b sin(omega0_hat t)
-    _x3 = omega**2
-    _x4 = 3.0*_x3 + omega0**2
-    _x5 = -_x3*l0 + g_s
-    omega0_hat = math.sqrt(_x4)
-    a = -_x5/(_x4*l0)
-    b2 = (-_x4*l0*(2.0*g_s + l0*(_x3 - epsilon)) + _x5**2)/(_x4**2*l0**2)
-    # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
-    if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (12)-(14): sin(phase) at touchdown/liftoff
-    _x6 = math.sqrt(b2)
-    b = _x6
-    s_td = (-a - 1.0 + q_r_td/l0)/_x6
-    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
-    if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
-    # eq (12) needs |s_td| <= 1
-    if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
-    # eq (11), (19), (17) at t
-    _x7 = math.asin(s_td)
-    _x8 = -_x7 + omega0_hat*t
-    _x9 = a - b*math.sin(_x8) + 1.0
-    _x10 = math.cos(_x8)
-    _x11 = math.pi - _x7
-    _x12 = (1.0/omega0_hat)
-    _x13 = _x12*omega
-    _x14 = _x8 + math.pi
-    _x15 = _x12*a
-    _x16 = _x12*b
-    _x17 = 2.0*omega
-    q_r_t = _x9*l0
-    q_rd_t = -_x10*b*l0*omega0_hat
-    q_th_t = -_x11*_x13 + _x13*_x14 - _x17*(_x10*_x16 + _x14*_x15) + _x17*(_x11*_x15 + _x16*math.sqrt(1.0 - s_td**2)) + q_th_td
-    q_thd_t = omega/_x9**2
+    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
+    _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
+    if _c0[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, _c0[6])
+    omega = _c0[0]
+    omega0_hat = _c0[1]
+    a = _c0[2]
+    b = _c0[3]
+    phase_td = _c0[4]
+    s_td = _c0[5]
+    # phase at t after touchdown
+    phase_t = omega0_hat*t + phase_td
+    _c1 = geyer_state(phase_t, phase_td, q_th_td, omega, omega0_hat, a, b, l0)
+    q_r = _c1[0]
+    q_rd = _c1[1]
+    q_th = _c1[2]
+    q_thd = _c1[3]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r_t) and math.isfinite(q_rd_t) and math.isfinite(q_th_t) and math.isfinite(q_thd_t)):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (q_r_t, q_rd_t, q_th_t, q_thd_t, STATUS_OK)
+    return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_stance_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, out, status):
-    """Parallel batch form of :func:`geyer_stance_state_at` over 1-D float64 arrays of equal length.
+def geyer_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
+    """Parallel batch form of :func:`geyer_state_at`.
 
-    Writes output j of element i to ``out[i, j]`` (shape (n, 4)) and its status code to
-    ``status[i]`` (int64). Column order: q_r_t, q_rd_t, q_th_t, q_thd_t.
+    Row arguments (1-D float64 arrays of equal length n, any stride): t.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
+    ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = geyer_stance_state_at(t[i], q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m[i], l0[i], k[i], g_s[i])
+        res = geyer_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -263,41 +350,80 @@ def geyer_stance_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k,
 
 @njit(cache=True, error_model="numpy")
 def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
-    """Apex-return map: exact flight, Geyer et al.'s stance map (section 3.1).
+    """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map.
 
-    Apex (height b_y_apex [m], speed b_xd_apex [m/s]) -> touchdown with the leg at (q_th_td [rad],
-    q_r_td [m]) by exact ballistic flight (g_f), the stance by :func:`geyer_stance`
-    (m, l0, k, g_s; liftoff at q_r_lo [m]), then exact flight to the next apex.
+    Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
-    Returns a tuple: next apex height [m], next apex speed [m/s], time apex -> touchdown [s],
-    stance time [s], time liftoff -> apex [s], liftoff state (q_r, q_rd, q_th, q_thd), status.
+    Arguments:
+        b_y_apex: apex height of the body above the ground [m], >= 0
+        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+
+    Returns a tuple:
+        apex_height: next apex height above the ground [m]
+        apex_speed: next apex horizontal speed [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # stance parameters first, so an invalid one is reported as such whatever the flight does
-    if not (math.isfinite(m) and m > 0.0 and math.isfinite(l0) and l0 > 0.0 and math.isfinite(k) and k > 0.0 and math.isfinite(g_s) and g_s > 0.0 and math.isfinite(q_r_lo) and 0.0 < q_r_lo <= l0 and q_r_td <= l0):
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    td = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
-    if td[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, td[5])
-    st = geyer_stance(td[0], td[1], td[2], td[3], m, l0, k, g_s, q_r_lo)
-    if st[-1] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, st[-1])
-    lo = (st[-5], st[-4], st[-3], st[-2])
-    ap = liftoff_to_apex(lo[0], lo[1], lo[2], lo[3], g_f)
-    if ap[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, ap[4])
-    return (ap[0], ap[1], td[4], st[1], ap[2], lo[0], lo[1], lo[2], lo[3], STATUS_OK)
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
+    if _c0[5] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    # stance: Geyer et al.'s approximate stance map
+    _c1 = geyer_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
+    if _c1[10] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
+    if _c2[4] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
 def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
-    """Parallel batch form of :func:`geyer_apex_return` over 1-D float64 arrays of equal length.
+    """Parallel batch form of :func:`geyer_apex_return`.
 
-    ``out`` has shape (n, 9) in the order of the scalar outputs; ``status`` is int64 of length n.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 9)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = geyer_apex_return(
-            b_y_apex[i], b_xd_apex[i], q_th_td[i], m[i], l0[i], k[i], g_s[i], g_f[i], q_r_td[i], q_r_lo[i]
-        )
+        res = geyer_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

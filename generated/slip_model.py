@@ -1,6 +1,6 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/mechanics.py
+# Source:    derive/model/mechanics.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
@@ -26,6 +26,8 @@ STATUS_LIFTOFF_BACKWARD = 9
 STATUS_RECOMPRESSION = 10
 STATUS_INTEGRATION_FAILED = 11
 STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
 
 
 @njit(cache=True, error_model="numpy")
@@ -111,7 +113,7 @@ def stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
 
     Returns:
-        energy: total mechanical energy E [J] (gravity potential zero at toe height)
+        energy: total mechanical energy E (gravity potential zero at toe height) [J]
     """
     # Total ops: 22
     _x0 = (0.5)*k

@@ -30,6 +30,8 @@ class Status(IntEnum):
     RECOMPRESSION = 10
     INTEGRATION_FAILED = 11
     NUMERICAL_RANGE = 12
+    NOT_CONVERGED = 13
+    ENERGY_DEFICIT = 14
 
 
 #: Human-readable message for each status code.
@@ -47,4 +49,6 @@ MESSAGES = {
     10: "the leg starts compressing again after the bottom (the decompression stiffness k_d is too soft)",
     11: "the numerical integrator failed",
     12: "an output overflowed or is NaN (inputs far outside a physical range)",
+    13: "the fixed-point iteration did not converge within its bound (raise iterations or tol)",
+    14: "the approximate liftoff state needs more energy than the touchdown state has (no real q_rd_lo)",
 }

@@ -1,12 +1,20 @@
-"""The ``slipmaps`` command line.
+"""The ``slipmaps`` command line (also ``python -m slipmaps`` and ``python -m slipmaps.runtime``).
 
-Subcommands: ``compare`` (the main job: exact vs approximate step, table + plot), ``generate``
-(regenerate ``generated/`` and the docs from ``derive/``; ``--check`` fails when they are stale),
-``equations`` (run the symbolic check of every registry entry and print its status) and
-``accuracy`` (write the accuracy table of the approximate map to docs/).
+Subcommands:
 
-Built on the standard library's argparse: the interface is a handful of subcommands with float
-options, which argparse covers fully, and it keeps the runtime free of extra dependencies.
+- ``maps [--json]``: the maps of the index (name, title, report section, equations, requirements,
+  options);
+- ``compare [--map NAME] [--against NAME] [--option KEY=VALUE ...]``: the main job, one step by two
+  maps from the same touchdown (default Geyer et al. against the exact simulator): table + plot;
+- ``accuracy [--map NAME|all]``: every map against the exact simulator on the accuracy grids,
+  written to docs/accuracy.md (+ .json, .png);
+- ``equations [--json]``: run the symbolic check of every registered report equation;
+- ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
+  stale).
+
+A user error (bad value, unknown map or option, a map that refuses the parameters) is one line on
+standard error and exit code 2, never a traceback. The map names and options come from the
+generated index.
 """
 
 from __future__ import annotations
@@ -15,6 +23,7 @@ import argparse
 import json
 import sys
 
+from . import index
 from .params import HUMAN_RUNNER, SlipParams
 
 __all__ = ["main", "build_parser"]
@@ -50,6 +59,27 @@ def _params(args: argparse.Namespace) -> SlipParams:
     )
 
 
+def _options(name: str, pairs: list[str] | None) -> dict:
+    """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
+    info = index.get(name)
+    out = {}
+    for pair in pairs or ():
+        key, sep, value = pair.partition("=")
+        if not sep:
+            raise ValueError(f"--option takes KEY=VALUE, got {pair!r}")
+        opt = info.option(key.strip())
+        value = value.strip()
+        try:
+            out[opt.name] = (
+                value if opt.kind == "choice" else (int(value) if opt.kind == "int" else float(value))
+            )
+        except ValueError:
+            raise ValueError(
+                f"map {name!r} option {opt.name!r} must be a {opt.kind}, got {value!r}"
+            ) from None
+    return out
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="slipmaps",
@@ -57,14 +87,29 @@ def build_parser() -> argparse.ArgumentParser:
         "checked against numerical integration.",
     )
     sub = parser.add_subparsers(dest="command", required=True)
+    names = index.names()
+
+    mp = sub.add_parser("maps", help="list the maps (name, title, report section, equations, options)")
+    mp.add_argument("--json", action="store_true", help="print the index as JSON")
 
     cmp_ = sub.add_parser(
         "compare",
-        help="one step exact vs Geyer et al.'s approximate stance map: table and plot",
-        description="One SLIP step from an apex (default: 1.0 m, 5 m/s, touchdown angle 0.35 rad) or "
-        "from a touchdown state: exact (solve_ivp) vs Geyer et al.'s approximate stance map.",
+        help="one step by two maps from the same touchdown: table and plot",
+        description="One SLIP step from an apex (default: 1.0 m, 5 m/s, touchdown angle 0.35 rad) or from "
+        "a touchdown state, by --map and by --against (default: Geyer et al.'s map against the exact "
+        "simulator).",
     )
     _add_params(cmp_)
+    cmp_.add_argument(
+        "--map", default="geyer", choices=names, help="the map to compare (default %(default)s)"
+    )
+    cmp_.add_argument(
+        "--against", default=index.EXACT, choices=names, help="the reference (default %(default)s)"
+    )
+    cmp_.add_argument(
+        "--option", action="append", metavar="KEY=VALUE", help="an option of --map (repeatable)"
+    )
+    cmp_.add_argument("--against-option", action="append", metavar="KEY=VALUE", help="an option of --against")
     t = cmp_.add_argument_group("touchdown conditions (an apex, or --touchdown)")
     t.add_argument("--apex-height", type=float, default=None, help="apex height [m] (default 1.0)")
     t.add_argument("--apex-speed", type=float, default=None, help="apex speed [m/s] (default 5.0)")
@@ -88,26 +133,48 @@ def build_parser() -> argparse.ArgumentParser:
     )
     gen.add_argument("--check", action="store_true", help="exit 1 if generated files differ from the sources")
 
-    sub.add_parser(
+    eq = sub.add_parser(
         "equations", help="check every registered report equation symbolically and print its status"
     )
+    eq.add_argument("--json", action="store_true", help="one JSON object per equation")
 
-    acc = sub.add_parser("accuracy", help="write the accuracy table of the approximate map")
-    acc.add_argument("--out", default="docs/accuracy.md", help="markdown path (default %(default)s)")
+    acc = sub.add_parser("accuracy", help="every map against the exact simulator on the accuracy grids")
+    acc.add_argument(
+        "--map", default="all", help="a map name, or 'all' (default): all maps, written to docs/accuracy.md"
+    )
+    acc.add_argument("--out", default=None, help="markdown path (default docs/accuracy.md for all maps)")
+    acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     return parser
+
+
+def _cmd_maps(args: argparse.Namespace) -> int:
+    rows = index.maps()
+    if args.json:
+        print(json.dumps([m.as_dict() for m in rows], indent=2))
+        return 0
+    for m in rows:
+        print(f"{m.name:<16} {m.section:<5} {m.title}")
+        print(f"{'':<16} equations {', '.join(m.equations)}; requires {', '.join(m.requires) or 'nothing'}")
+        for o in m.options:
+            kind = "|".join(o.choices) if o.kind == "choice" else o.kind
+            print(f"{'':<16} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
+    return 0
 
 
 def _cmd_compare(args: argparse.Namespace) -> int:
     from .compare import compare, format_table, plot
 
     params = _params(args)
-    touchdown = tuple(args.touchdown) if args.touchdown is not None else None
     c = compare(
         params,
+        map=args.map,
+        against=args.against,
         apex_height=args.apex_height,
         apex_speed=args.apex_speed,
-        q_th_td=args.angle,
-        touchdown=touchdown,
+        touchdown_angle=args.angle,
+        touchdown=tuple(args.touchdown) if args.touchdown is not None else None,
+        options=_options(args.map, args.option),
+        against_options=_options(args.against, args.against_option),
     )
     path = None if args.no_plot else plot(c, args.plot)
     if args.json:
@@ -122,14 +189,12 @@ def _cmd_compare(args: argparse.Namespace) -> int:
 
 
 def _derive_module(name: str):
-    try:
-        import importlib
+    import importlib
 
+    try:
         return importlib.import_module(f"slipmaps.derive.{name}")
     except ImportError as exc:  # sympy / jinja2 missing
-        raise SystemExit(
-            f"slipmaps {name}: needs the derive extra (pip install -e '.[derive]'): {exc}"
-        ) from None
+        raise ValueError(f"needs the derive extra (pip install -e '.[derive]'): {exc}") from None
 
 
 def _cmd_generate(args: argparse.Namespace) -> int:
@@ -137,22 +202,18 @@ def _cmd_generate(args: argparse.Namespace) -> int:
 
 
 def _cmd_equations(args: argparse.Namespace) -> int:
-    registry = _derive_module("registry")
-    failed = 0
-    for e in registry.entries():
-        ok = e.check() if e.check is not None else None
-        mark = "-" if ok is None else ("ok" if ok else "FAILED")
-        failed += ok is False
-        print(f"{e.key:>20}  {e.status:<10}  {mark:<6}  {e.title}")
-    print(f"{failed} check(s) failed" if failed else "all checks pass")
-    return 1 if failed else 0
+    return _derive_module("equations").main(json_output=args.json)
 
 
 def _cmd_accuracy(args: argparse.Namespace) -> int:
-    from .accuracy import write
+    from .accuracy_report import write
 
-    path = write(args.out)
-    print(f"wrote {path}")
+    names = None if args.map == "all" else [index.get(args.map).name]
+    if names == [index.EXACT]:
+        raise ValueError("accuracy compares maps against the exact simulator; choose an approximate map")
+    out = args.out or ("docs/accuracy.md" if names is None else f"accuracy_{args.map}.md")
+    for path in write(out, names, show_progress=False if args.no_progress else None):
+        print(f"wrote {path}")
     return 0
 
 
@@ -160,6 +221,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     handlers = {
+        "maps": _cmd_maps,
         "compare": _cmd_compare,
         "generate": _cmd_generate,
         "equations": _cmd_equations,
@@ -167,7 +229,7 @@ def main(argv: list[str] | None = None) -> int:
     }
     try:
         return handlers[args.command](args)
-    except ValueError as exc:
+    except (ValueError, TypeError) as exc:
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2
 

@@ -1,72 +1,95 @@
-"""The main job: one SLIP step, exact (``solve_ivp``) versus Geyer et al.'s approximate stance map.
+"""The main job: one SLIP step by two maps from the same touchdown (default Geyer et al. vs exact).
 
-Both sides start from the same touchdown state (reached from an apex by exact ballistic flight,
-or given directly) and fly from their own liftoff to the next apex exactly; only the stance
-differs. :func:`compare` returns the rows of the table (quantity, unit, exact, approximate,
-absolute and relative error); :func:`format_table` prints them and :func:`plot` draws q_r(t) and
-q_th(t) of both stances.
+Both sides start from the same touchdown state (reached from an apex by the exact ballistic
+flight, or given directly) and fly from their own liftoff to the next apex exactly; only the
+stance differs. :func:`compare` returns the rows of the table (quantity, unit, reference value,
+map value, absolute and relative error: ``map - against``); :func:`format_table` prints them and
+:func:`plot` draws q_r(t) and q_th(t) of both stances.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
-from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import MESSAGES, Status
 
-from .observables import QUANTITIES, approx_values, exact_values
+from . import flight, index
+from .maps import stance, trajectory
 from .params import SlipParams
-from .simulate import StepResult, simulate_from_touchdown, simulate_step
-from .stance_maps import geyer_stance, geyer_stance_trajectory
+from .quantities import QUANTITIES
+from .results import Result
 
-__all__ = ["Row", "Comparison", "compare", "format_table", "plot", "DEFAULT_APEX"]
+__all__ = ["Row", "Side", "Comparison", "compare", "format_table", "plot", "DEFAULT_APEX"]
 
 #: The documented default case: apex 1.0 m high at 5 m/s, touchdown angle 0.35 rad (about 20 deg).
-DEFAULT_APEX = {"apex_height": 1.0, "apex_speed": 5.0, "q_th_td": 0.35}
+DEFAULT_APEX = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
 
 
 @dataclass(frozen=True)
 class Row:
     quantity: str
     unit: str
-    exact: float
-    approx: float
+    reference: float  # the ``against`` map
+    value: float  # the compared map
 
     @property
     def abs_error(self) -> float:
-        return self.approx - self.exact
+        return self.value - self.reference
 
     @property
     def rel_error(self) -> float:
-        return self.abs_error / abs(self.exact) if self.exact != 0.0 else math.nan
+        return self.abs_error / abs(self.reference) if self.reference != 0.0 else math.nan
+
+
+@dataclass(frozen=True)
+class Side:
+    """One map's step: its stance result and the next apex after its liftoff."""
+
+    map: str
+    options: dict
+    stance: Result
+    status: Status  # the stance's status, else the ascent's
+    next_apex: tuple[float, float]
+
+    def value(self, key: str) -> float:
+        if key == "apex_height":
+            return self.next_apex[0]
+        if key == "apex_speed":
+            return self.next_apex[1]
+        return float(self.stance.values[key])
 
 
 @dataclass(frozen=True)
 class Comparison:
     params: SlipParams
     touchdown: tuple[float, float, float, float]
-    exact_status: Status
-    approx_status: Status
-    rows: tuple[Row, ...]
-    exact: StepResult
-    approx_t_stance: float
+    map: Side
+    against: Side
+    rows: tuple[Row, ...] = field(default=())
 
     def to_dict(self) -> dict:
         return {
-            "params": asdict(self.params),
+            "params": self.params.as_dict(),
             "touchdown": dict(zip(("q_r", "q_rd", "q_th", "q_thd"), self.touchdown, strict=True)),
-            "exact_status": self.exact_status.name,
-            "exact_message": MESSAGES[int(self.exact_status)],
-            "approx_status": self.approx_status.name,
-            "approx_message": MESSAGES[int(self.approx_status)],
+            "map": self.map.map,
+            "map_options": self.map.options,
+            "against": self.against.map,
+            "against_options": self.against.options,
+            "map_status": self.map.status.name,
+            "map_message": MESSAGES[int(self.map.status)],
+            "against_status": self.against.status.name,
+            "against_message": MESSAGES[int(self.against.status)],
+            # the names of the exact-vs-approximate default, kept for scripts
+            "approx_status": self.map.status.name,
+            "exact_status": self.against.status.name,
             "rows": [
                 {
                     "quantity": r.quantity,
                     "unit": r.unit,
-                    "exact": _json_float(r.exact),
-                    "approx": _json_float(r.approx),
+                    "reference": _json_float(r.reference),
+                    "value": _json_float(r.value),
                     "abs_error": _json_float(r.abs_error),
                     "rel_error": _json_float(r.rel_error),
                 }
@@ -79,45 +102,59 @@ def _json_float(x: float) -> float | None:
     return float(x) if math.isfinite(x) else None
 
 
+def _side(name: str, params: SlipParams, td, options: dict) -> Side:
+    res = stance(name, params, td, **options)
+    if not res.ok:
+        return Side(name, options, res, res.status, (math.nan, math.nan))
+    status, h, v = flight.next_apex(params, res.liftoff)
+    return Side(name, options, res, status, (h, v))
+
+
 def compare(
     params: SlipParams,
     *,
+    map: str = "geyer",  # noqa: A002 - the CLI's --map
+    against: str = index.EXACT,
     apex_height: float | None = None,
     apex_speed: float | None = None,
-    q_th_td: float | None = None,
+    touchdown_angle: float | None = None,
     touchdown=None,
+    options: dict | None = None,
+    against_options: dict | None = None,
 ) -> Comparison:
-    """Run one step both ways, from an apex (height, speed, touchdown angle) or a touchdown state."""
-    params.k  # noqa: B018 - Geyer's map needs k_c == k_d; raises ValueError with both values otherwise
+    """One step by ``map`` and by ``against`` from an apex (height, speed, touchdown angle) or a
+    polar touchdown state. ValueError when there is no touchdown or a map refuses the parameters."""
+    for name in (map, against):
+        index.get(name).param_values(params)  # ValueError naming the requirement, before any work
     if touchdown is not None:
-        if apex_height is not None or apex_speed is not None or q_th_td is not None:
+        if apex_height is not None or apex_speed is not None or touchdown_angle is not None:
             raise ValueError(
                 "give either an apex (height, speed, touchdown angle) or a touchdown state, not both"
             )
-        exact = simulate_from_touchdown(params, touchdown, dense=True)
+        td = tuple(float(x) for x in touchdown)
     else:
-        apex = {**DEFAULT_APEX}
-        for key, value in (("apex_height", apex_height), ("apex_speed", apex_speed), ("q_th_td", q_th_td)):
-            if value is not None:
-                apex[key] = value
-        exact = simulate_step(params, apex["apex_height"], apex["apex_speed"], apex["q_th_td"], dense=True)
-    if exact.touchdown is None:
-        raise ValueError(f"no touchdown: {exact.message}")
-    td = tuple(exact.touchdown)
-    approx = geyer_stance(params, td)
-    if approx.ok:
-        up = gen_flight.liftoff_to_apex(*approx.liftoff, params.g_f)
-        approx_status = Status(up[-1])
-        next_apex = (up[0], up[1])
-    else:
-        approx_status, next_apex = approx.status, (math.nan, math.nan)
-    ex_vals, ap_vals = exact_values(exact), approx_values(approx, next_apex)
-    rows = tuple(Row(q.label, q.unit, ex_vals[q.key], ap_vals[q.key]) for q in QUANTITIES)
-    return Comparison(params, td, exact.status, approx_status, rows, exact, approx.t_stance)
+        apex = dict(DEFAULT_APEX)
+        given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+        apex.update({key: value for key, value in given.items() if value is not None})
+        status, td, _ = flight.touchdown(
+            params, apex["apex_height"], apex["apex_speed"], apex["touchdown_angle"]
+        )
+        if status != Status.OK:
+            raise ValueError(f"no touchdown from apex {apex}: {MESSAGES[int(status)]}")
+    mine = _side(map, params, td, dict(options or {}))
+    ref = _side(against, params, td, dict(against_options or {}))
+    rows = tuple(Row(q.label, q.unit, ref.value(q.key), mine.value(q.key)) for q in QUANTITIES)
+    return Comparison(params, td, mine, ref, rows)
 
 
 def _fmt(x: float, spec: str) -> str:
     return format(x, spec) if math.isfinite(x) else "n/a"
+
+
+def _title(side: Side) -> str:
+    info = index.get(side.map)
+    opts = ", ".join(f"{k}={v}" for k, v in side.options.items())
+    return f"{side.map} ({info.title}, report {info.section}{'; ' + opts if opts else ''})"
 
 
 def format_table(c: Comparison) -> str:
@@ -128,46 +165,46 @@ def format_table(c: Comparison) -> str:
         f"SLIP step: m={p.m:g} kg, l0={p.l0:g} m, k_c={p.k_c:g} N/m, k_d={p.k_d:g} N/m, "
         f"g_s={p.g_s:g}, g_f={p.g_f:g} m/s^2, q_r_td={p.q_r_td:g} m, q_r_lo={p.q_r_lo:g} m",
         f"touchdown: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s",
-        f"exact (solve_ivp DOP853, rtol=1e-11): {MESSAGES[int(c.exact_status)]}; "
-        f"approximate (Geyer et al., report 3.1): {MESSAGES[int(c.approx_status)]}",
+        f"reference: {_title(c.against)}: {MESSAGES[int(c.against.status)]}",
+        f"map:       {_title(c.map)}: {MESSAGES[int(c.map.status)]}",
         "",
-        f"{'quantity':<30}{'unit':>7}{'exact':>14}{'approx':>14}{'abs err':>13}{'rel err':>11}",
+        f"{'quantity':<30}{'unit':>7}{'reference':>14}{'map':>14}{'abs err':>13}{'rel err':>11}",
         "-" * 89,
     ]
     for r in c.rows:
         lines.append(
-            f"{r.quantity:<30}{r.unit:>7}{_fmt(r.exact, '14.6f')}{_fmt(r.approx, '14.6f')}"
+            f"{r.quantity:<30}{r.unit:>7}{_fmt(r.reference, '14.6f')}{_fmt(r.value, '14.6f')}"
             f"{_fmt(r.abs_error, '+13.2e')}{_fmt(r.rel_error, '+11.2%')}"
         )
     return "\n".join(lines)
 
 
 def plot(c: Comparison, path: str) -> str:
-    """Write a PNG of q_r(t) and q_th(t), exact vs approximate, and return its path."""
+    """Write a PNG of q_r(t) and q_th(t) of both stances and return its path."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    ex = c.exact.stance
     fig, axes = plt.subplots(2, 1, figsize=(7.5, 6.5), sharex=True)
-    if ex is not None and ex.t is not None:
-        axes[0].plot(ex.t, ex.states[0], "k-", lw=2, label="exact (solve_ivp)")
-        axes[1].plot(ex.t, ex.states[2], "k-", lw=2, label="exact (solve_ivp)")
-    if math.isfinite(c.approx_t_stance):
-        t = np.linspace(0.0, c.approx_t_stance, 400)
-        states, _ = geyer_stance_trajectory(c.params, c.touchdown, t)
-        axes[0].plot(t, states[0], "C1--", lw=2, label="Geyer et al. (approx.)")
-        axes[1].plot(t, states[2], "C1--", lw=2, label="Geyer et al. (approx.)")
+    for side, style in ((c.against, dict(color="k", ls="-", lw=2)), (c.map, dict(color="C1", ls="--", lw=2))):
+        if not side.stance.ok:
+            continue
+        t, states, _ = trajectory(side.map, c.params, c.touchdown, **side.options)
+        if t.size:
+            ok = np.all(np.isfinite(states), axis=1)
+            label = f"{side.map} ({index.get(side.map).title})"
+            axes[0].plot(t[ok], states[ok, 0], label=label, **style)
+            axes[1].plot(t[ok], states[ok, 2], label=label, **style)
     axes[0].set_ylabel("leg length q_r [m]")
     axes[1].set_ylabel("leg angle q_th [rad]")
     axes[1].set_xlabel("time since touchdown [s]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="best")
+        ax.legend(loc="best", fontsize=8)
     p = c.params
     axes[0].set_title(
-        f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, k={p.k_c:g} N/m, q_th_td={c.touchdown[2]:.3f} rad"
+        f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, k_c={p.k_c:g} N/m, q_th_td={c.touchdown[2]:.3f} rad"
     )
     fig.tight_layout()
     fig.savefig(path, dpi=110)

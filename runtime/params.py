@@ -1,10 +1,12 @@
 """SLIP parameters (report Table 1), validated on construction.
 
-Units are SI throughout: kg, m, N/m, m/s^2. Stiffness ``k_c`` acts while the leg compresses
-(q_rd <= 0), ``k_d`` after the bottom (q_rd > 0). ``g_s`` is the gravitational acceleration
-during stance, ``g_f`` during flight (both positive numbers, pointing down). ``q_r_td`` and
-``q_r_lo`` are the touchdown and liftoff leg lengths; both default to the rest length ``l0``
-and must lie in (0, l0].
+Units are SI throughout: kg, m, N/m, m/s^2. ``SlipParams(m=80, l0=1, k=20_000)`` gives a leg of
+constant stiffness ``k``; ``k_c`` / ``k_d`` set the stiffness while the leg compresses (until the
+bottom) and after the bottom separately (report section 5). ``g_s`` is the gravitational
+acceleration during stance, ``g_f`` during flight (both positive numbers, pointing down).
+``q_r_td`` and ``q_r_lo`` are the touchdown and liftoff leg lengths; both default to the rest
+length ``l0`` and must lie in (0, l0]. Every field defaults to the human runner
+(:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m).
 """
 
 from __future__ import annotations
@@ -14,44 +16,73 @@ from dataclasses import dataclass, fields, replace
 
 __all__ = ["SlipParams", "HUMAN_RUNNER", "ROBOT_HOPPER"]
 
+_DEFAULT_K = 20_000.0
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, init=False)
 class SlipParams:
     """Physical parameters of the SLIP template (report Table 1)."""
 
-    m: float = 80.0
-    l0: float = 1.0
-    k_c: float = 20_000.0
-    k_d: float = 20_000.0
-    g_s: float = 9.81
-    g_f: float = 9.81
-    q_r_td: float | None = None
-    q_r_lo: float | None = None
+    m: float
+    l0: float
+    k_c: float
+    k_d: float
+    g_s: float
+    g_f: float
+    q_r_td: float
+    q_r_lo: float
 
-    def __post_init__(self) -> None:
-        for f in fields(self):
-            value = getattr(self, f.name)
+    def __init__(
+        self,
+        m: float = 80.0,
+        l0: float = 1.0,
+        k: float | None = None,
+        *,
+        k_c: float | None = None,
+        k_d: float | None = None,
+        g_s: float = 9.81,
+        g_f: float = 9.81,
+        q_r_td: float | None = None,
+        q_r_lo: float | None = None,
+    ) -> None:
+        if k is not None and (k_c is not None or k_d is not None):
+            raise ValueError(
+                f"SlipParams: give either k (both stiffnesses) or k_c/k_d, not both (got k={k!r}, "
+                f"k_c={k_c!r}, k_d={k_d!r})"
+            )
+        stiff = _DEFAULT_K if k is None else k
+        values = {
+            "m": m,
+            "l0": l0,
+            "k_c": stiff if k_c is None else k_c,
+            "k_d": stiff if k_d is None else k_d,
+            "g_s": g_s,
+            "g_f": g_f,
+            "q_r_td": q_r_td,
+            "q_r_lo": q_r_lo,
+        }
+        for name, value in values.items():
             if value is None:
                 continue
             if isinstance(value, bool) or not isinstance(value, (int, float)):
-                raise ValueError(f"SlipParams.{f.name} must be a real number, got {value!r}")
+                raise ValueError(f"SlipParams.{name} must be a real number, got {value!r}")
             if not math.isfinite(value) or value <= 0.0:
-                raise ValueError(f"SlipParams.{f.name} must be finite and positive, got {value!r}")
-            object.__setattr__(self, f.name, float(value))
-        if self.q_r_td is None:
-            object.__setattr__(self, "q_r_td", self.l0)
-        if self.q_r_lo is None:
-            object.__setattr__(self, "q_r_lo", self.l0)
+                raise ValueError(f"SlipParams.{name} must be finite and positive, got {value!r}")
+            values[name] = float(value)
         for name in ("q_r_td", "q_r_lo"):
-            value = getattr(self, name)
-            if value > self.l0:
+            if values[name] is None:
+                values[name] = values["l0"]
+            elif values[name] > values["l0"]:
                 raise ValueError(
-                    f"SlipParams.{name} must not exceed the rest length l0={self.l0!r}, got {value!r}"
+                    f"SlipParams.{name} must not exceed the rest length l0={values['l0']!r}, "
+                    f"got {values[name]!r}"
                 )
+        for name, value in values.items():
+            object.__setattr__(self, name, value)
 
     @property
     def constant_stiffness(self) -> bool:
-        """True when k_c == k_d (the setting of the report's section 3 maps)."""
+        """True when k_c == k_d (the setting of the report's sections 3 and 4)."""
         return self.k_c == self.k_d
 
     @property
@@ -59,19 +90,24 @@ class SlipParams:
         """The single stiffness of a constant-stiffness leg; ValueError when k_c != k_d."""
         if not self.constant_stiffness:
             raise ValueError(
-                f"this map assumes a constant leg stiffness (report section 3), got k_c={self.k_c!r} "
-                f"!= k_d={self.k_d!r}"
+                f"this needs a constant leg stiffness (k_c == k_d), got k_c={self.k_c!r} != k_d={self.k_d!r}"
             )
         return self.k_c
 
     def with_(self, **changes: float) -> SlipParams:
-        """A copy with some fields changed (validated again)."""
+        """A copy with some fields changed (validated again); ``k=`` sets both stiffnesses."""
+        if "k" in changes:
+            k = changes.pop("k")
+            changes.update(k_c=k, k_d=k)
         return replace(self, **changes)
+
+    def as_dict(self) -> dict[str, float]:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
 #: The documented default case: an 80 kg human runner with a 1 m leg and a 20 kN/m spring.
-HUMAN_RUNNER = SlipParams(m=80.0, l0=1.0, k_c=20_000.0, k_d=20_000.0, g_s=9.81, g_f=9.81)
+HUMAN_RUNNER = SlipParams(m=80.0, l0=1.0, k=20_000.0)
 
 #: A small robot hopper (about 3 kg, 0.25 m leg, 1.5 kN/m): dimensionless stiffness k l0/(m g) ~ 13,
 #: softer than the human runner's ~ 25, so its sweep angles and compressions are larger.
-ROBOT_HOPPER = SlipParams(m=3.0, l0=0.25, k_c=1_500.0, k_d=1_500.0, g_s=9.81, g_f=9.81)
+ROBOT_HOPPER = SlipParams(m=3.0, l0=0.25, k=1_500.0)

@@ -1,60 +1,84 @@
-"""Layer 2 of CODEGEN.md: the generation pipeline and the generated kernels.
+"""Layer 2 of CODEGEN.md: the generation pipeline and the generated modules.
 
-- Determinism: `build_files()` is reproducible within a process and across processes with
+- Determinism: ``build_files()`` is reproducible within a process and across processes with
   different hash seeds (set iteration order must not leak into the output).
-- Drift: the committed files are what the sources produce (`slipmaps generate --check`), and a
-  hand edit, a missing file or a stale file is reported.
-- Every generated kernel is a numba dispatcher (no silent pure-Python fallback) and runs.
-- Each kernel agrees with `sympy.lambdify` of the very expressions it was generated from and with
-  its own `.py_func`, at random in-domain points; lambdify with CSE on and off agree.
-- Headers and status codes are what the sources say.
+- Drift: the committed files are what the sources produce (``slipmaps generate --check``), and a
+  hand edit, an edited docs table, a missing file or a stale file is reported; ``write`` touches
+  only the files that changed (numba's cache keys on modification time).
+- Headers name source, template, rebuild command and pinned tool versions, no timestamp, and the
+  content hashes of the generated modules a module imports; status codes are what the sources say.
+- Every generated function is a numba dispatcher (no silent pure-Python fallback) and runs; every
+  map of ``maps_index.MAPS`` exports its stance / state-at-time / apex-return kernels and batch
+  forms with the argument orders of the index; each batch form equals its scalar form bit for bit.
+- The model and flight kernels agree with ``sympy.lambdify`` of the derivations in
+  ``derive/model/`` and with their own ``.py_func``; Geyer et al.'s stance kernel agrees with the
+  section 3.1 derivation (eqs 7-19) evaluated step by step; every map's apex-return kernel is the
+  composition flight.apex_to_touchdown -> stance -> flight.liftoff_to_apex, bit for bit.
 
-Tolerances. The kernel and the lambdified reference evaluate the same expression arranged
-differently (canonical CSE and integer powers in the kernel, SymPy's default printing in the
-reference), a few dozen float64 operations each, so they differ by a few ulps times the condition
-number of the expression. The sampled domain keeps that condition number small: |q_rd_td| >= 0.3
-m/s keeps the squared amplitude b^2 (a difference of energies) well away from cancellation, and
-sin(phase) stays inside [-0.99, 0.99] where asin is well conditioned. Measured worst relative
-discrepancies (numpy 2.4, numba 0.68, sympy 1.14): 9e-16 kernel vs lambdify, 2e-15 lambdify with
-vs without CSE, 3e-15 trajectory kernel vs stance-map kernel. RTOL = 1e-12 leaves more than two
-orders of margin and still catches any wrong term, sign or branch (those are O(1) errors).
-Near-zero outputs (a leg angle crossing 0, the bottom rate that is 0 by construction) get an
-absolute floor of RTOL times the output's natural magnitude. `.py_func` is the same source run by
-CPython; numba compiles it without fastmath, so the two agree to the last ulp (bitwise today;
-RTOL_PYFUNC allows a few ulps for libm differences).
+Tolerances. A kernel and the lambdified reference evaluate the same expression arranged
+differently (canonical CSE, shared reciprocals and integer powers in the kernel, SymPy's default
+printing in the reference), a few dozen float64 operations each, so they differ by a few ulps times
+the condition number of the expression. The sampled domain keeps that condition number small:
+|q_rd_td| >= 0.3 sqrt(g l0) keeps the squared amplitude b^2 (a difference of energies) away from
+cancellation, and |sin(phase)| <= 0.99 keeps asin well conditioned. Measured worst discrepancies
+relative to |reference| + the output's natural magnitude (numpy 2.4, numba 0.68, sympy 1.14):
+8.0e-16 kernel vs lambdify, 5.1e-16 lambdify with vs without CSE, 8.8e-16 state-at-time kernel
+vs stance kernel, 0 (bit for bit) kernel vs ``.py_func``. RTOL = 1e-12 leaves three orders of
+margin and still catches any wrong term, sign or branch (those are O(1) errors); RTOL_PYFUNC =
+1e-14 (numba's and CPython's libm may differ by an ulp on other platforms). Near-zero outputs (a
+leg angle crossing 0, the bottom rate that is 0 by construction) get an absolute floor of RTOL
+times the output's natural magnitude.
 """
 
 from __future__ import annotations
 
 import hashlib
+import importlib
 import inspect
 import json
 import math
 import os
 import re
-import shutil
 import subprocess
 import sys
 from functools import cache
+from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
 from numba.core.registry import CPUDispatcher
-from slipmaps.derive import flight as d_flight
-from slipmaps.derive import generate, mechanics
-from slipmaps.derive import geyer as d_geyer
+from slipmaps.derive import generate
 from slipmaps.derive import symbols as S
+from slipmaps.derive.maps import all_maps
+from slipmaps.derive.maps import geyer as d_geyer
+from slipmaps.derive.model import flight as d_flight
+from slipmaps.derive.model import mechanics
 from slipmaps.derive.status import STATUS_CODES
 from slipmaps.generated import flight as g_flight
 from slipmaps.generated import geyer as g_geyer
+from slipmaps.generated import maps_index
 from slipmaps.generated import slip_model as g_slip
 from slipmaps.generated.status import MESSAGES, Status
 
 RTOL = 1e-12
 RTOL_PYFUNC = 1e-14
 N_POINTS = 20
-KERNEL_MODULES = (g_slip, g_flight, g_geyer)
+OK = int(Status.OK)
+MAPS = maps_index.MAPS
+MAP_IDS = [row["name"] for row in MAPS]
+MAP_MODULES = {row["name"]: importlib.import_module(f"slipmaps.generated.{row['module']}") for row in MAPS}
+KERNEL_MODULES = (g_slip, g_flight, *MAP_MODULES.values())
+
+
+def _mod_id(mod) -> str:
+    return mod.__name__.rsplit(".", 1)[-1]
+
+
+@pytest.fixture(scope="module")
+def built() -> dict[str, str]:
+    """Every generated file as the sources produce it (one build, about 10 s)."""
+    return generate.build_files()
 
 
 # ----------------------------------------------------------------------------------------------
@@ -71,34 +95,31 @@ _SUBPROCESS = (
 )
 
 
-def test_build_files_deterministic_in_process():
-    first = generate.build_files()
-    second = generate.build_files()
-    assert first == second
+def test_build_files_deterministic_in_process(built):
+    again = generate.build_files()
+    assert sorted(again) == sorted(built)
+    differ = [rel for rel in built if again[rel] != built[rel]]
+    assert differ == [], f"a second build in the same process differs in {differ}"
 
 
-def test_build_files_independent_of_hash_seed():
-    """Fresh interpreters with other PYTHONHASHSEEDs produce byte-identical files."""
+def test_build_files_independent_of_hash_seed(built):
+    """Fresh interpreters with other PYTHONHASHSEEDs produce byte-identical files (run in parallel)."""
     procs = []
     for seed in ("1", "123"):
         env = {**os.environ, "PYTHONHASHSEED": seed}
-        procs.append(
-            (
-                seed,
-                subprocess.Popen(
-                    [sys.executable, "-c", _SUBPROCESS],
-                    env=env,
-                    cwd=generate.ROOT,
-                    stdout=subprocess.PIPE,
-                    stderr=subprocess.PIPE,
-                    text=True,
-                ),
-            )
+        proc = subprocess.Popen(
+            [sys.executable, "-c", _SUBPROCESS],
+            env=env,
+            cwd=generate.ROOT,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
         )
+        procs.append((seed, proc))
     try:
-        expected = _digest(generate.build_files())
+        expected = _digest(built)
         for seed, proc in procs:
-            out, err = proc.communicate(timeout=120)
+            out, err = proc.communicate(timeout=300)
             assert proc.returncode == 0, err
             assert out.strip() == expected, f"PYTHONHASHSEED={seed} gives different generated files"
     finally:
@@ -108,29 +129,23 @@ def test_build_files_independent_of_hash_seed():
                 proc.communicate()
 
 
-def test_generated_files_current():
+def test_committed_generated_files_are_current(built):
     """What `slipmaps generate --check` runs: committed files equal the sources' output, none stale."""
-    problems = generate.check()
+    problems = generate.check(files=built)
     assert problems == [], "\n".join(problems) + "\nrun `slipmaps generate`"
 
 
-def test_generate_check_entry_point(capsys):
-    assert generate.main(check_only=True) == 0
-    assert "generated files are current" in capsys.readouterr().out
-
-
 @pytest.fixture
-def checkout_copy(tmp_path, monkeypatch):
-    """A copy of the generated files, docs and README with generate.ROOT pointed at it."""
-    files = generate.build_files()
+def checkout_copy(tmp_path, monkeypatch, built):
+    """A checkout holding exactly the sources' output, with generate.ROOT pointed at it."""
     root = tmp_path / "checkout"
-    for rel in files:
+    for rel, text in built.items():
         (root / rel).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(generate.ROOT / rel, root / rel)
-    shutil.copy2(generate.ROOT / "pyproject.toml", root / "pyproject.toml")
+        (root / rel).write_text(text)
+    (root / "pyproject.toml").write_text((generate.ROOT / "pyproject.toml").read_text())
     monkeypatch.setattr(generate, "ROOT", root)
     monkeypatch.setattr(generate, "GENERATED", root / "generated")
-    return root, files
+    return root, built
 
 
 def test_check_clean_copy(checkout_copy):
@@ -138,49 +153,79 @@ def test_check_clean_copy(checkout_copy):
     assert generate.check(files=files) == []
 
 
-def test_hand_edit_detected(checkout_copy):
+def test_check_detects_hand_edit(checkout_copy):
     root, files = checkout_copy
     path = root / "generated" / "geyer.py"
     text = path.read_text()
-    edited = text.replace("b_q_rd = 0.0", "b_q_rd = 0.0  # tweaked", 1)
+    edited = text.replace("\nSTATUS_OK = 0\n", "\nSTATUS_OK = 0  # tweaked\n", 1)
     assert edited != text
     path.write_text(edited)
     problems = generate.check(files=files)
     assert len(problems) == 1
     assert "a/generated/geyer.py (committed)" in problems[0]
-    assert "-    b_q_rd = 0.0  # tweaked" in problems[0]
-    assert "+    b_q_rd = 0.0\n" in problems[0]
+    assert "b/generated/geyer.py (from sources)" in problems[0]
+    assert "-STATUS_OK = 0  # tweaked\n" in problems[0]
+    assert "+STATUS_OK = 0\n" in problems[0]
 
 
-def test_edited_docs_table_detected(checkout_copy):
+def test_check_detects_edited_docs_tables(checkout_copy):
+    """docs/equations.md, docs/maps.md and the README tables between their markers are generated too."""
     root, files = checkout_copy
-    path = root / "docs" / "equations.md"
-    path.write_text(path.read_text().replace("| corrected |", "| verified |", 1))
+    eqs = root / "docs" / "equations.md"
+    eqs.write_text(eqs.read_text().replace("| corrected |", "| verified |", 1))
+    maps_page = root / "docs" / "maps.md"
+    maps_page.write_text(maps_page.read_text().replace(MAPS[0]["title"], "A better title", 1))
+    readme = root / "README.md"
+    text = readme.read_text()
+    begin = text.index("<!-- maps:begin")
+    end = text.index("<!-- maps:end")
+    row = text.index(f"{MAPS[-1]['section']}", begin)
+    assert begin < row < end
+    readme.write_text(text[:row] + "9.9" + text[row + len(MAPS[-1]["section"]) :])
     problems = generate.check(files=files)
-    assert len(problems) == 1 and "docs/equations.md" in problems[0]
+    named = sorted(re.search(r"a/(\S+) \(committed\)", p).group(1) for p in problems)
+    assert named == ["README.md", "docs/equations.md", "docs/maps.md"]
 
 
-def test_missing_and_stale_files_detected(checkout_copy):
+def test_check_detects_missing_and_stale_files(checkout_copy):
     root, files = checkout_copy
     (root / "generated" / "flight.py").unlink()
     (root / "generated" / "old_kernels.py").write_text("# left over\n")
     problems = generate.check(files=files)
-    assert any("generated/flight.py" in p for p in problems)
+    assert len(problems) == 2
+    assert any("b/generated/flight.py (from sources)" in p for p in problems)
     assert any("generated/old_kernels.py: stale" in p for p in problems)
+
+
+def test_generate_check_entry_point(checkout_copy, monkeypatch, capsys):
+    """`slipmaps generate --check`: exit 0 when current; 1, the diff and the rebuild hint when not."""
+    root, files = checkout_copy
+    monkeypatch.setattr(generate, "build_files", lambda: files)
+    assert generate.main(check_only=True) == 0
+    assert "generated files are current" in capsys.readouterr().out
+    (root / "generated" / "flight.py").write_text("# hand edit\n")
+    assert generate.main(check_only=True) == 1
+    out = capsys.readouterr().out
+    assert "+++ b/generated/flight.py (from sources)" in out
+    assert "1 generated file(s) out of date: run `slipmaps generate`." in out
 
 
 def test_write_touches_only_changed_files(checkout_copy):
     """`slipmaps generate` rewrites only what changed (numba's cache keys on mtime) and drops stale files."""
     root, files = checkout_copy
+    mtimes = {rel: (root / rel).stat().st_mtime_ns for rel in files}
     assert generate.write(files) == []
+    assert {rel: (root / rel).stat().st_mtime_ns for rel in files} == mtimes
     (root / "generated" / "flight.py").write_text("# hand edit\n")
     (root / "generated" / "old_kernels.py").write_text("# left over\n")
-    mtime = (root / "generated" / "geyer.py").stat().st_mtime_ns
+    (root / "docs" / "maps.md").unlink()
     touched = generate.write(files)
-    assert sorted(touched) == ["generated/flight.py", "generated/old_kernels.py"]
+    assert sorted(touched) == ["docs/maps.md", "generated/flight.py", "generated/old_kernels.py"]
     assert (root / "generated" / "flight.py").read_text() == files["generated/flight.py"]
+    assert (root / "docs" / "maps.md").read_text() == files["docs/maps.md"]
     assert not (root / "generated" / "old_kernels.py").exists()
-    assert (root / "generated" / "geyer.py").stat().st_mtime_ns == mtime
+    unchanged = set(files) - {"generated/flight.py", "docs/maps.md"}
+    assert all((root / rel).stat().st_mtime_ns == mtimes[rel] for rel in unchanged)
     assert generate.check(files=files) == []
 
 
@@ -190,16 +235,30 @@ def test_write_touches_only_changed_files(checkout_copy):
 _TIMESTAMP = re.compile(
     r"\b\d{4}-\d{2}-\d{2}\b|\b\d{1,2}:\d{2}(:\d{2})?\b|\b(19|20)\d{2}\b|generated (on|at)\b", re.IGNORECASE
 )
+GENERATED_PY = sorted(f"generated/{p.name}" for p in generate.GENERATED.glob("*.py"))
 
 
-def _generated_py():
-    return sorted(rel for rel in generate.build_files() if rel.startswith("generated/"))
+def _header(text: str) -> str:
+    return text.split('"""', 1)[0]
 
 
-@pytest.mark.parametrize("rel", _generated_py())
-def test_generated_header(rel):
-    text = generate.build_files()[rel]
-    header = text.split('"""', 1)[0]
+def _imports(text: str) -> set[str]:
+    """The generated modules a generated module imports (``from .flight import ...``)."""
+    return set(re.findall(r"^from \.(\w+) import ", text, re.MULTILINE))
+
+
+def _depends(text: str) -> dict[str, str]:
+    """The header's dependency hashes: {file name: sha256 prefix}."""
+    return dict(re.findall(r"^#\s+(\w+\.py) sha256:([0-9a-f]+)$", _header(text), re.MULTILINE))
+
+
+def test_generated_py_files_are_the_built_ones(built):
+    assert GENERATED_PY == sorted(rel for rel in built if rel.startswith("generated/"))
+
+
+@pytest.mark.parametrize("rel", GENERATED_PY)
+def test_generated_header(built, rel):
+    header = _header(built[rel])
     assert "GENERATED FILE -- DO NOT EDIT" in header
     source = re.search(r"^# Source:\s+(\S+)$", header, re.MULTILINE)
     assert source, f"{rel}: header does not name its source"
@@ -208,41 +267,66 @@ def test_generated_header(rel):
     assert template and (generate.ROOT / template.group(1)).is_file()
     assert re.search(r"^# Rebuild:\s+slipmaps generate\b", header, re.MULTILINE)
     assert "slipmaps generate --check" in header
-    assert f"sympy {sp.__version__}" in header
+    assert f"sympy {generate.VERSIONS['sympy']}, jinja2 {generate.VERSIONS['jinja2']}" in header
     assert not _TIMESTAMP.search(header), f"{rel}: header contains a timestamp-like string"
 
 
-def test_sympy_pinned_version_used():
-    """The header's tool version must be the pinned one, or the drift check compares noise."""
+@pytest.mark.parametrize("rel", GENERATED_PY)
+def test_header_hashes_every_imported_generated_module(built, rel):
+    """A module that calls another's kernels records that module's content hash (numba's cache of the
+    caller does not see the callee's file change otherwise)."""
+    text = built[rel]
+    imports, depends = _imports(text), _depends(text)
+    assert set(depends) == {f"{m}.py" for m in imports}
+    for m in imports:
+        assert depends[f"{m}.py"] == hashlib.sha256(built[f"generated/{m}.py"].encode()).hexdigest()[:16]
+
+
+def test_map_modules_depend_on_flight_and_geyer(built):
+    """geyer imports flight (apex return); every gravity map also imports geyer (section 4 builds on 3.1)."""
+    assert set(_depends(built["generated/geyer.py"])) == {"flight.py"}
+    assert not _depends(built["generated/flight.py"]) and not _depends(built["generated/slip_model.py"])
+    gravity = [row for row in MAPS if row["name"].startswith("gravity-")]
+    assert len(gravity) >= 6
+    for row in gravity:
+        assert {"flight.py", "geyer.py"} <= set(_depends(built[f"generated/{row['module']}.py"])), row["name"]
+
+
+def test_pinned_tool_versions_used():
+    """The header's tool versions must be the pinned ones, or the drift check compares noise."""
     pyproject = (generate.ROOT / "pyproject.toml").read_text()
-    pins = set(re.findall(r'"sympy==([0-9.]+)"', pyproject))
-    assert pins == {sp.__version__}
+    for tool in ("sympy", "jinja2"):
+        pins = set(re.findall(rf'"{tool}==([0-9.]+)"', pyproject))
+        assert pins == {generate.VERSIONS[tool]}, tool
+    assert generate.VERSIONS["sympy"] == sp.__version__
 
 
-def test_docs_table_header():
-    text = generate.build_files()["docs/equations.md"]
-    assert text.startswith("<!-- GENERATED by `slipmaps generate`")
-    assert not _TIMESTAMP.search(text.splitlines()[0])
+def test_docs_table_header(built):
+    for rel in ("docs/equations.md", "docs/maps.md"):
+        first = built[rel].splitlines()[0]
+        assert first.startswith("<!-- GENERATED by `slipmaps generate`"), rel
+        assert not _TIMESTAMP.search(first)
 
 
 def test_status_enum_matches_source():
-    assert [(s.name, s.value) for s in Status] == [(n, c) for n, c, _ in STATUS_CODES]
+    assert [(st.name, st.value) for st in Status] == [(n, c) for n, c, _ in STATUS_CODES]
     assert MESSAGES == {c: msg for _, c, msg in STATUS_CODES}
     codes = [c for _, c, _ in STATUS_CODES]
     assert codes == list(range(len(codes))), "codes are append-only and consecutive"
     assert STATUS_CODES[0][:2] == ("OK", 0)
 
 
-@pytest.mark.parametrize("mod", KERNEL_MODULES, ids=lambda m: m.__name__.rsplit(".", 1)[-1])
+@pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
 def test_module_status_constants_match(mod):
     consts = {n[len("STATUS_") :]: v for n, v in vars(mod).items() if n.startswith("STATUS_")}
     assert consts == {n: c for n, c, _ in STATUS_CODES}
 
 
 # ----------------------------------------------------------------------------------------------
-# Every kernel is a numba dispatcher and runs
+# Every map's module and kernels; every function a dispatcher that runs; batch == scalar
 # ----------------------------------------------------------------------------------------------
-#: An in-domain value for each kernel argument name (human runner scale; all kernels return OK).
+#: An in-domain value for each argument name of the model, flight and map kernels (a human runner:
+#: every stance, state-at-time and apex-return kernel returns OK here).
 NOMINAL = {
     "q_r": 0.95,
     "q_rd": -0.5,
@@ -268,65 +352,140 @@ NOMINAL = {
 }
 
 
-def _kernels():
-    out = []
-    for mod in KERNEL_MODULES:
-        for name, obj in vars(mod).items():
-            if isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == mod.__name__:
-                out.append(pytest.param(mod, name, id=f"{mod.__name__.rsplit('.', 1)[-1]}.{name}"))
+def option_defaults(row: dict) -> dict[str, float]:
+    """Each option's default as the kernel receives it (a choice as the index of its value)."""
+    out = {}
+    for opt in row["options"]:
+        if opt["kind"] == "choice":
+            out[opt["name"]] = float([ch["value"] for ch in opt["choices"]].index(opt["default"]))
+        else:
+            out[opt["name"]] = float(opt["default"])
     return out
 
 
-KERNELS = _kernels()
+def _params(fn) -> list[str]:
+    return list(inspect.signature(fn.py_func).parameters)
 
 
-def test_kernels_found():
-    """The kernels this file exercises exist (a renamed or dropped kernel fails here)."""
-    names = {p.values[1] for p in KERNELS}
-    scalar = {"stance_polar_rhs", "stance_cartesian_rhs", "stance_energy", "polar_to_cartesian"}
-    scalar |= {"cartesian_to_polar", "apex_to_touchdown", "liftoff_to_apex", "geyer_stance"}
-    scalar |= {"geyer_stance_state_at", "geyer_apex_return"}
-    batch = {"apex_to_touchdown", "liftoff_to_apex", "geyer_stance", "geyer_stance_state_at"}
-    batch = {f"{n}_batch" for n in batch | {"geyer_apex_return"}}
-    assert scalar | batch <= names
+def _is_kernel(mod, obj) -> bool:
+    return isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == mod.__name__
 
 
-@pytest.mark.parametrize("mod", KERNEL_MODULES, ids=lambda m: m.__name__.rsplit(".", 1)[-1])
+def _own_kernels(mod) -> list[str]:
+    return [n for n, obj in vars(mod).items() if _is_kernel(mod, obj)]
+
+
+def test_index_lists_every_declared_map():
+    assert MAP_IDS == [spec.name for spec in all_maps()]
+    assert len(set(MAP_IDS)) == len(MAP_IDS)
+
+
+@pytest.mark.parametrize("row", MAPS, ids=MAP_IDS)
+def test_map_module_exports_kernels_with_index_signatures(row):
+    mod = MAP_MODULES[row["name"]]
+    kernels = row["kernels"]
+    assert kernels["stance"] and kernels["apex_return"]
+    expected = {
+        kernels["stance"]: row["stance_args"],
+        kernels["apex_return"]: row["apex_args"],
+    }
+    if kernels["state_at"]:
+        expected[kernels["state_at"]] = ["t", *row["stance_args"]]
+    for name, args in expected.items():
+        for fn_name, fn_args in ((name, args), (f"{name}_batch", [*args, "out", "status"])):
+            fn = getattr(mod, fn_name, None)
+            assert fn is not None, f"{mod.__name__} has no {fn_name}"
+            assert _is_kernel(mod, fn), fn_name
+            assert _params(fn) == fn_args, fn_name
+    assert row["stance_args"][:4] == maps_index.TOUCHDOWN
+    assert row["stance_args"][4 : 4 + len(row["params"])] == row["params"]
+    options = [o["name"] for o in row["options"]]
+    assert row["stance_args"][len(row["stance_args"]) - len(options) :] == options
+
+
+@pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
 def test_no_pure_python_functions(mod):
     """Every function a generated module defines is jitted: no silent fallback to Python."""
-    plain = [
-        n
-        for n, o in vars(mod).items()
-        if inspect.isfunction(o) and getattr(o, "__module__", "") == mod.__name__
-    ]
+    plain = [n for n, o in vars(mod).items() if inspect.isfunction(o) and o.__module__ == mod.__name__]
     assert plain == []
+    assert _own_kernels(mod)
+    # The options CODEGEN.md asks for, stated in the source: cached, no fastmath (NaN/inf semantics).
+    text = Path(mod.__file__).read_text()
+    defs = re.findall(r"^def (\w+)", text, re.MULTILINE)
+    decorated = dict((n, d) for d, n in re.findall(r"^@(.*)\ndef (\w+)", text, re.MULTILINE))
+    assert sorted(defs) == sorted(decorated) == sorted(_own_kernels(mod))
+    for name, deco in decorated.items():
+        assert deco.startswith("njit(cache=True") and "fastmath" not in deco, (name, deco)
 
 
-@pytest.mark.parametrize(("mod", "name"), KERNELS)
+def _nominal_args(mod, fn) -> list[float]:
+    row = next((r for r in MAPS if MAP_MODULES[r["name"]] is mod), None)
+    env = {**NOMINAL, **(option_defaults(row) if row else {})}
+    # Helper kernels take internal quantities (phases, amplitudes ...): any moderate value runs.
+    return [env.get(p, 0.5) for p in _params(fn)]
+
+
+def _scalar_kernels():
+    out = []
+    for mod in KERNEL_MODULES:
+        for name in _own_kernels(mod):
+            if not name.endswith("_batch"):
+                out.append(pytest.param(mod, name, id=f"{_mod_id(mod)}.{name}"))
+    return out
+
+
+def _map_kernel_names() -> set[str]:
+    return {n for row in MAPS for n in row["kernels"].values() if n}
+
+
+@pytest.mark.parametrize(("mod", "name"), _scalar_kernels())
 def test_kernel_is_dispatcher_and_runs(mod, name):
     kern = getattr(mod, name)
-    assert isinstance(kern, CPUDispatcher)
-    if not name.endswith("_batch"):
-        args = [NOMINAL[p] for p in inspect.signature(kern.py_func).parameters]
-        res = kern(*args)
-        res = res if isinstance(res, tuple) else (res,)
-        assert all(math.isfinite(x) for x in res), res
-        if mod is not g_slip:  # flight and Geyer kernels end with a status code
-            assert res[-1] == Status.OK, res
-        return
-    scalar = getattr(mod, name.removesuffix("_batch"))
-    params = list(inspect.signature(scalar.py_func).parameters)
-    assert list(inspect.signature(kern.py_func).parameters) == [*params, "out", "status"]
-    n = 3
-    cols = [np.full(n, NOMINAL[p]) for p in params]
-    cols[0] = cols[0] * np.array([1.0, 0.99, 0.98])  # distinct rows
-    ref = [scalar(*(c[i] for c in cols)) for i in range(n)]
-    out = np.full((n, len(ref[0]) - 1), -1.0)
+    res = kern(*_nominal_args(mod, kern))
+    res = res if isinstance(res, tuple) else (res,)
+    if isinstance(res[-1], int):  # a status code: OK and finite outputs, or another code and NaNs
+        assert res[-1] in MESSAGES
+        vals = res[:-1]
+        assert all(math.isfinite(v) for v in vals) if res[-1] == OK else all(math.isnan(v) for v in vals)
+        if name in _map_kernel_names() or mod is g_flight:
+            assert res[-1] == OK, res
+    else:
+        assert all(isinstance(v, float) and math.isfinite(v) for v in res), res
+    assert kern.signatures, "compiled"
+
+
+def _batch_kernels():
+    out = []
+    for mod in KERNEL_MODULES:
+        for name in _own_kernels(mod):
+            if name.endswith("_batch"):
+                out.append(pytest.param(mod, name, id=f"{_mod_id(mod)}.{name}"))
+    return out
+
+
+@pytest.mark.parametrize(("mod", "name"), _batch_kernels())
+def test_batch_kernel_equals_scalar_bit_for_bit(mod, name):
+    """Rows named by the batch docstring; strided row arrays; a bad row gets its own status."""
+    kern, scalar = getattr(mod, name), getattr(mod, name.removesuffix("_batch"))
+    rows = re.search(r"Row arguments \([^)]*\): ([\w, ]+)\.", kern.py_func.__doc__).group(1).split(", ")
+    params = _params(scalar)
+    assert _params(kern) == [*params, "out", "status"] and params[: len(rows)] == rows
+    nominal = dict(zip(params, _nominal_args(mod, scalar), strict=True))
+    n = 4
+    cols = []
+    for p in params[: len(rows)]:
+        buf = np.full(2 * n, -1.0)
+        buf[::2] = nominal[p] * np.array([1.0, 0.99, 0.98, 1.0])  # distinct rows
+        cols.append(buf[::2])  # strided
+    cols[0][3] = math.nan  # a bad row
+    scalars = [nominal[p] for p in params[len(rows) :]]
+    ref = [scalar(*(c[i] for c in cols), *scalars) for i in range(n)]
+    out = np.full((n, len(ref[0]) - 1), -7.0)
     status = np.full(n, -1, dtype=np.int64)
-    kern(*cols, out, status)
+    kern(*cols, *scalars, out, status)
     np.testing.assert_array_equal(out, np.array([r[:-1] for r in ref]))
     np.testing.assert_array_equal(status, [r[-1] for r in ref])
-    assert status[0] == Status.OK
+    assert status[0] == OK and status[3] == Status.INVALID_INPUT
 
 
 # ----------------------------------------------------------------------------------------------
@@ -363,7 +522,7 @@ def _rng(name):
     return np.random.default_rng(int(hashlib.sha256(name.encode()).hexdigest()[:8], 16))
 
 
-def _params(rng):
+def _params_sample(rng):
     m = rng.uniform(2.0, 100.0)
     l0 = rng.uniform(0.25, 1.2)
     g_s = rng.uniform(9.0, 10.0)
@@ -390,8 +549,8 @@ def _assert_agree(kernel, args_names, points, reference, n_out, rtol=RTOL, scale
     ref, ref_cse = np.array(ref, dtype=float), np.array(ref_cse, dtype=float)
     assert got.shape[1] in (n_out, n_out + 1)
     if got.shape[1] == n_out + 1:  # status column
-        assert (got[:, -1] == Status.OK).all(), got[:, -1]
-        assert (py[:, -1] == Status.OK).all()
+        assert (got[:, -1] == OK).all(), got[:, -1]
+        assert (py[:, -1] == OK).all()
         got, py = got[:, :-1], py[:, :-1]
     assert np.isfinite(ref).all()
     scale = np.abs(ref).max(axis=0)
@@ -407,7 +566,7 @@ def _polar_points(name, n=N_POINTS):
     rng = _rng(name)
     pts = []
     for _ in range(n):
-        p = _params(rng)
+        p = _params_sample(rng)
         p.update(
             q_r=rng.uniform(0.6, 1.0) * p["l0"],
             q_rd=rng.uniform(-3.0, 3.0),
@@ -423,7 +582,7 @@ PARAMS = ("m", "l0", "k", "g_s")
 CART = ("b_x", "b_xd", "b_y", "b_yd")
 
 
-def test_stance_polar_rhs_matches_derivation():
+def test_eq1_3_stance_polar_rhs_matches_derivation():
     exprs = mechanics.stance_polar_rhs()
     _assert_agree(
         g_slip.stance_polar_rhs,
@@ -434,7 +593,7 @@ def test_stance_polar_rhs_matches_derivation():
     )
 
 
-def test_stance_cartesian_rhs_matches_derivation():
+def test_stance_cartesian_rhs_matches_derivation_and_polar_field():
     exprs = mechanics.stance_cartesian_rhs()
     pts = []
     for env in _polar_points("cart_rhs"):
@@ -457,7 +616,7 @@ def test_stance_cartesian_rhs_matches_derivation():
         assert_close(cart[[1, 3]], [xdd, ydd], 1e-12, scale, "Cartesian vs polar accelerations")
 
 
-def test_stance_energy_matches_derivation():
+def test_eq27_stance_energy_matches_derivation():
     expr = mechanics.stance_energy()
     _assert_agree(
         g_slip.stance_energy,
@@ -486,7 +645,7 @@ def _apex_points(name, n=N_POINTS):
     rng = _rng(name)
     pts = []
     for _ in range(n):
-        p = _params(rng)
+        p = _params_sample(rng)
         q_th_td = rng.uniform(-0.6, 0.6)
         q_r_td = rng.uniform(0.8, 1.0) * p["l0"]
         p.update(
@@ -509,9 +668,10 @@ def _apex_to_touchdown_ref(env, cse):
 
 
 def test_apex_to_touchdown_matches_derivation():
+    assert _params(g_flight.apex_to_touchdown) == list(A2T_ARGS)
     pts = _apex_points("a2t")
     got = _assert_agree(g_flight.apex_to_touchdown, A2T_ARGS, pts, _apex_to_touchdown_ref, 5)
-    # Physics of the descent: falling speed sqrt(2 g drop), energy of the flight conserved.
+    # Physics of the descent: falling speed sqrt(2 g drop), horizontal speed kept.
     for env, row in zip(pts, got, strict=True):
         _, xd, _, yd = g_slip.polar_to_cartesian(*row[:4])
         assert xd == pytest.approx(env["b_xd_apex"], rel=1e-12)
@@ -525,14 +685,14 @@ def _liftoff_points(name, n=N_POINTS):
     rng = _rng(name)
     pts = []
     while len(pts) < n:
-        p = _params(rng)
+        p = _params_sample(rng)
         p.update(
             q_r=rng.uniform(0.8, 1.0) * p["l0"],
             q_rd=rng.uniform(0.2, 3.0),
             q_th=rng.uniform(-0.6, -0.05),
             q_thd=rng.uniform(-6.0, -0.5),
         )
-        if g_flight.liftoff_to_apex(*(p[n] for n in POLAR), p["g_f"])[-1] == Status.OK:
+        if g_flight.liftoff_to_apex(*(p[n] for n in POLAR), p["g_f"])[-1] == OK:
             pts.append(p)
     return pts
 
@@ -553,8 +713,8 @@ def test_liftoff_to_apex_matches_derivation():
         assert row[3] == pytest.approx(xd * row[2], rel=1e-12)
 
 
-# Geyer et al.'s stance map ---------------------------------------------------------------------
-STANCE_ARGS = ("q_r_td", "q_rd_td", "q_th_td", "q_thd_td") + PARAMS
+# Geyer et al.'s stance map (report section 3.1) ------------------------------------------------
+STANCE_ARGS = ("q_r_td", "q_rd_td", "q_th_td", "q_thd_td") + PARAMS + ("q_r_lo",)
 
 
 def _touchdown_points(name, n=N_POINTS):
@@ -562,7 +722,7 @@ def _touchdown_points(name, n=N_POINTS):
     rng = _rng(name)
     pts = []
     while len(pts) < n:
-        p = _params(rng)
+        p = _params_sample(rng)
         l0 = p["l0"]
         p.update(
             q_r_td=l0 * rng.choice([1.0, rng.uniform(0.93, 1.0)]),
@@ -571,10 +731,9 @@ def _touchdown_points(name, n=N_POINTS):
             q_thd_td=-rng.uniform(0.5, 2.0) * math.sqrt(p["g_s"] / l0),
             q_r_lo=l0 * rng.choice([1.0, rng.uniform(0.93, 1.0)]),
         )
-        res = g_geyer.geyer_stance(*(p[k] for k in STANCE_ARGS), p["q_r_lo"])
-        s_ok = res[-1] == Status.OK
-        if s_ok and _geyer_reference(p, False)["max_abs_s"] <= 0.99:
-            pts.append(p)
+        if g_geyer.geyer_stance(*(p[k] for k in STANCE_ARGS))[-1] == OK:
+            if _geyer_reference(p, False)["max_abs_s"] <= 0.99:
+                pts.append(p)
     return pts
 
 
@@ -636,42 +795,44 @@ def _geyer_stance_ref(env, cse):
     return [ref["t_bottom"], ref["t_stance"], *bottom, *liftoff]
 
 
-def test_geyer_stance_matches_derivation():
+def test_eq7_19_geyer_stance_matches_section_3_1_derivation():
+    assert _params(g_geyer.geyer_stance) == list(STANCE_ARGS)
     pts = _touchdown_points("geyer")
-    got = _assert_agree(
-        g_geyer.geyer_stance, STANCE_ARGS + ("q_r_lo",), pts, _geyer_stance_ref, 10, scales=_geyer_scales
-    )
+    got = _assert_agree(g_geyer.geyer_stance, STANCE_ARGS, pts, _geyer_stance_ref, 10, scales=_geyer_scales)
     for env, row in zip(pts, got, strict=True):
-        assert row[3] == 0.0  # bottom: q_rd = 0 by construction
-        assert row[6] == pytest.approx(env["q_r_lo"], rel=1e-12)  # liftoff at q_r_lo
+        assert row[3] == 0.0  # bottom: q_rd = 0 by construction, eq (13)
+        assert row[6] == env["q_r_lo"]  # liftoff at q_r_lo, eq (14)
         # Conserved angular momentum (Assumption 1): q_r^2 q_thd is the same at touchdown, bottom, liftoff.
         p_th = env["q_r_td"] ** 2 * env["q_thd_td"]
         assert row[2] ** 2 * row[5] == pytest.approx(p_th, rel=1e-12)
         assert row[6] ** 2 * row[9] == pytest.approx(p_th, rel=1e-12)
 
 
-def test_geyer_stance_state_at_matches_derivation():
+def test_eq11_17_19_geyer_state_at_matches_derivation():
+    assert _params(g_geyer.geyer_state_at) == ["t", *STANCE_ARGS]
     pts = []
     rng = _rng("state_at")
     for env in _touchdown_points("state_at"):
-        t_stance = g_geyer.geyer_stance(*(env[k] for k in STANCE_ARGS), env["q_r_lo"])[1]
+        t_stance = g_geyer.geyer_stance(*(env[k] for k in STANCE_ARGS))[1]
         pts.append({**env, "t": rng.uniform(0.0, t_stance)})
 
     def ref(env, cse):
         r = _geyer_reference(env, cse)
         return r["state_at_abs_time"](r["phases"]["phase_td"] / r["env"]["omega0_hat"] + env["t"])
 
-    _assert_agree(g_geyer.geyer_stance_state_at, ("t",) + STANCE_ARGS, pts, ref, 4)
+    scales = lambda env: [env["l0"], abs(env["q_rd_td"]), 1.0, abs(env["q_thd_td"])]  # noqa: E731
+    _assert_agree(g_geyer.geyer_state_at, ("t",) + STANCE_ARGS, pts, ref, 4, scales=scales)
 
 
-def test_geyer_state_at_consistent_with_stance_map():
+def test_geyer_state_at_reproduces_stance_outputs():
     """The trajectory kernel at t = 0, t_bottom and t_stance gives the map's touchdown, bottom, liftoff."""
     for env in _touchdown_points("consistency", n=10):
         args = [env[k] for k in STANCE_ARGS]
-        res = g_geyer.geyer_stance(*args, env["q_r_lo"])
-        at0 = g_geyer.geyer_stance_state_at(0.0, *args)
-        at_b = g_geyer.geyer_stance_state_at(res[0], *args)
-        at_lo = g_geyer.geyer_stance_state_at(res[1], *args)
+        res = g_geyer.geyer_stance(*args)
+        at0 = g_geyer.geyer_state_at(0.0, *args)
+        at_b = g_geyer.geyer_state_at(res[0], *args)
+        at_lo = g_geyer.geyer_state_at(res[1], *args)
+        assert at0[-1] == at_b[-1] == at_lo[-1] == OK
         scale = [env["l0"], abs(env["q_rd_td"]), 1.0, abs(env["q_thd_td"])]
         # Touchdown: q_r and q_th exactly (the phase is built from them); q_rd is the approximate
         # (Assumption 2) radial speed, not the touchdown one, so only its sign is checked.
@@ -682,30 +843,51 @@ def test_geyer_state_at_consistent_with_stance_map():
         assert_close(at_lo[:4], res[6:10], RTOL, scale, "state_at(t_stance) vs liftoff")
 
 
-def test_geyer_apex_return_is_composition():
-    """geyer_apex_return = apex_to_touchdown, then geyer_stance, then liftoff_to_apex."""
-    rng = _rng("apex_return")
-    n_ok = 0
-    for _ in range(40):
-        env = _params(rng)
-        env["q_r_td"] = env["q_r_lo"] = env["l0"] * rng.choice([1.0, rng.uniform(0.95, 1.0)])
-        env["q_th_td"] = rng.uniform(0.15, 0.45)  # toe ahead of the body
-        env["b_y_apex"] = env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(0.01, 0.2) * env["l0"]
-        env["b_xd_apex"] = rng.uniform(0.5, 2.5) * math.sqrt(env["g_f"] * env["l0"])
-        args = [env[k] for k in ("b_y_apex", "b_xd_apex", "q_th_td", *PARAMS, "g_f", "q_r_td", "q_r_lo")]
-        got = g_geyer.geyer_apex_return(*args)
-        np.testing.assert_allclose(got, g_geyer.geyer_apex_return.py_func(*args), rtol=RTOL_PYFUNC)
+# Every map: apex return = exact descent, the map's stance, exact ascent ------------------------
+STANCE_OUT = [r["name"] for r in maps_index.STANCE_OUTPUTS]
+APEX_OUT = [r["name"] for r in maps_index.APEX_OUTPUTS]
+
+
+@pytest.mark.parametrize("row", MAPS, ids=MAP_IDS)
+def test_apex_return_is_flight_stance_flight_composition(row):
+    """<map>_apex_return = flight.apex_to_touchdown -> <map>_stance -> flight.liftoff_to_apex, bit for bit,
+    with the map's default options; a failing stage's status is the kernel's status."""
+    mod = MAP_MODULES[row["name"]]
+    apex_return, stance = getattr(mod, row["kernels"]["apex_return"]), getattr(mod, row["kernels"]["stance"])
+    extras = [e["name"] for e in row["extras"]]
+    stance_names = STANCE_OUT + extras
+    opts = option_defaults(row)
+    rng = _rng(f"apex_return {row['name']}")
+    n_ok = n_fail = 0
+    for _ in range(30):
+        env = {**_params_sample(rng), **opts}
+        env["q_r_td"] = env["l0"] * rng.choice([1.0, rng.uniform(0.95, 1.0)])
+        env["q_r_lo"] = env["l0"] * rng.choice([1.0, rng.uniform(0.95, 1.0)])
+        env["q_th_td"] = rng.uniform(0.1, 0.45)  # toe ahead of the body
+        env["b_y_apex"] = env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(-0.01, 0.2) * env["l0"]
+        env["b_xd_apex"] = rng.uniform(0.3, 2.5) * math.sqrt(env["g_f"] * env["l0"])
+        got = apex_return(*(env[a] for a in row["apex_args"]))
+        assert len(got) == len(APEX_OUT) + len(extras) + 1
         td = g_flight.apex_to_touchdown(*(env[k] for k in A2T_ARGS))
-        assert td[-1] == Status.OK
-        st = g_geyer.geyer_stance(*td[:4], *(env[k] for k in PARAMS), env["q_r_lo"])
-        if st[-1] != Status.OK:
-            assert got[-1] == st[-1]
-            assert all(math.isnan(x) for x in got[:-1])
+        stance_env = {**env, **dict(zip(maps_index.TOUCHDOWN, td[:4], strict=True))}
+        st = stance(*(stance_env[a] for a in row["stance_args"]))
+        failed = next((res[-1] for res in (td, st) if res[-1] != OK), None)
+        if failed is None:
+            out = dict(zip(stance_names, st[:-1], strict=True))
+            ap = g_flight.liftoff_to_apex(*(out[f"liftoff_{p}"] for p in POLAR), env["g_f"])
+            failed = None if ap[-1] == OK else ap[-1]
+        if failed is not None:
+            n_fail += 1
+            assert got[-1] == failed
+            assert all(math.isnan(v) for v in got[:-1])
             continue
-        ap = g_flight.liftoff_to_apex(*st[6:10], env["g_f"])
-        assert got[-1] == ap[-1]
-        if ap[-1] == Status.OK:
-            n_ok += 1
-            expected = (ap[0], ap[1], td[4], st[1], ap[2], *st[6:10])
-            np.testing.assert_allclose(got[:-1], expected, rtol=RTOL_PYFUNC)
-    assert n_ok >= 10
+        n_ok += 1
+        expected = {
+            "apex_height": ap[0],
+            "apex_speed": ap[1],
+            "t_descent": td[4],
+            "t_ascent": ap[2],
+            **{k: out[k] for k in ("t_stance", *(f"liftoff_{p}" for p in POLAR), *extras)},
+        }
+        assert got == (*(expected[k] for k in APEX_OUT + extras), OK)
+    assert n_ok >= 10 and n_fail >= 1, (n_ok, n_fail)

@@ -14,7 +14,7 @@ from functools import cache
 
 import sympy as sp
 
-from .symbols import (
+from ..symbols import (
     b_x,
     b_x_t,
     b_xd,

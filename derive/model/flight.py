@@ -11,8 +11,7 @@ from functools import cache
 
 import sympy as sp
 
-from . import mechanics
-from .symbols import (
+from ..symbols import (
     b_x,
     b_xd,
     b_xd_apex,
@@ -23,6 +22,7 @@ from .symbols import (
     q_th_td,
     t,
 )
+from . import mechanics
 
 
 @cache

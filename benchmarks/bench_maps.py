@@ -1,0 +1,176 @@
+"""Benchmark: every map's public batch API, a hand-written kernel, and solve_ivp, in one run.
+
+Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
+
+(a) the yardstick: Geyer et al.'s stance map written by hand as one parallel numba kernel
+    (``handwritten_geyer.py``), called on an (N, 4) array of touchdown states, output allocation
+    included, and the public API ``slipmaps.stance_batch("geyer", ...)`` on the same array (what a
+    user calls: option handling, allocation, the generated parallel kernel); their ratio (target:
+    at most 1.4) and their agreement (max relative difference, same statuses);
+(b) for every map of the index: ``slipmaps.stance_batch`` and ``slipmaps.apex_return_batch`` per
+    state at N states, each after a warm-up call (compilation excluded), best of ``--repeat``;
+(c) the exact stance (``solve_ivp`` DOP853, rtol 1e-11) per call over 50 touchdown states, and each
+    map's speed-up over it.
+
+States: apex heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0);
+the stance states are their touchdowns. Ratios are measured in one run; absolute times move with the
+machine and its load (printed). Usage::
+
+    python benchmarks/bench_maps.py [--n N] [--repeat R] [--json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numba
+import numpy as np
+import scipy
+import slipmaps
+from slipmaps.generated import flight as gen_flight
+from slipmaps.runtime.simulate import simulate_stance
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import handwritten_geyer  # noqa: E402
+
+P = slipmaps.HUMAN_RUNNER
+TARGET_RATIO = 1.4
+
+
+def machine() -> dict:
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            cpu = next((ln.split(":", 1)[1].strip() for ln in f if ln.lower().startswith("model name")), cpu)
+    except OSError:
+        pass
+    return {
+        "cpu": cpu,
+        "cpus": len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count(),
+        "numba_threads": numba.get_num_threads(),
+        "python": platform.python_version(),
+        "numba": numba.__version__,
+        "numpy": np.__version__,
+        "scipy": scipy.__version__,
+        "load_1min": os.getloadavg()[0] if hasattr(os, "getloadavg") else None,
+    }
+
+
+def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
+    rng = np.random.default_rng(seed)
+    h, v, th = rng.uniform(1.0, 1.1, n), rng.uniform(3.0, 7.0, n), rng.uniform(0.30, 0.50, n)
+    unique = min(n, 20_000)
+    td = np.array(
+        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f)[:4] for i in range(unique)]
+    )
+    return h, v, th, np.ascontiguousarray(np.resize(td, (n, 4)))
+
+
+def best_of(fn, repeat: int) -> float:
+    best = math.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def run(n: int, repeat: int) -> dict:
+    h, v, th, td = states(n)
+    out: dict = {"machine": machine(), "n": n, "repeat": repeat}
+    prm = (P.m, P.l0, P.k, P.g_s, P.q_r_lo)
+
+    # (a) yardstick, both called once first (compilation or cache load excluded)
+    hand = handwritten_geyer.stance_batch(td, *prm)
+    api = slipmaps.stance_batch("geyer", P, td)
+    ok = hand[1] == 0
+    diff = np.abs(hand[0][ok] - api._data[ok]) / np.maximum(1.0, np.abs(hand[0][ok]))
+    t_hand = best_of(lambda: handwritten_geyer.stance_batch(td, *prm), repeat)
+    t_api = best_of(lambda: slipmaps.stance_batch("geyer", P, td), repeat)
+    out["yardstick"] = {
+        "handwritten_ns": 1e9 * t_hand / n,
+        "api_ns": 1e9 * t_api / n,
+        "ratio": t_api / t_hand,
+        "target": TARGET_RATIO,
+        "same_status": bool(np.array_equal(hand[1], api["status"])),
+        "max_rel_diff": float(diff.max()) if diff.size else math.nan,
+    }
+
+    # (c) the exact stance
+    m = 50
+    t_exact = best_of(lambda: [simulate_stance(P, td[i]) for i in range(m)], 3) / m
+    out["exact_stance_us"] = 1e6 * t_exact
+
+    # (b) every map
+    out["maps"] = []
+    for info in slipmaps.maps():
+        if not info.generated:
+            continue
+        slipmaps.stance_batch(info.name, P, td[:1000])
+        slipmaps.apex_return_batch(info.name, P, h[:1000], v[:1000], th[:1000])
+        t_st = best_of(lambda name=info.name: slipmaps.stance_batch(name, P, td), repeat)
+        t_ap = best_of(lambda name=info.name: slipmaps.apex_return_batch(name, P, h, v, th), repeat)
+        res = slipmaps.stance_batch(info.name, P, td)
+        passes = res["passes"][res.ok] if "passes" in res.names else None
+        out["maps"].append(
+            {
+                "map": info.name,
+                "stance_ns": 1e9 * t_st / n,
+                "apex_return_ns": 1e9 * t_ap / n,
+                "speedup_vs_solve_ivp": t_exact / (t_st / n),
+                "ok_fraction": float(res.ok.mean()),
+                "median_passes": float(np.median(passes)) if passes is not None and passes.size else None,
+            }
+        )
+    return out
+
+
+def report(r: dict) -> str:
+    mach = r["machine"]
+    y = r["yardstick"]
+    lines = [
+        f"machine: {mach['cpu']}, {mach['cpus']} CPUs, numba {mach['numba']} "
+        f"({mach['numba_threads']} threads), numpy {mach['numpy']}, scipy {mach['scipy']}, "
+        f"Python {mach['python']}, 1-min load {mach['load_1min']}",
+        f"N = {r['n']} states, best of {r['repeat']}",
+        "",
+        "(a) Geyer's stance map, public batch API vs a hand-written njit kernel of the same math:",
+        f"    hand-written {y['handwritten_ns']:.1f} ns/state, "
+        f"slipmaps.stance_batch {y['api_ns']:.1f} ns/state: ratio {y['ratio']:.2f} "
+        f"(target <= {y['target']:g}: {'met' if y['ratio'] <= y['target'] else 'NOT met'})",
+        f"    agreement: same statuses {y['same_status']}, max relative difference {y['max_rel_diff']:.1e}",
+        "",
+        f"(c) exact stance (solve_ivp DOP853, rtol 1e-11): {r['exact_stance_us']:.0f} us per call",
+        "",
+        "(b) every map, public batch API (ns per state) and speed-up of its stance over solve_ivp:",
+        f"    {'map':<16}{'stance':>10}{'apex return':>13}{'x solve_ivp':>13}{'ok':>7}{'passes':>8}",
+    ]
+    for m in r["maps"]:
+        passes = f"{m['median_passes']:g}" if m["median_passes"] is not None else "-"
+        lines.append(
+            f"    {m['map']:<16}{m['stance_ns']:>10.1f}{m['apex_return_ns']:>13.1f}"
+            f"{m['speedup_vs_solve_ivp']:>13.3g}{m['ok_fraction']:>7.2f}{passes:>8}"
+        )
+    return "\n".join(lines)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--n", type=int, default=1_000_000, help="states per batch (default %(default)s)")
+    parser.add_argument("--repeat", type=int, default=5, help="timed runs, best kept (default %(default)s)")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
+    args = parser.parse_args()
+    r = run(args.n, args.repeat)
+    print(json.dumps(r, indent=2) if args.json else report(r))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

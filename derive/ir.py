@@ -1,0 +1,240 @@
+"""The kernel IR: what a generated numba function computes, declared as data.
+
+A :class:`Kernel` is a scalar function of named :class:`Arg` s that runs a sequence of steps and
+returns named outputs (a :class:`Group`, flattened to ``bottom_q_r``-style names) plus a status
+code. Steps:
+
+- :class:`Stage`: named assignments (one common-subexpression elimination over the stage, so
+  temporaries are shared between its outputs, as PyDy does) followed by :class:`Guard` s. A guard
+  is a condition the later steps need (a real square root, an arcsine argument in [-1, 1], ...);
+  when it fails, or is NaN, the kernel returns NaN outputs and the guard's status code.
+- :class:`Call`: calls another kernel, passing arguments **by the callee's argument names** and
+  binding the callee's outputs **by name**; a failing callee status is propagated.
+- :class:`Iterate`: a bounded fixed-point iteration on named state variables (at most ``max_iter``
+  updates, stopping when every update moves by at most ``tol * scale``).
+- :class:`Switch`: branches on an integer option; every branch defines the same names.
+
+Kernels never raise. :mod:`.lower` checks the declaration (every symbol an expression uses is an
+input or the result of an earlier step; no name is defined twice) and turns it into template data.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from .status import STATUS_CODES
+
+STATUS = {name: code for name, code, _ in STATUS_CODES}
+
+
+def real(sym: sp.Symbol) -> sp.Symbol:
+    """The same-named symbol without sign assumptions, for guards SymPy must not fold to True."""
+    return sp.Symbol(sym.name, real=True)
+
+
+def positive(*syms: sp.Symbol) -> sp.Basic:
+    """Condition: every symbol is > 0 (checked at run time, whatever its assumptions)."""
+    return sp.And(*(real(s) > 0 for s in syms))
+
+
+def sym(name: str) -> sp.Symbol:
+    """A real symbol: the type of every kernel-local quantity."""
+    return sp.Symbol(name, real=True)
+
+
+@dataclass(frozen=True)
+class Arg:
+    """A kernel argument. ``domain`` (optional) must hold on entry, else status INVALID_INPUT."""
+
+    symbol: sp.Symbol
+    doc: str
+    domain: sp.Basic | None = None
+
+    def __post_init__(self):
+        if self.domain in (sp.true, sp.false) or isinstance(self.domain, bool):
+            # as for Guard: a domain folded through the symbol's assumptions would never be checked
+            raise ValueError(f"the domain of argument {self.name} folds to the constant {self.domain}")
+
+    @property
+    def name(self) -> str:
+        return self.symbol.name
+
+
+@dataclass(frozen=True)
+class Field:
+    """One named scalar output."""
+
+    name: str
+    doc: str
+    unit: str = ""
+
+
+@dataclass(frozen=True)
+class Group:
+    """Named outputs, possibly nested: ``Group("bottom", POLAR)`` flattens to ``bottom_q_r``, ..."""
+
+    name: str
+    items: tuple[Field | Group, ...]
+    doc: str = ""
+
+    def fields(self, prefix: str = "") -> tuple[Field, ...]:
+        """The flattened fields, each named ``<prefix><group>_<field>`` (the root group adds nothing)."""
+        pre = f"{prefix}{self.name}_" if self.name else prefix
+        out: list[Field] = []
+        for item in self.items:
+            if isinstance(item, Group):
+                out.extend(item.fields(pre))
+            else:
+                out.append(Field(pre + item.name, item.doc, item.unit))
+        return tuple(out)
+
+    def names(self) -> tuple[str, ...]:
+        return tuple(f.name for f in self.fields())
+
+    def subgroups(self, prefix: str = "") -> dict[str, tuple[str, ...]]:
+        """Flattened name of every nested group -> the flattened names of its fields."""
+        pre = f"{prefix}{self.name}_" if self.name else prefix
+        out: dict[str, tuple[str, ...]] = {}
+        for item in self.items:
+            if isinstance(item, Group):
+                out[pre + item.name] = tuple(f.name for f in item.fields(pre))
+                out.update(item.subgroups(pre))
+        return out
+
+    def __add__(self, other: Group) -> Group:
+        return Group(self.name, self.items + other.items, self.doc)
+
+
+@dataclass(frozen=True)
+class Guard:
+    """A condition that must hold (NaN counts as failure); else NaN outputs and ``status``."""
+
+    condition: sp.Basic
+    status: str
+    doc: str = ""
+
+    def __post_init__(self):
+        if self.status not in STATUS:
+            raise ValueError(f"unknown status {self.status!r}")
+        if self.condition in (sp.true, sp.false) or isinstance(self.condition, bool):
+            # SymPy folded the condition through symbol assumptions (e.g. a positive=True symbol):
+            # the run-time check would vanish. Build it from real(...) symbols instead.
+            raise ValueError(f"guard for {self.status} folds to the constant {self.condition}")
+
+
+@dataclass(frozen=True)
+class Stage:
+    """Named assignments (in order; a later one may use an earlier one), then guards."""
+
+    assignments: tuple[tuple[sp.Symbol, sp.Basic], ...]
+    guards: tuple[Guard, ...] = ()
+    comment: str = ""
+
+
+@dataclass(frozen=True)
+class Call:
+    """Call ``kernel`` with ``args`` (callee argument name -> expression) and bind its outputs.
+
+    ``bind`` maps a callee output name to the caller's name for it; outputs not named are
+    dropped. A non-OK callee status is returned as the caller's status.
+    """
+
+    kernel: Kernel
+    args: Mapping[str, sp.Basic]
+    bind: Mapping[str, str]
+    comment: str = ""
+
+
+@dataclass(frozen=True)
+class Iterate:
+    """Bounded fixed-point iteration ``x <- update(x)`` on the state variables.
+
+    ``state`` gives each variable and its initial value. Each pass runs ``body`` (which sees the
+    current state) and computes ``update`` (the new value of every state variable, in the same
+    order). The loop stops after a pass in which every variable moved by at most ``tol`` times its
+    ``scales`` entry (a positive expression in the units of that variable), or after ``max_iter``
+    passes; then ``fail_status`` (if set) is returned when ``tol > 0``. With ``tol = 0`` it runs
+    exactly ``max_iter`` passes. After the loop only the state variables and ``count`` (the number
+    of passes, a float) are visible.
+    """
+
+    state: tuple[tuple[sp.Symbol, sp.Basic], ...]
+    body: tuple[Step, ...]
+    update: tuple[sp.Basic, ...]
+    max_iter: sp.Basic
+    tol: sp.Basic
+    scales: tuple[sp.Basic, ...]
+    count: sp.Symbol
+    fail_status: str | None = "NOT_CONVERGED"
+    comment: str = ""
+
+    def __post_init__(self):
+        if not len(self.update) == len(self.scales) == len(self.state):
+            raise ValueError("Iterate: one update expression and one scale per state variable")
+        if self.fail_status is not None and self.fail_status not in STATUS:
+            raise ValueError(f"unknown status {self.fail_status!r}")
+
+
+@dataclass(frozen=True)
+class Switch:
+    """Branch on an integer-coded option: ``cases`` maps each code to the steps of its branch."""
+
+    selector: sp.Symbol
+    cases: tuple[tuple[int, tuple[Step, ...]], ...]
+    comment: str = ""
+
+
+Step = Stage | Call | Iterate | Switch
+
+
+@dataclass(frozen=True)
+class Batch:
+    """The parallel batch form: ``rows`` names the arguments that become 1-D arrays (one row per
+    element); every other argument stays a scalar shared by all rows."""
+
+    rows: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """One generated scalar function (plus its batch form when ``batch`` is set)."""
+
+    name: str
+    summary: str
+    equations: tuple[str, ...]
+    args: tuple[Arg, ...]
+    steps: tuple[Step, ...]
+    outputs: Group
+    status: bool = True
+    batch: Batch | None = None
+    notes: str = ""
+    module: str = ""
+    check_inputs: bool = True
+    #: Every public kernel ends with an all-outputs-finite guard; an internal helper whose callers
+    #: check their own outputs may skip it (``check_outputs=False``).
+    check_outputs: bool = True
+    #: Inline into every caller at numba's IR level (``njit(inline="always")``): for internal helpers
+    #: and the stance kernels, so a batch loop or an apex-return map runs straight-line code.
+    inline: bool = False
+
+    @property
+    def arg_names(self) -> tuple[str, ...]:
+        return tuple(a.name for a in self.args)
+
+    @property
+    def output_names(self) -> tuple[str, ...]:
+        return self.outputs.names()
+
+
+@dataclass(frozen=True)
+class Module:
+    """One generated file: its kernels (callees in other modules are imported automatically)."""
+
+    name: str
+    doc: str
+    source: str
+    kernels: Callable[[], tuple[Kernel, ...]]
+    extra: Mapping[str, object] = field(default_factory=dict)

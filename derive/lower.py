@@ -1,0 +1,358 @@
+"""Lowering: a :class:`~.ir.Kernel` -> the data the ``kernels.py.j2`` template renders.
+
+Per :class:`~.ir.Stage`, one ``sympy.cse`` over all its assignments (temporaries shared between
+them, numbered ``_x0, _x1, ...`` across the kernel, canonical order so the output is
+deterministic). Reciprocals used more than once are computed once (``1.0/x`` then products).
+
+The declaration is checked here, at generation time:
+
+- every symbol an expression uses is an argument or the result of an earlier step
+  (:class:`LoweringError` names the kernel, the step and the symbol);
+- no name is defined twice in one scope, every :class:`~.ir.Switch` branch defines the same
+  names, a :class:`~.ir.Call` passes exactly the callee's arguments and binds only its outputs;
+- every output is defined by the end of the kernel.
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from .ir import Call, Guard, Iterate, Kernel, Stage, Switch
+from .printer import to_code
+
+
+class LoweringError(ValueError):
+    """A kernel declaration that cannot be generated (names the kernel, the step and the cause)."""
+
+
+def _names(expr) -> set[str]:
+    return {s.name for s in sp.sympify(expr).free_symbols}
+
+
+#: Names the template and the lowering use themselves: a declared name must not take one.
+_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|n\d+_\d+|conv\d+)|STATUS_\w+")
+_TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
+
+
+def _check_name(name: str, where: str) -> None:
+    if not name.isidentifier() or keyword.iskeyword(name):
+        raise LoweringError(f"{where}: {name!r} is not a valid Python identifier")
+    if _GENERATED_NAME.fullmatch(name) or name in _TEMPLATE_NAMES:
+        raise LoweringError(f"{where}: {name!r} is reserved for the generated code")
+
+
+@dataclass
+class _Scope:
+    frames: list[set[str]]
+
+    def defined(self, name: str) -> bool:
+        return any(name in f for f in self.frames)
+
+    def all(self) -> set[str]:
+        return set().union(*self.frames)
+
+    def define(self, name: str, where: str) -> None:
+        _check_name(name, where)
+        if self.defined(name):
+            raise LoweringError(f"{where}: {name!r} is already defined (names are assigned once)")
+        self.frames[-1].add(name)
+
+
+@dataclass
+class _Ctx:
+    kernel: Kernel
+    scope: _Scope
+    temps: int = 0
+    calls: int = 0
+    loops: int = 0
+    ops: int = 0
+    callees: set[tuple[str, str]] = field(default_factory=set)
+
+    def where(self, what: str) -> str:
+        return f"kernel {self.kernel.name}: {what}"
+
+    def require(self, expr, what: str) -> None:
+        missing = sorted(n for n in _names(expr) if not self.scope.defined(n))
+        if missing:
+            raise LoweringError(
+                f"{self.where(what)} uses {', '.join(missing)}, which is neither an input nor the "
+                "result of an earlier step"
+            )
+
+
+def _share_reciprocals(replacements, reduced, start: int):
+    """Replace x**-n (x a symbol seen in two or more denominators) by r**n with r = 1/x computed once."""
+    exprs = [e for _, e in replacements] + list(reduced)
+    counts: Counter = Counter()
+    for e in exprs:
+        for p in sp.preorder_traversal(e):
+            if isinstance(p, sp.Pow) and p.exp.is_Integer and p.exp < 0 and p.base.is_Symbol:
+                counts[p.base] += 1
+    bases = sorted((b for b, c in counts.items() if c >= 2), key=lambda s: s.name)
+    if not bases:
+        return replacements, reduced, start
+    recips = []
+    subs = {}
+    for b in bases:
+        r = sp.Symbol(f"_x{start}", real=True)
+        start += 1
+        recips.append((b, r))
+        subs[b] = r
+
+    def swap(e):
+        return e.replace(
+            lambda p: isinstance(p, sp.Pow) and p.base in subs and p.exp.is_Integer and p.exp < 0,
+            lambda p: subs[p.base] ** (-p.exp),
+        )
+
+    # A reciprocal is emitted right after its base is available: before the first temporary when the
+    # base is an input or an earlier result, else right after the temporary that defines it.
+    temp_names = [s for s, _ in replacements]
+    out = []
+    pending = [(b, r) for b, r in recips if b not in temp_names]
+    out.extend((r, 1 / b) for b, r in pending)
+    for s, e in replacements:
+        out.append((s, swap(e)))
+        out.extend((r, 1 / b) for b, r in recips if b == s)
+    return out, [swap(e) for e in reduced], start
+
+
+def _lower_stage(ctx: _Ctx, stage: Stage, idx: str) -> list[dict]:
+    where = f"stage {idx}" + (f" ({stage.comment})" if stage.comment else "")
+    names = [s.name for s, _ in stage.assignments]
+    local: set[str] = set()
+    for s, expr in stage.assignments:
+        missing = sorted(n for n in _names(expr) if not ctx.scope.defined(n) and n not in local)
+        if missing:
+            raise LoweringError(
+                f"{ctx.where(where)}: {s.name} uses {', '.join(missing)}, which is neither an input "
+                "nor the result of an earlier step"
+            )
+        local.add(s.name)
+    # CSE temporaries are emitted before the stage's named assignments, so an assignment that uses
+    # an earlier one of the same stage gets it inlined (CSE then shares it again).
+    exprs: list[sp.Basic] = []
+    earlier: dict[str, sp.Basic] = {}
+    for n, (_, expr) in zip(names, stage.assignments, strict=True):
+        expr = sp.sympify(expr)
+        inner = {s: earlier[s.name] for s in expr.free_symbols if s.name in earlier}
+        exprs.append(expr.xreplace(inner) if inner else expr)
+        earlier[n] = exprs[-1]
+    replacements, reduced = sp.cse(
+        exprs, symbols=sp.numbered_symbols("_x", start=ctx.temps), order="canonical"
+    )
+    start = ctx.temps + len(replacements)
+    replacements, reduced, start = _share_reciprocals(replacements, reduced, start)
+    ctx.temps = start
+    ctx.ops += sum(sp.count_ops(e) for _, e in replacements) + sum(sp.count_ops(e) for e in reduced)
+    nodes: list[dict] = []
+    if stage.comment:
+        nodes.append({"kind": "comment", "text": stage.comment})
+    nodes += [{"kind": "assign", "name": str(s), "code": to_code(e)} for s, e in replacements]
+    for n, e in zip(names, reduced, strict=True):
+        ctx.scope.define(n, ctx.where(where))
+        nodes.append({"kind": "assign", "name": n, "code": to_code(e)})
+    for g in stage.guards:
+        nodes.append(_guard(ctx, g, where))
+    return nodes
+
+
+def _guard(ctx: _Ctx, g: Guard, where: str) -> dict:
+    if not ctx.kernel.status:
+        raise LoweringError(ctx.where(f"{where} has a guard but the kernel returns no status"))
+    ctx.require(g.condition, f"{where}, guard {g.status}")
+    return {"kind": "guard", "code": to_code(g.condition), "status": g.status, "doc": g.doc}
+
+
+def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
+    callee = call.kernel
+    where = f"step {idx} (call {callee.name})"
+    expected, given = set(callee.arg_names), set(call.args)
+    if expected != given:
+        raise LoweringError(
+            ctx.where(
+                f"{where}: arguments must be exactly the callee's; missing {sorted(expected - given)}, "
+                f"unknown {sorted(given - expected)}"
+            )
+        )
+    unknown = sorted(set(call.bind) - set(callee.output_names))
+    if unknown:
+        raise LoweringError(ctx.where(f"{where}: {callee.name} has no output(s) {unknown}"))
+    if callee.status and not ctx.kernel.status:
+        raise LoweringError(ctx.where(f"{where}: the callee returns a status, the caller cannot"))
+    for name in callee.arg_names:
+        ctx.require(call.args[name], f"{where}, argument {name}")
+    var = f"_c{ctx.calls}"
+    ctx.calls += 1
+    if callee.module != ctx.kernel.module:
+        ctx.callees.add((callee.module, callee.name))
+    outs = callee.output_names
+    single = not callee.status and len(outs) == 1
+    binds = []
+    for out_name, local in call.bind.items():
+        ctx.scope.define(local, ctx.where(where))
+        binds.append({"name": local, "index": None if single else outs.index(out_name)})
+    nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
+    nodes.append(
+        {
+            "kind": "call",
+            "var": var,
+            "func": callee.name,
+            "args": ", ".join(to_code(call.args[n]) for n in callee.arg_names),
+            "status_index": len(outs) if callee.status else None,
+            "binds": binds,
+        }
+    )
+    return nodes
+
+
+def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
+    where = f"step {idx} (iteration)"
+    for s, init in it.state:
+        ctx.require(init, f"{where}, initial value of {s.name}")
+    for e, what in ((it.max_iter, "max_iter"), (it.tol, "tol"), *((s, "a scale") for s in it.scales)):
+        ctx.require(e, f"{where}, {what}")
+    n = ctx.loops
+    ctx.loops += 1
+    state = []
+    for s, init in it.state:
+        ctx.scope.define(s.name, ctx.where(where))
+        state.append({"name": s.name, "code": to_code(init)})
+    ctx.scope.define(it.count.name, ctx.where(where))
+    ctx.scope.frames.append(set())
+    body = _lower_steps(ctx, it.body, f"{idx}.")
+    updates = []
+    for k, ((s, _), e, scale) in enumerate(zip(it.state, it.update, it.scales, strict=True)):
+        ctx.require(e, f"{where}, update of {s.name}")
+        updates.append({"tmp": f"_n{n}_{k}", "name": s.name, "code": to_code(e), "scale": to_code(scale)})
+    ctx.scope.frames.pop()
+    if it.fail_status is not None and not ctx.kernel.status:
+        raise LoweringError(ctx.where(f"{where}: a failing iteration needs a status output"))
+    nodes = [{"kind": "comment", "text": it.comment}] if it.comment else []
+    nodes.append(
+        {
+            "kind": "loop",
+            "it": f"_it{n}",
+            "max_iter": to_code(it.max_iter),
+            "state": state,
+            "count": it.count.name,
+            "body": body,
+            "updates": updates,
+            "conv": f"_conv{n}",
+            "tol": to_code(it.tol),
+            "fail_status": it.fail_status,
+        }
+    )
+    return nodes
+
+
+def _lower_switch(ctx: _Ctx, sw: Switch, idx: str) -> list[dict]:
+    where = f"step {idx} (switch on {sw.selector.name})"
+    ctx.require(sw.selector, where)
+    if not ctx.kernel.status:
+        raise LoweringError(ctx.where(f"{where}: a switch needs a status output (unknown codes)"))
+    # Every branch must define the same public names; a name starting with "_" may be defined by
+    # some branches only (a branch-local helper) and is visible after the switch only if all do.
+    cases = []
+    branch_names: list[set[str]] = []
+    for value, steps in sw.cases:
+        ctx.scope.frames.append(set())
+        nodes = _lower_steps(ctx, steps, f"{idx}.{value}.")
+        branch_names.append(ctx.scope.frames.pop())
+        cases.append({"value": to_code(sp.Integer(value)), "body": nodes})
+    publics = [{n for n in names if not n.startswith("_")} for names in branch_names]
+    for value_names, (value, _) in zip(publics, sw.cases, strict=True):
+        if value_names != publics[0]:
+            raise LoweringError(
+                ctx.where(
+                    f"{where}: branch {value} defines {sorted(value_names)}, another {sorted(publics[0])}"
+                )
+            )
+    for name in sorted(set.intersection(*branch_names) if branch_names else ()):
+        ctx.scope.define(name, ctx.where(where))
+    nodes = [{"kind": "comment", "text": sw.comment}] if sw.comment else []
+    nodes.append({"kind": "switch", "selector": to_code(sw.selector), "cases": cases})
+    return nodes
+
+
+def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
+    nodes: list[dict] = []
+    for i, step in enumerate(steps):
+        idx = f"{prefix}{i}"
+        if isinstance(step, Stage):
+            nodes += _lower_stage(ctx, step, idx)
+        elif isinstance(step, Call):
+            nodes += _lower_call(ctx, step, idx)
+        elif isinstance(step, Iterate):
+            nodes += _lower_iterate(ctx, step, idx)
+        elif isinstance(step, Switch):
+            nodes += _lower_switch(ctx, step, idx)
+        else:
+            raise LoweringError(ctx.where(f"step {idx}: unknown step type {type(step).__name__}"))
+    return nodes
+
+
+def lower(kernel: Kernel) -> dict:
+    """Template data for one kernel (signature, docstring, nested statement nodes, returns)."""
+    names = kernel.arg_names
+    for n in names:
+        _check_name(n, f"kernel {kernel.name}: argument")
+    dup = [n for n, c in Counter(names).items() if c > 1]
+    if dup:
+        raise LoweringError(f"kernel {kernel.name}: duplicate argument(s) {dup}")
+    ctx = _Ctx(kernel, _Scope([set(names)]))
+    input_guard = None
+    if kernel.check_inputs:
+        if not kernel.status:
+            raise LoweringError(f"kernel {kernel.name}: input checks need a status output")
+        conds = [f"math.isfinite({n})" for n in names]
+        conds += [f"({to_code(a.domain)})" for a in kernel.args if a.domain is not None]
+        for a in kernel.args:
+            if a.domain is not None:
+                ctx.require(a.domain, f"domain of argument {a.name}")
+        input_guard = " and ".join(conds)
+    body = _lower_steps(ctx, kernel.steps)
+    outputs = kernel.outputs.fields()
+    missing = [f.name for f in outputs if not ctx.scope.defined(f.name)]
+    if missing:
+        raise LoweringError(f"kernel {kernel.name}: output(s) {missing} are never defined")
+    dup_out = [n for n, c in Counter(f.name for f in outputs).items() if c > 1]
+    if dup_out:
+        raise LoweringError(f"kernel {kernel.name}: duplicate output(s) {dup_out}")
+    nan = "".join("NAN, " for _ in outputs)
+    batch = None
+    if kernel.batch is not None:
+        if not kernel.status:
+            raise LoweringError(f"kernel {kernel.name}: a batch form needs a status output")
+        unknown = sorted(set(kernel.batch.rows) - set(names))
+        if unknown:
+            raise LoweringError(f"kernel {kernel.name}: batch rows {unknown} are not arguments")
+        rows = [n for n in names if n in kernel.batch.rows]
+        batch = {
+            "rows": rows,
+            "scalars": [n for n in names if n not in kernel.batch.rows],
+            "call": ", ".join(f"{n}[i]" if n in kernel.batch.rows else n for n in names),
+        }
+    return {
+        "name": kernel.name,
+        "summary": kernel.summary,
+        "equations": ", ".join(kernel.equations),
+        "notes": kernel.notes,
+        "args": [{"name": a.name, "doc": a.doc} for a in kernel.args],
+        "outputs": [{"name": f.name, "doc": f.doc + (f" [{f.unit}]" if f.unit else "")} for f in outputs],
+        "n_out": len(outputs),
+        "input_guard": input_guard,
+        "body": body,
+        "status": kernel.status,
+        "check_outputs": kernel.check_outputs,
+        "inline": kernel.inline,
+        "nan_return": f"({nan}" if kernel.status else "",
+        "batch": batch,
+        "ops": int(ctx.ops),
+        "callees": sorted(ctx.callees),
+    }

@@ -1,0 +1,495 @@
+"""Gravity corrections of the angular momentum (report section 4, eqs 46-77): types 0-5.
+
+Geyer et al.'s map conserves the angular momentum p_th (Assumption 1); in stance gravity changes
+it at the rate (46)-(47) tau = dp_th/dt = m g_s q_r sin q_th ((29); the report's (3) has the
+wrong sign). Section 4 adds a "virtual gravity effect" P_c, an estimate of the stance impulse
+int tau dt, to p_th:
+
+- types 0-2 (4.1-4.3): the sample-mean rule (48) over 2 samples (touchdown, liftoff) or 3 (and
+  the bottom), with the leg length held at l0 (49), (51), at (l0 + q_r_b)/2 (52), (54), or at the
+  stance average of q_r (62), (64) from (11), (21) or (23);
+- type 3 (4.4): (65), the trapezoid rule with the true leg lengths on [t_i, t_f];
+- type 4 (4.5): (76), type 2's rule with the average leg length on [t_i, t_f];
+- type 5 (4.6, unfinished in the report): designed here (docs/type5.md): a time-varying momentum.
+
+How P_c enters is left open by (50): "p_th + P_c, the rest stays the same". Two readings are
+declared (option ``reading``): ``report`` puts p_th + P_c everywhere in Geyer's formulas (its
+liftoff radial speed is Geyer's closed form); ``mean`` runs the trajectory (radial solution and
+leg angle) with the stance-mean momentum p_th + P_c/2, which is what the constant torque of (48)
+gives, P(t) = p_th + P_c t/t_s, takes the rates from the momentum at that instant and the liftoff
+radial speed from the exact energy (27) (the SLIP conserves energy, the approximations do not).
+P_c depends on the liftoff state it corrects: ``iterations`` passes of P_c <- P_c(map(P_c)) from
+P_c = 0 (Geyer's map), stopping early when P_c moves by less than ``tol`` times a momentum scale
+(``tol = 0``: exactly ``iterations`` passes).
+
+Every formula below is derived here (SymPy) from the model and from Geyer's derivation; the
+registry (:mod:`slipmaps.derive.equations.sec4`) compares the printed equations with them.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from ..ir import Call, Field, Guard, Iterate, Stage, Step, Switch, real, sym
+from ..mapspec import MapBuild, MapInputs, MapSpec, Option
+from ..model import mechanics
+from ..symbols import (
+    a,
+    b,
+    g_s,
+    k,
+    l0,
+    m,
+    omega0_hat,
+    q_r,
+    q_r_lo,
+    q_r_td,
+    q_rd,
+    q_rd_td,
+    q_th,
+    q_th_td,
+    q_thd,
+    q_thd_td,
+    t,
+)
+from . import geyer
+
+T_I, T_F = sym("t_i"), sym("t_f")
+E_SYM, P_SYM = sym("E"), sym("p")
+_PHI = sym("phi")
+
+
+# --------------------------------------------------------------------------------------------
+# Derivation: the torque, the sample-mean impulse, the average leg lengths, the liftoff speed.
+
+
+@cache
+def torque() -> sp.Basic:
+    """Eq (47): tau = dp_th/dt, the fourth row of Hamilton's equations (29) of the Hamiltonian (27)."""
+    return mechanics.hamiltonian_vector_field()[3]
+
+
+def impulse(duration, samples) -> sp.Basic:
+    """Eq (48): P_c = (t - t0) times the mean of the torque (47) at the samples (q_r_i, q_th_i)."""
+    tau = torque()
+    return duration * sum(tau.subs({q_r: r, q_th: th}) for r, th in samples) / len(samples)
+
+
+@cache
+def stance_radius(source: str) -> sp.Basic:
+    """q_r(t) of the stance from which an average leg length is taken.
+
+    ``eq11``: (11), t the absolute time of (11); ``eq21``: (21), t from touchdown; ``eq23``: (23),
+    t from touchdown, written with omega0_hat (omega0_hat^2 = k/m + 3 q_thd_td^2 at q_r_td = l0).
+    """
+    if source == "eq11":
+        return l0 * (1 + geyer.radial_solution(t))
+    if source == "eq21":
+        return geyer.touchdown_shifted_solution()[0]
+    if source == "eq23":
+        w = sp.Symbol("omega0_hat", positive=True)
+        radius = geyer.touchdown_state_solution()[0].subs(k, m * (w**2 - 3 * q_thd_td**2))
+        # |q_rd_td| = -q_rd_td: the stance starts compressing (guarded by TOUCHDOWN_NOT_COMPRESSING)
+        return sp.simplify(radius.subs(sp.Abs(q_rd_td), -q_rd_td)).subs(w, omega0_hat)
+    raise ValueError(f"unknown leg-length source {source!r}")
+
+
+@cache
+def average_leg_length(source: str) -> sp.Basic:
+    """Eqs (55)-(61), (67)-(75): q_r_av(t_i, t_f) = int_{t_i}^{t_f} q_r dt / (t_f - t_i), by SymPy."""
+    radius = stance_radius(source)
+    return sp.simplify(sp.integrate(radius, (t, T_I, T_F)) / (T_F - T_I))
+
+
+@cache
+def liftoff_radial_speed() -> tuple[sp.Basic, sp.Basic]:
+    """q_rd >= 0 at (q_r, q_th) with angular momentum p on the energy level E of (27).
+
+    Returns (radicand, q_rd): H(q_r, q_th, m q_rd, p) = E solved for q_rd, the extending root.
+    """
+    energy = mechanics.stance_energy().subs(q_thd, P_SYM / (m * q_r**2))
+    # (27) is m q_rd^2 / 2 plus a q_rd-free rest, so H = E has the roots +-sqrt(2 (E - rest) / m).
+    rest = energy.subs(q_rd, 0)
+    if sp.simplify(energy - rest - m * q_rd**2 / 2) != 0:
+        raise AssertionError("the stance energy (27) is not m q_rd^2/2 plus a q_rd-free part")
+    radicand = sp.expand(2 * (E_SYM - rest) / m)
+    return radicand, sp.sqrt(radicand)
+
+
+# --------------------------------------------------------------------------------------------
+# Declaration helpers shared by types 0-4.
+
+_READING = Option(
+    "reading",
+    "how P_c enters Geyer's formulas, eq (50)",
+    "mean",
+    choices=(
+        (
+            "mean",
+            "trajectory with the stance-mean momentum p_th + P_c/2 (constant torque of (48)), "
+            "rates from the momentum at that instant, liftoff radial speed from the exact energy (27)",
+        ),
+        ("report", "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"),
+    ),
+)
+_SAMPLES = Option(
+    "samples",
+    "number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom)",
+    2,
+    low=2,
+    high=3,
+    integer=True,
+)
+_LEG_LENGTH = Option(
+    "leg_length",
+    "the stance solution the average leg length is taken from",
+    "eq11",
+    choices=(
+        ("eq11", "(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)"),
+        ("eq21", "(21), eqs (58)-(59) and (70)-(72); needs touchdown at l0 (else INVALID_INPUT)"),
+        ("eq23", "(23), eqs (60)-(61) and (73)-(75); needs touchdown at l0 (else INVALID_INPUT)"),
+    ),
+)
+_INTERVAL = Option(
+    "interval",
+    "the intervals [t_i, t_f] of the correction",
+    "halves",
+    choices=(
+        ("stance", "one interval, touchdown to liftoff"),
+        (
+            "halves",
+            "touchdown to bottom and bottom to liftoff, summed (the report's suggestion for "
+            "the split maps of section 5)",
+        ),
+    ),
+)
+
+
+def _iterations(default: int) -> Option:
+    return Option(
+        "iterations",
+        "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)",
+        default,
+        low=0,
+        high=1000,
+        integer=True,
+    )
+
+
+def _tol(default: float) -> Option:
+    return Option(
+        "tol",
+        "stop when P_c moves by at most tol times the momentum scale; 0: run all passes",
+        default,
+        low=0.0,
+        high=1.0,
+    )
+
+
+_EXTRAS = (
+    Field("P_c", "virtual gravity effect: the stance impulse added to p_th", "N m s"),
+    Field("passes", "fixed-point passes run", ""),
+)
+_MOMENTUM_SCALE = sp.Abs(sym("p_td")) + m * l0 * sp.sqrt(g_s * l0)
+
+
+def _n(prefix: str, name: str) -> sp.Symbol:
+    return sym(prefix + name)
+
+
+def _trajectory(prefix: str, p_traj: sp.Basic) -> tuple[Step, ...]:
+    """Geyer's map run with the trajectory momentum ``p_traj`` (as an effective touchdown rate)."""
+    return (
+        Stage(((_n(prefix, "q_thd_eff"), p_traj / (m * q_r_td**2)),), comment="effective touchdown rate"),
+        *geyer.stance_steps(_n(prefix, "q_thd_eff"), prefix),
+    )
+
+
+def _average(source: str, prefix: str, t_from: sp.Basic, t_to: sp.Basic) -> sp.Basic:
+    """The average leg length of ``source`` on [t_from, t_to] (times from touchdown) in kernel names."""
+    expr = average_leg_length(source)
+    names = {
+        a: _n(prefix, "a"),
+        b: _n(prefix, "b"),
+        omega0_hat: _n(prefix, "omega0_hat"),
+        q_thd_td: _n(prefix, "q_thd_eff"),
+    }
+    if source == "eq11":  # (11) runs on the absolute time: touchdown at phase_td / omega0_hat
+        shift = _n(prefix, "phase_td") / _n(prefix, "omega0_hat")
+        return expr.subs({T_I: t_from + shift, T_F: t_to + shift}).subs(names)
+    return expr.subs({T_I: t_from, T_F: t_to}).subs(names)
+
+
+def _angles(prefix: str):
+    return q_th_td, _n(prefix, "bottom_q_th"), _n(prefix, "liftoff_q_th")
+
+
+def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
+    """Steps defining ``<prefix>P_new``, the stance impulse of the trajectory named by ``prefix``."""
+    th_td, th_b, th_lo = _angles(prefix)
+    t_b, t_s = _n(prefix, "t_bottom"), _n(prefix, "t_stance")
+    q_r_b = _n(prefix, "bottom_q_r")
+    P_new, L = _n(prefix, "P_new"), _n(prefix, "L")
+
+    def ramp(total):
+        return Stage(((P_new, total),))
+
+    def by_samples(length: sp.Basic) -> Switch:
+        return Switch(
+            inp.opt("samples"),
+            (
+                (2, (ramp(impulse(t_s, [(length, th_td), (length, th_lo)])),)),
+                (3, (ramp(impulse(t_s, [(length, th_td), (length, th_b), (length, th_lo)])),)),
+            ),
+            comment="eq (48) with 2 or 3 samples",
+        )
+
+    def by_leg_length(t_from, t_to, name) -> Switch:
+        cases = tuple(
+            (i, (Stage(((name, _average(src, prefix, t_from, t_to)),)),))
+            for i, src in enumerate(inp.options["leg_length"].values)
+        )
+        return Switch(inp.opt("leg_length"), cases, comment="average leg length, eqs (55)-(61) / (67)-(75)")
+
+    if kind == 0:
+        return (by_samples(l0),)
+    if kind == 1:
+        return (by_samples((l0 + q_r_b) / 2),)
+    if kind == 2:
+        return (by_leg_length(0, t_s, L), by_samples(L))
+    halves = inp.options["interval"].code("halves")
+    whole = inp.options["interval"].code("stance")
+    if kind == 3:  # (65) on [t_td, t_lo] or on [t_td, t_b] + [t_b, t_lo]
+        first = impulse(t_b, [(q_r_td, th_td), (q_r_b, th_b)])
+        second = impulse(t_s - t_b, [(q_r_b, th_b), (q_r_lo, th_lo)])
+        return (
+            Switch(
+                inp.opt("interval"),
+                (
+                    (whole, (ramp(impulse(t_s, [(q_r_td, th_td), (q_r_lo, th_lo)])),)),
+                    (halves, (Stage(((P_new, first + second),)),)),
+                ),
+                comment="eq (65)",
+            ),
+        )
+    # kind == 4: (76) with the average leg length of each interval
+    L1, L2 = sym(f"_{prefix}L1"), sym(f"_{prefix}L2")  # private to their branch
+    return (
+        Switch(
+            inp.opt("interval"),
+            (
+                (
+                    whole,
+                    (
+                        by_leg_length(0, t_s, sym(f"_{prefix}L")),
+                        ramp(impulse(t_s, [(sym(f"_{prefix}L"), th_td), (sym(f"_{prefix}L"), th_lo)])),
+                    ),
+                ),
+                (
+                    halves,
+                    (
+                        by_leg_length(0, t_b, L1),
+                        by_leg_length(t_b, t_s, L2),
+                        Stage(
+                            (
+                                (
+                                    P_new,
+                                    impulse(t_b, [(L1, th_td), (L1, th_b)])
+                                    + impulse(t_s - t_b, [(L2, th_b), (L2, th_lo)]),
+                                ),
+                            )
+                        ),
+                    ),
+                ),
+            ),
+            comment="eq (76)",
+        ),
+    )
+
+
+def _leg_length_domain(inp: MapInputs) -> tuple[Step, ...]:
+    """(21) and (23) assume touchdown at the rest length: their choices need q_r_td = l0."""
+    if "leg_length" not in inp.options:
+        return ()
+    at_rest = sp.Abs(real(q_r_td) - real(l0)) <= 1e-9 * real(l0)
+    condition = sp.Or(inp.options["leg_length"].is_("eq11"), at_rest)
+    return (Stage((), (Guard(condition, "INVALID_INPUT", "leg_length eq21 / eq23 need q_r_td = l0"),)),)
+
+
+def _constant_correction(kind: int):
+    """The build function of types 0-4: Geyer's map with a constant virtual gravity effect."""
+
+    def build(inp: MapInputs) -> MapBuild:
+        p_td, P_c, share, ramp = sym("p_td"), sym("P_c"), sym("share"), sym("ramp")
+        reading = inp.options["reading"]
+
+        def momentum(time, t_s):
+            """The angular momentum a time t after touchdown: p_td + P_c t / t_s under (48)'s constant
+            torque (``mean``), p_td + P_c throughout (``report``)."""
+            return p_td + P_c * (ramp * time / t_s + (1 - ramp))
+
+        setup: tuple[Step, ...] = (
+            Stage(
+                (
+                    (p_td, m * q_r_td**2 * q_thd_td),
+                    (
+                        sym("E_td"),
+                        mechanics.stance_energy().subs(
+                            {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
+                        ),
+                    ),
+                ),
+                comment="angular momentum and total energy (27) at touchdown",
+            ),
+            *_leg_length_domain(inp),
+            Switch(
+                inp.opt("reading"),
+                (
+                    (reading.code("mean"), (Stage(((share, sp.Rational(1, 2)), (ramp, sp.S.One))),)),
+                    (reading.code("report"), (Stage(((share, sp.S.One), (ramp, sp.S.Zero))),)),
+                ),
+                comment="trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's",
+            ),
+            Iterate(
+                state=((P_c, sp.S.Zero),),
+                body=_trajectory("i_", p_td + share * P_c) + _impulse_steps(kind, inp, "i_"),
+                update=(sym("i_P_new"),),
+                max_iter=inp.opt("iterations"),
+                tol=inp.opt("tol"),
+                scales=(_MOMENTUM_SCALE,),
+                count=sym("passes"),
+                comment="fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)",
+            ),
+            *_trajectory("f_", p_td + share * P_c),
+        )
+        radicand, _ = liftoff_radial_speed()
+        lo_speed = {q_r: q_r_lo, q_th: sym("f_liftoff_q_th"), P_SYM: p_td + P_c, E_SYM: sym("E_td")}
+        f_t_b, f_t_s = sym("f_t_bottom"), sym("f_t_stance")
+        outputs = (
+            Stage(
+                (
+                    (sym("t_bottom"), f_t_b),
+                    (sym("t_stance"), f_t_s),
+                    (sym("bottom_q_r"), sym("f_bottom_q_r")),
+                    (sym("bottom_q_rd"), sp.S.Zero),
+                    (sym("bottom_q_th"), sym("f_bottom_q_th")),
+                    (sym("bottom_q_thd"), momentum(f_t_b, f_t_s) / (m * sym("f_bottom_q_r") ** 2)),
+                    (sym("liftoff_q_r"), q_r_lo),
+                    (sym("liftoff_q_th"), sym("f_liftoff_q_th")),
+                    (sym("liftoff_q_thd"), (p_td + P_c) / (m * q_r_lo**2)),
+                ),
+                comment="the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)",
+            ),
+            Switch(
+                inp.opt("reading"),
+                (
+                    (
+                        reading.code("mean"),
+                        (
+                            Stage(
+                                ((sym("_q_rd_lo_sq"), radicand.subs(lo_speed)),),
+                                (
+                                    Guard(
+                                        sym("_q_rd_lo_sq") >= 0,
+                                        "ENERGY_DEFICIT",
+                                        "q_rd_lo^2 from the energy (27)",
+                                    ),
+                                ),
+                            ),
+                            Stage(
+                                ((sym("liftoff_q_rd"), sp.sqrt(sym("_q_rd_lo_sq"))),),
+                                comment="from the energy",
+                            ),
+                        ),
+                    ),
+                    (
+                        reading.code("report"),
+                        (Stage(((sym("liftoff_q_rd"), sym("f_liftoff_q_rd")),), comment="from (11)"),),
+                    ),
+                ),
+            ),
+        )
+
+        def state_at(time: sp.Symbol) -> tuple[Step, ...]:
+            st = geyer.state_kernel()
+            f = {x: sym("f_" + x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
+            return setup + (
+                Stage(((sym("phase_t"), f["phase_td"] + f["omega0_hat"] * time),)),
+                Call(
+                    st,
+                    {"phase": sym("phase_t"), "q_th_td": q_th_td, "l0": l0, **f},
+                    {"q_r": "q_r", "q_rd": "q_rd", "q_th": "q_th"},
+                ),
+                Stage(
+                    ((sym("q_thd"), momentum(time, f_t_s) / (m * sym("q_r") ** 2)),),
+                    comment="the momentum at t",
+                ),
+            )
+
+        return MapBuild(steps=setup + outputs, state_at=state_at)
+
+    return build
+
+
+_COMMON_EQS = ("46", "47", "48", "50")
+_NOTES = (
+    "Geyer et al.'s map (3.1) run with a corrected angular momentum; see the module docstring of "
+    "derive/maps/gravity.py and docs/gravity.md for the two readings of (50)."
+)
+
+
+def _spec(kind: int, title: str, eqs: tuple[str, ...], options: tuple[Option, ...], summary: str) -> MapSpec:
+    return MapSpec(
+        name=f"gravity-type{kind}",
+        title=title,
+        section=f"4.{kind + 1}",
+        equations=_COMMON_EQS + eqs,
+        params=("m", "l0", "k", "g_s"),
+        requires=("constant_stiffness",),
+        build=_constant_correction(kind),
+        options=options,
+        extras=_EXTRAS,
+        summary=summary,
+        notes=_NOTES,
+    )
+
+
+MAPS = (
+    _spec(
+        0,
+        "Gravity correction type 0 (leg length l0)",
+        ("49", "51"),
+        (_READING, _SAMPLES, _iterations(1), _tol(0.0)),
+        "P_c from the torque at l0 sampled at touchdown and liftoff (49) or also the bottom (51)",
+    ),
+    _spec(
+        1,
+        "Gravity correction type 1 (leg length (l0 + q_r_b)/2)",
+        ("52", "53", "54"),
+        (_READING, _SAMPLES, _iterations(100), _tol(1e-12)),
+        "P_c from the torque at the mean of the rest and bottom leg lengths (52), (54)",
+    ),
+    _spec(
+        2,
+        "Gravity correction type 2 (average leg length)",
+        ("55", "56", "57", "58", "59", "60", "61", "62", "63", "64"),
+        (_READING, _SAMPLES, _LEG_LENGTH, _iterations(100), _tol(1e-12)),
+        "P_c from the torque at the stance-average leg length (62), (64)",
+    ),
+    _spec(
+        3,
+        "Gravity correction type 3 (trapezoid on [t_i, t_f])",
+        ("65", "66"),
+        (_READING, _INTERVAL, _iterations(100), _tol(1e-12)),
+        "P_c by the trapezoid rule on the torque with the true leg lengths (65), whole stance or halves",
+    ),
+    _spec(
+        4,
+        "Gravity correction type 4 (average leg length on [t_i, t_f])",
+        ("67", "68", "69", "70", "71", "72", "73", "74", "75", "76", "77"),
+        (_READING, _INTERVAL, _LEG_LENGTH, _iterations(100), _tol(1e-12)),
+        "P_c from the torque at the average leg length of each interval (76), whole stance or halves",
+    ),
+)

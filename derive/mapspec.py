@@ -1,0 +1,310 @@
+"""A map, declared once: :class:`MapSpec` -> its kernels and its row of the generated index.
+
+A map module (``derive/maps/<name>.py``) derives its formulas and declares ``MAPS``: one
+:class:`MapSpec` per map (name, title, report section, equations, parameters, requirements,
+options, extra outputs, and a ``build`` function that returns the steps computing the stance
+outputs). From the declaration follow, with no second list anywhere:
+
+- ``<ident>_stance``: polar touchdown state -> :data:`~.catalog.STANCE` outputs (+ extras), with a
+  parallel batch form (touchdown rows, scalar parameters and options);
+- ``<ident>_state_at``: the polar state a time ``t`` after touchdown (batch over ``t``), where the
+  map has a trajectory;
+- ``<ident>_apex_return``: apex -> touchdown (exact flight) -> stance -> liftoff -> next apex
+  (exact flight), three :class:`~.ir.Call` s passing values by name, with a batch form;
+- the map's row of ``generated/maps_index.py`` (which the runtime API, the CLI choices, the
+  tests over every map, the benchmark rows and the README map table all read).
+
+Options are kernel arguments (float64): a choice is passed as the index of its value, an integer
+option as a whole number; each gets a domain check (INVALID_INPUT outside it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from . import catalog
+from .ir import Arg, Batch, Call, Field, Group, Kernel, Module, Step, real, sym
+
+
+@dataclass(frozen=True)
+class Option:
+    """A map option: a choice among named values, an integer or a float, with its default."""
+
+    name: str
+    doc: str
+    default: float | int | str
+    choices: tuple[tuple[str, str], ...] = ()  # (value, what it means); passed as its index
+    low: float | None = None
+    high: float | None = None
+    integer: bool = False
+
+    def __post_init__(self):
+        if self.choices and self.default not in self.values:
+            raise ValueError(f"option {self.name}: default {self.default!r} is not one of {self.values}")
+
+    @property
+    def symbol(self) -> sp.Symbol:
+        return sym(self.name)
+
+    @property
+    def kind(self) -> str:
+        return "choice" if self.choices else ("int" if self.integer else "float")
+
+    @property
+    def values(self) -> tuple[str, ...]:
+        return tuple(v for v, _ in self.choices)
+
+    def code(self, value: str) -> int:
+        """The integer a kernel receives for the choice ``value``."""
+        return self.values.index(value)
+
+    def is_(self, value: str) -> sp.Basic:
+        """Condition: this choice option equals ``value`` (for expressions that select by option)."""
+        return sp.Eq(self.symbol, self.code(value))
+
+    def domain(self) -> sp.Basic:
+        x = real(self.symbol)
+        if self.choices:
+            return sp.Or(*(sp.Eq(x, i) for i in range(len(self.choices))))
+        conds = []
+        if self.low is not None:
+            conds.append(x >= self.low)
+        if self.high is not None:
+            conds.append(x <= self.high)
+        if self.integer:
+            conds.append(sp.Eq(x, sp.floor(x)))
+        return sp.And(*conds) if conds else sp.true
+
+    def arg(self) -> Arg:
+        if self.choices:
+            doc = f"{self.doc}: " + ", ".join(f"{i} = {v}" for i, v in enumerate(self.values))
+        else:
+            rng = (
+                f" in [{self.low:g}, {self.high:g}]" if self.low is not None and self.high is not None else ""
+            )
+            doc = f"{self.doc}{rng}"
+        dom = self.domain()
+        return Arg(self.symbol, f"option {self.name}: {doc}", None if dom is sp.true else dom)
+
+    def index_row(self) -> dict:
+        return {
+            "name": self.name,
+            "kind": self.kind,
+            "default": self.default,
+            "doc": self.doc,
+            "choices": [{"value": v, "doc": d} for v, d in self.choices],
+            "low": self.low,
+            "high": self.high,
+        }
+
+
+@dataclass(frozen=True)
+class MapInputs:
+    """The symbols a declaration's ``build`` works with: touchdown state, parameters, options."""
+
+    touchdown: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]
+    params: Mapping[str, sp.Symbol]
+    options: Mapping[str, Option]
+
+    def opt(self, name: str) -> sp.Symbol:
+        return self.options[name].symbol
+
+
+@dataclass(frozen=True)
+class MapBuild:
+    """What a declaration computes.
+
+    ``steps`` define every :data:`~.catalog.STANCE` output and every extra, by name.
+    ``state_at`` (optional) takes the time symbol ``t`` and returns steps defining ``q_r, q_rd,
+    q_th, q_thd`` at ``t`` after touchdown. ``helpers`` are internal kernels placed in the map's
+    module (other maps may call them).
+    """
+
+    steps: tuple[Step, ...]
+    state_at: Callable[[sp.Symbol], tuple[Step, ...]] | None = None
+    helpers: tuple[Kernel, ...] = ()
+
+
+@dataclass(frozen=True)
+class MapSpec:
+    """One approximate stance map, declared once."""
+
+    name: str  # user-facing name, e.g. "geyer", "gravity-type2"
+    title: str
+    section: str  # report subsection, e.g. "3.1", "4.3"
+    equations: tuple[str, ...]
+    params: tuple[str, ...]  # names in catalog.PARAMS, e.g. ("m", "l0", "k", "g_s")
+    build: Callable[[MapInputs], MapBuild]
+    requires: tuple[str, ...] = ()
+    options: tuple[Option, ...] = ()
+    extras: tuple[Field, ...] = ()
+    summary: str = ""
+    notes: str = ""
+    #: Inline the stance kernel into its batch and apex-return kernels (numba IR inlining): 10-25 %
+    #: faster batches for a small body, but every caller compiles it again (measured: 2-3x the
+    #: compile time of the gravity maps' large, iterating bodies), so a map opts in.
+    inline: bool = False
+    _cache: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self):
+        unknown = [p for p in self.params if p not in catalog.PARAMS]
+        if unknown:
+            raise ValueError(f"map {self.name}: unknown parameter(s) {unknown}")
+        if "k" in self.params and "constant_stiffness" not in self.requires:
+            raise ValueError(
+                f"map {self.name}: a map with the single stiffness k requires constant_stiffness"
+            )
+
+    @property
+    def ident(self) -> str:
+        """The Python identifier of the map (module and kernel name prefix)."""
+        return self.name.replace("-", "_")
+
+    @property
+    def source(self) -> str:
+        """The derivation module, named in generated headers."""
+        mod = self.build.__module__.removeprefix("slipmaps.")
+        return mod.replace(".", "/") + ".py"
+
+    # -- arguments -----------------------------------------------------------------------------
+    def param_args(self) -> tuple[Arg, ...]:
+        return tuple(catalog.PARAMS[p] for p in self.params)
+
+    def option_args(self) -> tuple[Arg, ...]:
+        return tuple(o.arg() for o in self.options)
+
+    def stance_args(self) -> tuple[Arg, ...]:
+        return catalog.TOUCHDOWN + self.param_args() + (catalog.PARAMS["q_r_lo"],) + self.option_args()
+
+    def apex_args(self) -> tuple[Arg, ...]:
+        flight = tuple(catalog.PARAMS[p] for p in ("g_f", "q_r_td", "q_r_lo"))
+        return catalog.APEX_ARGS + self.param_args() + flight + self.option_args()
+
+    # -- kernels -------------------------------------------------------------------------------
+    def built(self) -> MapBuild:
+        if "build" not in self._cache:
+            inputs = MapInputs(
+                touchdown=tuple(a.symbol for a in catalog.TOUCHDOWN),
+                params={p: catalog.PARAMS[p].symbol for p in self.params + ("q_r_lo",)},
+                options={o.name: o for o in self.options},
+            )
+            self._cache["build"] = self.build(inputs)
+        return self._cache["build"]
+
+    def stance_kernel(self) -> Kernel:
+        return Kernel(
+            name=f"{self.ident}_stance",
+            summary=f"{self.title}: touchdown state -> bottom and liftoff states.",
+            equations=self.equations,
+            args=self.stance_args(),
+            steps=self.built().steps,
+            outputs=catalog.STANCE + Group("", self.extras),
+            batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
+            notes=self.notes,
+            module=self.ident,
+            inline=self.inline,
+        )
+
+    def state_at_kernel(self) -> Kernel | None:
+        if self.built().state_at is None:
+            return None
+        t = catalog.TIME
+        return Kernel(
+            name=f"{self.ident}_state_at",
+            summary=f"{self.title}: the polar state a time t after touchdown.",
+            equations=self.equations,
+            args=(t,) + self.stance_args(),
+            steps=self.built().state_at(t.symbol),
+            outputs=catalog.TRAJECTORY,
+            batch=Batch((t.name,)),
+            module=self.ident,
+        )
+
+    def apex_return_kernel(self, flight_kernels: Mapping[str, Kernel]) -> Kernel:
+        to_td, to_apex = flight_kernels["apex_to_touchdown"], flight_kernels["liftoff_to_apex"]
+        stance = self.stance_kernel()
+        td = ("td_q_r", "td_q_rd", "td_q_th", "td_q_thd")
+        touchdown_names = [a.name for a in catalog.TOUCHDOWN]
+        passthrough = {a.name: a.symbol for a in stance.args if a.name not in touchdown_names}
+        stance_outs = {f.name: f.name for f in catalog.APEX_RETURN.fields() if f.name in stance.output_names}
+        stance_outs.update({f.name: f.name for f in self.extras})
+        steps = (
+            Call(
+                to_td,
+                {
+                    "b_y_apex": catalog.APEX_ARGS[0].symbol,
+                    "b_xd_apex": catalog.APEX_ARGS[1].symbol,
+                    "q_th_td": catalog.TOUCHDOWN[2].symbol,
+                    "q_r_td": catalog.PARAMS["q_r_td"].symbol,
+                    "g_f": catalog.PARAMS["g_f"].symbol,
+                },
+                {**dict(zip(to_td.output_names[:4], td, strict=True)), "t_flight": "t_descent"},
+                comment="apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)",
+            ),
+            Call(
+                stance,
+                {**dict(zip(touchdown_names, (sym(n) for n in td), strict=True)), **passthrough},
+                stance_outs,
+                comment=f"stance: {self.title}",
+            ),
+            Call(
+                to_apex,
+                {
+                    **{p: sym(f"liftoff_{p}") for p in ("q_r", "q_rd", "q_th", "q_thd")},
+                    "g_f": catalog.PARAMS["g_f"].symbol,
+                },
+                {"apex_b_y": "apex_height", "apex_b_xd": "apex_speed", "t_flight": "t_ascent"},
+                comment="liftoff -> next apex: exact ballistic ascent",
+            ),
+        )
+        return Kernel(
+            name=f"{self.ident}_apex_return",
+            summary=f"Apex-return map: exact flights, stance by {self.title}.",
+            equations=self.equations,
+            args=self.apex_args(),
+            steps=steps,
+            outputs=catalog.APEX_RETURN + Group("", self.extras),
+            batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+            module=self.ident,
+        )
+
+    def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
+        state_at = self.state_at_kernel()
+        main = (self.stance_kernel(),) + ((state_at,) if state_at else ())
+        return self.built().helpers + main + (self.apex_return_kernel(flight_kernels),)
+
+    def module(self, flight_kernels: Mapping[str, Kernel]) -> Module:
+        return Module(
+            name=self.ident,
+            doc=f"{self.title} (report section {self.section}): stance, state-at-time and apex-return "
+            "kernels.",
+            source=self.source,
+            kernels=lambda: self.kernels(flight_kernels),
+        )
+
+    # -- index ---------------------------------------------------------------------------------
+    def index_row(self) -> dict:
+        stance, state_at = self.stance_kernel(), self.state_at_kernel()
+        return {
+            "name": self.name,
+            "ident": self.ident,
+            "title": self.title,
+            "section": self.section,
+            "equations": list(self.equations),
+            "requires": list(self.requires),
+            "params": list(self.params),
+            "options": [o.index_row() for o in self.options],
+            "module": self.ident,
+            "summary": self.summary,
+            "kernels": {
+                "stance": stance.name,
+                "state_at": state_at.name if state_at else None,
+                "apex_return": f"{self.ident}_apex_return",
+            },
+            "stance_args": list(stance.arg_names),
+            "apex_args": [a.name for a in self.apex_args()],
+            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],
+        }

@@ -1,0 +1,232 @@
+"""Kernels of the SLIP model itself: the exact simulator's vector fields and coordinate maps
+(``generated/slip_model.py``) and the exact ballistic flight between apex and stance events
+(``generated/flight.py``). Every formula comes from :mod:`.mechanics` or :mod:`.flight`.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from ..catalog import PARAMS, POLAR
+from ..ir import Arg, Field, Group, Guard, Kernel, Module, Stage, positive, real, sym
+from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_y_apex, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
+from . import flight, mechanics
+
+#: Liftoff with a horizontal speed below -BACKWARD_TOLERANCE * sqrt(g_f q_r) is backward; a vertical
+#: hop (apex speed 0) lifts off with b_xd = -0.0 or a round-off of either sign and is a valid gait.
+BACKWARD_TOLERANCE = 1e-9
+
+_STIFFNESS = Arg(k, "leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)")
+_MODEL_PARAMS = (PARAMS["m"], PARAMS["l0"], _STIFFNESS, PARAMS["g_s"])
+_POLAR_ARGS = (
+    Arg(q_r, "leg length q_r [m]"),
+    Arg(q_rd, "leg length rate q_rd [m/s]"),
+    Arg(q_th, "leg angle q_th from the vertical, counterclockwise positive [rad]"),
+    Arg(q_thd, "leg angle rate q_thd [rad/s]"),
+)
+_CARTESIAN_ARGS = (
+    Arg(b_x, "horizontal body position relative to the toe b_x [m]"),
+    Arg(b_xd, "horizontal body velocity b_xd [m/s]"),
+    Arg(b_y, "body height above the toe b_y [m]"),
+    Arg(b_yd, "vertical body velocity b_yd [m/s]"),
+)
+
+
+def _plain(name, summary, equations, args, fields, exprs) -> Kernel:
+    """A kernel with one stage, no checks and no status (vector fields and coordinate maps)."""
+    outputs = Group("", tuple(Field(n, d, u) for n, d, u in fields))
+    return Kernel(
+        name=name,
+        summary=summary,
+        equations=equations,
+        args=args,
+        steps=(Stage(tuple(zip((sym(n) for n in outputs.names()), exprs, strict=True))),),
+        outputs=outputs,
+        status=False,
+        check_inputs=False,
+        module="slip_model",
+    )
+
+
+@cache
+def slip_model_kernels() -> tuple[Kernel, ...]:
+    """Equations of motion, energy and coordinate maps used by the exact simulator."""
+    return (
+        _plain(
+            "stance_polar_rhs",
+            "Polar stance vector field d/dt (q_r, q_rd, q_th, q_thd) from the Euler-Lagrange equations.",
+            ("1", "2", "3", "sec2.2.1-polar"),
+            _POLAR_ARGS + _MODEL_PARAMS,
+            [
+                ("d_q_r", "dq_r/dt", "m/s"),
+                ("d_q_rd", "d^2q_r/dt^2", "m/s^2"),
+                ("d_q_th", "dq_th/dt", "rad/s"),
+                ("d_q_thd", "d^2q_th/dt^2", "rad/s^2"),
+            ],
+            mechanics.stance_polar_rhs(),
+        ),
+        _plain(
+            "stance_cartesian_rhs",
+            "Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.",
+            ("sec2.2.1-cartesian",),
+            _CARTESIAN_ARGS + _MODEL_PARAMS,
+            [
+                ("d_b_x", "db_x/dt", "m/s"),
+                ("d_b_xd", "d^2b_x/dt^2", "m/s^2"),
+                ("d_b_y", "db_y/dt", "m/s"),
+                ("d_b_yd", "d^2b_y/dt^2", "m/s^2"),
+            ],
+            mechanics.stance_cartesian_rhs(),
+        ),
+        _plain(
+            "stance_energy",
+            "Total stance energy, the Hamiltonian (27) evaluated at p_r = m q_rd, p_th = m q_r^2 q_thd.",
+            ("27",),
+            _POLAR_ARGS + _MODEL_PARAMS,
+            [("energy", "total mechanical energy E (gravity potential zero at toe height)", "J")],
+            (mechanics.stance_energy(),),
+        ),
+        _plain(
+            "polar_to_cartesian",
+            "Polar stance state -> Cartesian body state relative to the toe.",
+            ("sec2.2-coordinates",),
+            _POLAR_ARGS,
+            [
+                ("out_b_x", "b_x = -q_r sin q_th", "m"),
+                ("out_b_xd", "b_xd", "m/s"),
+                ("out_b_y", "b_y = q_r cos q_th", "m"),
+                ("out_b_yd", "b_yd", "m/s"),
+            ],
+            mechanics.polar_to_cartesian(),
+        ),
+        _plain(
+            "cartesian_to_polar",
+            "Cartesian body state relative to the toe -> polar stance state (inverse of polar_to_cartesian).",
+            ("sec2.2-coordinates",),
+            _CARTESIAN_ARGS,
+            [
+                ("out_q_r", "q_r", "m"),
+                ("out_q_rd", "q_rd", "m/s"),
+                ("out_q_th", "q_th = atan2(-b_x, b_y)", "rad"),
+                ("out_q_thd", "q_thd", "rad/s"),
+            ],
+            mechanics.cartesian_to_polar(),
+        ),
+    )
+
+
+@cache
+def flight_kernels() -> dict[str, Kernel]:
+    """Ballistic flight between apex and stance events (exact in every apex-return map), by name."""
+    atd = flight.apex_to_touchdown()
+    drop = atd["drop_symbol"]
+    r_out, rd_out, th_out, thd_out = atd["state"]
+    q_r_td, q_th_td = PARAMS["q_r_td"].symbol, sym("q_th_td")
+    apex_to_td = Kernel(
+        name="apex_to_touchdown",
+        summary="Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).",
+        equations=("sec2.1-touchdown", "sec2.2.2"),
+        args=(
+            Arg(b_y_apex, "apex height of the body above the ground [m], >= 0", real(b_y_apex) >= 0),
+            Arg(b_xd_apex, "horizontal apex speed [m/s]"),
+            Arg(
+                q_th_td,
+                "touchdown leg angle from the vertical [rad], |q_th_td| < pi/2",
+                sp.Abs(q_th_td) < sp.pi / 2,
+            ),
+            Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),
+            Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive", positive(g_f)),
+        ),
+        steps=(
+            Stage(
+                ((drop, atd["drop"]),),
+                (Guard(real(drop) > 0, "APEX_TOO_LOW", "touchdown height below apex"),),
+            ),
+            Stage(
+                tuple(
+                    zip(
+                        (
+                            sym(n)
+                            for n in ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd")
+                        ),
+                        (r_out, rd_out, th_out, thd_out),
+                        strict=True,
+                    )
+                )
+                + ((sym("t_flight"), atd["t_flight"]),),
+                comment="touchdown state from the derived Cartesian -> polar map",
+            ),
+        ),
+        outputs=Group(
+            "",
+            (
+                Group("touchdown", POLAR, "polar state at touchdown"),
+                Field("t_flight", "time from the apex to touchdown", "s"),
+            ),
+        ),
+        module="flight",
+    )
+    lta = flight.liftoff_to_apex()
+    cart = tuple(zip((b_x, b_xd, b_y, b_yd), lta["liftoff_cartesian"], strict=True))
+    lo_to_apex = Kernel(
+        name="liftoff_to_apex",
+        summary="Ballistic ascent from a polar liftoff state to the next apex.",
+        equations=("sec2.1-apex", "sec2.2.2"),
+        args=(
+            Arg(q_r, "liftoff leg length q_r [m], > 0", positive(q_r)),
+            *_POLAR_ARGS[1:],
+            Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive", positive(g_f)),
+        ),
+        steps=(
+            Stage(
+                cart,
+                (
+                    Guard(b_yd > 0, "LIFTOFF_DOWNWARD", "liftoff requires an upward velocity"),
+                    Guard(
+                        b_xd >= -BACKWARD_TOLERANCE * sp.sqrt(real(g_f) * real(q_r)),
+                        "LIFTOFF_BACKWARD",
+                        "the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait",
+                    ),
+                ),
+                comment="Cartesian liftoff state relative to the toe",
+            ),
+            Stage(
+                (
+                    (sym("apex_b_y"), lta["b_y_apex"]),
+                    (sym("apex_b_xd"), lta["b_xd_apex"]),
+                    (sym("t_flight"), lta["t_flight"]),
+                    (sym("dx_flight"), lta["dx_flight"]),
+                ),
+                comment="apex where b_yd(t) = 0",
+            ),
+        ),
+        outputs=Group(
+            "",
+            (
+                Field("apex_b_y", "next apex height above the ground", "m"),
+                Field("apex_b_xd", "next apex horizontal speed", "m/s"),
+                Field("t_flight", "time from liftoff to the apex", "s"),
+                Field("dx_flight", "horizontal distance travelled from liftoff to the apex", "m"),
+            ),
+        ),
+        module="flight",
+    )
+    return {"apex_to_touchdown": apex_to_td, "liftoff_to_apex": lo_to_apex}
+
+
+MODULES = (
+    Module(
+        "slip_model",
+        "SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2).",
+        "derive/model/mechanics.py",
+        slip_model_kernels,
+    ),
+    Module(
+        "flight",
+        "Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).",
+        "derive/model/flight.py",
+        lambda: tuple(flight_kernels().values()),
+    ),
+)

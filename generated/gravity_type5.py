@@ -1,0 +1,698 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/maps/gravity_type5.py
+# Template:  derive/templates/kernels.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   flight.py sha256:0415a4657ea8ce78
+#   geyer.py sha256:3eaa5cde50c61563
+# ----------------------------------------------------------------------------------------------
+"""Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from .flight import apex_to_touchdown, liftoff_to_apex
+from .geyer import geyer_liftoff_phase
+
+NAN = math.nan
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
+
+
+@njit(cache=True, error_model="numpy")
+def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
+    """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff.
+
+    Report equations: 9, 10, 11, 12.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        omega: omega = p_mean / (m l0^2) [rad/s]
+        g_eff: radial gravity g_s <cos q_th> [m/s^2]
+        r_c: expansion point of 1/(1+rho)^2 (stance-mean compression)
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+
+    Returns a tuple:
+        omega0_hat: frequency [rad/s]
+        a: offset of rho(t)
+        b: amplitude of rho(t)
+        phase_td: touchdown phase [rad]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 73
+    omega0_sq = k/m
+    if not ((q_rd_td < 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # T5.4: the quadratic about r_c with g_eff
+    _x0 = (r_c + 1.0)**-4
+    _x1 = 4.0*omega0_sq
+    _x2 = omega**2
+    _x3 = r_c**4
+    _x4 = 6.0*r_c**2
+    _x5 = r_c**3
+    _x6 = 4.0*g_eff
+    lam = -_x0*(_x1*_x5 + _x1*r_c + 3.0*_x2 + _x3*omega0_sq + _x4*omega0_sq + omega0_sq)
+    mu = 2.0*_x0*(4.0*_x2*l0*r_c + _x2*l0 - _x3*g_eff - _x4*g_eff - _x5*_x6 - _x6*r_c - g_eff)/l0
+    # T5.5: through the touchdown point
+    _x8 = (1.0/l0)
+    _x7 = _x8*q_r_td - 1.0
+    nu = -_x7**2*lam - _x7*mu + _x8**2*q_rd_td**2
+    _x9 = (1.0/lam)
+    omega0_hat = math.sqrt(-lam)
+    a = -0.5*_x9*mu
+    b2 = (0.25)*_x9**2*(-4.0*lam*nu + mu**2)
+    # T5.5: real amplitude
+    if not ((b2 > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+    _x10 = math.sqrt(b2)
+    b = _x10
+    s_td = (-a - 1.0 + q_r_td/l0)/_x10
+    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    if not ((a - b + 1.0 > 0.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_FALL)
+    # eq (12) needs |s_td| <= 1
+    if not ((abs(s_td) <= 1.0)):
+        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+    phase_td = math.pi - math.asin(s_td)
+    # (internal helper: its callers check that their outputs are finite)
+    return (omega0_hat, a, b, phase_td, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def type5_leg_angle(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0):
+    """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2).
+
+    Report equations: 47.
+
+    Arguments:
+        t: time since touchdown [s]
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        p_td: angular momentum at touchdown [N m s]
+        c0: coefficient c0 of the torque quadratic T5.1
+        c1: coefficient c1 of the torque quadratic T5.1
+        c2: coefficient c2 of the torque quadratic T5.1
+        k0: coefficient k0 of the rate factor T5.6
+        k1: coefficient k1 of the rate factor T5.6
+        k2: coefficient k2 of the rate factor T5.6
+        omega0_hat: frequency omega0_hat [rad/s]
+        phase_td: touchdown phase [rad]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+
+    Returns:
+        q_th: leg angle [rad]
+    """
+    # Total ops: 144
+    _x32 = (1.0/omega0_hat)
+    _x0 = t**2
+    _x1 = (0.5)*_x0
+    _x2 = t**3
+    _x3 = k1*math.cos(phase_td)
+    _x4 = _x32
+    _x5 = _x4*p_td
+    _x6 = _x32**2
+    _x7 = math.sin(phase_td)
+    _x8 = c0*k1
+    _x9 = _x32**3
+    _x10 = _x9*c1
+    _x11 = _x32**4
+    _x12 = _x11*c2
+    _x13 = 2.0*phase_td
+    _x14 = math.cos(_x13)
+    _x15 = c0*k2
+    _x16 = k2*math.sin(_x13)
+    _x17 = omega0_hat*t
+    _x18 = _x17 + phase_td
+    _x19 = math.cos(_x18)
+    _x20 = _x19*_x4
+    _x21 = _x13 + 2.0*_x17
+    _x22 = math.sin(_x21)
+    _x23 = _x22*_x4
+    _x24 = (0.5)*_x23
+    _x25 = math.sin(_x18)
+    _x26 = math.cos(_x21)
+    _x27 = _x26*_x6
+    _x28 = (0.5)*t
+    _x29 = (0.5)*c1
+    _x30 = _x22*_x9
+    _x31 = (0.3333333333333333)*c2
+    q_th = q_th_td + (_x1*c0*k0 + (0.125)*_x10*_x16 - _x10*_x3 + (0.125)*_x12*_x14*k2 + 2.0*_x12*_x7*k1 - 0.25*_x14*_x15*_x6 + _x15*(_x23*_x28 + (0.25)*_x27) - 0.5*_x16*_x5 + (0.16666666666666666)*_x2*c1*k0 - _x20*k1*p_td + _x24*k2*p_td + _x29*k1*(-_x0*_x20 + 2.0*_x19*_x9 + 2.0*_x25*_x6*t) + _x29*k2*(_x1*_x23 + _x27*_x28 - 0.25*_x30) + _x3*_x5 + _x31*k1*(3.0*_x0*_x25*_x6 - 6.0*_x11*_x25 + 6.0*_x19*_x9*t - _x2*_x20) + _x31*k2*((0.75)*_x0*_x27 - 0.375*_x11*_x26 + _x2*_x24 - 0.75*_x30*t) - _x6*_x7*_x8 + _x8*(-_x20*t + _x25*_x6) + (0.08333333333333333)*c2*k0*t**4 + k0*p_td*t)/(l0**2*m)
+    return q_th
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
+    """Gravity correction type 5 (time-varying momentum): touchdown state -> bottom and liftoff states.
+
+    Report equations: 46, 47, 48.
+
+    Designed in slipmaps (the report stops mid-sentence): docs/type5.md, equations T5.1-T5.8.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
+        passes: fixed-point passes run
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 373
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # angular momentum and total energy (27) at touchdown
+    _x0 = q_r_td**2
+    _x1 = _x0*m
+    _x2 = (0.5)*k
+    p_td = _x1*q_thd_td
+    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
+    tau1 = 0.0
+    tau2 = 0.0
+    tau3 = 0.0
+    T = 1.0
+    g_eff = g_s
+    r_c = 0.0
+    passes = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        # T5.1: the torque quadratic through the nodal torques of the previous pass
+        _x5 = (1.0/T)
+        _x3 = math.sqrt(15.0)
+        _x4 = _x3*tau1
+        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
+        i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
+        # T5.3: omega of the stance-mean momentum
+        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        # T5.4-T5.5: radial solution
+        _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
+        if _c0[4] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
+        i_omega0_hat = _c0[0]
+        i_a = _c0[1]
+        i_b = _c0[2]
+        i_phase_td = _c0[3]
+        _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
+        if _c1[2] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+        i_phase_lo = _c1[0]
+        # eqs (13)-(14) minus (12); T5.6: the rate factor
+        _x6 = (1.0/i_omega0_hat)
+        _x7 = r_c**4
+        _x8 = r_c**3
+        _x9 = r_c**2
+        _x10 = 4.0*r_c + 1.0
+        _x11 = (1.0/(_x10 + _x7 + 4.0*_x8 + 6.0*_x9))
+        _x12 = 3.0*i_b**2
+        _x13 = 12.0*_x9 + 8.0*r_c + 2.0
+        i_t_bottom = _x6*(-i_phase_td + (1.5)*math.pi)
+        i_t_stance = _x6*(i_phase_lo - i_phase_td)
+        i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
+        i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
+        i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
+        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th1 = _c2
+        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th2 = _c3
+        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th3 = _c4
+        # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+        _x14 = (0.2)*math.sqrt(15.0)
+        _x15 = (0.5)*i_omega0_hat*i_t_stance
+        _x16 = i_a + 1.0
+        _x17 = g_s*l0*m
+        i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
+        i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
+        i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
+        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        _n0_0 = i_tau1
+        _n0_1 = i_tau2
+        _n0_2 = i_tau3
+        _n0_3 = i_t_stance
+        _n0_4 = i_g_eff
+        _n0_5 = i_r_c
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        tau1 = _n0_0
+        tau2 = _n0_1
+        tau3 = _n0_2
+        T = _n0_3
+        g_eff = _n0_4
+        r_c = _n0_5
+        passes += 1.0
+        if _conv0:
+            break
+    if not _conv0 and tol > 0.0 and passes > 0.0:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+    # T5.1: the torque quadratic through the nodal torques of the previous pass
+    _x20 = (1.0/T)
+    _x18 = math.sqrt(15.0)
+    _x19 = _x18*tau1
+    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
+    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
+    # T5.3: omega of the stance-mean momentum
+    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
+    # T5.4-T5.5: radial solution
+    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
+    if _c5[4] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[4])
+    f_omega0_hat = _c5[0]
+    f_a = _c5[1]
+    f_b = _c5[2]
+    f_phase_td = _c5[3]
+    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
+    if _c6[2] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[2])
+    f_phase_lo = _c6[0]
+    # eqs (13)-(14) minus (12); T5.6: the rate factor
+    _x21 = (1.0/f_omega0_hat)
+    _x22 = r_c**4
+    _x23 = r_c**3
+    _x24 = r_c**2
+    _x25 = 4.0*r_c + 1.0
+    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
+    _x27 = 3.0*f_b**2
+    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
+    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
+    f_t_stance = _x21*(f_phase_lo - f_phase_td)
+    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
+    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
+    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
+    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th1 = _c7
+    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th2 = _c8
+    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th3 = _c9
+    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+    _x29 = (0.2)*math.sqrt(15.0)
+    _x30 = (0.5)*f_omega0_hat*f_t_stance
+    _x31 = f_a + 1.0
+    _x32 = g_s*l0*m
+    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
+    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
+    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
+    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
+    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
+    _c10 = type5_leg_angle(f_t_bottom, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    bottom_q_th = _c10
+    _c11 = type5_leg_angle(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    liftoff_q_th = _c11
+    # T5.7: bottom and liftoff states
+    _x43 = (1.0/m)
+    _x33 = f_a - f_b + 1.0
+    _x34 = l0**2
+    _x35 = _x43
+    _x36 = (0.5)*f_c1
+    _x37 = (0.3333333333333333)*f_c2
+    _x38 = _x36*f_t_stance**2 + _x37*f_t_stance**3 + f_c0*f_t_stance
+    _x39 = q_r_lo**2
+    _x40 = (1.0/_x39)
+    _x41 = _x38 + p_td
+    _x42 = _x35*k
+    t_bottom = f_t_bottom
+    t_stance = f_t_stance
+    bottom_q_r = _x33*l0
+    bottom_q_rd = 0.0
+    bottom_q_thd = _x35*(_x36*f_t_bottom**2 + _x37*f_t_bottom**3 + f_c0*f_t_bottom + p_td)/(_x33**2*_x34)
+    liftoff_q_r = q_r_lo
+    P_c = _x38
+    liftoff_q_thd = _x35*_x40*_x41
+    _q_rd_lo_sq = 2.0*E_td*_x35 - _x34*_x42 + 2.0*_x35*k*l0*q_r_lo - _x39*_x42 - _x40*_x41**2*_x43**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    # q_rd_lo^2 from the energy (27)
+    if not ((_q_rd_lo_sq >= 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+    liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def gravity_type5_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+    """Parallel batch form of :func:`gravity_type5_stance`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = gravity_type5_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, iterations, tol)
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        status[i] = res[12]
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
+    """Gravity correction type 5 (time-varying momentum): the polar state a time t after touchdown.
+
+    Report equations: 46, 47, 48.
+
+    Arguments:
+        t: time since touchdown t [s], >= 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+
+    Returns a tuple:
+        q_r: leg length [m]
+        q_rd: leg length rate [m/s]
+        q_th: leg angle from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 344
+    # inputs: finite and inside their domains
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # angular momentum and total energy (27) at touchdown
+    _x0 = q_r_td**2
+    _x1 = _x0*m
+    _x2 = (0.5)*k
+    p_td = _x1*q_thd_td
+    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
+    tau1 = 0.0
+    tau2 = 0.0
+    tau3 = 0.0
+    T = 1.0
+    g_eff = g_s
+    r_c = 0.0
+    passes = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        # T5.1: the torque quadratic through the nodal torques of the previous pass
+        _x5 = (1.0/T)
+        _x3 = math.sqrt(15.0)
+        _x4 = _x3*tau1
+        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
+        i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
+        # T5.3: omega of the stance-mean momentum
+        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        # T5.4-T5.5: radial solution
+        _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
+        if _c0[4] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, _c0[4])
+        i_omega0_hat = _c0[0]
+        i_a = _c0[1]
+        i_b = _c0[2]
+        i_phase_td = _c0[3]
+        _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
+        if _c1[2] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, _c1[2])
+        i_phase_lo = _c1[0]
+        # eqs (13)-(14) minus (12); T5.6: the rate factor
+        _x6 = (1.0/i_omega0_hat)
+        _x7 = r_c**4
+        _x8 = r_c**3
+        _x9 = r_c**2
+        _x10 = 4.0*r_c + 1.0
+        _x11 = (1.0/(_x10 + _x7 + 4.0*_x8 + 6.0*_x9))
+        _x12 = 3.0*i_b**2
+        _x13 = 12.0*_x9 + 8.0*r_c + 2.0
+        i_t_bottom = _x6*(-i_phase_td + (1.5)*math.pi)
+        i_t_stance = _x6*(i_phase_lo - i_phase_td)
+        i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
+        i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
+        i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
+        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th1 = _c2
+        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th2 = _c3
+        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        i_th3 = _c4
+        # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+        _x14 = (0.2)*math.sqrt(15.0)
+        _x15 = (0.5)*i_omega0_hat*i_t_stance
+        _x16 = i_a + 1.0
+        _x17 = g_s*l0*m
+        i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
+        i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
+        i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
+        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        _n0_0 = i_tau1
+        _n0_1 = i_tau2
+        _n0_2 = i_tau3
+        _n0_3 = i_t_stance
+        _n0_4 = i_g_eff
+        _n0_5 = i_r_c
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        tau1 = _n0_0
+        tau2 = _n0_1
+        tau3 = _n0_2
+        T = _n0_3
+        g_eff = _n0_4
+        r_c = _n0_5
+        passes += 1.0
+        if _conv0:
+            break
+    if not _conv0 and tol > 0.0 and passes > 0.0:
+        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+    # T5.1: the torque quadratic through the nodal torques of the previous pass
+    _x20 = (1.0/T)
+    _x18 = math.sqrt(15.0)
+    _x19 = _x18*tau1
+    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
+    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
+    # T5.3: omega of the stance-mean momentum
+    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
+    # T5.4-T5.5: radial solution
+    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
+    if _c5[4] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, _c5[4])
+    f_omega0_hat = _c5[0]
+    f_a = _c5[1]
+    f_b = _c5[2]
+    f_phase_td = _c5[3]
+    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
+    if _c6[2] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, _c6[2])
+    f_phase_lo = _c6[0]
+    # eqs (13)-(14) minus (12); T5.6: the rate factor
+    _x21 = (1.0/f_omega0_hat)
+    _x22 = r_c**4
+    _x23 = r_c**3
+    _x24 = r_c**2
+    _x25 = 4.0*r_c + 1.0
+    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
+    _x27 = 3.0*f_b**2
+    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
+    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
+    f_t_stance = _x21*(f_phase_lo - f_phase_td)
+    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
+    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
+    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
+    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th1 = _c7
+    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th2 = _c8
+    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    f_th3 = _c9
+    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+    _x29 = (0.2)*math.sqrt(15.0)
+    _x30 = (0.5)*f_omega0_hat*f_t_stance
+    _x31 = f_a + 1.0
+    _x32 = g_s*l0*m
+    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
+    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
+    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
+    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
+    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
+    _c10 = type5_leg_angle(t, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
+    q_th = _c10
+    # (11) with T5.5, T5.2
+    _x33 = f_omega0_hat*t + f_phase_td
+    _x34 = f_a + f_b*math.sin(_x33) + 1.0
+    q_r = _x34*l0
+    q_rd = f_b*f_omega0_hat*l0*math.cos(_x33)
+    q_thd = (f_c0*t + (0.5)*f_c1*t**2 + (0.3333333333333333)*f_c2*t**3 + p_td)/(_x34**2*l0**2*m)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
+        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (q_r, q_rd, q_th, q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+    """Parallel batch form of :func:`gravity_type5_state_at`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): t.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
+    ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = gravity_type5_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol)
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        status[i] = res[4]
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol):
+    """Apex-return map: exact flights, stance by Gravity correction type 5 (time-varying momentum).
+
+    Report equations: 46, 47, 48.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground [m], >= 0
+        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (constant: k_c = k_d)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground [m]
+        apex_speed: next apex horizontal speed [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
+        passes: fixed-point passes run
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
+    if _c0[5] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    # stance: Gravity correction type 5 (time-varying momentum)
+    _c1 = gravity_type5_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, iterations, tol)
+    if _c1[12] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    P_c = _c1[10]
+    passes = _c1[11]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
+    if _c2[4] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def gravity_type5_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
+    """Parallel batch form of :func:`gravity_type5_apex_return`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = gravity_type5_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol)
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]

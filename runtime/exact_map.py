@@ -1,0 +1,115 @@
+"""The ``"exact"`` map: the numerical simulator (:mod:`.simulate`) in the result family of the maps.
+
+Stance and apex-return results carry the same names as every generated map's (from the index),
+so any two maps compare the same way. Batches loop over rows in Python (about 1 ms per stance),
+each row with its own status; an invalid row is ``INVALID_INPUT``, never an exception.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from slipmaps.generated.status import MESSAGES, Status
+
+from .params import SlipParams
+from .progress import progress as _progress
+from .results import Result, columns
+from .simulate import StanceResult, StepResult, simulate_stance, simulate_step
+
+_NAN4 = (math.nan,) * 4
+
+
+def _stance_values(r: StanceResult | StepResult) -> dict[str, float]:
+    values = {"t_bottom": r.t_bottom, "t_stance": r.t_stance}
+    for group, state in (("bottom", r.bottom), ("liftoff", r.liftoff)):
+        values.update(
+            zip((f"{group}_{q}" for q in ("q_r", "q_rd", "q_th", "q_thd")), state or _NAN4, strict=True)
+        )
+    return values
+
+
+def _stance_row(r: StanceResult) -> list[float]:
+    values = _stance_values(r)
+    return [float(values[n]) for n in columns("stance")]
+
+
+def _apex_row(r: StepResult) -> list[float]:
+    values = {
+        **_stance_values(r),
+        "apex_height": r.next_apex[0],
+        "apex_speed": r.next_apex[1],
+        "t_descent": r.t_descent,
+        "t_ascent": r.t_ascent,
+    }
+    return [float(values[n]) for n in columns("apex_return")]
+
+
+def _masked(row: list[float], status: Status) -> list[float]:
+    """NaN everywhere unless OK, as the generated kernels do (partial exact results stay in the
+    scalar result's simulator object, not in the row)."""
+    return row if status == Status.OK else [math.nan] * len(row)
+
+
+def stance(params: SlipParams, td, inputs: dict, rtol: float, atol: float) -> Result:
+    r = simulate_stance(params, td, rtol=rtol, atol=atol)
+    row = _masked(_stance_row(r), r.status)
+    return Result(
+        "exact", "stance", r.status, r.message, dict(zip(columns("stance"), row, strict=True)), inputs
+    )
+
+
+def apex_return(
+    params: SlipParams, h: float, v: float, th: float, inputs: dict, rtol: float, atol: float
+) -> Result:
+    r = simulate_step(params, h, v, th, rtol=rtol, atol=atol)
+    row = _masked(_apex_row(r), r.status)
+    return Result(
+        "exact",
+        "apex_return",
+        r.status,
+        r.message,
+        dict(zip(columns("apex_return"), row, strict=True)),
+        inputs,
+    )
+
+
+def _rows(n: int, names, label: str, show, one) -> tuple[np.ndarray, np.ndarray]:
+    data = np.full((n, len(names)), math.nan)
+    status = np.empty(n, dtype=np.int64)
+    for i in _progress(range(n), n, label, show):
+        try:
+            code, row = one(i)
+        except ValueError:
+            code, row = Status.INVALID_INPUT, None
+        status[i] = int(code)
+        if code == Status.OK:
+            data[i] = row
+    return data, status
+
+
+def stance_rows(params: SlipParams, arr: np.ndarray, names, show, rtol: float, atol: float):
+    def one(i):
+        r = simulate_stance(params, arr[i], rtol=rtol, atol=atol)
+        return r.status, _stance_row(r)
+
+    return _rows(arr.shape[0], names, "exact stance", show, one)
+
+
+def apex_rows(params: SlipParams, cols, names, show, rtol: float, atol: float):
+    h, v, th = cols
+
+    def one(i):
+        r = simulate_step(params, h[i], v[i], th[i], rtol=rtol, atol=atol)
+        return r.status, _apex_row(r)
+
+    return _rows(h.shape[0], names, "exact apex return", show, one)
+
+
+def trajectory(params: SlipParams, td, rtol: float, atol: float):
+    r = simulate_stance(params, td, dense=True, rtol=rtol, atol=atol)
+    states = r.states.T if r.states is not None else np.empty((0, 4))
+    return (r.t if r.t is not None else np.empty(0)), states, r.status
+
+
+__all__ = ["stance", "apex_return", "stance_rows", "apex_rows", "trajectory", "MESSAGES"]

@@ -1,0 +1,197 @@
+"""The maps the runtime knows: the generated index plus ``"exact"``, and option resolution.
+
+Everything here is read from ``slipmaps.generated.maps_index`` (written by ``slipmaps generate``
+from the declarations in ``derive/maps/``); nothing restates a map, a parameter list or an output
+layout. ``"exact"`` is the numerical ground truth (``solve_ivp``), a map like the others.
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+from dataclasses import dataclass
+from functools import cache
+from types import ModuleType
+
+from slipmaps.generated import maps_index
+
+from .params import SlipParams
+
+__all__ = ["EXACT", "MapInfo", "Option", "get", "maps", "names"]
+
+EXACT = "exact"
+
+
+@dataclass(frozen=True)
+class Option:
+    """One option of a map (see ``docs/maps.md``): a choice, an integer or a float."""
+
+    name: str
+    kind: str  # "choice", "int" or "float"
+    default: object
+    doc: str
+    choices: tuple[str, ...] = ()
+    low: float | None = None
+    high: float | None = None
+
+    def encode(self, map_name: str, value: object) -> float:
+        """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values."""
+        where = f"map {map_name!r} option {self.name!r}"
+        if self.kind == "choice":
+            if value not in self.choices:
+                raise ValueError(
+                    f"{where} must be one of {', '.join(map(repr, self.choices))}, got {value!r}"
+                )
+            return float(self.choices.index(value))
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError(f"{where} must be a number, got {value!r}")
+        x = float(value)
+        if not math.isfinite(x):
+            raise ValueError(f"{where} must be finite, got {value!r}")
+        if self.kind == "int" and x != math.floor(x):
+            raise ValueError(f"{where} must be a whole number, got {value!r}")
+        if (self.low is not None and x < self.low) or (self.high is not None and x > self.high):
+            raise ValueError(f"{where} must lie in [{self.low:g}, {self.high:g}], got {value!r}")
+        return x
+
+    def as_dict(self) -> dict:
+        return {
+            "name": self.name,
+            "kind": self.kind,
+            "default": self.default,
+            "doc": self.doc,
+            "choices": list(self.choices),
+            "low": self.low,
+            "high": self.high,
+        }
+
+
+@dataclass(frozen=True)
+class MapInfo:
+    """One row of the index: what ``slipmaps maps`` lists."""
+
+    name: str
+    title: str
+    section: str
+    equations: tuple[str, ...]
+    requires: tuple[str, ...]
+    params: tuple[str, ...]
+    options: tuple[Option, ...]
+    summary: str = ""
+    module: str | None = None
+    kernels: dict | None = None
+    extras: tuple[str, ...] = ()
+
+    @property
+    def generated(self) -> bool:
+        return self.module is not None
+
+    def option(self, name: str) -> Option:
+        for o in self.options:
+            if o.name == name:
+                return o
+        valid = ", ".join(o.name for o in self.options) or "none"
+        raise ValueError(f"map {self.name!r} has no option {name!r} (its options: {valid})")
+
+    def resolve(self, options: dict) -> dict[str, object]:
+        """User options (validated, unknown names rejected) merged over the defaults."""
+        for key in options:
+            self.option(key)
+        return {o.name: options.get(o.name, o.default) for o in self.options}
+
+    def encoded(self, options: dict) -> tuple[float, ...]:
+        """The option values as kernel arguments, in the kernel's order."""
+        values = self.resolve(options)
+        return tuple(o.encode(self.name, values[o.name]) for o in self.options)
+
+    def param_values(self, params: SlipParams) -> tuple[float, ...]:
+        """The map's parameters from ``params``, by name; ValueError when a requirement fails."""
+        if not isinstance(params, SlipParams):
+            raise TypeError(f"params must be a SlipParams, got {type(params).__name__}: {params!r}")
+        if "constant_stiffness" in self.requires and not params.constant_stiffness:
+            others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
+            raise ValueError(
+                f"map {self.name!r} needs a constant leg stiffness (k_c == k_d), got k_c={params.k_c!r}, "
+                f"k_d={params.k_d!r}; maps that accept k_c != k_d: {', '.join(others)}"
+            )
+        return tuple(params.k_c if p == "k" else getattr(params, p) for p in self.params)
+
+    def kernel_module(self) -> ModuleType:
+        if self.module is None:
+            raise ValueError(f"map {self.name!r} has no generated kernels")
+        return importlib.import_module(f"slipmaps.generated.{self.module}")
+
+    def as_dict(self) -> dict:
+        return {
+            "name": self.name,
+            "title": self.title,
+            "section": self.section,
+            "equations": [int(e) if e.isdigit() else e for e in self.equations],
+            "requires": list(self.requires),
+            "params": list(self.params),
+            "options": [o.as_dict() for o in self.options],
+            "summary": self.summary,
+            "extras": list(self.extras),
+        }
+
+
+_EXACT = MapInfo(
+    name=EXACT,
+    title="Exact stance by numerical integration (solve_ivp DOP853)",
+    section="2.2",
+    equations=("1", "2", "3", "27"),
+    requires=(),
+    params=("m", "l0", "k_c", "k_d", "g_s"),
+    options=(
+        Option("rtol", "float", 1e-11, "relative tolerance of the DOP853 integration", low=1e-14, high=1e-3),
+        Option("atol", "float", 1e-12, "absolute tolerance of the DOP853 integration", low=1e-16, high=1e-3),
+    ),
+    summary="the polar stance equations of motion (2)-(3) integrated with events for the bottom "
+    "(k_c -> k_d), liftoff and failures: the ground truth",
+)
+
+
+def _option(row: dict) -> Option:
+    return Option(
+        name=row["name"],
+        kind=row["kind"],
+        default=row["default"],
+        doc=row["doc"],
+        choices=tuple(c["value"] for c in row["choices"]),
+        low=row["low"],
+        high=row["high"],
+    )
+
+
+@cache
+def maps() -> tuple[MapInfo, ...]:
+    """Every map: the generated ones in report order, then ``"exact"``."""
+    rows = tuple(
+        MapInfo(
+            name=r["name"],
+            title=r["title"],
+            section=r["section"],
+            equations=tuple(r["equations"]),
+            requires=tuple(r["requires"]),
+            params=tuple(r["params"]),
+            options=tuple(_option(o) for o in r["options"]),
+            summary=r["summary"],
+            module=r["module"],
+            kernels=dict(r["kernels"]),
+            extras=tuple(e["name"] for e in r["extras"]),
+        )
+        for r in maps_index.MAPS
+    )
+    return rows + (_EXACT,)
+
+
+def names() -> tuple[str, ...]:
+    return tuple(m.name for m in maps())
+
+
+def get(name: str) -> MapInfo:
+    """The map called ``name``; ValueError listing the valid names."""
+    for m in maps():
+        if m.name == name:
+            return m
+    raise ValueError(f"unknown map {name!r}; the maps are: {', '.join(names())}")

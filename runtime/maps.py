@@ -1,0 +1,182 @@
+"""The public map API, generic over every map of the index (``slipmaps.maps()``) and ``"exact"``.
+
+- :func:`stance`: polar touchdown state ``(q_r, q_rd, q_th, q_thd)`` -> bottom and liftoff states,
+  ``t_bottom``, ``t_stance`` (times from touchdown) and the map's extras.
+- :func:`apex_return`: apex ``(height [m], speed [m/s])`` and touchdown leg angle [rad] -> the next
+  apex (``apex_height``, ``apex_speed``), flight and stance times, liftoff state; the flights are
+  exact (ballistic, ``g_f``), only the stance differs between maps.
+- :func:`stance_batch`, :func:`apex_return_batch`: the same over arrays, in parallel for the
+  generated maps; every row gets its own status, and a bad row (NaN, out of domain) gets
+  ``INVALID_INPUT`` without failing the others. Apex-return inputs broadcast against each other.
+- :func:`trajectory`: the polar state along the stance.
+
+Options are keywords (``iterations=20``, ``reading="mean"``; ``slipmaps maps`` lists them). A scalar
+call raises ValueError for an invalid argument (naming it); a state outside the map's domain is a
+result with a status, never an exception. Conventions (README): SI units, leg angle from the
+vertical, counterclockwise positive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from slipmaps.generated.status import MESSAGES, Status
+
+from . import exact_map
+from .index import MapInfo, get, maps
+from .params import SlipParams
+from .results import BatchResult, Result, columns
+from .validate import L0_SLACK, float_array, leg_angle, non_negative, polar_state
+
+__all__ = ["maps", "stance", "stance_batch", "apex_return", "apex_return_batch", "trajectory"]
+
+
+@dataclass(frozen=True)
+class _Call:
+    """A map, its parameter values and its options, validated once per call."""
+
+    info: MapInfo
+    params: tuple[float, ...]
+    options: dict  # the resolved options, by name
+    encoded: tuple[float, ...]  # the kernel arguments of the options
+
+    @classmethod
+    def of(cls, name: str, params: SlipParams, options: dict) -> _Call:
+        info = get(name)
+        prm = info.param_values(params)
+        encoded = info.encoded(options)  # ValueError naming the valid values, for every map
+        return cls(info, prm, info.resolve(options), encoded)
+
+    def kernel(self, role: str, batch: bool = False):
+        name = self.info.kernels[role]
+        return getattr(self.info.kernel_module(), f"{name}_batch" if batch else name)
+
+    def result(self, kind: str, res, inputs: dict) -> Result:
+        status = Status(int(res[-1]))
+        names = columns(kind, self.info.extras)
+        values = dict(zip(names, map(float, res[:-1]), strict=True))
+        return Result(self.info.name, kind, status, MESSAGES[int(status)], values, inputs)
+
+
+def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
+    """One stance of map ``name`` from the polar touchdown state ``touchdown``."""
+    call = _Call.of(name, params, options)
+    td = polar_state(params, touchdown)
+    inputs = {"touchdown": td, "options": call.options}
+    if not call.info.generated:
+        return exact_map.stance(params, td, inputs, **call.options)
+    res = call.kernel("stance")(*td, *call.params, params.q_r_lo, *call.encoded)
+    return call.result("stance", res, inputs)
+
+
+def apex_return(name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, **options) -> Result:
+    """One step of map ``name``: apex -> touchdown (leg at ``touchdown_angle``) -> stance -> next apex."""
+    call = _Call.of(name, params, options)
+    h = non_negative("apex_height", apex_height)
+    v = non_negative("apex_speed", apex_speed)
+    th = leg_angle("touchdown_angle", touchdown_angle)
+    inputs = {"apex_height": h, "apex_speed": v, "touchdown_angle": th, "options": call.options}
+    if not call.info.generated:
+        return exact_map.apex_return(params, h, v, th, inputs, **call.options)
+    res = call.kernel("apex_return")(
+        h, v, th, *call.params, params.g_f, params.q_r_td, params.q_r_lo, *call.encoded
+    )
+    return call.result("apex_return", res, inputs)
+
+
+def _rows(params: SlipParams, touchdowns) -> np.ndarray:
+    """(n, 4) float64 touchdown states; leg lengths within round-off above l0 are l0, as in
+    :func:`stance` (the only copy made: when such a row exists)."""
+    arr = np.asarray(touchdowns, dtype=float)
+    if arr.ndim != 2 or arr.shape[1] != 4:
+        raise ValueError(f"touchdowns must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
+    above = arr[:, 0] > params.l0
+    if above.any():
+        snap = above & (arr[:, 0] <= params.l0 * (1.0 + L0_SLACK))
+        if snap.any():
+            arr = arr.copy()
+            arr[snap, 0] = params.l0
+    return arr
+
+
+def stance_batch(
+    name: str, params: SlipParams, touchdowns, *, progress: bool | None = None, **options
+) -> BatchResult:
+    """Map ``name`` over touchdown states of shape (n, 4); a status per row."""
+    call = _Call.of(name, params, options)
+    arr = _rows(params, touchdowns)
+    names = columns("stance", call.info.extras)
+    n = arr.shape[0]
+    if not call.info.generated:
+        data, status = exact_map.stance_rows(params, arr, names, progress, **call.options)
+        return BatchResult(call.info.name, "stance", names, data, status, (n,))
+    out = np.empty((n, len(names)))
+    status = np.empty(n, dtype=np.int64)
+    cols = (arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3])
+    call.kernel("stance", batch=True)(*cols, *call.params, params.q_r_lo, *call.encoded, out, status)
+    return BatchResult(call.info.name, "stance", names, out, status, (n,))
+
+
+def apex_return_batch(
+    name: str,
+    params: SlipParams,
+    apex_height,
+    apex_speed,
+    touchdown_angle,
+    *,
+    progress: bool | None = None,
+    **options,
+) -> BatchResult:
+    """Map ``name`` over apexes and touchdown angles (arrays broadcast); a status per row.
+
+    The result's columns have the broadcast shape of the three inputs.
+    """
+    call = _Call.of(name, params, options)
+    parts = np.broadcast_arrays(
+        *(np.asarray(x, dtype=float) for x in (apex_height, apex_speed, touchdown_angle))
+    )
+    shape = parts[0].shape
+    n = int(np.prod(shape))
+    flat = tuple(p.reshape(n) for p in parts)  # views where possible (stride 0 for a broadcast scalar)
+    for p in flat:
+        p.flags.writeable = False  # the kernels only read; numpy warns on writing through a broadcast
+    names = columns("apex_return", call.info.extras)
+    if not call.info.generated:
+        data, status = exact_map.apex_rows(params, flat, names, progress, **call.options)
+        return BatchResult(call.info.name, "apex_return", names, data, status, shape)
+    out = np.empty((n, len(names)))
+    status = np.empty(n, dtype=np.int64)
+    extra = (params.g_f, params.q_r_td, params.q_r_lo)
+    call.kernel("apex_return", batch=True)(*flat, *call.params, *extra, *call.encoded, out, status)
+    return BatchResult(call.info.name, "apex_return", names, out, status, shape)
+
+
+def trajectory(
+    name: str, params: SlipParams, touchdown, t=None, **options
+) -> tuple[np.ndarray, np.ndarray, Status]:
+    """The stance of map ``name`` from ``touchdown``: ``(t, states, status)``.
+
+    ``states`` has shape (len(t), 4): q_r, q_rd, q_th, q_thd at the times ``t`` after touchdown.
+    For the approximate maps ``t`` defaults to 200 points from touchdown to the map's liftoff; for
+    ``"exact"`` the times are the integrator's (``t`` must be None).
+    """
+    call = _Call.of(name, params, options)
+    td = polar_state(params, touchdown)
+    if not call.info.generated:
+        if t is not None:
+            raise ValueError("the exact trajectory is sampled at the integrator's times: call it with t=None")
+        return exact_map.trajectory(params, td, **call.options)
+    if call.info.kernels["state_at"] is None:
+        raise ValueError(f"map {name!r} has no trajectory (only event states)")
+    if t is None:
+        res = stance(name, params, td, **options)
+        if not res.ok:
+            return np.empty(0), np.empty((0, 4)), res.status
+        t = np.linspace(0.0, res.t_stance, 200)
+    times = float_array("t", np.atleast_1d(t))
+    out = np.empty((times.shape[0], 4))
+    status = np.empty(times.shape[0], dtype=np.int64)
+    call.kernel("state_at", batch=True)(times, *td, *call.params, params.q_r_lo, *call.encoded, out, status)
+    bad = status[status != int(Status.OK)]
+    return times, out, Status(int(bad[0])) if bad.size else Status.OK

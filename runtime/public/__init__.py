@@ -1,0 +1,55 @@
+"""slipmaps: approximate stance maps of the Spring-Loaded Inverted Pendulum (SLIP).
+
+Derived in SymPy (``slipmaps.derive``), generated as numba kernels (``slipmaps.generated``),
+checked against numerical integration (``slipmaps.runtime``). The public API, generic over maps::
+
+    import slipmaps
+
+    params = slipmaps.SlipParams(m=80.0, l0=1.0, k=20_000.0)
+    [m.name for m in slipmaps.maps()]                      # "geyer", ..., "exact"
+    res = slipmaps.apex_return("geyer", params, 1.0, 5.0, 0.35)
+    res.apex_height, res.apex_speed, res.status
+    batch = slipmaps.apex_return_batch("geyer", params, 1.0, speeds, angles)   # arrays broadcast
+    batch["apex_height"], batch["status"]
+
+Conventions: SI units; leg angle from the vertical, counterclockwise positive; polar state
+``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
+top-level package ``slipmaps`` (``pyproject.toml``, ``package-dir``).
+"""
+
+from __future__ import annotations
+
+import importlib
+
+#: Public name -> the module that defines it. Loaded on first use (PEP 562), so that importing
+#: ``slipmaps.derive`` (``slipmaps generate``) never needs the generated kernels.
+_EXPORTS = {
+    "SlipParams": "slipmaps.runtime.params",
+    "HUMAN_RUNNER": "slipmaps.runtime.params",
+    "ROBOT_HOPPER": "slipmaps.runtime.params",
+    "maps": "slipmaps.runtime.index",
+    "MapInfo": "slipmaps.runtime.index",
+    "stance": "slipmaps.runtime.maps",
+    "stance_batch": "slipmaps.runtime.maps",
+    "apex_return": "slipmaps.runtime.maps",
+    "apex_return_batch": "slipmaps.runtime.maps",
+    "trajectory": "slipmaps.runtime.maps",
+    "Result": "slipmaps.runtime.results",
+    "BatchResult": "slipmaps.runtime.results",
+    "Status": "slipmaps.generated.status",
+    "MESSAGES": "slipmaps.generated.status",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str):
+    if name in _EXPORTS:
+        value = getattr(importlib.import_module(_EXPORTS[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'slipmaps' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_EXPORTS))

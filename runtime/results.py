@@ -1,0 +1,149 @@
+"""One result family for every map, exact or approximate: values by name, a status per row.
+
+The names are the generated index's (``slipmaps.generated.maps_index``): a stance result has
+``t_bottom``, ``t_stance``, ``bottom_q_r`` ... ``liftoff_q_thd`` (groups ``bottom`` and
+``liftoff`` give the four together) plus the map's extras; an apex-return result has
+``apex_height``, ``apex_speed`` (the NEXT apex), ``t_descent``, ``t_stance``, ``t_ascent`` and
+the ``liftoff`` group. Values are NaN wherever the status is not OK.
+
+- :class:`Result`: one call. ``res["apex_height"]``, ``res.apex_height``, ``res.liftoff`` (a tuple),
+  ``res.status`` (:class:`~slipmaps.generated.status.Status`), ``res.message``, ``res.ok``.
+- :class:`BatchResult`: many rows. ``res["apex_height"]`` is an array (a view, no copy) in the shape
+  of the inputs, ``res["liftoff"]`` has a trailing axis of 4, ``res["status"]`` the int64 codes,
+  ``res.ok`` a mask, ``res.counts()`` the rows per status, ``res.message(i)`` one row's message.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+from slipmaps.generated import maps_index
+from slipmaps.generated.status import MESSAGES, Status
+
+__all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "columns"]
+
+#: Output names of every stance map and of every apex-return map (before a map's extras).
+STANCE = tuple(r["name"] for r in maps_index.STANCE_OUTPUTS)
+APEX_RETURN = tuple(r["name"] for r in maps_index.APEX_OUTPUTS)
+_GROUPS: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in maps_index.GROUPS.items()}
+_UNITS = {r["name"]: r["unit"] for r in maps_index.STANCE_OUTPUTS + maps_index.APEX_OUTPUTS}
+
+
+def columns(kind: str, extras: tuple[str, ...] = ()) -> tuple[str, ...]:
+    """The output names of a ``"stance"`` or ``"apex_return"`` result with a map's extras."""
+    return {"stance": STANCE, "apex_return": APEX_RETURN}[kind] + tuple(extras)
+
+
+def unit(name: str) -> str:
+    """The unit of an output (empty for dimensionless extras)."""
+    return _UNITS.get(name, "")
+
+
+@dataclass(frozen=True)
+class Result:
+    """The outcome of one map call (values NaN unless ``status`` is OK)."""
+
+    map: str
+    kind: str  # "stance" or "apex_return"
+    status: Status
+    message: str
+    values: Mapping[str, float]
+    inputs: Mapping[str, object] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return self.status == Status.OK
+
+    def __getitem__(self, name: str):
+        if name in self.values:
+            return self.values[name]
+        if name in _GROUPS and all(n in self.values for n in _GROUPS[name]):
+            return tuple(self.values[n] for n in _GROUPS[name])
+        raise KeyError(
+            f"{self.kind} result of map {self.map!r} has no {name!r}; it has {', '.join(self.keys())}"
+        )
+
+    def __getattr__(self, name: str):
+        if name.startswith("_") or name in ("values", "map", "kind", "status", "message", "inputs"):
+            raise AttributeError(name)
+        try:
+            return self[name]
+        except KeyError as exc:
+            raise AttributeError(str(exc)) from None
+
+    def keys(self) -> tuple[str, ...]:
+        groups = tuple(g for g, ns in _GROUPS.items() if all(n in self.values for n in ns))
+        return tuple(self.values) + groups
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self.keys()))
+
+    def as_dict(self) -> dict:
+        """JSON-ready: status name, message, values (None for NaN), inputs."""
+        return {
+            "map": self.map,
+            "status": self.status.name,
+            "message": self.message,
+            "values": {k: (v if math.isfinite(v) else None) for k, v in self.values.items()},
+            "inputs": dict(self.inputs),
+        }
+
+
+class BatchResult(Mapping):
+    """The outcome of a batch call: one column per output, one status per row."""
+
+    def __init__(
+        self, map_name: str, kind: str, names: tuple[str, ...], data: np.ndarray, status: np.ndarray, shape
+    ):
+        self.map = map_name
+        self.kind = kind
+        self.names = tuple(names)
+        self.shape = tuple(shape)
+        self._index = {n: j for j, n in enumerate(self.names)}
+        self._data = data  # (n, len(names)), NaN rows where status != 0
+        self._status = status
+
+    @property
+    def status(self) -> np.ndarray:
+        """int64 status codes (:class:`~slipmaps.generated.status.Status`), in the input shape."""
+        return self._status.reshape(self.shape)
+
+    @property
+    def ok(self) -> np.ndarray:
+        return self.status == int(Status.OK)
+
+    def __len__(self) -> int:
+        return len(self.names) + 1
+
+    def __iter__(self) -> Iterator[str]:
+        yield from self.names
+        yield "status"
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name == "status":
+            return self.status
+        if name in self._index:
+            return self._data[:, self._index[name]].reshape(self.shape)
+        if name in _GROUPS and all(n in self._index for n in _GROUPS[name]):
+            j = self._index[_GROUPS[name][0]]
+            return self._data[:, j : j + len(_GROUPS[name])].reshape(*self.shape, len(_GROUPS[name]))
+        raise KeyError(
+            f"{self.kind} batch of map {self.map!r} has no column {name!r}; it has {', '.join(self)}"
+        )
+
+    def message(self, i) -> str:
+        """The message of row ``i`` (an index into the input shape)."""
+        return MESSAGES[int(self.status[i])]
+
+    def counts(self) -> dict[str, int]:
+        """Rows per status name, most common first."""
+        return {Status(int(c)).name: n for c, n in Counter(self._status.tolist()).most_common()}
+
+    def __repr__(self) -> str:
+        return (
+            f"BatchResult(map={self.map!r}, kind={self.kind!r}, shape={self.shape}, status={self.counts()})"
+        )

@@ -1,0 +1,171 @@
+"""The public API of the top-level package, generic over maps: SlipParams, maps(), stance,
+stance_batch, apex_return, apex_return_batch, trajectory; one result family for exact and
+approximate maps; errors that name the bad value."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import slipmaps
+from slipmaps import SlipParams, Status
+from slipmaps.generated import maps_index
+
+P = slipmaps.HUMAN_RUNNER
+TD = (1.0, -1.5, 0.35, -4.5)
+GENERATED = [row["name"] for row in maps_index.MAPS]
+
+
+def test_slip_params_k_sets_both_stiffnesses():
+    p = SlipParams(m=70.0, l0=0.9, k=18_000.0)
+    assert (p.k_c, p.k_d, p.k) == (18_000.0, 18_000.0, 18_000.0)
+    assert (p.q_r_td, p.q_r_lo) == (0.9, 0.9)
+    q = SlipParams(m=70.0, l0=0.9, k_c=18_000.0, k_d=20_000.0)
+    assert not q.constant_stiffness
+    with pytest.raises(ValueError, match="k_c=18000.0"):
+        q.k  # noqa: B018
+    assert p.with_(k=10.0).k_d == 10.0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "needle"),
+    [
+        ({"k": 1.0, "k_c": 2.0}, "not both"),
+        ({"m": -1.0}, "SlipParams.m"),
+        ({"l0": math.nan}, "SlipParams.l0"),
+        ({"q_r_lo": 1.5}, "rest length"),
+        ({"g_s": "9.81"}, "real number"),
+    ],
+)
+def test_slip_params_reject_bad_values(kwargs, needle):
+    with pytest.raises(ValueError, match=needle):
+        SlipParams(**kwargs)
+
+
+def test_maps_index_lists_generated_maps_then_exact():
+    rows = slipmaps.maps()
+    assert [m.name for m in rows] == [*GENERATED, "exact"]
+    for m in rows:
+        assert m.title and m.section and m.equations
+    assert "constant_stiffness" in next(m for m in rows if m.name == "geyer").requires
+
+
+def test_importing_the_derivations_does_not_need_the_runtime():
+    """`slipmaps generate` must work on a stale or half-generated tree: importing slipmaps.derive
+    loads nothing from slipmaps.runtime or the generated kernels."""
+    code = "import sys, slipmaps.derive.maps; print([m for m in sys.modules if m.startswith('slipmaps.')])"
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True).stdout
+    assert "runtime" not in out and "slipmaps.generated" not in out
+
+
+@pytest.mark.parametrize("name", [*GENERATED, "exact"])
+def test_one_result_family_for_every_map(name):
+    st = slipmaps.stance(name, P, TD)
+    assert st.ok, st.message
+    assert set(slipmaps.stance("geyer", P, TD).values) <= set(st.values)
+    assert len(st.liftoff) == 4 and st.liftoff[0] == pytest.approx(P.q_r_lo, rel=1e-12)
+    assert st["t_stance"] == st.t_stance > st.t_bottom > 0
+    ap = slipmaps.apex_return(name, P, 1.0, 5.0, 0.35)
+    assert ap.ok and {"apex_height", "apex_speed", "t_descent", "t_stance", "t_ascent"} <= set(ap.values)
+    assert ap.apex_height == pytest.approx(0.9177, abs=0.01)  # exact: 0.917730 m
+
+
+def test_stance_batch_rows_equal_scalar_calls_and_bad_rows_get_their_own_status():
+    rows = np.array([TD, (1.0, -2.0, 0.30, -5.0), (math.nan, -2.0, 0.3, -5.0), (1.0, -2.0, 2.0, -5.0)])
+    res = slipmaps.stance_batch("gravity-type2", P, rows)
+    assert res.shape == (4,) and list(res["status"][2:]) == [Status.INVALID_INPUT] * 2
+    for i in range(2):
+        one = slipmaps.stance("gravity-type2", P, rows[i])
+        for key, value in one.values.items():
+            assert res[key][i] == value, key
+    assert res["liftoff"].shape == (4, 4) and np.isnan(res["liftoff"][2]).all()
+    assert res.counts() == {"OK": 2, "INVALID_INPUT": 2}
+
+
+def test_apex_return_batch_broadcasts_and_keeps_the_shape():
+    speeds = np.array([3.0, 4.0, 5.0])
+    angles = np.array([[0.30], [0.35]])
+    res = slipmaps.apex_return_batch("geyer", P, 1.0, speeds, angles)
+    assert res.shape == (2, 3) and res["apex_height"].shape == (2, 3) and res["liftoff"].shape == (2, 3, 4)
+    for i, a in enumerate(angles[:, 0]):
+        for j, v in enumerate(speeds):
+            one = slipmaps.apex_return("geyer", P, 1.0, v, a)
+            assert res["apex_speed"][i, j] == one.apex_speed and res["status"][i, j] == one.status
+
+
+def test_exact_batch_equals_scalar_and_marks_invalid_rows():
+    rows = np.array([TD, (1.0, 1.0, 0.3, -5.0), (2.0, -1.0, 0.3, -5.0)])
+    res = slipmaps.stance_batch("exact", P, rows)
+    assert list(res["status"]) == [Status.OK, Status.TOUCHDOWN_NOT_COMPRESSING, Status.INVALID_INPUT]
+    assert res["t_stance"][0] == slipmaps.stance("exact", P, TD).t_stance
+
+
+def test_options_are_validated_with_the_valid_values_named():
+    with pytest.raises(ValueError, match="its options: reading, samples"):
+        slipmaps.stance("gravity-type2", P, TD, sample=3)
+    with pytest.raises(ValueError, match="'mean', 'report'"):
+        slipmaps.stance("gravity-type2", P, TD, reading="literal")
+    with pytest.raises(ValueError, match=r"\[2, 3\]"):
+        slipmaps.stance("gravity-type2", P, TD, samples=4)
+    with pytest.raises(ValueError, match="unknown map 'geyr'"):
+        slipmaps.stance("geyr", P, TD)
+    one = slipmaps.stance("gravity-type2", P, TD, reading="report", iterations=1, tol=0.0)
+    assert one.ok and one.passes == 1.0 and one.inputs["options"]["reading"] == "report"
+
+
+def test_constant_stiffness_maps_name_the_alternatives():
+    vs = SlipParams(k_c=20_000.0, k_d=25_000.0)
+    with pytest.raises(ValueError, match="constant leg stiffness.*accept k_c != k_d: exact"):
+        slipmaps.apex_return("geyer", vs, 1.0, 5.0, 0.35)
+    assert slipmaps.apex_return("exact", vs, 1.0, 5.0, 0.35).ok
+
+
+@pytest.mark.parametrize(
+    ("call", "needle"),
+    [
+        (lambda: slipmaps.stance("geyer", P, (1.2, -1.0, 0.3, -4.0)), "q_r"),
+        (lambda: slipmaps.stance("geyer", P, (1.0, -1.0, 0.3)), "4 numbers"),
+        (lambda: slipmaps.apex_return("geyer", P, -1.0, 5.0, 0.3), "apex_height"),
+        (lambda: slipmaps.apex_return("geyer", P, 1.0, math.inf, 0.3), "apex_speed"),
+        (lambda: slipmaps.apex_return("geyer", P, 1.0, 5.0, 1.6), "touchdown_angle"),
+        (lambda: slipmaps.stance_batch("geyer", P, np.zeros((3, 3))), "shape"),
+        (lambda: slipmaps.stance("geyer", "not params", TD), "SlipParams"),
+    ],
+)
+def test_scalar_calls_name_the_bad_argument(call, needle):
+    with pytest.raises((ValueError, TypeError), match=needle):
+        call()
+
+
+@pytest.mark.parametrize("name", GENERATED)
+def test_trajectory_ends_at_the_liftoff_state(name):
+    res = slipmaps.stance(name, P, TD)
+    t, states, status = slipmaps.trajectory(name, P, TD)
+    assert status == Status.OK and t[0] == 0.0 and t[-1] == res.t_stance
+    # the liftoff leg length and angle are the trajectory's at t_stance (measured: 1e-15);
+    # q_rd and q_thd at liftoff may be corrected separately (the gravity maps' energy-based q_rd)
+    assert states[-1, 0] == pytest.approx(res.liftoff_q_r, abs=1e-12)
+    assert states[-1, 2] == pytest.approx(res.liftoff_q_th, abs=1e-12)
+    assert states[0] == pytest.approx(np.array(TD), abs=1e-9)
+
+
+def test_exact_trajectory_uses_the_integrator_times():
+    t, states, status = slipmaps.trajectory("exact", P, TD)
+    assert status == Status.OK and states.shape == (t.size, 4) and t.size > 20
+    with pytest.raises(ValueError, match="t=None"):
+        slipmaps.trajectory("exact", P, TD, t=[0.0, 0.1])
+
+
+def test_readme_python_example_runs():
+    """The README's Python API example, executed as written."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    block = text.split("## Python API", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    namespace: dict = {}
+    exec(compile(block, "README.md", "exec"), namespace)  # noqa: S102 - the project's own README
+    assert namespace["step"].ok and namespace["st"].ok
+    assert namespace["res"]["apex_height"].shape == (300, 400)

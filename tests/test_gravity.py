@@ -1,0 +1,207 @@
+"""The gravity-correction family (report section 4, eqs 46-77, and the type-5 design of
+docs/type5.md): the generated kernels against independent reconstructions from Geyer et al.'s map,
+and the type-5 derivation's identities."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import slipmaps
+import sympy as sp
+from slipmaps.derive import symbols as S
+from slipmaps.derive.maps import geyer as d_geyer
+from slipmaps.derive.maps import gravity as d_gravity
+from slipmaps.derive.maps import gravity_type5 as t5
+
+P = slipmaps.SlipParams(m=80.0, l0=1.0, k=7848.0)  # k l0/(m g) = 10, the Yu protocol's leg
+#: Nonsymmetric touchdowns: slow with a flat leg, moderate, fast with a steep leg.
+TOUCHDOWNS = [(1.0, -1.2, 0.45, -2.0), (1.0, -1.5, 0.40, -3.0), (1.0, -2.0, 0.30, -5.0)]
+TYPES = [f"gravity-type{i}" for i in range(5)]
+
+
+def _energy(state, p=P) -> float:
+    q_r, q_rd, q_th, q_thd = state
+    return (
+        0.5 * p.m * (q_rd**2 + q_r**2 * q_thd**2)
+        + 0.5 * p.k * (p.l0 - q_r) ** 2
+        + p.m * p.g_s * q_r * math.cos(q_th)
+    )
+
+
+def _with_momentum(td, p_traj):
+    """The touchdown state ``td`` with the angular momentum ``p_traj`` (an effective rate)."""
+    q_r, q_rd, q_th, _ = td
+    return (q_r, q_rd, q_th, p_traj / (P.m * q_r**2))
+
+
+def _geyer_with_momentum(td, p_traj):
+    """Geyer et al.'s map from ``td`` with the angular momentum ``p_traj``."""
+    return slipmaps.stance("geyer", P, _with_momentum(td, p_traj))
+
+
+def _impulse(kind: int, td, g) -> float:
+    """P_c of types 0-2 (2 samples) from the Geyer result ``g`` started at ``td``: (49), (52), (62)."""
+    m, l0, gs = P.m, P.l0, P.g_s
+    length = {0: l0, 1: (l0 + g.bottom_q_r) / 2}.get(kind)
+    if length is None:  # type 2: mean of q_r over the stance, by quadrature of Geyer's trajectory
+        t, states, _ = slipmaps.trajectory("geyer", P, td, np.linspace(0.0, g.t_stance, 4001))
+        length = np.trapezoid(states[:, 0], t) / g.t_stance
+    return g.t_stance * m * gs * length * (math.sin(td[2]) + math.sin(g.liftoff_q_th)) / 2
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2])
+@pytest.mark.parametrize("td", TOUCHDOWNS)
+def test_eq50_report_reading_one_pass_is_geyer_with_the_corrected_momentum(kind, td):
+    """reading=report, one pass: P_c from Geyer's map, then Geyer's map with p_th + P_c (eq 50)."""
+    p_td = P.m * td[0] ** 2 * td[3]
+    pc = _impulse(kind, td, slipmaps.stance("geyer", P, td))
+    expect = _geyer_with_momentum(td, p_td + pc)
+    got = slipmaps.stance(f"gravity-type{kind}", P, td, reading="report", iterations=1, tol=0.0)
+    assert got.ok and expect.ok
+    # type 2's reconstruction averages q_r by the trapezoid rule (measured: 3e-9 relative on P_c)
+    rel = 1e-12 if kind < 2 else 1e-7
+    assert got.P_c == pytest.approx(pc, rel=rel)
+    for key in (
+        "t_stance",
+        "t_bottom",
+        "bottom_q_r",
+        "bottom_q_th",
+        "liftoff_q_rd",
+        "liftoff_q_th",
+        "liftoff_q_thd",
+    ):
+        assert got[key] == pytest.approx(expect[key], rel=rel, abs=1e-12), key
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2])
+@pytest.mark.parametrize("td", TOUCHDOWNS)
+def test_eq50_mean_reading_fixed_point_is_self_consistent(kind, td):
+    """reading=mean at its fixed point: the trajectory runs with p_td + P_c/2 (Geyer's map with that
+    momentum gives its angles and times), P_c is the impulse formula on that trajectory, the liftoff
+    rate is (p_td + P_c)/(m q_r_lo^2) and the liftoff state has the touchdown's exact energy (27)."""
+    p_td = P.m * td[0] ** 2 * td[3]
+    got = slipmaps.stance(f"gravity-type{kind}", P, td, iterations=200, tol=1e-13)
+    assert got.ok and got.passes < 200
+    traj = _geyer_with_momentum(td, p_td + got.P_c / 2)
+    pc = _impulse(kind, _with_momentum(td, p_td + got.P_c / 2), traj)
+    assert got.P_c == pytest.approx(pc, rel=1e-7 if kind == 2 else 1e-10)
+    assert got.liftoff_q_th == pytest.approx(traj.liftoff_q_th, rel=1e-12)
+    assert got.t_stance == pytest.approx(traj.t_stance, rel=1e-12)
+    assert got.liftoff_q_thd == pytest.approx((p_td + got.P_c) / (P.m * P.q_r_lo**2), rel=1e-12)
+    assert _energy(got.liftoff) == pytest.approx(_energy(td), rel=1e-12)
+    # the bottom rate uses the momentum accumulated by then (constant torque: P_c t_b / t_s)
+    p_b = p_td + got.P_c * got.t_bottom / got.t_stance
+    assert got.bottom_q_thd == pytest.approx(p_b / (P.m * got.bottom_q_r**2), rel=1e-12)
+
+
+@pytest.mark.parametrize("name", [*TYPES, "gravity-type5"])
+def test_zero_iterations_is_geyers_trajectory(name):
+    """No correction pass: P_c = 0, so the trajectory is Geyer et al.'s (only q_rd_lo may differ:
+    the mean reading takes it from the energy)."""
+    td = TOUCHDOWNS[1]
+    got = slipmaps.stance(name, P, td, iterations=0, tol=0.0)
+    g = slipmaps.stance("geyer", P, td)
+    assert got.P_c == 0.0 and got.passes == 0.0
+    for key in ("t_stance", "bottom_q_r", "liftoff_q_thd"):
+        assert got[key] == pytest.approx(g[key], rel=1e-12), key
+    if name != "gravity-type5":  # type 5's leg angle keeps the second-order term of 1/(1+rho)^2 (T5.6)
+        assert got.liftoff_q_th == pytest.approx(g.liftoff_q_th, abs=1e-12)
+
+
+def test_eq65_type3_whole_stance_at_rest_length_is_type0():
+    """The report's claim, on the generated kernels: type 3 on [t_td, t_lo] with q_r_td = q_r_lo = l0
+    is type 0 (both 2-sample, both readings)."""
+    for td in TOUCHDOWNS:
+        for reading in ("mean", "report"):
+            a = slipmaps.stance("gravity-type3", P, td, interval="stance", reading=reading)
+            b = slipmaps.stance("gravity-type0", P, td, reading=reading, iterations=100, tol=1e-12)
+            assert a.P_c == pytest.approx(b.P_c, rel=1e-12) and a.liftoff == pytest.approx(
+                b.liftoff, rel=1e-12
+            )
+
+
+def test_eq76_type4_whole_stance_is_type2():
+    for td in TOUCHDOWNS:
+        a = slipmaps.stance("gravity-type4", P, td, interval="stance")
+        b = slipmaps.stance("gravity-type2", P, td)
+        assert a.P_c == pytest.approx(b.P_c, rel=1e-12) and a.liftoff == pytest.approx(b.liftoff, rel=1e-12)
+
+
+def test_eq55_eq61_three_average_leg_lengths_agree_at_rest_length():
+    """(11), (21) and (23) describe the same stance when q_r_td = l0: type 2's three options agree."""
+    for td in TOUCHDOWNS:
+        ref = slipmaps.stance("gravity-type2", P, td, leg_length="eq11")
+        for source in ("eq21", "eq23"):
+            other = slipmaps.stance("gravity-type2", P, td, leg_length=source)
+            assert other.P_c == pytest.approx(ref.P_c, rel=1e-9), source
+
+
+def test_the_report_reading_iterated_can_reverse_the_momentum():
+    """Finding (docs/gravity.md): the report's reading iterated to its fixed point can flip the sign
+    of the angular momentum on a slow, tall hop (Yu protocol, 65 deg, h = 0.95 m, v = 2 m/s): the leg
+    sweeps backward. The mean reading keeps it."""
+    angle = math.radians(25.0)
+    report = slipmaps.apex_return(
+        "gravity-type2", P, 0.95, 2.0, angle, reading="report", iterations=300, tol=1e-12
+    )
+    mean = slipmaps.apex_return("gravity-type2", P, 0.95, 2.0, angle)
+    exact = slipmaps.apex_return("exact", P, 0.95, 2.0, angle)
+    assert exact.ok and mean.ok
+    assert report.status == slipmaps.Status.LIFTOFF_BACKWARD
+
+
+# ------------------------------------------------------------------------------------------------
+# Type 5: the identities its derivation rests on (docs/type5.md)
+# ------------------------------------------------------------------------------------------------
+def test_t5_2_gauss_rule_gives_the_impulse_of_the_interpolated_torque():
+    T = t5.T_PREV
+    c = dict(zip(t5.C, t5.torque_quadratic(), strict=True))
+    impulse = (t5.momentum(T) - t5.P_TD).subs(c)
+    gauss = T / 2 * sum(w * tau for w, tau in zip(t5.GL_W, t5.TAU, strict=True))
+    assert sp.simplify(impulse - gauss) == 0
+
+
+def test_t5_1_quadratic_passes_through_the_nodal_torques():
+    c = t5.torque_quadratic()
+    for ti, tau in zip(t5.nodes(t5.T_PREV), t5.TAU, strict=True):
+        assert sp.simplify(c[0] + c[1] * ti + c[2] * ti**2 - tau) == 0
+
+
+def test_t5_5_is_geyers_quadratic_at_r_c_0_and_g_eff_g_s():
+    lam, mu = t5.radial_quadratic()
+    g_lam, g_mu, _ = d_geyer.radial_quadratic()
+    assert sp.simplify(lam.subs(t5.R_C, 0) - g_lam) == 0
+    assert sp.simplify(mu.subs({t5.R_C: 0, t5.G_EFF: S.g_s}) - g_mu) == 0
+
+
+def test_t5_6_leg_angle_derivative_is_the_rate():
+    rate = sp.diff(t5.leg_angle(), t5.T_NOW)
+    x = t5.W_HAT * t5.T_NOW + t5.PH_TD
+    expect = t5.momentum(t5.T_NOW) * (t5.K[0] + t5.K[1] * sp.sin(x) + t5.K[2] * sp.cos(2 * x))
+    expect = expect / (S.m * S.l0**2)
+    point = {s: sp.Rational(i + 2, 7) for i, s in enumerate(sorted(rate.free_symbols, key=str))}
+    assert abs(float((rate - expect).subs(point))) < 1e-12
+    assert t5.leg_angle().subs(t5.T_NOW, 0) == S.q_th_td
+
+
+def test_t5_6_rate_factor_is_the_expansion_of_inverse_square():
+    x = sp.Symbol("x", real=True)
+    k0, k1, k2 = t5.rate_factor()
+    series = t5.inverse_square_expansion().subs(S.rho, t5.A_ + t5.B_ * sp.sin(x))
+    assert sp.simplify(sp.expand(series - (k0 + k1 * sp.sin(x) + k2 * sp.cos(2 * x)))) == 0
+
+
+def test_type5_fixed_point_conserves_energy_and_uses_the_end_momentum():
+    td = TOUCHDOWNS[0]
+    got = slipmaps.stance("gravity-type5", P, td)
+    assert got.ok and 1 < got.passes < 100
+    p_td = P.m * td[0] ** 2 * td[3]
+    assert got.liftoff_q_thd == pytest.approx((p_td + got.P_c) / (P.m * P.q_r_lo**2), rel=1e-12)
+    assert _energy(got.liftoff) == pytest.approx(_energy(td), rel=1e-12)
+
+
+def test_liftoff_speed_from_energy_is_the_extending_root():
+    radicand, root = d_gravity.liftoff_radial_speed()
+    assert root == sp.sqrt(radicand)
