@@ -98,3 +98,38 @@ APEX_RETURN = Group(
 
 #: Outputs of a map's state-at-time kernel: the polar state a time t after touchdown.
 TRAJECTORY = Group("", POLAR)
+
+#: The index row of ``"exact"``, the numerical ground truth (runtime/simulate.py; no kernels).
+EXACT = {
+    "name": "exact",
+    "title": "Exact stance by numerical integration (solve_ivp DOP853)",
+    "section": "2.2",
+    "equations": ["1", "2", "3", "27"],
+    "requires": [],
+    "params": ["m", "l0", "k_c", "k_d", "g_s"],
+    "options": [
+        {
+            "name": "rtol",
+            "kind": "float",
+            "default": 1e-11,
+            "doc": "relative tolerance of the DOP853 integration",
+            "choices": [],
+            "low": 1e-14,
+            "high": 1e-3,
+        },
+        {
+            "name": "atol",
+            "kind": "float",
+            "default": 1e-12,
+            "doc": "absolute tolerance of the DOP853 integration",
+            "choices": [],
+            "low": 1e-16,
+            "high": 1e-3,
+        },
+    ],
+    "summary": "the polar stance equations of motion (2)-(3) integrated with events for the bottom "
+    "(k_c -> k_d), liftoff and failures: the ground truth",
+    "module": None,
+    "kernels": None,
+    "extras": [],
+}

@@ -38,9 +38,8 @@ def maps_table(index: dict) -> str:
     for row in index["MAPS"]:
         req = ", ".join(row["requires"]) or "-"
         lines.append(f"| `{row['name']}` | {row['section']} | {row['title']} | {req} | {_options(row)} |")
-    lines.append(
-        "| `exact` | 2.2 | numerical integration (`solve_ivp` DOP853, rtol 1e-11): the ground truth | - | - |"
-    )
+    e = index["EXACT"]
+    lines.append(f"| `{e['name']}` | {e['section']} | {e['title']} | - | {_options(e)} |")
     return "\n".join(lines) + "\n"
 
 

@@ -93,6 +93,7 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
         "TOUCHDOWN": [a.name for a in catalog.TOUCHDOWN],
         "PARAMS": {name: arg.doc for name, arg in catalog.PARAMS.items()},
         "MAPS": [s.index_row() for s in specs],
+        "EXACT": catalog.EXACT,
     }
 
 

@@ -39,7 +39,7 @@ STATUS_ENERGY_DEFICIT = 14
 def gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol):
     """Gravity correction type 0 (leg length l0): touchdown state -> bottom and liftoff states.
 
-    Report equations: 46, 47, 48, 50, 49, 51.
+    Report equations: 46, 47, 48, 49, 50, 51.
 
     Geyer et al.'s map (3.1) run with a corrected angular momentum; see the module docstring of
     derive/maps/gravity.py and docs/gravity.md for the two readings of (50).
@@ -219,7 +219,7 @@ def gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-        # from the energy
+        # q_rd_lo from the energy
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)
@@ -262,7 +262,7 @@ def gravity_type0_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s
 def gravity_type0_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol):
     """Gravity correction type 0 (leg length l0): the polar state a time t after touchdown.
 
-    Report equations: 46, 47, 48, 50, 49, 51.
+    Report equations: 46, 47, 48, 49, 50, 51.
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -447,7 +447,7 @@ def gravity_type0_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 def gravity_type0_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol):
     """Apex-return map: exact flights, stance by Gravity correction type 0 (leg length l0).
 
-    Report equations: 46, 47, 48, 50, 49, 51.
+    Report equations: 46, 47, 48, 49, 50, 51.
 
     Arguments:
         b_y_apex: apex height of the body above the ground [m], >= 0

@@ -220,7 +220,7 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-        # from the energy
+        # q_rd_lo from the energy
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)

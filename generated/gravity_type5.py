@@ -195,7 +195,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 373
+    # Total ops: 385
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
@@ -342,32 +342,31 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     _c11 = type5_leg_angle(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
     liftoff_q_th = _c11
     # T5.7: bottom and liftoff states
-    _x43 = (1.0/m)
     _x33 = f_a - f_b + 1.0
-    _x34 = l0**2
-    _x35 = _x43
-    _x36 = (0.5)*f_c1
-    _x37 = (0.3333333333333333)*f_c2
-    _x38 = _x36*f_t_stance**2 + _x37*f_t_stance**3 + f_c0*f_t_stance
-    _x39 = q_r_lo**2
-    _x40 = (1.0/_x39)
-    _x41 = _x38 + p_td
-    _x42 = _x35*k
+    _x34 = (1.0/m)
+    _x35 = (0.5)*f_c1
+    _x36 = (0.3333333333333333)*f_c2
+    _x37 = _x35*f_t_stance**2 + _x36*f_t_stance**3 + f_c0*f_t_stance
     t_bottom = f_t_bottom
     t_stance = f_t_stance
     bottom_q_r = _x33*l0
     bottom_q_rd = 0.0
-    bottom_q_thd = _x35*(_x36*f_t_bottom**2 + _x37*f_t_bottom**3 + f_c0*f_t_bottom + p_td)/(_x33**2*_x34)
+    bottom_q_thd = _x34*(_x35*f_t_bottom**2 + _x36*f_t_bottom**3 + f_c0*f_t_bottom + p_td)/(_x33**2*l0**2)
     liftoff_q_r = q_r_lo
-    P_c = _x38
-    liftoff_q_thd = _x35*_x40*_x41
-    _q_rd_lo_sq = 2.0*E_td*_x35 - _x34*_x42 + 2.0*_x35*k*l0*q_r_lo - _x39*_x42 - _x40*_x41**2*_x43**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+    P_c = _x37
+    liftoff_q_thd = _x34*(_x37 + p_td)/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    _x41 = (1.0/m)
+    _x38 = _x41
+    _x39 = _x38*k
+    _x40 = q_r_lo**2
+    _q_rd_lo_sq = 2.0*E_td*_x38 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th) - _x41**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+    # q_rd_lo from the energy
     liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):

@@ -135,22 +135,6 @@ class MapInfo:
         }
 
 
-_EXACT = MapInfo(
-    name=EXACT,
-    title="Exact stance by numerical integration (solve_ivp DOP853)",
-    section="2.2",
-    equations=("1", "2", "3", "27"),
-    requires=(),
-    params=("m", "l0", "k_c", "k_d", "g_s"),
-    options=(
-        Option("rtol", "float", 1e-11, "relative tolerance of the DOP853 integration", low=1e-14, high=1e-3),
-        Option("atol", "float", 1e-12, "absolute tolerance of the DOP853 integration", low=1e-16, high=1e-3),
-    ),
-    summary="the polar stance equations of motion (2)-(3) integrated with events for the bottom "
-    "(k_c -> k_d), liftoff and failures: the ground truth",
-)
-
-
 def _option(row: dict) -> Option:
     return Option(
         name=row["name"],
@@ -163,26 +147,26 @@ def _option(row: dict) -> Option:
     )
 
 
+def _info(r: dict) -> MapInfo:
+    return MapInfo(
+        name=r["name"],
+        title=r["title"],
+        section=r["section"],
+        equations=tuple(r["equations"]),
+        requires=tuple(r["requires"]),
+        params=tuple(r["params"]),
+        options=tuple(_option(o) for o in r["options"]),
+        summary=r["summary"],
+        module=r["module"],
+        kernels=dict(r["kernels"]) if r["kernels"] else None,
+        extras=tuple(e["name"] for e in r["extras"]),
+    )
+
+
 @cache
 def maps() -> tuple[MapInfo, ...]:
     """Every map: the generated ones in report order, then ``"exact"``."""
-    rows = tuple(
-        MapInfo(
-            name=r["name"],
-            title=r["title"],
-            section=r["section"],
-            equations=tuple(r["equations"]),
-            requires=tuple(r["requires"]),
-            params=tuple(r["params"]),
-            options=tuple(_option(o) for o in r["options"]),
-            summary=r["summary"],
-            module=r["module"],
-            kernels=dict(r["kernels"]),
-            extras=tuple(e["name"] for e in r["extras"]),
-        )
-        for r in maps_index.MAPS
-    )
-    return rows + (_EXACT,)
+    return tuple(_info(r) for r in maps_index.MAPS) + (_info(maps_index.EXACT),)
 
 
 def names() -> tuple[str, ...]:

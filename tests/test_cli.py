@@ -150,3 +150,19 @@ def test_generate_check_passes_on_a_current_tree(capsys):
 
 def test_rel_error_of_zero_reference_is_nan():
     assert math.isnan(Row("x", "m", 0.0, 1.0).rel_error)
+
+
+def test_generate_does_not_need_the_generated_index():
+    """`slipmaps generate` rebuilds generated/: it must run when generated/maps_index.py is stale,
+    broken or missing (here: made unimportable)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['slipmaps.generated.maps_index'] = None\n"
+        "from slipmaps.runtime.cli import main\n"
+        "sys.exit(main(['generate', '--check']))\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "current" in run.stdout

@@ -309,6 +309,30 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
     )
 
 
+def touchdown_invariants() -> Stage:
+    """``p_td`` and ``E_td``: the angular momentum and the total energy (27) of the touchdown state."""
+    at_td = {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
+    return Stage(
+        ((sym("p_td"), m * q_r_td**2 * q_thd_td), (sym("E_td"), mechanics.stance_energy().subs(at_td))),
+        comment="angular momentum and total energy (27) at touchdown",
+    )
+
+
+def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step, ...]:
+    """``liftoff_q_rd`` on the touchdown's energy level E_td at (q_r_lo, ``angle``, ``momentum``);
+    status ENERGY_DEFICIT where the approximate liftoff state needs more energy than there is."""
+    radicand, _ = liftoff_radial_speed()
+    at_lo = {q_r: q_r_lo, q_th: angle, P_SYM: momentum, E_SYM: sym("E_td")}
+    square = sym("_q_rd_lo_sq")
+    return (
+        Stage(
+            ((square, radicand.subs(at_lo)),),
+            (Guard(square >= 0, "ENERGY_DEFICIT", "q_rd_lo^2 from the energy (27)"),),
+        ),
+        Stage(((sym("liftoff_q_rd"), sp.sqrt(square)),), comment="q_rd_lo from the energy"),
+    )
+
+
 def _leg_length_domain(inp: MapInputs) -> tuple[Step, ...]:
     """(21) and (23) assume touchdown at the rest length: their choices need q_r_td = l0."""
     if "leg_length" not in inp.options:
@@ -331,18 +355,7 @@ def _constant_correction(kind: int):
             return p_td + P_c * (ramp * time / t_s + (1 - ramp))
 
         setup: tuple[Step, ...] = (
-            Stage(
-                (
-                    (p_td, m * q_r_td**2 * q_thd_td),
-                    (
-                        sym("E_td"),
-                        mechanics.stance_energy().subs(
-                            {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
-                        ),
-                    ),
-                ),
-                comment="angular momentum and total energy (27) at touchdown",
-            ),
+            touchdown_invariants(),
             *_leg_length_domain(inp),
             Switch(
                 inp.opt("reading"),
@@ -364,8 +377,6 @@ def _constant_correction(kind: int):
             ),
             *_trajectory("f_", p_td + share * P_c),
         )
-        radicand, _ = liftoff_radial_speed()
-        lo_speed = {q_r: q_r_lo, q_th: sym("f_liftoff_q_th"), P_SYM: p_td + P_c, E_SYM: sym("E_td")}
         f_t_b, f_t_s = sym("f_t_bottom"), sym("f_t_stance")
         outputs = (
             Stage(
@@ -387,22 +398,7 @@ def _constant_correction(kind: int):
                 (
                     (
                         reading.code("mean"),
-                        (
-                            Stage(
-                                ((sym("_q_rd_lo_sq"), radicand.subs(lo_speed)),),
-                                (
-                                    Guard(
-                                        sym("_q_rd_lo_sq") >= 0,
-                                        "ENERGY_DEFICIT",
-                                        "q_rd_lo^2 from the energy (27)",
-                                    ),
-                                ),
-                            ),
-                            Stage(
-                                ((sym("liftoff_q_rd"), sp.sqrt(sym("_q_rd_lo_sq"))),),
-                                comment="from the energy",
-                            ),
-                        ),
+                        liftoff_speed_from_energy(sym("f_liftoff_q_th"), p_td + P_c),
                     ),
                     (
                         reading.code("report"),
@@ -445,7 +441,7 @@ def _spec(kind: int, title: str, eqs: tuple[str, ...], options: tuple[Option, ..
         name=f"gravity-type{kind}",
         title=title,
         section=f"4.{kind + 1}",
-        equations=_COMMON_EQS + eqs,
+        equations=tuple(sorted(_COMMON_EQS + eqs, key=int)),
         params=("m", "l0", "k", "g_s"),
         requires=("constant_stiffness",),
         build=_constant_correction(kind),

@@ -31,7 +31,6 @@ from sympy.integrals.manualintegrate import manualintegrate
 from .. import catalog
 from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
-from ..model import mechanics
 from ..symbols import (
     g_s,
     k,
@@ -40,17 +39,14 @@ from ..symbols import (
     q_r,
     q_r_lo,
     q_r_td,
-    q_rd,
     q_rd_td,
     q_th,
     q_th_td,
-    q_thd,
-    q_thd_td,
     rho,
     rho_d,
 )
 from . import geyer
-from .gravity import E_SYM, P_SYM, liftoff_radial_speed, torque
+from .gravity import liftoff_speed_from_energy, torque, touchdown_invariants
 
 #: Gauss-Legendre nodes and weights on [-1, 1]: exact for polynomials of degree 5.
 GL_X = (-sp.sqrt(sp.Rational(3, 5)), sp.S.Zero, sp.sqrt(sp.Rational(3, 5)))
@@ -322,7 +318,6 @@ def _trajectory(prefix: str) -> tuple[Step, ...]:
 
 
 def _build(inp: MapInputs) -> MapBuild:
-    radicand, _ = liftoff_radial_speed()
     # The pass from tau = 0, T arbitrary, g_eff = g_s, r_c = 0 is Geyer's radial solution.
     state = tuple((s, v) for s, v in zip(TAU, (0, 0, 0), strict=True)) + (
         (T_PREV, sp.S.One),
@@ -331,18 +326,7 @@ def _build(inp: MapInputs) -> MapBuild:
     )
     torque_scale = m * g_s * l0
     setup: tuple[Step, ...] = (
-        Stage(
-            (
-                (P_TD, m * q_r_td**2 * q_thd_td),
-                (
-                    sym("E_td"),
-                    mechanics.stance_energy().subs(
-                        {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
-                    ),
-                ),
-            ),
-            comment="angular momentum and total energy (27) at touchdown",
-        ),
+        touchdown_invariants(),
         Iterate(
             state=tuple((s, sp.sympify(v)) for s, v in state),
             body=_trajectory("i_"),
@@ -387,25 +371,11 @@ def _build(inp: MapInputs) -> MapBuild:
                 (sym("liftoff_q_r"), q_r_lo),
                 (sym("P_c"), p_of.subs(U, f["t_stance"]) - P_TD),
                 (sym("liftoff_q_thd"), p_of.subs(U, f["t_stance"]) / (m * q_r_lo**2)),
-                (
-                    sym("_q_rd_lo_sq"),
-                    radicand.subs(
-                        {
-                            q_r: q_r_lo,
-                            q_th: sym("liftoff_q_th"),
-                            P_SYM: p_of.subs(U, f["t_stance"]),
-                            E_SYM: sym("E_td"),
-                        }
-                    ),
-                ),
             ),
-            (
-                Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),
-                Guard(sym("_q_rd_lo_sq") >= 0, "ENERGY_DEFICIT", "q_rd_lo^2 from the energy (27)"),
-            ),
+            (Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
             comment="T5.7: bottom and liftoff states",
         ),
-        Stage(((sym("liftoff_q_rd"), sp.sqrt(sym("_q_rd_lo_sq"))),)),
+        *liftoff_speed_from_energy(sym("liftoff_q_th"), p_of.subs(U, f["t_stance"])),
     )
 
     def state_at(time: sp.Symbol) -> tuple[Step, ...]:
