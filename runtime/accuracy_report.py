@@ -242,7 +242,7 @@ def _paragraph(text: str) -> str:
     return " ".join(text.split())
 
 
-def render_markdown(summary: list[dict]) -> str:
+def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> str:
     out = [
         "# Accuracy of the maps against the exact stance",
         "",
@@ -252,7 +252,7 @@ def render_markdown(summary: list[dict]) -> str:
         "",
         _paragraph(_GRIDS),
         "",
-        "![next-apex error](accuracy.png)",
+        f"![next-apex error]({figure_name})",
         "",
         "## Findings",
         "",
@@ -368,6 +368,6 @@ def write(out: str | Path = "docs/accuracy.md", map_names=None, show_progress=No
     md.parent.mkdir(parents=True, exist_ok=True)
     js = md.with_suffix(".json")
     js.write_text(text, encoding="utf-8")
-    md.write_text(render_markdown(from_json(text)), encoding="utf-8")
+    md.write_text(render_markdown(from_json(text), md.with_suffix(".png").name), encoding="utf-8")
     png = figure(runs, md.with_suffix(".png"))
     return [md, js, png]
