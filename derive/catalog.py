@@ -99,6 +99,10 @@ APEX_RETURN = Group(
 #: Outputs of a map's state-at-time kernel: the polar state a time t after touchdown.
 TRAJECTORY = Group("", POLAR)
 
+#: A touchdown leg length counts as the rest length l0 within this relative tolerance (for the
+#: choices that assume it, ``Option.at_rest_length``).
+REST_LENGTH_TOLERANCE = 1e-9
+
 #: The index row of ``"exact"``, the numerical ground truth (runtime/simulate.py; no kernels).
 EXACT = {
     "name": "exact",

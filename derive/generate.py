@@ -45,7 +45,7 @@ def _sha(text: str) -> str:
 
 def _require_checkout() -> None:
     if not (ROOT / "pyproject.toml").is_file():
-        raise RuntimeError(
+        raise ValueError(
             f"slipmaps generate works on a source checkout (pip install -e '.[derive]'); "
             f"{ROOT} has no pyproject.toml"
         )
@@ -65,7 +65,7 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
             callees.setdefault(module, set()).add(name)
     missing = sorted(m for m in callees if f"generated/{m}.py" not in files)
     if missing:
-        raise RuntimeError(f"module {mod.name} calls into {missing}, which must be generated before it")
+        raise ValueError(f"module {mod.name} calls into {missing}, which must be generated before it")
     return render(
         "kernels.py.j2",
         source=mod.source,
@@ -91,9 +91,9 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
         "TRAJECTORY_OUTPUTS": rows(catalog.TRAJECTORY),
         "GROUPS": {**catalog.STANCE.subgroups(), **catalog.APEX_RETURN.subgroups()},
         "TOUCHDOWN": [a.name for a in catalog.TOUCHDOWN],
-        "PARAMS": {name: arg.doc for name, arg in catalog.PARAMS.items()},
         "MAPS": [s.index_row() for s in specs],
         "EXACT": catalog.EXACT,
+        "REST_LENGTH_TOLERANCE": catalog.REST_LENGTH_TOLERANCE,
     }
 
 

@@ -21,7 +21,7 @@ input or the result of an earlier step; no name is defined twice) and turns it i
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import sympy as sp
 
@@ -157,8 +157,9 @@ class Iterate:
     order). The loop stops after a pass in which every variable moved by at most ``tol`` times its
     ``scales`` entry (a positive expression in the units of that variable), or after ``max_iter``
     passes; then ``fail_status`` (if set) is returned when ``tol > 0``. With ``tol = 0`` it runs
-    exactly ``max_iter`` passes. After the loop only the state variables and ``count`` (the number
-    of passes, a float) are visible.
+    exactly ``max_iter`` passes; with ``max_iter = 0`` none (the initial values stand, no failure).
+    After the loop only the state variables and ``count`` (the number of passes, a float) are
+    visible.
     """
 
     state: tuple[tuple[sp.Symbol, sp.Basic], ...]
@@ -216,8 +217,8 @@ class Kernel:
     #: Every public kernel ends with an all-outputs-finite guard; an internal helper whose callers
     #: check their own outputs may skip it (``check_outputs=False``).
     check_outputs: bool = True
-    #: Inline into every caller at numba's IR level (``njit(inline="always")``): for internal helpers
-    #: and the stance kernels, so a batch loop or an apex-return map runs straight-line code.
+    #: Inline into every caller at numba's IR level (``njit(inline="always")``): a map's stance kernel
+    #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
     inline: bool = False
 
     @property
@@ -237,4 +238,3 @@ class Module:
     doc: str
     source: str
     kernels: Callable[[], tuple[Kernel, ...]]
-    extra: Mapping[str, object] = field(default_factory=dict)

@@ -96,11 +96,18 @@ def _share_reciprocals(replacements, reduced, start: int):
     bases = sorted((b for b, c in counts.items() if c >= 2), key=lambda s: s.name)
     if not bases:
         return replacements, reduced, start
+    # A temporary CSE already made for 1/b is that reciprocal; the others get a new temporary.
+    existing = {
+        e.base: s for s, e in replacements if isinstance(e, sp.Pow) and e.exp == -1 and e.base in bases
+    }
+    replacements = [(s, e) for s, e in replacements if s not in existing.values()]
     recips = []
     subs = {}
     for b in bases:
-        r = sp.Symbol(f"_x{start}", real=True)
-        start += 1
+        r = existing.get(b)
+        if r is None:
+            r = sp.Symbol(f"_x{start}", real=True)
+            start += 1
         recips.append((b, r))
         subs[b] = r
 

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import catalog
-from .ir import Arg, Batch, Call, Field, Group, Kernel, Module, Step, real, sym
+from .ir import Arg, Batch, Call, Field, Group, Guard, Kernel, Module, Stage, Step, real, sym
 
 
 @dataclass(frozen=True)
@@ -40,10 +40,16 @@ class Option:
     low: float | None = None
     high: float | None = None
     integer: bool = False
+    #: Choices that assume touchdown at the rest length (q_r_td = l0): with another touchdown leg
+    #: length the kernels return INVALID_INPUT.
+    at_rest_length: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.choices and self.default not in self.values:
             raise ValueError(f"option {self.name}: default {self.default!r} is not one of {self.values}")
+        unknown = set(self.at_rest_length) - set(self.values)
+        if unknown:
+            raise ValueError(f"option {self.name}: at_rest_length names unknown choices {sorted(unknown)}")
 
     @property
     def symbol(self) -> sp.Symbol:
@@ -98,7 +104,21 @@ class Option:
             "choices": [{"value": v, "doc": d} for v, d in self.choices],
             "low": self.low,
             "high": self.high,
+            "at_rest_length": list(self.at_rest_length),
         }
+
+    def domain_guard(self) -> Guard | None:
+        """The run-time check of :attr:`at_rest_length` (None when no choice needs it)."""
+        if not self.at_rest_length:
+            return None
+        q_r_td, l0 = catalog.PARAMS["q_r_td"].symbol, catalog.PARAMS["l0"].symbol
+        at_rest = sp.Abs(real(q_r_td) - real(l0)) <= catalog.REST_LENGTH_TOLERANCE * real(l0)
+        others = [self.is_(v) for v in self.values if v not in self.at_rest_length]
+        return Guard(
+            sp.Or(*others, at_rest),
+            "INVALID_INPUT",
+            f"{self.name} {'/'.join(self.at_rest_length)} need q_r_td = l0",
+        )
 
 
 @dataclass(frozen=True)
@@ -163,6 +183,10 @@ class MapSpec:
         """The Python identifier of the map (module and kernel name prefix)."""
         return self.name.replace("-", "_")
 
+    def kernel_name(self, role: str) -> str:
+        """The generated function of ``role`` ("stance", "state_at", "apex_return")."""
+        return f"{self.ident}_{role}"
+
     @property
     def source(self) -> str:
         """The derivation module, named in generated headers."""
@@ -184,6 +208,11 @@ class MapSpec:
         return catalog.APEX_ARGS + self.param_args() + flight + self.option_args()
 
     # -- kernels -------------------------------------------------------------------------------
+    def domain_steps(self) -> tuple[Step, ...]:
+        """Checks of option choices that depend on the touchdown state (before the map's own steps)."""
+        guards = tuple(g for g in (o.domain_guard() for o in self.options) if g is not None)
+        return (Stage((), guards),) if guards else ()
+
     def built(self) -> MapBuild:
         if "build" not in self._cache:
             inputs = MapInputs(
@@ -196,11 +225,11 @@ class MapSpec:
 
     def stance_kernel(self) -> Kernel:
         return Kernel(
-            name=f"{self.ident}_stance",
+            name=self.kernel_name("stance"),
             summary=f"{self.title}: touchdown state -> bottom and liftoff states.",
             equations=self.equations,
             args=self.stance_args(),
-            steps=self.built().steps,
+            steps=self.domain_steps() + self.built().steps,
             outputs=catalog.STANCE + Group("", self.extras),
             batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
             notes=self.notes,
@@ -213,11 +242,11 @@ class MapSpec:
             return None
         t = catalog.TIME
         return Kernel(
-            name=f"{self.ident}_state_at",
+            name=self.kernel_name("state_at"),
             summary=f"{self.title}: the polar state a time t after touchdown.",
             equations=self.equations,
             args=(t,) + self.stance_args(),
-            steps=self.built().state_at(t.symbol),
+            steps=self.domain_steps() + self.built().state_at(t.symbol),
             outputs=catalog.TRAJECTORY,
             batch=Batch((t.name,)),
             module=self.ident,
@@ -261,7 +290,7 @@ class MapSpec:
             ),
         )
         return Kernel(
-            name=f"{self.ident}_apex_return",
+            name=self.kernel_name("apex_return"),
             summary=f"Apex-return map: exact flights, stance by {self.title}.",
             equations=self.equations,
             args=self.apex_args(),
@@ -290,7 +319,6 @@ class MapSpec:
         stance, state_at = self.stance_kernel(), self.state_at_kernel()
         return {
             "name": self.name,
-            "ident": self.ident,
             "title": self.title,
             "section": self.section,
             "equations": list(self.equations),
@@ -302,7 +330,7 @@ class MapSpec:
             "kernels": {
                 "stance": stance.name,
                 "state_at": state_at.name if state_at else None,
-                "apex_return": f"{self.ident}_apex_return",
+                "apex_return": self.kernel_name("apex_return"),
             },
             "stance_args": list(stance.arg_names),
             "apex_args": [a.name for a in self.apex_args()],

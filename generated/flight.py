@@ -39,7 +39,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     Arguments:
         b_y_apex: apex height of the body above the ground [m], >= 0
         b_xd_apex: horizontal apex speed [m/s]
-        q_th_td: touchdown leg angle from the vertical [rad], |q_th_td| < pi/2
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_r_td: touchdown leg length [m], > 0
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
 

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:0415a4657ea8ce78
+#   flight.py sha256:2991b07b7a7d4727
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
 
@@ -59,41 +59,40 @@ def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
     """
     # Total ops: 56
     # eq (7) at touchdown: omega0^2 = k/m, omega = p_th/(m l0^2), rho and its rate
-    _x1 = (1.0/l0)
-    _x0 = _x1
+    _x0 = (1.0/l0)
     omega0_sq = k/m
-    omega = _x1**2*q_r_td**2*q_thd_td
+    omega = _x0**2*q_r_td**2*q_thd_td
     rho_td = _x0*q_r_td - 1.0
     rho_d_td = _x0*q_rd_td
     # stance starts compressing
     if not ((q_rd_td < 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
-    _x2 = omega**2
-    _x3 = 2.0*g_s/l0
-    epsilon = _x2 + _x3 + rho_d_td**2 + rho_td**2*(3.0*_x2 + omega0_sq) + rho_td*(-2.0*_x2 + _x3)
+    _x1 = omega**2
+    _x2 = 2.0*g_s/l0
+    epsilon = _x1 + _x2 + rho_d_td**2 + rho_td**2*(3.0*_x1 + omega0_sq) + rho_td*(-2.0*_x1 + _x2)
     # eq (9): rho_d^2 = lambda rho^2 + mu rho + nu
-    _x4 = omega**2
-    _x5 = 2.0*g_s/l0
-    lam = -3.0*_x4 - omega0_sq
-    mu = 2.0*_x4 - _x5
-    nu = -_x4 - _x5 + epsilon
-    # eq (10)-(11): frequency, offset, squared amplitude of rho = a + b sin(omega0_hat t)
-    _x6 = (1.0/lam)
+    _x3 = omega**2
+    _x4 = 2.0*g_s/l0
+    lam = -3.0*_x3 - omega0_sq
+    mu = 2.0*_x3 - _x4
+    nu = -_x3 - _x4 + epsilon
+    # eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)
+    _x5 = (1.0/lam)
     omega0_hat = math.sqrt(-lam)
-    a = -0.5*_x6*mu
-    b2 = (0.25)*_x6**2*(-4.0*lam*nu + mu**2)
+    a = -0.5*_x5*mu
+    b2 = (0.25)*_x5**2*(-4.0*lam*nu + mu**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
     # eq (12): sin(phase) at touchdown
-    _x7 = math.sqrt(b2)
-    b = _x7
-    s_td = (-a - 1.0 + q_r_td/l0)/_x7
-    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    _x6 = math.sqrt(b2)
+    b = _x6
+    s_td = (-a - 1.0 + q_r_td/l0)/_x6
+    # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # eq (12) needs |s_td| <= 1
+    # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
     # eq (12), n = 0: compressing root

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:0415a4657ea8ce78
-#   geyer.py sha256:3eaa5cde50c61563
+#   flight.py sha256:2991b07b7a7d4727
+#   geyer.py sha256:c9f5b19f3aba51c1
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels."""
 
@@ -212,11 +212,10 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     liftoff_q_th = f_liftoff_q_th
     liftoff_q_thd = _x26*(P_c + p_td)/q_r_lo**2
     if reading == 0.0:
-        _x30 = (1.0/m)
-        _x27 = _x30
+        _x27 = (1.0/m)
         _x28 = _x27*k
         _x29 = q_r_lo**2
-        _q_rd_lo_sq = 2.0*E_td*_x27 + 2.0*_x27*k*l0*q_r_lo - _x28*_x29 - _x28*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th) - _x30**2*(P_c + p_td)**2/_x29
+        _q_rd_lo_sq = 2.0*E_td*_x27 - _x27**2*(P_c + p_td)**2/_x29 + 2.0*_x27*k*l0*q_r_lo - _x28*_x29 - _x28*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:0415a4657ea8ce78
-#   geyer.py sha256:3eaa5cde50c61563
+#   flight.py sha256:2991b07b7a7d4727
+#   geyer.py sha256:c9f5b19f3aba51c1
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time and apex-return kernels."""
 
@@ -79,15 +79,15 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # leg_length eq21/eq23 need q_r_td = l0
+    if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
     E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
-    # leg_length eq21 / eq23 need q_r_td = l0
-    if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5
@@ -283,11 +283,10 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     liftoff_q_th = f_liftoff_q_th
     liftoff_q_thd = _x66*(P_c + p_td)/q_r_lo**2
     if reading == 0.0:
-        _x70 = (1.0/m)
-        _x67 = _x70
+        _x67 = (1.0/m)
         _x68 = _x67*k
         _x69 = q_r_lo**2
-        _q_rd_lo_sq = 2.0*E_td*_x67 + 2.0*_x67*k*l0*q_r_lo - _x68*_x69 - _x68*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th) - _x70**2*(P_c + p_td)**2/_x69
+        _q_rd_lo_sq = 2.0*E_td*_x67 - _x67**2*(P_c + p_td)**2/_x69 + 2.0*_x67*k*l0*q_r_lo - _x68*_x69 - _x68*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
@@ -364,15 +363,15 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # leg_length eq21/eq23 need q_r_td = l0
+    if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
+        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
     E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
-    # leg_length eq21 / eq23 need q_r_td = l0
-    if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:0415a4657ea8ce78
-#   geyer.py sha256:3eaa5cde50c61563
+#   flight.py sha256:2991b07b7a7d4727
+#   geyer.py sha256:c9f5b19f3aba51c1
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
 
@@ -56,12 +56,13 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
         a: offset of rho(t)
         b: amplitude of rho(t)
         phase_td: touchdown phase [rad]
+        s_td: sin(phase_td)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 73
     omega0_sq = k/m
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # T5.4: the quadratic about r_c with g_eff
     _x0 = (r_c + 1.0)**-4
     _x1 = 4.0*omega0_sq
@@ -76,32 +77,35 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     _x8 = (1.0/l0)
     _x7 = _x8*q_r_td - 1.0
     nu = -_x7**2*lam - _x7*mu + _x8**2*q_rd_td**2
+    # eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)
     _x9 = (1.0/lam)
     omega0_hat = math.sqrt(-lam)
     a = -0.5*_x9*mu
     b2 = (0.25)*_x9**2*(-4.0*lam*nu + mu**2)
-    # T5.5: real amplitude
+    # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+    # eq (12): sin(phase) at touchdown
     _x10 = math.sqrt(b2)
     b = _x10
     s_td = (-a - 1.0 + q_r_td/l0)/_x10
-    # the leg collapses: bottom leg length l0 (1 + a - b) <= 0
+    # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
-    # eq (12) needs |s_td| <= 1
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+    # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     # (internal helper: its callers check that their outputs are finite)
-    return (omega0_hat, a, b, phase_td, STATUS_OK)
+    return (omega0_hat, a, b, phase_td, s_td, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def type5_leg_angle(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0):
     """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2).
 
-    Report equations: 47.
+    Report equations: 17, 18, 19.
 
     Arguments:
         t: time since touchdown [s]
@@ -122,19 +126,18 @@ def type5_leg_angle(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_
         q_th: leg angle [rad]
     """
     # Total ops: 144
-    _x32 = (1.0/omega0_hat)
+    _x4 = (1.0/omega0_hat)
     _x0 = t**2
     _x1 = (0.5)*_x0
     _x2 = t**3
     _x3 = k1*math.cos(phase_td)
-    _x4 = _x32
     _x5 = _x4*p_td
-    _x6 = _x32**2
+    _x6 = _x4**2
     _x7 = math.sin(phase_td)
     _x8 = c0*k1
-    _x9 = _x32**3
+    _x9 = _x4**3
     _x10 = _x9*c1
-    _x11 = _x32**4
+    _x11 = _x4**4
     _x12 = _x11*c2
     _x13 = 2.0*phase_td
     _x14 = math.cos(_x13)
@@ -226,12 +229,13 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
-        if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
+        if _c0[5] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
         i_phase_td = _c0[3]
+        i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
@@ -297,12 +301,13 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
     # T5.4-T5.5: radial solution
     _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[4])
+    if _c5[5] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[5])
     f_omega0_hat = _c5[0]
     f_a = _c5[1]
     f_b = _c5[2]
     f_phase_td = _c5[3]
+    f_s_td = _c5[4]
     _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c6[2] != STATUS_OK:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[2])
@@ -358,11 +363,10 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    _x41 = (1.0/m)
-    _x38 = _x41
+    _x38 = (1.0/m)
     _x39 = _x38*k
     _x40 = q_r_lo**2
-    _q_rd_lo_sq = 2.0*E_td*_x38 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th) - _x41**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40
+    _q_rd_lo_sq = 2.0*E_td*_x38 - _x38**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
@@ -458,12 +462,13 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
-        if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[4])
+        if _c0[5] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, _c0[5])
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
         i_phase_td = _c0[3]
+        i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
             return (NAN, NAN, NAN, NAN, _c1[2])
@@ -529,12 +534,13 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
     # T5.4-T5.5: radial solution
     _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c5[4])
+    if _c5[5] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, _c5[5])
     f_omega0_hat = _c5[0]
     f_a = _c5[1]
     f_b = _c5[2]
     f_phase_td = _c5[3]
+    f_s_td = _c5[4]
     _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c6[2] != STATUS_OK:
         return (NAN, NAN, NAN, NAN, _c6[2])

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from slipmaps.generated.status import Status
 
-from . import index
+from . import exact_map, index
 from .grids import GRIDS, Grid
 from .maps import apex_return_batch, stance_batch
 from .progress import progress
@@ -64,10 +64,6 @@ class Variant:
 #: The pass counts compared for maps with an iterated correction: one pass, or the fixed point.
 ONE_PASS = {"iterations": 1, "tol": 0.0}
 FIXED_POINT = {"iterations": 100, "tol": 1e-12}
-
-
-def _passes_label(opts: dict) -> str:
-    return "1 pass" if opts == ONE_PASS else "fixed point"
 
 
 def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
@@ -118,27 +114,12 @@ class GridRun:
     points: np.ndarray  # (n, 3): apex height, apex speed, touchdown angle
     exact: list[StepResult | None]  # None where a symmetric point has no symmetric gait
     touchdowns: np.ndarray  # (n, 4), NaN where the exact step has no touchdown
+    exact_status: np.ndarray  # (n,) int64, -1 where there is no exact step
+    exact_columns: dict[str, np.ndarray]  # stance and apex-return values by name, NaN unless OK
     results: dict[str, tuple] = field(default_factory=dict)  # label -> (variant, stance batch, apex batch)
 
-    @property
-    def exact_status(self) -> np.ndarray:
-        return np.array([int(s.status) if s is not None else -1 for s in self.exact])
-
     def exact_value(self, key: str) -> np.ndarray:
-        return np.array([_step_value(s, key) for s in self.exact])
-
-
-def _step_value(s: StepResult | None, key: str) -> float:
-    if s is None or s.status != Status.OK:
-        return math.nan
-    if key == "apex_height":
-        return s.next_apex[0]
-    if key == "apex_speed":
-        return s.next_apex[1]
-    if key in ("t_stance", "t_bottom"):
-        return getattr(s, key)
-    group, q = key.split("_", 1)
-    return getattr(s, group)[("q_r", "q_rd", "q_th", "q_thd").index(q)]
+        return self.exact_columns[key]
 
 
 def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = None) -> GridRun:
@@ -150,7 +131,11 @@ def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = 
     tds = np.array(
         [s.touchdown if s is not None and s.touchdown is not None else (math.nan,) * 4 for s in exact]
     )
-    run = GridRun(grid, points, exact, tds.reshape(-1, 4))
+    status = np.array([int(s.status) if s is not None else -1 for s in exact], dtype=np.int64)
+    names = exact_map.STEP_NAMES
+    rows = np.array([exact_map.step_row(s) if s is not None else [math.nan] * len(names) for s in exact])
+    cols = {n: rows.reshape(-1, len(names))[:, j] for j, n in enumerate(names)}
+    run = GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols)
     for var in chosen:
         st = stance_batch(var.map, grid.params, run.touchdowns, **var.kwargs)
         ap = apex_return_batch(var.map, grid.params, points[:, 0], points[:, 1], points[:, 2], **var.kwargs)
@@ -232,12 +217,11 @@ def variant_stats(run: GridRun, label: str) -> VariantStats:
     var, st, ap = run.results[label]
     ok = _compared(run, label)
     # stance quantities compare the stance map from the same touchdown; the apex the apex-return map
-    stance_ok = (run.exact_status == _OK) & (st.status == _OK) & ok
     quantities = {}
     for q in QUANTITIES:
         source = ap if q.key.startswith("apex_") else st
         err = source[q.key] - run.exact_value(q.key)
-        err = np.where(stance_ok, err, math.nan)
+        err = np.where(ok, err, math.nan)
         rel = err / _rel_scale(run, q.key, q.rel_scale)
         a, r = _stats(np.abs(err)), _stats(np.abs(rel))
         quantities[q.key] = {
@@ -262,7 +246,7 @@ def variant_stats(run: GridRun, label: str) -> VariantStats:
             )
     passes = None
     if "passes" in st.names:
-        p = st["passes"][np.isfinite(st["passes"]) & stance_ok]
+        p = st["passes"][np.isfinite(st["passes"]) & ok]
         passes = {"median": float(np.median(p)), "max": float(p.max())} if p.size else None
     return VariantStats(
         label=label,

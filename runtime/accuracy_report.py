@@ -93,9 +93,9 @@ def _fails(d: dict[str, int]) -> str:
     return ", ".join(f"{n} `{k}`" for k, n in d.items()) or "0"
 
 
-def _grid(summary: list[dict], kind: str, prefix: str) -> dict | None:
+def _grid(summary: list[dict], kind: str) -> dict | None:
     for g in summary:
-        if g["kind"] == kind and g["name"].startswith(prefix):
+        if g["kind"] == kind:
             return g
     return None
 
@@ -196,7 +196,7 @@ def findings(summary: list[dict]) -> list[str]:
             f"- `{label}` {verdict} Geyer's map on every nonsymmetric grid and is {sym_text} "
             f"{SYMMETRIC_RATIO:g}x of it on the symmetric grids (mean next-apex error: {'; '.join(parts)})."
         )
-    yu = _grid(summary, "yu", "")
+    yu = _grid(summary, "yu")
     if yu is not None:
         best = min(
             (v for v in yu["variants"] if v["map"].startswith("gravity")),
@@ -262,7 +262,7 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
         "",
         *_overview(summary),
     ]
-    yu = _grid(summary, "yu", "")
+    yu = _grid(summary, "yu")
     if yu is not None:
         out += [
             "",

@@ -49,16 +49,19 @@ def _add_params(p: argparse.ArgumentParser) -> None:
 
 
 def _params(args: argparse.Namespace) -> SlipParams:
-    k = args.k if args.k is not None else HUMAN_RUNNER.k_c
+    """The parameters as given; SlipParams itself refuses --k together with --k-c/--k-d. An unset
+    stiffness is the human runner's."""
+    if args.k_c is None and args.k_d is None:
+        stiff = {"k": HUMAN_RUNNER.k_c if args.k is None else args.k}
+    else:
+        stiff = {
+            "k_c": HUMAN_RUNNER.k_c if args.k_c is None else args.k_c,
+            "k_d": HUMAN_RUNNER.k_d if args.k_d is None else args.k_d,
+        }
+        if args.k is not None:
+            stiff["k"] = args.k
     return SlipParams(
-        m=args.m,
-        l0=args.l0,
-        k_c=args.k_c if args.k_c is not None else k,
-        k_d=args.k_d if args.k_d is not None else k,
-        g_s=args.g_s,
-        g_f=args.g_f,
-        q_r_td=args.q_r_td,
-        q_r_lo=args.q_r_lo,
+        m=args.m, l0=args.l0, **stiff, g_s=args.g_s, g_f=args.g_f, q_r_td=args.q_r_td, q_r_lo=args.q_r_lo
     )
 
 

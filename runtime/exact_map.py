@@ -1,7 +1,7 @@
 """The ``"exact"`` map: the numerical simulator (:mod:`.simulate`) in the result family of the maps.
 
 Stance and apex-return results carry the same names as every generated map's (from the index),
-so any two maps compare the same way. Batches loop over rows in Python (about 1 ms per stance),
+so any two maps compare the same way. Batches loop over rows in Python (1-2 ms per stance),
 each row with its own status; an invalid row is ``INVALID_INPUT``, never an exception.
 """
 
@@ -10,11 +10,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from slipmaps.generated.status import MESSAGES, Status
+from slipmaps.generated.status import Status
 
 from .params import SlipParams
 from .progress import progress as _progress
-from .results import Result, columns
+from .results import GROUPS, Result, columns
 from .simulate import StanceResult, StepResult, simulate_stance, simulate_step
 
 _NAN4 = (math.nan,) * 4
@@ -23,9 +23,7 @@ _NAN4 = (math.nan,) * 4
 def _stance_values(r: StanceResult | StepResult) -> dict[str, float]:
     values = {"t_bottom": r.t_bottom, "t_stance": r.t_stance}
     for group, state in (("bottom", r.bottom), ("liftoff", r.liftoff)):
-        values.update(
-            zip((f"{group}_{q}" for q in ("q_r", "q_rd", "q_th", "q_thd")), state or _NAN4, strict=True)
-        )
+        values.update(zip(GROUPS[group], state or _NAN4, strict=True))
     return values
 
 
@@ -34,15 +32,30 @@ def _stance_row(r: StanceResult) -> list[float]:
     return [float(values[n]) for n in columns("stance")]
 
 
-def _apex_row(r: StepResult) -> list[float]:
-    values = {
+#: The names of :func:`step_row`: every stance output, then the apex-return outputs not in it.
+STEP_NAMES = (*columns("stance"), *(n for n in columns("apex_return") if n not in columns("stance")))
+
+
+def _step_values(r: StepResult) -> dict[str, float]:
+    return {
         **_stance_values(r),
         "apex_height": r.next_apex[0],
         "apex_speed": r.next_apex[1],
         "t_descent": r.t_descent,
         "t_ascent": r.t_ascent,
     }
+
+
+def _apex_row(r: StepResult) -> list[float]:
+    values = _step_values(r)
     return [float(values[n]) for n in columns("apex_return")]
+
+
+def step_row(r: StepResult) -> list[float]:
+    """An exact step's stance and apex-return values in the order of :data:`STEP_NAMES`, NaN unless
+    the step completed (as a map's batch row)."""
+    values = _step_values(r)
+    return _masked([float(values[n]) for n in STEP_NAMES], r.status)
 
 
 def _masked(row: list[float], status: Status) -> list[float]:
@@ -112,4 +125,4 @@ def trajectory(params: SlipParams, td, rtol: float, atol: float):
     return (r.t if r.t is not None else np.empty(0)), states, r.status
 
 
-__all__ = ["stance", "apex_return", "stance_rows", "apex_rows", "trajectory", "MESSAGES"]
+__all__ = ["STEP_NAMES", "stance", "apex_return", "stance_rows", "apex_rows", "step_row", "trajectory"]

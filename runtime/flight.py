@@ -12,8 +12,8 @@ from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
 
 from .params import SlipParams
+from .validate import PolarState
 
-PolarState = tuple[float, float, float, float]
 _NAN4 = (math.nan,) * 4
 
 

@@ -87,9 +87,6 @@ def symmetric_angle(params: SlipParams, h: float, v: float, lo: float = 0.02, hi
     return math.nan
 
 
-_FROUDE = math.sqrt(ROBOT_HOPPER.l0 / HUMAN_RUNNER.l0)
-
-
 def _human_and_hopper() -> tuple[Grid, ...]:
     out = []
     for label, p, angles in (

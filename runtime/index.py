@@ -16,6 +16,7 @@ from types import ModuleType
 from slipmaps.generated import maps_index
 
 from .params import SlipParams
+from .validate import check_params
 
 __all__ = ["EXACT", "MapInfo", "Option", "get", "maps", "names"]
 
@@ -33,6 +34,7 @@ class Option:
     choices: tuple[str, ...] = ()
     low: float | None = None
     high: float | None = None
+    at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
 
     def encode(self, map_name: str, value: object) -> float:
         """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values."""
@@ -51,7 +53,9 @@ class Option:
         if self.kind == "int" and x != math.floor(x):
             raise ValueError(f"{where} must be a whole number, got {value!r}")
         if (self.low is not None and x < self.low) or (self.high is not None and x > self.high):
-            raise ValueError(f"{where} must lie in [{self.low:g}, {self.high:g}], got {value!r}")
+            low = "-inf" if self.low is None else f"{self.low:g}"
+            high = "inf" if self.high is None else f"{self.high:g}"
+            raise ValueError(f"{where} must lie in [{low}, {high}], got {value!r}")
         return x
 
     def as_dict(self) -> dict:
@@ -63,6 +67,7 @@ class Option:
             "choices": list(self.choices),
             "low": self.low,
             "high": self.high,
+            "at_rest_length": list(self.at_rest_length),
         }
 
 
@@ -99,22 +104,20 @@ class MapInfo:
             self.option(key)
         return {o.name: options.get(o.name, o.default) for o in self.options}
 
-    def encoded(self, options: dict) -> tuple[float, ...]:
-        """The option values as kernel arguments, in the kernel's order."""
-        values = self.resolve(options)
-        return tuple(o.encode(self.name, values[o.name]) for o in self.options)
+    def encode(self, resolved: dict) -> tuple[float, ...]:
+        """The resolved option values (:meth:`resolve`) as kernel arguments, in the kernel's order."""
+        return tuple(o.encode(self.name, resolved[o.name]) for o in self.options)
 
     def param_values(self, params: SlipParams) -> tuple[float, ...]:
         """The map's parameters from ``params``, by name; ValueError when a requirement fails."""
-        if not isinstance(params, SlipParams):
-            raise TypeError(f"params must be a SlipParams, got {type(params).__name__}: {params!r}")
+        check_params(params)
         if "constant_stiffness" in self.requires and not params.constant_stiffness:
             others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
             raise ValueError(
                 f"map {self.name!r} needs a constant leg stiffness (k_c == k_d), got k_c={params.k_c!r}, "
                 f"k_d={params.k_d!r}; maps that accept k_c != k_d: {', '.join(others)}"
             )
-        return tuple(params.k_c if p == "k" else getattr(params, p) for p in self.params)
+        return tuple(getattr(params, p) for p in self.params)
 
     def kernel_module(self) -> ModuleType:
         if self.module is None:
@@ -144,6 +147,7 @@ def _option(row: dict) -> Option:
         choices=tuple(c["value"] for c in row["choices"]),
         low=row["low"],
         high=row["high"],
+        at_rest_length=tuple(row.get("at_rest_length", ())),
     )
 
 

@@ -19,11 +19,11 @@ vertical, counterclockwise positive.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
-from . import exact_map
 from .index import MapInfo, get, maps
 from .params import SlipParams
 from .results import BatchResult, Result, columns
@@ -40,17 +40,42 @@ class _Call:
     params: tuple[float, ...]
     options: dict  # the resolved options, by name
     encoded: tuple[float, ...]  # the kernel arguments of the options
+    kernels: dict  # (role, batch) -> the generated function; empty for "exact"
 
     @classmethod
     def of(cls, name: str, params: SlipParams, options: dict) -> _Call:
+        """Validated once per (map, parameters, options): a control loop calling a map thousands of
+        times with the same ones pays the Python checks once."""
+        try:
+            key = (name, params, tuple(sorted(options.items())))
+            hash(key)
+        except TypeError:  # an unhashable option value: validate (and refuse) it uncached
+            return cls._build(name, params, options)
+        return cls._cached(key)
+
+    @staticmethod
+    @lru_cache(maxsize=256)
+    def _cached(key) -> _Call:
+        name, params, options = key
+        return _Call._build(name, params, dict(options))
+
+    @classmethod
+    def _build(cls, name: str, params: SlipParams, options: dict) -> _Call:
         info = get(name)
         prm = info.param_values(params)
-        encoded = info.encoded(options)  # ValueError naming the valid values, for every map
-        return cls(info, prm, info.resolve(options), encoded)
+        resolved = info.resolve(options)
+        encoded = info.encode(resolved)  # ValueError naming the valid values
+        kernels = {}
+        if info.generated:
+            module = info.kernel_module()
+            for role, kernel in info.kernels.items():
+                if kernel is not None:
+                    kernels[(role, False)] = getattr(module, kernel)
+                    kernels[(role, True)] = getattr(module, f"{kernel}_batch")
+        return cls(info, prm, resolved, encoded, kernels)
 
     def kernel(self, role: str, batch: bool = False):
-        name = self.info.kernels[role]
-        return getattr(self.info.kernel_module(), f"{name}_batch" if batch else name)
+        return self.kernels[(role, batch)]
 
     def result(self, kind: str, res, inputs: dict) -> Result:
         status = Status(int(res[-1]))
@@ -63,8 +88,10 @@ def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
     """One stance of map ``name`` from the polar touchdown state ``touchdown``."""
     call = _Call.of(name, params, options)
     td = polar_state(params, touchdown)
-    inputs = {"touchdown": td, "options": call.options}
+    inputs = {"touchdown": td, "options": dict(call.options)}
     if not call.info.generated:
+        from . import exact_map  # loads scipy's integrators only when the exact map is used
+
         return exact_map.stance(params, td, inputs, **call.options)
     res = call.kernel("stance")(*td, *call.params, params.q_r_lo, *call.encoded)
     return call.result("stance", res, inputs)
@@ -76,8 +103,10 @@ def apex_return(name: str, params: SlipParams, apex_height, apex_speed, touchdow
     h = non_negative("apex_height", apex_height)
     v = non_negative("apex_speed", apex_speed)
     th = leg_angle("touchdown_angle", touchdown_angle)
-    inputs = {"apex_height": h, "apex_speed": v, "touchdown_angle": th, "options": call.options}
+    inputs = {"apex_height": h, "apex_speed": v, "touchdown_angle": th, "options": dict(call.options)}
     if not call.info.generated:
+        from . import exact_map
+
         return exact_map.apex_return(params, h, v, th, inputs, **call.options)
     res = call.kernel("apex_return")(
         h, v, th, *call.params, params.g_f, params.q_r_td, params.q_r_lo, *call.encoded
@@ -109,6 +138,8 @@ def stance_batch(
     names = columns("stance", call.info.extras)
     n = arr.shape[0]
     if not call.info.generated:
+        from . import exact_map
+
         data, status = exact_map.stance_rows(params, arr, names, progress, **call.options)
         return BatchResult(call.info.name, "stance", names, data, status, (n,))
     out = np.empty((n, len(names)))
@@ -143,6 +174,8 @@ def apex_return_batch(
         p.flags.writeable = False  # the kernels only read; numpy warns on writing through a broadcast
     names = columns("apex_return", call.info.extras)
     if not call.info.generated:
+        from . import exact_map
+
         data, status = exact_map.apex_rows(params, flat, names, progress, **call.options)
         return BatchResult(call.info.name, "apex_return", names, data, status, shape)
     out = np.empty((n, len(names)))
@@ -166,6 +199,8 @@ def trajectory(
     if not call.info.generated:
         if t is not None:
             raise ValueError("the exact trajectory is sampled at the integrator's times: call it with t=None")
+        from . import exact_map
+
         return exact_map.trajectory(params, td, **call.options)
     if call.info.kernels["state_at"] is None:
         raise ValueError(f"map {name!r} has no trajectory (only event states)")

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Quantity", "QUANTITIES", "REL_SCALE_TEXT"]
+__all__ = ["Quantity", "QUANTITIES"]
 
 
 @dataclass(frozen=True)
@@ -33,9 +33,3 @@ QUANTITIES: tuple[Quantity, ...] = (
     Quantity("apex_height", "next apex height", "m", "self"),
     Quantity("apex_speed", "next apex speed", "m/s", "self"),
 )
-
-REL_SCALE_TEXT = {
-    "self": "reference value",
-    "compression": "reference compression l0 - q_r_b",
-    "sweep": "reference sweep abs(q_th - q_th_td)",
-}

@@ -16,31 +16,26 @@ the ``liftoff`` group. Values are NaN wherever the status is not OK.
 from __future__ import annotations
 
 import math
-from collections import Counter
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
-__all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "columns"]
+__all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "GROUPS", "columns"]
 
 #: Output names of every stance map and of every apex-return map (before a map's extras).
 STANCE = tuple(r["name"] for r in maps_index.STANCE_OUTPUTS)
 APEX_RETURN = tuple(r["name"] for r in maps_index.APEX_OUTPUTS)
-_GROUPS: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in maps_index.GROUPS.items()}
-_UNITS = {r["name"]: r["unit"] for r in maps_index.STANCE_OUTPUTS + maps_index.APEX_OUTPUTS}
+#: Named groups of outputs: "bottom" -> ("bottom_q_r", ..., "bottom_q_thd"), "liftoff" -> ...
+GROUPS: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in maps_index.GROUPS.items()}
 
 
 def columns(kind: str, extras: tuple[str, ...] = ()) -> tuple[str, ...]:
     """The output names of a ``"stance"`` or ``"apex_return"`` result with a map's extras."""
     return {"stance": STANCE, "apex_return": APEX_RETURN}[kind] + tuple(extras)
-
-
-def unit(name: str) -> str:
-    """The unit of an output (empty for dimensionless extras)."""
-    return _UNITS.get(name, "")
 
 
 @dataclass(frozen=True)
@@ -61,8 +56,8 @@ class Result:
     def __getitem__(self, name: str):
         if name in self.values:
             return self.values[name]
-        if name in _GROUPS and all(n in self.values for n in _GROUPS[name]):
-            return tuple(self.values[n] for n in _GROUPS[name])
+        if name in GROUPS and all(n in self.values for n in GROUPS[name]):
+            return tuple(self.values[n] for n in GROUPS[name])
         raise KeyError(
             f"{self.kind} result of map {self.map!r} has no {name!r}; it has {', '.join(self.keys())}"
         )
@@ -76,7 +71,7 @@ class Result:
             raise AttributeError(str(exc)) from None
 
     def keys(self) -> tuple[str, ...]:
-        groups = tuple(g for g, ns in _GROUPS.items() if all(n in self.values for n in ns))
+        groups = tuple(g for g, ns in GROUPS.items() if all(n in self.values for n in ns))
         return tuple(self.values) + groups
 
     def __dir__(self):
@@ -93,6 +88,11 @@ class Result:
         }
 
 
+@lru_cache(maxsize=64)
+def _column_index(names: tuple[str, ...]) -> dict[str, int]:
+    return {n: j for j, n in enumerate(names)}
+
+
 class BatchResult(Mapping):
     """The outcome of a batch call: one column per output, one status per row."""
 
@@ -103,7 +103,7 @@ class BatchResult(Mapping):
         self.kind = kind
         self.names = tuple(names)
         self.shape = tuple(shape)
-        self._index = {n: j for j, n in enumerate(self.names)}
+        self._index = _column_index(self.names)
         self._data = data  # (n, len(names)), NaN rows where status != 0
         self._status = status
 
@@ -128,9 +128,9 @@ class BatchResult(Mapping):
             return self.status
         if name in self._index:
             return self._data[:, self._index[name]].reshape(self.shape)
-        if name in _GROUPS and all(n in self._index for n in _GROUPS[name]):
-            j = self._index[_GROUPS[name][0]]
-            return self._data[:, j : j + len(_GROUPS[name])].reshape(*self.shape, len(_GROUPS[name]))
+        if name in GROUPS and all(n in self._index for n in GROUPS[name]):
+            j = self._index[GROUPS[name][0]]
+            return self._data[:, j : j + len(GROUPS[name])].reshape(*self.shape, len(GROUPS[name]))
         raise KeyError(
             f"{self.kind} batch of map {self.map!r} has no column {name!r}; it has {', '.join(self)}"
         )
@@ -141,7 +141,9 @@ class BatchResult(Mapping):
 
     def counts(self) -> dict[str, int]:
         """Rows per status name, most common first."""
-        return {Status(int(c)).name: n for c, n in Counter(self._status.tolist()).most_common()}
+        codes, counts = np.unique(self._status, return_counts=True)
+        order = np.argsort(-counts, kind="stable")
+        return {Status(int(codes[i])).name: int(counts[i]) for i in order}
 
     def __repr__(self) -> str:
         return (

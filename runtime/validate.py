@@ -77,28 +77,12 @@ def polar_state(params: SlipParams, state: object, what: str = "touchdown") -> P
     return (min(q_r, params.l0), q_rd, q_th, q_thd)
 
 
-def float_array(name: str, value: object, n: int | None = None) -> np.ndarray:
-    """A contiguous 1-D float64 array (scalars broadcast to length ``n``); all entries finite."""
+def float_array(name: str, value: object) -> np.ndarray:
+    """A contiguous 1-D float64 array with every entry finite (ValueError naming the first bad one)."""
     arr = np.asarray(value, dtype=float)
-    if arr.ndim == 0 and n is not None:
-        arr = np.full(n, float(arr))
     if arr.ndim != 1:
-        raise ValueError(f"{name} must be a 1-D array (or a scalar), got shape {arr.shape}")
-    if n is not None and arr.shape[0] != n:
-        raise ValueError(f"{name} must have length {n}, got {arr.shape[0]}")
+        raise ValueError(f"{name} must be a 1-D array, got shape {arr.shape}")
     bad = np.flatnonzero(~np.isfinite(arr))
     if bad.size:
         raise ValueError(f"{name}[{bad[0]}] must be finite, got {arr[bad[0]]!r}")
     return np.ascontiguousarray(arr)
-
-
-def check_range(name: str, arr: np.ndarray, ok: np.ndarray, rule: str) -> None:
-    """ValueError naming the first element of ``arr`` where ``ok`` is False."""
-    bad = np.flatnonzero(~ok)
-    if bad.size:
-        raise ValueError(f"{name}[{bad[0]}] must satisfy {rule}, got {arr[bad[0]]!r}")
-
-
-def broadcast_params(n: int, *values: float) -> list[np.ndarray]:
-    """Each scalar as a read-only length-``n`` float64 view with stride 0 (no copy) for batch kernels."""
-    return [np.broadcast_to(np.float64(v), (n,)) for v in values]

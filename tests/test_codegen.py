@@ -454,40 +454,6 @@ def test_kernel_is_dispatcher_and_runs(mod, name):
     assert kern.signatures, "compiled"
 
 
-def _batch_kernels():
-    out = []
-    for mod in KERNEL_MODULES:
-        for name in _own_kernels(mod):
-            if name.endswith("_batch"):
-                out.append(pytest.param(mod, name, id=f"{_mod_id(mod)}.{name}"))
-    return out
-
-
-@pytest.mark.parametrize(("mod", "name"), _batch_kernels())
-def test_batch_kernel_equals_scalar_bit_for_bit(mod, name):
-    """Rows named by the batch docstring; strided row arrays; a bad row gets its own status."""
-    kern, scalar = getattr(mod, name), getattr(mod, name.removesuffix("_batch"))
-    rows = re.search(r"Row arguments \([^)]*\): ([\w, ]+)\.", kern.py_func.__doc__).group(1).split(", ")
-    params = _params(scalar)
-    assert _params(kern) == [*params, "out", "status"] and params[: len(rows)] == rows
-    nominal = dict(zip(params, _nominal_args(mod, scalar), strict=True))
-    n = 4
-    cols = []
-    for p in params[: len(rows)]:
-        buf = np.full(2 * n, -1.0)
-        buf[::2] = nominal[p] * np.array([1.0, 0.99, 0.98, 1.0])  # distinct rows
-        cols.append(buf[::2])  # strided
-    cols[0][3] = math.nan  # a bad row
-    scalars = [nominal[p] for p in params[len(rows) :]]
-    ref = [scalar(*(c[i] for c in cols), *scalars) for i in range(n)]
-    out = np.full((n, len(ref[0]) - 1), -7.0)
-    status = np.full(n, -1, dtype=np.int64)
-    kern(*cols, *scalars, out, status)
-    np.testing.assert_array_equal(out, np.array([r[:-1] for r in ref]))
-    np.testing.assert_array_equal(status, [r[-1] for r in ref])
-    assert status[0] == OK and status[3] == Status.INVALID_INPUT
-
-
 # ----------------------------------------------------------------------------------------------
 # Kernel vs lambdify of the derived expressions vs .py_func
 # ----------------------------------------------------------------------------------------------

@@ -60,7 +60,8 @@ def test_eq50_report_reading_one_pass_is_geyer_with_the_corrected_momentum(kind,
     expect = _geyer_with_momentum(td, p_td + pc)
     got = slipmaps.stance(f"gravity-type{kind}", P, td, reading="report", iterations=1, tol=0.0)
     assert got.ok and expect.ok
-    # type 2's reconstruction averages q_r by the trapezoid rule (measured: 3e-9 relative on P_c)
+    # measured: 1.9e-15 (types 0, 1); type 2's reconstruction averages q_r by the trapezoid rule on
+    # 4001 points, 5.4e-9 on P_c and 1.3e-9 on the states
     rel = 1e-12 if kind < 2 else 1e-7
     assert got.P_c == pytest.approx(pc, rel=rel)
     for key in (
@@ -86,6 +87,8 @@ def test_eq50_mean_reading_fixed_point_is_self_consistent(kind, td):
     assert got.ok and got.passes < 200
     traj = _geyer_with_momentum(td, p_td + got.P_c / 2)
     pc = _impulse(kind, _with_momentum(td, p_td + got.P_c / 2), traj)
+    # measured: 8.8e-13 (types 0, 1: the fixed point's tolerance), 5.3e-9 (type 2: the trapezoid
+    # average of the reconstruction); the states below 2e-15
     assert got.P_c == pytest.approx(pc, rel=1e-7 if kind == 2 else 1e-10)
     assert got.liftoff_q_th == pytest.approx(traj.liftoff_q_th, rel=1e-12)
     assert got.t_stance == pytest.approx(traj.t_stance, rel=1e-12)
@@ -112,7 +115,7 @@ def test_zero_iterations_is_geyers_trajectory(name):
 
 def test_eq65_type3_whole_stance_at_rest_length_is_type0():
     """The report's claim, on the generated kernels: type 3 on [t_td, t_lo] with q_r_td = q_r_lo = l0
-    is type 0 (both 2-sample, both readings)."""
+    is type 0 (both 2-sample, both readings). Measured: identical to the last bit."""
     for td in TOUCHDOWNS:
         for reading in ("mean", "report"):
             a = slipmaps.stance("gravity-type3", P, td, interval="stance", reading=reading)
@@ -123,6 +126,7 @@ def test_eq65_type3_whole_stance_at_rest_length_is_type0():
 
 
 def test_eq76_type4_whole_stance_is_type2():
+    """Measured: identical to the last bit."""
     for td in TOUCHDOWNS:
         a = slipmaps.stance("gravity-type4", P, td, interval="stance")
         b = slipmaps.stance("gravity-type2", P, td)
@@ -130,7 +134,8 @@ def test_eq76_type4_whole_stance_is_type2():
 
 
 def test_eq55_eq61_three_average_leg_lengths_agree_at_rest_length():
-    """(11), (21) and (23) describe the same stance when q_r_td = l0: type 2's three options agree."""
+    """(11), (21) and (23) describe the same stance when q_r_td = l0: type 2's three options agree
+    (measured: 9.3e-16 relative on P_c)."""
     for td in TOUCHDOWNS:
         ref = slipmaps.stance("gravity-type2", P, td, leg_length="eq11")
         for source in ("eq21", "eq23"):
@@ -197,11 +202,18 @@ def test_type5_fixed_point_conserves_energy_and_uses_the_end_momentum():
     td = TOUCHDOWNS[0]
     got = slipmaps.stance("gravity-type5", P, td)
     assert got.ok and 1 < got.passes < 100
+    # measured: 1.1e-16 (rate), 6.2e-16 (energy)
     p_td = P.m * td[0] ** 2 * td[3]
     assert got.liftoff_q_thd == pytest.approx((p_td + got.P_c) / (P.m * P.q_r_lo**2), rel=1e-12)
     assert _energy(got.liftoff) == pytest.approx(_energy(td), rel=1e-12)
 
 
-def test_liftoff_speed_from_energy_is_the_extending_root():
-    radicand, root = d_gravity.liftoff_radial_speed()
-    assert root == sp.sqrt(radicand)
+def test_liftoff_speed_from_energy_lies_on_the_energy_level():
+    """q_rd = +sqrt(radicand) puts the state (q_r, q_rd, q_th, p/(m q_r^2)) on H = E of (27)."""
+    from slipmaps.derive.model import mechanics
+
+    q_rd_sq = d_gravity.liftoff_radial_speed()
+    energy = mechanics.stance_energy().subs(
+        {S.q_rd: sp.sqrt(q_rd_sq), S.q_thd: d_gravity.P_SYM / (S.m * S.q_r**2)}
+    )
+    assert sp.simplify(energy - d_gravity.E_SYM) == 0

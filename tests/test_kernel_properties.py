@@ -194,24 +194,20 @@ def default_options(row: dict) -> dict[str, float]:
     return out
 
 
-#: How the index documents a choice that needs a touchdown at the rest length (its kernels then
-#: give INVALID_INPUT for q_r_td != l0, e.g. the average leg length of (21) or (23)).
-REST_LENGTH_NOTE = "touchdown at l0"
+def _at_rest_length(option: dict, code: float) -> bool:
+    """Whether choice ``code`` of ``option`` needs touchdown at the rest length (index flag)."""
+    choices = option["choices"]
+    return code in range(len(choices)) and choices[int(code)]["value"] in option["at_rest_length"]
 
 
 def needs_rest_length(kernel: Kernel, env: dict) -> bool:
     """Whether the chosen options need q_r_td = l0 while the gait touches down shorter."""
-    if abs(env["q_r_td"] - env["l0"]) <= 1e-9 * env["l0"]:
+    if abs(env["q_r_td"] - env["l0"]) <= maps_index.REST_LENGTH_TOLERANCE * env["l0"]:
         return False
-    for option in kernel.options:
-        if option["kind"] == "choice" and option["name"] in env:
-            code = env[option["name"]]
-            if (
-                code in range(len(option["choices"]))
-                and REST_LENGTH_NOTE in option["choices"][int(code)]["doc"]
-            ):
-                return True
-    return False
+    return any(
+        option["kind"] == "choice" and option["name"] in env and _at_rest_length(option, env[option["name"]])
+        for option in kernel.options
+    )
 
 
 def forbidden_statuses(kernel: Kernel, env: dict) -> set[Status]:
@@ -469,7 +465,7 @@ REST_LENGTH_CHOICES = [
     for o in k.options
     if o["kind"] == "choice"
     for i, c in enumerate(o["choices"])
-    if REST_LENGTH_NOTE in c["doc"]
+    if c["value"] in o["at_rest_length"]
 ]
 
 

@@ -17,7 +17,7 @@ A check returns nothing and raises :class:`CheckFailed` (through :func:`expect_z
 :func:`expect_nonzero` or :func:`expect`) naming the condition that does not hold. :func:`run`
 turns a check into an :class:`Outcome`; :func:`main` runs them all (``slipmaps equations``).
 
-Entries are keyed by the report's equation number ("1" ... "45") or, for unnumbered displays, by
+Entries are keyed by the report's equation number ("1" ... "77") or, for unnumbered displays, by
 their section ("sec2.2.1-polar"). :func:`render_equation_table` gives docs/equations.md.
 """
 

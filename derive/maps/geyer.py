@@ -299,6 +299,41 @@ def _fields(*rows) -> Group:
     return Group("", tuple(Field(n, d, u) for n, d, u in rows))
 
 
+def inversion_stages() -> tuple[Stage, ...]:
+    """From lambda, mu, nu (named ``lam``, ``mu``, ``nu``) to omega0_hat, a, b and the touchdown phase.
+
+    Eqs (10)-(12) with their guards: a real amplitude, a bottom leg length above 0, the touchdown
+    leg length inside the oscillation. Shared by every radial solution of the form (9).
+    """
+    sol = solution_from_quadratic(_LAM, _MU, _NU)
+    ph = event_phases()
+    return (
+        Stage(
+            ((omega0_hat, sol["omega0_hat"]), (a, sol["a"]), (_B2, sol["b2"])),
+            (
+                Guard(
+                    _B2 > 0,
+                    "NO_REAL_SOLUTION",
+                    "eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0",
+                ),
+            ),
+            comment="eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)",
+        ),
+        Stage(
+            ((b, sp.sqrt(_B2)), (S_TD, leg_length_ratio(q_r_td))),
+            (
+                Guard(1 + a - b > 0, "FALL", "the leg collapses: l0 (1 + a - b) <= 0"),
+                Guard(sp.Abs(S_TD) <= 1, "TOUCHDOWN_OUTSIDE_OSCILLATION", "(12) needs |s_td| <= 1"),
+            ),
+            comment="eq (12): sin(phase) at touchdown",
+        ),
+        Stage(
+            ((PHASE_TD, ph["touchdown"].subs(ph["s"], S_TD)),),
+            comment="eq (12), n = 0: compressing root",
+        ),
+    )
+
+
 @cache
 def solution_kernel() -> Kernel:
     """Touchdown state -> omega, omega0_hat, a, b of (11) and the touchdown phase of (12)."""
@@ -307,8 +342,6 @@ def solution_kernel() -> Kernel:
     # the dimensionless touchdown state, then (9)'s lambda, mu, nu and (10)-(11)'s inversion.
     taylor_energy = sp.series(dimensionless_energy(), rho, 0, 3).removeO()
     lam_, mu_, nu_ = radial_quadratic()
-    sol = solution_from_quadratic(_LAM, _MU, _NU)
-    ph = event_phases()
     return Kernel(
         name="geyer_solution",
         summary="Geyer et al.'s radial solution (11) from a touchdown state: omega, omega0_hat, a, b, phase.",
@@ -334,29 +367,7 @@ def solution_kernel() -> Kernel:
                 ((_LAM, lam_.subs(to_w0sq)), (_MU, mu_.subs(to_w0sq)), (_NU, nu_)),
                 comment="eq (9): rho_d^2 = lambda rho^2 + mu rho + nu",
             ),
-            Stage(
-                ((omega0_hat, sol["omega0_hat"]), (a, sol["a"]), (_B2, sol["b2"])),
-                (
-                    Guard(
-                        _B2 > 0,
-                        "NO_REAL_SOLUTION",
-                        "eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0",
-                    ),
-                ),
-                comment="eq (10)-(11): frequency, offset, squared amplitude of rho = a + b sin(omega0_hat t)",
-            ),
-            Stage(
-                ((b, sp.sqrt(_B2)), (S_TD, leg_length_ratio(q_r_td))),
-                (
-                    Guard(1 + a - b > 0, "FALL", "the leg collapses: bottom leg length l0 (1 + a - b) <= 0"),
-                    Guard(sp.Abs(S_TD) <= 1, "TOUCHDOWN_OUTSIDE_OSCILLATION", "eq (12) needs |s_td| <= 1"),
-                ),
-                comment="eq (12): sin(phase) at touchdown",
-            ),
-            Stage(
-                ((PHASE_TD, ph["touchdown"].subs(ph["s"], S_TD)),),
-                comment="eq (12), n = 0: compressing root",
-            ),
+            *inversion_stages(),
         ),
         outputs=_fields(
             ("omega", "omega = p_th / (m l0^2), eq (7)", "rad/s"),
@@ -463,6 +474,16 @@ def state_kernel() -> Kernel:
     )
 
 
+def event_times(prefix: str = "") -> tuple[tuple[sp.Symbol, sp.Basic], ...]:
+    """``<prefix>t_bottom`` and ``<prefix>t_stance``: eqs (13)-(14) minus (12), times from touchdown."""
+    ph = event_phases()
+    w, ph_td = sym(prefix + "omega0_hat"), sym(prefix + "phase_td")
+    return (
+        (sym(prefix + "t_bottom"), (ph["bottom"] - ph_td) / w),
+        (sym(prefix + "t_stance"), (sym(prefix + "phase_lo") - ph_td) / w),
+    )
+
+
 def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
     """Steps of Geyer et al.'s map from the touchdown state with leg angle rate ``q_thd``.
 
@@ -476,7 +497,6 @@ def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
         return sym(prefix + name)
 
     params = {p: catalog.PARAMS[p].symbol for p in _STANCE_PARAMS}
-    ph = event_phases()
     states = event_states()
     names = {x: n(x.name) for x in (omega, omega0_hat, a, b, PHASE_TD, PHASE_LO, S_TD, S_LO)}
     bottom = dict(zip((f.name for f in catalog.POLAR), states["bottom"], strict=True))
@@ -497,8 +517,7 @@ def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
         ),
         Stage(
             (
-                (n("t_bottom"), (ph["bottom"] - n("phase_td")) / n("omega0_hat")),
-                (n("t_stance"), (n("phase_lo") - n("phase_td")) / n("omega0_hat")),
+                *event_times(prefix),
                 *((n(f"bottom_{q}"), e.subs(names)) for q, e in bottom.items()),
                 *((n(f"liftoff_{q}"), e.subs(names)) for q, e in liftoff.items()),
             ),

@@ -32,7 +32,7 @@ from functools import cache
 
 import sympy as sp
 
-from ..ir import Call, Field, Guard, Iterate, Stage, Step, Switch, real, sym
+from ..ir import Call, Field, Guard, Iterate, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import (
@@ -58,7 +58,6 @@ from . import geyer
 
 T_I, T_F = sym("t_i"), sym("t_f")
 E_SYM, P_SYM = sym("E"), sym("p")
-_PHI = sym("phi")
 
 
 # --------------------------------------------------------------------------------------------
@@ -104,18 +103,17 @@ def average_leg_length(source: str) -> sp.Basic:
 
 
 @cache
-def liftoff_radial_speed() -> tuple[sp.Basic, sp.Basic]:
+def liftoff_radial_speed() -> sp.Basic:
     """q_rd >= 0 at (q_r, q_th) with angular momentum p on the energy level E of (27).
 
-    Returns (radicand, q_rd): H(q_r, q_th, m q_rd, p) = E solved for q_rd, the extending root.
+    Returns q_rd^2 from H(q_r, q_th, m q_rd, p) = E; the extending root is its positive square root.
     """
     energy = mechanics.stance_energy().subs(q_thd, P_SYM / (m * q_r**2))
     # (27) is m q_rd^2 / 2 plus a q_rd-free rest, so H = E has the roots +-sqrt(2 (E - rest) / m).
     rest = energy.subs(q_rd, 0)
     if sp.simplify(energy - rest - m * q_rd**2 / 2) != 0:
         raise AssertionError("the stance energy (27) is not m q_rd^2/2 plus a q_rd-free part")
-    radicand = sp.expand(2 * (E_SYM - rest) / m)
-    return radicand, sp.sqrt(radicand)
+    return sp.expand(2 * (E_SYM - rest) / m)
 
 
 # --------------------------------------------------------------------------------------------
@@ -148,9 +146,10 @@ _LEG_LENGTH = Option(
     "eq11",
     choices=(
         ("eq11", "(11), eqs (55)-(57) and (67)-(68) (their printed forms lack an l0 on the b term)"),
-        ("eq21", "(21), eqs (58)-(59) and (70)-(72); needs touchdown at l0 (else INVALID_INPUT)"),
-        ("eq23", "(23), eqs (60)-(61) and (73)-(75); needs touchdown at l0 (else INVALID_INPUT)"),
+        ("eq21", "(21), eqs (58)-(59) and (70)-(72); touchdown at l0 only"),
+        ("eq23", "(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only"),
     ),
+    at_rest_length=("eq21", "eq23"),
 )
 _INTERVAL = Option(
     "interval",
@@ -321,7 +320,7 @@ def touchdown_invariants() -> Stage:
 def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step, ...]:
     """``liftoff_q_rd`` on the touchdown's energy level E_td at (q_r_lo, ``angle``, ``momentum``);
     status ENERGY_DEFICIT where the approximate liftoff state needs more energy than there is."""
-    radicand, _ = liftoff_radial_speed()
+    radicand = liftoff_radial_speed()
     at_lo = {q_r: q_r_lo, q_th: angle, P_SYM: momentum, E_SYM: sym("E_td")}
     square = sym("_q_rd_lo_sq")
     return (
@@ -331,15 +330,6 @@ def liftoff_speed_from_energy(angle: sp.Basic, momentum: sp.Basic) -> tuple[Step
         ),
         Stage(((sym("liftoff_q_rd"), sp.sqrt(square)),), comment="q_rd_lo from the energy"),
     )
-
-
-def _leg_length_domain(inp: MapInputs) -> tuple[Step, ...]:
-    """(21) and (23) assume touchdown at the rest length: their choices need q_r_td = l0."""
-    if "leg_length" not in inp.options:
-        return ()
-    at_rest = sp.Abs(real(q_r_td) - real(l0)) <= 1e-9 * real(l0)
-    condition = sp.Or(inp.options["leg_length"].is_("eq11"), at_rest)
-    return (Stage((), (Guard(condition, "INVALID_INPUT", "leg_length eq21 / eq23 need q_r_td = l0"),)),)
 
 
 def _constant_correction(kind: int):
@@ -356,7 +346,6 @@ def _constant_correction(kind: int):
 
         setup: tuple[Step, ...] = (
             touchdown_invariants(),
-            *_leg_length_domain(inp),
             Switch(
                 inp.opt("reading"),
                 (

@@ -16,8 +16,8 @@ the momentum P(t) = p_td + int_0^t tau is a cubic (T5.2) instead of Geyer's cons
 - liftoff (T5.7): rate P(t_lo) / (m q_r_lo^2), radial speed from the exact energy (27);
 - fixed point (T5.8) on the nodal torques, the stance time, g_eff and r_c, from Geyer's map.
 
-A prototype study (docs/accuracy.md) measured the simpler design (Geyer's linearized rate with the
-cubic momentum) at 7 % mean error on the Yu protocol, worse than type 2: resolving P(t) exposes
+A prototype study (docs/type5.md) measured the simpler design (Geyer's linearized rate with the
+cubic momentum) at 6.9 % mean error on the Yu protocol, worse than type 2: resolving P(t) exposes
 the error of Geyer's 1 - 2 rho, so the radial solution must improve with it.
 """
 
@@ -154,9 +154,6 @@ def leg_angle() -> sp.Basic:
 def solution_kernel() -> Kernel:
     """T5.5 from the touchdown radial state: omega0_hat, a, b, touchdown phase (guards as Geyer's)."""
     lam_, mu_, nu_ = quadratic_at_touchdown()
-    sol = geyer.solution_from_quadratic(LAM, MU, NU)
-    ph = geyer.event_phases()
-    b2, s_td = sym("b2"), sym("s_td")
     return Kernel(
         name="type5_solution",
         summary="Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff.",
@@ -173,20 +170,7 @@ def solution_kernel() -> Kernel:
             Stage(((sym("omega0_sq"), k / m),), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING"),)),
             Stage(((LAM, lam_), (MU, mu_)), comment="T5.4: the quadratic about r_c with g_eff"),
             Stage(((NU, nu_),), comment="T5.5: through the touchdown point"),
-            Stage(
-                ((W_HAT, sol["omega0_hat"]), (A_, sol["a"]), (b2, sol["b2"])),
-                (Guard(b2 > 0, "NO_REAL_SOLUTION", "T5.5: real amplitude"),),
-            ),
-            Stage(
-                ((B_, sp.sqrt(b2)), (s_td, (q_r_td / l0 - 1 - A_) / B_)),
-                (
-                    Guard(
-                        1 + A_ - B_ > 0, "FALL", "the leg collapses: bottom leg length l0 (1 + a - b) <= 0"
-                    ),
-                    Guard(sp.Abs(s_td) <= 1, "TOUCHDOWN_OUTSIDE_OSCILLATION", "eq (12) needs |s_td| <= 1"),
-                ),
-            ),
-            Stage(((PH_TD, ph["touchdown"].subs(ph["s"], s_td)),)),
+            *geyer.inversion_stages(),
         ),
         outputs=Group(
             "",
@@ -195,6 +179,7 @@ def solution_kernel() -> Kernel:
                 Field("a", "offset of rho(t)"),
                 Field("b", "amplitude of rho(t)"),
                 Field("phase_td", "touchdown phase", "rad"),
+                Field("s_td", "sin(phase_td)"),
             ),
         ),
         check_inputs=False,
@@ -220,7 +205,7 @@ def leg_angle_kernel() -> Kernel:
     return Kernel(
         name="type5_leg_angle",
         summary="Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2).",
-        equations=("47",),
+        equations=("17", "18", "19"),
         args=args,
         steps=(Stage(((sym("q_th"), leg_angle()),)),),
         outputs=Group("", (Field("q_th", "leg angle", "rad"),)),
@@ -228,6 +213,15 @@ def leg_angle_kernel() -> Kernel:
         check_inputs=False,
         module="gravity_type5",
     )
+
+
+def _angle_call(prefix: str, time: sp.Basic, out: str) -> Call:
+    """T5.6 at ``time`` for the trajectory named by ``prefix``, bound to ``out``."""
+    args = {
+        name: sym(prefix + name) for name in ("c0", "c1", "c2", "k0", "k1", "k2", "omega0_hat", "phase_td")
+    }
+    args.update({"t": time, "q_th_td": q_th_td, "p_td": P_TD, "m": m, "l0": l0})
+    return Call(leg_angle_kernel(), args, {"q_th": out})
 
 
 def _trajectory(prefix: str) -> tuple[Step, ...]:
@@ -239,22 +233,8 @@ def _trajectory(prefix: str) -> tuple[Step, ...]:
     c0, c1, c2 = torque_quadratic()
     k0, k1, k2 = rate_factor()
     sol, lo = solution_kernel(), geyer.liftoff_phase_kernel()
-    ph = geyer.event_phases()
-    angle = leg_angle_kernel()
     names = {A_: n("a"), B_: n("b")}
     radius = l0 * (1 + n("a") + n("b") * sp.sin(n("omega0_hat") * U + n("phase_td")))
-
-    def angle_call(time, out):
-        return Call(
-            angle,
-            {
-                "t": time, "q_th_td": q_th_td, "p_td": P_TD, "c0": n("c0"), "c1": n("c1"), "c2": n("c2"),
-                "k0": n("k0"), "k1": n("k1"), "k2": n("k2"), "omega0_hat": n("omega0_hat"),
-                "phase_td": n("phase_td"), "m": m, "l0": l0,
-            },
-            {"q_th": out},
-        )  # fmt: skip
-
     t_nodes = nodes(n("t_stance"))
     return (
         Stage(
@@ -288,15 +268,14 @@ def _trajectory(prefix: str) -> tuple[Step, ...]:
         Call(lo, {"a": n("a"), "b": n("b"), "l0": l0, "q_r_lo": q_r_lo}, {"phase_lo": prefix + "phase_lo"}),
         Stage(
             (
-                (n("t_bottom"), (ph["bottom"] - n("phase_td")) / n("omega0_hat")),
-                (n("t_stance"), (n("phase_lo") - n("phase_td")) / n("omega0_hat")),
-                (n("k0"), k0.subs({R_C: R_C, **names})),
+                *geyer.event_times(prefix),
+                (n("k0"), k0.subs(names)),
                 (n("k1"), k1.subs(names)),
                 (n("k2"), k2.subs(names)),
             ),
             comment="eqs (13)-(14) minus (12); T5.6: the rate factor",
         ),
-        *(angle_call(ti, prefix + f"th{i + 1}") for i, ti in enumerate(t_nodes)),
+        *(_angle_call(prefix, ti, prefix + f"th{i + 1}") for i, ti in enumerate(t_nodes)),
         Stage(
             (
                 *(
@@ -344,18 +323,9 @@ def _build(inp: MapInputs) -> MapBuild:
         for name in ("a", "b", "omega0_hat", "phase_td", "t_bottom", "t_stance", "c0", "c1", "c2")
     }
     p_of = momentum(U).subs({C[0]: f["c0"], C[1]: f["c1"], C[2]: f["c2"]})
-    angle = leg_angle_kernel()
 
     def angle_at(time, out):
-        return Call(
-            angle,
-            {
-                "t": time, "q_th_td": q_th_td, "p_td": P_TD, "c0": f["c0"], "c1": f["c1"], "c2": f["c2"],
-                "k0": sym("f_k0"), "k1": sym("f_k1"), "k2": sym("f_k2"), "omega0_hat": f["omega0_hat"],
-                "phase_td": f["phase_td"], "m": m, "l0": l0,
-            },
-            {"q_th": out},
-        )  # fmt: skip
+        return _angle_call("f_", time, out)
 
     q_r_b = l0 * (1 + f["a"] - f["b"])
     outputs = (

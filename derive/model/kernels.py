@@ -9,9 +9,9 @@ from functools import cache
 
 import sympy as sp
 
-from ..catalog import PARAMS, POLAR
+from ..catalog import APEX_ARGS, PARAMS, POLAR
 from ..ir import Arg, Field, Group, Guard, Kernel, Module, Stage, positive, real, sym
-from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_y_apex, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
+from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
 from . import flight, mechanics
 
 #: Liftoff with a horizontal speed below -BACKWARD_TOLERANCE * sqrt(g_f q_r) is backward; a vertical
@@ -123,21 +123,17 @@ def flight_kernels() -> dict[str, Kernel]:
     atd = flight.apex_to_touchdown()
     drop = atd["drop_symbol"]
     r_out, rd_out, th_out, thd_out = atd["state"]
-    q_r_td, q_th_td = PARAMS["q_r_td"].symbol, sym("q_th_td")
+    q_r_td = PARAMS["q_r_td"].symbol
     apex_to_td = Kernel(
         name="apex_to_touchdown",
         summary="Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td).",
         equations=("sec2.1-touchdown", "sec2.2.2"),
         args=(
-            Arg(b_y_apex, "apex height of the body above the ground [m], >= 0", real(b_y_apex) >= 0),
+            APEX_ARGS[0],
             Arg(b_xd_apex, "horizontal apex speed [m/s]"),
-            Arg(
-                q_th_td,
-                "touchdown leg angle from the vertical [rad], |q_th_td| < pi/2",
-                sp.Abs(q_th_td) < sp.pi / 2,
-            ),
-            Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),
-            Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive", positive(g_f)),
+            APEX_ARGS[2],
+            Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),  # l0 is not an argument here
+            PARAMS["g_f"],
         ),
         steps=(
             Stage(
@@ -177,7 +173,7 @@ def flight_kernels() -> dict[str, Kernel]:
         args=(
             Arg(q_r, "liftoff leg length q_r [m], > 0", positive(q_r)),
             *_POLAR_ARGS[1:],
-            Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive", positive(g_f)),
+            PARAMS["g_f"],
         ),
         steps=(
             Stage(
