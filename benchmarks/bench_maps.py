@@ -133,6 +133,17 @@ def run(n: int, repeat: int) -> dict:
                 "median_passes": float(np.median(passes)) if passes is not None and passes.size else None,
             }
         )
+
+    # (d) cost against the number of passes of the iterative maps (tol = 0: exactly n passes)
+    from slipmaps.runtime import convergence, index
+
+    out["passes"] = []
+    for name in convergence.study_maps():
+        has_tol = any(o.name == "tol" for o in index.get(name).options)
+        for k in convergence.PASSES:
+            opts = {"iterations": k, **({"tol": 0.0} if has_tol else {})}
+            t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
+            out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
     return out
 
 
@@ -162,6 +173,13 @@ def report(r: dict) -> str:
             f"    {m['map']:<16}{m['stance_ns']:>10.1f}{m['apex_return_ns']:>13.1f}"
             f"{m['speedup_vs_solve_ivp']:>13.3g}{m['ok_fraction']:>7.2f}{passes:>8}"
         )
+    if r.get("passes"):
+        lines += ["", "(d) iterative maps: stance ns per state against the number of passes n (tol = 0):"]
+        for name in dict.fromkeys(row["map"] for row in r["passes"]):
+            rows = [row for row in r["passes"] if row["map"] == name]
+            lines.append(
+                f"    {name:<18}" + " ".join(f"n={row['n']}: {row['stance_ns']:.0f}" for row in rows)
+            )
     return "\n".join(lines)
 
 

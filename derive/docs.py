@@ -40,6 +40,19 @@ def maps_table(index: dict) -> str:
         lines.append(f"| `{row['name']}` | {row['section']} | {row['title']} | {req} | {_options(row)} |")
     e = index["EXACT"]
     lines.append(f"| `{e['name']}` | {e['section']} | {e['title']} | - | {_options(e)} |")
+    if index["HALVES"]:
+        lines += [
+            "",
+            "Half-stance maps (`slipmaps.half_stance`; a controller can choose k_d between the halves):",
+            "",
+            "| half map | report | title | from -> to | options |",
+            "| --- | --- | --- | --- | --- |",
+        ]
+        for row in index["HALVES"]:
+            lines.append(
+                f"| `{row['name']}` | {row['section']} | {row['title']} | {row['start']} -> {row['end']} "
+                f"| {_options(row)} |"
+            )
     return "\n".join(lines) + "\n"
 
 
@@ -77,6 +90,16 @@ def maps_page(index: dict) -> str:
             f"- generated module `slipmaps.generated.{row['module']}`: "
             + ", ".join(f"`{k}`" for k in row["kernels"].values() if k),
         ]
+        if row["as_printed"]:
+            out.append(
+                "- as printed: reproduces the report's formulas, errors included, to measure them; "
+                "no accuracy claim"
+            )
+        if row["approximation_statuses"]:
+            out.append(
+                "- statuses of the approximation itself (on gaits the exact stance completes): "
+                + ", ".join(f"`{s}`" for s in row["approximation_statuses"])
+            )
         if row["extras"]:
             out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))
         for o in row["options"]:
@@ -93,4 +116,42 @@ def maps_page(index: dict) -> str:
                     f"- option `{o['name']}` ({o['kind']}{bounds}, default {o['default']}): {o['doc']}"
                 )
         out.append("")
+    out += _halves_page(index)
     return "\n".join(out).rstrip("\n") + "\n"
+
+
+def _halves_page(index: dict) -> list[str]:
+    if not index["HALVES"]:
+        return []
+    out = [
+        "# Half-stance maps",
+        "",
+        "A half-stance map runs one half of the stance: from the touchdown state to the bottom "
+        "(compression, k_c) or from a bottom state to liftoff (decompression, k_d; the bottom state's "
+        "q_rd is not read). `slipmaps.half_stance(name, params, state, **options)` and "
+        "`half_stance_batch` call it; a controller that switches the stiffness at the bottom calls the "
+        "two halves in turn. Outputs: "
+        + ", ".join(f"`{r['name']}` [{r['unit']}]" for r in index["HALF_OUTPUTS"])
+        + ".",
+        "",
+    ]
+    for row in index["HALVES"]:
+        out += [
+            f"## `{row['name']}`: {row['title']}",
+            "",
+            f"Report section {row['section']}; equations {', '.join(row['equations'])}; a half of "
+            f"`{row['whole']}`, {row['start']} -> {row['end']}.",
+            "",
+        ]
+        if row["summary"]:
+            out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
+        out += [
+            f"- arguments: {', '.join(f'`{a}`' for a in row['args'])}",
+            f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernel']}`, "
+            f"`{row['kernel']}_batch`",
+        ]
+        if row["extras"]:
+            out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))
+        out += [f"- option `{o['name']}` (default `{o['default']}`): {o['doc']}" for o in row["options"]]
+        out.append("")
+    return out

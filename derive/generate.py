@@ -25,7 +25,7 @@ from . import docs
 from .equations import render_equation_table
 from .ir import Module
 from .lower import lower
-from .maps import all_maps
+from .maps import all_halves, all_maps
 from .mapspec import MapSpec
 from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import flight_kernels
@@ -54,7 +54,8 @@ def _require_checkout() -> None:
 def modules() -> tuple[Module, ...]:
     """Every generated kernel module, callees before callers."""
     flights = flight_kernels()
-    return MODEL_MODULES + tuple(spec.module(flights) for spec in all_maps())
+    maps = tuple(spec.module(flights) for spec in all_maps())
+    return MODEL_MODULES + maps + tuple(half.module() for half in all_halves())
 
 
 def _render_module(mod: Module, files: dict[str, str]) -> str:
@@ -81,6 +82,7 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
 
 def _index(specs: tuple[MapSpec, ...]) -> dict:
     from . import catalog
+    from .halfspec import HALF_OUTPUTS
 
     def rows(group) -> list[dict]:
         return [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in group.fields()]
@@ -89,9 +91,15 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
         "STANCE_OUTPUTS": rows(catalog.STANCE),
         "APEX_OUTPUTS": rows(catalog.APEX_RETURN),
         "TRAJECTORY_OUTPUTS": rows(catalog.TRAJECTORY),
-        "GROUPS": {**catalog.STANCE.subgroups(), **catalog.APEX_RETURN.subgroups()},
+        "HALF_OUTPUTS": rows(HALF_OUTPUTS),
+        "GROUPS": {
+            **catalog.STANCE.subgroups(),
+            **catalog.APEX_RETURN.subgroups(),
+            **HALF_OUTPUTS.subgroups(),
+        },
         "TOUCHDOWN": [a.name for a in catalog.TOUCHDOWN],
         "MAPS": [s.index_row() for s in specs],
+        "HALVES": [h.index_row() for h in all_halves()],
         "EXACT": catalog.EXACT,
         "REST_LENGTH_TOLERANCE": catalog.REST_LENGTH_TOLERANCE,
     }

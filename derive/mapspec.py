@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import catalog
-from .ir import Arg, Batch, Call, Field, Group, Guard, Kernel, Module, Stage, Step, real, sym
+from .ir import STATUS, Arg, Batch, Call, Field, Group, Guard, Kernel, Module, Stage, Step, real, sym
 
 
 @dataclass(frozen=True)
@@ -167,12 +167,21 @@ class MapSpec:
     #: faster batches for a small body, but every caller compiles it again (measured: 2-3x the
     #: compile time of the gravity maps' large, iterating bodies), so a map opts in.
     inline: bool = False
+    #: Statuses the approximation itself returns on gaits the exact stance completes (for example
+    #: IMAGINARY_MOMENTUM where an iterate's H^{-1} of (33) is imaginary); listed in docs/maps.md.
+    approximation_statuses: tuple[str, ...] = ()
+    #: The map reproduces the report's printed formulas, errors included, to measure them: it makes
+    #: no accuracy claim (the tests over every map check its contract, not its accuracy).
+    as_printed: bool = False
     _cache: dict = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self):
         unknown = [p for p in self.params if p not in catalog.PARAMS]
         if unknown:
             raise ValueError(f"map {self.name}: unknown parameter(s) {unknown}")
+        unknown = [s for s in self.approximation_statuses if s not in STATUS]
+        if unknown:
+            raise ValueError(f"map {self.name}: unknown status(es) {unknown}")
         if "k" in self.params and "constant_stiffness" not in self.requires:
             raise ValueError(
                 f"map {self.name}: a map with the single stiffness k requires constant_stiffness"
@@ -327,6 +336,8 @@ class MapSpec:
             "options": [o.index_row() for o in self.options],
             "module": self.ident,
             "summary": self.summary,
+            "as_printed": self.as_printed,
+            "approximation_statuses": list(self.approximation_statuses),
             "kernels": {
                 "stance": stance.name,
                 "state_at": state_at.name if state_at else None,

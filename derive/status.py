@@ -52,4 +52,10 @@ STATUS_CODES: tuple[tuple[str, int, str], ...] = (
         14,
         "the approximate liftoff state needs more energy than the touchdown state has (no real q_rd_lo)",
     ),
+    (
+        "IMAGINARY_MOMENTUM",
+        15,
+        "the radial momentum p_r of an iterate is imaginary (H^{-1} of (33) or the radial work < 0: the "
+        "iterate overshoots the turning point)",
+    ),
 )

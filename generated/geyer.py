@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:2991b07b7a7d4727
+#   flight.py sha256:c042f0c9cf6a9745
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
 
@@ -31,6 +31,7 @@ STATUS_INTEGRATION_FAILED = 11
 STATUS_NUMERICAL_RANGE = 12
 STATUS_NOT_CONVERGED = 13
 STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:2991b07b7a7d4727
-#   geyer.py sha256:c9f5b19f3aba51c1
+#   flight.py sha256:c042f0c9cf6a9745
+#   geyer.py sha256:b93d5e8ad96a402f
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels."""
 
@@ -33,6 +33,7 @@ STATUS_INTEGRATION_FAILED = 11
 STATUS_NUMERICAL_RANGE = 12
 STATUS_NOT_CONVERGED = 13
 STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")

@@ -32,6 +32,7 @@ class Status(IntEnum):
     NUMERICAL_RANGE = 12
     NOT_CONVERGED = 13
     ENERGY_DEFICIT = 14
+    IMAGINARY_MOMENTUM = 15
 
 
 #: Human-readable message for each status code.
@@ -51,4 +52,5 @@ MESSAGES = {
     12: "an output overflowed or is NaN (inputs far outside a physical range)",
     13: "the fixed-point iteration did not converge within its bound (raise iterations or tol)",
     14: "the approximate liftoff state needs more energy than the touchdown state has (no real q_rd_lo)",
+    15: "the radial momentum p_r of an iterate is imaginary (H^{-1} of (33) or the radial work \u003c 0: the iterate overshoots the turning point)",
 }

@@ -49,12 +49,15 @@ class Variant:
     map: str
     options: tuple[tuple[str, object], ...] = ()
     default: bool = True
+    #: "" for the accuracy tables; "convergence" for the pass-count study (docs/convergence.md).
+    study: str = ""
 
     @property
     def label(self) -> str:
         if not self.options:
             return self.map
-        return f"{self.map} [{', '.join(f'{k}={v}' for k, v in self.options)}]"
+        study = f"{self.study}: " if self.study else ""
+        return f"{self.map} [{study}{', '.join(f'{k}={v}' for k, v in self.options)}]"
 
     @property
     def kwargs(self) -> dict:
@@ -88,8 +91,9 @@ def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
                     out.append(Variant(name, tuple(chosen.items()), default=False))
         elif "iterations" in opts:
             for passes in (ONE_PASS, FIXED_POINT):
-                if any(info.resolve({})[k] != v for k, v in passes.items()):
-                    out.append(Variant(name, tuple(passes.items()), default=False))
+                chosen = {k: v for k, v in passes.items() if k in opts}
+                if any(info.resolve({})[k] != v for k, v in chosen.items()):
+                    out.append(Variant(name, tuple(chosen.items()), default=False))
         for o in info.options:
             if o.name in ("reading", "iterations", "tol"):
                 continue

@@ -26,7 +26,7 @@ SYMMETRIC_RATIO = 1.10
 YU_TARGET = {"mean_60_65": 0.02, "mean_all": 0.05, "max": 0.10}
 
 
-def summarize(runs: list[GridRun]) -> list[dict]:
+def summarize(runs: list[GridRun], study: str = "") -> list[dict]:
     """Per grid: its facts and the statistics of every variant, as JSON-ready data (6 digits).
 
     The markdown is rendered from this data (:func:`render_markdown`), so docs/accuracy.md is a
@@ -35,7 +35,9 @@ def summarize(runs: list[GridRun]) -> list[dict]:
     out = []
     for run in runs:
         g = run.grid
-        stats = [variant_stats(run, label).__dict__ for label in run.results]
+        stats = [
+            variant_stats(run, label).__dict__ for label, r in run.results.items() if r[0].study == study
+        ]
         out.append(
             {
                 "name": g.name,
@@ -356,18 +358,35 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
 
 
 def write(out: str | Path = "docs/accuracy.md", map_names=None, show_progress=None) -> list[Path]:
-    """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files."""
+    """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
+    ``out`` (+ .json, .png) and, where iterative maps are measured, the convergence study beside it
+    (convergence.md, .json, .png; runtime/convergence.py)."""
+    from . import convergence
+
     names = None
     if map_names is not None:
         names = ["geyer", *[n for n in map_names if n != "geyer"]]
         for n in names:
             get(n)
-    runs = measure_all(variants(names), show_progress=show_progress)
-    text = to_json(summarize(runs))
+    study = convergence.variants(names)
+    runs = measure_all(variants(names) + study, show_progress=show_progress)
     md = Path(out)
     md.parent.mkdir(parents=True, exist_ok=True)
-    js = md.with_suffix(".json")
-    js.write_text(text, encoding="utf-8")
-    md.write_text(render_markdown(from_json(text), md.with_suffix(".png").name), encoding="utf-8")
-    png = figure(runs, md.with_suffix(".png"))
-    return [md, js, png]
+    written = []
+    for stem, summary_of, render, draw in (
+        (md, "", render_markdown, figure),
+        (
+            md.with_name("convergence.md" if map_names is None else f"convergence_{md.stem}.md"),
+            convergence.STUDY,
+            convergence.render_markdown,
+            convergence.figure,
+        ),
+    ):
+        if summary_of and not study:
+            continue
+        text = to_json(summarize(runs, summary_of))
+        js = stem.with_suffix(".json")
+        js.write_text(text, encoding="utf-8")
+        stem.write_text(render(from_json(text), stem.with_suffix(".png").name), encoding="utf-8")
+        written += [stem, js, draw(runs, stem.with_suffix(".png"))]
+    return written

@@ -3,9 +3,11 @@
 Subcommands:
 
 - ``maps [--json]``: the maps of the index (name, title, report section, equations, requirements,
-  options);
+  options), then the half-stance maps;
 - ``compare [--map NAME] [--against NAME] [--option KEY=VALUE ...]``: the main job, one step by two
-  maps from the same touchdown (default Geyer et al. against the exact simulator): table + plot;
+  maps from the same touchdown (default Geyer et al. against the exact simulator): table + plot; a
+  half-stance map is compared with the same half of --against (from its bottom for a decompression
+  half);
 - ``accuracy [--map NAME|all]``: every map against the exact simulator on the accuracy grids,
   written to docs/accuracy.md (+ .json, .png);
 - ``equations [--json]``: run the symbolic check of every registered report equation;
@@ -67,9 +69,9 @@ def _params(args: argparse.Namespace) -> SlipParams:
 
 def _options(name: str, pairs: list[str] | None) -> dict:
     """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
-    from .index import get
+    from .index import get, get_half, halves
 
-    info = get(name)
+    info = get_half(name) if name in {h.name for h in halves()} else get(name)
     out = {}
     for pair in pairs or ():
         key, sep, value = pair.partition("=")
@@ -153,18 +155,23 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _cmd_maps(args: argparse.Namespace) -> int:
-    from .index import maps
+    from .index import halves, maps
 
-    rows = maps()
+    rows = maps() + halves()
     if args.json:
         print(json.dumps([m.as_dict() for m in rows], indent=2))
         return 0
+    w = max(len(m.name) for m in rows) + 1
     for m in rows:
-        print(f"{m.name:<16} {m.section:<5} {m.title}")
-        print(f"{'':<16} equations {', '.join(m.equations)}; requires {', '.join(m.requires) or 'nothing'}")
+        print(f"{m.name:<{w}} {m.section:<6} {m.title}")
+        if getattr(m, "whole", ""):
+            where = f"half of {m.whole}: {m.start} -> {m.end} (slipmaps.half_stance)"
+        else:
+            where = f"requires {', '.join(m.requires) or 'nothing'}"
+        print(f"{'':<{w}} equations {', '.join(m.equations)}; {where}")
         for o in m.options:
             kind = "|".join(o.choices) if o.kind == "choice" else o.kind
-            print(f"{'':<16} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
+            print(f"{'':<{w}} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
     return 0
 
 

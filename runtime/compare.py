@@ -16,7 +16,7 @@ import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
 from . import flight, index
-from .maps import stance, trajectory
+from .maps import half_stance, stance, trajectory
 from .params import SlipParams
 from .quantities import QUANTITIES
 from .results import Result
@@ -68,6 +68,8 @@ class Comparison:
     map: Side
     against: Side
     rows: tuple[Row, ...] = field(default=())
+    #: A half-stance map compared (``touchdown`` is then its start state: touchdown or bottom).
+    half: index.HalfInfo | None = None
 
     def to_dict(self) -> dict:
         return {
@@ -124,7 +126,8 @@ def compare(
 ) -> Comparison:
     """One step by ``map`` and by ``against`` from an apex (height, speed, touchdown angle) or a
     polar touchdown state. ValueError when there is no touchdown or a map refuses the parameters."""
-    for name in (map, against):
+    half = next((h for h in index.halves() if h.name == map), None)
+    for name in (map, against) if half is None else (against,):
         index.get(name).param_values(params)  # ValueError naming the requirement, before any work
     if touchdown is not None:
         if apex_height is not None or apex_speed is not None or touchdown_angle is not None:
@@ -141,10 +144,51 @@ def compare(
         )
         if status != Status.OK:
             raise ValueError(f"no touchdown from apex {apex}: {MESSAGES[int(status)]}")
-    mine = _side(map, params, td, dict(options or {}))
     ref = _side(against, params, td, dict(against_options or {}))
+    if half:
+        return _compare_half(params, td, half, ref, dict(options or {}))
+    mine = _side(map, params, td, dict(options or {}))
     rows = tuple(Row(q.label, q.unit, ref.value(q.key), mine.value(q.key)) for q in QUANTITIES)
     return Comparison(params, td, mine, ref, rows)
+
+
+#: A half-stance map's outputs against the whole stance's: (label, unit, half key, stance keys).
+_HALF_ROWS = (
+    ("half time", "s", "t_half"),
+    ("end leg length q_r", "m", "end_q_r"),
+    ("end leg rate q_rd", "m/s", "end_q_rd"),
+    ("end leg angle q_th", "rad", "end_q_th"),
+    ("end angle rate q_thd", "rad/s", "end_q_thd"),
+)
+
+
+def _compare_half(params: SlipParams, td, half: index.HalfInfo, ref: Side, options: dict) -> Comparison:
+    """A half-stance map against the reference's same half: the compression half from the touchdown
+    state against the reference's bottom; the decompression half from the reference's bottom
+    state against its liftoff (so only the half itself differs)."""
+    whole = ref.stance.values
+    if half.start == "touchdown":
+        start, t_ref = td, whole.get("t_bottom", math.nan)
+    else:
+        start = tuple(whole.get(f"bottom_{q}", math.nan) for q in ("q_r", "q_rd", "q_th", "q_thd"))
+        t_ref = whole.get("t_stance", math.nan) - whole.get("t_bottom", math.nan)
+    if ref.stance.ok:
+        res = half_stance(half.name, params, start, **options)
+    else:  # no reference bottom to start from
+        res = None
+    status = res.status if res is not None else ref.status
+    values = dict(res.values) if res is not None else {}
+    mine = Side(half.name, options, res or ref.stance, status, (math.nan, math.nan))
+    rows = tuple(
+        Row(
+            label,
+            unit,
+            t_ref if key == "t_half" else whole.get(f"{half.end}_{key[4:]}", math.nan),
+            values.get(key, math.nan),
+        )
+        for label, unit, key in _HALF_ROWS
+    )
+    return Comparison(params, tuple(start), mine, ref, rows, half=half)
 
 
 def _fmt(x: float, spec: str) -> str:
@@ -152,7 +196,8 @@ def _fmt(x: float, spec: str) -> str:
 
 
 def _title(side: Side) -> str:
-    info = index.get(side.map)
+    halves = {h.name: h for h in index.halves()}
+    info = halves[side.map] if side.map in halves else index.get(side.map)
     opts = ", ".join(f"{k}={v}" for k, v in side.options.items())
     return f"{side.map} ({info.title}, report {info.section}{'; ' + opts if opts else ''})"
 
@@ -164,7 +209,8 @@ def format_table(c: Comparison) -> str:
     lines = [
         f"SLIP step: m={p.m:g} kg, l0={p.l0:g} m, k_c={p.k_c:g} N/m, k_d={p.k_d:g} N/m, "
         f"g_s={p.g_s:g}, g_f={p.g_f:g} m/s^2, q_r_td={p.q_r_td:g} m, q_r_lo={p.q_r_lo:g} m",
-        f"touchdown: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s",
+        f"{c.half.start if c.half else 'touchdown'}: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, "
+        f"q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s",
         f"reference: {_title(c.against)}: {MESSAGES[int(c.against.status)]}",
         f"map:       {_title(c.map)}: {MESSAGES[int(c.map.status)]}",
         "",
@@ -187,13 +233,32 @@ def plot(c: Comparison, path: str) -> str:
     import matplotlib.pyplot as plt
 
     fig, axes = plt.subplots(2, 1, figsize=(7.5, 6.5), sharex=True)
-    for side, style in ((c.against, dict(color="k", ls="-", lw=2)), (c.map, dict(color="C1", ls="--", lw=2))):
+    sides = ((c.against, dict(color="k", ls="-", lw=2)), (c.map, dict(color="C1", ls="--", lw=2)))
+    if c.half is not None:
+        sides = sides[:1]
+        if c.map.status == Status.OK:  # the half's start and end states, marked
+            t0 = 0.0 if c.half.start == "touchdown" else c.against.stance.t_bottom
+            t = np.array([t0, t0 + c.map.stance["t_half"]])
+            states = np.array([c.touchdown, c.map.stance["end"]])
+            label = f"{c.map.map} ({c.half.title})"
+            for ax, j in ((axes[0], 0), (axes[1], 2)):
+                ax.plot(t, states[:, j], "o:", color="C1", ms=7, label=label)
+    for side, style in sides:
         if not side.stance.ok:
             continue
-        t, states, _ = trajectory(side.map, c.params, c.touchdown, **side.options)
+        info = index.get(side.map)
+        label = f"{side.map} ({info.title})"
+        if info.generated and info.kernels["state_at"] is None:
+            # a map with event states only: touchdown, bottom and liftoff, marked
+            st = side.stance
+            t = np.array([0.0, st.t_bottom, st.t_stance])
+            states = np.array([c.touchdown, st.bottom, st.liftoff])
+            style = {**style, "marker": "o", "ls": ":"}
+            label += ", event states only"
+        else:
+            t, states, _ = trajectory(side.map, c.params, c.touchdown, **side.options)
         if t.size:
             ok = np.all(np.isfinite(states), axis=1)
-            label = f"{side.map} ({index.get(side.map).title})"
             axes[0].plot(t[ok], states[ok, 0], label=label, **style)
             axes[1].plot(t[ok], states[ok, 2], label=label, **style)
     axes[0].set_ylabel("leg length q_r [m]")

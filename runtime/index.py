@@ -18,7 +18,7 @@ from slipmaps.generated import maps_index
 from .params import SlipParams
 from .validate import check_params
 
-__all__ = ["EXACT", "MapInfo", "Option", "get", "maps", "names"]
+__all__ = ["EXACT", "MapInfo", "HalfInfo", "Option", "get", "get_half", "halves", "maps", "names"]
 
 EXACT = "exact"
 
@@ -86,6 +86,10 @@ class MapInfo:
     module: str | None = None
     kernels: dict | None = None
     extras: tuple[str, ...] = ()
+    #: Reproduces the report's printed formulas, errors included: no accuracy claim.
+    as_printed: bool = False
+    #: Statuses the approximation itself returns on gaits the exact stance completes.
+    approximation_statuses: tuple[str, ...] = ()
 
     @property
     def generated(self) -> bool:
@@ -135,7 +139,22 @@ class MapInfo:
             "options": [o.as_dict() for o in self.options],
             "summary": self.summary,
             "extras": list(self.extras),
+            "as_printed": self.as_printed,
+            "approximation_statuses": list(self.approximation_statuses),
         }
+
+
+@dataclass(frozen=True)
+class HalfInfo(MapInfo):
+    """One half-stance map of the index (``HALVES``): from ``start`` ("touchdown" or "bottom") to
+    ``end`` ("bottom" or "liftoff"), a half of the whole-stance map ``whole``."""
+
+    whole: str = ""
+    start: str = ""
+    end: str = ""
+
+    def as_dict(self) -> dict:
+        return {**super().as_dict(), "whole": self.whole, "start": self.start, "end": self.end}
 
 
 def _option(row: dict) -> Option:
@@ -164,6 +183,8 @@ def _info(r: dict) -> MapInfo:
         module=r["module"],
         kernels=dict(r["kernels"]) if r["kernels"] else None,
         extras=tuple(e["name"] for e in r["extras"]),
+        as_printed=r.get("as_printed", False),
+        approximation_statuses=tuple(r.get("approximation_statuses", ())),
     )
 
 
@@ -171,6 +192,44 @@ def _info(r: dict) -> MapInfo:
 def maps() -> tuple[MapInfo, ...]:
     """Every map: the generated ones in report order, then ``"exact"``."""
     return tuple(_info(r) for r in maps_index.MAPS) + (_info(maps_index.EXACT),)
+
+
+@cache
+def halves() -> tuple[HalfInfo, ...]:
+    """Every half-stance map, in report order."""
+    return tuple(
+        HalfInfo(
+            name=r["name"],
+            title=r["title"],
+            section=r["section"],
+            equations=tuple(r["equations"]),
+            requires=(),
+            params=tuple(r["params"]),
+            options=tuple(_option(o) for o in r["options"]),
+            summary=r["summary"],
+            module=r["module"],
+            kernels={"half": r["kernel"]},
+            extras=tuple(e["name"] for e in r["extras"]),
+            whole=r["whole"],
+            start=r["start"],
+            end=r["end"],
+        )
+        for r in maps_index.HALVES
+    )
+
+
+def get_half(name: str) -> HalfInfo:
+    """The half-stance map called ``name``; ValueError listing the valid names."""
+    for h in halves():
+        if h.name == name:
+            return h
+    if name in names():
+        raise ValueError(f"{name!r} is a whole-stance map; the half-stance maps are: " + _half_names())
+    raise ValueError(f"unknown half-stance map {name!r}; the half-stance maps are: " + _half_names())
+
+
+def _half_names() -> str:
+    return ", ".join(h.name for h in halves())
 
 
 def names() -> tuple[str, ...]:
@@ -182,4 +241,9 @@ def get(name: str) -> MapInfo:
     for m in maps():
         if m.name == name:
             return m
+    if any(h.name == name for h in halves()):
+        raise ValueError(
+            f"{name!r} is a half-stance map (slipmaps.half_stance); the whole-stance maps are: "
+            f"{', '.join(names())}"
+        )
     raise ValueError(f"unknown map {name!r}; the maps are: {', '.join(names())}")

@@ -9,6 +9,10 @@
   generated maps; every row gets its own status, and a bad row (NaN, out of domain) gets
   ``INVALID_INPUT`` without failing the others. Apex-return inputs broadcast against each other.
 - :func:`trajectory`: the polar state along the stance.
+- :func:`half_stance`, :func:`half_stance_batch`: a half-stance map (``slipmaps maps`` lists them):
+  the touchdown state -> ``t_half`` and the bottom state (compression, k_c), or a bottom state
+  ``(q_r, q_rd, q_th, q_thd)`` (q_rd ignored: 0 at the bottom) -> ``t_half`` and the liftoff state
+  (decompression, k_d); ``res.end`` is the end state. A controller picks k_d between the two calls.
 
 Options are keywords (``iterations=20``, ``reading="mean"``; ``slipmaps maps`` lists them). A scalar
 call raises ValueError for an invalid argument (naming it); a state outside the map's domain is a
@@ -24,12 +28,21 @@ from functools import lru_cache
 import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
-from .index import MapInfo, get, maps
+from .index import MapInfo, get, get_half, maps
 from .params import SlipParams
 from .results import BatchResult, Result, columns
 from .validate import L0_SLACK, float_array, leg_angle, non_negative, polar_state
 
-__all__ = ["maps", "stance", "stance_batch", "apex_return", "apex_return_batch", "trajectory"]
+__all__ = [
+    "maps",
+    "stance",
+    "stance_batch",
+    "apex_return",
+    "apex_return_batch",
+    "trajectory",
+    "half_stance",
+    "half_stance_batch",
+]
 
 
 @dataclass(frozen=True)
@@ -43,25 +56,25 @@ class _Call:
     kernels: dict  # (role, batch) -> the generated function; empty for "exact"
 
     @classmethod
-    def of(cls, name: str, params: SlipParams, options: dict) -> _Call:
+    def of(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> _Call:
         """Validated once per (map, parameters, options): a control loop calling a map thousands of
-        times with the same ones pays the Python checks once."""
+        times with the same ones pays the Python checks once. ``half``: a half-stance map."""
         try:
-            key = (name, params, tuple(sorted(options.items())))
+            key = (name, params, tuple(sorted(options.items())), half)
             hash(key)
         except TypeError:  # an unhashable option value: validate (and refuse) it uncached
-            return cls._build(name, params, options)
+            return cls._build(name, params, options, half)
         return cls._cached(key)
 
     @staticmethod
     @lru_cache(maxsize=256)
     def _cached(key) -> _Call:
-        name, params, options = key
-        return _Call._build(name, params, dict(options))
+        name, params, options, half = key
+        return _Call._build(name, params, dict(options), half)
 
     @classmethod
-    def _build(cls, name: str, params: SlipParams, options: dict) -> _Call:
-        info = get(name)
+    def _build(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> _Call:
+        info = get_half(name) if half else get(name)
         prm = info.param_values(params)
         resolved = info.resolve(options)
         encoded = info.encode(resolved)  # ValueError naming the valid values
@@ -115,7 +128,7 @@ def apex_return(name: str, params: SlipParams, apex_height, apex_speed, touchdow
 
 
 def _rows(params: SlipParams, touchdowns) -> np.ndarray:
-    """(n, 4) float64 touchdown states; leg lengths within round-off above l0 are l0, as in
+    """(n, 4) float64 touchdown (or bottom) states; leg lengths within round-off above l0 are l0, as in
     :func:`stance` (the only copy made: when such a row exists)."""
     arr = np.asarray(touchdowns, dtype=float)
     if arr.ndim != 2 or arr.shape[1] != 4:
@@ -215,3 +228,25 @@ def trajectory(
     call.kernel("state_at", batch=True)(times, *td, *call.params, params.q_r_lo, *call.encoded, out, status)
     bad = status[status != int(Status.OK)]
     return times, out, Status(int(bad[0])) if bad.size else Status.OK
+
+
+def half_stance(name: str, params: SlipParams, state, **options) -> Result:
+    """One half of the stance by half-stance map ``name`` from its start state (polar, SI): the
+    touchdown state for a compression half, a bottom state for a decompression half."""
+    call = _Call.of(name, params, options, half=True)
+    start = polar_state(params, state, what=f"{call.info.start} state")
+    res = call.kernel("half")(*start, *call.params, *call.encoded)
+    return call.result("half", res, {call.info.start: start, "options": dict(call.options)})
+
+
+def half_stance_batch(name: str, params: SlipParams, states, **options) -> BatchResult:
+    """Half-stance map ``name`` over start states of shape (n, 4); a status per row."""
+    call = _Call.of(name, params, options, half=True)
+    arr = _rows(params, states)
+    names = columns("half", call.info.extras)
+    n = arr.shape[0]
+    out = np.empty((n, len(names)))
+    status = np.empty(n, dtype=np.int64)
+    cols = (arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3])
+    call.kernel("half", batch=True)(*cols, *call.params, *call.encoded, out, status)
+    return BatchResult(call.info.name, "half", names, out, status, (n,))

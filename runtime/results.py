@@ -24,18 +24,20 @@ import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
-__all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "GROUPS", "columns"]
+__all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "HALF", "GROUPS", "columns"]
 
 #: Output names of every stance map and of every apex-return map (before a map's extras).
 STANCE = tuple(r["name"] for r in maps_index.STANCE_OUTPUTS)
 APEX_RETURN = tuple(r["name"] for r in maps_index.APEX_OUTPUTS)
+#: Output names of every half-stance map: ``t_half`` and the ``end`` state.
+HALF = tuple(r["name"] for r in maps_index.HALF_OUTPUTS)
 #: Named groups of outputs: "bottom" -> ("bottom_q_r", ..., "bottom_q_thd"), "liftoff" -> ...
 GROUPS: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in maps_index.GROUPS.items()}
 
 
 def columns(kind: str, extras: tuple[str, ...] = ()) -> tuple[str, ...]:
-    """The output names of a ``"stance"`` or ``"apex_return"`` result with a map's extras."""
-    return {"stance": STANCE, "apex_return": APEX_RETURN}[kind] + tuple(extras)
+    """The output names of a ``"stance"``, ``"apex_return"`` or ``"half"`` result with a map's extras."""
+    return {"stance": STANCE, "apex_return": APEX_RETURN, "half": HALF}[kind] + tuple(extras)
 
 
 @dataclass(frozen=True)
@@ -43,7 +45,7 @@ class Result:
     """The outcome of one map call (values NaN unless ``status`` is OK)."""
 
     map: str
-    kind: str  # "stance" or "apex_return"
+    kind: str  # "stance", "apex_return" or "half"
     status: Status
     message: str
     values: Mapping[str, float]

@@ -78,6 +78,8 @@ def test_one_result_family_for_every_map(name):
     assert st["t_stance"] == st.t_stance > st.t_bottom > 0
     ap = slipmaps.apex_return(name, P, 1.0, 5.0, 0.35)
     assert ap.ok and {"apex_height", "apex_speed", "t_descent", "t_stance", "t_ascent"} <= set(ap.values)
+    if next(m for m in slipmaps.maps() if m.name == name).as_printed:
+        return  # reproduces the report's formulas to measure them (iterative-report: 1.035 m)
     # exact: 0.917730 m; measured errors of the maps: -1.5 mm (type 0) to +0.84 mm (type 5)
     assert ap.apex_height == pytest.approx(0.917730, abs=0.003)
 
@@ -127,7 +129,7 @@ def test_options_are_validated_with_the_valid_values_named():
 
 def test_constant_stiffness_maps_name_the_alternatives():
     vs = SlipParams(k_c=20_000.0, k_d=25_000.0)
-    with pytest.raises(ValueError, match="constant leg stiffness.*accept k_c != k_d: exact"):
+    with pytest.raises(ValueError, match="constant leg stiffness.*accept k_c != k_d: .*exact"):
         slipmaps.apex_return("geyer", vs, 1.0, 5.0, 0.35)
     assert slipmaps.apex_return("exact", vs, 1.0, 5.0, 0.35).ok
 
@@ -149,7 +151,16 @@ def test_scalar_calls_name_the_bad_argument(call, needle):
         call()
 
 
-@pytest.mark.parametrize("name", GENERATED)
+WITH_TRAJECTORY = [m.name for m in slipmaps.maps() if m.generated and m.kernels["state_at"]]
+
+
+@pytest.mark.parametrize("name", [m for m in GENERATED if m not in WITH_TRAJECTORY])
+def test_maps_without_trajectory_say_so(name):
+    with pytest.raises(ValueError, match="no trajectory"):
+        slipmaps.trajectory(name, P, TD)
+
+
+@pytest.mark.parametrize("name", WITH_TRAJECTORY)
 def test_trajectory_ends_at_the_liftoff_state(name):
     res = slipmaps.stance(name, P, TD)
     t, states, status = slipmaps.trajectory(name, P, TD)

@@ -27,7 +27,8 @@ def test_maps_lists_every_map_of_the_index(capsys):
 def test_maps_json_has_the_documented_fields(capsys):
     assert main(["maps", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
-    assert [r["name"] for r in rows] == [*GENERATED, "exact"]
+    halves = [row["name"] for row in maps_index.HALVES]
+    assert [r["name"] for r in rows] == [*GENERATED, "exact", *halves]
     for r in rows:
         assert {"name", "title", "section", "equations", "requires", "options"} <= set(r)
         assert all(isinstance(e, int) for e in r["equations"] if str(e).isdigit())
@@ -44,6 +45,15 @@ def test_compare_default_prints_table_and_writes_plot(tmp_path, capsys):
         assert q.label in out
     assert "abs err" in out and "rel err" in out
     assert png.stat().st_size > 10_000
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_compare_plots_a_map_with_event_states_only(tmp_path, capsys):
+    # `iterative` has no state-at-time kernel: its touchdown, bottom and liftoff are marked
+    png = tmp_path / "it.png"
+    argv = ["compare", "--map", "iterative", "--k-c", "20000", "--k-d", "25000", "--plot", str(png)]
+    assert main(argv) == 0
+    assert "next apex speed" in capsys.readouterr().out
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
@@ -66,8 +76,10 @@ def test_compare_runs_for_every_map(name, capsys):
     assert data["map"] == name and data["map_status"] == "OK" and data["against_status"] == "OK"
     speed = next(r for r in data["rows"] if r["quantity"] == "next apex speed")
     # Every map predicts the default step's next apex speed within 2 % (measured: Geyer 1.45 %, the
-    # gravity corrections 0.1-0.4 %).
-    assert abs(speed["rel_error"]) < 0.02
+    # gravity corrections 0.1-0.4 %), except the report's printed iteration, which makes no accuracy
+    # claim (measured: 4.4 %).
+    if not index.get(name).as_printed:
+        assert abs(speed["rel_error"]) < 0.02
 
 
 def test_compare_with_options_and_against_another_map(capsys):
@@ -164,3 +176,34 @@ def test_generate_does_not_need_the_generated_index():
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
     assert run.returncode == 0, run.stderr[-2000:]
     assert run.stdout.strip() == "generate"
+
+
+@pytest.mark.parametrize(
+    ("name", "end"), [("iterative-compression", "bottom"), ("iterative-decompression", "liftoff")]
+)
+def test_compare_a_half_map_against_the_same_half(name, end, tmp_path, capsys):
+    """The half from the exact touchdown (compression) or the exact bottom (decompression) against
+    the exact simulator's same half (measured: below 2e-6 relative at the default step)."""
+    assert main(["compare", "--map", name, "--k-c", "20000", "--k-d", "25000", "--json", "--no-plot"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["map"] == name and data["map_status"] == "OK" and data["against_status"] == "OK"
+    rows = {r["quantity"]: r for r in data["rows"]}
+    assert set(rows) == {
+        "half time",
+        "end leg length q_r",
+        "end leg rate q_rd",
+        "end leg angle q_th",
+        "end angle rate q_thd",
+    }
+    assert all(abs(r["abs_error"]) < 2e-6 * max(1.0, abs(r["reference"])) for r in rows.values()), rows
+    png = tmp_path / "half.png"
+    assert main(["compare", "--map", name, "--plot", str(png)]) == 0
+    header = capsys.readouterr().out.split("quantity")[0]
+    assert ("bottom:" in header) == (end == "liftoff")  # the decompression half starts at the bottom
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_maps_lists_the_half_maps(capsys):
+    assert main(["maps"]) == 0
+    out = capsys.readouterr().out
+    assert "iterative-compression" in out and "half of iterative: touchdown -> bottom" in out

@@ -335,6 +335,8 @@ NOMINAL = {
     "m": 80.0,
     "l0": 1.0,
     "k": 20_000.0,
+    "k_c": 20_000.0,
+    "k_d": 20_000.0,
     "g_s": 9.81,
     "g_f": 9.81,
     "b_x": -0.3,
@@ -493,7 +495,7 @@ def _params_sample(rng):
     l0 = rng.uniform(0.25, 1.2)
     g_s = rng.uniform(9.0, 10.0)
     k = rng.uniform(10.0, 40.0) * m * g_s / l0  # dimensionless stiffness 10-40
-    return {"m": m, "l0": l0, "k": k, "g_s": g_s, "g_f": rng.uniform(9.0, 10.0)}
+    return {"m": m, "l0": l0, "k": k, "k_c": k, "k_d": k, "g_s": g_s, "g_f": rng.uniform(9.0, 10.0)}
 
 
 def _assert_agree(kernel, args_names, points, reference, n_out, rtol=RTOL, scales=None):

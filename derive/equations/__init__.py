@@ -17,7 +17,7 @@ A check returns nothing and raises :class:`CheckFailed` (through :func:`expect_z
 :func:`expect_nonzero` or :func:`expect`) naming the condition that does not hold. :func:`run`
 turns a check into an :class:`Outcome`; :func:`main` runs them all (``slipmaps equations``).
 
-Entries are keyed by the report's equation number ("1" ... "77") or, for unnumbered displays, by
+Entries are keyed by the report's equation number ("1" ... "151") or, for unnumbered displays, by
 their section ("sec2.2.1-polar"). :func:`render_equation_table` gives docs/equations.md.
 """
 
@@ -55,7 +55,7 @@ __all__ = [
 STATUSES = ("verified", "corrected", "definition")
 
 #: Section modules of this package, in report order. Adding a section is appending its name here.
-SECTION_MODULES = ("sec2", "sec3", "sec4")
+SECTION_MODULES = ("sec2", "sec3", "sec4", "sec5")
 
 _MESSAGE_CHARS = 160
 

@@ -1,7 +1,9 @@
-"""One module per map (or family of maps): its derivation steps and its declarations, ``MAPS``.
+"""One module per map (or family of maps): its derivation steps and its declarations, ``MAPS``
+(and ``HALVES``, half-stance maps).
 
 :func:`all_maps` finds every module of this package that declares ``MAPS`` (a tuple of
-:class:`~slipmaps.derive.mapspec.MapSpec`), so adding a map is adding its module; the maps are
+:class:`~slipmaps.derive.mapspec.MapSpec`), :func:`all_halves` those that declare ``HALVES``
+(:class:`~slipmaps.derive.halfspec.HalfSpec`), so adding a map is adding its module; the maps are
 ordered by report section, then name.
 """
 
@@ -17,14 +19,31 @@ def _section_key(section: str) -> tuple[int, ...]:
 
 
 @cache
-def all_maps():
-    """Every declared map, in report order (section, then name)."""
-    specs = []
-    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
-        module = importlib.import_module(f"{__name__}.{info.name}")
-        specs.extend(getattr(module, "MAPS", ()))
+def _modules():
+    return tuple(
+        importlib.import_module(f"{__name__}.{info.name}")
+        for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name)
+    )
+
+
+def _unique(specs, what: str) -> None:
     names = [s.name for s in specs]
     dup = sorted({n for n in names if names.count(n) > 1})
     if dup:
-        raise ValueError(f"map name(s) declared twice: {dup}")
+        raise ValueError(f"{what} name(s) declared twice: {dup}")
+
+
+@cache
+def all_halves():
+    """Every declared half-stance map (``HALVES``), in report order (section, then name)."""
+    specs = [h for module in _modules() for h in getattr(module, "HALVES", ())]
+    _unique(specs + list(all_maps()), "map")
+    return tuple(sorted(specs, key=lambda s: (_section_key(s.section), s.name)))
+
+
+@cache
+def all_maps():
+    """Every declared map, in report order (section, then name)."""
+    specs = [s for module in _modules() for s in getattr(module, "MAPS", ())]
+    _unique(specs, "map")
     return tuple(sorted(specs, key=lambda s: (_section_key(s.section), s.name)))

@@ -34,6 +34,8 @@ _EXPORTS = {
     "apex_return": "slipmaps.runtime.maps",
     "apex_return_batch": "slipmaps.runtime.maps",
     "trajectory": "slipmaps.runtime.maps",
+    "half_stance": "slipmaps.runtime.maps",
+    "half_stance_batch": "slipmaps.runtime.maps",
     "Result": "slipmaps.runtime.results",
     "BatchResult": "slipmaps.runtime.results",
     "Status": "slipmaps.generated.status",

@@ -1,0 +1,158 @@
+"""A half-stance map, declared once: :class:`HalfSpec` -> its kernel and its row of the index.
+
+The report's variable-stiffness maps split the stance at the bottom (section 5): the compression
+half runs from the touchdown state to the bottom with k_c, the decompression half from the bottom
+to liftoff with k_d. A controller that picks k_d at the bottom calls them one after the other. A
+half map module declares ``HALVES`` beside its ``MAPS``; from the declaration follow, with no second
+list anywhere:
+
+- ``<ident>``: the start state (touchdown or bottom, polar) -> ``t_half`` and the end state
+  (bottom or liftoff) + extras, with a parallel batch form over start-state rows;
+- its row ``HALVES`` of ``generated/maps_index.py`` (the runtime's ``half_stance`` API, ``slipmaps
+  maps`` and docs/maps.md read it).
+
+At the bottom q_rd = 0 by definition: a decompression half reads q_r, q_th and q_thd of its start
+state and ignores q_rd.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from . import catalog
+from .ir import Arg, Batch, Field, Group, Kernel, Module, Step, positive, sym
+from .mapspec import Option
+
+__all__ = ["HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
+
+#: Where a half starts -> where it ends.
+START = {"touchdown": "bottom", "bottom": "liftoff"}
+
+#: Outputs of every half map (before its extras).
+HALF_OUTPUTS = Group(
+    "",
+    (
+        Field("t_half", "time from the start state to the end state", "s"),
+        Group("end", catalog.POLAR, "state at the end of the half (the bottom or liftoff)"),
+    ),
+)
+
+
+def start_args(start: str) -> tuple[Arg, ...]:
+    """The polar start state: ``q_r_td ... q_thd_td`` (touchdown) or ``q_r_b ... q_thd_b`` (bottom)."""
+    if start == "touchdown":
+        return catalog.TOUCHDOWN
+    q_r_b, q_th_b = sym("q_r_b"), sym("q_th_b")
+    domains = {0: positive(q_r_b), 2: sp.Abs(q_th_b) < sp.pi / 2}
+    notes = {0: ", > 0", 1: " (not read: 0 at the bottom)", 2: ", |q_th_b| < pi/2"}
+    return tuple(
+        Arg(sym(f"{f.name}_b"), f"bottom {f.doc} [{f.unit}]{notes.get(i, '')}", domains.get(i))
+        for i, f in enumerate(catalog.POLAR)
+    )
+
+
+@dataclass(frozen=True)
+class HalfInputs:
+    """The symbols a half declaration's ``build`` works with."""
+
+    state: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]
+    params: Mapping[str, sp.Symbol]
+    options: Mapping[str, Option]
+
+    def opt(self, name: str) -> sp.Symbol:
+        return self.options[name].symbol
+
+
+@dataclass(frozen=True)
+class HalfSpec:
+    """One half-stance map, declared once."""
+
+    name: str  # user-facing, e.g. "iterative-compression"
+    title: str
+    section: str  # report subsection, e.g. "5.2.1"
+    equations: tuple[str, ...]
+    whole: str  # the whole-stance map it composes into
+    start: str  # "touchdown" or "bottom"
+    params: tuple[str, ...]  # names in catalog.PARAMS
+    #: -> steps defining ``t_half``, ``end_q_r`` ... ``end_q_thd`` and the extras
+    build: Callable[[HalfInputs], tuple[Step, ...]]
+    options: tuple[Option, ...] = ()
+    extras: tuple[Field, ...] = ()
+    summary: str = ""
+    _cache: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self):
+        if self.start not in START:
+            raise ValueError(
+                f"half map {self.name}: start must be one of {sorted(START)}, got {self.start!r}"
+            )
+        unknown = [p for p in self.params if p not in catalog.PARAMS]
+        if unknown:
+            raise ValueError(f"half map {self.name}: unknown parameter(s) {unknown}")
+
+    @property
+    def end(self) -> str:
+        return START[self.start]
+
+    @property
+    def ident(self) -> str:
+        return self.name.replace("-", "_")
+
+    @property
+    def source(self) -> str:
+        mod = self.build.__module__.removeprefix("slipmaps.")
+        return mod.replace(".", "/") + ".py"
+
+    def args(self) -> tuple[Arg, ...]:
+        state = start_args(self.start)
+        return state + tuple(catalog.PARAMS[p] for p in self.params) + tuple(o.arg() for o in self.options)
+
+    def kernel(self) -> Kernel:
+        if "kernel" not in self._cache:
+            state = start_args(self.start)
+            inputs = HalfInputs(
+                state=tuple(a.symbol for a in state),
+                params={p: catalog.PARAMS[p].symbol for p in self.params},
+                options={o.name: o for o in self.options},
+            )
+            self._cache["kernel"] = Kernel(
+                name=self.ident,
+                summary=f"{self.title}: {self.start} state -> {self.end} state.",
+                equations=self.equations,
+                args=self.args(),
+                steps=self.build(inputs),
+                outputs=HALF_OUTPUTS + Group("", self.extras),
+                batch=Batch(tuple(a.name for a in state)),
+                module=self.ident,
+            )
+        return self._cache["kernel"]
+
+    def module(self) -> Module:
+        return Module(
+            name=self.ident,
+            doc=f"{self.title} (report section {self.section}): {self.start} -> {self.end}.",
+            source=self.source,
+            kernels=lambda: (self.kernel(),),
+        )
+
+    def index_row(self) -> dict:
+        kernel = self.kernel()
+        return {
+            "name": self.name,
+            "title": self.title,
+            "section": self.section,
+            "equations": list(self.equations),
+            "whole": self.whole,
+            "start": self.start,
+            "end": self.end,
+            "params": list(self.params),
+            "options": [o.index_row() for o in self.options],
+            "module": self.ident,
+            "summary": self.summary,
+            "kernel": kernel.name,
+            "args": list(kernel.arg_names),
+            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],
+        }

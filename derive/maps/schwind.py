@@ -1,0 +1,517 @@
+"""Schwind and Koditschek's iterative stance map in a converging form (report sections 3.2 and 5.2).
+
+The report integrates (30)-(32) over the leg length from the turning point (the bottom), with one
+mean-value point per half-stance ((38)-(45), (120)-(151)). Measured, that iteration does not
+converge to the exact stance (docs/iterative.md). Two changes make it converge:
+
+1. **Radial momentum from the work of the radial force** instead of the energy inverse (33):
+   p_r(sigma)^2 = 2 m int_{q_r_b}^{sigma} F_r ds with F_r = dp_r/dt of (29) (p_r dp_r/dq_r =
+   m dp_r/dt). On the exact trajectory both are equal; on an approximate iterate, (33) loses the
+   cancellation of the O((sigma - q_r_b)^(1/2)) terms between the potential and the angular
+   kinetic energy, so near the bottom its square root goes negative; the work form stays
+   O(sigma - q_r_b) and positive whatever the iterate.
+2. **N-node Gauss-Legendre collocation in u = sqrt((sigma - q_r_b)/(x - q_r_b))**, whose one-node
+   rule is the report's mean value xi = 3/4 q_r_b + 1/4 x of (41) (module :mod:`.quadrature`). The
+   integrands of (30)-(32) in u are regular at the bottom; the iterates are the values at the
+   nodes and each pass is a Picard step of Schwind and Koditschek's integral operator.
+
+Each half (:func:`half_kernel`): the compression half runs from the touchdown state with k_c;
+its bottom leg length q_r_b = q_r_td - D comes from p_r_td^2 = 2 m int F_r, the spring part
+integrated exactly (a quadratic in D) each pass. The decompression half runs from that bottom
+state with k_d to q_r = q_r_lo, where p_r_lo^2 = 2 m int F_r. The zeroth iterate is a declared
+map's bottom and liftoff states (or the held touchdown/bottom state), linear in u between the
+half's ends: the leading behaviour q_th - q_th_b ~ (sigma - q_r_b)^(1/2) of (41).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import sympy as sp
+
+from .. import catalog
+from ..halfspec import HalfInputs, HalfSpec
+from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
+from ..mapspec import MapBuild, MapInputs, MapSpec, Option
+from ..model import mechanics
+from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
+from . import quadrature
+
+__all__ = ["NODE_COUNTS", "radial_force", "u_rates", "half_kernel", "MAPS", "HALVES"]
+
+#: Node counts a kernel is generated for (option ``nodes``).
+NODE_COUNTS = (1, 2, 3, 4, 6)
+
+_D, _PSI, _U = sp.symbols("D Psi u", positive=True)
+
+
+@cache
+def radial_force(stiffness: sp.Symbol) -> sp.Basic:
+    """F_r = dp_r/dt of (29) with the half's stiffness: p_th^2/(m q_r^3) + k (l0 - q_r) - m g_s cos q_th."""
+    return mechanics.hamiltonian_vector_field(stiffness)[2]
+
+
+@cache
+def u_rates(stiffness: sp.Symbol) -> tuple[sp.Basic, sp.Basic, sp.Basic]:
+    """(dt/du, dq_th/du, dp_th/du) for sigma = q_r_b + D u^2, going away from the bottom.
+
+    (30)-(32) times dsigma/du = 2 D u, with p_r = u sqrt(4 m D Psi) (the work form: p_r^2 =
+    2 m int_{q_r_b}^{sigma} F_r = 4 m D int_0^u F_r v dv = 4 m D Psi u^2, Psi the F_r-weighted
+    mean (1/u^2) int_0^u F_r v dv). The result has no 1/u: regular at the bottom.
+    """
+    from .iterative import leg_length_derivatives
+
+    p_r = mechanics.p_r
+    momentum = _U * sp.sqrt(4 * m * _D * _PSI)
+    rates = leg_length_derivatives(stiffness)
+    return tuple(sp.simplify((r * 2 * _D * _U).subs(p_r, momentum)) for r in rates)
+
+
+def _n(prefix: str, name: str, j: int | None = None) -> sp.Symbol:
+    return sym(f"{prefix}{name}" if j is None else f"{prefix}{name}{j}")
+
+
+def _dot(row, values) -> sp.Basic:
+    return sp.Add(*(c * v for c, v in zip(row, values, strict=True)))
+
+
+def _evaluate(prefix: str, rule: quadrature.Rule, stiffness, base, D, Q, P) -> Stage:
+    """Node quantities of one pass: sigma, F_r, Psi and the u-rates (t, q_th, p_th) at each node."""
+    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
+    rows, guards = [], []
+    F = [_n(prefix, "F", j) for j in range(rule.n)]
+    for j, u in enumerate(rule.nodes):
+        sigma = _n(prefix, "sigma", j)
+        rows += [(sigma, base + D * u**2), (F[j], F_r.subs({q_r: sigma, q_th: Q[j], p_th: P[j]}))]
+    for j, u in enumerate(rule.nodes):
+        psi, sigma = _n(prefix, "Psi", j), _n(prefix, "sigma", j)
+        rows.append((psi, _dot(rule.S1[j], F) / u**2))
+        guards.append(Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"))
+        at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q[j], p_th: P[j]}
+        rows += [
+            (_n(prefix, "ft", j), dt.subs(at)),
+            (_n(prefix, "fq", j), dq.subs(at)),
+            (_n(prefix, "fp", j), dp.subs(at)),
+        ]
+    return Stage(
+        tuple(rows), tuple(guards), comment="node values: sigma, F_r (29), Psi, u-rates of (30)-(32)"
+    )
+
+
+def _rates(prefix: str, rule: quadrature.Rule, name: str) -> list[sp.Symbol]:
+    return [_n(prefix, name, j) for j in range(rule.n)]
+
+
+def _bottom_quadratic(rule, prefix, stiffness, top, p_r_top, D) -> sp.Basic:
+    """D = q_r_td - q_r_b from p_r_td^2/(2 m) = k (l0 - q_r_td) D + k D^2/2 + D Rbar, Rbar the mean
+    of F_r minus the spring term (2 int_0^1 (F_r - k (l0 - sigma)) u du); its positive root."""
+    spring = [stiffness * (l0 - _n(prefix, "sigma", j)) for j in range(rule.n)]
+    rbar = 2 * _dot(rule.w1, [f - s for f, s in zip(_rates(prefix, rule, "F"), spring, strict=True)])
+    b, c = stiffness * (l0 - top) + rbar, p_r_top**2 / (2 * m)
+    return 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
+
+
+def _half_case(rule: quadrature.Rule, kind: str, a: dict) -> tuple[Step, ...]:
+    """Steps of one half-stance with ``rule``; ``kind`` "compression" or "decompression"."""
+    n = rule.n
+    compress = kind == "compression"
+    stiffness = k_c if compress else k_d
+    th0, pth0 = a["q_th"], m * a["q_r"] ** 2 * a["q_thd"]
+    # zeroth iterate: linear in u between the bottom (u = 0) and the far end (u = 1)
+    if compress:
+        guess_b = m * a["guess_q_r"] ** 2 * a["guess_q_thd"]
+        start_q = [a["guess_q_th"] + (th0 - a["guess_q_th"]) * u for u in rule.nodes]
+        start_p = [guess_b + (pth0 - guess_b) * u for u in rule.nodes]
+    else:
+        guess_lo = m * catalog.PARAMS["q_r_lo"].symbol ** 2 * a["guess_q_thd"]
+        start_q = [th0 + (a["guess_q_th"] - th0) * u for u in rule.nodes]
+        start_p = [pth0 + (guess_lo - pth0) * u for u in rule.nodes]
+    Q = [_n("_", "Q", j) for j in range(n)]
+    P = [_n("_", "P", j) for j in range(n)]
+    D = sym("_D")
+    top = a["q_r"]
+    if compress:
+        d0 = top - a["guess_q_r"]
+        base = top - D
+    else:
+        d0 = catalog.PARAMS["q_r_lo"].symbol - top
+        base = top
+    fq, fp = _rates("_i", rule, "fq"), _rates("_i", rule, "fp")
+    if compress:  # from the touchdown end: y(u_j) = y_td + int_{u_j}^1
+        new_q = [th0 + _dot(rule.w, fq) - _dot(rule.S[j], fq) for j in range(n)]
+        new_p = [pth0 + _dot(rule.w, fp) - _dot(rule.S[j], fp) for j in range(n)]
+        new_d = _bottom_quadratic(rule, "_i", stiffness, top, m * a["q_rd"], D)
+    else:  # from the bottom: y(u_j) = y_b + int_0^{u_j}
+        new_q = [th0 + _dot(rule.S[j], fq) for j in range(n)]
+        new_p = [pth0 + _dot(rule.S[j], fp) for j in range(n)]
+        new_d = D
+    scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
+    iterate = Iterate(
+        state=((D, d0), *zip(Q, start_q, strict=True), *zip(P, start_p, strict=True)),
+        body=(_evaluate("_i", rule, stiffness, base, D, Q, P),),
+        update=(new_d, *new_q, *new_p),
+        max_iter=sym("iterations"),
+        tol=sym("tol"),
+        scales=(l0,) + (sp.S.One,) * n + (scale_p,) * n,
+        count=sym("_passes"),
+        comment=f"Picard passes on the {n} node values (collocation in u)",
+    )
+    final = _evaluate("_f", rule, stiffness, base, D, Q, P)
+    # Both halves: y_end = y_anchor + int_0^1 (the compression half runs toward u = 0 in time, the
+    # decompression half toward u = 1; in both the u-rates point along the motion).
+    q_th_end = th0 + _dot(rule.w, _rates("_f", rule, "fq"))
+    p_th_end = pth0 + _dot(rule.w, _rates("_f", rule, "fp"))
+    common = ((sym("t_half"), _dot(rule.w, _rates("_f", rule, "ft"))), (sym("end_q_th"), q_th_end))
+    if compress:
+        q_r_b = sym("end_q_r")
+        return (
+            iterate,
+            final,
+            Stage(
+                (
+                    *common,
+                    (q_r_b, top - D),
+                    (sym("end_q_rd"), sp.S.Zero),
+                    (sym("end_q_thd"), p_th_end / (m * q_r_b**2)),
+                    (sym("passes"), sym("_passes")),
+                ),
+                (Guard(q_r_b > 0, "FALL", "bottom leg length q_r_b > 0"),),
+                comment="bottom state",
+            ),
+        )
+    work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
+    return (
+        iterate,
+        final,
+        Stage(
+            ((work, _dot(rule.w1, _rates("_f", rule, "F"))),),
+            (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),),
+        ),
+        Stage(
+            (
+                *common,
+                (sym("end_q_r"), q_r_lo),
+                (sym("end_q_rd"), sp.sqrt(4 * m * D * work) / m),
+                (sym("end_q_thd"), p_th_end / (m * q_r_lo**2)),
+                (sym("passes"), sym("_passes")),
+            ),
+            comment="liftoff state: p_r_lo^2 = 2 m int F_r (work form)",
+        ),
+    )
+
+
+NODES = Option(
+    "nodes",
+    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))",
+    "4",
+    tuple((str(n), f"{n} node{'s' if n > 1 else ''}") for n in NODE_COUNTS),
+)
+ITERATIONS = Option(
+    "iterations", "Picard passes per half-stance (0 = the zeroth iterate)", 6, low=0, high=100, integer=True
+)
+TOL = Option(
+    "tol",
+    "stop when no node value moves by more than tol (relative; 0 = run every pass)",
+    0.0,
+    low=0.0,
+    high=1.0,
+)
+
+
+def _polar_args(prefix: str, what: str) -> tuple[Arg, ...]:
+    return tuple(Arg(sym(f"{prefix}{f.name}"), f"{what}: {f.doc} [{f.unit}]", None) for f in catalog.POLAR)
+
+
+@cache
+def half_kernel(kind: str) -> Kernel:
+    """The compression half (touchdown -> bottom, k_c; report 5.2.1) or the decompression half
+    (bottom -> liftoff at q_r_lo, k_d; report 3.2 and 5.2.2), collocation with NODES nodes."""
+    compress = kind == "compression"
+    anchor = _polar_args("", "touchdown state" if compress else "bottom state")
+    names = {f.name: a.symbol for f, a in zip(catalog.POLAR, anchor, strict=True)}
+    guess_fields = ("q_r", "q_th", "q_thd") if compress else ("q_th", "q_thd")
+    end = "bottom" if compress else "liftoff"
+    guess = tuple(Arg(sym(f"guess_{f}"), f"zeroth iterate's {end} {f}", None) for f in guess_fields)
+    a = {**names, **{f"guess_{f}": g.symbol for f, g in zip(guess_fields, guess, strict=True)}}
+    stiffness = catalog.PARAMS["k_c" if compress else "k_d"]
+    params = (catalog.PARAMS["m"], catalog.PARAMS["l0"], stiffness, catalog.PARAMS["g_s"])
+    if not compress:
+        params += (catalog.PARAMS["q_r_lo"],)
+    q_r_lo = catalog.PARAMS["q_r_lo"].symbol
+    first = (
+        Guard(names["q_rd"] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0")
+        if compress
+        else Guard(q_r_lo - names["q_r"] > 0, "NO_LIFTOFF", "bottom below q_r_lo")
+    )
+    cases = tuple((NODES.code(str(n)), _half_case(quadrature.rule(n), kind, a)) for n in NODE_COUNTS)
+    outputs = Group(
+        "",
+        (
+            Field("t_half", f"time of the {kind} half", "s"),
+            Group("end", catalog.POLAR, f"state at the {end}"),
+            Field("passes", "Picard passes run", "1"),
+        ),
+    )
+    return Kernel(
+        name=f"schwind_{kind}",
+        summary=f"Schwind and Koditschek's iteration, {kind} half, converging form (collocation in u, "
+        "work form of p_r).",
+        equations=("29", "30", "31", "32", "37", "41")
+        if not compress
+        else ("115", "116", "117", "118", "123"),
+        args=anchor + params + guess + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
+        steps=(
+            Stage((), (first,)),
+            Switch(NODES.symbol, cases, comment="node count"),
+        ),
+        outputs=outputs,
+        module="iterative",
+    )
+
+
+ZEROTH = Option(
+    "zeroth",
+    "zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends",
+    "geyer",
+    (
+        ("geyer", "Geyer et al.'s map (section 3.1) with k_c"),
+        ("held", "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown"),
+    ),
+)
+
+_POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
+
+
+def _zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
+    """The zeroth iterate's bottom (``z_b_*``; the Geyer choice also its liftoff, ``z_lo_*``) from
+    the touchdown state, before the compression half."""
+    from .geyer import MAPS as GEYER
+
+    q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
+    geyer = GEYER[0].stance_kernel()
+    call_args = {
+        "q_r_td": q_r_td,
+        "q_rd_td": q_rd_td,
+        "q_th_td": q_th_td,
+        "q_thd_td": q_thd_td,
+        "m": p["m"],
+        "l0": p["l0"],
+        "k": p["k_c"],
+        "g_s": p["g_s"],
+        "q_r_lo": q_r_lo,
+    }
+    bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
+    bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
+    p_td = m * q_r_td**2 * q_thd_td
+    force = radial_force(k_c).subs({q_r: q_r_td, q_th: q_th_td, p_th: p_td})
+    b = force  # k_c (l0 - q_r_td) + Rbar, Rbar = F_r(td) - k_c (l0 - q_r_td)
+    c = (m * q_rd_td) ** 2 / (2 * m)
+    z_b = sym("z_b_q_r")
+    held = Stage(
+        (
+            (z_b, q_r_td - 2 * c / (b + sp.sqrt(b**2 + 2 * k_c * c))),
+            (sym("z_b_q_th"), q_th_td),
+            (sym("z_b_q_thd"), p_td / (m * z_b**2)),
+            (sym("z_lo_q_th"), sp.S.Zero),  # replaced after the bottom
+            (sym("z_lo_q_thd"), sp.S.Zero),
+        ),
+        comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
+    )
+    return Switch(
+        sym(ZEROTH.name),
+        (
+            (ZEROTH.code("geyer"), (Call(geyer, call_args, bind, comment="zeroth iterate: Geyer et al."),)),
+            (ZEROTH.code("held"), (held,)),
+        ),
+        comment="zeroth iterate",
+    )
+
+
+def _held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
+    """The held bottom state's liftoff (q_th, q_thd): angle and angular momentum of the bottom."""
+    q_r_b, _, q_th_b, q_thd_b = bottom
+    return q_th_b, q_thd_b * q_r_b**2 / q_r_lo**2
+
+
+def _zeroth_steps(inp: MapInputs) -> tuple[Step, Step]:
+    """Two switches: the zeroth iterate's bottom (before the compression half) and its liftoff
+    (before the decompression half; the held choice needs the computed bottom)."""
+    q_r_lo = inp.params["q_r_lo"]
+    before = _zeroth_bottom(inp.touchdown, inp.params, q_r_lo)
+    held = _held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
+    after = Switch(
+        inp.opt("zeroth"),
+        (
+            (
+                ZEROTH.code("geyer"),
+                (Stage(((sym("g_lo_q_th"), sym("z_lo_q_th")), (sym("g_lo_q_thd"), sym("z_lo_q_thd")))),),
+            ),
+            (
+                ZEROTH.code("held"),
+                (Stage(((sym("g_lo_q_th"), held[0]), (sym("g_lo_q_thd"), held[1]))),),
+            ),
+        ),
+        comment="zeroth iterate at liftoff",
+    )
+    return before, after
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
+    p = inp.params
+    options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
+    before, after = _zeroth_steps(inp)
+    compression, decompression = half_kernel("compression"), half_kernel("decompression")
+    physical = {q: p[q] for q in ("m", "l0", "g_s")}
+    steps = (
+        Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
+        before,
+        Call(
+            compression,
+            {
+                "q_r": q_r_td,
+                "q_rd": q_rd_td,
+                "q_th": q_th_td,
+                "q_thd": q_thd_td,
+                **physical,
+                "k_c": p["k_c"],
+                **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
+                **options,
+            },
+            {
+                "t_half": "t_bottom",
+                **{f"end_{q}": f"bottom_{q}" for q in _POLAR_NAMES},
+                "passes": "c_passes",
+            },
+            comment="compression half, k_c (report 5.2.1)",
+        ),
+        after,
+        Call(
+            decompression,
+            {
+                **{q: sym(f"bottom_{q}") for q in _POLAR_NAMES},
+                **physical,
+                "k_d": p["k_d"],
+                "q_r_lo": p["q_r_lo"],
+                "guess_q_th": sym("g_lo_q_th"),
+                "guess_q_thd": sym("g_lo_q_thd"),
+                **options,
+            },
+            {
+                "t_half": "t_decompression",
+                **{f"end_{q}": f"liftoff_{q}" for q in _POLAR_NAMES},
+                "passes": "d_passes",
+            },
+            comment="decompression half, k_d (report 3.2, 5.2.2)",
+        ),
+        Stage(
+            (
+                (sym("t_stance"), sym("t_bottom") + sym("t_decompression")),
+                # the larger of the two halves' pass counts: at most the option iterations
+                (
+                    sym("passes"),
+                    (sym("c_passes") + sym("d_passes") + sp.Abs(sym("c_passes") - sym("d_passes"))) / 2,
+                ),
+            ),
+            (Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
+        ),
+    )
+    return MapBuild(steps=steps, helpers=(compression, decompression))
+
+
+_EQUATIONS = ("27", "29", "30", "31", "32", "33", "35", "37", "41", "114", "115", "116", "117", "118", "137")
+
+MAPS = (
+    MapSpec(
+        name="iterative",
+        title="Iterative stance map (Schwind and Koditschek, converging form)",
+        section="5.2",
+        equations=tuple(sorted(_EQUATIONS, key=int)),
+        params=("m", "l0", "k_c", "k_d", "g_s"),
+        build=_build,
+        options=(NODES, ITERATIONS, TOL, ZEROTH),
+        extras=(Field("passes", "Picard passes run (the larger of the two halves)", "1"),),
+        summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the radial "
+        "work; k_c before the bottom, k_d after",
+        notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of "
+        "(33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
+        "p_r_td^2 = 2 m int F_r.",
+    ),
+)
+
+
+_HALF_OUTPUTS = {"t_half": "t_half", **{f"end_{q}": f"end_{q}" for q in _POLAR_NAMES}, "passes": "passes"}
+_PASSES = Field("passes", "Picard passes run", "1")
+
+
+def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    """Touchdown -> bottom with k_c; the zeroth iterate from the touchdown state (its Geyer call
+    takes q_r_lo = q_r_td: only its bottom is used)."""
+    p = inp.params
+    options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
+    return (
+        _zeroth_bottom(inp.state, p, inp.state[0]),
+        Call(
+            half_kernel("compression"),
+            {
+                **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
+                **{q: p[q] for q in ("m", "l0", "k_c", "g_s")},
+                **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
+                **options,
+            },
+            _HALF_OUTPUTS,
+            comment="compression half, k_c (report 5.2.1)",
+        ),
+    )
+
+
+def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    """Bottom -> liftoff with k_d; zeroth iterate: the bottom's angle and angular momentum held."""
+    p = inp.params
+    guess_q_th, guess_q_thd = _held_liftoff(inp.state, p["q_r_lo"])
+    return (
+        Call(
+            half_kernel("decompression"),
+            {
+                **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
+                **{q: p[q] for q in ("m", "l0", "k_d", "g_s", "q_r_lo")},
+                "guess_q_th": guess_q_th,
+                "guess_q_thd": guess_q_thd,
+                **{o: inp.opt(o) for o in ("nodes", "iterations", "tol")},
+            },
+            _HALF_OUTPUTS,
+            comment="decompression half, k_d (report 5.2.2)",
+        ),
+    )
+
+
+HALVES = (
+    HalfSpec(
+        name="iterative-compression",
+        title="Iterative compression half (touchdown to bottom, k_c; converging form)",
+        section="5.2.1",
+        equations=("29", "30", "31", "32", "114", "115", "116", "117", "118", "123"),
+        whole="iterative",
+        start="touchdown",
+        params=("m", "l0", "k_c", "g_s"),
+        build=_compression_half,
+        options=(NODES, ITERATIONS, TOL, ZEROTH),
+        extras=(_PASSES,),
+        summary="the compression half of `iterative`: bottom leg length from the radial work, Picard passes "
+        "on Gauss nodes in u",
+    ),
+    HalfSpec(
+        name="iterative-decompression",
+        title="Iterative decompression half (bottom to liftoff, k_d; converging form)",
+        section="5.2.2",
+        equations=("29", "30", "31", "32", "37", "41", "137", "138", "139", "140", "141", "143"),
+        whole="iterative",
+        start="bottom",
+        params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+        build=_decompression_half,
+        options=(NODES, ITERATIONS, TOL),
+        extras=(_PASSES,),
+        summary="the decompression half of `iterative` from any bottom state: zeroth iterate the bottom's "
+        "angle and angular momentum held, liftoff p_r from the radial work",
+    ),
+)

@@ -1,0 +1,130 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/maps/schwind.py
+# Template:  derive/templates/kernels.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   geyer.py sha256:b93d5e8ad96a402f
+#   iterative.py sha256:b00d747eb8619da9
+# ----------------------------------------------------------------------------------------------
+"""Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from .geyer import geyer_stance
+from .iterative import schwind_compression
+
+NAN = math.nan
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k_c: leg stiffness while compressing k_c [N/m]
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends: 0 = geyer, 1 = held
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 31
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # zeroth iterate
+    if zeroth == 0.0:
+        # zeroth iterate: Geyer et al.
+        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+        if _c0[10] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+        z_b_q_r = _c0[2]
+        z_b_q_th = _c0[4]
+        z_b_q_thd = _c0[5]
+        z_lo_q_th = _c0[8]
+        z_lo_q_thd = _c0[9]
+    elif zeroth == 1.0:
+        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+        _x0 = k_c*q_r_td
+        _x1 = g_s*m*math.cos(q_th_td)
+        _x2 = q_thd_td**2
+        _x3 = m*q_rd_td**2
+        _x4 = -_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td + k_c*l0)**2)) + q_r_td
+        z_b_q_r = _x4
+        z_b_q_th = q_th_td
+        z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+        z_lo_q_th = 0.0
+        z_lo_q_thd = 0.0
+    else:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # compression half, k_c (report 5.2.1)
+    _c1 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    if _c1[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, _c1[6])
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth, out, status):
+    """Parallel batch form of :func:`iterative_compression`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, nodes, iterations, tol, zeroth.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes, iterations, tol, zeroth)
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
