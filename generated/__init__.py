@@ -20,7 +20,9 @@ Modules:
     gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
+    iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.
     iterative_decompression: Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff.
+    iterative_report_decompression: Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom -> liftoff.
     maps_index: the index of every declared map (plain data).
     status: status codes shared by all kernels and the exact simulator.
 """

@@ -74,7 +74,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         liftoff_q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 304
+    # Total ops: 307
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
@@ -183,15 +183,13 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         c_steps += 1.0
         if _conv0:
             break
-    # bottom state (p_r = 0); E_ba of (98): the energy jump of the stiffness switch
+    # bottom state (p_r = 0)
     t_bottom = c_T
     bottom_q_rd = 0.0
     bottom_q_th = c_Q
     bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # E_ba of (98): the energy jump of the stiffness switch
     E_ba = E_ab + (-bottom_q_r + l0)**2*(-0.5*k_c + (0.5)*k_d)
-    # bottom below q_r_lo
-    if not ((-bottom_q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
     # zeroth iterate at liftoff
     if zeroth == 0.0:
         g_lo_q_th = z_lo_q_th
@@ -201,6 +199,9 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_lo_q_thd = bottom_q_r**2*bottom_q_thd/q_r_lo**2
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # bottom below q_r_lo
+    if not ((-bottom_q_r + q_r_lo > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x25 = 4.0**(-iterations)*(-bottom_q_r + q_r_lo)
     _x26 = (0.25)*_x25
@@ -208,16 +209,17 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     _x28 = _x27**2
     _x29 = k_d*m
     _x30 = _x27**3
-    _x31 = 4.0**(-0.5*iterations)
-    _x32 = _x31*(-c_P + g_lo_q_thd*m*q_r_lo**2)
-    _x33 = _x31*(-c_Q + g_lo_q_th)
-    _x34 = (2.0*E_ba*_x28*m - _x27**4*_x29 - _x28*_x29*l0**2 - 2.0*_x30*g_s*m**2*math.cos((0.5)*_x33 + c_Q) + 2.0*_x30*k_d*l0*m - ((0.5)*_x32 + c_P)**2)/_x28
+    _x31 = bottom_q_r**2*bottom_q_thd*m
+    _x32 = 4.0**(-0.5*iterations)
+    _x33 = _x32*(-_x31 + g_lo_q_thd*m*q_r_lo**2)
+    _x34 = _x32*(-bottom_q_th + g_lo_q_th)
+    _x35 = (2.0*E_ba*_x28*m - _x27**4*_x29 - _x28*_x29*l0**2 - 2.0*_x30*g_s*m**2*math.cos((0.5)*_x34 + bottom_q_th) + 2.0*_x30*k_d*l0*m - (_x31 + (0.5)*_x33)**2)/_x28
     d_e_n = _x25
     d_e_z = _x26
-    d_rad_z = _x34
-    d_Q0 = _x33 + c_Q
-    d_P0 = _x32 + c_P
-    d_T0 = ((_x25*m/math.sqrt(_x34) + t_bottom) if (_x34 > 0.0) else (t_bottom))
+    d_rad_z = _x35
+    d_Q0 = _x34 + bottom_q_th
+    d_P0 = _x31 + _x33
+    d_T0 = ((_x25*m/math.sqrt(_x35) + t_bottom) if (_x35 > 0.0) else (t_bottom))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
@@ -229,12 +231,12 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     d_steps = 0.0
     _conv1 = False
     for _it1 in range(int(iterations)):
-        _x35 = bottom_q_r + d_e
-        _x36 = _x35**2
-        _x37 = k_d*m
-        _x38 = _x35**3
-        d_x = _x35
-        d_rad = (2.0*E_ba*_x36*m - _x35**4*_x37 - _x36*_x37*l0**2 - 2.0*_x38*g_s*m**2*math.cos(d_Q) + 2.0*_x38*k_d*l0*m - d_P**2)/_x36
+        _x36 = bottom_q_r + d_e
+        _x37 = _x36**2
+        _x38 = k_d*m
+        _x39 = _x36**3
+        d_x = _x36
+        d_rad = (2.0*E_ba*_x37*m - _x36**4*_x38 - _x37*_x38*l0**2 - 2.0*_x39*g_s*m**2*math.cos(d_Q) + 2.0*_x39*k_d*l0*m - d_P**2)/_x37
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
@@ -250,8 +252,8 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         else:
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
         _n1_0 = d_e_next
-        _n1_1 = c_Q + d_P*d_wq/d_h
-        _n1_2 = c_P + d_wp*g_s*m**2*math.sin(d_Q)/d_h
+        _n1_1 = bottom_q_th + d_P*d_wq/d_h
+        _n1_2 = bottom_q_r**2*bottom_q_thd*m + d_wp*g_s*m**2*math.sin(d_Q)/d_h
         _n1_3 = d_e_next*m/d_h + t_bottom
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -264,20 +266,20 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         if _conv1:
             break
     # (45) corrected: p_r of the iterate at q_r_lo
-    _x39 = q_r_lo**2
-    _x40 = k_d*m
-    _x41 = q_r_lo**3
-    rad_lo = (2.0*E_ba*_x39*m - _x39*_x40*l0**2 - _x40*q_r_lo**4 - 2.0*_x41*g_s*m**2*math.cos(d_Q) + 2.0*_x41*k_d*l0*m - d_P**2)/_x39
+    _x40 = q_r_lo**2
+    _x41 = k_d*m
+    _x42 = q_r_lo**3
+    rad_lo = (2.0*E_ba*_x40*m - _x40*_x41*l0**2 - _x41*q_r_lo**4 - 2.0*_x42*g_s*m**2*math.cos(d_Q) + 2.0*_x42*k_d*l0*m - d_P**2)/_x40
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
     # liftoff state
-    _x42 = (1.0/m)
+    _x43 = (1.0/m)
     t_stance = d_T
     liftoff_q_r = q_r_lo
-    liftoff_q_rd = _x42*math.sqrt(rad_lo)
+    liftoff_q_rd = _x43*math.sqrt(rad_lo)
     liftoff_q_th = d_Q
-    liftoff_q_thd = _x42*d_P/q_r_lo**2
+    liftoff_q_thd = _x43*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)

@@ -192,7 +192,10 @@ def _compare_half(params: SlipParams, td, half: index.HalfInfo, ref: Side, optio
 
 
 def _fmt(x: float, spec: str) -> str:
-    return format(x, spec) if math.isfinite(x) else "n/a"
+    """``x`` formatted by ``spec`` (a width first after an optional sign); n/a, right-aligned to
+    that width, when it is not finite."""
+    width = int(spec.lstrip("+").split(".")[0])
+    return format(x, spec) if math.isfinite(x) else "n/a".rjust(width)
 
 
 def _title(side: Side) -> str:

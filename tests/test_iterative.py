@@ -161,6 +161,8 @@ def test_half_maps_are_listed_and_refuse_the_whole_stance_api():
     assert {n: (h.section, h.start, h.end) for n, h in halves.items()} == {
         "iterative-compression": ("5.2.1", "touchdown", "bottom"),
         "iterative-decompression": ("5.2.2", "bottom", "liftoff"),
+        "iterative-report-compression": ("5.2.1", "touchdown", "bottom"),
+        "iterative-report-decompression": ("5.2.2", "bottom", "liftoff"),
     }
     with pytest.raises(ValueError, match="half-stance map"):
         slipmaps.stance("iterative-compression", VARIABLE, TOUCHDOWNS[0])

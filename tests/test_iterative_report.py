@@ -130,3 +130,41 @@ def test_variants_differ():
     assert a["liftoff_q_th"] != pytest.approx(b["liftoff_q_th"], rel=1e-6)
     assert a["bottom_q_thd"] != pytest.approx(b["bottom_q_thd"], rel=1e-6)
     assert a["t_stance"] == pytest.approx(b["t_stance"], rel=0.1)  # same time formula, other iterates
+
+
+@pytest.mark.parametrize("variant", ["integrand", "factor"])
+def test_eq124_eq126_compression_half_is_the_whole_maps_bottom(variant):
+    params = SlipParams(m=80.0, l0=1.0, k_c=7848.0, k_d=9000.0)
+    whole = slipmaps.stance(MAP, params, SHALLOW, iterations=2, variant=variant)
+    half = slipmaps.half_stance(
+        "iterative-report-compression", params, SHALLOW, iterations=2, variant=variant
+    )
+    assert whole.ok and half.ok, half.message
+    assert half["end"] == whole.bottom and half["t_half"] == whole.t_bottom
+
+
+def _energy(params: SlipParams, k: float, state) -> float:
+    r, rd, th, thd = state
+    return (
+        0.5 * params.m * (rd**2 + r**2 * thd**2)
+        + 0.5 * k * (params.l0 - r) ** 2
+        + params.m * params.g_s * r * math.cos(th)
+    )
+
+
+@pytest.mark.parametrize("variant", ["integrand", "factor"])
+def test_eq137_eq151_decompression_half_keeps_the_bottom_energy(variant):
+    """From a bottom state, E_ba of (137) is that state's energy with k_d, and the liftoff p_r is
+    H^{-1} at q_r_lo on it ((45) corrected): the liftoff state has the bottom's energy (measured
+    2e-16 relative); n = 0 holds the bottom's angle."""
+    params = SlipParams(m=80.0, l0=1.0, k_c=7848.0, k_d=9000.0)
+    bottom = slipmaps.stance("exact", params, SHALLOW).bottom
+    name = "iterative-report-decompression"
+    for n in (0, 1, 2):
+        res = slipmaps.half_stance(name, params, bottom, iterations=n, variant=variant)
+        assert res.ok, res.message
+        assert _energy(params, params.k_d, res["end"]) == pytest.approx(
+            _energy(params, params.k_d, (bottom[0], 0.0, *bottom[2:])), rel=1e-12
+        )
+    held = slipmaps.half_stance(name, params, bottom, iterations=0, variant=variant)
+    assert held["end_q_th"] == bottom[2]

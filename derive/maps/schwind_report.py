@@ -52,14 +52,15 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..halfspec import HalfInputs, HalfSpec
 from ..ir import Guard, Iterate, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
 from .iterative import radial_momentum
-from .schwind import ZEROTH, _zeroth_steps
+from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_steps
 
-__all__ = ["VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
+__all__ = ["HALVES", "VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
 
 VARIANT = Option(
     "variant",
@@ -175,39 +176,24 @@ def chain_steps(
     return (start, loop)
 
 
-def _build(inp: MapInputs) -> MapBuild:
-    q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
-    p = inp.params
-    q_r_lo = p["q_r_lo"]
-    iterations, variant = inp.opt("iterations"), inp.opt("variant")
-    before, after = _zeroth_steps(inp)
-    q_r_b = sym("bottom_q_r")
+def _compression_steps(touchdown, p: dict, iterations, variant) -> tuple[Step, ...]:
+    """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``;
+    needs the zeroth iterate's bottom ``z_b_*`` (:func:`.schwind._zeroth_bottom`) first."""
+    q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
+    q_r_b, e_ab = sym("bottom_q_r"), sym("E_ab")
     p_td = m * q_r_td**2 * q_thd_td
-    e_ab, e_ba = sym("E_ab"), sym("E_ba")
     at_td = {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
-    energy_td = mechanics.stance_energy(k_c).subs(at_td, simultaneous=True)
-
-    # compression: anchored at touchdown, x_0 = q_r_b, points 3/4 q_r_td + 1/4 x (123)
     z_p_b = m * sym("z_b_q_r") ** 2 * sym("z_b_q_thd")
 
-    def compression_zeroth(e):
+    def zeroth(e):  # anchored at touchdown, x_0 = q_r_b, points 3/4 q_r_td + 1/4 x (123)
         u = sp.sqrt(1 - e / (q_r_b - q_r_td))  # sqrt((x - q_r_b)/(q_r_td - q_r_b)), x = q_r_td + e
         return sym("z_b_q_th") + (q_th_td - sym("z_b_q_th")) * u, z_p_b + (p_td - z_p_b) * u
 
-    # decompression: anchored at the bottom, x_0 = q_r_lo, points 3/4 q_r_b + 1/4 x (41)/(143)
-    th_b, p_b = sym("c_Q"), sym("c_P")
-    p_lo = m * q_r_lo**2 * sym("g_lo_q_thd")
-
-    def decompression_zeroth(e):
-        u = sp.sqrt(e / (q_r_lo - q_r_b))
-        return th_b + (sym("g_lo_q_th") - th_b) * u, p_b + (p_lo - p_b) * u
-
-    rad_lo = sym("rad_lo")
-    steps = (
+    return (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
-        before,
+        _zeroth_bottom(touchdown, p, p.get("q_r_lo", q_r_td)),
         Stage(
-            ((q_r_b, sym("z_b_q_r")), (e_ab, energy_td)),
+            ((q_r_b, sym("z_b_q_r")), (e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True))),
             (
                 Guard(q_r_b > 0, "FALL", "bottom leg length q_r_b > 0"),
                 Guard(q_r_td - q_r_b > 0, "NUMERICAL_RANGE", "bottom below touchdown"),
@@ -221,7 +207,7 @@ def _build(inp: MapInputs) -> MapBuild:
             sign=-1,
             anchor=(q_r_td, sp.S.Zero, q_th_td, p_td),
             offset=q_r_b - q_r_td,
-            zeroth=compression_zeroth,
+            zeroth=zeroth,
             iterations=iterations,
             variant=variant,
         ),
@@ -229,27 +215,41 @@ def _build(inp: MapInputs) -> MapBuild:
             (
                 (sym("t_bottom"), sym("c_T")),
                 (sym("bottom_q_rd"), sp.S.Zero),
-                (sym("bottom_q_th"), th_b),
-                (sym("bottom_q_thd"), p_b / (m * q_r_b**2)),
-                (e_ba, e_ab + (k_d - k_c) / 2 * (l0 - q_r_b) ** 2),
+                (sym("bottom_q_th"), sym("c_Q")),
+                (sym("bottom_q_thd"), sym("c_P") / (m * q_r_b**2)),
             ),
-            (Guard(q_r_lo - q_r_b > 0, "NO_LIFTOFF", "bottom below q_r_lo"),),
-            comment="bottom state (p_r = 0); E_ba of (98): the energy jump of the stiffness switch",
+            comment="bottom state (p_r = 0)",
         ),
-        after,
+    )
+
+
+def _decompression_steps(bottom, t_b, energy, guess, q_r_lo, iterations, variant) -> tuple[Step, ...]:
+    """Bottom -> liftoff (k_d) with the energy E_ba: defines ``t_stance`` (from t_b) and
+    ``liftoff_q_r`` ... ``liftoff_q_thd``; ``guess`` = the zeroth iterate's liftoff (q_th, q_thd)."""
+    q_r_b, _, th_b, thd_b = bottom
+    p_b = m * q_r_b**2 * thd_b
+    p_lo = m * q_r_lo**2 * guess[1]
+
+    def zeroth(e):  # anchored at the bottom, x_0 = q_r_lo, points 3/4 q_r_b + 1/4 x (41)/(143)
+        u = sp.sqrt(e / (q_r_lo - q_r_b))
+        return th_b + (guess[0] - th_b) * u, p_b + (p_lo - p_b) * u
+
+    rad_lo = sym("rad_lo")
+    return (
+        Stage((), (Guard(q_r_lo - q_r_b > 0, "NO_LIFTOFF", "bottom below q_r_lo"),)),
         *chain_steps(
             "d_",
             stiffness=k_d,
-            energy=e_ba,
+            energy=energy,
             sign=1,
-            anchor=(q_r_b, sym("t_bottom"), th_b, p_b),
+            anchor=(q_r_b, t_b, th_b, p_b),
             offset=q_r_lo - q_r_b,
-            zeroth=decompression_zeroth,
+            zeroth=zeroth,
             iterations=iterations,
             variant=variant,
         ),
         Stage(
-            ((rad_lo, radicand(k_d, e_ba, q_r_lo, sym("d_Q"), sym("d_P"))),),
+            ((rad_lo, radicand(k_d, energy, q_r_lo, sym("d_Q"), sym("d_P"))),),
             (Guard(rad_lo > 0, "IMAGINARY_MOMENTUM", "p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real"),),
             comment="(45) corrected: p_r of the iterate at q_r_lo",
         ),
@@ -265,7 +265,64 @@ def _build(inp: MapInputs) -> MapBuild:
             comment="liftoff state",
         ),
     )
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    p = inp.params
+    iterations, variant = inp.opt("iterations"), inp.opt("variant")
+    _, after = _zeroth_steps(inp)
+    bottom = tuple(sym(f"bottom_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd"))
+    e_ba = sym("E_ba")
+    steps = (
+        *_compression_steps(inp.touchdown, p, iterations, variant),
+        Stage(
+            ((e_ba, sym("E_ab") + (k_d - k_c) / 2 * (l0 - bottom[0]) ** 2),),
+            comment="E_ba of (98): the energy jump of the stiffness switch",
+        ),
+        after,
+        *_decompression_steps(
+            bottom,
+            sym("t_bottom"),
+            e_ba,
+            (sym("g_lo_q_th"), sym("g_lo_q_thd")),
+            p["q_r_lo"],
+            iterations,
+            variant,
+        ),
+    )
     return MapBuild(steps=steps)
+
+
+def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    steps = _compression_steps(inp.state, inp.params, inp.opt("iterations"), inp.opt("variant"))
+    out = ((sym("t_half"), sym("t_bottom")),) + tuple(
+        (sym(f"end_{q}"), sym(f"bottom_{q}")) for q in ("q_r", "q_rd", "q_th", "q_thd")
+    )
+    return (*steps, Stage(out, comment="the bottom state"))
+
+
+def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    """From a bottom state: E_ba of (137) is that state's energy with k_d (p_r = 0 there)."""
+    bottom, p = inp.state, inp.params
+    q_r_b, _, q_th_b, q_thd_b = bottom
+    at_b = {q_r: q_r_b, q_rd: sp.S.Zero, q_th: q_th_b, q_thd: q_thd_b}
+    e_ba = sym("E_ba")
+    steps = _decompression_steps(
+        bottom,
+        sp.S.Zero,
+        e_ba,
+        _held_liftoff(bottom, p["q_r_lo"]),
+        p["q_r_lo"],
+        inp.opt("iterations"),
+        inp.opt("variant"),
+    )
+    out = ((sym("t_half"), sym("t_stance")),) + tuple(
+        (sym(f"end_{q}"), sym(f"liftoff_{q}")) for q in ("q_r", "q_rd", "q_th", "q_thd")
+    )
+    energy = Stage(
+        ((e_ba, mechanics.stance_energy(k_d).subs(at_b, simultaneous=True)),), comment="E_ba (137)"
+    )
+    return (energy, *steps, Stage(out, comment="the liftoff state"))
 
 
 _EQUATIONS = (
@@ -293,5 +350,34 @@ MAPS = (
         notes="(42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th; "
         "liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever H^{-1} "
         "of an iterate is imaginary.",
+    ),
+)
+
+HALVES = (
+    HalfSpec(
+        name="iterative-report-compression",
+        title="Iterative compression half as printed (touchdown to bottom, k_c)",
+        section="5.2.1",
+        equations=tuple(str(i) for i in (*range(114, 127), *range(128, 136))) + ("154",),
+        whole="iterative-report",
+        start="touchdown",
+        params=("m", "l0", "k_c", "g_s"),
+        build=_compression_half,
+        options=(VARIANT, ITERATIONS, ZEROTH),
+        summary="the compression half of `iterative-report`: the chain anchored at touchdown, the printed "
+        "point (123), bottom leg length of the zeroth iterate",
+    ),
+    HalfSpec(
+        name="iterative-report-decompression",
+        title="Iterative decompression half as printed (bottom to liftoff, k_d)",
+        section="5.2.2",
+        equations=("137", "138", "139", "140", "141", "143", "144", "145", "146", "147", "148", "149", "150"),
+        whole="iterative-report",
+        start="bottom",
+        params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+        build=_decompression_half,
+        options=(VARIANT, ITERATIONS),
+        summary="the decompression half of `iterative-report` from any bottom state: E_ba the bottom state's "
+        "energy with k_d, zeroth iterate the bottom's angle and angular momentum held",
     ),
 )

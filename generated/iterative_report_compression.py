@@ -1,0 +1,206 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/maps/schwind_report.py
+# Template:  derive/templates/kernels.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   geyer.py sha256:b93d5e8ad96a402f
+# ----------------------------------------------------------------------------------------------
+"""Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom."""
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from .geyer import geyer_stance
+
+NAN = math.nan
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k_c: leg stiffness while compressing k_c [N/m]
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends: 0 = geyer, 1 = held
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 161
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # zeroth iterate
+    if zeroth == 0.0:
+        # zeroth iterate: Geyer et al.
+        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+        if _c0[10] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, _c0[10])
+        z_b_q_r = _c0[2]
+        z_b_q_th = _c0[4]
+        z_b_q_thd = _c0[5]
+        z_lo_q_th = _c0[8]
+        z_lo_q_thd = _c0[9]
+    elif zeroth == 1.0:
+        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+        _x0 = k_c*q_r_td
+        _x1 = g_s*m*math.cos(q_th_td)
+        _x2 = q_thd_td**2
+        _x3 = m*q_rd_td**2
+        _x4 = -_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td + k_c*l0)**2)) + q_r_td
+        z_b_q_r = _x4
+        z_b_q_th = q_th_td
+        z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+        z_lo_q_th = 0.0
+        z_lo_q_thd = 0.0
+    else:
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # bottom leg length: the zeroth iterate's; E_ab (114) of the touchdown state
+    _x5 = (0.5)*k_c
+    _x6 = q_r_td**2
+    _x7 = (0.5)*m
+    bottom_q_r = z_b_q_r
+    E_ab = _x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x8 = 4.0**(-iterations)
+    _x9 = _x8*(bottom_q_r - q_r_td)
+    _x10 = (0.25)*_x9
+    _x11 = _x10 + q_r_td
+    _x12 = _x11**2
+    _x13 = k_c*m
+    _x14 = _x11**3
+    _x15 = m*z_b_q_r**2*z_b_q_thd
+    _x16 = math.sqrt(1.0 - 0.25*_x8)
+    _x17 = -_x15 + m*q_r_td**2*q_thd_td
+    _x18 = q_th_td - z_b_q_th
+    _x19 = (2.0*E_ab*_x12*m - _x11**4*_x13 - _x12*_x13*l0**2 - 2.0*_x14*g_s*m**2*math.cos(_x16*_x18 + z_b_q_th) + 2.0*_x14*k_c*l0*m - (_x15 + _x16*_x17)**2)/_x12
+    _x20 = math.sqrt(1.0 - _x8)
+    c_e_n = _x9
+    c_e_z = _x10
+    c_rad_z = _x19
+    c_Q0 = _x18*_x20 + z_b_q_th
+    c_P0 = _x15 + _x17*_x20
+    c_T0 = ((-_x9*m/math.sqrt(_x19)) if (_x19 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x21 = c_e + q_r_td
+        _x22 = _x21**2
+        _x23 = k_c*m
+        _x24 = _x21**3
+        c_x = _x21
+        c_rad = (2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q) + 2.0*_x24*k_c*l0*m - c_P**2)/_x22
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = 0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0)) and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth, out, status):
+    """Parallel batch form of :func:`iterative_report_compression`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, zeroth.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = iterative_report_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, variant, iterations, zeroth)
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
