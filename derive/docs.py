@@ -102,22 +102,25 @@ def maps_page(index: dict) -> str:
             )
         if row["extras"]:
             out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))
-        for o in row["options"]:
-            if o["kind"] == "choice":
-                choices = "; ".join(f"`{c['value']}`: {c['doc']}" for c in o["choices"])
-                out.append(f"- option `{o['name']}` (default `{o['default']}`): {o['doc']}. {choices}")
-            else:
-                bounds = (
-                    f", {o['low']:g} to {o['high']:g}"
-                    if o["low"] is not None and o["high"] is not None
-                    else ""
-                )
-                out.append(
-                    f"- option `{o['name']}` ({o['kind']}{bounds}, default {o['default']}): {o['doc']}"
-                )
+        out += _option_lines(row)
         out.append("")
     out += _halves_page(index)
     return "\n".join(out).rstrip("\n") + "\n"
+
+
+def _option_lines(row: dict) -> list[str]:
+    """One bullet per option of an index row: its kind, bounds or choices, default and doc."""
+    out = []
+    for o in row["options"]:
+        if o["kind"] == "choice":
+            choices = "; ".join(f"`{c['value']}`: {c['doc']}" for c in o["choices"])
+            out.append(f"- option `{o['name']}` (default `{o['default']}`): {o['doc']}. {choices}")
+        else:
+            bounds = (
+                f", {o['low']:g} to {o['high']:g}" if o["low"] is not None and o["high"] is not None else ""
+            )
+            out.append(f"- option `{o['name']}` ({o['kind']}{bounds}, default {o['default']}): {o['doc']}")
+    return out
 
 
 def _halves_page(index: dict) -> list[str]:
@@ -147,11 +150,11 @@ def _halves_page(index: dict) -> list[str]:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
         out += [
             f"- arguments: {', '.join(f'`{a}`' for a in row['args'])}",
-            f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernel']}`, "
-            f"`{row['kernel']}_batch`",
+            f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernels']['half']}`, "
+            f"`{row['kernels']['half']}_batch`",
         ]
         if row["extras"]:
             out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))
-        out += [f"- option `{o['name']}` (default `{o['default']}`): {o['doc']}" for o in row["options"]]
+        out += _option_lines(row)
         out.append("")
     return out

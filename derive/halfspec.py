@@ -148,11 +148,12 @@ class HalfSpec:
             "whole": self.whole,
             "start": self.start,
             "end": self.end,
+            "requires": [],
             "params": list(self.params),
             "options": [o.index_row() for o in self.options],
             "module": self.ident,
             "summary": self.summary,
-            "kernel": kernel.name,
+            "kernels": {"half": kernel.name},
             "args": list(kernel.arg_names),
             "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],
         }

@@ -69,9 +69,9 @@ def _params(args: argparse.Namespace) -> SlipParams:
 
 def _options(name: str, pairs: list[str] | None) -> dict:
     """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
-    from .index import get, get_half, halves
+    from .index import lookup
 
-    info = get_half(name) if name in {h.name for h in halves()} else get(name)
+    info = lookup(name)
     out = {}
     for pair in pairs or ():
         key, sep, value = pair.partition("=")
@@ -155,7 +155,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _cmd_maps(args: argparse.Namespace) -> int:
-    from .index import halves, maps
+    from .index import HalfInfo, halves, maps
 
     rows = maps() + halves()
     if args.json:
@@ -164,7 +164,7 @@ def _cmd_maps(args: argparse.Namespace) -> int:
     w = max(len(m.name) for m in rows) + 1
     for m in rows:
         print(f"{m.name:<{w}} {m.section:<6} {m.title}")
-        if getattr(m, "whole", ""):
+        if isinstance(m, HalfInfo):
             where = f"half of {m.whole}: {m.start} -> {m.end} (slipmaps.half_stance)"
         else:
             where = f"requires {', '.join(m.requires) or 'nothing'}"

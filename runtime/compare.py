@@ -53,6 +53,11 @@ class Side:
     status: Status  # the stance's status, else the ascent's
     next_apex: tuple[float, float]
 
+    @property
+    def message(self) -> str:
+        """The stance result's own message when its status is the side's, else the status's."""
+        return self.stance.message if self.stance.status == self.status else MESSAGES[int(self.status)]
+
     def value(self, key: str) -> float:
         if key == "apex_height":
             return self.next_apex[0]
@@ -80,9 +85,9 @@ class Comparison:
             "against": self.against.map,
             "against_options": self.against.options,
             "map_status": self.map.status.name,
-            "map_message": MESSAGES[int(self.map.status)],
+            "map_message": self.map.message,
             "against_status": self.against.status.name,
-            "against_message": MESSAGES[int(self.against.status)],
+            "against_message": self.against.message,
             # the names of the exact-vs-approximate default, kept for scripts
             "approx_status": self.map.status.name,
             "exact_status": self.against.status.name,
@@ -126,9 +131,10 @@ def compare(
 ) -> Comparison:
     """One step by ``map`` and by ``against`` from an apex (height, speed, touchdown angle) or a
     polar touchdown state. ValueError when there is no touchdown or a map refuses the parameters."""
-    half = next((h for h in index.halves() if h.name == map), None)
-    for name in (map, against) if half is None else (against,):
-        index.get(name).param_values(params)  # ValueError naming the requirement, before any work
+    info = index.lookup(map)
+    half = info if isinstance(info, index.HalfInfo) else None
+    for name in (map, against):
+        index.lookup(name).param_values(params)  # ValueError naming the requirement, before any work
     if touchdown is not None:
         if apex_height is not None or apex_speed is not None or touchdown_angle is not None:
             raise ValueError(
@@ -172,13 +178,12 @@ def _compare_half(params: SlipParams, td, half: index.HalfInfo, ref: Side, optio
     else:
         start = tuple(whole.get(f"bottom_{q}", math.nan) for q in ("q_r", "q_rd", "q_th", "q_thd"))
         t_ref = whole.get("t_stance", math.nan) - whole.get("t_bottom", math.nan)
-    if ref.stance.ok:
+    if half.start == "touchdown" or ref.stance.ok:
         res = half_stance(half.name, params, start, **options)
-    else:  # no reference bottom to start from
-        res = None
-    status = res.status if res is not None else ref.status
-    values = dict(res.values) if res is not None else {}
-    mine = Side(half.name, options, res or ref.stance, status, (math.nan, math.nan))
+    else:  # the reference has no bottom state to start from: the half does not run
+        res = Result(half.name, "half", ref.status, f"not run: {ref.stance.message}", {}, {})
+    values = dict(res.values)
+    mine = Side(half.name, options, res, res.status, (math.nan, math.nan))
     rows = tuple(
         Row(
             label,
@@ -199,8 +204,7 @@ def _fmt(x: float, spec: str) -> str:
 
 
 def _title(side: Side) -> str:
-    halves = {h.name: h for h in index.halves()}
-    info = halves[side.map] if side.map in halves else index.get(side.map)
+    info = index.lookup(side.map)
     opts = ", ".join(f"{k}={v}" for k, v in side.options.items())
     return f"{side.map} ({info.title}, report {info.section}{'; ' + opts if opts else ''})"
 
@@ -214,8 +218,8 @@ def format_table(c: Comparison) -> str:
         f"g_s={p.g_s:g}, g_f={p.g_f:g} m/s^2, q_r_td={p.q_r_td:g} m, q_r_lo={p.q_r_lo:g} m",
         f"{c.half.start if c.half else 'touchdown'}: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, "
         f"q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s",
-        f"reference: {_title(c.against)}: {MESSAGES[int(c.against.status)]}",
-        f"map:       {_title(c.map)}: {MESSAGES[int(c.map.status)]}",
+        f"reference: {_title(c.against)}: {c.against.message}",
+        f"map:       {_title(c.map)}: {c.map.message}",
         "",
         f"{'quantity':<30}{'unit':>7}{'reference':>14}{'map':>14}{'abs err':>13}{'rel err':>11}",
         "-" * 89,

@@ -147,7 +147,7 @@ step of that angle failed.
 
 
 def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -> str:
-    names = list(dict.fromkeys(_series(v["map"], v["options"]) for g in summary for v in g["variants"]))
+    series = {_series(v["map"], v["options"]): v for g in summary for v in g["variants"]}
     out = [
         "# Convergence of the iterative maps with the number of passes",
         "",
@@ -157,8 +157,8 @@ def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -
         "",
         f"![error against n]({figure_name})",
     ]
-    for name in names:
-        info = index.get(name.split(" ")[0])
+    for name, first in series.items():
+        info = index.get(first["map"])
         defaults = ", ".join(
             f"{o.name} = {o.default}"
             for o in info.options

@@ -18,7 +18,7 @@ from slipmaps.generated import maps_index
 from .params import SlipParams
 from .validate import check_params
 
-__all__ = ["EXACT", "MapInfo", "HalfInfo", "Option", "get", "get_half", "halves", "maps", "names"]
+__all__ = ["EXACT", "MapInfo", "HalfInfo", "Option", "get", "get_half", "halves", "lookup", "maps", "names"]
 
 EXACT = "exact"
 
@@ -170,8 +170,9 @@ def _option(row: dict) -> Option:
     )
 
 
-def _info(r: dict) -> MapInfo:
-    return MapInfo(
+def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
+    """An index row (``MAPS``, ``EXACT`` or ``HALVES``) as ``cls``, with ``extra`` fields."""
+    return cls(
         name=r["name"],
         title=r["title"],
         section=r["section"],
@@ -185,6 +186,7 @@ def _info(r: dict) -> MapInfo:
         extras=tuple(e["name"] for e in r["extras"]),
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),
+        **extra,
     )
 
 
@@ -198,24 +200,17 @@ def maps() -> tuple[MapInfo, ...]:
 def halves() -> tuple[HalfInfo, ...]:
     """Every half-stance map, in report order."""
     return tuple(
-        HalfInfo(
-            name=r["name"],
-            title=r["title"],
-            section=r["section"],
-            equations=tuple(r["equations"]),
-            requires=(),
-            params=tuple(r["params"]),
-            options=tuple(_option(o) for o in r["options"]),
-            summary=r["summary"],
-            module=r["module"],
-            kernels={"half": r["kernel"]},
-            extras=tuple(e["name"] for e in r["extras"]),
-            whole=r["whole"],
-            start=r["start"],
-            end=r["end"],
-        )
-        for r in maps_index.HALVES
+        _info(r, HalfInfo, whole=r["whole"], start=r["start"], end=r["end"]) for r in maps_index.HALVES
     )
+
+
+def lookup(name: str) -> MapInfo:
+    """The map or half-stance map called ``name`` (:class:`HalfInfo` for a half); ValueError
+    listing the valid names of both."""
+    for h in halves():
+        if h.name == name:
+            return h
+    return get(name)
 
 
 def get_half(name: str) -> HalfInfo:

@@ -207,3 +207,12 @@ def test_maps_lists_the_half_maps(capsys):
     assert main(["maps"]) == 0
     out = capsys.readouterr().out
     assert "iterative-compression" in out and "half of iterative: touchdown -> bottom" in out
+
+
+def test_compare_a_decompression_half_without_a_reference_bottom_says_it_did_not_run(capsys):
+    argv = ["compare", "--map", "iterative-decompression", "--angle", "1.4", "--json", "--no-plot"]
+    assert main(argv) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["against_status"] == data["map_status"] == "FALL"
+    assert data["map_message"].startswith("not run: ")
+    assert all(r["value"] is None for r in data["rows"])

@@ -333,14 +333,12 @@ def _held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
     return q_th_b, q_thd_b * q_r_b**2 / q_r_lo**2
 
 
-def _zeroth_steps(inp: MapInputs) -> tuple[Step, Step]:
-    """Two switches: the zeroth iterate's bottom (before the compression half) and its liftoff
-    (before the decompression half; the held choice needs the computed bottom)."""
-    q_r_lo = inp.params["q_r_lo"]
-    before = _zeroth_bottom(inp.touchdown, inp.params, q_r_lo)
+def _zeroth_liftoff(q_r_lo) -> Switch:
+    """The zeroth iterate's liftoff ``g_lo_q_th``, ``g_lo_q_thd`` before the decompression half:
+    Geyer's (``z_lo_*`` of :func:`_zeroth_bottom`) or the computed bottom state's, held."""
     held = _held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
-    after = Switch(
-        inp.opt("zeroth"),
+    return Switch(
+        sym(ZEROTH.name),
         (
             (
                 ZEROTH.code("geyer"),
@@ -353,14 +351,13 @@ def _zeroth_steps(inp: MapInputs) -> tuple[Step, Step]:
         ),
         comment="zeroth iterate at liftoff",
     )
-    return before, after
 
 
 def _build(inp: MapInputs) -> MapBuild:
     q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
     p = inp.params
     options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
-    before, after = _zeroth_steps(inp)
+    before, after = _zeroth_bottom(inp.touchdown, p, p["q_r_lo"]), _zeroth_liftoff(p["q_r_lo"])
     compression, decompression = half_kernel("compression"), half_kernel("decompression")
     physical = {q: p[q] for q in ("m", "l0", "g_s")}
     steps = (

@@ -58,7 +58,7 @@ from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
 from .iterative import radial_momentum
-from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_steps
+from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
 
 __all__ = ["HALVES", "VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
 
@@ -176,9 +176,10 @@ def chain_steps(
     return (start, loop)
 
 
-def _compression_steps(touchdown, p: dict, iterations, variant) -> tuple[Step, ...]:
-    """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``;
-    needs the zeroth iterate's bottom ``z_b_*`` (:func:`.schwind._zeroth_bottom`) first."""
+def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) -> tuple[Step, ...]:
+    """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``,
+    after the zeroth iterate's bottom (:func:`.schwind._zeroth_bottom`; its Geyer call takes
+    ``geyer_q_r_lo``)."""
     q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
     q_r_b, e_ab = sym("bottom_q_r"), sym("E_ab")
     p_td = m * q_r_td**2 * q_thd_td
@@ -191,7 +192,7 @@ def _compression_steps(touchdown, p: dict, iterations, variant) -> tuple[Step, .
 
     return (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
-        _zeroth_bottom(touchdown, p, p.get("q_r_lo", q_r_td)),
+        _zeroth_bottom(touchdown, p, geyer_q_r_lo),
         Stage(
             ((q_r_b, sym("z_b_q_r")), (e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True))),
             (
@@ -270,16 +271,15 @@ def _decompression_steps(bottom, t_b, energy, guess, q_r_lo, iterations, variant
 def _build(inp: MapInputs) -> MapBuild:
     p = inp.params
     iterations, variant = inp.opt("iterations"), inp.opt("variant")
-    _, after = _zeroth_steps(inp)
     bottom = tuple(sym(f"bottom_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd"))
     e_ba = sym("E_ba")
     steps = (
-        *_compression_steps(inp.touchdown, p, iterations, variant),
+        *_compression_steps(inp.touchdown, p, p["q_r_lo"], iterations, variant),
         Stage(
             ((e_ba, sym("E_ab") + (k_d - k_c) / 2 * (l0 - bottom[0]) ** 2),),
             comment="E_ba of (98): the energy jump of the stiffness switch",
         ),
-        after,
+        _zeroth_liftoff(p["q_r_lo"]),
         *_decompression_steps(
             bottom,
             sym("t_bottom"),
@@ -294,7 +294,10 @@ def _build(inp: MapInputs) -> MapBuild:
 
 
 def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
-    steps = _compression_steps(inp.state, inp.params, inp.opt("iterations"), inp.opt("variant"))
+    """Touchdown -> bottom; the zeroth iterate's Geyer call takes q_r_lo = q_r_td (only its bottom
+    is used)."""
+    iterations, variant = inp.opt("iterations"), inp.opt("variant")
+    steps = _compression_steps(inp.state, inp.params, inp.state[0], iterations, variant)
     out = ((sym("t_half"), sym("t_bottom")),) + tuple(
         (sym(f"end_{q}"), sym(f"bottom_{q}")) for q in ("q_r", "q_rd", "q_th", "q_thd")
     )
