@@ -23,7 +23,7 @@ import sympy as sp
 
 from . import docs
 from .equations import render_equation_table
-from .ir import Module
+from .ir import Call, Iterate, Module, Switch
 from .lower import lower
 from .maps import all_halves, all_maps
 from .mapspec import MapSpec
@@ -51,11 +51,40 @@ def _require_checkout() -> None:
         )
 
 
+def _callee_modules(mod: Module) -> set[str]:
+    """The other modules whose kernels ``mod``'s kernels call."""
+    found: set[str] = set()
+
+    def walk(steps) -> None:
+        for step in steps:
+            if isinstance(step, Call):
+                found.add(step.kernel.module)
+            elif isinstance(step, Iterate):
+                walk(step.body)
+            elif isinstance(step, Switch):
+                for _, branch in step.cases:
+                    walk(branch)
+
+    for kernel in mod.kernels():
+        walk(kernel.steps)
+    return found - {mod.name}
+
+
 def modules() -> tuple[Module, ...]:
-    """Every generated kernel module, callees before callers."""
+    """Every generated kernel module, callees before callers (otherwise model, maps in report
+    order, halves)."""
     flights = flight_kernels()
     maps = tuple(spec.module(flights) for spec in all_maps())
-    return MODEL_MODULES + maps + tuple(half.module() for half in all_halves())
+    pending = list(MODEL_MODULES + maps + tuple(half.module() for half in all_halves()))
+    needs = {mod.name: _callee_modules(mod) for mod in pending}
+    done: list[Module] = []
+    while pending:
+        ready = next((m for m in pending if needs[m.name] <= {d.name for d in done}), None)
+        if ready is None:
+            raise ValueError(f"generated modules call each other in a cycle: {[m.name for m in pending]}")
+        done.append(ready)
+        pending.remove(ready)
+    return tuple(done)
 
 
 def _render_module(mod: Module, files: dict[str, str]) -> str:

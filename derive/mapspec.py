@@ -95,6 +95,11 @@ class Option:
         dom = self.domain()
         return Arg(self.symbol, f"option {self.name}: {doc}", None if dom is sp.true else dom)
 
+    @property
+    def default_code(self) -> float | int:
+        """The value a kernel receives for the default (a choice's index)."""
+        return self.code(self.default) if self.choices else self.default
+
     def index_row(self) -> dict:
         return {
             "name": self.name,
@@ -245,6 +250,25 @@ class MapSpec:
             module=self.ident,
             inline=self.inline,
         )
+
+    def stance_call(
+        self,
+        touchdown: tuple[sp.Basic, ...],
+        params: Mapping[str, sp.Basic],
+        bind: Mapping[str, str],
+        comment: str = "",
+    ) -> Call:
+        """A :class:`~.ir.Call` of this map's stance kernel at its default options, for another
+        map's steps. ``params`` gives an expression for every parameter of the map and q_r_lo."""
+        missing = [p for p in self.params + ("q_r_lo",) if p not in params]
+        if missing:
+            raise ValueError(f"map {self.name}: stance_call needs parameter(s) {missing}")
+        args = {
+            **{a.name: x for a, x in zip(catalog.TOUCHDOWN, touchdown, strict=True)},
+            **{p: params[p] for p in self.params + ("q_r_lo",)},
+            **{o.name: sp.Float(o.default_code) for o in self.options},
+        }
+        return Call(self.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
     def state_at_kernel(self) -> Kernel | None:
         if self.built().state_at is None:

@@ -11,13 +11,13 @@ Modules:
     slip_model: SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2).
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
     geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels.
-    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
     gravity_type0: Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return kernels.
     gravity_type1: Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and apex-return kernels.
     gravity_type2: Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return kernels.
     gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels.
     gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time and apex-return kernels.
     gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels.
+    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
     iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.

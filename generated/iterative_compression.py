@@ -6,7 +6,13 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:b93d5e8ad96a402f
-#   iterative.py sha256:b00d747eb8619da9
+#   gravity_type0.py sha256:9ad1b5e5d037404f
+#   gravity_type1.py sha256:8df85c0847f1fb50
+#   gravity_type2.py sha256:089ac77e92240f9a
+#   gravity_type3.py sha256:e58a1a317b1fc866
+#   gravity_type4.py sha256:6bb6498e457c9b35
+#   gravity_type5.py sha256:70d4f36f9336d294
+#   iterative.py sha256:c4deded7715f71f4
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 
@@ -15,6 +21,12 @@ import math
 import numpy as np
 from numba import njit, prange
 from .geyer import geyer_stance
+from .gravity_type0 import gravity_type0_stance
+from .gravity_type1 import gravity_type1_stance
+from .gravity_type2 import gravity_type2_stance
+from .gravity_type3 import gravity_type3_stance
+from .gravity_type4 import gravity_type4_stance
+from .gravity_type5 import gravity_type5_stance
 from .iterative import schwind_compression
 
 NAN = math.nan
@@ -54,7 +66,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends: 0 = geyer, 1 = held
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -67,20 +79,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # zeroth iterate
-    if zeroth == 0.0:
-        # zeroth iterate: Geyer et al.
-        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
-        if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        z_b_q_r = _c0[2]
-        z_b_q_th = _c0[4]
-        z_b_q_thd = _c0[5]
-        z_lo_q_th = _c0[8]
-        z_lo_q_thd = _c0[9]
-    elif zeroth == 1.0:
+    if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
         _x0 = k_c*q_r_td
         _x1 = g_s*m*math.cos(q_th_td)
@@ -92,18 +94,88 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
         z_lo_q_th = 0.0
         z_lo_q_thd = 0.0
+    elif zeroth == 0.0:
+        # zeroth iterate: Geyer et al.'s approximate stance map
+        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+        if _c0[10] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+        z_b_q_r = _c0[2]
+        z_b_q_th = _c0[4]
+        z_b_q_thd = _c0[5]
+        z_lo_q_th = _c0[8]
+        z_lo_q_thd = _c0[9]
+    elif zeroth == 2.0:
+        # zeroth iterate: Gravity correction type 0 (leg length l0)
+        _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0, 0.0)
+        if _c1[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        z_b_q_r = _c1[2]
+        z_b_q_th = _c1[4]
+        z_b_q_thd = _c1[5]
+        z_lo_q_th = _c1[8]
+        z_lo_q_thd = _c1[9]
+    elif zeroth == 3.0:
+        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+        _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0, 1e-12)
+        if _c2[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+        z_b_q_r = _c2[2]
+        z_b_q_th = _c2[4]
+        z_b_q_thd = _c2[5]
+        z_lo_q_th = _c2[8]
+        z_lo_q_thd = _c2[9]
+    elif zeroth == 4.0:
+        # zeroth iterate: Gravity correction type 2 (average leg length)
+        _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        if _c3[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+        z_b_q_r = _c3[2]
+        z_b_q_th = _c3[4]
+        z_b_q_thd = _c3[5]
+        z_lo_q_th = _c3[8]
+        z_lo_q_thd = _c3[9]
+    elif zeroth == 5.0:
+        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+        _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0, 1e-12)
+        if _c4[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+        z_b_q_r = _c4[2]
+        z_b_q_th = _c4[4]
+        z_b_q_thd = _c4[5]
+        z_lo_q_th = _c4[8]
+        z_lo_q_thd = _c4[9]
+    elif zeroth == 6.0:
+        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+        _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        if _c5[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+        z_b_q_r = _c5[2]
+        z_b_q_th = _c5[4]
+        z_b_q_thd = _c5[5]
+        z_lo_q_th = _c5[8]
+        z_lo_q_thd = _c5[9]
+    elif zeroth == 7.0:
+        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+        _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+        if _c6[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+        z_b_q_r = _c6[2]
+        z_b_q_th = _c6[4]
+        z_b_q_thd = _c6[5]
+        z_lo_q_th = _c6[8]
+        z_lo_q_thd = _c6[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # compression half, k_c (report 5.2.1)
-    _c1 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
-    if _c1[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c1[6])
-    t_half = _c1[0]
-    end_q_r = _c1[1]
-    end_q_rd = _c1[2]
-    end_q_th = _c1[3]
-    end_q_thd = _c1[4]
-    passes = _c1[5]
+    _c7 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    if _c7[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, _c7[6])
+    t_half = _c7[0]
+    end_q_r = _c7[1]
+    end_q_rd = _c7[2]
+    end_q_th = _c7[3]
+    end_q_thd = _c7[4]
+    passes = _c7[5]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)

@@ -7,6 +7,12 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:c042f0c9cf6a9745
 #   geyer.py sha256:b93d5e8ad96a402f
+#   gravity_type0.py sha256:9ad1b5e5d037404f
+#   gravity_type1.py sha256:8df85c0847f1fb50
+#   gravity_type2.py sha256:089ac77e92240f9a
+#   gravity_type3.py sha256:e58a1a317b1fc866
+#   gravity_type4.py sha256:6bb6498e457c9b35
+#   gravity_type5.py sha256:70d4f36f9336d294
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels."""
 
@@ -16,6 +22,12 @@ import numpy as np
 from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
+from .gravity_type0 import gravity_type0_stance
+from .gravity_type1 import gravity_type1_stance
+from .gravity_type2 import gravity_type2_stance
+from .gravity_type3 import gravity_type3_stance
+from .gravity_type4 import gravity_type4_stance
+from .gravity_type5 import gravity_type5_stance
 
 NAN = math.nan
 STATUS_OK = 0
@@ -59,7 +71,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends: 0 = geyer, 1 = held
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -74,25 +86,15 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         liftoff_q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 307
+    # Total ops: 310
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate
-    if zeroth == 0.0:
-        # zeroth iterate: Geyer et al.
-        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
-        if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        z_b_q_r = _c0[2]
-        z_b_q_th = _c0[4]
-        z_b_q_thd = _c0[5]
-        z_lo_q_th = _c0[8]
-        z_lo_q_thd = _c0[9]
-    elif zeroth == 1.0:
+    if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
         _x0 = k_c*q_r_td
         _x1 = g_s*m*math.cos(q_th_td)
@@ -104,6 +106,76 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
         z_lo_q_th = 0.0
         z_lo_q_thd = 0.0
+    elif zeroth == 0.0:
+        # zeroth iterate: Geyer et al.'s approximate stance map
+        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
+        if _c0[10] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+        z_b_q_r = _c0[2]
+        z_b_q_th = _c0[4]
+        z_b_q_thd = _c0[5]
+        z_lo_q_th = _c0[8]
+        z_lo_q_thd = _c0[9]
+    elif zeroth == 2.0:
+        # zeroth iterate: Gravity correction type 0 (leg length l0)
+        _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0)
+        if _c1[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        z_b_q_r = _c1[2]
+        z_b_q_th = _c1[4]
+        z_b_q_thd = _c1[5]
+        z_lo_q_th = _c1[8]
+        z_lo_q_thd = _c1[9]
+    elif zeroth == 3.0:
+        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+        _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12)
+        if _c2[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+        z_b_q_r = _c2[2]
+        z_b_q_th = _c2[4]
+        z_b_q_thd = _c2[5]
+        z_lo_q_th = _c2[8]
+        z_lo_q_thd = _c2[9]
+    elif zeroth == 4.0:
+        # zeroth iterate: Gravity correction type 2 (average leg length)
+        _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        if _c3[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+        z_b_q_r = _c3[2]
+        z_b_q_th = _c3[4]
+        z_b_q_thd = _c3[5]
+        z_lo_q_th = _c3[8]
+        z_lo_q_thd = _c3[9]
+    elif zeroth == 5.0:
+        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+        _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12)
+        if _c4[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+        z_b_q_r = _c4[2]
+        z_b_q_th = _c4[4]
+        z_b_q_thd = _c4[5]
+        z_lo_q_th = _c4[8]
+        z_lo_q_thd = _c4[9]
+    elif zeroth == 6.0:
+        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+        _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        if _c5[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+        z_b_q_r = _c5[2]
+        z_b_q_th = _c5[4]
+        z_b_q_thd = _c5[5]
+        z_lo_q_th = _c5[8]
+        z_lo_q_thd = _c5[9]
+    elif zeroth == 7.0:
+        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+        _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
+        if _c6[12] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+        z_b_q_r = _c6[2]
+        z_b_q_th = _c6[4]
+        z_b_q_thd = _c6[5]
+        z_lo_q_th = _c6[8]
+        z_lo_q_thd = _c6[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # bottom leg length: the zeroth iterate's; E_ab (114) of the touchdown state
@@ -191,35 +263,30 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     # E_ba of (98): the energy jump of the stiffness switch
     E_ba = E_ab + (-bottom_q_r + l0)**2*(-0.5*k_c + (0.5)*k_d)
     # zeroth iterate at liftoff
-    if zeroth == 0.0:
-        g_lo_q_th = z_lo_q_th
-        g_lo_q_thd = z_lo_q_thd
-    elif zeroth == 1.0:
-        g_lo_q_th = bottom_q_th
-        g_lo_q_thd = bottom_q_r**2*bottom_q_thd/q_r_lo**2
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    _x25 = (zeroth == 1.0)
+    g_lo_q_th = ((bottom_q_th) if _x25 else (z_lo_q_th))
+    g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x25 else (z_lo_q_thd))
     # bottom below q_r_lo
     if not ((-bottom_q_r + q_r_lo > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x25 = 4.0**(-iterations)*(-bottom_q_r + q_r_lo)
-    _x26 = (0.25)*_x25
-    _x27 = _x26 + bottom_q_r
-    _x28 = _x27**2
-    _x29 = k_d*m
-    _x30 = _x27**3
-    _x31 = bottom_q_r**2*bottom_q_thd*m
-    _x32 = 4.0**(-0.5*iterations)
-    _x33 = _x32*(-_x31 + g_lo_q_thd*m*q_r_lo**2)
-    _x34 = _x32*(-bottom_q_th + g_lo_q_th)
-    _x35 = (2.0*E_ba*_x28*m - _x27**4*_x29 - _x28*_x29*l0**2 - 2.0*_x30*g_s*m**2*math.cos((0.5)*_x34 + bottom_q_th) + 2.0*_x30*k_d*l0*m - (_x31 + (0.5)*_x33)**2)/_x28
-    d_e_n = _x25
-    d_e_z = _x26
-    d_rad_z = _x35
-    d_Q0 = _x34 + bottom_q_th
-    d_P0 = _x31 + _x33
-    d_T0 = ((_x25*m/math.sqrt(_x35) + t_bottom) if (_x35 > 0.0) else (t_bottom))
+    _x26 = 4.0**(-iterations)*(-bottom_q_r + q_r_lo)
+    _x27 = (0.25)*_x26
+    _x28 = _x27 + bottom_q_r
+    _x29 = _x28**2
+    _x30 = k_d*m
+    _x31 = _x28**3
+    _x32 = bottom_q_r**2*bottom_q_thd*m
+    _x33 = 4.0**(-0.5*iterations)
+    _x34 = _x33*(-_x32 + g_lo_q_thd*m*q_r_lo**2)
+    _x35 = _x33*(-bottom_q_th + g_lo_q_th)
+    _x36 = (2.0*E_ba*_x29*m - _x28**4*_x30 - _x29*_x30*l0**2 - 2.0*_x31*g_s*m**2*math.cos((0.5)*_x35 + bottom_q_th) + 2.0*_x31*k_d*l0*m - (_x32 + (0.5)*_x34)**2)/_x29
+    d_e_n = _x26
+    d_e_z = _x27
+    d_rad_z = _x36
+    d_Q0 = _x35 + bottom_q_th
+    d_P0 = _x32 + _x34
+    d_T0 = ((_x26*m/math.sqrt(_x36) + t_bottom) if (_x36 > 0.0) else (t_bottom))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
@@ -231,12 +298,12 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     d_steps = 0.0
     _conv1 = False
     for _it1 in range(int(iterations)):
-        _x36 = bottom_q_r + d_e
-        _x37 = _x36**2
-        _x38 = k_d*m
-        _x39 = _x36**3
-        d_x = _x36
-        d_rad = (2.0*E_ba*_x37*m - _x36**4*_x38 - _x37*_x38*l0**2 - 2.0*_x39*g_s*m**2*math.cos(d_Q) + 2.0*_x39*k_d*l0*m - d_P**2)/_x37
+        _x37 = bottom_q_r + d_e
+        _x38 = _x37**2
+        _x39 = k_d*m
+        _x40 = _x37**3
+        d_x = _x37
+        d_rad = (2.0*E_ba*_x38*m - _x37**4*_x39 - _x38*_x39*l0**2 - 2.0*_x40*g_s*m**2*math.cos(d_Q) + 2.0*_x40*k_d*l0*m - d_P**2)/_x38
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
@@ -266,20 +333,20 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         if _conv1:
             break
     # (45) corrected: p_r of the iterate at q_r_lo
-    _x40 = q_r_lo**2
-    _x41 = k_d*m
-    _x42 = q_r_lo**3
-    rad_lo = (2.0*E_ba*_x40*m - _x40*_x41*l0**2 - _x41*q_r_lo**4 - 2.0*_x42*g_s*m**2*math.cos(d_Q) + 2.0*_x42*k_d*l0*m - d_P**2)/_x40
+    _x41 = q_r_lo**2
+    _x42 = k_d*m
+    _x43 = q_r_lo**3
+    rad_lo = (2.0*E_ba*_x41*m - _x41*_x42*l0**2 - _x42*q_r_lo**4 - 2.0*_x43*g_s*m**2*math.cos(d_Q) + 2.0*_x43*k_d*l0*m - d_P**2)/_x41
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
     # liftoff state
-    _x43 = (1.0/m)
+    _x44 = (1.0/m)
     t_stance = d_T
     liftoff_q_r = q_r_lo
-    liftoff_q_rd = _x43*math.sqrt(rad_lo)
+    liftoff_q_rd = _x44*math.sqrt(rad_lo)
     liftoff_q_th = d_Q
-    liftoff_q_thd = _x43*d_P/q_r_lo**2
+    liftoff_q_thd = _x44*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
@@ -333,7 +400,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends: 0 = geyer, 1 = held
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -349,7 +416,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)

@@ -168,12 +168,30 @@ MAPS = [{'name': 'geyer',
               {'name': 'zeroth',
                'kind': 'choice',
                'default': 'geyer',
-               'doc': "zeroth iterate: a map's bottom and liftoff states, linear in u between the "
-                      "half's ends",
+               'doc': "zeroth iterate: a map's bottom and liftoff states (at its default options, "
+                      "with k_c), linear in u between the half's ends",
                'choices': [{'value': 'geyer', 'doc': "Geyer et al.'s map (section 3.1) with k_c"},
                            {'value': 'held',
                             'doc': 'the touchdown state held (q_th, p_th constant), bottom from '
-                                   'the radial work at touchdown'}],
+                                   'the radial work at touchdown'},
+                           {'value': 'gravity-type0',
+                            'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with '
+                                   'k_c'},
+                           {'value': 'gravity-type1',
+                            'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section '
+                                   '4.2) with k_c'},
+                           {'value': 'gravity-type2',
+                            'doc': 'Gravity correction type 2 (average leg length) (section 4.3) '
+                                   'with k_c'},
+                           {'value': 'gravity-type3',
+                            'doc': 'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section '
+                                   '4.4) with k_c'},
+                           {'value': 'gravity-type4',
+                            'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) '
+                                   '(section 4.5) with k_c'},
+                           {'value': 'gravity-type5',
+                            'doc': 'Gravity correction type 5 (time-varying momentum) (section '
+                                   '4.6) with k_c'}],
                'low': None,
                'high': None,
                'at_rest_length': []}],
@@ -799,12 +817,30 @@ MAPS = [{'name': 'geyer',
               {'name': 'zeroth',
                'kind': 'choice',
                'default': 'geyer',
-               'doc': "zeroth iterate: a map's bottom and liftoff states, linear in u between the "
-                      "half's ends",
+               'doc': "zeroth iterate: a map's bottom and liftoff states (at its default options, "
+                      "with k_c), linear in u between the half's ends",
                'choices': [{'value': 'geyer', 'doc': "Geyer et al.'s map (section 3.1) with k_c"},
                            {'value': 'held',
                             'doc': 'the touchdown state held (q_th, p_th constant), bottom from '
-                                   'the radial work at touchdown'}],
+                                   'the radial work at touchdown'},
+                           {'value': 'gravity-type0',
+                            'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with '
+                                   'k_c'},
+                           {'value': 'gravity-type1',
+                            'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section '
+                                   '4.2) with k_c'},
+                           {'value': 'gravity-type2',
+                            'doc': 'Gravity correction type 2 (average leg length) (section 4.3) '
+                                   'with k_c'},
+                           {'value': 'gravity-type3',
+                            'doc': 'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section '
+                                   '4.4) with k_c'},
+                           {'value': 'gravity-type4',
+                            'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) '
+                                   '(section 4.5) with k_c'},
+                           {'value': 'gravity-type5',
+                            'doc': 'Gravity correction type 5 (time-varying momentum) (section '
+                                   '4.6) with k_c'}],
                'low': None,
                'high': None,
                'at_rest_length': []}],
@@ -891,12 +927,30 @@ HALVES = [{'name': 'iterative-compression',
               {'name': 'zeroth',
                'kind': 'choice',
                'default': 'geyer',
-               'doc': "zeroth iterate: a map's bottom and liftoff states, linear in u between the "
-                      "half's ends",
+               'doc': "zeroth iterate: a map's bottom and liftoff states (at its default options, "
+                      "with k_c), linear in u between the half's ends",
                'choices': [{'value': 'geyer', 'doc': "Geyer et al.'s map (section 3.1) with k_c"},
                            {'value': 'held',
                             'doc': 'the touchdown state held (q_th, p_th constant), bottom from '
-                                   'the radial work at touchdown'}],
+                                   'the radial work at touchdown'},
+                           {'value': 'gravity-type0',
+                            'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with '
+                                   'k_c'},
+                           {'value': 'gravity-type1',
+                            'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section '
+                                   '4.2) with k_c'},
+                           {'value': 'gravity-type2',
+                            'doc': 'Gravity correction type 2 (average leg length) (section 4.3) '
+                                   'with k_c'},
+                           {'value': 'gravity-type3',
+                            'doc': 'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section '
+                                   '4.4) with k_c'},
+                           {'value': 'gravity-type4',
+                            'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) '
+                                   '(section 4.5) with k_c'},
+                           {'value': 'gravity-type5',
+                            'doc': 'Gravity correction type 5 (time-varying momentum) (section '
+                                   '4.6) with k_c'}],
                'low': None,
                'high': None,
                'at_rest_length': []}],
@@ -972,12 +1026,30 @@ HALVES = [{'name': 'iterative-compression',
               {'name': 'zeroth',
                'kind': 'choice',
                'default': 'geyer',
-               'doc': "zeroth iterate: a map's bottom and liftoff states, linear in u between the "
-                      "half's ends",
+               'doc': "zeroth iterate: a map's bottom and liftoff states (at its default options, "
+                      "with k_c), linear in u between the half's ends",
                'choices': [{'value': 'geyer', 'doc': "Geyer et al.'s map (section 3.1) with k_c"},
                            {'value': 'held',
                             'doc': 'the touchdown state held (q_th, p_th constant), bottom from '
-                                   'the radial work at touchdown'}],
+                                   'the radial work at touchdown'},
+                           {'value': 'gravity-type0',
+                            'doc': 'Gravity correction type 0 (leg length l0) (section 4.1) with '
+                                   'k_c'},
+                           {'value': 'gravity-type1',
+                            'doc': 'Gravity correction type 1 (leg length (l0 + q_r_b)/2) (section '
+                                   '4.2) with k_c'},
+                           {'value': 'gravity-type2',
+                            'doc': 'Gravity correction type 2 (average leg length) (section 4.3) '
+                                   'with k_c'},
+                           {'value': 'gravity-type3',
+                            'doc': 'Gravity correction type 3 (trapezoid on [t_i, t_f]) (section '
+                                   '4.4) with k_c'},
+                           {'value': 'gravity-type4',
+                            'doc': 'Gravity correction type 4 (average leg length on [t_i, t_f]) '
+                                   '(section 4.5) with k_c'},
+                           {'value': 'gravity-type5',
+                            'doc': 'Gravity correction type 5 (time-varying momentum) (section '
+                                   '4.6) with k_c'}],
                'low': None,
                'high': None,
                'at_rest_length': []}],

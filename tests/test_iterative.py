@@ -11,6 +11,7 @@ import slipmaps
 from slipmaps.derive.maps import quadrature, schwind
 from slipmaps.derive.symbols import k_c, k_d
 from slipmaps.generated.status import Status
+from slipmaps.runtime import index
 from slipmaps.runtime.params import HUMAN_RUNNER, SlipParams
 
 
@@ -73,14 +74,29 @@ def test_more_passes_and_nodes_approach_the_exact_stance():
     assert all(b < a for a, b in zip(errors, errors[1:], strict=False)), errors
 
 
+def _zeroth_choices() -> tuple[str, ...]:
+    return index.lookup("iterative").option("zeroth").choices
+
+
+def test_zeroth_iterate_choices_are_every_map_not_itself_iterated_from_one():
+    """Any declared map can start the iteration: every map without a ``zeroth`` option is a choice
+    (a new map that is not listed in schwind.ZEROTH_MAPS fails here), plus the held state."""
+    maps = {m.name for m in slipmaps.maps() if m.name != "exact"}
+    starters = {n for n in maps if "zeroth" not in {o.name for o in index.lookup(n).options}}
+    for name in ("iterative", "iterative-report", "iterative-compression", "iterative-report-compression"):
+        assert set(index.lookup(name).option("zeroth").choices) == starters | {"held"}, name
+
+
 def test_zeroth_iterate_does_not_matter_once_converged():
-    """Geyer's map or the held touchdown state as the zeroth iterate: the same limit (measured 1e-9)."""
+    """Every zeroth iterate (each map, the held touchdown state): the same limit (measured 1e-9)."""
     h, v, a = _apex_points()
     kw = {"iterations": 100, "tol": 1e-13}
-    one = slipmaps.apex_return_batch("iterative", HUMAN_RUNNER, h, v, a, zeroth="geyer", **kw)
-    two = slipmaps.apex_return_batch("iterative", HUMAN_RUNNER, h, v, a, zeroth="held", **kw)
-    assert np.array_equal(one["status"], two["status"]) and one.ok.sum() >= 12
-    assert np.max(np.abs(one["apex_height"] - two["apex_height"])[one.ok]) < 1e-8
+    ref = slipmaps.apex_return_batch("iterative", HUMAN_RUNNER, h, v, a, zeroth="geyer", **kw)
+    assert ref.ok.sum() >= 12
+    for zeroth in _zeroth_choices():
+        other = slipmaps.apex_return_batch("iterative", HUMAN_RUNNER, h, v, a, zeroth=zeroth, **kw)
+        assert np.array_equal(ref["status"], other["status"]), zeroth
+        assert np.max(np.abs(ref["apex_height"] - other["apex_height"])[ref.ok]) < 1e-8, zeroth
 
 
 def test_soft_decompression_returns_a_status_not_nan():

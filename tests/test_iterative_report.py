@@ -2,8 +2,8 @@
 sections 3.2 and 5.2), through the public API.
 
 * An iterate whose H^{-1} of (33) is imaginary returns IMAGINARY_MOMENTUM, never NaN with OK.
-* iterations = 0 is the zeroth iterate: Geyer et al.'s bottom and liftoff angles (or the held
-  touchdown angle).
+* iterations = 0 is the zeroth iterate: the chosen map's bottom and liftoff angles (Geyer et al.'s
+  by default, or the held touchdown angle).
 * The chain equals the report's recursion (42)-(44)/(124)-(126) and (133)-(135)/(148)-(150), written
   here as a recursion on functions of the leg length.
 * Variable stiffness (k_c != k_d) is accepted; the two mean-value variants differ.
@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 import slipmaps
 from slipmaps import SlipParams, Status
+from slipmaps.runtime import index
 
 MAP = "iterative-report"
 #: The Yu protocol's runner (kappa = k l0/(m g) = 10).
@@ -28,6 +29,9 @@ YU = SlipParams(m=80.0, l0=1.0, k=7848.0)
 STEEP = (1.0, -2.1116, 0.5236, -1.0903)
 #: A shallow touchdown: every iterate real for n <= 8, both variants (measured).
 SHALLOW = (1.0, -1.2, 0.3142, -3.0)
+#: A slow touchdown where every zeroth-iterate choice gives a real H^{-1} at n = 0, both variants
+#: (measured; at SHALLOW the gravity corrections' types 0-4 already give IMAGINARY_MOMENTUM there).
+SLOW = (1.0, -2.0, 0.3142, -2.0)
 
 
 def test_imaginary_momentum_is_a_status_not_nan():
@@ -40,17 +44,24 @@ def test_imaginary_momentum_is_a_status_not_nan():
     assert list(batch["status"]) == [Status.IMAGINARY_MOMENTUM, Status.OK]
 
 
-def test_zeroth_iterate_is_geyer_or_held():
-    geyer = slipmaps.stance("geyer", YU, SHALLOW)
+def _zeroth_choices(name: str) -> tuple[str, ...]:
+    return index.lookup(name).option("zeroth").choices
+
+
+@pytest.mark.parametrize("zeroth", _zeroth_choices(MAP))
+def test_zeroth_iterate_is_the_chosen_map(zeroth):
+    """iterations = 0 is the zeroth iterate: the chosen map's bottom and liftoff (at its defaults),
+    or the touchdown state held."""
     for variant in ("integrand", "factor"):
-        res = slipmaps.stance(MAP, YU, SHALLOW, iterations=0, variant=variant)
+        res = slipmaps.stance(MAP, YU, SLOW, iterations=0, variant=variant, zeroth=zeroth)
         assert res.ok, res.message
-        assert res["bottom_q_r"] == geyer["bottom_q_r"]
-        assert res["bottom_q_th"] == pytest.approx(geyer["bottom_q_th"], rel=1e-14)
-        assert res["liftoff_q_th"] == pytest.approx(geyer["liftoff_q_th"], rel=1e-14)
-        assert res["liftoff_q_thd"] == pytest.approx(geyer["liftoff_q_thd"], rel=1e-14)
-        held = slipmaps.stance(MAP, YU, SHALLOW, iterations=0, variant=variant, zeroth="held")
-        assert held.ok and held["bottom_q_th"] == held["liftoff_q_th"] == SHALLOW[2]
+        if zeroth == "held":
+            assert res["bottom_q_th"] == res["liftoff_q_th"] == SLOW[2]
+            continue
+        chosen = slipmaps.stance(zeroth, YU, SLOW)
+        assert res["bottom_q_r"] == chosen["bottom_q_r"]
+        for key in ("bottom_q_th", "liftoff_q_th", "liftoff_q_thd"):
+            assert res[key] == pytest.approx(chosen[key], rel=1e-14), key
 
 
 def _reference(params: SlipParams, td: tuple, n: int, variant: str) -> tuple[float, ...]:

@@ -35,6 +35,9 @@ from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, S
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
+from . import geyer as _geyer
+from . import gravity as _gravity
+from . import gravity_type5 as _gravity_type5
 from . import quadrature
 
 __all__ = ["NODE_COUNTS", "radial_force", "u_rates", "half_kernel", "MAPS", "HALVES"]
@@ -269,13 +272,21 @@ def half_kernel(kind: str) -> Kernel:
     )
 
 
+#: The maps a zeroth iterate can come from: every declared map that is not itself iterated from a
+#: zeroth iterate (tests/test_iterative.py checks that no such map is left out).
+ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS
+#: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
+HELD = "held"
+
 ZEROTH = Option(
     "zeroth",
-    "zeroth iterate: a map's bottom and liftoff states, linear in u between the half's ends",
+    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear "
+    "in u between the half's ends",
     "geyer",
     (
         ("geyer", "Geyer et al.'s map (section 3.1) with k_c"),
-        ("held", "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown"),
+        (HELD, "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown"),
+        *((s.name, f"{s.title} (section {s.section}) with k_c") for s in ZEROTH_MAPS if s.name != "geyer"),
     ),
 )
 
@@ -283,23 +294,11 @@ _POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
 
 
 def _zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
-    """The zeroth iterate's bottom (``z_b_*``; the Geyer choice also its liftoff, ``z_lo_*``) from
-    the touchdown state, before the compression half."""
-    from .geyer import MAPS as GEYER
-
+    """The zeroth iterate's bottom (``z_b_*``; a map's choice also its liftoff, ``z_lo_*``) from
+    the touchdown state, before the compression half. A map runs at its default options with the
+    stiffness k_c (q_r_lo as given: a compression half passes q_r_td, as only the bottom is used)."""
     q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
-    geyer = GEYER[0].stance_kernel()
-    call_args = {
-        "q_r_td": q_r_td,
-        "q_rd_td": q_rd_td,
-        "q_th_td": q_th_td,
-        "q_thd_td": q_thd_td,
-        "m": p["m"],
-        "l0": p["l0"],
-        "k": p["k_c"],
-        "g_s": p["g_s"],
-        "q_r_lo": q_r_lo,
-    }
+    given = {**p, "k": p["k_c"], "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
     bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
     bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
     p_td = m * q_r_td**2 * q_thd_td
@@ -317,14 +316,14 @@ def _zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
         ),
         comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
     )
-    return Switch(
-        sym(ZEROTH.name),
+    from_maps = tuple(
         (
-            (ZEROTH.code("geyer"), (Call(geyer, call_args, bind, comment="zeroth iterate: Geyer et al."),)),
-            (ZEROTH.code("held"), (held,)),
-        ),
-        comment="zeroth iterate",
+            ZEROTH.code(spec.name),
+            (spec.stance_call(touchdown, given, bind, comment=f"zeroth iterate: {spec.title}"),),
+        )
+        for spec in ZEROTH_MAPS
     )
+    return Switch(sym(ZEROTH.name), ((ZEROTH.code(HELD), (held,)),) + from_maps, comment="zeroth iterate")
 
 
 def _held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
@@ -333,21 +332,15 @@ def _held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
     return q_th_b, q_thd_b * q_r_b**2 / q_r_lo**2
 
 
-def _zeroth_liftoff(q_r_lo) -> Switch:
+def _zeroth_liftoff(q_r_lo) -> Stage:
     """The zeroth iterate's liftoff ``g_lo_q_th``, ``g_lo_q_thd`` before the decompression half:
-    Geyer's (``z_lo_*`` of :func:`_zeroth_bottom`) or the computed bottom state's, held."""
+    the map's (``z_lo_*`` of :func:`_zeroth_bottom`) or, held, the computed bottom state's."""
     held = _held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
-    return Switch(
-        sym(ZEROTH.name),
+    is_held = ZEROTH.is_(HELD)
+    return Stage(
         (
-            (
-                ZEROTH.code("geyer"),
-                (Stage(((sym("g_lo_q_th"), sym("z_lo_q_th")), (sym("g_lo_q_thd"), sym("z_lo_q_thd")))),),
-            ),
-            (
-                ZEROTH.code("held"),
-                (Stage(((sym("g_lo_q_th"), held[0]), (sym("g_lo_q_thd"), held[1]))),),
-            ),
+            (sym("g_lo_q_th"), sp.Piecewise((held[0], is_held), (sym("z_lo_q_th"), True))),
+            (sym("g_lo_q_thd"), sp.Piecewise((held[1], is_held), (sym("z_lo_q_thd"), True))),
         ),
         comment="zeroth iterate at liftoff",
     )
