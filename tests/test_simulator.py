@@ -398,7 +398,7 @@ def test_random_valid_inputs_never_raise(params, q_rd, q_th, q_thd, height, spee
         if isinstance(res, StepResult) and res.status == Status.OK:
             assert _finite(res.next_apex) and _finite((res.t_ascent, res.dx_ascent))
             assert res.next_apex[0] >= res.liftoff[0] * math.cos(res.liftoff[2])
-            assert res.next_apex[1] > 0.0
+            assert res.next_apex[1] >= 0.0  # 0 for a vertical hop (test_vertical_hop_stays_vertical)
 
 
 def test_flight_kernel_reports_apex_too_low():
@@ -406,3 +406,13 @@ def test_flight_kernel_reports_apex_too_low():
     # kernel must agree: an apex below the touchdown height is APEX_TOO_LOW, not OK with NaNs.
     out = gen_flight.apex_to_touchdown(0.9, 5.0, 0.4, 1.0, 9.81)
     assert Status(int(out[-1])) == Status.APEX_TOO_LOW, out
+
+
+def test_vertical_hop_stays_vertical():
+    """Apex speed 0 and a vertical leg: a purely radial stance, the next apex at the same height with
+    speed 0 (found by Hypothesis: the speed came out as -0.0, which an assertion > 0 refused)."""
+    params = SlipParams(m=1.0, l0=1.0, k=4.0, g_s=2.0, g_f=1.0, q_r_td=0.75, q_r_lo=0.75)
+    res = simulate_step(params, 1.0, 0.0, 0.0)
+    assert res.status == Status.OK, res.message
+    assert res.next_apex[1] == 0.0 and res.liftoff[2] == 0.0
+    assert res.next_apex[0] == pytest.approx(1.0, rel=1e-9)
