@@ -308,11 +308,15 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
     )
 
 
-def touchdown_invariants() -> Stage:
-    """``p_td`` and ``E_td``: the angular momentum and the total energy (27) of the touchdown state."""
+def touchdown_invariants(stiffness: sp.Symbol = k) -> Stage:
+    """``p_td`` and ``E_td``: the angular momentum and the total energy (27) of the touchdown state
+    (with the leg stiffness ``stiffness``)."""
     at_td = {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
     return Stage(
-        ((sym("p_td"), m * q_r_td**2 * q_thd_td), (sym("E_td"), mechanics.stance_energy().subs(at_td))),
+        (
+            (sym("p_td"), m * q_r_td**2 * q_thd_td),
+            (sym("E_td"), mechanics.stance_energy(stiffness).subs(at_td)),
+        ),
         comment="angular momentum and total energy (27) at touchdown",
     )
 
