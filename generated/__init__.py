@@ -17,8 +17,8 @@ Modules:
     gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels.
     gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time and apex-return kernels.
     gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels.
-    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
     geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels.
+    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
     iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.

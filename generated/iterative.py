@@ -7,6 +7,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:c042f0c9cf6a9745
 #   geyer.py sha256:b93d5e8ad96a402f
+#   geyer_vs.py sha256:8811899e72a96f94
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a
@@ -22,6 +23,7 @@ import numpy as np
 from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
+from .geyer_vs import geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
 from .gravity_type1 import gravity_type1_stance
 from .gravity_type2 import gravity_type2_stance
@@ -1968,7 +1970,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1986,7 +1988,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
     """
     # Total ops: 46
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2074,32 +2076,42 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         z_b_q_thd = _c6[5]
         z_lo_q_th = _c6[8]
         z_lo_q_thd = _c6[9]
+    elif zeroth == 8.0:
+        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
+        if _c7[13] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+        z_b_q_r = _c7[2]
+        z_b_q_th = _c7[4]
+        z_b_q_thd = _c7[5]
+        z_lo_q_th = _c7[8]
+        z_lo_q_thd = _c7[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # compression half, k_c (report 5.2.1)
-    _c7 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
-    if _c7[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[6])
-    t_bottom = _c7[0]
-    bottom_q_r = _c7[1]
-    bottom_q_rd = _c7[2]
-    bottom_q_th = _c7[3]
-    bottom_q_thd = _c7[4]
-    c_passes = _c7[5]
+    _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    if _c8[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
+    t_bottom = _c8[0]
+    bottom_q_r = _c8[1]
+    bottom_q_rd = _c8[2]
+    bottom_q_th = _c8[3]
+    bottom_q_thd = _c8[4]
+    c_passes = _c8[5]
     # zeroth iterate at liftoff
     _x5 = (zeroth == 1.0)
     g_lo_q_th = ((bottom_q_th) if _x5 else (z_lo_q_th))
     g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x5 else (z_lo_q_thd))
     # decompression half, k_d (report 3.2, 5.2.2)
-    _c8 = schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo, g_lo_q_th, g_lo_q_thd, nodes, iterations, tol)
-    if _c8[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
-    t_decompression = _c8[0]
-    liftoff_q_r = _c8[1]
-    liftoff_q_rd = _c8[2]
-    liftoff_q_th = _c8[3]
-    liftoff_q_thd = _c8[4]
-    d_passes = _c8[5]
+    _c9 = schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo, g_lo_q_th, g_lo_q_thd, nodes, iterations, tol)
+    if _c9[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c9[6])
+    t_decompression = _c9[0]
+    liftoff_q_r = _c9[1]
+    liftoff_q_rd = _c9[2]
+    liftoff_q_th = _c9[3]
+    liftoff_q_thd = _c9[4]
+    d_passes = _c9[5]
     t_stance = t_bottom + t_decompression
     passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
     # the leg stays above horizontal
@@ -2157,7 +2169,7 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -2174,7 +2186,7 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)

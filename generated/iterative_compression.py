@@ -6,13 +6,14 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:b93d5e8ad96a402f
+#   geyer_vs.py sha256:8811899e72a96f94
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a
 #   gravity_type3.py sha256:e58a1a317b1fc866
 #   gravity_type4.py sha256:6bb6498e457c9b35
 #   gravity_type5.py sha256:70d4f36f9336d294
-#   iterative.py sha256:c4deded7715f71f4
+#   iterative.py sha256:80b0caa65bb731b7
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 
@@ -21,6 +22,7 @@ import math
 import numpy as np
 from numba import njit, prange
 from .geyer import geyer_stance
+from .geyer_vs import geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
 from .gravity_type1 import gravity_type1_stance
 from .gravity_type2 import gravity_type2_stance
@@ -66,7 +68,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -79,7 +81,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # zeroth iterate
     if zeroth == 1.0:
@@ -164,18 +166,28 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_b_q_thd = _c6[5]
         z_lo_q_th = _c6[8]
         z_lo_q_thd = _c6[9]
+    elif zeroth == 8.0:
+        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
+        if _c7[13] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+        z_b_q_r = _c7[2]
+        z_b_q_th = _c7[4]
+        z_b_q_thd = _c7[5]
+        z_lo_q_th = _c7[8]
+        z_lo_q_thd = _c7[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # compression half, k_c (report 5.2.1)
-    _c7 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
-    if _c7[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c7[6])
-    t_half = _c7[0]
-    end_q_r = _c7[1]
-    end_q_rd = _c7[2]
-    end_q_th = _c7[3]
-    end_q_thd = _c7[4]
-    passes = _c7[5]
+    _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    if _c8[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
+    t_half = _c8[0]
+    end_q_r = _c8[1]
+    end_q_rd = _c8[2]
+    end_q_th = _c8[3]
+    end_q_thd = _c8[4]
+    passes = _c8[5]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)

@@ -7,6 +7,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:c042f0c9cf6a9745
 #   geyer.py sha256:b93d5e8ad96a402f
+#   geyer_vs.py sha256:8811899e72a96f94
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a
@@ -22,6 +23,7 @@ import numpy as np
 from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
+from .geyer_vs import bottom_quartic, geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
 from .gravity_type1 import gravity_type1_stance
 from .gravity_type2 import gravity_type2_stance
@@ -49,7 +51,7 @@ STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth):
+def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff states.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
@@ -71,7 +73,8 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -88,7 +91,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     """
     # Total ops: 310
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -176,14 +179,34 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_b_q_thd = _c6[5]
         z_lo_q_th = _c6[8]
         z_lo_q_thd = _c6[9]
+    elif zeroth == 8.0:
+        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
+        if _c7[13] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+        z_b_q_r = _c7[2]
+        z_b_q_th = _c7[4]
+        z_b_q_thd = _c7[5]
+        z_lo_q_th = _c7[8]
+        z_lo_q_thd = _c7[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # bottom leg length: the zeroth iterate's; E_ab (114) of the touchdown state
+    # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
     _x7 = (0.5)*m
-    bottom_q_r = z_b_q_r
     E_ab = _x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c8[1] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[1])
+        bottom_q_r = _c8[0]
+    else:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
@@ -357,16 +380,16 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, out, status):
+def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
     ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth)
+        res = iterative_report_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -381,7 +404,7 @@ def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth):
+def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
@@ -400,7 +423,8 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -416,7 +440,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
@@ -428,7 +452,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     td_q_thd = _c0[3]
     t_descent = _c0[4]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _c1 = iterative_report_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth)
+    _c1 = iterative_report_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
     if _c1[10] != STATUS_OK:
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
     t_stance = _c1[1]
@@ -450,16 +474,16 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, out, status):
+def iterative_report_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 9)) and its status code to
     ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth)
+        res = iterative_report_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

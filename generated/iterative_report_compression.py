@@ -6,6 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:b93d5e8ad96a402f
+#   geyer_vs.py sha256:8811899e72a96f94
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a
@@ -20,6 +21,7 @@ import math
 import numpy as np
 from numba import njit, prange
 from .geyer import geyer_stance
+from .geyer_vs import bottom_quartic, geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
 from .gravity_type1 import gravity_type1_stance
 from .gravity_type2 import gravity_type2_stance
@@ -47,7 +49,7 @@ STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth):
+def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth, bottom_length):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 154.
@@ -63,7 +65,8 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -75,7 +78,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
     """
     # Total ops: 161
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -163,14 +166,34 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         z_b_q_thd = _c6[5]
         z_lo_q_th = _c6[8]
         z_lo_q_thd = _c6[9]
+    elif zeroth == 8.0:
+        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
+        if _c7[13] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, _c7[13])
+        z_b_q_r = _c7[2]
+        z_b_q_th = _c7[4]
+        z_b_q_thd = _c7[5]
+        z_lo_q_th = _c7[8]
+        z_lo_q_thd = _c7[9]
     else:
         return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # bottom leg length: the zeroth iterate's; E_ab (114) of the touchdown state
+    # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
     _x7 = (0.5)*m
-    bottom_q_r = z_b_q_r
     E_ab = _x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c8[1] != STATUS_OK:
+            return (NAN, NAN, NAN, NAN, NAN, _c8[1])
+        bottom_q_r = _c8[0]
+    else:
+        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
@@ -260,16 +283,16 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth, out, status):
+def iterative_report_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_compression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, variant, iterations, zeroth)
+        res = iterative_report_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, variant, iterations, zeroth, bottom_length)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

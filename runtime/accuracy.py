@@ -14,7 +14,8 @@ are absolute and relative to a named scale. A point counts when both sides compl
 the others are counted by status: exact failures (including exact liftoffs that run backward,
 left out as the protocol asks) and map failures where the exact step succeeds.
 
-Public: :func:`variants`, :func:`measure` (one grid), :func:`measure_all`, and the statistics
+Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps),
+:func:`measure_all`, :func:`compared`, :func:`map_failures`, :func:`exact_failures` and the statistics
 objects that :mod:`.accuracy_report` renders to docs/accuracy.md, docs/accuracy.json and
 docs/accuracy.png.
 """
@@ -37,7 +38,19 @@ from .progress import progress
 from .quantities import QUANTITIES
 from .simulate import StepResult, simulate_step
 
-__all__ = ["Variant", "variants", "GridRun", "VariantStats", "measure", "measure_all", "apex_errors"]
+__all__ = [
+    "Variant",
+    "variants",
+    "GridRun",
+    "VariantStats",
+    "measure",
+    "run_maps",
+    "measure_all",
+    "apex_errors",
+    "compared",
+    "map_failures",
+    "exact_failures",
+]
 
 _OK = int(Status.OK)
 
@@ -73,8 +86,9 @@ def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
     """The measured variants of each map, derived from its options in the index.
 
     Every map at its defaults; a map with ``reading`` and ``iterations`` options also with every
-    reading at one pass and at the fixed point; every other choice option (and ``samples``) once
-    at a non-default value, the rest at defaults.
+    reading at one pass and at the fixed point, one with ``iterations`` only at both (unless its
+    iterated ``gravity`` correction is off by default); every other choice option (and
+    ``samples``) once at a non-default value, the rest at defaults.
     """
     names = [m.name for m in index.maps() if m.name != index.EXACT] if map_names is None else list(map_names)
     out: list[Variant] = []
@@ -89,7 +103,9 @@ def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
                     if all(info.resolve({})[k] == v for k, v in chosen.items()):
                         continue  # the default variant
                     out.append(Variant(name, tuple(chosen.items()), default=False))
-        elif "iterations" in opts:
+        elif "iterations" in opts and not (opts.get("gravity") and opts["gravity"].default == "none"):
+            # (a map whose iterated correction is off by default, geyer-vs, is measured with it on
+            # through its gravity choices below)
             for passes in (ONE_PASS, FIXED_POINT):
                 chosen = {k: v for k, v in passes.items() if k in opts}
                 if any(info.resolve({})[k] != v for k, v in chosen.items()):
@@ -132,6 +148,15 @@ def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = 
     exact: list[StepResult | None] = []
     for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress):
         exact.append(simulate_step(grid.params, h, v, a) if math.isfinite(a) else None)
+    return run_maps(grid, points, exact, chosen)
+
+
+def run_maps(
+    grid: Grid, points: np.ndarray, exact: Sequence[StepResult | None], chosen: Sequence[Variant]
+) -> GridRun:
+    """A grid's exact steps (one per row of ``points``, None where there is none) and every variant
+    of ``chosen`` on the same points: its stance from each exact touchdown, its apex-return map."""
+    exact = list(exact)
     tds = np.array(
         [s.touchdown if s is not None and s.touchdown is not None else (math.nan,) * 4 for s in exact]
     )
@@ -174,15 +199,16 @@ def apex_errors(run: GridRun, label: str) -> np.ndarray:
     h, v = run.exact_value("apex_height"), run.exact_value("apex_speed")
     dh, dv = ap["apex_height"] - h, ap["apex_speed"] - v
     err = np.hypot(dh, dv) / np.hypot(h, v)
-    return np.where(_compared(run, label), err, math.nan)
+    return np.where(compared(run, label), err, math.nan)
 
 
-def _compared(run: GridRun, label: str) -> np.ndarray:
+def compared(run: GridRun, label: str) -> np.ndarray:
+    """Per point: both sides complete the step (the exact step, the variant's stance and apex return)."""
     _, st, ap = run.results[label]
     return (run.exact_status == _OK) & (st.status == _OK) & (ap.status == _OK)
 
 
-def _map_failures(run: GridRun, label: str) -> Counter:
+def map_failures(run: GridRun, label: str) -> Counter:
     """Where the exact step succeeds but the map fails: the stance status, else the apex-return's."""
     _, st, ap = run.results[label]
     out: Counter = Counter()
@@ -219,7 +245,7 @@ def _rel_scale(run: GridRun, key: str, scale: str) -> np.ndarray:
 
 def variant_stats(run: GridRun, label: str) -> VariantStats:
     var, st, ap = run.results[label]
-    ok = _compared(run, label)
+    ok = compared(run, label)
     # stance quantities compare the stance map from the same touchdown; the apex the apex-return map
     quantities = {}
     for q in QUANTITIES:
@@ -258,7 +284,7 @@ def variant_stats(run: GridRun, label: str) -> VariantStats:
         options=var.kwargs,
         default=var.default,
         n_compared=int(ok.sum()),
-        failures=dict(sorted(_map_failures(run, label).items())),
+        failures=dict(sorted(map_failures(run, label).items())),
         apex_error=_stats(errors),
         by_angle=by_angle,
         quantities=quantities,

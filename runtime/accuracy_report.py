@@ -16,6 +16,7 @@ import numpy as np
 from .accuracy import GridRun, apex_errors, exact_failures, measure_all, variant_stats, variants
 from .index import get
 from .quantities import QUANTITIES
+from .report_format import fails, pct, rounded, sig
 
 __all__ = ["summarize", "render_markdown", "to_json", "figure", "write"]
 
@@ -51,17 +52,7 @@ def summarize(runs: list[GridRun], study: str = "") -> list[dict]:
                 "variants": stats,
             }
         )
-    return _round(out)
-
-
-def _round(x, digits: int = 6):
-    if isinstance(x, float):
-        return None if not math.isfinite(x) else float(f"{x:.{digits}g}")
-    if isinstance(x, dict):
-        return {k: _round(v, digits) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_round(v, digits) for v in x]
-    return x
+    return rounded(out)
 
 
 def to_json(summary: list[dict]) -> str:
@@ -75,26 +66,6 @@ def from_json(text: str) -> list[dict]:
 # ----------------------------------------------------------------------------------------------
 # Markdown
 # ----------------------------------------------------------------------------------------------
-def _sig(x: float, digits: int = 3) -> str:
-    if x is None or not math.isfinite(x):
-        return "n/a"
-    if x == 0.0:
-        return "0"
-    if 1e-3 <= abs(x) < 1e4:
-        decimals = max(digits - 1 - math.floor(math.log10(abs(x))), 0)
-        s = f"{x:.{decimals}f}"
-        return f"{float(s):.{max(digits - 1 - math.floor(math.log10(abs(float(s)))), 0)}f}"
-    return f"{x:.{digits - 1}e}"
-
-
-def _pct(x: float) -> str:
-    return "n/a" if x is None or not math.isfinite(x) else f"{_sig(100.0 * x)} %"
-
-
-def _fails(d: dict[str, int]) -> str:
-    return ", ".join(f"{n} `{k}`" for k, n in d.items()) or "0"
-
-
 def _grid(summary: list[dict], kind: str) -> dict | None:
     for g in summary:
         if g["kind"] == kind:
@@ -116,7 +87,7 @@ def _overview(summary: list[dict]) -> list[str]:
         cells = []
         for g in cols:
             s = _stat(g, v["label"])["apex_error"]
-            cells.append(f"{_pct(s['mean'])} / {_pct(s['max'])}")
+            cells.append(f"{pct(s['mean'])} / {pct(s['max'])}")
         lines.append(f"| `{v['label']}` | " + " | ".join(cells) + " |")
     return lines
 
@@ -132,9 +103,9 @@ def _yu_table(g: dict, only_default: bool) -> list[str]:
     for v in g["variants"]:
         if only_default and not v["default"]:
             continue
-        cells = [f"{_pct(a['mean'])} / {_pct(a['max'])}" for a in v["by_angle"]]
+        cells = [f"{pct(a['mean'])} / {pct(a['max'])}" for a in v["by_angle"]]
         passes = f"{v['passes']['median']:g} / {v['passes']['max']:g}" if v["passes"] else "-"
-        lines.append(f"| `{v['label']}` | " + " | ".join(cells) + f" | {_fails(v['failures'])} | {passes} |")
+        lines.append(f"| `{v['label']}` | " + " | ".join(cells) + f" | {fails(v['failures'])} | {passes} |")
     return lines
 
 
@@ -148,8 +119,8 @@ def _variants_table(g: dict) -> list[str]:
         passes = f"{v['passes']['median']:g} / {v['passes']['max']:g}" if v["passes"] else "-"
         lines.append(
             f"| `{v['label']}` | {v['n_compared']} "
-            f"| {_pct(e['mean'])} / {_pct(e['median'])} / {_pct(e['max'])} "
-            f"| {_fails(v['failures'])} | {passes} |"
+            f"| {pct(e['mean'])} / {pct(e['median'])} / {pct(e['max'])} "
+            f"| {fails(v['failures'])} | {passes} |"
         )
     return lines
 
@@ -162,7 +133,7 @@ def _quantity_table(g: dict) -> list[str]:
     ]
     for q in QUANTITIES:
         cells = [
-            f"{_sig(v['quantities'][q.key]['median_abs'])} / {_sig(v['quantities'][q.key]['max_abs'])}"
+            f"{sig(v['quantities'][q.key]['median_abs'])} / {sig(v['quantities'][q.key]['max_abs'])}"
             for v in defaults
         ]
         lines.append(f"| {q.label} | {q.unit} | " + " | ".join(cells) + " |")
@@ -182,7 +153,7 @@ def findings(summary: list[dict]) -> list[str]:
         parts = []
         for g in summary:
             mine, ref = _stat(g, label)["apex_error"]["mean"], _stat(g, geyer)["apex_error"]["mean"]
-            parts.append(f"{g['name']} {_pct(mine)} vs {_pct(ref)} ({_sig(_ratio(mine, ref))}x)")
+            parts.append(f"{g['name']} {pct(mine)} vs {pct(ref)} ({sig(_ratio(mine, ref))}x)")
         nonsym = [g for g in summary if g["kind"] in ("nonsymmetric", "yu")]
         sym = [g for g in summary if g["kind"] == "symmetric"]
         better = all(
@@ -214,8 +185,8 @@ def findings(summary: list[dict]) -> list[str]:
             lines.append(
                 "- Yu protocol target (mean < 2 % at 60 and 65 deg, < 5 % at every angle, max < 10 %): "
                 f"the best variant of the family, `{best['label']}`, has mean "
-                f"{', '.join(_pct(a['mean']) for a in best['by_angle'])} "
-                f"at {', '.join(f'{a:g}' for a in by)} deg and max {_pct(mx)}: target "
+                f"{', '.join(pct(a['mean']) for a in best['by_angle'])} "
+                f"at {', '.join(f'{a:g}' for a in by)} deg and max {pct(mx)}: target "
                 f"{'met' if met else 'NOT met'}."
             )
     return lines
@@ -271,7 +242,7 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
             "## Yu, Li and Cai protocol",
             "",
             f"{yu['description']}: {yu['n_points']} steps, {yu['exact_ok']} exact steps complete; left out: "
-            f"{_fails(yu['exact_failures'])}. Error: mean / max of |(dh, dv)| / |(h, v)| of the next apex "
+            f"{fails(yu['exact_failures'])}. Error: mean / max of |(dh, dv)| / |(h, v)| of the next apex "
             "per angle of attack; map failures are steps the exact simulator completes and the map does not.",
             "",
             *_yu_table(yu, only_default=False),
@@ -289,7 +260,7 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
             "",
             f"m = {p['m']:g} kg, l0 = {p['l0']:g} m, k = {p['k_c']:g} N/m (k l0/(m g_s) = {stiff:.3g}); "
             f"{g['description']}: {g['n_points']} points{extra}, {g['exact_ok']} exact steps complete "
-            f"(exact failures: {_fails(g['exact_failures'])}).",
+            f"(exact failures: {fails(g['exact_failures'])}).",
             "",
             *_variants_table(g),
             "",
@@ -359,9 +330,10 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
 
 def write(out: str | Path = "docs/accuracy.md", map_names=None, show_progress=None) -> list[Path]:
     """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
-    ``out`` (+ .json, .png) and, where iterative maps are measured, the convergence study beside it
-    (convergence.md, .json, .png; runtime/convergence.py)."""
-    from . import convergence
+    ``out`` (+ .json, .png) and beside it, where iterative maps are measured, the convergence study
+    (convergence.md, .json, .png; runtime/convergence.py) and, where maps that accept k_c != k_d are
+    measured, the variable-stiffness study (stiffness.md, .json, .png; runtime/stiffness.py)."""
+    from . import convergence, stiffness
 
     names = None
     if map_names is not None:
@@ -389,4 +361,5 @@ def write(out: str | Path = "docs/accuracy.md", map_names=None, show_progress=No
         js.write_text(text, encoding="utf-8")
         stem.write_text(render(from_json(text), stem.with_suffix(".png").name), encoding="utf-8")
         written += [stem, js, draw(runs, stem.with_suffix(".png"))]
-    return written
+    stiff = md.with_name("stiffness.md" if map_names is None else f"stiffness_{md.stem}.md")
+    return written + stiffness.write(stiff, names, show_progress=show_progress)

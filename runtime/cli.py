@@ -9,7 +9,8 @@ Subcommands:
   half-stance map is compared with the same half of --against (from its bottom for a decompression
   half);
 - ``accuracy [--map NAME|all]``: every map against the exact simulator on the accuracy grids,
-  written to docs/accuracy.md (+ .json, .png);
+  written to docs/accuracy.md (+ .json, .png), with the convergence study of the iterative maps
+  (docs/convergence.md) and the variable-stiffness study over k_d/k_c (docs/stiffness.md);
 - ``equations [--json]``: run the symbolic check of every registered report equation;
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale).
@@ -105,12 +106,14 @@ def build_parser() -> argparse.ArgumentParser:
         "compare",
         help="one step by two maps from the same touchdown: table and plot",
         description="One SLIP step from an apex (default: 1.0 m, 5 m/s, touchdown angle 0.35 rad) or from "
-        "a touchdown state, by --map and by --against (default: Geyer et al.'s map against the exact "
-        "simulator).",
+        "a touchdown state, by --map and by --against (default: Geyer et al.'s map, or geyer-vs when "
+        "k_c != k_d, against the exact simulator).",
     )
     _add_params(cmp_)
     cmp_.add_argument(
-        "--map", default="geyer", help="the map to compare (default %(default)s; see `slipmaps maps`)"
+        "--map",
+        default=None,
+        help="the map to compare (default geyer; geyer-vs when k_c != k_d; see `slipmaps maps`)",
     )
     cmp_.add_argument("--against", default=EXACT, help="the reference map (default %(default)s)")
     cmp_.add_argument(
@@ -147,7 +150,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     acc = sub.add_parser("accuracy", help="every map against the exact simulator on the accuracy grids")
     acc.add_argument(
-        "--map", default="all", help="a map name, or 'all' (default): all maps, written to docs/accuracy.md"
+        "--map",
+        default="all",
+        help="a map name, or 'all' (default): all maps, written to docs/accuracy.md (and beside it "
+        "docs/convergence.md, docs/stiffness.md)",
     )
     acc.add_argument("--out", default=None, help="markdown path (default docs/accuracy.md for all maps)")
     acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
@@ -176,18 +182,19 @@ def _cmd_maps(args: argparse.Namespace) -> int:
 
 
 def _cmd_compare(args: argparse.Namespace) -> int:
-    from .compare import compare, format_table, plot
+    from .compare import compare, default_map, format_table, plot
 
     params = _params(args)
+    name = args.map or default_map(params)
     c = compare(
         params,
-        map=args.map,
+        map=name,
         against=args.against,
         apex_height=args.apex_height,
         apex_speed=args.apex_speed,
         touchdown_angle=args.angle,
         touchdown=tuple(args.touchdown) if args.touchdown is not None else None,
-        options=_options(args.map, args.option),
+        options=_options(name, args.option),
         against_options=_options(args.against, args.against_option),
     )
     path = None if args.no_plot else plot(c, args.plot)

@@ -21,7 +21,7 @@ from .params import SlipParams
 from .quantities import QUANTITIES
 from .results import Result
 
-__all__ = ["Row", "Side", "Comparison", "compare", "format_table", "plot", "DEFAULT_APEX"]
+__all__ = ["Row", "Side", "Comparison", "compare", "default_map", "format_table", "plot", "DEFAULT_APEX"]
 
 #: The documented default case: apex 1.0 m high at 5 m/s, touchdown angle 0.35 rad (about 20 deg).
 DEFAULT_APEX = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
@@ -117,10 +117,19 @@ def _side(name: str, params: SlipParams, td, options: dict) -> Side:
     return Side(name, options, res, status, (h, v))
 
 
+#: The map compared by default: Geyer et al.'s (report 3.1), or its split form (5.1) when k_c != k_d.
+DEFAULT_MAP, DEFAULT_VS_MAP = "geyer", "geyer-vs"
+
+
+def default_map(params: SlipParams) -> str:
+    """Geyer et al.'s map for a constant stiffness, the simple variable-stiffness map otherwise."""
+    return DEFAULT_MAP if params.constant_stiffness else DEFAULT_VS_MAP
+
+
 def compare(
     params: SlipParams,
     *,
-    map: str = "geyer",  # noqa: A002 - the CLI's --map
+    map: str | None = None,  # noqa: A002 - the CLI's --map
     against: str = index.EXACT,
     apex_height: float | None = None,
     apex_speed: float | None = None,
@@ -130,7 +139,9 @@ def compare(
     against_options: dict | None = None,
 ) -> Comparison:
     """One step by ``map`` and by ``against`` from an apex (height, speed, touchdown angle) or a
-    polar touchdown state. ValueError when there is no touchdown or a map refuses the parameters."""
+    polar touchdown state (``map`` None: :func:`default_map`). ValueError when there is no touchdown
+    or a map refuses the parameters."""
+    map = default_map(params) if map is None else map  # noqa: A001
     info = index.lookup(map)
     half = info if isinstance(info, index.HalfInfo) else None
     for name in (map, against):
@@ -276,7 +287,9 @@ def plot(c: Comparison, path: str) -> str:
         ax.legend(loc="best", fontsize=8)
     p = c.params
     axes[0].set_title(
-        f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, k_c={p.k_c:g} N/m, q_th_td={c.touchdown[2]:.3f} rad"
+        f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, "
+        + (f"k={p.k_c:g} N/m" if p.constant_stiffness else f"k_c={p.k_c:g}, k_d={p.k_d:g} N/m")
+        + f", q_th_td={c.touchdown[2]:.3f} rad"
     )
     fig.tight_layout()
     fig.savefig(path, dpi=110)

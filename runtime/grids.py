@@ -56,16 +56,23 @@ class Grid:
         """(n, 3) array of (apex height, apex speed, touchdown angle), row-major over the axes.
 
         For a symmetric grid, the angle of each (height, speed) is the root of the exact bottom
-        angle (NaN where there is none in (0, 1.2) rad).
+        angle (NaN where there is none in (0, 1.2) rad), found once per grid and process (the
+        accuracy and stiffness studies share them).
         """
         if self.kind != "symmetric":
             return np.array([(h, v, a) for a in self.angles for h in self.heights for v in self.speeds])
-        pairs = [(h, v) for h in self.heights for v in self.speeds]
-        rows = [
-            (h, v, symmetric_angle(self.params, h, v))
-            for h, v in progress(pairs, len(pairs), f"symmetric gaits ({self.name})", show_progress)
-        ]
-        return np.array(rows)
+        if self not in _SYMMETRIC_POINTS:
+            pairs = [(h, v) for h in self.heights for v in self.speeds]
+            rows = [
+                (h, v, symmetric_angle(self.params, h, v))
+                for h, v in progress(pairs, len(pairs), f"symmetric gaits ({self.name})", show_progress)
+            ]
+            _SYMMETRIC_POINTS[self] = np.array(rows)
+        return _SYMMETRIC_POINTS[self].copy()
+
+
+#: The points of each symmetric grid, found once (root-finding on exact steps: about 0.1 s a point).
+_SYMMETRIC_POINTS: dict[Grid, np.ndarray] = {}
 
 
 def _bottom_angle(params: SlipParams, h: float, v: float, angle: float) -> float:

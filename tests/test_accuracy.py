@@ -3,28 +3,22 @@ the findings the docs and the README state hold.
 
 The whole study runs once per session (about 10-20 s after compilation): every map and variant
 on the five grids against the exact simulator. The re-measured numbers must match the committed
-docs/accuracy.json to 2e-5 relative (the record has 6 significant digits; the integrations are
-deterministic, so the slack only covers the last digit of a different libm); an error below 1e-9
-(SI units) is at the exact simulator's own precision (its integration agrees with an outside
-reference to 2e-11 relative), where a reformulation of a kernel moves it by its round-off, so
-those are compared to 1e-9 absolute. The committed docs/accuracy.md must be exactly the rendering
-of that record.
+docs/accuracy.json (tolerances: tests/records.py). The committed docs/accuracy.md must be exactly
+the rendering of that record.
 """
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import pytest
+from records import assert_close
 from slipmaps.generated import maps_index
 from slipmaps.runtime import convergence
 from slipmaps.runtime.accuracy import measure_all, variants
 from slipmaps.runtime.accuracy_report import SYMMETRIC_RATIO, from_json, render_markdown, summarize
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
-REL = 2e-5
-ABS = 1e-9
 
 
 @pytest.fixture(scope="module")
@@ -47,24 +41,9 @@ def study() -> list[dict]:
     return from_json((DOCS / "convergence.json").read_text())
 
 
-def _close(a, b, path: str) -> None:
-    if isinstance(a, dict):
-        assert set(a) == set(b), f"{path}: keys differ: {sorted(set(a) ^ set(b))}"
-        for k in a:
-            _close(a[k], b[k], f"{path}.{k}")
-    elif isinstance(a, list):
-        assert len(a) == len(b), f"{path}: lengths differ"
-        for i, (x, y) in enumerate(zip(a, b, strict=True)):
-            _close(x, y, f"{path}[{i}]")
-    elif isinstance(a, float) and isinstance(b, float):
-        assert math.isclose(a, b, rel_tol=REL, abs_tol=ABS), f"{path}: measured {a!r}, recorded {b!r}"
-    else:
-        assert a == b, f"{path}: measured {a!r}, recorded {b!r}"
-
-
 def test_accuracy_record_is_current(measured, record):
     """docs/accuracy.json re-measured (regenerate with `slipmaps accuracy` after changing a map)."""
-    _close(measured, record, "grids")
+    assert_close(measured, record, "grids")
 
 
 def test_accuracy_markdown_renders_the_record(record):
@@ -73,7 +52,7 @@ def test_accuracy_markdown_renders_the_record(record):
 
 def test_convergence_record_is_current(runs, study):
     """docs/convergence.json re-measured from the same exact steps (n = 0..8 passes)."""
-    _close(summarize(runs, convergence.STUDY), study, "convergence")
+    assert_close(summarize(runs, convergence.STUDY), study, "convergence")
 
 
 def test_convergence_markdown_renders_the_record(study):

@@ -116,7 +116,7 @@ def test_compare_nonsymmetric_touchdown_state(capsys):
 @pytest.mark.parametrize(
     ("argv", "needle"),
     [
-        (["--k-c", "20000", "--k-d", "25000"], "constant leg stiffness"),  # names the requirement
+        (["--map", "geyer", "--k-c", "20000", "--k-d", "25000"], "constant leg stiffness"),  # names it
         (["--m", "-80"], "-80"),
         (["--angle", "2.0"], "2.0"),
         (["--apex-height", "0.5"], "touchdown"),  # apex below the touchdown height
@@ -134,10 +134,17 @@ def test_compare_invalid_input_is_a_clear_error(argv, needle, capsys):
 
 
 def test_compare_variable_stiffness_names_the_maps_that_accept_it(capsys):
-    assert main(["compare", "--no-plot", "--k-c", "20000", "--k-d", "25000"]) == 2
+    assert main(["compare", "--no-plot", "--map", "geyer", "--k-c", "20000", "--k-d", "25000"]) == 2
     err = capsys.readouterr().err
     accepting = [m.name for m in index.maps() if "constant_stiffness" not in m.requires]
     assert accepting and all(name in err for name in accepting)
+
+
+def test_compare_variable_stiffness_defaults_to_the_simple_variable_stiffness_map(capsys):
+    """k_c != k_d with no --map: Geyer et al.'s map would refuse, so its split form geyer-vs runs."""
+    assert main(["compare", "--no-plot", "--k-c", "20000", "--k-d", "25000"]) == 0
+    out = capsys.readouterr().out
+    assert "map:       geyer-vs" in out and "k_d=25000" in out
 
 
 def test_compare_exact_against_exact_has_zero_error(capsys):

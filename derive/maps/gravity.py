@@ -166,7 +166,7 @@ _INTERVAL = Option(
 )
 
 
-def _iterations(default: int) -> Option:
+def iterations_option(default: int) -> Option:
     return Option(
         "iterations",
         "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)",
@@ -177,7 +177,7 @@ def _iterations(default: int) -> Option:
     )
 
 
-def _tol(default: float) -> Option:
+def tol_option(default: float) -> Option:
     return Option(
         "tol",
         "stop when P_c moves by at most tol times the momentum scale; 0: run all passes",
@@ -191,7 +191,7 @@ _EXTRAS = (
     Field("P_c", "virtual gravity effect: the stance impulse added to p_th", "N m s"),
     Field("passes", "fixed-point passes run", ""),
 )
-_MOMENTUM_SCALE = sp.Abs(sym("p_td")) + m * l0 * sp.sqrt(g_s * l0)
+MOMENTUM_SCALE = sp.Abs(sym("p_td")) + m * l0 * sp.sqrt(g_s * l0)
 
 
 def _n(prefix: str, name: str) -> sp.Symbol:
@@ -364,7 +364,7 @@ def _constant_correction(kind: int):
                 update=(sym("i_P_new"),),
                 max_iter=inp.opt("iterations"),
                 tol=inp.opt("tol"),
-                scales=(_MOMENTUM_SCALE,),
+                scales=(MOMENTUM_SCALE,),
                 count=sym("passes"),
                 comment="fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)",
             ),
@@ -450,35 +450,35 @@ MAPS = (
         0,
         "Gravity correction type 0 (leg length l0)",
         ("49", "51"),
-        (_READING, _SAMPLES, _iterations(1), _tol(0.0)),
+        (_READING, _SAMPLES, iterations_option(1), tol_option(0.0)),
         "P_c from the torque at l0 sampled at touchdown and liftoff (49) or also the bottom (51)",
     ),
     _spec(
         1,
         "Gravity correction type 1 (leg length (l0 + q_r_b)/2)",
         ("52", "53", "54"),
-        (_READING, _SAMPLES, _iterations(100), _tol(1e-12)),
+        (_READING, _SAMPLES, iterations_option(100), tol_option(1e-12)),
         "P_c from the torque at the mean of the rest and bottom leg lengths (52), (54)",
     ),
     _spec(
         2,
         "Gravity correction type 2 (average leg length)",
         ("55", "56", "57", "58", "59", "60", "61", "62", "63", "64"),
-        (_READING, _SAMPLES, _LEG_LENGTH, _iterations(100), _tol(1e-12)),
+        (_READING, _SAMPLES, _LEG_LENGTH, iterations_option(100), tol_option(1e-12)),
         "P_c from the torque at the stance-average leg length (62), (64)",
     ),
     _spec(
         3,
         "Gravity correction type 3 (trapezoid on [t_i, t_f])",
         ("65", "66"),
-        (_READING, _INTERVAL, _iterations(100), _tol(1e-12)),
+        (_READING, _INTERVAL, iterations_option(100), tol_option(1e-12)),
         "P_c by the trapezoid rule on the torque with the true leg lengths (65), whole stance or halves",
     ),
     _spec(
         4,
         "Gravity correction type 4 (average leg length on [t_i, t_f])",
         ("67", "68", "69", "70", "71", "72", "73", "74", "75", "76", "77"),
-        (_READING, _INTERVAL, _LEG_LENGTH, _iterations(100), _tol(1e-12)),
+        (_READING, _INTERVAL, _LEG_LENGTH, iterations_option(100), tol_option(1e-12)),
         "P_c from the torque at the average leg length of each interval (76), whole stance or halves",
     ),
 )

@@ -39,6 +39,7 @@ from . import geyer as _geyer
 from . import gravity as _gravity
 from . import gravity_type5 as _gravity_type5
 from . import quadrature
+from . import variable as _variable
 
 __all__ = ["NODE_COUNTS", "radial_force", "u_rates", "half_kernel", "MAPS", "HALVES"]
 
@@ -274,7 +275,7 @@ def half_kernel(kind: str) -> Kernel:
 
 #: The maps a zeroth iterate can come from: every declared map that is not itself iterated from a
 #: zeroth iterate (tests/test_iterative.py checks that no such map is left out).
-ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS
+ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS + _variable.MAPS
 #: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
 HELD = "held"
 
@@ -286,7 +287,11 @@ ZEROTH = Option(
     (
         ("geyer", "Geyer et al.'s map (section 3.1) with k_c"),
         (HELD, "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown"),
-        *((s.name, f"{s.title} (section {s.section}) with k_c") for s in ZEROTH_MAPS if s.name != "geyer"),
+        *(
+            (s.name, f"{s.title} (section {s.section}) with k_c" + (", k_d" if "k_d" in s.params else ""))
+            for s in ZEROTH_MAPS
+            if s.name != "geyer"
+        ),
     ),
 )
 

@@ -53,10 +53,11 @@ from __future__ import annotations
 import sympy as sp
 
 from ..halfspec import HalfInputs, HalfSpec
-from ..ir import Guard, Iterate, Stage, Step, Switch, sym
+from ..ir import Call, Guard, Iterate, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
+from . import variable
 from .iterative import radial_momentum
 from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
 
@@ -73,6 +74,15 @@ VARIANT = Option(
             "only 1/H^{-1} at the point, the weights 1/sigma^2 and sigma integrated exactly: (133)-(135), "
             "(148)-(150), with (134)/(149) keeping p_th",
         ),
+    ),
+)
+BOTTOM_LENGTH = Option(
+    "bottom_length",
+    "the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates)",
+    "zeroth",
+    (
+        ("zeroth", "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"),
+        ("eq153", "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"),
     ),
 )
 ITERATIONS = Option(
@@ -190,16 +200,38 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
         u = sp.sqrt(1 - e / (q_r_b - q_r_td))  # sqrt((x - q_r_b)/(q_r_td - q_r_b)), x = q_r_td + e
         return sym("z_b_q_th") + (q_th_td - sym("z_b_q_th")) * u, z_p_b + (p_td - z_p_b) * u
 
+    quartic = variable.quartic_kernel()
     return (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
         _zeroth_bottom(touchdown, p, geyer_q_r_lo),
         Stage(
-            ((q_r_b, sym("z_b_q_r")), (e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True))),
+            ((e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True)),),
+            comment="E_ab (114) of the touchdown state",
+        ),
+        Switch(
+            sym(BOTTOM_LENGTH.name),
+            (
+                (BOTTOM_LENGTH.code("zeroth"), (Stage(((q_r_b, sym("z_b_q_r")),)),)),
+                (
+                    BOTTOM_LENGTH.code("eq153"),
+                    (
+                        Call(
+                            quartic,
+                            {"p": p_td, "E_ab": e_ab, **{q: p[q] for q in ("m", "l0", "k_c", "g_s")}},
+                            {"q_r_b": "bottom_q_r"},
+                            comment="(153): the vertical bottom's quartic",
+                        ),
+                    ),
+                ),
+            ),
+            comment="bottom leg length",
+        ),
+        Stage(
+            (),
             (
                 Guard(q_r_b > 0, "FALL", "bottom leg length q_r_b > 0"),
                 Guard(q_r_td - q_r_b > 0, "NUMERICAL_RANGE", "bottom below touchdown"),
             ),
-            comment="bottom leg length: the zeroth iterate's; E_ab (114) of the touchdown state",
         ),
         *chain_steps(
             "c_",
@@ -344,7 +376,7 @@ MAPS = (
         equations=_EQUATIONS,
         params=("m", "l0", "k_c", "k_d", "g_s"),
         build=_build,
-        options=(VARIANT, ITERATIONS, ZEROTH),
+        options=(VARIANT, ITERATIONS, ZEROTH, BOTTOM_LENGTH),
         as_printed=True,
         approximation_statuses=("IMAGINARY_MOMENTUM", "LIFTOFF_BACKWARD", "LIFTOFF_DOWNWARD"),
         summary="the report's iteration: n-th iterate at the end of each half from the zeroth at the n-fold "
@@ -366,7 +398,7 @@ HALVES = (
         start="touchdown",
         params=("m", "l0", "k_c", "g_s"),
         build=_compression_half,
-        options=(VARIANT, ITERATIONS, ZEROTH),
+        options=(VARIANT, ITERATIONS, ZEROTH, BOTTOM_LENGTH),
         summary="the compression half of `iterative-report`: the chain anchored at touchdown, the printed "
         "point (123), bottom leg length of the zeroth iterate",
     ),

@@ -25,8 +25,8 @@ What E_ab is decides whether q_r is continuous at the bottom. Option ``continuit
   compressing after the switch), the second half starts at the phase pi/2 instead of 3 pi/2.
 
 The bottom leg length estimates of section 5.2 are here too: the quartic (153) of a symmetric
-(vertical) bottom, whose first printed line (152) squares neither p_th nor divides by the right
-power (:func:`bottom_quartic`), and (154) = Geyer's bottom l0 (1 + a_ab - b_ab).
+(vertical) bottom, whose first printed line (152) lacks the square of p_th (:func:`bottom_quartic`),
+and (154) = Geyer's bottom l0 (1 + a_ab - b_ab).
 """
 
 from __future__ import annotations
@@ -45,6 +45,7 @@ from ..symbols import (
     b,
     epsilon,
     g_s,
+    k,
     k_c,
     k_d,
     l0,
@@ -55,6 +56,7 @@ from ..symbols import (
     p_th,
     q_r,
     q_r_lo,
+    q_r_td,
     q_rd,
     q_th,
     q_th_td,
@@ -63,7 +65,19 @@ from ..symbols import (
     rho_d,
 )
 from . import geyer
-from .gravity import touchdown_invariants
+from .gravity import (
+    E_SYM,
+    MOMENTUM_SCALE,
+    P_SYM,
+    T_F,
+    T_I,
+    average_leg_length,
+    impulse,
+    iterations_option,
+    liftoff_radial_speed,
+    tol_option,
+    touchdown_invariants,
+)
 
 __all__ = [
     "half_solution",
@@ -212,102 +226,116 @@ CONTINUITY = Option(
         ("energy", "(103)-(104) with E_ab the energy the first half conserves: continuous, (110) holds"),
     ),
 )
+GRAVITY = Option(
+    "gravity",
+    "virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half "
+    "runs with its mean momentum, the rates with the momentum at that instant",
+    "none",
+    (
+        ("none", "p_th conserved (Remark 2)"),
+        ("type3", "(65) per half: the trapezoid rule on the torque at the half's ends"),
+        ("type4", "(76) per half: the torque at the half's average leg length from (11), at its ends"),
+    ),
+)
 
-_HALF = ("omega0_hat", "a", "b")
+
+class _Names:
+    """Kernel names of one pass of the map: ``prefix`` + name (the fixed-point passes use ``i_``)."""
+
+    def __init__(self, prefix: str = ""):
+        self.prefix = prefix
+
+    def __call__(self, name: str) -> sp.Symbol:
+        return sym(self.prefix + name)
+
+    def ab(self, name: str) -> sp.Symbol:
+        return self(f"ab_{name}")
+
+    def ba(self, name: str) -> sp.Symbol:
+        return self(f"ba_{name}")
 
 
-def _ab(name: str) -> sp.Symbol:
-    return sym(f"ab_{name}")
-
-
-def _ba(name: str) -> sp.Symbol:
-    return sym(f"ba_{name}")
-
-
-def _first_half(inp: MapInputs) -> tuple[Step, ...]:
-    """Apex to bottom (78)-(89): Geyer's solution with k_c from the touchdown state, to phase 3 pi/2."""
+def _first_half(inp: MapInputs, n: _Names, P1: sp.Basic) -> tuple[Step, ...]:
+    """Apex to bottom (78)-(89): Geyer's solution with k_c from the touchdown state with the half's
+    mean momentum p_td + P1/2, to phase 3 pi/2; the bottom momentum p_td + P1."""
     solution = geyer.solution_kernel()
     p = inp.params
-    q_r_td, q_rd_td, _, q_thd_td = inp.touchdown
+    q_r_td, q_rd_td, _, _ = inp.touchdown
     bottom = geyer.event_states()["bottom"]
-    names = {x: _ab(x.name) for x in (omega, omega0_hat, a, b, geyer.PHASE_TD, geyer.S_TD)}
+    names = {x: n.ab(x.name) for x in (omega, omega0_hat, a, b, geyer.PHASE_TD, geyer.S_TD)}
     return (
-        touchdown_invariants(k_c),
+        Stage(
+            ((n("q_thd_eff"), (sym("p_td") + P1 / 2) / (m * q_r_td**2)),),
+            comment="the first half's mean momentum as a touchdown rate",
+        ),
         Call(
             solution,
             {
                 "q_r_td": q_r_td,
                 "q_rd_td": q_rd_td,
-                "q_thd_td": q_thd_td,
-                "m": p["m"],
-                "l0": p["l0"],
+                "q_thd_td": n("q_thd_eff"),
+                **{q: p[q] for q in ("m", "l0", "g_s")},
                 "k": p["k_c"],
-                "g_s": p["g_s"],
             },
-            {o: f"ab_{o}" for o in solution.output_names},
+            {o: f"{n.prefix}ab_{o}" for o in solution.output_names},
             comment="eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state",
         ),
         Stage(
             (
-                (sym("t_bottom"), (BOTTOM_PHASE - _ab("phase_td")) / _ab("omega0_hat")),
-                (sym("bottom_q_r"), bottom[0].subs(names)),
-                (sym("bottom_q_rd"), sp.S.Zero),
-                (sym("bottom_q_th"), bottom[2].subs(names)),
-                (sym("bottom_q_thd"), sym("p_td") / (m * sym("bottom_q_r") ** 2)),
-                (sym("rho_b"), sym("bottom_q_r") / l0 - 1),
+                (n("t_bottom"), (BOTTOM_PHASE - n.ab("phase_td")) / n.ab("omega0_hat")),
+                (n("bottom_q_r"), bottom[0].subs(names)),
+                (n("bottom_q_rd"), sp.S.Zero),
+                (n("bottom_q_th"), bottom[2].subs(names)),
+                (n("p_b"), sym("p_td") + P1),
+                (n("bottom_q_thd"), n("p_b") / (m * n("bottom_q_r") ** 2)),
+                (n("rho_b"), n("bottom_q_r") / l0 - 1),
             ),
-            comment="eqs (79)-(81): the bottom at phase 3 pi/2; p_th conserved (Remark 2)",
+            comment="eqs (79)-(81): the bottom at phase 3 pi/2",
         ),
     )
 
 
-def _second_half(inp: MapInputs) -> tuple[Step, ...]:
-    """Bottom to apex (90)-(105) with k_d and the energy jump (97)-(98), a_ba and b_ba per option."""
+def _second_half(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Step, ...]:
+    """Bottom to apex (90)-(105) with k_d and the energy jump (97)-(98), a_ba and b_ba per option,
+    with the half's mean momentum p_b + P2/2 (p_b without a correction: omega_ba = omega_ab (100))."""
     p = inp.params
     sol = half_solution(k_d)
-    to_w0 = {omega: _ab("omega")}
+    to_w = {omega: n.ba("omega")}
     taylor = sp.series(geyer.dimensionless_energy(), rho, 0, 3).removeO()
-    eps_energy = taylor.subs({rho: sym("rho_b"), rho_d: 0, omega: _ab("omega"), omega0: sp.sqrt(k_c / m)})
-    jump = energy_jump().subs(q_r, sym("bottom_q_r"))
+    eps_energy = taylor.subs({rho: n("rho_b"), rho_d: 0, omega: n.ba("omega"), omega0: sp.sqrt(k_c / m)})
+    jump = energy_jump().subs(q_r, n("bottom_q_r"))
     choice = inp.options["continuity"]
-    eps_ba = sym("eps_ba")
+    eps_ba, eps_td = n("eps_ba"), 2 * (sym("E_td") + jump) / (m * l0**2)
     return (
         Stage(
             (
-                (_ba("omega0_hat"), sol["omega0_hat"].subs(to_w0)),
-                (_ba("a_free"), sol["a"].subs(to_w0)),
+                (n.ba("omega"), (n("p_b") + P2 / 2) / (m * l0**2)),
+                (n.ba("omega0_hat"), sol["omega0_hat"].subs(to_w)),
+                (n.ba("a_free"), sol["a"].subs(to_w)),
             ),
             (
                 Guard(
-                    sym("rho_b") < _ba("a_free"),
+                    n("rho_b") < n.ba("a_free"),
                     "RECOMPRESSION",
                     "with k_d the bottom lies below the centre of (90): the leg extends",
                 ),
             ),
-            comment="eqs (100)-(103): omega_ba = omega_ab, omega0_ba^2 = k_d/m",
+            comment="eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m",
         ),
         Switch(
             inp.opt("continuity"),
             (
                 (
                     choice.code("report"),
-                    (
-                        Stage(
-                            ((eps_ba, 2 * (sym("E_td") + jump) / (m * l0**2)),),
-                            comment="eqs (97)-(99): E_ba = E_ab + E_additional, E_ab the energy (27)",
-                        ),
-                    ),
+                    (Stage(((eps_ba, eps_td),), comment="eqs (97)-(99), E_ab the energy (27)"),),
                 ),
-                (
-                    choice.code("constrained"),
-                    (Stage(((eps_ba, 2 * (sym("E_td") + jump) / (m * l0**2)),), comment="as report"),),
-                ),
+                (choice.code("constrained"), (Stage(((eps_ba, eps_td),), comment="as report"),)),
                 (
                     choice.code("energy"),
                     (
                         Stage(
                             ((eps_ba, eps_energy + 2 * jump / (m * l0**2)),),
-                            comment="eqs (97)-(99) with E_ab Geyer's energy (8) of the first half",
+                            comment="eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom",
                         ),
                     ),
                 ),
@@ -315,17 +343,17 @@ def _second_half(inp: MapInputs) -> tuple[Step, ...]:
             comment="E_ab of (98)",
         ),
         Stage(
-            ((_ba("b2"), sol["b2"].subs(to_w0).subs(epsilon, eps_ba)),),
-            (Guard(_ba("b2") > 0, "NO_REAL_SOLUTION", "eq (104): real amplitude b_ba"),),
+            ((n.ba("b2"), sol["b2"].subs(to_w).subs(epsilon, eps_ba)),),
+            (Guard(n.ba("b2") > 0, "NO_REAL_SOLUTION", "eq (104): real amplitude b_ba"),),
         ),
         Stage(
             (
-                (_ba("b"), sp.sqrt(_ba("b2"))),
+                (n.ba("b"), sp.sqrt(n.ba("b2"))),
                 (
-                    _ba("a"),
+                    n.ba("a"),
                     sp.Piecewise(
-                        (sym("rho_b") + _ba("b"), choice.is_("constrained")),
-                        (_ba("a_free"), True),
+                        (n("rho_b") + n.ba("b"), choice.is_("constrained")),
+                        (n.ba("a_free"), True),
                     ),
                 ),
             ),
@@ -333,46 +361,150 @@ def _second_half(inp: MapInputs) -> tuple[Step, ...]:
         ),
         Call(
             geyer.liftoff_phase_kernel(),
-            {"a": _ba("a"), "b": _ba("b"), "l0": p["l0"], "q_r_lo": p["q_r_lo"]},
-            {"phase_lo": "ba_phase_lo", "s_lo": "ba_s_lo"},
+            {"a": n.ba("a"), "b": n.ba("b"), "l0": p["l0"], "q_r_lo": p["q_r_lo"]},
+            {"phase_lo": f"{n.prefix}ba_phase_lo", "s_lo": f"{n.prefix}ba_s_lo"},
             comment="eq (94): the liftoff phase of the second half",
         ),
     )
 
 
-def _second_state(phase: sp.Basic) -> tuple[sp.Basic, ...]:
-    """(90)-(92) at ``phase`` of the second half (bottom at 3 pi/2): (11), (19), (17)."""
-    names = {omega: _ab("omega"), omega0_hat: _ba("omega0_hat"), a: _ba("a"), b: _ba("b")}
-    shift = {geyer.PHASE: phase, geyer.PHASE_TD: BOTTOM_PHASE, q_th_td: sym("bottom_q_th")}
+def _second_state(phase: sp.Basic, n: _Names | None = None) -> tuple[sp.Basic, ...]:
+    """(90)-(92) at ``phase`` of the second half (bottom at 3 pi/2): (11), (19), (17) (the rate with
+    the half's mean momentum)."""
+    n = n or _Names()
+    names = {omega: n.ba("omega"), omega0_hat: n.ba("omega0_hat"), a: n.ba("a"), b: n.ba("b")}
+    shift = {geyer.PHASE: phase, geyer.PHASE_TD: BOTTOM_PHASE, q_th_td: n("bottom_q_th")}
     return tuple(e.subs(shift).subs(names) for e in geyer.state_at_phase())
 
 
-def _liftoff() -> Stage:
-    state = _second_state(_ba("phase_lo"))
+def _liftoff(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Stage, ...]:
+    """The liftoff state; with a gravity correction its radial speed comes from the energy after the
+    bottom (the touchdown's energy (27) plus the jump (97) at the bottom), as in the ``mean`` reading
+    of section 4, since (11) knows nothing of the changed momentum."""
+    state = _second_state(n.ba("phase_lo"), n)
     trig = {
-        sp.sin(_ba("phase_lo")): _ba("s_lo"),
-        sp.cos(_ba("phase_lo")): sp.sqrt(1 - _ba("s_lo") ** 2),
+        sp.sin(n.ba("phase_lo")): n.ba("s_lo"),
+        sp.cos(n.ba("phase_lo")): sp.sqrt(1 - n.ba("s_lo") ** 2),
     }
-    return Stage(
-        (
-            (sym("t_stance"), sym("t_bottom") + (_ba("phase_lo") - BOTTOM_PHASE) / _ba("omega0_hat")),
-            (sym("liftoff_q_r"), q_r_lo),
-            (sym("liftoff_q_rd"), state[1].subs(trig)),
-            (sym("liftoff_q_th"), state[2].subs(trig)),
-            (sym("liftoff_q_thd"), sym("p_td") / (m * q_r_lo**2)),
+    no_gravity = inp.options["gravity"].is_("none")
+    p_lo = n("p_b") + P2
+    energy = sym("E_td") + energy_jump().subs(q_r, n("bottom_q_r"))
+    square = (
+        liftoff_radial_speed()
+        .subs(k, k_d)
+        .subs({q_r: q_r_lo, q_th: n("liftoff_q_th"), P_SYM: p_lo, E_SYM: energy})
+    )
+    return (
+        Stage(
+            (
+                (n("t_stance"), n("t_bottom") + (n.ba("phase_lo") - BOTTOM_PHASE) / n.ba("omega0_hat")),
+                (n("liftoff_q_r"), q_r_lo),
+                (n("liftoff_q_th"), state[2].subs(trig)),
+                (n("liftoff_q_thd"), p_lo / (m * q_r_lo**2)),
+                (n("q_rd_lo_sq"), square),
+            ),
+            (
+                Guard(sp.Abs(n("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),
+                Guard(sp.Or(no_gravity, n("q_rd_lo_sq") >= 0), "ENERGY_DEFICIT", "q_rd_lo^2 from the energy"),
+            ),
+            comment="eqs (90)-(94) at liftoff",
         ),
-        (Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
-        comment="eqs (90)-(94) at liftoff; p_th conserved (Remark 2)",
+        Stage(
+            (
+                (
+                    n("liftoff_q_rd"),
+                    sp.Piecewise((state[1].subs(trig), no_gravity), (sp.sqrt(n("q_rd_lo_sq")), True)),
+                ),
+            ),
+            comment="q_rd_lo: (11) without a gravity correction, the energy with one",
+        ),
     )
 
 
+def _impulses(inp: MapInputs, n: _Names) -> Switch:
+    """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
+    on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``."""
+    th_td, th_b, th_lo = q_th_td, n("bottom_q_th"), n("liftoff_q_th")
+    q_r_b, t_b, t_s = n("bottom_q_r"), n("t_bottom"), n("t_stance")
+    P1, P2 = n("P_new1"), n("P_new2")
+    average = average_leg_length("eq11")  # (11) on its own time axis
+
+    def over(half, t_from, t_to):
+        w = half("omega0_hat")
+        times = {T_I: t_from / w, T_F: t_to / w}
+        return average.subs(times).subs({a: half("a"), b: half("b"), omega0_hat: w})
+
+    L1, L2 = sym(f"_{n.prefix}L1"), sym(f"_{n.prefix}L2")  # private to their branch
+    choice = inp.options["gravity"]
+    return Switch(
+        inp.opt("gravity"),
+        (
+            (choice.code("none"), (Stage(((P1, sp.S.Zero), (P2, sp.S.Zero))),)),
+            (
+                choice.code("type3"),
+                (
+                    Stage(
+                        (
+                            (P1, impulse(t_b, [(q_r_td, th_td), (q_r_b, th_b)])),
+                            (P2, impulse(t_s - t_b, [(q_r_b, th_b), (q_r_lo, th_lo)])),
+                        ),
+                        comment="eq (65) on each half",
+                    ),
+                ),
+            ),
+            (
+                choice.code("type4"),
+                (
+                    Stage(
+                        (
+                            (L1, over(n.ab, n.ab("phase_td"), BOTTOM_PHASE)),
+                            (L2, over(n.ba, BOTTOM_PHASE, n.ba("phase_lo"))),
+                            (P1, impulse(t_b, [(L1, th_td), (L1, th_b)])),
+                            (P2, impulse(t_s - t_b, [(L2, th_b), (L2, th_lo)])),
+                        ),
+                        comment="eq (76) on each half, the average leg length of (11) on it",
+                    ),
+                ),
+            ),
+        ),
+        comment="the virtual gravity effect of each half",
+    )
+
+
+def _pass(inp: MapInputs, n: _Names, P1: sp.Basic, P2: sp.Basic) -> tuple[Step, ...]:
+    return _first_half(inp, n, P1) + _second_half(inp, n, P2) + _liftoff(inp, n, P2)
+
+
 def _build(inp: MapInputs) -> MapBuild:
-    steps = _first_half(inp) + _second_half(inp)
+    P1, P2 = sym("P_c_compression"), sym("P_c_decompression")
+    trial = _Names("i_")
+    gravity = inp.options["gravity"]
+    steps = (
+        touchdown_invariants(k_c),
+        Iterate(
+            state=((P1, sp.S.Zero), (P2, sp.S.Zero)),
+            body=_pass(inp, trial, P1, P2) + (_impulses(inp, trial),),
+            update=(trial("P_new1"), trial("P_new2")),
+            max_iter=sp.Piecewise((0, gravity.is_("none")), (inp.opt("iterations"), True)),
+            tol=inp.opt("tol"),
+            scales=(MOMENTUM_SCALE, MOMENTUM_SCALE),
+            count=sym("passes"),
+            fail_status="NOT_CONVERGED",
+            comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
+        ),
+        *_pass(inp, _Names(), P1, P2),
+    )
 
     def state_at(time: sp.Symbol) -> tuple[Step, ...]:
         first = geyer.state_kernel()
-        ab = {x: _ab(x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
-        second = _second_state(BOTTOM_PHASE + _ba("omega0_hat") * (time - sym("t_bottom")))
+        n = _Names()
+        ab = {x: n.ab(x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
+        second = _second_state(BOTTOM_PHASE + n.ba("omega0_hat") * (time - n("t_bottom")))
+        t_b, t_s = n("t_bottom"), n("t_stance")
+        rates = (
+            (sym("p_td") + P1 * time / t_b) / (m * sym("c_q_r") ** 2),
+            (n("p_b") + P2 * (time - t_b) / (t_s - t_b)) / (m * second[0] ** 2),
+        )
         return steps + (
             Call(
                 first,
@@ -385,17 +517,18 @@ def _build(inp: MapInputs) -> MapBuild:
                     (
                         sym(f.name),
                         sp.Piecewise(
-                            (sym(f"c_{f.name}"), time <= sym("t_bottom")),
-                            (second[i] if f.name != "q_thd" else sym("p_td") / (m * second[0] ** 2), True),
+                            (sym(f"c_{f.name}") if f.name != "q_thd" else rates[0], time <= t_b),
+                            (second[i] if f.name != "q_thd" else rates[1], True),
                         ),
                     )
                     for i, f in enumerate(catalog.POLAR)
                 ),
-                comment="the piecewise stance map of section 5.1: (78)-(79) up to t_b, (90)-(92) after",
+                comment="the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, "
+                "(90)-(92) after; the rates with the momentum at t",
             ),
         )
 
-    return MapBuild(steps=steps + (_liftoff(),), state_at=state_at, helpers=(quartic_kernel(),))
+    return MapBuild(steps=steps, state_at=state_at, helpers=(quartic_kernel(),))
 
 
 MAPS = (
@@ -403,17 +536,20 @@ MAPS = (
         name="geyer-vs",
         title="Simple variable-stiffness map (Geyer et al. per half)",
         section="5.1",
-        equations=tuple(
-            str(n) for n in (78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 90, 91, 92, 93, 94, 97, 98, 99, 100)
-        )
-        + tuple(str(n) for n in range(101, 112)),
+        equations=tuple(str(n) for n in range(78, 114) if n != 95),
         params=("m", "l0", "k_c", "k_d", "g_s"),
         build=_build,
-        options=(CONTINUITY,),
+        options=(CONTINUITY, GRAVITY, iterations_option(100), tol_option(1e-12)),
+        extras=(
+            Field("P_c_compression", "virtual gravity effect of the first half (0 unless gravity)", "N m s"),
+            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s"),
+            Field("passes", "fixed-point passes run (0 unless gravity)", ""),
+        ),
         summary="Geyer et al.'s map with k_c to the bottom, the energy jump (97)-(98), again with k_d to "
-        "liftoff",
+        "liftoff; optionally a gravity correction per half",
         notes="Section 5.1: apex to bottom (78)-(89) with k_c, bottom to apex (90)-(105) with k_d and "
         "E_ba = E_ab + (k_d - k_c)(l0 - q_r_b)^2/2; option continuity chooses (103)-(104) with the "
-        "touchdown energy (27), the constraint (111), or (103)-(104) with the energy of the first half.",
+        "touchdown energy (27), the constraint (111), or (103)-(104) with the energy of the first half; "
+        "option gravity adds type 3 or 4 of section 4 on each half.",
     ),
 )
