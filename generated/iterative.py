@@ -1040,6 +1040,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+    # F_r > 0 at the bottom with k_d
+    if not ((-g_s*m*math.cos(q_th) + k_d*l0 - k_d*q_r + m*q_r*q_thd**2 > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
     # node count
     if nodes == 0.0:
         # Picard passes on the 1 node values (collocation in u)

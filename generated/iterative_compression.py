@@ -13,7 +13,7 @@
 #   gravity_type3.py sha256:e58a1a317b1fc866
 #   gravity_type4.py sha256:6bb6498e457c9b35
 #   gravity_type5.py sha256:70d4f36f9336d294
-#   iterative.py sha256:80b0caa65bb731b7
+#   iterative.py sha256:3908ef77795e8400
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 

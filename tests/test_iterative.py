@@ -106,6 +106,7 @@ def test_soft_decompression_returns_a_status_not_nan():
     res = slipmaps.apex_return_batch("iterative", params, h, v, a)
     assert not np.any(res.ok)
     assert set(np.unique(res["status"])) <= {
+        int(Status.RECOMPRESSION),
         int(Status.NO_LIFTOFF),
         int(Status.IMAGINARY_MOMENTUM),
         int(Status.LIFTOFF_DOWNWARD),

@@ -85,13 +85,15 @@ def test_eq97_energy_jump_moves_the_next_apex_the_right_way():
         assert heights[name, 0.9] < heights[name, 1.0] < heights[name, 1.1], heights
 
 
-def test_soft_decompression_is_recompression_not_nan():
+def test_soft_decompression_is_recompression_not_nan():  # also the iterative map
     """k_d so soft that the bottom lies below the centre of the second half's oscillation: the leg
     would compress further, RECOMPRESSION (the status the exact simulator gives the same case)."""
     params, td = _params(0.2), (1.0, -0.8, 0.05, -0.5)  # a slow, nearly vertical stance
     res = slipmaps.stance(MAP, params, td)
     assert res.status == Status.RECOMPRESSION and np.all(np.isnan(res.liftoff))
     assert slipmaps.stance("exact", params, td).status == Status.RECOMPRESSION
+    # the converging iterative map and its decompression half check the same condition
+    assert slipmaps.stance("iterative", params, td).status == Status.RECOMPRESSION
 
 
 @pytest.mark.parametrize(

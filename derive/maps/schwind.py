@@ -242,10 +242,15 @@ def half_kernel(kind: str) -> Kernel:
     if not compress:
         params += (catalog.PARAMS["q_r_lo"],)
     q_r_lo = catalog.PARAMS["q_r_lo"].symbol
+    at_start = {q_r: names["q_r"], q_th: names["q_th"], p_th: m * names["q_r"] ** 2 * names["q_thd"]}
     first = (
-        Guard(names["q_rd"] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0")
+        (Guard(names["q_rd"] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)
         if compress
-        else Guard(q_r_lo - names["q_r"] > 0, "NO_LIFTOFF", "bottom below q_r_lo")
+        else (
+            Guard(q_r_lo - names["q_r"] > 0, "NO_LIFTOFF", "bottom below q_r_lo"),
+            # as the exact simulator: the k_d spring must start extending the leg at the bottom
+            Guard(radial_force(k_d).subs(at_start) > 0, "RECOMPRESSION", "F_r > 0 at the bottom with k_d"),
+        )
     )
     cases = tuple((NODES.code(str(n)), _half_case(quadrature.rule(n), kind, a)) for n in NODE_COUNTS)
     outputs = Group(
@@ -265,7 +270,7 @@ def half_kernel(kind: str) -> Kernel:
         else ("115", "116", "117", "118", "123"),
         args=anchor + params + guess + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
         steps=(
-            Stage((), (first,)),
+            Stage((), first),
             Switch(NODES.symbol, cases, comment="node count"),
         ),
         outputs=outputs,
