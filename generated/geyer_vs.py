@@ -54,41 +54,42 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         q_r_b: bottom leg length of (153) [m]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 57
+    # Total ops: 64
     # inputs: finite and inside their domains
     if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
         return (NAN, STATUS_INVALID_INPUT)
     # a start left of the root: V >= E there
-    _x0 = (1.0/k_c)
-    _x1 = g_s*m
-    _x2 = _x0*_x1
-    _x3 = _x0*g_s**2*m**2
-    _x4 = _x2 - l0
-    _x5 = -_x1*_x4
-    _x6 = math.sqrt(2.0*E_ab - _x3 - 2.0*_x5)/math.sqrt(k_c)
-    _x7 = math.sqrt(2.0)*abs(p)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x3 - _x5))
-    q_start = -0.5*_x2 - 0.5*_x6 + (0.25)*_x7 + (0.5)*l0 + (0.5)*abs(_x4 + _x6 + (0.5)*_x7)
+    _x0 = g_s*m
+    _x1 = _x0/k_c
+    _x2 = k_c*l0**2
+    _x3 = _x1 - l0
+    _x4 = -_x3
+    _x5 = _x4**2*k_c
+    _x6 = _x0*_x4
+    _x7 = math.sqrt(2.0*E_ab - _x2 + 2.0*_x4*k_c*l0 - _x5 - 2.0*_x6)/math.sqrt(k_c)
+    _x8 = math.sqrt(2.0)*abs(p)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x2 + _x4*k_c*l0 - 0.5*_x5 - _x6))
+    q_start = -0.5*_x1 - 0.5*_x7 + (0.25)*_x8 + (0.5)*l0 + (0.5)*abs(_x3 + _x7 + (0.5)*_x8)
     # E_ab above the minimum of the potential
-    if not ((E_ab > (0.5)*g_s**2*m**2/k_c + g_s*m*(-g_s*m/k_c + l0))):
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
         return (NAN, STATUS_NO_REAL_SOLUTION)
     # Newton's method on V - E: monotone from the left
     qb = q_start
     passes = 0.0
     _conv0 = False
     for _it0 in range(int(60.0)):
-        slope = g_s*m + (0.5)*k_c*(-2.0*l0 + 2.0*qb) - p**2/(m*qb**3)
+        slope = g_s*m - k_c*l0 + k_c*qb - p**2/(m*qb**3)
         # V decreasing left of the root
         if not ((slope < 0.0)):
             return (NAN, STATUS_NO_REAL_SOLUTION)
-        _n0_0 = qb - (-E_ab + g_s*m*qb + (0.5)*k_c*(l0 - qb)**2 + (0.5)*p**2/(m*qb**2))/slope
+        _n0_0 = qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2 + (0.5)*p**2/(m*qb**2))/slope
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-15 > 0.0 and (abs(_n0_0 - qb) <= 1e-15*(l0))
+        _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
         qb = _n0_0
         passes += 1.0
         if _conv0:
             break
-    if not _conv0 and 1e-15 > 0.0 and passes > 0.0:
+    if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
         return (NAN, STATUS_NOT_CONVERGED)
     q_r_b = qb
     # the bottom root is at most l0
@@ -194,7 +195,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_ba_omega = _x10*_x13**2*_x9
         i_ba_omega0_hat = math.sqrt(_x12)/math.sqrt(m)
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
-        # with k_d the bottom lies below the centre of (90): the leg extends
+        # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
             return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
         # E_ab of (98)
@@ -329,7 +330,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     ba_omega = _x50*_x51*_x54**2
     ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
     ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre of (90): the leg extends
+    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((rho_b < ba_a_free)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
     # E_ab of (98)
@@ -501,7 +502,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_ba_omega = _x10*_x13**2*_x9
         i_ba_omega0_hat = math.sqrt(_x12)/math.sqrt(m)
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
-        # with k_d the bottom lies below the centre of (90): the leg extends
+        # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
             return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
         # E_ab of (98)
@@ -636,7 +637,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     ba_omega = _x50*_x51*_x54**2
     ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
     ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre of (90): the leg extends
+    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((rho_b < ba_a_free)):
         return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
     # E_ab of (98)

@@ -86,8 +86,8 @@ def test_eq97_energy_jump_moves_the_next_apex_the_right_way():
 
 
 def test_soft_decompression_is_recompression_not_nan():  # also the iterative map
-    """k_d so soft that the bottom lies below the centre of the second half's oscillation: the leg
-    would compress further, RECOMPRESSION (the status the exact simulator gives the same case)."""
+    """k_d so soft that the bottom lies above the centre a_ba of the second half's oscillation: the
+    k_d spring cannot start extending the leg, RECOMPRESSION (the exact simulator's status there)."""
     params, td = _params(0.2), (1.0, -0.8, 0.05, -0.5)  # a slow, nearly vertical stance
     res = slipmaps.stance(MAP, params, td)
     assert res.status == Status.RECOMPRESSION and np.all(np.isnan(res.liftoff))

@@ -21,8 +21,10 @@ What E_ab is decides whether q_r is continuous at the bottom. Option ``continuit
 - ``energy``: E_ab the energy the first half conserves (Geyer's (8) at touchdown, as in
   :func:`.geyer.touchdown_parameters`). Then (98) makes the bottom leg length a root of the second
   half's quadratic (:func:`consistent_bottom_is_a_root`): (103)-(104) are continuous with no
-  constraint, (110) holds by itself. When the bottom is the upper root (a soft k_d: the leg keeps
-  compressing after the switch), the second half starts at the phase pi/2 instead of 3 pi/2.
+  constraint, (110) holds by itself. (With a gravity correction, (8) is taken at the bottom with
+  the second half's omega_ba.) When the bottom is the upper root (a soft k_d: the k_d spring cannot
+  start extending the leg), the map returns RECOMPRESSION, as the exact simulator does; a leg that
+  extends but cannot reach q_r_lo is NO_LIFTOFF here, RECOMPRESSION there (it turns back).
 
 The bottom leg length estimates of section 5.2 are here too: the quartic (153) of a symmetric
 (vertical) bottom, whose first printed line (152) lacks the square of p_th (:func:`bottom_quartic`),
@@ -127,7 +129,8 @@ def continuity_constraint() -> sp.Basic:
 def consistent_bottom_is_a_root() -> sp.Basic:
     """With epsilon_ba = epsilon_ab + (k_d - k_c)/m rho_b^2 ((98) in the units of (82)), the bottom
     rho_b = a_ab - b_ab of the first half's quadratic (9) is a root of the second half's: returns
-    the second quadratic's value there (zero when (9) is the first half's)."""
+    the second quadratic at rho_b minus the first one there, identically zero (so the second is zero
+    where the first is)."""
     lam_, mu_, nu_ = geyer.radial_quadratic()
     rho_b, eps_ab = sp.symbols("rho_b epsilon_ab", real=True)
     first = (lam_ * rho_b**2 + mu_ * rho_b + nu_).subs({omega0: sp.sqrt(k_c / m), epsilon: eps_ab})
@@ -164,9 +167,10 @@ def quartic_kernel() -> Kernel:
     minimum of V: the Newton step turns back) is a status."""
     p, energy = sym("p"), sym("E_ab")
     stiffness = k_c
-    rest = stiffness * (l0 - _Q) ** 2 / 2 + m * g_s * _Q
-    potential = p**2 / (2 * m * _Q**2) + rest
-    slope = sp.diff(potential, _Q)
+    # V - E from the quartic (153) (the registry checks it): q^2 (V - E) / q^2
+    gap = sp.expand(bottom_quartic() / q_r**2).subs({q_r: _Q, p_th: p, E: energy})
+    rest = (gap + energy).subs(p, 0)  # the spring-and-gravity part of V
+    slope = sp.diff(gap, _Q)
     q_min = l0 - m * g_s / stiffness  # minimum of the spring-and-gravity part
     rest_min = rest.subs(_Q, q_min)
     q1 = q_min - sp.sqrt(2 * (energy - rest_min) / stiffness)
@@ -194,13 +198,13 @@ def quartic_kernel() -> Kernel:
                 state=((_Q, sym("q_start")),),
                 body=(
                     Stage(
-                        ((sym("slope"), slope.subs(_Q, _Q)),),
+                        ((sym("slope"), slope),),
                         (Guard(sym("slope") < 0, "NO_REAL_SOLUTION", "V decreasing left of the root"),),
                     ),
                 ),
-                update=(_Q - (potential - energy) / sym("slope"),),
+                update=(_Q - gap / sym("slope"),),
                 max_iter=sp.Integer(QUARTIC_PASSES),
-                tol=sp.Float(1e-15),
+                tol=sp.Float(1e-12),  # 1e-15 l0: not reached near a tangent root (round-off)
                 scales=(l0,),
                 count=sym("passes"),
                 fail_status="NOT_CONVERGED",
@@ -317,7 +321,7 @@ def _second_half(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Step, ...]:
                 Guard(
                     n("rho_b") < n.ba("a_free"),
                     "RECOMPRESSION",
-                    "with k_d the bottom lies below the centre of (90): the leg extends",
+                    "with k_d the bottom lies below the centre a_ba of (90): the leg extends",
                 ),
             ),
             comment="eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m",
