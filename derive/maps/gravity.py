@@ -76,6 +76,14 @@ def impulse(duration, samples) -> sp.Basic:
     return duration * sum(tau.subs({q_r: r, q_th: th}) for r, th in samples) / len(samples)
 
 
+def half_impulses(t_b, t_s, angles, lengths) -> tuple[sp.Basic, sp.Basic]:
+    """(65) / (76) on [t_td, t_b] and [t_b, t_lo]: each half's impulse by (48) from the torque at its
+    two ends, the angles (q_th_td, q_th_b, q_th_lo) with the leg lengths ``lengths``: the true ones
+    (q_r_td, q_r_b, q_r_lo) for (65), or each half's average (L1, L1, L2, L2) for (76)."""
+    (th_td, th_b, th_lo), (r_td, r_b1, r_b2, r_lo) = angles, lengths
+    return impulse(t_b, [(r_td, th_td), (r_b1, th_b)]), impulse(t_s - t_b, [(r_b2, th_b), (r_lo, th_lo)])
+
+
 @cache
 def stance_radius(source: str) -> sp.Basic:
     """q_r(t) of the stance from which an average leg length is taken.
@@ -103,12 +111,13 @@ def average_leg_length(source: str) -> sp.Basic:
 
 
 @cache
-def liftoff_radial_speed() -> sp.Basic:
-    """q_rd >= 0 at (q_r, q_th) with angular momentum p on the energy level E of (27).
+def liftoff_radial_speed(stiffness: sp.Symbol = k) -> sp.Basic:
+    """q_rd >= 0 at (q_r, q_th) with angular momentum p on the energy level E of (27) (leg stiffness
+    ``stiffness``: k_d after a stiffness switch).
 
     Returns q_rd^2 from H(q_r, q_th, m q_rd, p) = E; the extending root is its positive square root.
     """
-    energy = mechanics.stance_energy().subs(q_thd, P_SYM / (m * q_r**2))
+    energy = mechanics.stance_energy(stiffness).subs(q_thd, P_SYM / (m * q_r**2))
     # (27) is m q_rd^2 / 2 plus a q_rd-free rest, so H = E has the roots +-sqrt(2 (E - rest) / m).
     rest = energy.subs(q_rd, 0)
     if sp.simplify(energy - rest - m * q_rd**2 / 2) != 0:
@@ -261,8 +270,7 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
     halves = inp.options["interval"].code("halves")
     whole = inp.options["interval"].code("stance")
     if kind == 3:  # (65) on [t_td, t_lo] or on [t_td, t_b] + [t_b, t_lo]
-        first = impulse(t_b, [(q_r_td, th_td), (q_r_b, th_b)])
-        second = impulse(t_s - t_b, [(q_r_b, th_b), (q_r_lo, th_lo)])
+        first, second = half_impulses(t_b, t_s, (th_td, th_b, th_lo), (q_r_td, q_r_b, q_r_b, q_r_lo))
         return (
             Switch(
                 inp.opt("interval"),
@@ -295,8 +303,7 @@ def _impulse_steps(kind: int, inp: MapInputs, prefix: str) -> tuple[Step, ...]:
                             (
                                 (
                                     P_new,
-                                    impulse(t_b, [(L1, th_td), (L1, th_b)])
-                                    + impulse(t_s - t_b, [(L2, th_b), (L2, th_lo)]),
+                                    sum(half_impulses(t_b, t_s, (th_td, th_b, th_lo), (L1, L1, L2, L2))),
                                 ),
                             )
                         ),

@@ -47,7 +47,6 @@ from ..symbols import (
     b,
     epsilon,
     g_s,
-    k,
     k_c,
     k_d,
     l0,
@@ -74,7 +73,7 @@ from .gravity import (
     T_F,
     T_I,
     average_leg_length,
-    impulse,
+    half_impulses,
     iterations_option,
     liftoff_radial_speed,
     tol_option,
@@ -393,10 +392,8 @@ def _liftoff(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Stage, ...]:
     no_gravity = inp.options["gravity"].is_("none")
     p_lo = n("p_b") + P2
     energy = sym("E_td") + energy_jump().subs(q_r, n("bottom_q_r"))
-    square = (
-        liftoff_radial_speed()
-        .subs(k, k_d)
-        .subs({q_r: q_r_lo, q_th: n("liftoff_q_th"), P_SYM: p_lo, E_SYM: energy})
+    square = liftoff_radial_speed(k_d).subs(
+        {q_r: q_r_lo, q_th: n("liftoff_q_th"), P_SYM: p_lo, E_SYM: energy}
     )
     return (
         Stage(
@@ -428,8 +425,9 @@ def _liftoff(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Stage, ...]:
 def _impulses(inp: MapInputs, n: _Names) -> Switch:
     """``<prefix>P_new1``, ``<prefix>P_new2``: each half's stance impulse (type 3 or 4 of section 4
     on [t_td, t_b] and [t_b, t_lo]) along the pass named by ``n``."""
-    th_td, th_b, th_lo = q_th_td, n("bottom_q_th"), n("liftoff_q_th")
-    q_r_b, t_b, t_s = n("bottom_q_r"), n("t_bottom"), n("t_stance")
+    angles = (q_th_td, n("bottom_q_th"), n("liftoff_q_th"))
+    t_b, t_s = n("t_bottom"), n("t_stance")
+    true_lengths = (q_r_td, n("bottom_q_r"), n("bottom_q_r"), q_r_lo)
     P1, P2 = n("P_new1"), n("P_new2")
     average = average_leg_length("eq11")  # (11) on its own time axis
 
@@ -449,8 +447,11 @@ def _impulses(inp: MapInputs, n: _Names) -> Switch:
                 (
                     Stage(
                         (
-                            (P1, impulse(t_b, [(q_r_td, th_td), (q_r_b, th_b)])),
-                            (P2, impulse(t_s - t_b, [(q_r_b, th_b), (q_r_lo, th_lo)])),
+                            *zip(
+                                (P1, P2),
+                                half_impulses(t_b, t_s, angles, true_lengths),
+                                strict=True,
+                            ),
                         ),
                         comment="eq (65) on each half",
                     ),
@@ -463,8 +464,7 @@ def _impulses(inp: MapInputs, n: _Names) -> Switch:
                         (
                             (L1, over(n.ab, n.ab("phase_td"), BOTTOM_PHASE)),
                             (L2, over(n.ba, BOTTOM_PHASE, n.ba("phase_lo"))),
-                            (P1, impulse(t_b, [(L1, th_td), (L1, th_b)])),
-                            (P2, impulse(t_s - t_b, [(L2, th_b), (L2, th_lo)])),
+                            *zip((P1, P2), half_impulses(t_b, t_s, angles, (L1, L1, L2, L2)), strict=True),
                         ),
                         comment="eq (76) on each half, the average leg length of (11) on it",
                     ),
