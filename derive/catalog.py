@@ -103,15 +103,29 @@ TRAJECTORY = Group("", POLAR)
 #: choices that assume it, ``Option.at_rest_length``).
 REST_LENGTH_TOLERANCE = 1e-9
 
-#: The index row of ``"exact"``, the numerical ground truth (runtime/simulate.py; no kernels).
+#: The index row of ``"exact"``, the numerical ground truth (runtime/exact_compiled.py, with
+#: runtime/simulate.py as the solve_ivp reference; no generated kernels).
 EXACT = {
     "name": "exact",
-    "title": "Exact stance by numerical integration (solve_ivp DOP853)",
+    "title": "Exact stance by numerical integration (DOP853)",
     "section": "2.2",
     "equations": ["1", "2", "3", "27"],
     "requires": [],
     "params": ["m", "l0", "k_c", "k_d", "g_s"],
     "options": [
+        {
+            "name": "method",
+            "kind": "choice",
+            "default": "compiled",
+            "doc": "which DOP853 implementation integrates the stance (same algorithm, events and statuses)",
+            "choices": [
+                {"value": "compiled", "doc": "numba-compiled, batches in parallel"},
+                {"value": "scipy", "doc": "scipy's solve_ivp, the reference"},
+            ],
+            "low": None,
+            "high": None,
+            "at_rest_length": [],
+        },
         {
             "name": "rtol",
             "kind": "float",

@@ -1,8 +1,14 @@
-"""The ``"exact"`` map: the numerical simulator (:mod:`.simulate`) in the result family of the maps.
+"""The ``"exact"`` map: the numerical simulator in the result family of the maps.
+
+Option ``method``: ``"compiled"`` (default) integrates with the numba-compiled DOP853 of
+:mod:`.exact_compiled` (batches in parallel over rows, microseconds per stance); ``"scipy"`` with
+the ``solve_ivp`` reference :mod:`.simulate` (batches loop over rows in Python, 1-2 ms per stance;
+its messages name the failing stage and event). Both give the same statuses and agree to round-off
+(tests/test_exact_compiled.py). :func:`trajectory` always samples the ``solve_ivp`` dense output.
 
 Stance and apex-return results carry the same names as every generated map's (from the index),
-so any two maps compare the same way. Batches loop over rows in Python (1-2 ms per stance),
-each row with its own status; an invalid row is ``INVALID_INPUT``, never an exception.
+so any two maps compare the same way; each batch row has its own status, and an invalid row is
+``INVALID_INPUT``, never an exception.
 """
 
 from __future__ import annotations
@@ -10,12 +16,17 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from slipmaps.generated.status import Status
+from slipmaps.generated.status import MESSAGES, Status
 
+from . import exact_compiled
+from .exact_compiled import STEP_NAMES
 from .params import SlipParams
 from .progress import progress as _progress
 from .results import GROUPS, Result, columns
 from .simulate import StanceResult, StepResult, simulate_stance, simulate_step
+
+#: The ``method`` option's reference choice; the other one (the default) is ``"compiled"``.
+SCIPY = "scipy"
 
 _NAN4 = (math.nan,) * 4
 
@@ -30,10 +41,6 @@ def _stance_values(r: StanceResult | StepResult) -> dict[str, float]:
 def _stance_row(r: StanceResult) -> list[float]:
     values = _stance_values(r)
     return [float(values[n]) for n in columns("stance")]
-
-
-#: The names of :func:`step_row`: every stance output, then the apex-return outputs not in it.
-STEP_NAMES = (*columns("stance"), *(n for n in columns("apex_return") if n not in columns("stance")))
 
 
 def _step_values(r: StepResult) -> dict[str, float]:
@@ -64,7 +71,10 @@ def _masked(row: list[float], status: Status) -> list[float]:
     return row if status == Status.OK else [math.nan] * len(row)
 
 
-def stance(params: SlipParams, td, inputs: dict, rtol: float, atol: float) -> Result:
+def stance(params: SlipParams, td, inputs: dict, method: str, rtol: float, atol: float) -> Result:
+    if method != SCIPY:
+        status, values = exact_compiled.stance_values(params, td, rtol, atol)
+        return Result("exact", "stance", status, MESSAGES[int(status)], values, inputs)
     r = simulate_stance(params, td, rtol=rtol, atol=atol)
     row = _masked(_stance_row(r), r.status)
     return Result(
@@ -73,8 +83,12 @@ def stance(params: SlipParams, td, inputs: dict, rtol: float, atol: float) -> Re
 
 
 def apex_return(
-    params: SlipParams, h: float, v: float, th: float, inputs: dict, rtol: float, atol: float
+    params: SlipParams, h: float, v: float, th: float, inputs: dict, method: str, rtol: float, atol: float
 ) -> Result:
+    if method != SCIPY:
+        status, values = exact_compiled.step_values(params, h, v, th, rtol, atol)
+        apex = {n: values[n] for n in columns("apex_return")}
+        return Result("exact", "apex_return", status, MESSAGES[int(status)], apex, inputs)
     r = simulate_step(params, h, v, th, rtol=rtol, atol=atol)
     row = _masked(_apex_row(r), r.status)
     return Result(
@@ -85,6 +99,14 @@ def apex_return(
         dict(zip(columns("apex_return"), row, strict=True)),
         inputs,
     )
+
+
+def _select(data: np.ndarray, have: tuple[str, ...], names) -> np.ndarray:
+    """The columns ``names`` of ``data`` whose columns are ``have`` (no copy when they coincide)."""
+    names = tuple(names)
+    if names == have:
+        return data
+    return data[:, [have.index(n) for n in names]]
 
 
 def _rows(n: int, names, label: str, show, one) -> tuple[np.ndarray, np.ndarray]:
@@ -101,7 +123,11 @@ def _rows(n: int, names, label: str, show, one) -> tuple[np.ndarray, np.ndarray]
     return data, status
 
 
-def stance_rows(params: SlipParams, arr: np.ndarray, names, show, rtol: float, atol: float):
+def stance_rows(params: SlipParams, arr: np.ndarray, names, show, method: str, rtol: float, atol: float):
+    if method != SCIPY:
+        data, status = exact_compiled.stance_rows(params, arr, rtol, atol)
+        return _select(data, exact_compiled.STANCE_NAMES, names), status
+
     def one(i):
         r = simulate_stance(params, arr[i], rtol=rtol, atol=atol)
         return r.status, _stance_row(r)
@@ -109,8 +135,11 @@ def stance_rows(params: SlipParams, arr: np.ndarray, names, show, rtol: float, a
     return _rows(arr.shape[0], names, "exact stance", show, one)
 
 
-def apex_rows(params: SlipParams, cols, names, show, rtol: float, atol: float):
+def apex_rows(params: SlipParams, cols, names, show, method: str, rtol: float, atol: float):
     h, v, th = cols
+    if method != SCIPY:
+        data, status = exact_compiled.step_rows(params, h, v, th, rtol, atol)
+        return _select(data, STEP_NAMES, names), status
 
     def one(i):
         r = simulate_step(params, h[i], v[i], th[i], rtol=rtol, atol=atol)
@@ -119,7 +148,8 @@ def apex_rows(params: SlipParams, cols, names, show, rtol: float, atol: float):
     return _rows(h.shape[0], names, "exact apex return", show, one)
 
 
-def trajectory(params: SlipParams, td, rtol: float, atol: float):
+def trajectory(params: SlipParams, td, method: str, rtol: float, atol: float):
+    """The solve_ivp dense output for either ``method`` (the compiled simulator keeps no samples)."""
     r = simulate_stance(params, td, dense=True, rtol=rtol, atol=atol)
     states = r.states.T if r.states is not None else np.empty((0, 4))
     return (r.t if r.t is not None else np.empty(0)), states, r.status

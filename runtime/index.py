@@ -2,7 +2,8 @@
 
 Everything here is read from ``slipmaps.generated.maps_index`` (written by ``slipmaps generate``
 from the declarations in ``derive/maps/``); nothing restates a map, a parameter list or an output
-layout. ``"exact"`` is the numerical ground truth (``solve_ivp``), a map like the others.
+layout. ``"exact"`` is the numerical ground truth (DOP853: compiled by default, ``solve_ivp`` with
+``method="scipy"``), a map like the others.
 """
 
 from __future__ import annotations

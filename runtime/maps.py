@@ -6,8 +6,9 @@
   apex (``apex_height``, ``apex_speed``), flight and stance times, liftoff state; the flights are
   exact (ballistic, ``g_f``), only the stance differs between maps.
 - :func:`stance_batch`, :func:`apex_return_batch`: the same over arrays, in parallel for the
-  generated maps; every row gets its own status, and a bad row (NaN, out of domain) gets
-  ``INVALID_INPUT`` without failing the others. Apex-return inputs broadcast against each other.
+  generated maps and for ``"exact"`` (unless ``method="scipy"``); every row gets its own status,
+  and a bad row (NaN, out of domain) gets ``INVALID_INPUT`` without failing the others.
+  Apex-return inputs broadcast against each other.
 - :func:`trajectory`: the polar state along the stance.
 - :func:`half_stance`, :func:`half_stance_batch`: a half-stance map (``slipmaps maps`` lists them):
   the touchdown state -> ``t_half`` and the bottom state (compression, k_c), or a bottom state
@@ -205,7 +206,7 @@ def trajectory(
 
     ``states`` has shape (len(t), 4): q_r, q_rd, q_th, q_thd at the times ``t`` after touchdown.
     For the approximate maps ``t`` defaults to 200 points from touchdown to the map's liftoff; for
-    ``"exact"`` the times are the integrator's (``t`` must be None).
+    ``"exact"`` the times are solve_ivp's steps and dense samples (``t`` must be None).
     """
     call = _Call.of(name, params, options)
     td = polar_state(params, touchdown)

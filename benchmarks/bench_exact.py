@@ -1,0 +1,198 @@
+"""Benchmark: the compiled exact simulator against the solve_ivp reference, in one run.
+
+Both integrate the same stances with DOP853 at equal tolerances (rtol 1e-11, atol 1e-12, the
+``"exact"`` map's defaults), human runner (``slipmaps.HUMAN_RUNNER``), touchdowns reached from apex
+heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps.py's states):
+
+(a) per stance: ``runtime.simulate.simulate_stance`` (solve_ivp) per call over 50 states, against the
+    compiled batch kernel on one numba thread (per state) and the public scalar call
+    ``slipmaps.stance("exact", ...)`` (Python validation included); the speed-up (target >= 100x)
+    and the agreement on the 50 states (same statuses, max relative difference);
+(b) batch throughput of ``slipmaps.stance_batch("exact", ...)`` and ``apex_return_batch`` on all
+    of numba's threads, and its speed-up over one thread;
+(c) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
+    (a function pointer, no inlining) instead of an njit dispatcher (the shipped form), compression
+    phases per microsecond of each (compiles two extra specialisations: ~15 s).
+
+Best of ``--repeat`` after a warm-up call (compilation excluded); ratios are measured in one run,
+absolute times move with the machine and its load (printed). Usage::
+
+    python benchmarks/bench_exact.py [--n N] [--repeat R] [--first-class] [--json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+import numba
+import numpy as np
+import slipmaps
+from slipmaps.runtime import dop853
+from slipmaps.runtime import exact_compiled as ec
+from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_maps import best_of, machine, states  # noqa: E402
+
+P = slipmaps.HUMAN_RUNNER
+TARGET_SPEEDUP = 100.0
+N_SCIPY = 50
+
+
+def _with_threads(n: int, fn):
+    before = numba.get_num_threads()
+    numba.set_num_threads(n)
+    try:
+        return fn()
+    finally:
+        numba.set_num_threads(before)
+
+
+def per_stance(td: np.ndarray, repeat: int) -> dict:
+    few = td[:N_SCIPY]
+    t_scipy = best_of(lambda: [simulate_stance(P, row) for row in few], 3) / len(few)
+    ec.stance_rows(P, td[:10], DEFAULT_RTOL, DEFAULT_ATOL)  # warm-up (cache load or compilation)
+    t_one = _with_threads(
+        1, lambda: best_of(lambda: ec.stance_rows(P, td, DEFAULT_RTOL, DEFAULT_ATOL), repeat)
+    ) / len(td)
+    slipmaps.stance("exact", P, few[0])
+    t_api = best_of(lambda: [slipmaps.stance("exact", P, row) for row in few], repeat) / len(few)
+    ref = [simulate_stance(P, row) for row in few]
+    got, status = ec.stance_rows(P, few, DEFAULT_RTOL, DEFAULT_ATOL)
+    same = all(int(r.status) == int(s) for r, s in zip(ref, status, strict=True))
+    diff = 0.0
+    for r, row in zip(ref, got, strict=True):
+        if r.ok:
+            want = np.array([r.t_bottom, r.t_stance, *r.bottom, *r.liftoff])
+            diff = max(diff, float(np.max(np.abs(row - want) / np.maximum(1.0, np.abs(want)))))
+    return {
+        "scipy_us": 1e6 * t_scipy,
+        "compiled_us": 1e6 * t_one,
+        "api_scalar_us": 1e6 * t_api,
+        "speedup": t_scipy / t_one,
+        "speedup_api_scalar": t_scipy / t_api,
+        "target": TARGET_SPEEDUP,
+        "same_status": same,
+        "max_rel_diff": diff,
+    }
+
+
+def throughput(h, v, th, td, repeat: int) -> dict:
+    threads = numba.get_num_threads()
+    slipmaps.stance_batch("exact", P, td[:10])
+    slipmaps.apex_return_batch("exact", P, h[:10], v[:10], th[:10])
+    t_st = best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat)
+    t_ap = best_of(lambda: slipmaps.apex_return_batch("exact", P, h, v, th), repeat)
+    t_st1 = _with_threads(1, lambda: best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat))
+    return {
+        "threads": threads,
+        "stance_per_s": len(td) / t_st,
+        "apex_return_per_s": len(h) / t_ap,
+        "parallel_speedup": t_st1 / t_st,
+    }
+
+
+def first_class(td: np.ndarray, repeat: int) -> dict:
+    """Compression phases with the right-hand side and events as first-class functions vs dispatchers."""
+    from numba import njit, types
+
+    f8, arr = types.float64, types.float64[::1]
+    p4, p2 = types.UniTuple(f8, 4), types.UniTuple(f8, 2)
+    rhs_sig, ev_sig = types.void(f8, arr, p4, arr), types.void(f8, arr, p2, arr)
+    rhs, ev = njit(rhs_sig)(ec.polar_field.py_func), njit(ev_sig)(ec.stance_events.py_func)
+    out_ty = types.Tuple((types.int64, f8, types.int64, types.int64))
+    solve_fc = njit(
+        out_ty(
+            types.FunctionType(rhs_sig), p4, types.FunctionType(ev_sig), p2, arr, f8, arr, f8, f8, f8, f8, arr
+        )
+    )(dop853.solve.py_func)
+
+    rtol, atol = DEFAULT_RTOL, DEFAULT_ATOL
+
+    @njit
+    def run_fc(rows, rhs, ev, p, pe, direction, cap, y_end):
+        acc = 0.0
+        for i in range(rows.shape[0]):
+            acc += solve_fc(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, y_end)[1]
+        return acc
+
+    @njit
+    def run_disp(rows, rhs, ev, p, pe, direction, cap, y_end):
+        acc = 0.0
+        for i in range(rows.shape[0]):
+            acc += dop853.solve(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, y_end)[1]
+        return acc
+
+    rows = np.ascontiguousarray(td[:2000])
+    p, pe = (P.m, P.l0, P.k_c, P.g_s), (P.q_r_lo, 1e-3 * P.l0)
+    direction = np.array(ec.COMPRESSION_DIRECTIONS)
+    cap, y_end = max_step(P.m, P.l0, P.k_c, P.g_s), np.empty(4)
+    fc = (rows, rhs, ev, p, pe, direction, cap, y_end)
+    disp = (rows, ec.polar_field, ec.stance_events, p, pe, direction, cap, y_end)
+    same = run_fc(*fc) == run_disp(*disp)
+    t_fc = best_of(lambda: run_fc(*fc), repeat) / len(rows)
+    t_disp = best_of(lambda: run_disp(*disp), repeat) / len(rows)
+    return {"first_class_us": 1e6 * t_fc, "dispatcher_us": 1e6 * t_disp, "ratio": t_fc / t_disp, "same": same}
+
+
+def run(n: int, repeat: int, with_first_class: bool) -> dict:
+    h, v, th, td = states(n)
+    out = {"machine": machine(), "n": n, "repeat": repeat, "rtol": DEFAULT_RTOL, "atol": DEFAULT_ATOL}
+    out["per_stance"] = per_stance(td, repeat)
+    out["throughput"] = throughput(h, v, th, td, repeat)
+    if with_first_class:
+        out["first_class"] = first_class(td, repeat)
+    return out
+
+
+def report(r: dict) -> str:
+    m, s, b = r["machine"], r["per_stance"], r["throughput"]
+    met = "met" if s["speedup"] >= s["target"] else "NOT met"
+    lines = [
+        f"machine: {m['cpu']}, {m['cpus']} CPUs, numba {m['numba']} ({m['numba_threads']} threads), "
+        f"scipy {m['scipy']}, Python {m['python']}, 1-min load {m['load_1min']}",
+        f"N = {r['n']} touchdowns (human runner), best of {r['repeat']}, "
+        f"rtol {r['rtol']:g}, atol {r['atol']:g}",
+        "",
+        "(a) exact stance, per state:",
+        f"    solve_ivp (runtime/simulate.py)        {s['scipy_us']:9.1f} us",
+        f"    compiled, batch kernel on 1 thread      {s['compiled_us']:9.2f} us: {s['speedup']:.0f}x "
+        f"(target >= {s['target']:g}x: {met})",
+        f"    compiled, slipmaps.stance scalar call   {s['api_scalar_us']:9.2f} us: "
+        f"{s['speedup_api_scalar']:.0f}x",
+        f"    agreement on {N_SCIPY} states: same statuses {s['same_status']}, "
+        f"max relative difference {s['max_rel_diff']:.1e}",
+        "",
+        f"(b) batch throughput on {b['threads']} numba threads: "
+        f"stance_batch {b['stance_per_s']:.3g} stances/s ({b['parallel_speedup']:.2f}x one thread), "
+        f"apex_return_batch {b['apex_return_per_s']:.3g} steps/s",
+    ]
+    if "first_class" in r:
+        f = r["first_class"]
+        lines += [
+            "",
+            "(c) compression phase, right-hand side as a first-class function "
+            f"{f['first_class_us']:.2f} us, as an njit dispatcher {f['dispatcher_us']:.2f} us: "
+            f"ratio {f['ratio']:.2f} (same results {f['same']})",
+        ]
+    return "\n".join(lines)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--n", type=int, default=100_000, help="states per batch (default %(default)s)")
+    parser.add_argument("--repeat", type=int, default=5, help="timed runs, best kept (default %(default)s)")
+    parser.add_argument("--first-class", action="store_true", help="also time a first-class right-hand side")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
+    args = parser.parse_args()
+    r = run(args.n, args.repeat, args.first_class)
+    print(json.dumps(r, indent=2) if args.json else report(r))
+    return 0 if math.isfinite(r["per_stance"]["speedup"]) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

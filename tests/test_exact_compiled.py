@@ -1,0 +1,236 @@
+"""The compiled exact simulator (runtime/exact_compiled.py, runtime/dop853.py) against the solve_ivp
+reference (runtime/simulate.py), and the ``"exact"`` map's ``method`` option.
+
+Both integrate the polar stance equations (2)-(3) of the report with the same DOP853 algorithm,
+tolerances, step cap, events and statuses, so they agree to round-off: each bound below is set
+about 30x above the discrepancy measured over its cases (the comment gives the measurement).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import slipmaps
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from slipmaps.generated import slip_model as gen
+from slipmaps.generated.status import Status
+from slipmaps.runtime import exact_compiled as ec
+from slipmaps.runtime import simulate as sim
+from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.results import GROUPS
+
+RTOL, ATOL = sim.DEFAULT_RTOL, sim.DEFAULT_ATOL
+
+#: (params, apex height, apex speed, touchdown angle): symmetric (the human runner's fixed point at
+#: 5 m/s, 0.41116 rad) and nonsymmetric steps, k_c == k_d and k_c != k_d, both parameter sets.
+STEPS = [
+    pytest.param(HUMAN_RUNNER, 1.0, 5.0, 0.41116492751713, id="human-symmetric"),
+    pytest.param(HUMAN_RUNNER, 1.0, 5.0, 0.30, id="human-5mps-0.30"),
+    pytest.param(HUMAN_RUNNER, 1.1, 3.0, 0.30, id="human-3mps-0.30"),
+    pytest.param(ROBOT_HOPPER, 0.26, 1.5, 0.30, id="robot-1.5mps-0.30"),
+    pytest.param(ROBOT_HOPPER, 0.26, 1.2, 0.30, id="robot-1.2mps-0.30"),
+    pytest.param(HUMAN_RUNNER.with_(k_d=25_000.0), 1.0, 5.0, 0.30, id="human-kd25k"),
+    pytest.param(HUMAN_RUNNER.with_(k_d=17_000.0), 1.0, 5.0, 0.35, id="human-kd17k"),
+    pytest.param(ROBOT_HOPPER.with_(k_d=1_800.0, g_s=9.0), 0.26, 1.5, 0.30, id="robot-kd1.8k-gs9"),
+    pytest.param(
+        ROBOT_HOPPER.with_(k_c=1_200.0, q_r_td=0.24, q_r_lo=0.23), 0.26, 1.2, 0.35, id="robot-kc1.2k-short"
+    ),
+]
+
+
+def _stance_row(r: sim.StanceResult | sim.StepResult) -> dict[str, float]:
+    ref = {"t_bottom": r.t_bottom, "t_stance": r.t_stance}
+    for group, state in (("bottom", r.bottom), ("liftoff", r.liftoff)):
+        ref.update(zip(GROUPS[group], state, strict=True))
+    return ref
+
+
+def _rel(a: float, b: float) -> float:
+    return abs(a - b) / max(1.0, abs(b))
+
+
+def _energy(p: SlipParams, state, k: float) -> float:
+    return float(gen.stance_energy(*state, p.m, p.l0, k, p.g_s))
+
+
+def _compiled_stance(p: SlipParams, td, t_max: float | None = None) -> tuple[Status, np.ndarray]:
+    out = np.empty(ec.N_STANCE)
+    t_end = sim.default_t_max(p) if t_max is None else t_max
+    code = ec.stance_into(*td, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL, t_end, out)
+    return Status(int(code)), out
+
+
+# ----------------------------------------------------------------------------------------------
+# 1. Agreement with solve_ivp on complete steps, and energy conservation per subphase
+# ----------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(("params", "height", "speed", "angle"), STEPS)
+def test_compiled_step_matches_solve_ivp(params, height, speed, angle):
+    ref = sim.simulate_step(params, height, speed, angle)
+    status, got = ec.step_values(params, height, speed, angle, RTOL, ATOL)
+    assert ref.status == status == Status.OK, ref.message
+    expected = {
+        **_stance_row(ref),
+        "apex_height": ref.next_apex[0],
+        "apex_speed": ref.next_apex[1],
+        "t_descent": ref.t_descent,
+        "t_ascent": ref.t_ascent,
+    }
+    assert set(expected) == set(ec.STEP_NAMES)
+    # Measured over STEPS: bottom states 1.6e-15, liftoff states 3.8e-15 (relative to max(1, |x|)),
+    # t_bottom and t_stance 4.4e-16 s, next apex 3.6e-15.
+    for name, value in expected.items():
+        assert _rel(got[name], value) < 1e-13, (name, got[name], value)
+    for name in ("t_bottom", "t_stance"):
+        assert abs(got[name] - expected[name]) < 1e-14, name
+
+
+@pytest.mark.parametrize(("params", "height", "speed", "angle"), STEPS)
+def test_energy_is_conserved_within_each_subphase(params, height, speed, angle):
+    """Eq (27) with k_c from touchdown to the bottom and with k_d from the bottom to liftoff."""
+    status, got = ec.step_values(params, height, speed, angle, RTOL, ATOL)
+    assert status == Status.OK
+    td = sim.simulate_step(params, height, speed, angle).touchdown  # closed-form flight, no stance
+    bottom = [got[n] for n in GROUPS["bottom"]]
+    liftoff = [got[n] for n in GROUPS["liftoff"]]
+    e_td = _energy(params, td, params.k_c)
+    drift_c = abs(_energy(params, bottom, params.k_c) - e_td) / abs(e_td)
+    e_b = _energy(params, bottom, params.k_d)
+    drift_d = abs(_energy(params, liftoff, params.k_d) - e_b) / abs(e_b)
+    # Measured over STEPS: 3.5e-12 (compression), 7.7e-12 (decompression), as solve_ivp's.
+    assert drift_c < 2e-10, drift_c
+    assert drift_d < 2e-10, drift_d
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    robot=st.booleans(),
+    kd_ratio=st.one_of(st.just(1.0), st.floats(0.5, 1.5)),
+    q_r=st.floats(0.8, 1.0),
+    q_rd=st.floats(0.05, 1.0),
+    q_th=st.floats(-0.6, 0.6),
+    q_thd=st.floats(-2.0, 0.5),
+)
+def test_random_touchdowns_match_solve_ivp(robot, kd_ratio, q_r, q_rd, q_th, q_thd):
+    """Touchdowns in units of l0 and sqrt(g l0): q_r l0, -q_rd sqrt(g l0), q_th, q_thd sqrt(g/l0)."""
+    base = ROBOT_HOPPER if robot else HUMAN_RUNNER
+    p = base.with_(k_d=base.k_c * kd_ratio)
+    s = math.sqrt(p.g_s * p.l0)
+    td = (q_r * p.l0, -q_rd * s, q_th, q_thd * s / p.l0)
+    ref = sim.simulate_stance(p, td)
+    status, got = ec.stance_values(p, td, RTOL, ATOL)
+    assert status == ref.status, ref.message
+    if status == Status.OK:
+        # Measured over 1463 such stances (1500 drawn): 6.9e-14 relative, times 3.2e-15 s.
+        for name, value in _stance_row(ref).items():
+            assert _rel(got[name], value) < 2e-12, (name, got[name], value)
+    else:
+        assert all(math.isnan(v) for v in got.values())
+
+
+# ----------------------------------------------------------------------------------------------
+# 2. Every failure status of the reference, on the same inputs
+# ----------------------------------------------------------------------------------------------
+FAILING_STEPS = [
+    pytest.param(HUMAN_RUNNER, 0.9, 5.0, 0.4, Status.APEX_TOO_LOW, id="apex-too-low"),
+    pytest.param(HUMAN_RUNNER, 0.9, 5.0, -0.5, Status.TOUCHDOWN_NOT_COMPRESSING, id="extending-leg"),
+    pytest.param(HUMAN_RUNNER, 0.2, 0.3, 1.4, Status.FALL, id="fall-decompression"),
+    pytest.param(HUMAN_RUNNER.with_(k=2_000.0), 0.2, 1.0, 1.4, Status.FALL, id="fall-compression"),
+    pytest.param(HUMAN_RUNNER, 1.0, 0.2, 0.3, Status.LIFTOFF_BACKWARD, id="liftoff-backward"),
+    pytest.param(HUMAN_RUNNER, 1.0, 5.0, 0.2, Status.LIFTOFF_DOWNWARD, id="liftoff-downward"),
+    pytest.param(HUMAN_RUNNER.with_(k_d=1_000.0), 1.1, 0.0, 0.0, Status.RECOMPRESSION, id="kd-cannot-extend"),
+    pytest.param(HUMAN_RUNNER.with_(k_d=9_000.0), 1.1, 0.0, 0.0, Status.RECOMPRESSION, id="recompression"),
+    pytest.param(HUMAN_RUNNER.with_(q_r_lo=0.5), 1.0, 5.0, 0.4, Status.NO_LIFTOFF, id="bottom-above-q_r_lo"),
+]
+
+
+@pytest.mark.parametrize(("params", "height", "speed", "angle", "status"), FAILING_STEPS)
+def test_failures_match_solve_ivp(params, height, speed, angle, status):
+    ref = sim.simulate_step(params, height, speed, angle)
+    got_status, got = ec.step_values(params, height, speed, angle, RTOL, ATOL)
+    assert ref.status == got_status == status, ref.message
+    assert all(math.isnan(v) for v in got.values())
+    api = slipmaps.apex_return("exact", params, height, speed, angle)
+    assert api.status == status and math.isnan(api.apex_height)
+
+
+def test_stance_failures_match_solve_ivp():
+    td = (1.0, -1.0, 0.3, -4.0)
+    for t_max in (0.01, 0.1):  # t_max before the bottom, and between the bottom and liftoff
+        ref = sim.simulate_stance(HUMAN_RUNNER, td, t_max=t_max)
+        assert ref.status == _compiled_stance(HUMAN_RUNNER, td, t_max)[0] == Status.NO_LIFTOFF
+    for q_rd in (0.0, 0.1):
+        td = (1.0, q_rd, 0.3, -4.0)
+        assert sim.simulate_stance(HUMAN_RUNNER, td).status == Status.TOUCHDOWN_NOT_COMPRESSING
+        assert _compiled_stance(HUMAN_RUNNER, td)[0] == Status.TOUCHDOWN_NOT_COMPRESSING
+    collapsed = (0.5 * sim.COLLAPSE_FRACTION * HUMAN_RUNNER.l0, -1.0, 0.3, -4.0)
+    assert sim.simulate_stance(HUMAN_RUNNER, collapsed).status == Status.FALL
+    assert _compiled_stance(HUMAN_RUNNER, collapsed)[0] == Status.FALL
+
+
+# ----------------------------------------------------------------------------------------------
+# 3. Batches: rows equal scalar calls exactly, invalid rows are INVALID_INPUT
+# ----------------------------------------------------------------------------------------------
+def test_stance_batch_rows_equal_scalar_calls_and_invalid_rows_get_invalid_input():
+    p = HUMAN_RUNNER.with_(k_d=22_000.0)
+    rows = np.array(
+        [
+            (1.0, -1.5, 0.35, -4.5),
+            (0.98, -1.0, -0.1, -3.0),
+            (1.0, 0.5, 0.3, -4.0),  # TOUCHDOWN_NOT_COMPRESSING
+            (math.nan, -1.0, 0.3, -4.0),
+            (1.2, -1.0, 0.3, -4.0),  # q_r > l0
+            (0.0, -1.0, 0.3, -4.0),  # q_r = 0
+            (1.0, -1.0, math.pi / 2, -4.0),
+            (1.0, -1.0, 0.3, math.inf),
+        ]
+    )
+    res = slipmaps.stance_batch("exact", p, rows)
+    assert list(res["status"][2:]) == [Status.TOUCHDOWN_NOT_COMPRESSING] + [Status.INVALID_INPUT] * 5
+    for i in range(3):
+        one = slipmaps.stance("exact", p, rows[i])
+        assert res["status"][i] == one.status
+        for name, value in one.values.items():
+            assert res[name][i] == value or (math.isnan(value) and math.isnan(res[name][i])), name
+    assert np.isnan(res["liftoff"][2:]).all()
+
+
+def test_apex_batch_rows_equal_scalar_calls_and_invalid_rows_get_invalid_input():
+    p = ROBOT_HOPPER
+    heights = np.array([0.26, 0.26, 0.20, -0.1, math.nan, 0.26, 0.26])
+    speeds = np.array([1.5, 1.2, 1.5, 1.5, 1.5, -1.0, 1.5])
+    angles = np.array([0.30, 0.35, 0.30, 0.30, 0.30, 0.30, 1.6])
+    res = slipmaps.apex_return_batch("exact", p, heights, speeds, angles)
+    assert list(res["status"][2:]) == [Status.APEX_TOO_LOW] + [Status.INVALID_INPUT] * 4
+    for i in range(3):
+        one = slipmaps.apex_return("exact", p, heights[i], speeds[i], angles[i])
+        assert res["status"][i] == one.status
+        for name, value in one.values.items():
+            assert res[name][i] == value or (math.isnan(value) and math.isnan(res[name][i])), name
+    # Broadcasting keeps the shape, as for the generated maps.
+    grid = slipmaps.apex_return_batch("exact", p, 0.26, np.array([1.2, 1.5]), np.array([[0.28], [0.32]]))
+    assert grid.shape == (2, 2) and grid["liftoff"].shape == (2, 2, 4) and grid.ok.all()
+    assert grid["apex_height"][1, 0] == slipmaps.apex_return("exact", p, 0.26, 1.2, 0.32).apex_height
+
+
+# ----------------------------------------------------------------------------------------------
+# 4. The map's method option
+# ----------------------------------------------------------------------------------------------
+def test_method_option_defaults_to_compiled_and_scipy_is_the_reference():
+    exact = slipmaps.runtime.index.get("exact")
+    assert exact.option("method").default == "compiled"
+    assert exact.option("method").choices == ("compiled", "scipy")
+    p, td = HUMAN_RUNNER.with_(k_d=25_000.0), (1.0, -1.5, 0.35, -4.5)
+    compiled = slipmaps.stance("exact", p, td)
+    scipy = slipmaps.stance("exact", p, td, method="scipy")
+    assert compiled.ok and scipy.ok and compiled.inputs["options"]["method"] == "compiled"
+    # Measured: 4.7e-15 relative.
+    for name, value in scipy.values.items():
+        assert _rel(compiled[name], value) < 1e-13, name
+    batch = slipmaps.stance_batch("exact", p, [td, (1.0, 0.5, 0.3, -4.0)], method="scipy")
+    assert list(batch["status"]) == [Status.OK, Status.TOUCHDOWN_NOT_COMPRESSING]
+    assert batch["t_stance"][0] == scipy.t_stance
+    with pytest.raises(ValueError, match="'compiled', 'scipy'"):
+        slipmaps.stance("exact", p, td, method="numba")
