@@ -10,7 +10,9 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
     and the agreement on the 50 states (same statuses, max relative difference);
 (b) batch throughput of ``slipmaps.stance_batch("exact", ...)`` and ``apex_return_batch`` on all
     of numba's threads, and its speed-up over one thread;
-(c) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
+(c) the stance with its Jacobian (``runtime/exact_jacobian.py``, variational equations), per state
+    on one thread, and its cost relative to the stance alone;
+(d) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
     (a function pointer, no inlining) instead of an njit dispatcher (the shipped form), compression
     phases per microsecond of each (compiles two extra specialisations: ~15 s).
 
@@ -33,6 +35,7 @@ import numpy as np
 import slipmaps
 from slipmaps.runtime import dop853
 from slipmaps.runtime import exact_compiled as ec
+from slipmaps.runtime import exact_jacobian as ej
 from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -81,6 +84,16 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
     }
 
 
+def jacobian(td: np.ndarray, repeat: int) -> dict:
+    """The stance with its Jacobian (variational equations), batch kernel on one thread."""
+    ej.jacobian_rows(P, td[:10])
+    t_jac = _with_threads(1, lambda: best_of(lambda: ej.jacobian_rows(P, td), repeat)) / len(td)
+    t_st = _with_threads(
+        1, lambda: best_of(lambda: ec.stance_rows(P, td, DEFAULT_RTOL, DEFAULT_ATOL), repeat)
+    ) / len(td)
+    return {"jacobian_us": 1e6 * t_jac, "ratio_to_stance": t_jac / t_st}
+
+
 def throughput(h, v, th, td, repeat: int) -> dict:
     threads = numba.get_num_threads()
     slipmaps.stance_batch("exact", P, td[:10])
@@ -107,7 +120,19 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     out_ty = types.Tuple((types.int64, f8, types.int64, types.int64))
     solve_fc = njit(
         out_ty(
-            types.FunctionType(rhs_sig), p4, types.FunctionType(ev_sig), p2, arr, f8, arr, f8, f8, f8, f8, arr
+            types.FunctionType(rhs_sig),
+            p4,
+            types.FunctionType(ev_sig),
+            p2,
+            arr,
+            f8,
+            arr,
+            f8,
+            f8,
+            f8,
+            f8,
+            types.int64,
+            arr,
         )
     )(dop853.solve.py_func)
 
@@ -117,14 +142,14 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     def run_fc(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += solve_fc(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, y_end)[1]
+            acc += solve_fc(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
         return acc
 
     @njit
     def run_disp(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += dop853.solve(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, y_end)[1]
+            acc += dop853.solve(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
         return acc
 
     rows = np.ascontiguousarray(td[:2000])
@@ -144,6 +169,7 @@ def run(n: int, repeat: int, with_first_class: bool) -> dict:
     out = {"machine": machine(), "n": n, "repeat": repeat, "rtol": DEFAULT_RTOL, "atol": DEFAULT_ATOL}
     out["per_stance"] = per_stance(td, repeat)
     out["throughput"] = throughput(h, v, th, td, repeat)
+    out["jacobian"] = jacobian(td, repeat)
     if with_first_class:
         out["first_class"] = first_class(td, repeat)
     return out
@@ -171,11 +197,17 @@ def report(r: dict) -> str:
         f"stance_batch {b['stance_per_s']:.3g} stances/s ({b['parallel_speedup']:.2f}x one thread), "
         f"apex_return_batch {b['apex_return_per_s']:.3g} steps/s",
     ]
+    j = r["jacobian"]
+    lines += [
+        "",
+        f"(c) stance with its 10 x 6 Jacobian (exact_jacobian, 1 thread): {j['jacobian_us']:.1f} us "
+        f"per state, {j['ratio_to_stance']:.1f}x the stance alone",
+    ]
     if "first_class" in r:
         f = r["first_class"]
         lines += [
             "",
-            "(c) compression phase, right-hand side as a first-class function "
+            "(d) compression phase, right-hand side as a first-class function "
             f"{f['first_class_us']:.2f} us, as an njit dispatcher {f['dispatcher_us']:.2f} us: "
             f"ratio {f['ratio']:.2f} (same results {f['same']})",
         ]

@@ -64,6 +64,73 @@ def stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
 
 
 @njit(cache=True, error_model="numpy")
+def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
+    """Jacobian of the polar stance vector field: d/d(q_r, q_rd, q_th, q_thd) row by row, then d/dk.
+
+    Report equations: 2, 3, sec2.2.1-polar.
+
+    Arguments:
+        q_r: leg length q_r [m]
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        m: body mass m [kg]
+        l0: rest leg length l0 [m]
+        k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
+        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+
+    Returns a tuple:
+        d_q_rd_d_q_r: dq_rd/dq_r [(m/s)/(m)]
+        d_q_rd_d_q_rd: dq_rd/dq_rd [(m/s)/(m/s)]
+        d_q_rd_d_q_th: dq_rd/dq_th [(m/s)/(rad)]
+        d_q_rd_d_q_thd: dq_rd/dq_thd [(m/s)/(rad/s)]
+        d_q_rdd_d_q_r: dq_rdd/dq_r [(m/s^2)/(m)]
+        d_q_rdd_d_q_rd: dq_rdd/dq_rd [(m/s^2)/(m/s)]
+        d_q_rdd_d_q_th: dq_rdd/dq_th [(m/s^2)/(rad)]
+        d_q_rdd_d_q_thd: dq_rdd/dq_thd [(m/s^2)/(rad/s)]
+        d_q_thd_d_q_r: dq_thd/dq_r [(rad/s)/(m)]
+        d_q_thd_d_q_rd: dq_thd/dq_rd [(rad/s)/(m/s)]
+        d_q_thd_d_q_th: dq_thd/dq_th [(rad/s)/(rad)]
+        d_q_thd_d_q_thd: dq_thd/dq_thd [(rad/s)/(rad/s)]
+        d_q_thdd_d_q_r: dq_thdd/dq_r [(rad/s^2)/(m)]
+        d_q_thdd_d_q_rd: dq_thdd/dq_rd [(rad/s^2)/(m/s)]
+        d_q_thdd_d_q_th: dq_thdd/dq_th [(rad/s^2)/(rad)]
+        d_q_thdd_d_q_thd: dq_thdd/dq_thd [(rad/s^2)/(rad/s)]
+        d_q_rd_d_k: dq_rd/dk [(m/s)/(N/m)]
+        d_q_rdd_d_k: dq_rdd/dk [(m/s^2)/(N/m)]
+        d_q_thd_d_k: dq_thd/dk [(rad/s)/(N/m)]
+        d_q_thdd_d_k: dq_thdd/dk [(rad/s^2)/(N/m)]
+    """
+    # Total ops: 26
+    _x4 = (1.0/q_r)
+    _x0 = (1.0/m)
+    _x1 = g_s*math.sin(q_th)
+    _x2 = 2.0*q_thd
+    _x3 = _x4**2
+    d_q_rd_d_q_r = 0.0
+    d_q_rd_d_q_rd = 1.0
+    d_q_rd_d_q_th = 0.0
+    d_q_rd_d_q_thd = 0.0
+    d_q_rdd_d_q_r = -_x0*k + q_thd**2
+    d_q_rdd_d_q_rd = 0.0
+    d_q_rdd_d_q_th = _x1
+    d_q_rdd_d_q_thd = _x2*q_r
+    d_q_thd_d_q_r = 0.0
+    d_q_thd_d_q_rd = 0.0
+    d_q_thd_d_q_th = 0.0
+    d_q_thd_d_q_thd = 1.0
+    d_q_thdd_d_q_r = -_x1*_x3 + 2.0*_x3*q_rd*q_thd
+    d_q_thdd_d_q_rd = -_x2*_x4
+    d_q_thdd_d_q_th = _x4*g_s*math.cos(q_th)
+    d_q_thdd_d_q_thd = -2.0*_x4*q_rd
+    d_q_rd_d_k = 0.0
+    d_q_rdd_d_k = _x0*l0 - _x0*q_r
+    d_q_thd_d_k = 0.0
+    d_q_thdd_d_k = 0.0
+    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd, d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd, d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k, d_q_thd_d_k, d_q_thdd_d_k)
+
+
+@njit(cache=True, error_model="numpy")
 def stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s):
     """Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.
 

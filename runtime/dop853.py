@@ -24,7 +24,8 @@ Interfaces (every function ``@njit``; nothing raises):
   of parameters). Passed as an njit function (a dispatcher argument: numba compiles the integrator
   once per right-hand side and inlines the call; benchmarks/bench_exact.py measured it faster than
   a first-class function-pointer call).
-* ``events(t, y, pe, g)``: writes the event function values into ``g`` (length of ``direction``).
+* ``events(t, y, pe, g)``: writes the event function values into ``g`` (length of ``direction``);
+  it may read only the first ``n_control`` components of y (the root finder interpolates those).
   ``direction[e]``: +1 a root where g[e] increases, -1 where it decreases, 0 either, NaN: event ``e``
   is not watched (one events function can serve several phases: one compiled integrator).
 * :func:`solve`: integrates ``y0`` from ``t0`` until ``t_bound`` or the first event; returns
@@ -32,7 +33,11 @@ Interfaces (every function ``@njit``; nothing raises):
   :data:`FINISHED` (``t_bound`` reached), :data:`EVENT` (``event`` is its index) or :data:`FAILED`
   (step size below ``10 ulp(t)``, or a non-finite state), as ``solve_ivp``'s status 0 / 1 / -1.
 
-The state may have any length, so the same integrator carries augmented (variational) systems.
+The state may have any length, so the same integrator carries augmented (variational) systems:
+with ``n_control`` set to the length of the original state, the steps, events and original
+components are exactly those of the plain integration, and the added components are the same
+Runge-Kutta scheme applied to their equations (for variational equations: the derivative of the
+discrete flow at those steps).
 """
 
 from __future__ import annotations
@@ -99,13 +104,13 @@ def static(fn):
 
 
 @njit(**_JIT)
-def _rms(x, scale):
-    """scipy's ``norm(x / scale)``: the RMS norm."""
+def _rms(x, scale, n):
+    """scipy's ``norm(x / scale)`` over the first n components: the RMS norm."""
     s = 0.0
-    for i in range(x.shape[0]):
+    for i in range(n):
         v = x[i] / scale[i]
         s += v * v
-    return math.sqrt(s) / math.sqrt(x.shape[0])
+    return math.sqrt(s) / math.sqrt(n)
 
 
 @njit(**_JIT)
@@ -119,26 +124,27 @@ def _stage_states(K, s, y, h, ys):
 
 
 @njit(**_GENERIC)
-def initial_step(rhs, p, t0, y0, f0, t_bound, max_step, rtol, atol, y1, f1, scale):
-    """scipy's ``select_initial_step`` (forward in time, error estimator order 7)."""
+def initial_step(rhs, p, t0, y0, f0, t_bound, max_step, rtol, atol, n_control, y1, f1, scale):
+    """scipy's ``select_initial_step`` (forward in time, error estimator order 7) on the first
+    ``n_control`` components."""
     n = y0.shape[0]
     interval = abs(t_bound - t0)
     if interval == 0.0:
         return 0.0
-    for i in range(n):
+    for i in range(n_control):
         scale[i] = atol + abs(y0[i]) * rtol
-    d0 = _rms(y0, scale)
-    d1 = _rms(f0, scale)
+    d0 = _rms(y0, scale, n_control)
+    d1 = _rms(f0, scale, n_control)
     h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
     h0 = min(h0, interval)
     for i in range(n):
         y1[i] = y0[i] + h0 * f0[i]
     rhs(t0 + h0, y1, p, f1)
     s = 0.0
-    for i in range(n):
+    for i in range(n_control):
         v = (f1[i] - f0[i]) / scale[i]
         s += v * v
-    d2 = math.sqrt(s) / math.sqrt(n) / h0
+    d2 = math.sqrt(s) / math.sqrt(n_control) / h0
     if d1 <= 1e-15 and d2 <= 1e-15:
         h1 = max(1e-6, h0 * 1e-3)
     else:
@@ -164,9 +170,9 @@ def _rk_step(rhs, p, t, y, f, h, K, y_new, ys):
 
 
 @njit(**_JIT)
-def _error_norm(K, h, y, y_new, rtol, atol):
-    """scipy's ``DOP853._estimate_error_norm`` with scale atol + rtol max(|y|, |y_new|)."""
-    n = y.shape[0]
+def _error_norm(K, h, y, y_new, rtol, atol, n):
+    """scipy's ``DOP853._estimate_error_norm`` with scale atol + rtol max(|y|, |y_new|), over the
+    first n components."""
     s5 = 0.0
     s3 = 0.0
     for i in range(n):
@@ -208,10 +214,11 @@ def dense_coefficients(rhs, p, t_old, h, y_old, y, K, F, ys):
 
 
 @njit(**_JIT)
-def dense_eval(F, t_old, h, y_old, t, out):
-    """The interpolant at time t (scipy's ``Dop853DenseOutput``), written into ``out``."""
+def dense_eval(F, t_old, h, y_old, t, out, n):
+    """The first n components of the interpolant at time t (scipy's ``Dop853DenseOutput``), written
+    into ``out``."""
     x = (t - t_old) / h
-    for i in range(y_old.shape[0]):
+    for i in range(n):
         acc = 0.0
         for j in range(INTERPOLATOR_POWER):
             acc += F[INTERPOLATOR_POWER - 1 - j, i]
@@ -223,23 +230,24 @@ def dense_eval(F, t_old, h, y_old, t, out):
 
 
 @njit(**_GENERIC)
-def _event_value(events, pe, i, F, t_old, h, y_old, t, ys, g):
-    dense_eval(F, t_old, h, y_old, t, ys)
+def _event_value(events, pe, i, F, t_old, h, y_old, t, ys, g, n_control):
+    dense_eval(F, t_old, h, y_old, t, ys, n_control)
     events(t, ys, pe, g)
     return g[i]
 
 
 @njit(**_GENERIC)
-def event_root(events, pe, i, F, t_old, h, y_old, xa, xb, ys, g):
-    """Root of event ``i`` on the interpolant between xa and xb (scipy's brentq, xtol = rtol = 4 eps)."""
+def event_root(events, pe, i, F, t_old, h, y_old, xa, xb, ys, g, n_control):
+    """Root of event ``i`` on the interpolant between xa and xb (scipy's brentq, xtol = rtol = 4 eps);
+    the events see the first ``n_control`` components."""
     xpre = xa
     xcur = xb
     xblk = 0.0
     fblk = 0.0
     spre = 0.0
     scur = 0.0
-    fpre = _event_value(events, pe, i, F, t_old, h, y_old, xpre, ys, g)
-    fcur = _event_value(events, pe, i, F, t_old, h, y_old, xcur, ys, g)
+    fpre = _event_value(events, pe, i, F, t_old, h, y_old, xpre, ys, g, n_control)
+    fcur = _event_value(events, pe, i, F, t_old, h, y_old, xcur, ys, g, n_control)
     if fpre == 0.0:
         return xpre
     if fcur == 0.0:
@@ -282,7 +290,7 @@ def event_root(events, pe, i, F, t_old, h, y_old, xa, xb, ys, g):
             xcur += scur
         else:
             xcur += delta if sbis > 0.0 else -delta
-        fcur = _event_value(events, pe, i, F, t_old, h, y_old, xcur, ys, g)
+        fcur = _event_value(events, pe, i, F, t_old, h, y_old, xcur, ys, g, n_control)
     return xcur
 
 
@@ -295,12 +303,14 @@ def _finite(y):
 
 
 @njit(**_GENERIC)
-def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, y_end):
+def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, n_control, y_end):
     """Integrate dy/dt = rhs from (t0, y0) forward to t_bound or the first event (module docstring).
 
-    Returns ``(code, t_end, event, steps)``; the state at ``t_end`` is written into ``y_end``
-    (the interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps``
-    counts accepted steps.
+    The first ``n_control`` components of y choose the steps (error norm, initial step); the others
+    are carried along with the same steps (``n_control = len(y0)``: scipy's DOP853). Returns
+    ``(code, t_end, event, steps)``; the state at ``t_end`` is written into ``y_end`` (the
+    interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps`` counts
+    accepted steps.
     """
     n = y0.shape[0]
     n_ev = direction.shape[0]
@@ -321,7 +331,7 @@ def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, 
     rhs(t0, y, p, f)
     events(t0, y, pe, g)
     t = t0
-    h_abs = initial_step(rhs, p, t0, y, f, t_bound, max_step, rtol, atol, ys, work, y_new)  # work buffers
+    h_abs = initial_step(rhs, p, t0, y, f, t_bound, max_step, rtol, atol, n_control, ys, work, y_new)
     steps = 0
     while t < t_bound:
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
@@ -339,7 +349,7 @@ def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, 
             h = t_new - t
             h_abs = abs(h)
             _rk_step(rhs, p, t, y, f, h, K, y_new, ys)
-            err = _error_norm(K, h, y, y_new, rtol, atol)
+            err = _error_norm(K, h, y, y_new, rtol, atol, n_control)
             if err < 1.0:
                 if err == 0.0:
                     factor = MAX_FACTOR
@@ -375,12 +385,12 @@ def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, 
                 if not built:
                     dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys)
                     built = True
-                root = event_root(events, pe, e, F, t_old, h, work, t_old, t, ys, g_root)
+                root = event_root(events, pe, e, F, t_old, h, work, t_old, t, ys, g_root, n_control)
                 if root < t_first:
                     t_first = root
                     first = e
         if first >= 0:
-            dense_eval(F, t_old, h, work, t_first, y_end)
+            dense_eval(F, t_old, h, work, t_first, y_end, n)
             if not _finite(y_end):
                 return FAILED, t_first, -1, steps
             return EVENT, t_first, first, steps

@@ -69,6 +69,7 @@ N_STEP = len(STEP_NAMES)
 
 # Polar state components by name.
 Q_R, Q_RD, Q_TH, Q_THD = (POLAR_NAMES.index(n) for n in ("q_r", "q_rd", "q_th", "q_thd"))
+N_POLAR = len(POLAR_NAMES)
 
 
 def _start(names: tuple[str, ...], group: str) -> int:
@@ -189,6 +190,7 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
         rtol,
         atol,
         max_step(m, l0, k_c, g_s),
+        N_POLAR,
         y_b,
     )
     if code != dop853.EVENT or event != EV_RADIAL:
@@ -213,6 +215,7 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
         rtol,
         atol,
         max_step(m, l0, k_d, g_s),
+        N_POLAR,
         y_lo,
     )
     if code != dop853.EVENT or event != EV_LIFTOFF:
@@ -331,7 +334,7 @@ def step_values(
     return Status(int(code)), dict(zip(STEP_NAMES, out.tolist(), strict=True))
 
 
-def _column(x) -> np.ndarray:
+def column(x) -> np.ndarray:
     """A fresh C-contiguous writable float64 copy: one compiled specialisation of the batch kernels
     (a strided, broadcast or read-only view would compile another; the copy costs ~1 ns a row)."""
     return np.array(x, dtype=np.float64, order="C")
@@ -343,7 +346,7 @@ def stance_rows(params: SlipParams, touchdowns: np.ndarray, rtol: float, atol: f
     n = arr.shape[0]
     out = np.empty((n, N_STANCE))
     status = np.empty(n, dtype=np.int64)
-    cols = tuple(_column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
+    cols = tuple(column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
     stance_batch(
         *cols,
         *_stance_args(params),
@@ -363,9 +366,9 @@ def step_rows(params: SlipParams, h: np.ndarray, v: np.ndarray, th: np.ndarray, 
     out = np.empty((n, N_STEP))
     status = np.empty(n, dtype=np.int64)
     step_batch(
-        _column(h),
-        _column(v),
-        _column(th),
+        column(h),
+        column(v),
+        column(th),
         *_stance_args(params),
         params.g_f,
         params.q_r_td,

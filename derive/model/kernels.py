@@ -50,6 +50,34 @@ def _plain(name, summary, equations, args, fields, exprs) -> Kernel:
     )
 
 
+#: The polar state and its time derivative, component by component (rows of the Jacobian below).
+_STATE = (("q_r", "m"), ("q_rd", "m/s"), ("q_th", "rad"), ("q_thd", "rad/s"))
+_RATES = (("q_rd", "m/s"), ("q_rdd", "m/s^2"), ("q_thd", "rad/s"), ("q_thdd", "rad/s^2"))
+
+
+def _stance_polar_jacobian() -> Kernel:
+    """d(stance_polar_rhs)/d(state) (row-major, ``d_<rate>_d_<state>``) and d/dk (``d_<rate>_d_k``):
+    the coefficients of the variational equations of the exact stance."""
+    rhs = sp.Matrix(mechanics.stance_polar_rhs())
+    jac = rhs.jacobian([q_r, q_rd, q_th, q_thd])
+    fields, exprs = [], []
+    for a, (rate, rate_unit) in enumerate(_RATES):
+        for b, (state, state_unit) in enumerate(_STATE):
+            fields.append((f"d_{rate}_d_{state}", f"d{rate}/d{state}", f"({rate_unit})/({state_unit})"))
+            exprs.append(jac[a, b])
+    for a, (rate, rate_unit) in enumerate(_RATES):
+        fields.append((f"d_{rate}_d_k", f"d{rate}/dk", f"({rate_unit})/(N/m)"))
+        exprs.append(sp.diff(rhs[a], k))
+    return _plain(
+        "stance_polar_jacobian",
+        "Jacobian of the polar stance vector field: d/d(q_r, q_rd, q_th, q_thd) row by row, then d/dk.",
+        ("2", "3", "sec2.2.1-polar"),
+        _POLAR_ARGS + _MODEL_PARAMS,
+        fields,
+        exprs,
+    )
+
+
 @cache
 def slip_model_kernels() -> tuple[Kernel, ...]:
     """Equations of motion, energy and coordinate maps used by the exact simulator."""
@@ -67,6 +95,7 @@ def slip_model_kernels() -> tuple[Kernel, ...]:
             ],
             mechanics.stance_polar_rhs(),
         ),
+        _stance_polar_jacobian(),
         _plain(
             "stance_cartesian_rhs",
             "Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.",
