@@ -328,7 +328,7 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
     return Path(path)
 
 
-def write(out: str | Path = "docs/accuracy.md", map_names=None, show_progress=None) -> list[Path]:
+def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
     """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
     ``out`` (+ .json, .png) and beside it, where iterative maps are measured, the convergence study
     (convergence.md, .json, .png; runtime/convergence.py) and, where maps that accept k_c != k_d are

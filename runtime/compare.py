@@ -5,6 +5,17 @@ flight, or given directly) and fly from their own liftoff to the next apex exact
 stance differs. :func:`compare` returns the rows of the table (quantity, unit, reference value,
 map value, absolute and relative error: ``map - against``); :func:`format_table` prints them and
 :func:`plot` draws q_r(t) and q_th(t) of both stances.
+
+The default step scales with the leg (:func:`~.apex_defaults.default_apex`): apex height
+``APEX_HEIGHT_L0 * l0``, speed ``APEX_FROUDE * sqrt(g_f l0)`` (a Froude number) and a touchdown angle
+scaled by the dimensionless stiffness, so the human runner's step is 1.0 m high at 5 m/s with the leg
+at 0.35 rad and the robot hopper's (0.25 m, 2.5 m/s, 0.495 rad) is as high, as fast and sweeps as
+far relative to its leg.
+
+One rule for physical failures: an apex below the touchdown height, a stance or an ascent that fails
+is a status of the side it happened to (both sides when there is no touchdown), with NaN values and
+a message; only invalid arguments raise (ValueError/TypeError). A touchdown state given directly
+sets the touchdown leg length: the comparison's parameters carry ``q_r_td`` = its ``q_r``.
 """
 
 from __future__ import annotations
@@ -16,15 +27,31 @@ import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
 from . import flight, index
+from .apex_defaults import APEX_FROUDE, APEX_HEIGHT_L0, TOUCHDOWN_ANGLE, default_apex
 from .maps import half_stance, stance, trajectory
-from .params import SlipParams
+from .numeric import num
+from .params import HUMAN_RUNNER, SlipParams
 from .quantities import QUANTITIES
 from .results import Result
+from .validate import leg_angle, non_negative, polar_state
 
-__all__ = ["Row", "Side", "Comparison", "compare", "default_map", "format_table", "plot", "DEFAULT_APEX"]
+__all__ = [
+    "Row",
+    "Side",
+    "Comparison",
+    "compare",
+    "default_map",
+    "default_apex",
+    "format_table",
+    "plot",
+    "APEX_HEIGHT_L0",
+    "APEX_FROUDE",
+    "TOUCHDOWN_ANGLE",
+    "DEFAULT_APEX",
+]
 
-#: The documented default case: apex 1.0 m high at 5 m/s, touchdown angle 0.35 rad (about 20 deg).
-DEFAULT_APEX = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
+#: The documented default case, the human runner's: apex 1.0 m high at 5 m/s, touchdown angle 0.35 rad.
+DEFAULT_APEX = default_apex(HUMAN_RUNNER)
 
 
 @dataclass(frozen=True)
@@ -58,12 +85,16 @@ class Side:
         """The stance result's own message when its status is the side's, else the status's."""
         return self.stance.message if self.stance.status == self.status else MESSAGES[int(self.status)]
 
+    @property
+    def ok(self) -> bool:
+        return self.status == Status.OK
+
     def value(self, key: str) -> float:
         if key == "apex_height":
             return self.next_apex[0]
         if key == "apex_speed":
             return self.next_apex[1]
-        return float(self.stance.values[key])
+        return float(self.stance.values.get(key, math.nan))
 
 
 @dataclass(frozen=True)
@@ -75,11 +106,23 @@ class Comparison:
     rows: tuple[Row, ...] = field(default=())
     #: A half-stance map compared (``touchdown`` is then its start state: touchdown or bottom).
     half: index.HalfInfo | None = None
+    #: True when the touchdown state was given (``params.q_r_td`` is then its q_r), False from an apex.
+    touchdown_given: bool = False
+
+    @property
+    def ok(self) -> bool:
+        """True when both sides ran to the end (status OK)."""
+        return self.map.ok and self.against.ok
 
     def to_dict(self) -> dict:
         return {
             "params": self.params.as_dict(),
-            "touchdown": dict(zip(("q_r", "q_rd", "q_th", "q_thd"), self.touchdown, strict=True)),
+            "touchdown": {
+                q: _json_float(x)
+                for q, x in zip(("q_r", "q_rd", "q_th", "q_thd"), self.touchdown, strict=True)
+            },
+            "touchdown_given": self.touchdown_given,
+            "ok": self.ok,
             "map": self.map.map,
             "map_options": self.map.options,
             "against": self.against.map,
@@ -107,6 +150,11 @@ class Comparison:
 
 def _json_float(x: float) -> float | None:
     return float(x) if math.isfinite(x) else None
+
+
+def _not_run(name: str, kind: str, options: dict, status: Status, message: str) -> Side:
+    """A side that never started (no touchdown): NaN values, ``status`` and ``message``."""
+    return Side(name, options, Result(name, kind, status, message, {}), status, (math.nan, math.nan))
 
 
 def _side(name: str, params: SlipParams, td, options: dict) -> Side:
@@ -138,35 +186,52 @@ def compare(
     options: dict | None = None,
     against_options: dict | None = None,
 ) -> Comparison:
-    """One step by ``map`` and by ``against`` from an apex (height, speed, touchdown angle) or a
-    polar touchdown state (``map`` None: :func:`default_map`). ValueError when there is no touchdown
-    or a map refuses the parameters."""
+    """One step by ``map`` and by ``against`` from an apex (height [m], speed [m/s], touchdown angle
+    [rad]; each None: :func:`default_apex`'s) or a polar touchdown state (``map`` None:
+    :func:`default_map`).
+
+    A touchdown state sets the touchdown leg length: the result's ``params.q_r_td`` is its q_r. An
+    apex below the touchdown height is the status APEX_TOO_LOW of both sides (NaN values, see the
+    module docstring); ValueError/TypeError only for invalid arguments (an unknown map or option, a
+    map that refuses the parameters, a NaN, an apex together with a touchdown state)."""
     map = default_map(params) if map is None else map  # noqa: A001
     info = index.lookup(map)
     half = info if isinstance(info, index.HalfInfo) else None
     for name in (map, against):
         index.lookup(name).param_values(params)  # ValueError naming the requirement, before any work
+    options, against_options = dict(options or {}), dict(against_options or {})
     if touchdown is not None:
         if apex_height is not None or apex_speed is not None or touchdown_angle is not None:
             raise ValueError(
                 "give either an apex (height, speed, touchdown angle) or a touchdown state, not both"
             )
-        td = tuple(float(x) for x in touchdown)
+        td = polar_state(params, touchdown)
+        if td[0] != params.q_r_td:
+            params = params.with_(q_r_td=td[0])
     else:
-        apex = dict(DEFAULT_APEX)
+        apex = default_apex(params)
         given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
         apex.update({key: value for key, value in given.items() if value is not None})
-        status, td, _ = flight.touchdown(
-            params, apex["apex_height"], apex["apex_speed"], apex["touchdown_angle"]
-        )
+        h = non_negative("apex_height", apex["apex_height"])
+        v = non_negative("apex_speed", apex["apex_speed"])
+        th = leg_angle("touchdown_angle", apex["touchdown_angle"])
+        status, td, _ = flight.touchdown(params, h, v, th)
         if status != Status.OK:
-            raise ValueError(f"no touchdown from apex {apex}: {MESSAGES[int(status)]}")
-    ref = _side(against, params, td, dict(against_options or {}))
+            message = f"{MESSAGES[int(status)]} (apex height {num(h)} m"
+            message += f", touchdown height {params.q_r_td * math.cos(th):.6g} m)"
+            sides = (
+                _not_run(map, "half" if half else "stance", options, status, message),
+                _not_run(against, "stance", against_options, status, message),
+            )
+            labels = _HALF_ROWS if half else tuple((q.label, q.unit, q.key) for q in QUANTITIES)
+            rows = tuple(Row(label, unit, math.nan, math.nan) for label, unit, _ in labels)
+            return Comparison(params, td, *sides, rows, half=half)
+    ref = _side(against, params, td, against_options)
     if half:
-        return _compare_half(params, td, half, ref, dict(options or {}))
-    mine = _side(map, params, td, dict(options or {}))
+        return _compare_half(params, td, half, ref, options, touchdown is not None)
+    mine = _side(map, params, td, options)
     rows = tuple(Row(q.label, q.unit, ref.value(q.key), mine.value(q.key)) for q in QUANTITIES)
-    return Comparison(params, td, mine, ref, rows)
+    return Comparison(params, td, mine, ref, rows, touchdown_given=touchdown is not None)
 
 
 #: A half-stance map's outputs against the whole stance's: (label, unit, half key, stance keys).
@@ -179,7 +244,9 @@ _HALF_ROWS = (
 )
 
 
-def _compare_half(params: SlipParams, td, half: index.HalfInfo, ref: Side, options: dict) -> Comparison:
+def _compare_half(
+    params: SlipParams, td, half: index.HalfInfo, ref: Side, options: dict, touchdown_given: bool
+) -> Comparison:
     """A half-stance map against the reference's same half: the compression half from the touchdown
     state against the reference's bottom; the decompression half from the reference's bottom
     state against its liftoff (so only the half itself differs)."""
@@ -204,7 +271,7 @@ def _compare_half(params: SlipParams, td, half: index.HalfInfo, ref: Side, optio
         )
         for label, unit, key in _HALF_ROWS
     )
-    return Comparison(params, tuple(start), mine, ref, rows, half=half)
+    return Comparison(params, tuple(start), mine, ref, rows, half=half, touchdown_given=touchdown_given)
 
 
 def _fmt(x: float, spec: str) -> str:
@@ -221,16 +288,21 @@ def _title(side: Side) -> str:
 
 
 def format_table(c: Comparison) -> str:
-    """The comparison as an aligned text table with a header naming the case."""
+    """The comparison as an aligned text table: a header naming the case and each side's status,
+    the rows (``n/a`` where a value is missing), and under them each failed side's status and
+    message."""
     p = c.params
     td = c.touchdown
+    q_r_td = f"q_r_td={p.q_r_td:g} m" + (" (the touchdown state's q_r)" if c.touchdown_given else "")
+    start = c.half.start if c.half else "touchdown"
     lines = [
         f"SLIP step: m={p.m:g} kg, l0={p.l0:g} m, k_c={p.k_c:g} N/m, k_d={p.k_d:g} N/m, "
-        f"g_s={p.g_s:g}, g_f={p.g_f:g} m/s^2, q_r_td={p.q_r_td:g} m, q_r_lo={p.q_r_lo:g} m",
-        f"{c.half.start if c.half else 'touchdown'}: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, "
-        f"q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s",
-        f"reference: {_title(c.against)}: {c.against.message}",
-        f"map:       {_title(c.map)}: {c.map.message}",
+        f"g_s={p.g_s:g}, g_f={p.g_f:g} m/s^2, {q_r_td}, q_r_lo={p.q_r_lo:g} m",
+        f"{start}: q_r={td[0]:.6g} m, q_rd={td[1]:.6g} m/s, q_th={td[2]:.6g} rad, q_thd={td[3]:.6g} rad/s"
+        if all(math.isfinite(x) for x in td)
+        else f"{start}: none",
+        f"reference: {_title(c.against)}: {c.against.status.name}",
+        f"map:       {_title(c.map)}: {c.map.status.name}",
         "",
         f"{'quantity':<30}{'unit':>7}{'reference':>14}{'map':>14}{'abs err':>13}{'rel err':>11}",
         "-" * 89,
@@ -240,6 +312,11 @@ def format_table(c: Comparison) -> str:
             f"{r.quantity:<30}{r.unit:>7}{_fmt(r.reference, '14.6f')}{_fmt(r.value, '14.6f')}"
             f"{_fmt(r.abs_error, '+13.2e')}{_fmt(r.rel_error, '+11.2%')}"
         )
+    failed = [(role, side) for role, side in (("reference", c.against), ("map", c.map)) if not side.ok]
+    if failed:
+        lines.append("")
+    for role, side in failed:
+        lines.append(f"{role} {side.map}: {side.status.name}: {side.message}")
     return "\n".join(lines)
 
 
@@ -284,7 +361,8 @@ def plot(c: Comparison, path: str) -> str:
     axes[1].set_xlabel("time since touchdown [s]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="best", fontsize=8)
+        if ax.get_legend_handles_labels()[0]:  # nothing to label when neither side ran
+            ax.legend(loc="best", fontsize=8)
     p = c.params
     axes[0].set_title(
         f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, "

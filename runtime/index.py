@@ -16,6 +16,7 @@ from types import ModuleType
 
 from slipmaps.generated import maps_index
 
+from .numeric import NotANumber, is_real, num
 from .params import SlipParams
 from .validate import check_params
 
@@ -38,7 +39,8 @@ class Option:
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
 
     def encode(self, map_name: str, value: object) -> float:
-        """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values."""
+        """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values,
+        TypeError for a number option given a string."""
         where = f"map {map_name!r} option {self.name!r}"
         if self.kind == "choice":
             if value not in self.choices:
@@ -46,17 +48,17 @@ class Option:
                     f"{where} must be one of {', '.join(map(repr, self.choices))}, got {value!r}"
                 )
             return float(self.choices.index(value))
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise ValueError(f"{where} must be a number, got {value!r}")
+        if not is_real(value):
+            raise NotANumber(f"{where} must be a number, got {type(value).__name__} {value!r}")
         x = float(value)
         if not math.isfinite(x):
-            raise ValueError(f"{where} must be finite, got {value!r}")
+            raise ValueError(f"{where} must be finite, got {num(x)}")
         if self.kind == "int" and x != math.floor(x):
-            raise ValueError(f"{where} must be a whole number, got {value!r}")
+            raise ValueError(f"{where} must be a whole number, got {num(x)}")
         if (self.low is not None and x < self.low) or (self.high is not None and x > self.high):
             low = "-inf" if self.low is None else f"{self.low:g}"
             high = "inf" if self.high is None else f"{self.high:g}"
-            raise ValueError(f"{where} must lie in [{low}, {high}], got {value!r}")
+            raise ValueError(f"{where} must lie in [{low}, {high}], got {num(x)}")
         return x
 
     def as_dict(self) -> dict:
@@ -119,8 +121,8 @@ class MapInfo:
         if "constant_stiffness" in self.requires and not params.constant_stiffness:
             others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
             raise ValueError(
-                f"map {self.name!r} needs a constant leg stiffness (k_c == k_d), got k_c={params.k_c!r}, "
-                f"k_d={params.k_d!r}; maps that accept k_c != k_d: {', '.join(others)}"
+                f"map {self.name!r} needs a constant leg stiffness (k_c == k_d), got k_c={num(params.k_c)}, "
+                f"k_d={num(params.k_d)}; maps that accept k_c != k_d: {', '.join(others)}"
             )
         return tuple(getattr(params, p) for p in self.params)
 

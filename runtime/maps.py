@@ -32,7 +32,7 @@ from slipmaps.generated.status import MESSAGES, Status
 from .index import MapInfo, get, get_half, maps
 from .params import SlipParams
 from .results import BatchResult, Result, columns
-from .validate import L0_SLACK, float_array, leg_angle, non_negative, polar_state
+from .validate import L0_SLACK, float_array, leg_angle, non_negative, polar_state, real_array
 
 __all__ = [
     "maps",
@@ -128,12 +128,12 @@ def apex_return(name: str, params: SlipParams, apex_height, apex_speed, touchdow
     return call.result("apex_return", res, inputs)
 
 
-def _rows(params: SlipParams, touchdowns) -> np.ndarray:
+def _rows(params: SlipParams, touchdowns, what: str = "touchdowns") -> np.ndarray:
     """(n, 4) float64 touchdown (or bottom) states; leg lengths within round-off above l0 are l0, as in
     :func:`stance` (the only copy made: when such a row exists)."""
-    arr = np.asarray(touchdowns, dtype=float)
+    arr = real_array(what, touchdowns)
     if arr.ndim != 2 or arr.shape[1] != 4:
-        raise ValueError(f"touchdowns must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
+        raise ValueError(f"{what} must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
     above = arr[:, 0] > params.l0
     if above.any():
         snap = above & (arr[:, 0] <= params.l0 * (1.0 + L0_SLACK))
@@ -178,9 +178,8 @@ def apex_return_batch(
     The result's columns have the broadcast shape of the three inputs.
     """
     call = _Call.of(name, params, options)
-    parts = np.broadcast_arrays(
-        *(np.asarray(x, dtype=float) for x in (apex_height, apex_speed, touchdown_angle))
-    )
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    parts = np.broadcast_arrays(*(real_array(key, x) for key, x in given.items()))
     shape = parts[0].shape
     n = int(np.prod(shape))
     flat = tuple(p.reshape(n) for p in parts)  # views where possible (stride 0 for a broadcast scalar)
@@ -243,7 +242,7 @@ def half_stance(name: str, params: SlipParams, state, **options) -> Result:
 def half_stance_batch(name: str, params: SlipParams, states, **options) -> BatchResult:
     """Half-stance map ``name`` over start states of shape (n, 4); a status per row."""
     call = _Call.of(name, params, options, half=True)
-    arr = _rows(params, states)
+    arr = _rows(params, states, "states")
     names = columns("half", call.info.extras)
     n = arr.shape[0]
     out = np.empty((n, len(names)))

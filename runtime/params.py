@@ -6,7 +6,10 @@ bottom) and after the bottom separately (report section 5). ``g_s`` is the gravi
 acceleration during stance, ``g_f`` during flight (both positive numbers, pointing down).
 ``q_r_td`` and ``q_r_lo`` are the touchdown and liftoff leg lengths; both default to the rest
 length ``l0`` and must lie in (0, l0]. Every field defaults to the human runner
-(:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m).
+(:data:`HUMAN_RUNNER`: 80 kg, 1 m leg, 20 kN/m). A value that is not a real number (a string, say)
+is a TypeError (:class:`ParamTypeError`, also a ValueError), one out of its domain a ValueError
+(:class:`ParamError`);
+both name the argument given (``k`` when ``k`` set both stiffnesses).
 """
 
 from __future__ import annotations
@@ -14,9 +17,29 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields, replace
 
-__all__ = ["SlipParams", "HUMAN_RUNNER", "ROBOT_HOPPER"]
+from .numeric import NotANumber, is_real, num
+
+__all__ = ["SlipParams", "ParamError", "ParamTypeError", "HUMAN_RUNNER", "ROBOT_HOPPER"]
 
 _DEFAULT_K = 20_000.0
+
+
+class _ParamProblem:
+    """A bad parameter: ``field`` is the argument's name (``k`` when ``k`` set ``k_c`` and ``k_d``),
+    ``problem`` what is wrong, ``value`` the value given; the command line names its flag from them."""
+
+    def __init__(self, field: str, problem: str, value: object) -> None:
+        self.field, self.problem, self.value = field, problem, value
+        super().__init__(f"SlipParams.{field} {problem}, got {num(value)}")
+
+
+class ParamError(_ParamProblem, ValueError):
+    """A parameter out of its domain (not finite, not positive, a leg length above l0)."""
+
+
+class ParamTypeError(_ParamProblem, NotANumber):
+    """A parameter that is not a real number (a string, bytes, None, a bool): a TypeError (and a
+    ValueError, see :class:`~.numeric.NotANumber`)."""
 
 
 @dataclass(frozen=True, init=False)
@@ -47,8 +70,8 @@ class SlipParams:
     ) -> None:
         if k is not None and (k_c is not None or k_d is not None):
             raise ValueError(
-                f"SlipParams: give either k (both stiffnesses) or k_c/k_d, not both (got k={k!r}, "
-                f"k_c={k_c!r}, k_d={k_d!r})"
+                f"SlipParams: give either k (both stiffnesses) or k_c/k_d, not both (got k={num(k)}, "
+                f"k_c={num(k_c)}, k_d={num(k_d)})"
             )
         stiff = _DEFAULT_K if k is None else k
         values = {
@@ -61,21 +84,22 @@ class SlipParams:
             "q_r_td": q_r_td,
             "q_r_lo": q_r_lo,
         }
+        # the argument a value came from: k_c and k_d name k when k set them
+        given = {"k_c": "k" if k is not None else "k_c", "k_d": "k" if k is not None else "k_d"}
         for name, value in values.items():
             if value is None:
                 continue
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                raise ValueError(f"SlipParams.{name} must be a real number, got {value!r}")
+            if not is_real(value):
+                raise ParamTypeError(given.get(name, name), "must be a real number", value)
             if not math.isfinite(value) or value <= 0.0:
-                raise ValueError(f"SlipParams.{name} must be finite and positive, got {value!r}")
+                raise ParamError(given.get(name, name), "must be finite and positive", value)
             values[name] = float(value)
         for name in ("q_r_td", "q_r_lo"):
             if values[name] is None:
                 values[name] = values["l0"]
             elif values[name] > values["l0"]:
-                raise ValueError(
-                    f"SlipParams.{name} must not exceed the rest length l0={values['l0']!r}, "
-                    f"got {values[name]!r}"
+                raise ParamError(
+                    name, f"must not exceed the rest length l0={num(values['l0'])}", values[name]
                 )
         for name, value in values.items():
             object.__setattr__(self, name, value)
@@ -90,7 +114,8 @@ class SlipParams:
         """The single stiffness of a constant-stiffness leg; ValueError when k_c != k_d."""
         if not self.constant_stiffness:
             raise ValueError(
-                f"this needs a constant leg stiffness (k_c == k_d), got k_c={self.k_c!r} != k_d={self.k_d!r}"
+                "this needs a constant leg stiffness (k_c == k_d), "
+                f"got k_c={num(self.k_c)} != k_d={num(self.k_d)}"
             )
         return self.k_c
 

@@ -354,7 +354,7 @@ def from_json(text: str) -> list[dict]:
     return json.loads(text)["grids"]
 
 
-def write(out: str | Path = "docs/stiffness.md", map_names=None, show_progress=None) -> list[Path]:
+def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
     """Measure the variants of ``map_names`` (default: all) and write ``out`` (+ .json, .png); nothing
     when no map of ``map_names`` accepts k_c != k_d."""
     from .stiffness_report import figure, render_markdown

@@ -1,0 +1,466 @@
+"""What a new user hit (tracker issue 9, first part), each as the user met it: the command line's
+plot path, read-only installs (numba's cache, `generate` outside a checkout), the comparison's one
+rule for physical failures and its exit status, the touchdown leg length, flags named as typed, the
+step defaults that scale with the leg, plain numbers in messages, strings refused as numbers,
+`python -m slipmaps` / `--version` / help texts, the README's import paths and where `slipmaps
+accuracy` writes."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import slipmaps
+from slipmaps.runtime import checkout
+from slipmaps.runtime import compare as compare_module
+from slipmaps.runtime.apex_defaults import default_apex
+from slipmaps.runtime.cli import build_parser, main
+from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER
+
+P = HUMAN_RUNNER
+ROOT = Path(__file__).resolve().parent.parent
+#: The width of every line of the comparison table (header, rule and rows).
+TABLE_WIDTH = 89
+
+
+def _one_line_error(capsys, needle: str) -> str:
+    err = capsys.readouterr().err
+    assert err.startswith("slipmaps ") and ": error: " in err, err
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert needle in err, err
+    return err
+
+
+def _table(out: str) -> list[str]:
+    """The header, rule and rows of the comparison table in ``out``."""
+    lines = out.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("quantity"))
+    end = next((i for i in range(start, len(lines)) if not lines[i].strip()), len(lines))
+    return lines[start:end]
+
+
+def _refuse_work(monkeypatch):
+    """Make any computation fail the test: the checks must come first."""
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("computed before refusing the arguments")
+
+    monkeypatch.setattr(compare_module, "compare", no_work)
+
+
+# --- `compare --plot` into a directory that is not there -----------------------------------------
+
+
+def test_plot_into_a_missing_directory_creates_it(tmp_path, capsys):
+    png = tmp_path / "new" / "dir" / "x.png"
+    assert main(["compare", "--against", "geyer", "--plot", str(png)]) == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert f"plot: {png}" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    ("where", "needle"),
+    [
+        ("file/x.png", "cannot create the directory"),  # its parent is a file
+        ("x.txt", "give an image file name"),
+        (".", "is a directory"),
+    ],
+)
+def test_plot_path_that_cannot_be_written_is_refused_before_computing(
+    where, needle, tmp_path, monkeypatch, capsys
+):
+    (tmp_path / "file").write_text("not a directory")
+    _refuse_work(monkeypatch)
+    assert main(["compare", "--plot", str(tmp_path / where)]) == 2
+    _one_line_error(capsys, needle)
+
+
+# --- read-only installs ------------------------------------------------------------------------
+
+
+def test_generate_outside_a_checkout_is_one_line(tmp_path, monkeypatch, capsys):
+    """A non-editable install has no pyproject.toml above the package: the message alone, exit 2."""
+    from slipmaps.derive import generate
+
+    monkeypatch.setattr(generate, "ROOT", tmp_path)
+    assert main(["generate", "--check"]) == 2
+    _one_line_error(capsys, "works on a source checkout (pip install -e '.[derive]')")
+
+
+def _installed_copy(dest: Path) -> Path:
+    """The layout of a non-editable install (``pip install .``): site/slipmaps/{__init__, __main__,
+    derive, generated, runtime}, copied without caches."""
+    site = dest / "site"
+    pkg = site / "slipmaps"
+    pkg.mkdir(parents=True)
+    public = Path(slipmaps.__file__).resolve().parent
+    for name in ("__init__.py", "__main__.py"):
+        shutil.copy2(public / name, pkg / name)
+    for sub in ("derive", "generated", "runtime"):
+        src = Path(importlib.util.find_spec(f"slipmaps.{sub}").submodule_search_locations[0]).resolve()
+        shutil.copytree(src, pkg / sub, ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc"))
+    return site
+
+
+def _read_only_runner(ro: Path):
+    """A function running argv with ``ro`` read-only: chmod for a normal user; for root (whom
+    permissions do not stop) a read-only bind mount in a private mount namespace."""
+    if os.geteuid() != 0:
+        for path in [ro, *ro.rglob("*")]:
+            path.chmod(0o555 if path.is_dir() else 0o444)
+        return lambda argv, env: subprocess.run(argv, env=env, capture_output=True, text=True, timeout=300)
+    if shutil.which("unshare") is None:
+        pytest.skip("running as root without unshare: cannot make a directory read-only")
+    mount = 'mount --bind "$1" "$1" && mount -o remount,bind,ro "$1" && shift && exec "$@"'
+    probe = subprocess.run(["unshare", "-m", "sh", "-c", mount, "sh", str(ro), "true"], capture_output=True)
+    if probe.returncode != 0:
+        pytest.skip(f"running as root and cannot bind-mount read-only: {probe.stderr.decode()[-200:]}")
+    return lambda argv, env: subprocess.run(
+        ["unshare", "-m", "sh", "-c", mount, "sh", str(ro), *argv],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+
+
+def test_read_only_install_without_a_writable_home(tmp_path):
+    """`pip install .` into a read-only place, HOME read-only, NUMBA_CACHE_DIR unset: `import
+    slipmaps` chooses a writable cache directory with one warning, numba caches the kernels there
+    (also when numba was imported first), and `generate --check` is a one-line error. Measured: about
+    4 s, most of it compiling Geyer's stance once."""
+    ro = tmp_path / "ro"
+    site = _installed_copy(ro)
+    home = ro / "home"
+    home.mkdir()
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    run = _read_only_runner(ro)
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("NUMBA_", "XDG_"))}
+    env.update(PYTHONPATH=str(site), HOME=str(home), TMPDIR=str(scratch), PYTHONDONTWRITEBYTECODE="1")
+    code = (
+        "import {first}, os, slipmaps\n"
+        "r = slipmaps.stance('geyer', slipmaps.HUMAN_RUNNER, (1.0, -1.5, 0.35, -4.5))\n"
+        "print(r.status.name, slipmaps.__file__, os.environ['NUMBA_CACHE_DIR'])\n"
+    )
+    try:
+        for first in ("sys", "numba"):  # numba imported before slipmaps: its config is reloaded
+            done = run([sys.executable, "-c", code.format(first=first)], env)
+            assert done.returncode == 0, done.stderr[-3000:]
+            status, init, cache = done.stdout.split()
+            assert status == "OK" and init == str(site / "slipmaps" / "__init__.py")
+            assert Path(cache).parent == scratch, cache  # HOME is read-only: the private temp dir
+            assert done.stderr.count("RuntimeWarning") == 1 and "NUMBA_CACHE_DIR" in done.stderr
+            assert list(Path(cache).rglob("geyer.geyer_stance-*.nbi")), "numba did not cache there"
+        done = run([sys.executable, "-m", "slipmaps", "generate", "--check"], env)
+        assert done.returncode == 2
+        err = done.stderr.split("RuntimeWarning", 1)[-1]  # after the cache warning (when chmod'ed)
+        assert "Traceback" not in done.stderr and "works on a source checkout" in err
+        assert done.stderr.strip().splitlines()[-1].startswith("slipmaps generate: error: ")
+    finally:
+        for path in [ro, *ro.rglob("*")]:
+            if not path.is_symlink():
+                path.chmod(0o755 if path.is_dir() else 0o644)
+
+
+# --- compare: one rule for physical failures, exit status ---------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("argv", "failed"),
+    [
+        (["--angle", "0.2"], {"reference exact": "LIFTOFF_DOWNWARD", "map geyer": "LIFTOFF_DOWNWARD"}),
+        (["--apex-speed", "100"], {"reference exact": "LIFTOFF_DOWNWARD", "map geyer": "LIFTOFF_DOWNWARD"}),
+        (["--apex-height", "0.9"], {"reference exact": "APEX_TOO_LOW", "map geyer": "APEX_TOO_LOW"}),
+        (["--angle", "1.4", "--map", "iterative-decompression"], {"reference exact": "FALL"}),
+    ],
+)
+def test_compare_physical_failure_is_a_status_in_an_aligned_table(argv, failed, capsys):
+    assert main(["compare", "--no-plot", *argv]) == 1
+    out = capsys.readouterr().out
+    table = _table(out)
+    assert {len(line) for line in table} == {TABLE_WIDTH}, table  # n/a cells keep the columns
+    assert any(line.rstrip().endswith("n/a") for line in table)
+    assert "mn/a" not in out and "an/a" not in out
+    below = out.split("\n\n")[-1].splitlines()  # under the table: each failed side
+    for side, status in failed.items():
+        line = next(line for line in below if line.startswith(f"{side}: "))
+        assert line.startswith(f"{side}: {status}: ")
+
+
+def test_apex_below_the_touchdown_height_says_so_once_with_rounded_numbers(capsys):
+    assert main(["compare", "--no-plot", "--apex-height", "0.9"]) == 1
+    out = capsys.readouterr().out
+    line = next(line for line in out.splitlines() if line.startswith("reference exact: "))
+    # touchdown height cos(0.35) = 0.9393727128473789 m, shown to 6 digits
+    assert line.endswith("(apex height 0.9 m, touchdown height 0.939373 m)"), line
+    assert line.count("no touchdown") == 1 and "0.9393727" not in line
+    assert "touchdown: none" in out
+
+
+def test_compare_json_exit_status_and_statuses(capsys):
+    assert main(["compare", "--no-plot", "--json", "--apex-height", "0.9"]) == 1
+    data = json.loads(capsys.readouterr().out)  # valid JSON: no NaN in it
+    assert data["ok"] is False and data["map_status"] == data["against_status"] == "APEX_TOO_LOW"
+    assert all(r["value"] is None and r["reference"] is None for r in data["rows"])
+    assert data["touchdown"] == {"q_r": None, "q_rd": None, "q_th": None, "q_thd": None}
+
+
+def test_exit_status_is_documented():
+    from slipmaps.runtime import cli
+
+    compare_help = build_parser()._subparsers._group_actions[0].choices["compare"].format_help()
+    for text in (compare_help, (ROOT / "README.md").read_text(), cli.__doc__):
+        flat = " ".join(text.split())
+        for code in (
+            r"0 (when )?both sides ran",
+            r"1 (when )?a side failed physically",
+            r"2 (for )?a user error",
+        ):
+            assert re.search(code, flat), (code, flat[:200])
+
+
+# --- the touchdown leg length of a touchdown state ------------------------------------------------
+
+
+def test_touchdown_state_sets_the_touchdown_leg_length(capsys):
+    argv = ["compare", "--no-plot", "--touchdown", "0.5", "-2", "0.3", "-4"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "q_r_td=0.5 m (the touchdown state's q_r)" in out.splitlines()[0]
+    assert main([*argv, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["params"]["q_r_td"] == 0.5 and data["touchdown_given"] is True
+    c = compare_module.compare(P, touchdown=(0.5, -2.0, 0.3, -4.0), against="geyer")
+    assert c.params.q_r_td == 0.5
+
+
+def test_touchdown_state_contradicting_q_r_td_is_refused(capsys):
+    argv = ["compare", "--no-plot", "--touchdown", "0.5", "-2", "0.3", "-4", "--q-r-td", "0.9"]
+    assert main(argv) == 2
+    _one_line_error(capsys, "--q-r-td 0.9 contradicts --touchdown, whose q_r 0.5 is the touchdown leg length")
+
+
+# --- stiffness flags named as typed ---------------------------------------------------------------
+
+
+def test_one_stiffness_flag_alone_says_k_c_differs_from_k_d(capsys):
+    assert main(["compare", "--no-plot", "--against", "geyer-vs", "--k-c", "15000"]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("slipmaps compare: note: only --k-c given: k_d keeps its default 20000 N/m")
+    assert main(["compare", "--no-plot", "--against", "geyer-vs", "--k-c", "15000", "--k-d", "20000"]) == 0
+    assert capsys.readouterr().err == ""  # both given: nothing to say
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (["--k", "-5"], "--k must be finite and positive, got -5.0"),
+        (["--k-c", "-5"], "--k-c must be finite and positive, got -5.0"),
+        (["--k-d", "0"], "--k-d must be finite and positive, got 0.0"),
+        (["--k", "1", "--k-c", "2"], "give either --k or --k-c/--k-d"),
+        (["--q-r-td", "1.2"], "--q-r-td must not exceed the rest length l0=1.0, got 1.2"),
+        (["--apex-speed", "nan"], "--apex-speed must be finite, got nan"),
+        (["--touchdown", "1.2", "-1", "0.3", "-4"], "--touchdown q_r must lie in (0, l0=1.0], got 1.2"),
+    ],
+)
+def test_bad_values_name_the_flag_typed(argv, needle, monkeypatch, capsys):
+    _refuse_work(monkeypatch)
+    assert main(["compare", "--no-plot", *argv]) == 2
+    err = _one_line_error(capsys, needle)
+    assert "SlipParams" not in err
+
+
+def test_slip_params_name_k_when_k_set_both():
+    with pytest.raises(ValueError, match=r"^SlipParams\.k must be finite and positive, got -5\.0$"):
+        slipmaps.SlipParams(k=-5)
+
+
+# --- defaults that scale with the leg -------------------------------------------------------------
+
+
+def test_default_step_scales_with_the_leg():
+    assert default_apex(HUMAN_RUNNER) == {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35}
+    robot = default_apex(ROBOT_HOPPER)
+    assert robot["apex_height"] == 0.25 and robot["apex_speed"] == pytest.approx(2.5, rel=1e-15)
+    # kappa 12.74 against the human's 25.48: 0.35 sqrt(2) = 0.495 rad
+    assert robot["touchdown_angle"] == pytest.approx(0.35 * math.sqrt(2.0), rel=1e-12)
+
+
+def test_robot_parameters_run_with_the_default_step(capsys):
+    """The issue's case: `--m 3 --l0 0.25 --k 1500` failed with the human's 1.0 m, 5 m/s. With the
+    scaled step both sides run (measured: next apex 0.204 m, 2.67 m/s; Geyer within 3.3 %)."""
+    assert main(["compare", "--no-plot", "--json", "--m", "3", "--l0", "0.25", "--k", "1500"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["ok"] and data["map_status"] == data["against_status"] == "OK"
+    speed = next(r for r in data["rows"] if r["quantity"] == "next apex speed")
+    assert abs(speed["rel_error"]) < 0.05
+
+
+def test_relative_and_absolute_apex_flags_agree(capsys):
+    rel = ["--apex-height-l0", "1.1", "--froude", "1.2"]
+    absolute = ["--apex-height", str(1.1 * 0.25), "--apex-speed", str(1.2 * math.sqrt(9.81 * 0.25))]
+    rows = []
+    for flags in (rel, absolute):
+        argv = [
+            "compare",
+            "--no-plot",
+            "--json",
+            "--against",
+            "geyer",
+            "--l0",
+            "0.25",
+            "--m",
+            "3",
+            "--k",
+            "1500",
+        ]
+        assert main([*argv, *flags]) == 0
+        rows.append(json.loads(capsys.readouterr().out)["touchdown"])
+    assert rows[0] == pytest.approx(rows[1], rel=1e-14)
+    with pytest.raises(SystemExit) as exc:
+        build_parser().parse_args(["compare", "--apex-height", "1", "--apex-height-l0", "1"])
+    assert exc.value.code == 2
+
+
+def test_help_shows_the_scaled_defaults_and_which_flags_are_absolute():
+    text = " ".join(build_parser()._subparsers._group_actions[0].choices["compare"].format_help().split())
+    for needle in ("--apex-height-l0", "units of l0 (default 1.0", "--froude", "(default 1.596", "absolute"):
+        assert needle in text
+    assert "0.495 rad for the robot hopper" in text
+
+
+# --- plain numbers and names in messages, strings are not numbers -----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("call", "needle"),
+    [
+        (
+            lambda: slipmaps.apex_return("geyer", P, np.float64("nan"), 5.0, 0.35),
+            "apex_height must be finite, got nan",
+        ),
+        (
+            lambda: slipmaps.apex_return("geyer", P, 1.0, np.float64(-1), 0.35),
+            "apex_speed must not be negative, got -1.0",
+        ),
+        (
+            lambda: slipmaps.stance("geyer", P, np.array([1.0, np.nan, 0.3, -4])),
+            "touchdown q_rd must be finite, got nan",
+        ),
+        (
+            lambda: slipmaps.trajectory("geyer", P, (1, -1, 0.3, -4), t=[0.0, np.nan]),
+            "t[1] must be finite, got nan",
+        ),
+        (lambda: slipmaps.SlipParams(m=np.float64(-1)), "SlipParams.m must be finite and positive, got -1.0"),
+        (
+            lambda: slipmaps.stance("gravity-type2", P, (1, -1, 0.3, -4), tol=np.float64("nan")),
+            "'tol' must be finite, got nan",
+        ),
+    ],
+)
+def test_messages_show_plain_numbers_and_names(call, needle):
+    with pytest.raises(ValueError) as exc:
+        call()
+    assert needle in str(exc.value) and "np." not in str(exc.value) and "float64" not in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: slipmaps.apex_return("geyer", P, "1.0", 5.0, 0.35),
+        lambda: slipmaps.apex_return("geyer", P, b"1.0", 5.0, 0.35),
+        lambda: slipmaps.stance("geyer", P, ("1.0", -1.5, 0.35, -4.5)),
+        lambda: slipmaps.stance_batch("geyer", P, np.array([["1.0", "-1.5", "0.35", "-4.5"]])),
+        lambda: slipmaps.apex_return_batch("geyer", P, ["1.0"], 5.0, 0.35),
+        lambda: slipmaps.trajectory("geyer", P, (1.0, -1.5, 0.35, -4.5), t=["0.01"]),
+        lambda: slipmaps.SlipParams(g_s="9.81"),
+        lambda: slipmaps.stance("gravity-type2", P, (1.0, -1.5, 0.35, -4.5), tol="1e-3"),
+    ],
+)
+def test_strings_are_not_numbers(call):
+    with pytest.raises(TypeError, match="must (be|hold) (a )?(real )?number"):
+        call()
+
+
+# --- python -m slipmaps, --version, help texts, README ------------------------------------------
+
+
+def test_python_m_slipmaps_and_version():
+    done = subprocess.run(
+        [sys.executable, "-m", "slipmaps", "--version"], capture_output=True, text=True, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+    assert re.fullmatch(r"slipmaps \S+( \(not installed\))?\n", done.stdout)
+
+
+def test_every_subcommand_has_a_description():
+    subparsers = build_parser()._subparsers._group_actions[0].choices
+    assert set(subparsers) >= {"maps", "compare", "generate", "equations", "accuracy"}
+    for name, parser in subparsers.items():
+        assert parser.description and len(parser.description) > 40, name
+
+
+def test_readme_names_importable_modules_and_cites_the_report_by_title():
+    text = (ROOT / "README.md").read_text()
+    assert "stance_maps" not in text
+    for dotted in sorted(set(re.findall(r"(?<![\w/.])slipmaps(?:\.[A-Za-z_]\w*)+", text))):
+        parts = dotted.split(".")
+        module = next(
+            ".".join(parts[:n])
+            for n in range(len(parts), 0, -1)
+            if importlib.util.find_spec(".".join(parts[:n]))
+        )
+        obj = importlib.import_module(module)
+        for attr in parts[len(module.split(".")) :]:
+            obj = getattr(obj, attr)  # AttributeError names what the README got wrong
+    flat = " ".join(text.split())
+    assert "SLIP: Approximate Stance Map for Nonsymmetric Motions and Variable Stiffness" in flat
+    assert not re.search(r"\S+\.(pdf|tex)\b", text), "the report is cited by its title, not a path"
+    assert "NUMBA_CACHE_DIR" in text
+
+
+# --- where `slipmaps accuracy` writes -------------------------------------------------------------
+
+
+@pytest.fixture
+def no_measuring(monkeypatch):
+    """Record where `slipmaps accuracy` would write instead of measuring (about 40 s of CPU)."""
+    from slipmaps.runtime import accuracy_report
+
+    calls = []
+    monkeypatch.setattr(
+        accuracy_report, "write", lambda out, names, show_progress=None: calls.append(out) or []
+    )
+    return calls
+
+
+def test_accuracy_writes_into_the_checkouts_docs_from_any_directory(tmp_path, monkeypatch, no_measuring):
+    assert checkout.docs_dir() == ROOT / "docs"
+    monkeypatch.chdir(tmp_path)
+    assert main(["accuracy"]) == 0
+    assert no_measuring == [ROOT / "docs" / "accuracy.md"]
+    assert not (tmp_path / "docs").exists()
+
+
+def test_accuracy_outside_a_checkout_needs_out(tmp_path, monkeypatch, no_measuring, capsys):
+    installed = tmp_path / "site-packages" / "slipmaps" / "runtime"
+    installed.mkdir(parents=True)
+    assert checkout.checkout_root(installed) is None
+    monkeypatch.setattr(checkout, "docs_dir", lambda: None)
+    monkeypatch.chdir(tmp_path)
+    assert main(["accuracy"]) == 2
+    _one_line_error(capsys, "give --out DIR")
+    assert no_measuring == []
+    assert main(["accuracy", "--out", "reports"]) == 0
+    assert main(["accuracy", "--map", "geyer", "--out", "r/geyer.md"]) == 0
+    assert no_measuring == [Path("reports") / "accuracy.md", Path("r/geyer.md")]
