@@ -31,6 +31,7 @@ from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import flight_kernels
 from .render import render
 from .status import STATUS_CODES
+from .tangent import Differentiator
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
@@ -70,12 +71,38 @@ def _callee_modules(mod: Module) -> set[str]:
     return found - {mod.name}
 
 
+def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
+    """The Jacobian kernels of every map (:meth:`MapSpec.jacobian_kernels`) and of the kernels they
+    call, one module ``<module>_jacobian`` per module of the differentiated kernels."""
+    diff = Differentiator()
+    for spec in all_maps():
+        spec.jacobian_kernels(diff, flights)
+    by_module: dict[str, list] = {}
+    for kernel in diff.kernels.values():
+        by_module.setdefault(kernel.module, []).append(kernel)
+    sources = {m.name: m for m in primal}
+    out = []
+    for name, kernels in by_module.items():
+        base = sources[name.removesuffix("_jacobian")]
+        out.append(
+            Module(
+                name=name,
+                doc=f"Derivatives of module {base.name}'s kernels (forward mode, derive/tangent.py): "
+                f"{base.doc[0].lower()}{base.doc[1:]}",
+                source=base.source,
+                kernels=lambda kernels=tuple(kernels): kernels,
+            )
+        )
+    return tuple(out)
+
+
 def modules() -> tuple[Module, ...]:
     """Every generated kernel module, callees before callers (otherwise model, maps in report
-    order, halves)."""
+    order, their Jacobians, halves)."""
     flights = flight_kernels()
     maps = tuple(spec.module(flights) for spec in all_maps())
-    pending = list(MODEL_MODULES + maps + tuple(half.module() for half in all_halves()))
+    jacobians = _jacobian_modules(MODEL_MODULES + maps, flights)
+    pending = list(MODEL_MODULES + maps + jacobians + tuple(half.module() for half in all_halves()))
     needs = {mod.name: _callee_modules(mod) for mod in pending}
     done: list[Module] = []
     while pending:

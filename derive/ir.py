@@ -160,6 +160,10 @@ class Iterate:
     exactly ``max_iter`` passes; with ``max_iter = 0`` none (the initial values stand, no failure).
     After the loop only the state variables and ``count`` (the number of passes, a float) are
     visible.
+
+    ``carry`` holds variables updated every pass but outside the convergence test, each as
+    ``(variable, initial value, update)``: the derivatives a Jacobian kernel carries through the
+    iteration (:mod:`.tangent`). They are visible after the loop like the state.
     """
 
     state: tuple[tuple[sp.Symbol, sp.Basic], ...]
@@ -171,6 +175,7 @@ class Iterate:
     count: sp.Symbol
     fail_status: str | None = "NOT_CONVERGED"
     comment: str = ""
+    carry: tuple[tuple[sp.Symbol, sp.Basic, sp.Basic], ...] = ()
 
     def __post_init__(self):
         if not len(self.update) == len(self.scales) == len(self.state):

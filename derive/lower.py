@@ -220,14 +220,14 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
 
 def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
     where = f"step {idx} (iteration)"
-    for s, init in it.state:
+    for s, init in (*it.state, *((c[0], c[1]) for c in it.carry)):
         ctx.require(init, f"{where}, initial value of {s.name}")
     for e, what in ((it.max_iter, "max_iter"), (it.tol, "tol"), *((s, "a scale") for s in it.scales)):
         ctx.require(e, f"{where}, {what}")
     n = ctx.loops
     ctx.loops += 1
     state = []
-    for s, init in it.state:
+    for s, init in (*it.state, *((c[0], c[1]) for c in it.carry)):
         ctx.scope.define(s.name, ctx.where(where))
         state.append({"name": s.name, "code": to_code(init)})
     ctx.scope.define(it.count.name, ctx.where(where))
@@ -236,7 +236,12 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
     updates = []
     for k, ((s, _), e, scale) in enumerate(zip(it.state, it.update, it.scales, strict=True)):
         ctx.require(e, f"{where}, update of {s.name}")
-        updates.append({"tmp": f"_n{n}_{k}", "name": s.name, "code": to_code(e), "scale": to_code(scale)})
+        updates.append(
+            {"tmp": f"_n{n}_{k}", "name": s.name, "code": to_code(e), "scale": to_code(scale), "check": True}
+        )
+    for k, (s, _, e) in enumerate(it.carry, start=len(it.state)):
+        ctx.require(e, f"{where}, update of {s.name}")
+        updates.append({"tmp": f"_n{n}_{k}", "name": s.name, "code": to_code(e), "scale": "", "check": False})
     ctx.scope.frames.pop()
     if it.fail_status is not None and not ctx.kernel.status:
         raise LoweringError(ctx.where(f"{where}: a failing iteration needs a status output"))

@@ -27,6 +27,7 @@ import sympy as sp
 
 from . import catalog
 from .ir import STATUS, Arg, Batch, Call, Field, Group, Guard, Kernel, Module, Stage, Step, real, sym
+from .tangent import Differentiator
 
 
 @dataclass(frozen=True)
@@ -333,6 +334,45 @@ class MapSpec:
             module=self.ident,
         )
 
+    # -- derivatives ---------------------------------------------------------------------------
+    def stiffness(self) -> tuple[str, ...]:
+        """The map's stiffness parameters (``k``, or ``k_c`` and ``k_d``), in argument order."""
+        return tuple(a.name for a in self.param_args() if a.name in ("k", "k_c", "k_d"))
+
+    def stance_wrt(self) -> tuple[str, ...]:
+        """What the stance Jacobian differentiates with respect to: the touchdown state, the stiffness."""
+        return tuple(a.name for a in catalog.TOUCHDOWN) + self.stiffness()
+
+    def apex_wrt(self) -> tuple[str, ...]:
+        """What the apex-return Jacobian differentiates with respect to: apex height and speed,
+        touchdown angle, the stiffness."""
+        return tuple(a.name for a in catalog.APEX_ARGS) + self.stiffness()
+
+    def jacobian_kernels(
+        self, diff: Differentiator, flight_kernels: Mapping[str, Kernel]
+    ) -> tuple[Kernel, ...]:
+        """``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (with batch forms), built by
+        forward-mode differentiation (:mod:`.tangent`) into module ``<ident>_jacobian``; the kernels
+        they call land in ``diff.kernels``. The stance one is built first, so that the apex-return
+        kernel's call of the stance (same arguments active) reuses it."""
+        stance = diff.jacobian(
+            self.stance_kernel(),
+            self.stance_wrt(),
+            name=self.kernel_name("stance_jacobian"),
+            summary=f"{self.title}: stance outputs and their derivatives with respect to the touchdown "
+            "state and the stiffness.",
+            batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
+        )
+        apex = diff.jacobian(
+            self.apex_return_kernel(flight_kernels),
+            self.apex_wrt(),
+            name=self.kernel_name("apex_return_jacobian"),
+            summary=f"Apex-return map by {self.title}, and its derivatives with respect to the apex, "
+            "the touchdown angle and the stiffness.",
+            batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+        )
+        return stance, apex
+
     def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
         state_at = self.state_at_kernel()
         main = (self.stance_kernel(),) + ((state_at,) if state_at else ())
@@ -366,7 +406,12 @@ class MapSpec:
                 "stance": stance.name,
                 "state_at": state_at.name if state_at else None,
                 "apex_return": self.kernel_name("apex_return"),
+                "stance_jacobian": self.kernel_name("stance_jacobian"),
+                "apex_return_jacobian": self.kernel_name("apex_return_jacobian"),
             },
+            "jacobian_module": f"{self.ident}_jacobian",
+            "stance_wrt": list(self.stance_wrt()),
+            "apex_wrt": list(self.apex_wrt()),
             "stance_args": list(stance.arg_names),
             "apex_args": [a.name for a in self.apex_args()],
             "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],

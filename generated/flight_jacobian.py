@@ -1,0 +1,177 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/model/flight.py
+# Template:  derive/templates/kernels.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# ----------------------------------------------------------------------------------------------
+"""Derivatives of module flight's kernels (forward mode, derive/tangent.py): exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+NAN = math.nan
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
+
+
+@njit(cache=True, error_model="numpy")
+def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan):
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan).
+
+    Report equations: sec2.1-touchdown, sec2.2.2.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
+    an iteration, of the iterate it stops at.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground [m], >= 0
+        b_xd_apex: horizontal apex speed [m/s]
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_r_td: touchdown leg length [m], > 0
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
+        b_xd_apex__tan: direction: change of horizontal apex speed [m/s]
+        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+
+    Returns a tuple:
+        touchdown_q_r: leg length [m]
+        touchdown_q_rd: leg length rate [m/s]
+        touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        touchdown_q_thd: leg angle rate [rad/s]
+        t_flight: time from the apex to touchdown [s]
+        touchdown_q_r__tan: derivative of touchdown_q_r along the direction
+        touchdown_q_rd__tan: derivative of touchdown_q_rd along the direction
+        touchdown_q_th__tan: derivative of touchdown_q_th along the direction
+        touchdown_q_thd__tan: derivative of touchdown_q_thd along the direction
+        t_flight__tan: derivative of t_flight along the direction
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 48
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    drop = b_y_apex - q_r_td*math.cos(q_th_td)
+    drop__tan = b_y_apex__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
+    # touchdown height below apex
+    if not ((drop > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+    # touchdown state from the derived Cartesian -> polar map
+    _x0 = math.sin(q_th_td)
+    _x1 = math.cos(q_th_td)
+    _x2 = math.sqrt(g_f)
+    _x3 = math.sqrt(2.0)
+    _x4 = math.sqrt(drop)
+    _x5 = _x3*_x4
+    _x6 = _x0*b_xd_apex + _x1*_x2*_x5
+    _x7 = (0.5)*_x3*drop__tan/_x4
+    _x8 = _x2*_x7
+    _x9 = _x0*_x2*_x3*_x4 - _x1*b_xd_apex
+    _x10 = (1.0/q_r_td)
+    _x11 = (1.0/_x2)
+    touchdown_q_r = q_r_td
+    touchdown_q_rd = -_x6
+    touchdown_q_rd__tan = -_x0*b_xd_apex__tan - _x1*_x8 + _x9*q_th_td__tan
+    touchdown_q_th = q_th_td
+    touchdown_q_th__tan = q_th_td__tan
+    touchdown_q_thd = _x10*_x9
+    touchdown_q_thd__tan = _x0*_x10*_x8 - _x1*_x10*b_xd_apex__tan + _x10*_x6*q_th_td__tan
+    t_flight = _x11*_x5
+    t_flight__tan = _x11*_x7
+    # derivatives that are identically zero
+    touchdown_q_r__tan = 0.0
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(touchdown_q_r__tan) and math.isfinite(touchdown_q_rd__tan) and math.isfinite(touchdown_q_th__tan) and math.isfinite(touchdown_q_thd__tan) and math.isfinite(t_flight__tan)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__tan, q_rd__tan, q_th__tan, q_thd__tan):
+    """Ballistic ascent from a polar liftoff state to the next apex, with the derivative of every output along the direction (q_r__tan, q_rd__tan, q_th__tan, q_thd__tan).
+
+    Report equations: sec2.1-apex, sec2.2.2.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
+    an iteration, of the iterate it stops at.
+
+    Arguments:
+        q_r: liftoff leg length q_r [m], > 0
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        q_r__tan: direction: change of liftoff leg length q_r [m], > 0
+        q_rd__tan: direction: change of leg length rate q_rd [m/s]
+        q_th__tan: direction: change of leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd__tan: direction: change of leg angle rate q_thd [rad/s]
+
+    Returns a tuple:
+        apex_b_y: next apex height above the ground [m]
+        apex_b_xd: next apex horizontal speed [m/s]
+        t_flight: time from liftoff to the apex [s]
+        dx_flight: horizontal distance travelled from liftoff to the apex [m]
+        apex_b_y__tan: derivative of apex_b_y along the direction
+        apex_b_xd__tan: derivative of apex_b_xd along the direction
+        t_flight__tan: derivative of t_flight along the direction
+        dx_flight__tan: derivative of dx_flight along the direction
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 48
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and ((q_r > 0.0)) and ((g_f > 0.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # Cartesian liftoff state relative to the toe
+    _x0 = math.sin(q_th)
+    _x1 = _x0*q_r
+    _x2 = _x0*q_r__tan
+    _x3 = math.cos(q_th)
+    _x4 = _x3*q_r
+    _x5 = -_x0*q_rd - _x4*q_thd
+    _x6 = _x1*q_thd - _x3*q_rd
+    b_x = -_x1
+    b_x__tan = -_x2 - _x4*q_th__tan
+    b_xd = _x5
+    b_xd__tan = -_x0*q_rd__tan - _x3*q_r__tan*q_thd - _x4*q_thd__tan + _x6*q_th__tan
+    b_y = _x4
+    b_y__tan = -_x1*q_th__tan + _x3*q_r__tan
+    b_yd = -_x6
+    b_yd__tan = -_x1*q_thd__tan - _x2*q_thd + _x3*q_rd__tan + _x5*q_th__tan
+    # liftoff requires an upward velocity
+    if not ((b_yd > 0.0)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+    # the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait
+    if not ((b_xd >= -1e-09*math.sqrt(g_f*q_r))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+    # apex where b_yd(t) = 0
+    _x7 = (1.0/g_f)
+    _x8 = _x7*b_yd
+    _x9 = _x7*b_yd__tan
+    apex_b_y = (0.5)*_x7*b_yd**2 + b_y
+    apex_b_y__tan = _x8*b_yd__tan + b_y__tan
+    apex_b_xd = b_xd
+    apex_b_xd__tan = b_xd__tan
+    t_flight = _x8
+    t_flight__tan = _x9
+    dx_flight = _x8*b_xd
+    dx_flight__tan = _x8*b_xd__tan + _x9*b_xd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight) and math.isfinite(apex_b_y__tan) and math.isfinite(apex_b_xd__tan) and math.isfinite(t_flight__tan) and math.isfinite(dx_flight__tan)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, STATUS_OK)
