@@ -90,6 +90,13 @@ def maps_page(index: dict) -> str:
             f"- generated module `slipmaps.generated.{row['module']}`: "
             + ", ".join(f"`{k}`" for k in row["kernels"].values() if k),
         ]
+        jac = row.get("jacobian")
+        if jac:
+            out.append(
+                f"- Jacobians in `slipmaps.generated.{jac['module']}`: `{jac['stance']}` (with respect to "
+                f"{', '.join(f'`{a}`' for a in jac['stance_wrt'])}), `{jac['apex_return']}` (with respect "
+                f"to {', '.join(f'`{a}`' for a in jac['apex_wrt'])})"
+            )
         if row["as_printed"]:
             out.append(
                 "- as printed: reproduces the report's formulas, errors included, to measure them; "

@@ -153,14 +153,13 @@ class Differentiator:
         steps = Outliner(name, module, self._add).steps(
             steps, list(kernel.outputs.names()) + [f.name for f in fields]
         )
-        by_name = {a.name: a for a in kernel.args}
         out = Kernel(
             name=name,
             summary=f"{kernel.summary.rstrip('.')}, with the derivative of every output along the "
             f"direction ({', '.join(tangent_name(a) for a in active)}).",
             equations=kernel.equations,
             args=kernel.args
-            + tuple(Arg(sym(tangent_name(a)), f"direction: change of {by_name[a].doc}") for a in active),
+            + tuple(Arg(sym(tangent_name(a)), f"direction: its component along {a}") for a in active),
             steps=steps,
             outputs=Group("", kernel.outputs.items + fields),
             status=kernel.status,

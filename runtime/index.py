@@ -88,6 +88,9 @@ class MapInfo:
     summary: str = ""
     module: str | None = None
     kernels: dict | None = None
+    #: The generated Jacobian kernels: module, kernel per role ("stance", "apex_return") and the
+    #: kernel arguments each differentiates with respect to ("stance_wrt", "apex_wrt").
+    jacobian: dict | None = None
     extras: tuple[str, ...] = ()
     #: Reproduces the report's printed formulas, errors included: no accuracy claim.
     as_printed: bool = False
@@ -186,6 +189,7 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         summary=r["summary"],
         module=r["module"],
         kernels=dict(r["kernels"]) if r["kernels"] else None,
+        jacobian=dict(r["jacobian"]) if r.get("jacobian") else None,
         extras=tuple(e["name"] for e in r["extras"]),
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),

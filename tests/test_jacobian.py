@@ -1,0 +1,183 @@
+"""Jacobians of every map (slipmaps.stance_jacobian / apex_return_jacobian) against central differences.
+
+Generated maps: forward-mode derivatives of the declaration (derive/tangent.py); "exact": the
+variational equations of the compiled simulator composed with the flights' derivatives.
+
+Agreement measure: per entry (|J - FD| - noise) / (|FD| + 1e-6 of the column's largest FD entry),
+where noise = e max(|f|, 1) / h is the difference quotient's own error for a value f with relative
+error e (100 eps for the generated maps, 1e-10 = ten times the integration tolerance for "exact"),
+so that entries that are zero analytically (the liftoff leg length against anything) pass when the
+quotient is noise.
+
+Step h = 1e-6 of each input (1e-4 for "exact", whose values carry the integration's 1e-11 relative
+error; the apex height and speed, the touchdown state: of max(1, |x|); the stiffness: of itself).
+Measured on the human runner (k = 20 kN/m; k_c = 20, k_d = 24 kN/m where a map takes both),
+2026-11-23: apex-return Jacobians of every generated map 0 (within the quotient's noise), "exact"
+3.1e-8; stance Jacobians up to 4.4e-6 for the generated maps (gravity-type3's d liftoff_q_rd / d k,
+an entry of -2e-7 (m/s) per N/m where the iterated map's round-off exceeds the 100 eps allowance;
+the others <= 1.9e-6) and 1.3e-7 for "exact" (the quotient's O(h^2) error).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+import slipmaps
+
+P = slipmaps.HUMAN_RUNNER
+VS = slipmaps.SlipParams(m=80.0, l0=1.0, k_c=20_000.0, k_d=24_000.0)
+EPS = np.finfo(float).eps
+REL_STEP = {"exact": 1e-4}  # else 1e-6: the exact values carry a 1e-11 relative integration error
+#: Bounds from the measurement in the module docstring (about 4x the largest measured value).
+BOUND = {"exact": 5e-7}
+BOUND_GENERATED = 2e-5
+#: Relative error of a value, as seen by a difference quotient: round-off, or for "exact" ten times
+#: its integration tolerance (rtol 1e-11).
+NOISE = {"exact": 1e-10}
+
+NAMES = [m.name for m in slipmaps.maps()]
+#: A symmetric and a nonsymmetric touchdown (q_r, q_rd, q_th, q_thd) of the human runner.
+TOUCHDOWNS = [(1.0, -1.55, 0.35, -4.6), (0.99, -1.2, 0.30, -5.2)]
+
+
+def _stiffness_params(params: slipmaps.SlipParams, name: str, x: float) -> slipmaps.SlipParams:
+    if name == "k":
+        return dataclasses.replace(params, k_c=x, k_d=x)
+    return dataclasses.replace(params, **{name: x})
+
+
+def _params_for(name: str) -> slipmaps.SlipParams:
+    info = next(m for m in slipmaps.maps() if m.name == name)
+    return P if "constant_stiffness" in info.requires else VS
+
+
+def _compare(name, jac, quotient, values, steps) -> float:
+    """The largest disagreement (module docstring) of a Jacobian with difference quotients."""
+    fd = np.array(quotient)
+    # the difference quotient's own noise: round-off, or the integration's error for "exact"
+    noise = NOISE.get(name, 100 * EPS) * np.maximum(np.abs(values), 1.0)[:, None] / np.asarray(steps)[None, :]
+    scale = np.abs(fd) + 1e-6 * np.max(np.abs(fd), axis=0, keepdims=True)
+    return float(np.max(np.maximum(np.abs(jac.matrix - fd) - noise, 0.0) / scale))
+
+
+def _central(f, x0: tuple, j: int, h: float, outputs) -> np.ndarray:
+    up, down = list(x0), list(x0)
+    up[j] += h
+    down[j] -= h
+    a, b = f(*up), f(*down)
+    assert a.ok and b.ok, (a.message, b.message)
+    return np.array([(a[o] - b[o]) / (2 * h) for o in outputs])
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_apex_return_jacobian_matches_central_differences(name):
+    params = _params_for(name)
+    point = (1.0, 5.0, 0.35)
+    jac = slipmaps.apex_return_jacobian(name, params, *point)
+    assert jac.ok, jac.message
+    assert jac.inputs[:3] == ("apex_height", "apex_speed", "touchdown_angle")
+    columns, steps = [], []
+    for j, inp in enumerate(jac.inputs):
+        if j < 3:
+            h = REL_STEP.get(name, 1e-6) * max(1.0, abs(point[j]))
+            columns.append(
+                _central(lambda *x: slipmaps.apex_return(name, params, *x), point, j, h, jac.outputs)
+            )
+        else:
+            k = getattr(params, "k_c" if inp == "k" else inp)
+            h = REL_STEP.get(name, 1e-6) * k
+
+            def step(x, inp=inp):
+                return slipmaps.apex_return(name, _stiffness_params(params, inp, x), *point)
+
+            columns.append(_central(step, (k,), 0, h, jac.outputs))
+        steps.append(h)
+    values = np.array([jac.values[o] for o in jac.outputs])
+    err = _compare(name, jac, np.array(columns).T, values, steps)
+    assert err <= BOUND.get(name, BOUND_GENERATED), f"{name}: {err:.2e}"
+
+
+@pytest.mark.parametrize("touchdown", TOUCHDOWNS)
+@pytest.mark.parametrize("name", NAMES)
+def test_stance_jacobian_matches_central_differences(name, touchdown):
+    params = _params_for(name)
+    jac = slipmaps.stance_jacobian(name, params, touchdown)
+    assert jac.ok, jac.message
+    assert jac.inputs[:4] == ("q_r_td", "q_rd_td", "q_th_td", "q_thd_td")
+    columns, steps = [], []
+    for j, inp in enumerate(jac.inputs):
+        if j < 4:
+            # q_r_td = l0 cannot be moved up (q_r > l0 is invalid): a one-sided quotient there
+            h = REL_STEP.get(name, 1e-6) * max(1.0, abs(touchdown[j]))
+            if j == 0 and touchdown[0] + h > params.l0:
+                below = list(touchdown)
+                below[0] -= h
+                a = slipmaps.stance(name, params, touchdown)
+                b = slipmaps.stance(name, params, below)
+                two = list(below)
+                two[0] -= h
+                c = slipmaps.stance(name, params, two)
+                columns.append(np.array([(3 * a[o] - 4 * b[o] + c[o]) / (2 * h) for o in jac.outputs]))
+            else:
+                columns.append(
+                    _central(lambda *x: slipmaps.stance(name, params, x), touchdown, j, h, jac.outputs)
+                )
+        else:
+            k = getattr(params, "k_c" if inp == "k" else inp)
+            h = REL_STEP.get(name, 1e-6) * k
+
+            def stance(x, inp=inp):
+                return slipmaps.stance(name, _stiffness_params(params, inp, x), touchdown)
+
+            columns.append(_central(stance, (k,), 0, h, jac.outputs))
+        steps.append(h)
+    values = np.array([jac.values[o] for o in jac.outputs])
+    err = _compare(name, jac, np.array(columns).T, values, steps)
+    # the one-sided quotient at q_r_td = l0 has an O(h^2) error of its own (measured <= 3e-7)
+    assert err <= BOUND.get(name, BOUND_GENERATED), f"{name}: {err:.2e}"
+
+
+@pytest.mark.parametrize("name", ["geyer", "gravity-type4", "geyer-vs", "exact"])
+def test_jacobian_values_are_the_maps_and_batches_equal_scalars(name):
+    params = _params_for(name)
+    speeds = np.array([4.0, 5.0, 6.0, np.nan])
+    batch = slipmaps.apex_return_jacobian_batch(name, params, 1.0, speeds, 0.35)
+    assert batch.matrix.shape == (4, len(batch.outputs), len(batch.inputs))
+    assert list(batch.status[:3]) == [0, 0, 0]
+    assert batch.status[3] == int(slipmaps.Status.INVALID_INPUT) and np.isnan(batch.matrix[3]).all()
+    for i, v in enumerate(speeds[:3]):
+        one = slipmaps.apex_return_jacobian(name, params, 1.0, v, 0.35)
+        np.testing.assert_array_equal(batch.matrix[i], one.matrix)
+        step = slipmaps.apex_return(name, params, 1.0, v, 0.35)
+        for o in one.outputs:
+            # the Jacobian kernel recomputes the values with its own operation order: round-off only
+            assert one.values[o] == pytest.approx(step[o], rel=1e-12, abs=1e-12)
+    td = np.array(TOUCHDOWNS)
+    sb = slipmaps.stance_jacobian_batch(name, params, td)
+    for i, row in enumerate(td):
+        np.testing.assert_array_equal(sb.matrix[i], slipmaps.stance_jacobian(name, params, row).matrix)
+
+
+def test_stiffness_columns_add_up_at_equal_stiffness():
+    """At k_c = k_d, geyer-vs is Geyer et al.'s map: its d/dk_c + d/dk_d is Geyer's d/dk, and the
+    exact map's sum is the derivative along k."""
+    vs = slipmaps.apex_return_jacobian("geyer-vs", P, 1.0, 5.0, 0.35)
+    geyer = slipmaps.apex_return_jacobian("geyer", P, 1.0, 5.0, 0.35)
+    for o in geyer.outputs:
+        assert vs[o, "k_c"] + vs[o, "k_d"] == pytest.approx(geyer[o, "k"], rel=1e-9, abs=1e-18)
+        assert vs[o, "apex_height"] == pytest.approx(geyer[o, "apex_height"], rel=1e-9, abs=1e-15)
+
+
+def test_jacobian_indexing_failures_and_scipy_refusal():
+    jac = slipmaps.stance_jacobian("exact", P, TOUCHDOWNS[1])
+    assert jac["liftoff", "touchdown"].shape == (4, 4)
+    assert jac["t_stance", "k_d"] == jac.matrix[jac.outputs.index("t_stance"), jac.inputs.index("k_d")]
+    with pytest.raises(KeyError, match="not among"):
+        jac["apex_height", "k_d"]
+    with pytest.raises(ValueError, match="method='scipy' has none"):
+        slipmaps.stance_jacobian("exact", P, TOUCHDOWNS[1], method="scipy")
+    bad = slipmaps.apex_return_jacobian("geyer", P, 0.5, 5.0, 0.35)  # apex below touchdown height
+    assert bad.status == slipmaps.Status.APEX_TOO_LOW and np.isnan(bad.matrix).all()
+    assert not bad.result.ok
