@@ -10,7 +10,10 @@ Subcommands:
   half);
 - ``accuracy [--map NAME|all]``: every map against the exact simulator on the accuracy grids,
   written to docs/accuracy.md (+ .json, .png), with the convergence study of the iterative maps
-  (docs/convergence.md) and the variable-stiffness study over k_d/k_c (docs/stiffness.md);
+  (docs/convergence.md), the variable-stiffness study over k_d/k_c (docs/stiffness.md) and the
+  periodic gaits' fixed points and stability (docs/stability.md);
+- ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
+  apex-return map and their eigenvalues (runtime/gait_cli.py);
 - ``equations [--json]``: run the symbolic check of every registered report equation;
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale).
@@ -153,10 +156,14 @@ def build_parser() -> argparse.ArgumentParser:
         "--map",
         default="all",
         help="a map name, or 'all' (default): all maps, written to docs/accuracy.md (and beside it "
-        "docs/convergence.md, docs/stiffness.md)",
+        "docs/convergence.md, docs/stiffness.md, docs/stability.md)",
     )
     acc.add_argument("--out", default=None, help="markdown path (default docs/accuracy.md for all maps)")
     acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+
+    from .gait_cli import add_parser as add_gait
+
+    add_gait(sub)
     return parser
 
 
@@ -239,6 +246,12 @@ def _cmd_accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_gait(args: argparse.Namespace) -> int:
+    from .gait_cli import run
+
+    return run(args)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -248,6 +261,7 @@ def main(argv: list[str] | None = None) -> int:
         "generate": _cmd_generate,
         "equations": _cmd_equations,
         "accuracy": _cmd_accuracy,
+        "gait": _cmd_gait,
     }
     try:
         return handlers[args.command](args)
