@@ -227,6 +227,10 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
         "",
         f"![next-apex error]({figure_name})",
         "",
+        "Beside this report: docs/convergence.md (the iterative maps' passes), docs/stiffness.md "
+        "(k_d != k_c) and docs/stability.md (periodic gaits: each map's fixed points and eigenvalues "
+        "against the exact ones, the self-stable region).",
+        "",
         "## Findings",
         "",
         *findings(summary),
@@ -332,8 +336,9 @@ def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
     """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
     ``out`` (+ .json, .png) and beside it, where iterative maps are measured, the convergence study
     (convergence.md, .json, .png; runtime/convergence.py) and, where maps that accept k_c != k_d are
-    measured, the variable-stiffness study (stiffness.md, .json, .png; runtime/stiffness.py)."""
-    from . import convergence, stiffness
+    measured, the variable-stiffness study (stiffness.md, .json, .png; runtime/stiffness.py), and the
+    periodic-gait study (stability.md, .json, .png; runtime/stability.py)."""
+    from . import convergence, stability, stiffness
 
     names = None
     if map_names is not None:
@@ -362,4 +367,6 @@ def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
         stem.write_text(render(from_json(text), stem.with_suffix(".png").name), encoding="utf-8")
         written += [stem, js, draw(runs, stem.with_suffix(".png"))]
     stiff = md.with_name("stiffness.md" if map_names is None else f"stiffness_{md.stem}.md")
-    return written + stiffness.write(stiff, names, show_progress=show_progress)
+    written += stiffness.write(stiff, names, show_progress=show_progress)
+    gaits = md.with_name("stability.md" if map_names is None else f"stability_{md.stem}.md")
+    return written + stability.write(gaits, names, show_progress=show_progress)

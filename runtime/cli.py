@@ -16,8 +16,11 @@ Subcommands (``slipmaps --version`` prints the installed version):
   flight phase...: its status and message under the table, ``n/a`` in its cells), 2 for a user error;
 - ``accuracy [--map NAME|all] [--out DIR]``: every map against the exact simulator on the accuracy
   grids, written as accuracy.md (+ .json, .png) with the convergence study of the iterative maps
-  (convergence.md) and the variable-stiffness study over k_d/k_c (stiffness.md): into the checkout's
-  docs/ when slipmaps runs from a source checkout, else into ``--out DIR`` (required there);
+  (convergence.md), the variable-stiffness study over k_d/k_c (stiffness.md) and the periodic
+  gaits' fixed points and stability (stability.md): into the checkout's docs/ when slipmaps runs
+  from a source checkout, else into ``--out DIR`` (required there);
+- ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
+  apex-return map and their eigenvalues (runtime/gait_cli.py);
 - ``equations [--json]``: run the symbolic check of every registered report equation;
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale); a source checkout only.
@@ -313,14 +316,15 @@ def build_parser() -> argparse.ArgumentParser:
         "accuracy",
         help="every map against the exact simulator on the accuracy grids",
         description="Measure every map (or one) against the exact simulator on the accuracy grids and "
-        "write accuracy.md (+ .json, .png), convergence.md and stiffness.md (+ .json, .png): into the "
+        "write accuracy.md (+ .json, .png), convergence.md, stiffness.md and stability.md (+ .json, .png): "
+        "into the "
         "checkout's docs/ when slipmaps runs from a source checkout, else into --out DIR.",
     )
     acc.add_argument(
         "--map",
         default="all",
         help="a map name, or 'all' (default): all maps, written as accuracy.md (and beside it "
-        "convergence.md, stiffness.md); one map: accuracy_<map>.md",
+        "convergence.md, stiffness.md, stability.md); one map: accuracy_<map>.md",
     )
     acc.add_argument(
         "--out",
@@ -330,6 +334,10 @@ def build_parser() -> argparse.ArgumentParser:
         "checkout's docs/, required when slipmaps does not run from a source checkout",
     )
     acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+
+    from .gait_cli import add_parser as add_gait
+
+    add_gait(sub)
     return parser
 
 
@@ -437,6 +445,12 @@ def _cmd_accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_gait(args: argparse.Namespace) -> int:
+    from .gait_cli import run
+
+    return run(args)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -446,6 +460,7 @@ def main(argv: list[str] | None = None) -> int:
         "generate": _cmd_generate,
         "equations": _cmd_equations,
         "accuracy": _cmd_accuracy,
+        "gait": _cmd_gait,
     }
     try:
         return handlers[args.command](args)

@@ -11,6 +11,8 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     res.apex_height, res.apex_speed, res.status
     batch = slipmaps.apex_return_batch("geyer", params, 1.0, speeds, angles)   # arrays broadcast
     batch["apex_height"], batch["status"]
+    gaits = slipmaps.fixed_points("exact", params, apex_height=1.0, speed=5.0)  # periodic gaits
+    gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
 
 Conventions: SI units; leg angle from the vertical, counterclockwise positive; polar state
 ``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
@@ -51,6 +53,8 @@ _EXPORTS = {
     "apex_return_jacobian_batch": "slipmaps.runtime.jacobian",
     "Jacobian": "slipmaps.runtime.jacobian",
     "JacobianBatch": "slipmaps.runtime.jacobian",
+    "fixed_points": "slipmaps.runtime.gait",
+    "FixedPoint": "slipmaps.runtime.gait",
     "Result": "slipmaps.runtime.results",
     "BatchResult": "slipmaps.runtime.results",
     "Status": "slipmaps.generated.status",
