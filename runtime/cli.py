@@ -26,6 +26,7 @@ import argparse
 import json
 import sys
 
+from . import sweep_cli
 from .params import HUMAN_RUNNER, SlipParams
 
 #: The reference of ``compare`` (``"exact"`` in the index; spelled here so that building the parser,
@@ -157,6 +158,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     acc.add_argument("--out", default=None, help="markdown path (default docs/accuracy.md for all maps)")
     acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+    sweep_cli.add_parser(sub)
     return parser
 
 
@@ -248,6 +250,7 @@ def main(argv: list[str] | None = None) -> int:
         "generate": _cmd_generate,
         "equations": _cmd_equations,
         "accuracy": _cmd_accuracy,
+        "sweep": sweep_cli.run,
     }
     try:
         return handlers[args.command](args)
