@@ -96,7 +96,8 @@ class SweepSummary:
             f"sweep of {self.map}: {self.rows_done} of {self.rows} rows ({state}), "
             f"{self.rows_ok} OK ({pct:.1f} %)",
             "  rows by status: " + ", ".join(f"{k} {v}" for k, v in self.counts.items()),
-            f"  this run: {self.chunks_new} chunks, {self.rows_new} rows in {self.seconds:.2f} s"
+            f"  this run: {self.chunks_new} chunk{'' if self.chunks_new == 1 else 's'}, "
+            f"{self.rows_new} rows in {self.seconds:.2f} s"
             + (f" ({self.rate:.3g} rows/s)" if self.rows_new else ""),
             f"  written to {self.out}/" + (f" (all rows: {self.combined})" if self.combined else ""),
         ]

@@ -55,10 +55,11 @@ def compute(sweep: Sweep, index: int) -> Chunk:
 
 
 def _groups(sweep: Sweep, points: dict[str, np.ndarray], n: int):
-    """(row indices, swept parameter values) per distinct parameter set of the rows."""
+    """(rows, swept parameter values) per distinct parameter set; ``rows`` a slice where the set's
+    rows are contiguous (a grid: parameter axes vary slowest), else an index array."""
     names = sweep.param_axes
     if not names:
-        yield np.arange(n), {}
+        yield slice(0, n), {}
         return
     keys = np.column_stack([points[a] for a in names])
     uniq, inverse = np.unique(keys, axis=0, return_inverse=True)
@@ -66,7 +67,10 @@ def _groups(sweep: Sweep, points: dict[str, np.ndarray], n: int):
     ends = np.cumsum(np.bincount(inverse.ravel(), minlength=len(uniq)))
     begin = 0
     for g, end in enumerate(ends):
-        yield order[begin:end], dict(zip(names, map(float, uniq[g]), strict=True))
+        rows = order[begin:end]
+        if rows[-1] - rows[0] + 1 == len(rows):  # ascending (stable sort), so contiguous
+            rows = slice(int(rows[0]), int(rows[-1]) + 1)
+        yield rows, dict(zip(names, map(float, uniq[g]), strict=True))
         begin = end
 
 
@@ -81,8 +85,7 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
     }
     constants = {k: v for k, v in fixed.items() if k not in inputs}
     q_r_from_params = sweep.kind == "stance" and "q_r_td" not in points and "q_r_td" not in fixed
-    outputs = sweep.output_names
-    out = np.full((n, len(outputs)), np.nan, order="F")  # contiguous columns
+    outputs = {name: np.full(n, np.nan) for name in sweep.output_names}
     status = np.full(n, int(Status.INVALID_INPUT), dtype=np.int64)
     opts = dict(sweep.options)
     for rows, values in _groups(sweep, points, n):
@@ -98,9 +101,10 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
         else:
             td = np.column_stack([inputs[q][rows] for q in sweep.input_names])
             res = stance_batch(sweep.map, params, td, progress=False, **opts)
-        out[rows] = np.column_stack([res[name] for name in outputs])
+        for name, column in outputs.items():
+            column[rows] = res[name]
         status[rows] = res["status"]
     cols = {**inputs, **{a: points[a] for a in sweep.param_axes}}
-    cols.update(zip(sweep.output_columns, out.T, strict=True))
+    cols.update(zip(sweep.output_columns, outputs.values(), strict=True))
     cols["status"] = status
     return cols

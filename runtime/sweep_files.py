@@ -106,7 +106,14 @@ def _parquet_bytes(sweep: Sweep, digest: str, chunk: Chunk) -> bytes:
     import pyarrow.parquet as pq
 
     sink = io.BytesIO()
-    pq.write_table(_table(sweep, digest, chunk, metadata=True), sink)
+    # A dictionary only where values repeat (the status names): on the float columns it costs 3x the
+    # time for a larger file (measured on a 262144-row geyer chunk: 0.225 s, 16.7 MB vs 0.073 s, 15.4 MB).
+    pq.write_table(
+        _table(sweep, digest, chunk, metadata=True),
+        sink,
+        use_dictionary=["status_name"],
+        compression="snappy",
+    )
     return sink.getvalue()
 
 

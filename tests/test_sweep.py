@@ -169,6 +169,14 @@ def test_an_interrupted_sweep_resumes_to_the_same_files(tmp_path):
     assert json.loads((tmp_path / "cut" / "summary.json").read_text())["counts"] == rest.counts
 
 
+def test_progress_bar_on_request(tmp_path, capsys):
+    sweep(grid_sweep(), tmp_path / "p", progress=True)
+    err = capsys.readouterr().err
+    assert "sweep geyer: [" in err and "42/42 rows" in err and err.endswith("\n")
+    sweep(grid_sweep(), tmp_path / "q", progress=None)  # not a terminal: no bar
+    assert capsys.readouterr().err == ""
+
+
 def test_a_different_sweep_is_refused(tmp_path):
     sweep(grid_sweep(), tmp_path / "a", max_chunks=1)
     other = Sweep(
