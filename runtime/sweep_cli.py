@@ -10,8 +10,9 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import textwrap
 
-from .sweep_axes import KINDS, quantities
+from .sweep_axes import CHUNK_ROWS_EXACT, CHUNK_ROWS_GENERATED, KINDS, quantities
 
 __all__ = ["add_parser", "run"]
 
@@ -19,6 +20,13 @@ __all__ = ["add_parser", "run"]
 def _epilog() -> str:
     params = ", ".join(n for n, q in quantities("apex_return").items() if q.role == "param")
     kinds = "; ".join(f"{k}: {', '.join(q.name for q in v)}" for k, v in KINDS.items())
+    text = textwrap.fill(
+        "axis SPEC: LOW:HIGH:NUM (a grid; LOW:HIGH:NUM:log spaces it logarithmically), LOW:HIGH (a "
+        f"random sample: uniform), or V1,V2,... (values). Quantities (SI units): the inputs ({kinds}) "
+        f"and the parameters {params} (k_d_over_k_c: k_d = k_c * ratio). Parameters not given are the "
+        "human runner's (m 80 kg, l0 1 m, k 20 kN/m).",
+        width=100,
+    )
     return f"""\
 examples:
   slipmaps sweep --map geyer --fixed apex_height=1.0 --axis apex_speed=3:7:41 \\
@@ -27,10 +35,7 @@ examples:
   slipmaps sweep --map exact --random 2000 --seed 1 --fixed apex_height=1 \\
       --axis apex_speed=3:7 --axis touchdown_angle=0.2:0.45 --format parquet --out sweep_exact
 
-axis SPEC: LOW:HIGH:NUM (a grid; LOW:HIGH:NUM:log spaces it logarithmically), LOW:HIGH (a random
-sample: uniform), or V1,V2,... (values). Quantities (SI units): the inputs ({kinds}) and the
-parameters {params} (k_d_over_k_c: k_d = k_c * ratio). Parameters not given are the human
-runner's (m 80 kg, l0 1 m, k 20 kN/m).
+{text}
 
 output: OUT/manifest.json (definition, units), OUT/chunks/part-*.csv|parquet, with --combine
 OUT/sweep.csv|parquet; columns: the inputs, the swept parameters, the map's outputs (the next
@@ -57,7 +62,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
     p.add_argument("--option", action="append", metavar="KEY=VALUE", help="a map option (repeatable)")
     p.add_argument("--random", type=int, metavar="N", help="a random sample of N rows instead of a grid")
     p.add_argument("--seed", type=int, help="the random sample's seed (default 0)")
-    p.add_argument("--chunk-rows", type=int, help="rows per chunk file (default 262144; exact: 4096)")
+    p.add_argument(
+        "--chunk-rows",
+        type=int,
+        help=f"rows per chunk file (default {CHUNK_ROWS_GENERATED}; exact: {CHUNK_ROWS_EXACT})",
+    )
     p.add_argument("--format", choices=("csv", "parquet"), help="file format (default csv)")
     p.add_argument("--out", help="output directory (resumed when it holds this sweep)")
     p.add_argument(

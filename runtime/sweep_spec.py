@@ -32,16 +32,22 @@ from slipmaps.generated import maps_index
 from .index import EXACT, get, maps
 from .params import HUMAN_RUNNER, SlipParams
 from .results import columns as result_columns
-from .sweep_axes import KINDS, RATIO, Axis, grid_points, quantities, random_points
+from .sweep_axes import (
+    CHUNK_ROWS_EXACT,
+    CHUNK_ROWS_GENERATED,
+    KINDS,
+    RATIO,
+    Axis,
+    grid_points,
+    quantities,
+    random_points,
+)
 
 __all__ = ["Sweep", "MODES", "DEFINITION_KEYS", "read_toml"]
 
 MODES = ("grid", "random")
 #: The keys of a sweep definition (TOML / JSON).
 DEFINITION_KEYS = ("map", "kind", "mode", "samples", "seed", "chunk_rows", "options", "fixed", "axes")
-#: Default rows per chunk: generated maps run ~0.1-2 us a row, the exact map ~1 ms (scipy) or ~10 us.
-CHUNK_ROWS_GENERATED = 1 << 18
-CHUNK_ROWS_EXACT = 1 << 12
 _STIFFNESS = ("k", "k_c", "k_d", RATIO)
 _PLAIN_PARAMS = ("m", "l0", "g_s", "g_f", "q_r_td", "q_r_lo")
 

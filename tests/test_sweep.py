@@ -258,6 +258,16 @@ def test_cli_sweep_and_the_toml_example(tmp_path, capsys):
     assert err.count("\n") == 1 and "needs apex_height, touchdown_angle" in err
 
 
+def test_cli_interrupted_sweep_says_how_to_resume(tmp_path, capsys, monkeypatch):
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("slipmaps.runtime.sweep.sweep", interrupted)
+    argv = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--fixed", "touchdown_angle=0.3"]
+    assert main([*argv, "--axis", "apex_speed=3,4", "--out", str(tmp_path / "i")]) == 130
+    assert "run the same command again to resume" in capsys.readouterr().err
+
+
 # -- Dask ----------------------------------------------------------------------------------------
 
 
