@@ -60,6 +60,7 @@ class Quantity:
     doc: str
     role: str
     check: Callable[[str, object], float]  # ValueError naming the quantity when out of its domain
+    optional: bool = False  # an input that defaults to the row's parameter of the same name
 
 
 def _any_real(name: str, value: object) -> float:
@@ -72,7 +73,9 @@ _APEX_INPUTS = (
     Quantity("touchdown_angle", "rad", "touchdown leg angle q_th_td, |q_th_td| < pi/2", "input", leg_angle),
 )
 _STANCE_INPUTS = (
-    Quantity("q_r_td", "m", "touchdown leg length (default: the parameters' q_r_td)", "input", positive),
+    Quantity(
+        "q_r_td", "m", "touchdown leg length (default: the parameters' q_r_td)", "input", positive, True
+    ),
     Quantity("q_rd_td", "m/s", "touchdown leg length rate (negative: compressing)", "input", _any_real),
     Quantity("q_th_td", "rad", "touchdown leg angle, |q_th_td| < pi/2", "input", leg_angle),
     Quantity("q_thd_td", "rad/s", "touchdown leg angle rate", "input", _any_real),
@@ -175,6 +178,12 @@ class Axis:
     def grid_size(self) -> int | None:
         """The number of grid points (None: a range without ``num``, usable only in a random sweep)."""
         return len(self.values) if self.values is not None else self.num
+
+    def bounds(self) -> tuple[float, float]:
+        """The smallest and the largest value."""
+        if self.values is not None:
+            return min(self.values), max(self.values)
+        return self.low, self.high
 
     def grid_values(self) -> np.ndarray:
         if self.values is not None:

@@ -16,6 +16,7 @@ import numpy as np
 from slipmaps.generated.status import Status
 
 from .maps import apex_return_batch, stance_batch
+from .sweep_axes import KINDS
 from .sweep_spec import Sweep, slip_params
 
 __all__ = ["Chunk", "compute", "compute_rows", "status_names"]
@@ -84,7 +85,9 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
         for name in sweep.input_names
     }
     constants = {k: v for k, v in fixed.items() if k not in inputs}
-    q_r_from_params = sweep.kind == "stance" and "q_r_td" not in points and "q_r_td" not in fixed
+    from_params = [
+        q.name for q in KINDS[sweep.kind] if q.optional and q.name not in points and q.name not in fixed
+    ]
     outputs = {name: np.full(n, np.nan) for name in sweep.output_names}
     status = np.full(n, int(Status.INVALID_INPUT), dtype=np.int64)
     opts = dict(sweep.options)
@@ -93,8 +96,8 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
             params = slip_params({**constants, **values})
         except ValueError:
             continue  # INVALID_INPUT, NaN outputs
-        if q_r_from_params:
-            inputs["q_r_td"][rows] = params.q_r_td
+        for name in from_params:  # an input left to the parameters (a stance's q_r_td)
+            inputs[name][rows] = getattr(params, name)
         if sweep.kind == "apex_return":
             args = [inputs[q][rows] for q in sweep.input_names]
             res = apex_return_batch(sweep.map, params, *args, progress=False, **opts)

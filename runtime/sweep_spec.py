@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated import maps_index
 
-from .index import EXACT, get, maps
+from .index import EXACT, MapInfo, get, maps
 from .params import HUMAN_RUNNER, SlipParams
 from .results import columns as result_columns
 from .sweep_axes import (
@@ -38,6 +38,7 @@ from .sweep_axes import (
     KINDS,
     RATIO,
     Axis,
+    Quantity,
     grid_points,
     quantities,
     random_points,
@@ -96,6 +97,45 @@ def slip_params(values: Mapping[str, float]) -> SlipParams:
     return SlipParams(k_c=k_c, k_d=k_d, **{n: float(values[n]) for n in _PLAIN_PARAMS if n in values})
 
 
+def _whole(what: str, value: object, low: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
+        raise ValueError(f"{what} must be a whole number >= {low}, got {value!r}")
+    return int(value)
+
+
+def _check_names(kind: str, known: Mapping[str, Quantity], axes: Mapping, fixed: Mapping) -> None:
+    """Every name a quantity of ``kind``, none both fixed and swept, every required input given."""
+    for name in (*axes, *fixed):
+        if name not in known:
+            raise ValueError(
+                f"unknown sweep quantity {name!r}; a {kind} sweep varies or fixes: {', '.join(known)}"
+            )
+    both = set(axes) & set(fixed)
+    if both:
+        raise ValueError(f"{', '.join(sorted(both))}: both fixed and swept; choose one")
+    missing = [q.name for q in KINDS[kind] if q.name not in axes and q.name not in fixed and not q.optional]
+    if missing:
+        raise ValueError(f"a {kind} sweep needs {', '.join(missing)}: fix it or give it an axis")
+
+
+def _check_params(info: MapInfo, constants: dict[str, float], axes: list[Axis]) -> None:
+    """Refuse now what would fail every row: a constant-stiffness map asked to vary k_c, k_d or their
+    ratio, or given a fixed ratio != 1; parameters the map refuses for the most favourable row (the
+    shortest swept leg lengths, the longest swept l0, the low end of other axes)."""
+    swept = {a.name: a for a in axes if a.name in _STIFFNESS or a.name in _PLAIN_PARAMS}
+    if "constant_stiffness" in info.requires:
+        varied = sorted(set(swept) & {"k_c", "k_d", RATIO})
+        if varied:
+            others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
+            raise ValueError(
+                f"map {info.name!r} needs a constant leg stiffness (k_c == k_d) and cannot sweep "
+                f"{', '.join(varied)}; sweep k instead, or a map that accepts k_c != k_d: "
+                + ", ".join(others)
+            )
+    probe = {n: a.bounds()[1] if n == "l0" else a.bounds()[0] for n, a in swept.items()}
+    info.param_values(slip_params({**constants, **probe}))
+
+
 @dataclass(frozen=True, init=False)
 class Sweep:
     """A validated sweep definition (see the module docstring); hashable, picklable, immutable."""
@@ -131,47 +171,21 @@ class Sweep:
         if not isinstance(axes, Mapping) or (fixed is not None and not isinstance(fixed, Mapping)):
             raise TypeError("axes and fixed must be mappings of quantity name -> axis / value")
         fixed = dict(fixed or {})
-        for name in (*axes, *fixed):
-            if name not in known:
-                raise ValueError(
-                    f"unknown sweep quantity {name!r}; a {kind} sweep varies or fixes: {', '.join(known)}"
-                )
-        both = set(axes) & set(fixed)
-        if both:
-            raise ValueError(f"{', '.join(sorted(both))}: both fixed and swept; choose one")
+        _check_names(kind, known, axes, fixed)
         parsed = [Axis.of(n, spec) for n, spec in axes.items()]
         for a in parsed:
             a.check(known[a.name])
         values = {n: known[n].check(f"fixed {n}", v) for n, v in fixed.items()}
-
         inputs = KINDS[kind]
-        missing = [
-            q.name for q in inputs if q.name not in axes and q.name not in fixed and q.name != "q_r_td"
-        ]
-        if missing:
-            raise ValueError(f"a {kind} sweep needs {', '.join(missing)}: fix it or give it an axis")
         input_names = {q.name for q in inputs}
+        swept = {a.name for a in parsed}
         given_params = {n for n in (*axes, *fixed) if n not in input_names}
         constants = _base_constants(params)
         _merge_stiffness(constants, given_params)
         constants.update({n: v for n, v in values.items() if n not in input_names})
-        for a in parsed:
-            constants.pop(a.name, None)
-        if "constant_stiffness" in info.requires:
-            varied = [a.name for a in parsed if a.name in ("k_c", "k_d", RATIO)]
-            if varied:
-                others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
-                raise ValueError(
-                    f"map {map!r} needs a constant leg stiffness (k_c == k_d) and cannot sweep "
-                    f"{', '.join(varied)}; sweep k instead, or a map that accepts k_c != k_d: "
-                    + ", ".join(others)
-                )
-        swept = {a.name for a in parsed}
-        if not swept & given_params:
-            info.param_values(slip_params(constants))  # fixed parameters alone: refuse them now
-        elif "constant_stiffness" in info.requires and not swept & set(_STIFFNESS):  # fixed stiffnesses
-            k_c, k_d = _stiffnesses(constants)
-            info.param_values(SlipParams(k_c=k_c, k_d=k_d))
+        for name in swept:
+            constants.pop(name, None)
+        _check_params(info, constants, [a for a in parsed if a.name not in input_names])
 
         resolved = info.resolve(dict(options or {}))
         info.encode(resolved)
@@ -185,14 +199,10 @@ class Sweep:
             for a in parsed:
                 a.grid_values()  # ValueError for a range without num
         else:
-            if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
-                raise ValueError(f"a random sweep needs samples, a positive whole number, got {samples!r}")
-        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-            raise ValueError(f"seed must be a non-negative whole number, got {seed!r}")
-        if chunk_rows is None:
-            chunk_rows = CHUNK_ROWS_EXACT if map == EXACT else CHUNK_ROWS_GENERATED
-        if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, (int, np.integer)) or chunk_rows < 1:
-            raise ValueError(f"chunk_rows must be a positive whole number, got {chunk_rows!r}")
+            samples = _whole("a random sweep's samples", samples, 1)
+        seed = _whole("seed", seed, 0)
+        default_rows = CHUNK_ROWS_EXACT if info.name == EXACT else CHUNK_ROWS_GENERATED
+        chunk_rows = _whole("chunk_rows", default_rows if chunk_rows is None else chunk_rows, 1)
 
         ordered = [a for a in parsed if a.name not in input_names] + [
             a for a in parsed if a.name in input_names
@@ -206,9 +216,9 @@ class Sweep:
         set_(self, "axes", tuple(ordered))
         set_(self, "fixed", tuple(fixed_items))
         set_(self, "options", tuple(resolved.items()))
-        set_(self, "samples", None if samples is None else int(samples))
-        set_(self, "seed", int(seed))
-        set_(self, "chunk_rows", int(chunk_rows))
+        set_(self, "samples", samples)
+        set_(self, "seed", seed)
+        set_(self, "chunk_rows", chunk_rows)
         if self.rows > 2**62:
             raise ValueError(f"the sweep has {self.rows} rows, more than 2**62")
 

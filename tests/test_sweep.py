@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import os
 import signal
+import sys
 import tracemalloc
 from pathlib import Path
 
@@ -24,6 +25,7 @@ P = slipmaps.HUMAN_RUNNER
 EXAMPLE = Path(__file__).resolve().parent.parent / "examples" / "sweep.toml"
 SPEEDS = {"low": 3.0, "high": 7.0, "num": 7}
 ANGLES = [0.25, 0.35, 0.45]
+APEX = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.3}
 
 
 def same(a: np.ndarray, b: np.ndarray) -> bool:
@@ -135,13 +137,13 @@ def test_csv_and_parquet_round_trip_with_names_and_units(tmp_path):
         assert np.array_equal(values, ref) if ref.dtype.kind in "iU" else same(values, ref), name
 
 
-def test_parquet_without_pyarrow_names_the_extra(monkeypatch):
-    def missing(what):
-        raise ValueError(f"{what} need pyarrow: pip install 'slipmaps[parquet]'")
-
-    monkeypatch.setattr(sweep_files, "_pyarrow", missing)
-    with pytest.raises(ValueError, match=r"slipmaps\[parquet\]"):
-        sweep_files.check_format("parquet")
+def test_without_pyarrow_parquet_names_the_extra_and_csv_still_works(tmp_path, monkeypatch):
+    for mod in ("pyarrow", "pyarrow.csv", "pyarrow.parquet"):
+        monkeypatch.setitem(sys.modules, mod, None)  # import fails as if pyarrow were not installed
+    with pytest.raises(ValueError, match=r"need pyarrow: pip install 'slipmaps\[parquet\]'"):
+        sweep(grid_sweep(), tmp_path / "p", format="parquet")
+    assert not (tmp_path / "p").exists()  # refused before anything was written
+    assert sweep(grid_sweep(), tmp_path / "c").rows_done == 42  # CSV by Python's writer
 
 
 def test_an_interrupted_sweep_resumes_to_the_same_files(tmp_path):
@@ -202,18 +204,10 @@ def test_a_different_sweep_is_refused(tmp_path):
         ({"apex_speed": [5.0]}, {"apex_speed": 5.0}, {}, "both fixed and swept"),
         ({"apex_speed": [5.0]}, {"apex_height": 1.0}, {}, "needs touchdown_angle"),
         ({"apex_height": [-1.0, 1.0]}, {"apex_speed": 5, "touchdown_angle": 0.3}, {}, "must not be negative"),
-        (
-            {"k_d_over_k_c": [0.9, 1.1]},
-            {"apex_height": 1, "apex_speed": 5, "touchdown_angle": 0.3},
-            {},
-            "sweep k",
-        ),
-        (
-            {"k": [1e4]},
-            {"k_c": 2e4, "apex_height": 1, "apex_speed": 5, "touchdown_angle": 0.3},
-            {},
-            "either k",
-        ),
+        ({"k_d_over_k_c": [0.9, 1.1]}, APEX, {}, "cannot sweep k_d_over_k_c; sweep k instead"),
+        ({"k": [1e4, 2e4]}, {"k_d_over_k_c": 1.2, **APEX}, {}, "needs a constant leg stiffness"),
+        ({"k": [1e4]}, {"k_c": 2e4, **APEX}, {}, "either k"),
+        ({"m": [70.0]}, {"q_r_td": 1.1, **APEX}, {}, "must not exceed the rest length"),
         ({"apex_speed": {"low": 3, "high": 7}}, {"apex_height": 1, "touchdown_angle": 0.3}, {}, "needs num"),
         ({"apex_speed": [5.0]}, {"apex_height": 1, "touchdown_angle": 0.3}, {"mode": "random"}, "samples"),
         ({"apex_speed": "3:7:x"}, {"apex_height": 1, "touchdown_angle": 0.3}, {}, "not a number"),
