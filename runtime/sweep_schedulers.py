@@ -55,9 +55,16 @@ def chunk_file(sweep: Sweep, fmt: str, digest: str, index: int, threads: int | N
 
 
 def check_scheduler(scheduler) -> object:
-    """``scheduler`` if it names a scheduler (without connecting); ValueError otherwise."""
+    """``scheduler`` if it names a scheduler and, for Dask, dask.distributed is installed (without
+    connecting); ValueError otherwise."""
     if scheduler is None or scheduler == "inprocess":
         return None
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        raise ValueError(
+            "running a sweep on Dask needs dask.distributed: pip install 'slipmaps[dask]'"
+        ) from None
     if isinstance(scheduler, str):
         if scheduler.startswith("local:"):
             n = scheduler.partition(":")[2]
@@ -91,12 +98,8 @@ def run_chunks(
 @contextmanager
 def _client(scheduler):
     """(client, numba threads per task) for ``scheduler``; a local cluster is closed afterwards."""
-    try:
-        from distributed import Client, LocalCluster
-    except ImportError:
-        raise ValueError(
-            "running a sweep on Dask needs dask.distributed: pip install 'slipmaps[dask]'"
-        ) from None
+    from distributed import Client, LocalCluster
+
     if isinstance(scheduler, Client):
         yield scheduler, None
         return

@@ -137,9 +137,11 @@ def test_csv_and_parquet_round_trip_with_names_and_units(tmp_path):
         assert np.array_equal(values, ref) if ref.dtype.kind in "iU" else same(values, ref), name
 
 
-def test_without_pyarrow_parquet_names_the_extra_and_csv_still_works(tmp_path, monkeypatch):
-    for mod in ("pyarrow", "pyarrow.csv", "pyarrow.parquet"):
-        monkeypatch.setitem(sys.modules, mod, None)  # import fails as if pyarrow were not installed
+def test_without_the_extras_errors_name_them_and_csv_still_works(tmp_path, monkeypatch):
+    for mod in ("pyarrow", "pyarrow.csv", "pyarrow.parquet", "distributed"):
+        monkeypatch.setitem(sys.modules, mod, None)  # import fails as if it were not installed
+    with pytest.raises(ValueError, match=r"needs dask.distributed: pip install 'slipmaps\[dask\]'"):
+        sweep(grid_sweep(), tmp_path / "d", scheduler="local:2")
     with pytest.raises(ValueError, match=r"need pyarrow: pip install 'slipmaps\[parquet\]'"):
         sweep(grid_sweep(), tmp_path / "p", format="parquet")
     assert not (tmp_path / "p").exists()  # refused before anything was written
