@@ -38,6 +38,7 @@ import os
 import sys
 from pathlib import Path
 
+from . import sweep_cli
 from .apex_defaults import (
     APEX_FROUDE,
     APEX_HEIGHT_L0,
@@ -338,6 +339,7 @@ def build_parser() -> argparse.ArgumentParser:
     from .gait_cli import add_parser as add_gait
 
     add_gait(sub)
+    sweep_cli.add_parser(sub)
     return parser
 
 
@@ -461,6 +463,7 @@ def main(argv: list[str] | None = None) -> int:
         "equations": _cmd_equations,
         "accuracy": _cmd_accuracy,
         "gait": _cmd_gait,
+        "sweep": sweep_cli.run,
     }
     try:
         return handlers[args.command](args)

@@ -1,7 +1,8 @@
-"""A minimal progress bar on standard error for long loops (exact batches, accuracy grids).
+"""A minimal progress bar on standard error for long loops (exact batches, accuracy grids, sweeps).
 
-Shown when asked (``enabled=True``) or, with ``enabled=None``, when the loop is long and standard
-error is a terminal; it never writes to standard output, so tables and JSON stay clean.
+Shown when asked (``enabled=True``) or, with ``enabled=None``, when the loop is long (:func:`progress`:
+many items; :class:`Bar`: running for more than a second) and standard error is a terminal; it never
+writes to standard output, so tables and JSON stay clean.
 """
 
 from __future__ import annotations
@@ -40,3 +41,73 @@ def progress(items: Iterable[T], total: int, label: str, enabled: bool | None = 
             sys.stderr.flush()
     sys.stderr.write("\n")
     sys.stderr.flush()
+
+
+class Bar:
+    """A progress bar updated by counts (``bar.update(n)``), for work done in uneven pieces (sweep
+    chunks): ``label: [###.....] done/total unit  elapsed < remaining`` on standard error.
+
+    ``enabled=None`` draws it only when standard error is a terminal and the work has already run
+    for ``delay`` seconds (so short runs print nothing); ``True`` draws from the start, ``False``
+    never. ``initial`` counts work done before (a resumed sweep); the rate and the remaining time
+    are measured on the work done since the bar started. Use as a context manager, or call
+    :meth:`close`.
+    """
+
+    WIDTH = 24
+
+    def __init__(
+        self,
+        total: int,
+        label: str,
+        enabled: bool | None = None,
+        *,
+        initial: int = 0,
+        unit: str = "",
+        delay: float = 1.0,
+    ) -> None:
+        self.total = int(total)
+        self.done = int(initial)
+        self.label = label
+        self.unit = f" {unit}" if unit else ""
+        self._initial = int(initial)
+        self._show = sys.stderr.isatty() if enabled is None else bool(enabled)
+        self._delay = delay if enabled is None else 0.0
+        self._start = self._last = time.perf_counter()
+        self._drawn = False
+
+    def update(self, n: int) -> None:
+        self.done += int(n)
+        now = time.perf_counter()
+        if not self._show or now - self._start < self._delay:
+            return
+        if self._drawn and now - self._last < 0.1 and self.done < self.total:
+            return
+        self._last = now
+        self._draw(now)
+
+    def _draw(self, now: float) -> None:
+        frac = min(1.0, self.done / self.total) if self.total > 0 else 1.0
+        full = int(self.WIDTH * frac)
+        elapsed = now - self._start
+        new = self.done - self._initial
+        eta = (self.total - self.done) * elapsed / new if new > 0 else float("inf")
+        sys.stderr.write(
+            f"\r{self.label}: [{'#' * full}{'.' * (self.WIDTH - full)}] {self.done}/{self.total}{self.unit} "
+            f"{elapsed:5.1f}s < {eta:5.1f}s "
+        )
+        sys.stderr.flush()
+        self._drawn = True
+
+    def close(self) -> None:
+        if self._drawn:
+            self._draw(time.perf_counter())
+            sys.stderr.write("\n")
+            sys.stderr.flush()
+            self._drawn = False
+
+    def __enter__(self) -> Bar:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()

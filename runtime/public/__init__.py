@@ -58,6 +58,9 @@ _EXPORTS = {
     "Result": "slipmaps.runtime.results",
     "BatchResult": "slipmaps.runtime.results",
     "Status": "slipmaps.generated.status",
+    "Sweep": "slipmaps.runtime.sweep",
+    "sweep": "slipmaps.runtime.sweep",
+    "read_sweep": "slipmaps.runtime.sweep",
     "MESSAGES": "slipmaps.generated.status",
 }
 
