@@ -46,9 +46,9 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_r_td: touchdown leg length [m], > 0
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s]
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
 
     Returns a tuple:
         touchdown_q_r: leg length [m]
@@ -117,10 +117,10 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
-        q_r__tan: direction: change of liftoff leg length q_r [m], > 0
-        q_rd__tan: direction: change of leg length rate q_rd [m/s]
-        q_th__tan: direction: change of leg angle q_th from the vertical, counterclockwise positive [rad]
-        q_thd__tan: direction: change of leg angle rate q_thd [rad/s]
+        q_r__tan: direction: its component along q_r
+        q_rd__tan: direction: its component along q_rd
+        q_th__tan: direction: its component along q_th
+        q_thd__tan: direction: its component along q_thd
 
     Returns a tuple:
         apex_b_y: next apex height above the ground [m]

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:a3135c6bfc3c601d
+#   flight_jacobian.py sha256:07de4a386a2b3df0
 # ----------------------------------------------------------------------------------------------
 """Derivatives of module geyer's kernels (forward mode, derive/tangent.py): geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
 
@@ -51,10 +51,10 @@ def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         l0: rest leg length l0 [m]
         k: leg stiffness k [N/m] (constant: k_c = k_d)
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         omega: omega = p_th / (m l0^2), eq (7) [rad/s]
@@ -158,8 +158,8 @@ def geyer_liftoff_phase_jvp_a_b(a, b, l0, q_r_lo, a__tan, b__tan):
         b: amplitude b of (11)
         l0: rest leg length l0 [m]
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        a__tan: direction: change of offset a of (11)
-        b__tan: direction: change of amplitude b of (11)
+        a__tan: direction: its component along a
+        b__tan: direction: its component along b
 
     Returns a tuple:
         phase_lo: liftoff phase omega0_hat t_lo, eq (14) [rad]
@@ -203,11 +203,11 @@ def geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td,
         k: leg stiffness k [N/m] (constant: k_c = k_d)
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_th_td__tan: direction: its component along q_th_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -603,10 +603,10 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:a3135c6bfc3c601d
-#   geyer_jacobian.py sha256:f4d5dcf742244bc8
+#   flight_jacobian.py sha256:07de4a386a2b3df0
+#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
 # ----------------------------------------------------------------------------------------------
 """Derivatives of module geyer_vs's kernels (forward mode, derive/tangent.py): simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels."""
 
@@ -1013,12 +1013,12 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k_c__tan: direction: change of leg stiffness while compressing k_c [N/m]
-        k_d__tan: direction: change of leg stiffness after the bottom k_d [N/m]
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_th_td__tan: direction: its component along q_th_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k_c__tan: direction: its component along k_c
+        k_d__tan: direction: its component along k_d
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1223,9 +1223,9 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
         l0: rest leg length l0 [m]
         k_c: leg stiffness while compressing k_c [N/m]
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        p__tan: direction: change of angular momentum p_th [kg m^2/s]
-        E_ab__tan: direction: change of total energy E_ab [J]
-        k_c__tan: direction: change of leg stiffness while compressing k_c [N/m]
+        p__tan: direction: its component along p
+        E_ab__tan: direction: its component along E_ab
+        k_c__tan: direction: its component along k_c
 
     Returns a tuple:
         q_r_b: bottom leg length of (153) [m]
@@ -1727,11 +1727,11 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
         gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        k_c__tan: direction: change of leg stiffness while compressing k_c [N/m]
-        k_d__tan: direction: change of leg stiffness after the bottom k_d [N/m]
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
+        k_c__tan: direction: its component along k_c
+        k_d__tan: direction: its component along k_d
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]

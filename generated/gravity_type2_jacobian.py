@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:a3135c6bfc3c601d
-#   geyer_jacobian.py sha256:f4d5dcf742244bc8
+#   flight_jacobian.py sha256:07de4a386a2b3df0
+#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
 # ----------------------------------------------------------------------------------------------
 """Derivatives of module gravity_type2's kernels (forward mode, derive/tangent.py): gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return kernels."""
 
@@ -769,11 +769,11 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_th_td__tan: direction: its component along q_th_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1208,10 +1208,10 @@ def gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_ap
         leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:a3135c6bfc3c601d
-#   geyer_jacobian.py sha256:f4d5dcf742244bc8
+#   flight_jacobian.py sha256:07de4a386a2b3df0
+#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
 # ----------------------------------------------------------------------------------------------
 """Derivatives of module gravity_type5's kernels (forward mode, derive/tangent.py): gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
 
@@ -54,12 +54,12 @@ def type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
         m: body mass m [kg]
         l0: rest leg length l0 [m]
         k: leg stiffness k [N/m] (constant: k_c = k_d)
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        omega__tan: direction: change of omega = p_mean / (m l0^2) [rad/s]
-        g_eff__tan: direction: change of radial gravity g_s <cos q_th> [m/s^2]
-        r_c__tan: direction: change of expansion point of 1/(1+rho)^2 (stance-mean compression)
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        omega__tan: direction: its component along omega
+        g_eff__tan: direction: its component along g_eff
+        r_c__tan: direction: its component along r_c
+        k__tan: direction: its component along k
 
     Returns a tuple:
         omega0_hat: frequency [rad/s]
@@ -178,17 +178,17 @@ def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
         phase_td: touchdown phase [rad]
         m: body mass m [kg]
         l0: rest leg length l0 [m]
-        t__tan: direction: change of time since touchdown [s]
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        p_td__tan: direction: change of angular momentum at touchdown [N m s]
-        c0__tan: direction: change of coefficient c0 of the torque quadratic T5.1
-        c1__tan: direction: change of coefficient c1 of the torque quadratic T5.1
-        c2__tan: direction: change of coefficient c2 of the torque quadratic T5.1
-        k0__tan: direction: change of coefficient k0 of the rate factor T5.6
-        k1__tan: direction: change of coefficient k1 of the rate factor T5.6
-        k2__tan: direction: change of coefficient k2 of the rate factor T5.6
-        omega0_hat__tan: direction: change of frequency omega0_hat [rad/s]
-        phase_td__tan: direction: change of touchdown phase [rad]
+        t__tan: direction: its component along t
+        q_th_td__tan: direction: its component along q_th_td
+        p_td__tan: direction: its component along p_td
+        c0__tan: direction: its component along c0
+        c1__tan: direction: its component along c1
+        c2__tan: direction: its component along c2
+        k0__tan: direction: its component along k0
+        k1__tan: direction: its component along k1
+        k2__tan: direction: its component along k2
+        omega0_hat__tan: direction: its component along omega0_hat
+        phase_td__tan: direction: its component along phase_td
 
     Returns a tuple:
         q_th: leg angle [rad]
@@ -816,11 +816,11 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
         tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_th_td__tan: direction: its component along q_th_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1271,10 +1271,10 @@ def gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_ap
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
         tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        k__tan: direction: change of leg stiffness k [N/m] (constant: k_c = k_d)
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
+        k__tan: direction: its component along k
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]

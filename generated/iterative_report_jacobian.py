@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:a3135c6bfc3c601d
-#   geyer_jacobian.py sha256:f4d5dcf742244bc8
-#   geyer_vs_jacobian.py sha256:1c9329b55e318051
-#   gravity_type0_jacobian.py sha256:507d68f7bbb026de
-#   gravity_type1_jacobian.py sha256:f784a8aabbc4f377
-#   gravity_type2_jacobian.py sha256:726f9731cb29e387
-#   gravity_type3_jacobian.py sha256:7bcc058393dcd5e0
-#   gravity_type4_jacobian.py sha256:8174cf75fee6308c
-#   gravity_type5_jacobian.py sha256:44b54df528545c38
+#   flight_jacobian.py sha256:07de4a386a2b3df0
+#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
+#   geyer_vs_jacobian.py sha256:8e3e18ee0352bcc4
+#   gravity_type0_jacobian.py sha256:29455f5a4862dc61
+#   gravity_type1_jacobian.py sha256:36b1ed22e2be7946
+#   gravity_type2_jacobian.py sha256:3ac23bdcc71d64f5
+#   gravity_type3_jacobian.py sha256:132976e66e36e4a4
+#   gravity_type4_jacobian.py sha256:9f78d9a14851d8dd
+#   gravity_type5_jacobian.py sha256:e974a5205010aea1
 # ----------------------------------------------------------------------------------------------
 """Derivatives of module iterative_report's kernels (forward mode, derive/tangent.py): iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels."""
 
@@ -1270,12 +1270,12 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
         zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
         bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-        q_r_td__tan: direction: change of touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td__tan: direction: change of touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td__tan: direction: change of touchdown leg angle rate q_thd_td [rad/s]
-        k_c__tan: direction: change of leg stiffness while compressing k_c [N/m]
-        k_d__tan: direction: change of leg stiffness after the bottom k_d [N/m]
+        q_r_td__tan: direction: its component along q_r_td
+        q_rd_td__tan: direction: its component along q_rd_td
+        q_th_td__tan: direction: its component along q_th_td
+        q_thd_td__tan: direction: its component along q_thd_td
+        k_c__tan: direction: its component along k_c
+        k_d__tan: direction: its component along k_d
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1936,11 +1936,11 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
         zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
         bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-        b_y_apex__tan: direction: change of apex height of the body above the ground [m], >= 0
-        b_xd_apex__tan: direction: change of horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td__tan: direction: change of touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        k_c__tan: direction: change of leg stiffness while compressing k_c [N/m]
-        k_d__tan: direction: change of leg stiffness after the bottom k_d [N/m]
+        b_y_apex__tan: direction: its component along b_y_apex
+        b_xd_apex__tan: direction: its component along b_xd_apex
+        q_th_td__tan: direction: its component along q_th_td
+        k_c__tan: direction: its component along k_c
+        k_d__tan: direction: its component along k_d
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
