@@ -39,7 +39,7 @@ touchdown angles whose step returns to the same apex (the unknown runs over (0, 
 from the touchdown height q_r_td cos q_th_td, below which there is no touchdown, to E/(m g_f),
 where v = 0). Along that line, one batch call (:func:`slipmaps.apex_return_batch`, ``scan`` points)
 brackets every sign change of h' - h between two neighbouring steps that complete; each bracket is
-refined by Newton's method on the line with the apex-return Jacobian (:mod:`.apex_jacobian`),
+refined by Newton's method on the line with the apex-return Jacobian (:mod:`.jacobian`),
 safeguarded: a Newton iterate outside the current bracket is replaced by the bracket's midpoint,
 and the bracket shrinks with every evaluation. A root of even multiplicity (a tangency) or one
 between a completed and a failed step is not bracketed and not found.
@@ -61,8 +61,8 @@ from dataclasses import dataclass
 import numpy as np
 from slipmaps.generated.status import MESSAGES, Status
 
-from .apex_jacobian import apex_jacobian
 from .index import get
+from .jacobian import apex_return_jacobian as apex_jacobian
 from .maps import apex_return_batch
 from .params import SlipParams
 from .validate import check_params, leg_angle, positive

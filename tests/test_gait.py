@@ -12,12 +12,11 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
 import pytest
 import slipmaps
 from records import assert_close
 from scipy.optimize import brentq
-from slipmaps.runtime import apex_jacobian, gait, stability
+from slipmaps.runtime import gait, stability
 from slipmaps.runtime.cli import main
 from slipmaps.runtime.report_format import rounded
 from slipmaps.runtime.stability_report import grid_rows, region_facts, render_markdown
@@ -178,24 +177,16 @@ def test_iterative_map_fixed_points_match_the_exact_ones(record):
 # ----------------------------------------------------------------------------------------------
 # The Jacobian used by the search
 # ----------------------------------------------------------------------------------------------
-def test_fallback_jacobian_has_the_public_shape():
-    jr = apex_jacobian.central_difference("geyer", P, 1.0, 5.0, 0.4)
-    assert jr.ok and jr.result.ok and jr.matrix.shape == (len(jr.outputs), len(jr.inputs))
-    assert jr["apex_height", "apex_speed"] == jr.matrix[0, 1]
-    with pytest.raises(KeyError, match="no derivative"):
-        jr["apex_height", "k_d"]
-    bad = apex_jacobian.central_difference("geyer", P, 1.0, 5.0, 1.4)
-    assert not bad.ok and np.isnan(bad.matrix).all()
-
-
-def test_jacobian_switches_to_the_public_one(monkeypatch):
+def test_newton_uses_the_public_jacobian(monkeypatch):
+    """The search takes its slopes from slipmaps.apex_return_jacobian (analytic derivatives)."""
     calls = []
+    real = gait.apex_jacobian
 
-    def public(name, params, h, v, th, **options):
+    def spy(name, params, h, v, th, **options):
         calls.append(name)
-        return apex_jacobian.central_difference(name, params, h, v, th, **options)
+        return real(name, params, h, v, th, **options)
 
-    monkeypatch.setattr(slipmaps, "apex_return_jacobian", public, raising=False)
+    monkeypatch.setattr(gait, "apex_jacobian", spy)
     (p,) = slipmaps.fixed_points("geyer", P, apex_height=1.0, speed=5.0)
     assert p.ok and calls and set(calls) == {"geyer"}
 
