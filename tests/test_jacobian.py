@@ -181,3 +181,18 @@ def test_jacobian_indexing_failures_and_scipy_refusal():
     bad = slipmaps.apex_return_jacobian("geyer", P, 0.5, 5.0, 0.35)  # apex below touchdown height
     assert bad.status == slipmaps.Status.APEX_TOO_LOW and np.isnan(bad.matrix).all()
     assert not bad.result.ok
+
+
+def test_readme_derivatives_example_runs():
+    """The README's Derivatives example, run after its Python API example (whose names it uses)."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+
+    def block(section: str) -> str:
+        return text.split(f"## {section}", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+
+    namespace: dict = {}
+    exec(compile(block("Python API"), "README.md", "exec"), namespace)  # noqa: S102 - the project's README
+    exec(compile(block("Derivatives"), "README.md", "exec"), namespace)  # noqa: S102
+    assert namespace["jac"].ok and namespace["jac"].inputs[-1] == "k"
