@@ -46,9 +46,10 @@ __all__ = [
 #: The stiffness-ratio quantity: k_d = k_c * k_d_over_k_c.
 RATIO = "k_d_over_k_c"
 #: Default rows per chunk (the unit of progress and of resuming): a generated map's chunk takes
-#: ~0.03-0.5 s (0.1-2 us a row), the exact map's ~4 s with scipy's solve_ivp (~2 ms a row).
+#: ~0.03-0.5 s (0.1-2 us a row), the exact map's ~0.3-0.7 s with the compiled simulator (10-20 us
+#: a row; method="scipy" is ~2 ms a row: give it a smaller chunk_rows).
 CHUNK_ROWS_GENERATED = 1 << 18
-CHUNK_ROWS_EXACT = 1 << 11
+CHUNK_ROWS_EXACT = 1 << 15
 
 
 @dataclass(frozen=True)
