@@ -87,8 +87,8 @@ def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]
         out.append(
             Module(
                 name=name,
-                doc=f"Derivatives of module {base.name}'s kernels (forward mode, derive/tangent.py): "
-                f"{base.doc[0].lower()}{base.doc[1:]}",
+                doc=f"Derivatives (forward mode, derive/tangent.py) of the kernels of module {base.name}: "
+                "JVP kernels, and for a map its stance and apex-return Jacobians.",
                 source=base.source,
                 kernels=lambda kernels=tuple(kernels): kernels,
             )

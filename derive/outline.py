@@ -158,8 +158,8 @@ class Outliner:
         )
 
     def switch(self, sw: Switch, needed: list[str]) -> Switch:
-        """Each branch becomes a kernel returning the names every branch defines that are needed
-        later (all of them when ``needed`` is None)."""
+        """Each branch becomes a kernel returning every name all branches define (``needed`` is
+        passed on to the branches' own continuations)."""
         common = set.intersection(*(set(visible(b)) for _, b in sw.cases)) if sw.cases else set()
         exported = [n for n in visible(sw.cases[0][1]) if n in common] if sw.cases else []
         cases = tuple(

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module flight's kernels (forward mode, derive/tangent.py): exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -96,9 +96,7 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     t_flight__tan = _x11*_x7
     # derivatives that are identically zero
     touchdown_q_r__tan = 0.0
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(touchdown_q_r__tan) and math.isfinite(touchdown_q_rd__tan) and math.isfinite(touchdown_q_th__tan) and math.isfinite(touchdown_q_thd__tan) and math.isfinite(t_flight__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, STATUS_OK)
 
 
@@ -171,7 +169,5 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     t_flight__tan = _x9
     dx_flight = _x8*b_xd
     dx_flight__tan = _x8*b_xd__tan + _x9*b_xd
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight) and math.isfinite(apex_b_y__tan) and math.isfinite(apex_b_xd__tan) and math.isfinite(t_flight__tan) and math.isfinite(dx_flight__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, STATUS_OK)

@@ -5,9 +5,9 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:07de4a386a2b3df0
+#   flight_jacobian.py sha256:ac871132277105be
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module geyer's kernels (forward mode, derive/tangent.py): geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -330,9 +330,7 @@ def geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td,
     # derivatives that are identically zero
     bottom_q_rd__tan = 0.0
     liftoff_q_r__tan = 0.0
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(t_bottom__tan) and math.isfinite(t_stance__tan) and math.isfinite(bottom_q_r__tan) and math.isfinite(bottom_q_rd__tan) and math.isfinite(bottom_q_th__tan) and math.isfinite(bottom_q_thd__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
 
@@ -671,9 +669,7 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
     apex_height__tan = _c2[4]
     apex_speed__tan = _c2[5]
     t_ascent__tan = _c2[6]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(apex_height__tan) and math.isfinite(apex_speed__tan) and math.isfinite(t_descent__tan) and math.isfinite(t_stance__tan) and math.isfinite(t_ascent__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
 

@@ -5,10 +5,10 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:07de4a386a2b3df0
-#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
+#   flight_jacobian.py sha256:ac871132277105be
+#   geyer_jacobian.py sha256:12a6675a37ce361d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module geyer_vs's kernels (forward mode, derive/tangent.py): simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -1124,9 +1124,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     liftoff_q_th__tan = _c1[18]
     liftoff_q_thd__tan = _c1[19]
     passes__tan = _c1[20]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(t_bottom__tan) and math.isfinite(t_stance__tan) and math.isfinite(bottom_q_r__tan) and math.isfinite(bottom_q_rd__tan) and math.isfinite(bottom_q_th__tan) and math.isfinite(bottom_q_thd__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(P_c_compression__tan) and math.isfinite(P_c_decompression__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
 
 
@@ -1347,9 +1345,7 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
         return (NAN, NAN, _c1[2])
     q_r_b = _c1[0]
     q_r_b__tan = _c1[1]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r_b) and math.isfinite(q_r_b__tan)):
-        return (NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (q_r_b, q_r_b__tan, STATUS_OK)
 
 
@@ -1808,9 +1804,7 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
     apex_height__tan = _c2[4]
     apex_speed__tan = _c2[5]
     t_ascent__tan = _c2[6]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(apex_height__tan) and math.isfinite(apex_speed__tan) and math.isfinite(t_descent__tan) and math.isfinite(t_stance__tan) and math.isfinite(t_ascent__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(P_c_compression__tan) and math.isfinite(P_c_decompression__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
 
 

@@ -5,10 +5,10 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:07de4a386a2b3df0
-#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
+#   flight_jacobian.py sha256:ac871132277105be
+#   geyer_jacobian.py sha256:12a6675a37ce361d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module gravity_type3's kernels (forward mode, derive/tangent.py): gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type3: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -729,9 +729,7 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
     liftoff_q_th__tan = _c3[18]
     liftoff_q_thd__tan = _c3[19]
     passes__tan = _c3[20]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(t_bottom__tan) and math.isfinite(t_stance__tan) and math.isfinite(bottom_q_r__tan) and math.isfinite(bottom_q_rd__tan) and math.isfinite(bottom_q_th__tan) and math.isfinite(bottom_q_thd__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(P_c__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
 
 
@@ -1122,9 +1120,7 @@ def gravity_type3_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_ap
     apex_height__tan = _c2[4]
     apex_speed__tan = _c2[5]
     t_ascent__tan = _c2[6]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(apex_height__tan) and math.isfinite(apex_speed__tan) and math.isfinite(t_descent__tan) and math.isfinite(t_stance__tan) and math.isfinite(t_ascent__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(P_c__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
 
 

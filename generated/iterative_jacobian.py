@@ -5,17 +5,17 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:07de4a386a2b3df0
-#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
-#   geyer_vs_jacobian.py sha256:8e3e18ee0352bcc4
-#   gravity_type0_jacobian.py sha256:29455f5a4862dc61
-#   gravity_type1_jacobian.py sha256:36b1ed22e2be7946
-#   gravity_type2_jacobian.py sha256:3ac23bdcc71d64f5
-#   gravity_type3_jacobian.py sha256:132976e66e36e4a4
-#   gravity_type4_jacobian.py sha256:9f78d9a14851d8dd
-#   gravity_type5_jacobian.py sha256:e974a5205010aea1
+#   flight_jacobian.py sha256:ac871132277105be
+#   geyer_jacobian.py sha256:12a6675a37ce361d
+#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
+#   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
+#   gravity_type1_jacobian.py sha256:1184a15c09105242
+#   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d
+#   gravity_type3_jacobian.py sha256:11c0e268b35a560d
+#   gravity_type4_jacobian.py sha256:fb1af4380e878b21
+#   gravity_type5_jacobian.py sha256:7fb2d2401838095d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module iterative's kernels (forward mode, derive/tangent.py): iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -3543,9 +3543,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     # derivatives that are identically zero
     end_q_rd__tan = 0.0
     passes__tan = 0.0
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes) and math.isfinite(t_half__tan) and math.isfinite(end_q_r__tan) and math.isfinite(end_q_rd__tan) and math.isfinite(end_q_th__tan) and math.isfinite(end_q_thd__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, t_half__tan, end_q_r__tan, end_q_rd__tan, end_q_th__tan, end_q_thd__tan, passes__tan, STATUS_OK)
 
 
@@ -6902,9 +6900,7 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r
     # derivatives that are identically zero
     end_q_r__tan = 0.0
     passes__tan = 0.0
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes) and math.isfinite(t_half__tan) and math.isfinite(end_q_r__tan) and math.isfinite(end_q_rd__tan) and math.isfinite(end_q_th__tan) and math.isfinite(end_q_thd__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, t_half__tan, end_q_r__tan, end_q_rd__tan, end_q_th__tan, end_q_thd__tan, passes__tan, STATUS_OK)
 
 
@@ -7670,9 +7666,7 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes) and math.isfinite(t_bottom__tan) and math.isfinite(t_stance__tan) and math.isfinite(bottom_q_r__tan) and math.isfinite(bottom_q_rd__tan) and math.isfinite(bottom_q_th__tan) and math.isfinite(bottom_q_thd__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, STATUS_OK)
 
 
@@ -8081,9 +8075,7 @@ def iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_
     apex_height__tan = _c2[4]
     apex_speed__tan = _c2[5]
     t_ascent__tan = _c2[6]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes) and math.isfinite(apex_height__tan) and math.isfinite(apex_speed__tan) and math.isfinite(t_descent__tan) and math.isfinite(t_stance__tan) and math.isfinite(t_ascent__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan) and math.isfinite(passes__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, STATUS_OK)
 
 

@@ -5,17 +5,17 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:07de4a386a2b3df0
-#   geyer_jacobian.py sha256:be9290f5ad9d0a5a
-#   geyer_vs_jacobian.py sha256:8e3e18ee0352bcc4
-#   gravity_type0_jacobian.py sha256:29455f5a4862dc61
-#   gravity_type1_jacobian.py sha256:36b1ed22e2be7946
-#   gravity_type2_jacobian.py sha256:3ac23bdcc71d64f5
-#   gravity_type3_jacobian.py sha256:132976e66e36e4a4
-#   gravity_type4_jacobian.py sha256:9f78d9a14851d8dd
-#   gravity_type5_jacobian.py sha256:e974a5205010aea1
+#   flight_jacobian.py sha256:ac871132277105be
+#   geyer_jacobian.py sha256:12a6675a37ce361d
+#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
+#   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
+#   gravity_type1_jacobian.py sha256:1184a15c09105242
+#   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d
+#   gravity_type3_jacobian.py sha256:11c0e268b35a560d
+#   gravity_type4_jacobian.py sha256:fb1af4380e878b21
+#   gravity_type5_jacobian.py sha256:7fb2d2401838095d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives of module iterative_report's kernels (forward mode, derive/tangent.py): iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
 import math
 
@@ -1619,9 +1619,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
     liftoff_q_rd__tan = _c12[15]
     liftoff_q_th__tan = _c12[16]
     liftoff_q_thd__tan = _c12[17]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(t_bottom__tan) and math.isfinite(t_stance__tan) and math.isfinite(bottom_q_r__tan) and math.isfinite(bottom_q_rd__tan) and math.isfinite(bottom_q_th__tan) and math.isfinite(bottom_q_thd__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
 
@@ -2005,9 +2003,7 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
     apex_height__tan = _c2[4]
     apex_speed__tan = _c2[5]
     t_ascent__tan = _c2[6]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(apex_height__tan) and math.isfinite(apex_speed__tan) and math.isfinite(t_descent__tan) and math.isfinite(t_stance__tan) and math.isfinite(t_ascent__tan) and math.isfinite(liftoff_q_r__tan) and math.isfinite(liftoff_q_rd__tan) and math.isfinite(liftoff_q_th__tan) and math.isfinite(liftoff_q_thd__tan)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    # (internal helper: its callers check that their outputs are finite)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
 

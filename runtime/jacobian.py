@@ -21,6 +21,12 @@ differentiates the compiled simulator by the variational equations with saltatio
 and the map to the liftoff surface (:mod:`.exact_jacobian`), composed with the flights' derivatives
 (:mod:`.exact_step_jacobian`); ``method="scipy"`` has no Jacobian. Agreement with central
 differences is measured in tests/test_jacobian.py.
+
+Where the map is defined but a derivative is not (an infinite one, e.g. as q_rd_td -> 0), the
+status is NUMERICAL_RANGE and everything NaN. With an option choice that assumes touchdown at the
+rest length (``leg_length="eq21"`` ...), the ``q_r_td`` column is NaN: the map exists only at
+q_r_td = l0. At q_r_td = l0 the ``q_r_td`` column is the derivative from below (q_r > l0 is not a
+touchdown).
 """
 
 from __future__ import annotations
@@ -178,12 +184,26 @@ def _exact_stance_args(params: SlipParams) -> tuple[float, ...]:
 # ----------------------------------------------------------------------------------------------
 # Public API
 # ----------------------------------------------------------------------------------------------
+def _at_rest_length(call: _Call) -> bool:
+    """An option choice that assumes touchdown at the rest length (``Option.at_rest_length``): the
+    map has no derivative with respect to q_r_td (it is INVALID_INPUT anywhere else)."""
+    return any(call.options[o.name] in o.at_rest_length for o in call.info.options)
+
+
+def _mask_rest_length(call: _Call, inputs, jac: np.ndarray) -> None:
+    if "q_r_td" in inputs and _at_rest_length(call):
+        jac[..., inputs.index("q_r_td")] = math.nan
+
+
 def _jacobian(call: _Call, kind: str, outputs, inputs, row, jac, code, point) -> Jacobian:
     status = Status(int(code))
+    if status == Status.OK and not np.isfinite(jac).all():
+        status = Status.NUMERICAL_RANGE  # a derivative that does not exist there (exact path)
     if status != Status.OK:
         row = np.full(len(outputs), math.nan)
         jac = np.full((len(outputs), len(inputs)), math.nan)
     values = dict(zip(outputs, map(float, row), strict=True))
+    _mask_rest_length(call, inputs, jac)
     jac.setflags(write=False)
     return Jacobian(call.info.name, kind, status, MESSAGES[int(status)], values, outputs, inputs, jac, point)
 
@@ -239,9 +259,13 @@ def _exact_step_args(params: SlipParams) -> tuple[float, ...]:
 
 
 def _batch(call: _Call, kind: str, outputs, inputs, data, jac, status, shape) -> JacobianBatch:
+    ok = status == int(Status.OK)
+    status[ok & ~np.isfinite(jac).all(axis=(1, 2))] = int(Status.NUMERICAL_RANGE)
     bad = status != int(Status.OK)
     data[bad] = math.nan
     jac[bad] = math.nan
+    _mask_rest_length(call, inputs, jac)
+    jac.setflags(write=False)
     result = BatchResult(call.info.name, kind, outputs, data, status, shape)
     return JacobianBatch(
         call.info.name, kind, outputs, inputs, result, jac.reshape(*shape, len(outputs), len(inputs))
