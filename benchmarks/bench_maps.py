@@ -10,7 +10,10 @@ Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
 (b) for every map of the index: ``slipmaps.stance_batch`` and ``slipmaps.apex_return_batch`` per
     state at N states, each after a warm-up call (compilation excluded), best of ``--repeat``;
 (c) the exact stance (``solve_ivp`` DOP853, rtol 1e-11) per call over 50 touchdown states, and each
-    map's speed-up over it.
+    map's speed-up over it;
+(d) the iterative maps' cost against their number of passes;
+(e) every map's apex-return Jacobian (``slipmaps.apex_return_jacobian_batch``, N/10 states) per state
+    and as a multiple of its apex-return map.
 
 States: apex heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0);
 the stance states are their touchdowns. Ratios are measured in one run; absolute times move with the
@@ -144,6 +147,17 @@ def run(n: int, repeat: int) -> dict:
             opts = {"iterations": k, **({"tol": 0.0} if has_tol else {})}
             t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
             out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
+    # (e) every map's apex-return Jacobian (batch, N/10 states) against its apex-return map
+    nj = max(1, n // 10)
+    out["jacobians"] = []
+    for info in slipmaps.maps():
+        if not info.generated:
+            continue
+        args = (info.name, P, h[:nj], v[:nj], th[:nj])
+        slipmaps.apex_return_jacobian_batch(*args)
+        t_j = best_of(lambda args=args: slipmaps.apex_return_jacobian_batch(*args), repeat)
+        t_a = best_of(lambda args=args: slipmaps.apex_return_batch(*args), repeat)
+        out["jacobians"].append({"map": info.name, "jacobian_ns": 1e9 * t_j / nj, "ratio": t_j / t_a})
     return out
 
 
@@ -180,6 +194,14 @@ def report(r: dict) -> str:
             lines.append(
                 f"    {name:<18}" + " ".join(f"n={row['n']}: {row['stance_ns']:.0f}" for row in rows)
             )
+    if r.get("jacobians"):
+        lines += [
+            "",
+            "(e) apex-return Jacobian (next apex, liftoff and times against apex height, speed, angle and",
+            "    stiffness), public batch API, ns per state and its cost in apex-return calls:",
+        ]
+        for row in r["jacobians"]:
+            lines.append(f"    {row['map']:<18}{row['jacobian_ns']:>10.0f} ns {row['ratio']:>7.1f}x")
     return "\n".join(lines)
 
 
