@@ -290,8 +290,14 @@ def step_batch(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, 
 # ----------------------------------------------------------------------------------------------
 # Python wrappers (inputs validated by the caller: runtime/maps.py)
 # ----------------------------------------------------------------------------------------------
-def _stance_args(params: SlipParams) -> tuple[float, ...]:
+def stance_args(params: SlipParams) -> tuple[float, ...]:
+    """The parameters of the compiled stance kernels after the touchdown state, before q_r_lo."""
     return (params.m, params.l0, params.k_c, params.k_d, params.g_s)
+
+
+def step_args(params: SlipParams) -> tuple[float, ...]:
+    """The parameters of the compiled step kernels after the apex and the angle, before rtol."""
+    return (*stance_args(params), params.g_f, params.q_r_td, params.q_r_lo)
 
 
 def stance_values(params: SlipParams, touchdown, rtol: float, atol: float) -> tuple[Status, dict[str, float]]:
@@ -303,7 +309,7 @@ def stance_values(params: SlipParams, touchdown, rtol: float, atol: float) -> tu
         float(q_rd),
         float(q_th),
         float(q_thd),
-        *_stance_args(params),
+        *stance_args(params),
         params.q_r_lo,
         float(rtol),
         float(atol),
@@ -322,10 +328,7 @@ def step_values(
         float(h),
         float(v),
         float(th),
-        *_stance_args(params),
-        params.g_f,
-        params.q_r_td,
-        params.q_r_lo,
+        *step_args(params),
         float(rtol),
         float(atol),
         default_t_max(params),
@@ -349,7 +352,7 @@ def stance_rows(params: SlipParams, touchdowns: np.ndarray, rtol: float, atol: f
     cols = tuple(column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
     stance_batch(
         *cols,
-        *_stance_args(params),
+        *stance_args(params),
         params.q_r_lo,
         float(rtol),
         float(atol),
@@ -369,10 +372,7 @@ def step_rows(params: SlipParams, h: np.ndarray, v: np.ndarray, th: np.ndarray, 
         column(h),
         column(v),
         column(th),
-        *_stance_args(params),
-        params.g_f,
-        params.q_r_td,
-        params.q_r_lo,
+        *step_args(params),
         float(rtol),
         float(atol),
         default_t_max(params),

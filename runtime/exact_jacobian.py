@@ -30,22 +30,18 @@ at most 1.0e-9 of its largest entry.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 from numba import njit, prange
 from slipmaps.generated import maps_index
 from slipmaps.generated.slip_model import stance_polar_jacobian, stance_polar_rhs
-from slipmaps.generated.status import Status
 
 from . import dop853
 from . import exact_compiled as ec
 from .params import SlipParams
-from .results import GROUPS
 from .simulate import COLLAPSE_FRACTION, DEFAULT_ATOL, DEFAULT_RTOL, default_t_max, max_step
-from .validate import check_params, polar_state
 
-__all__ = ["INPUTS", "OUTPUTS", "StanceJacobian", "exact_stance_jacobian", "jacobian_batch", "jacobian_into"]
+__all__ = ["INPUTS", "OUTPUTS", "jacobian_batch", "jacobian_into", "jacobian_rows"]
 
 #: The rows of the Jacobian: the stance outputs of the index.
 OUTPUTS = ec.STANCE_NAMES
@@ -250,71 +246,6 @@ def jacobian_batch(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, a
 # ----------------------------------------------------------------------------------------------
 # Python wrapper
 # ----------------------------------------------------------------------------------------------
-def _names(key: str, names: tuple[str, ...]) -> list[int]:
-    """Indices of ``key`` in ``names``: a name, or a group ("bottom", "liftoff", "touchdown")."""
-    if key in names:
-        return [names.index(key)]
-    group = tuple(maps_index.TOUCHDOWN) if key == "touchdown" else GROUPS.get(key, ())
-    if group and all(n in names for n in group):
-        return [names.index(n) for n in group]
-    raise KeyError(f"{key!r} is not among {', '.join(names)} (or a group of them)")
-
-
-@dataclass(frozen=True)
-class StanceJacobian:
-    """d(stance outputs)/d(touchdown state, k_c, k_d): ``matrix[i, j]`` is d rows[i] / d cols[j].
-
-    ``jac["liftoff", "touchdown"]`` is the 4 x 4 block d(liftoff state)/d(touchdown state),
-    ``jac["liftoff", "k_d"]`` a column of 4, ``jac["t_stance", "q_th_td"]`` a number: rows and
-    columns by name or by group (``bottom``, ``liftoff``, ``touchdown``).
-    """
-
-    matrix: np.ndarray
-    rows: tuple[str, ...] = OUTPUTS
-    cols: tuple[str, ...] = INPUTS
-
-    def __getitem__(self, key: tuple[str, str]):
-        row, col = key
-        i, j = _names(row, self.rows), _names(col, self.cols)
-        block = self.matrix[np.ix_(i, j)]
-        if len(i) == 1 and len(j) == 1:
-            return float(block[0, 0])
-        if len(i) == 1 or len(j) == 1:
-            return block.reshape(-1)
-        return block
-
-
-def exact_stance_jacobian(
-    params: SlipParams, touchdown, *, rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL
-) -> tuple[dict[str, float], StanceJacobian, Status]:
-    """The exact stance from the polar touchdown state and its derivatives.
-
-    Returns ``(values, jacobian, status)``: ``values`` by the stance output names (equal to
-    ``slipmaps.stance("exact", params, touchdown).values``), ``jacobian`` a :class:`StanceJacobian`
-    over those names and :data:`INPUTS`, both NaN unless ``status`` is OK. ValueError for an
-    invalid touchdown state (as :func:`slipmaps.stance`).
-    """
-    check_params(params)
-    td = polar_state(params, touchdown)
-    out = np.empty(N_OUT)
-    jac = np.empty((N_OUT, N_IN))
-    code = jacobian_into(
-        *td,
-        params.m,
-        params.l0,
-        params.k_c,
-        params.k_d,
-        params.g_s,
-        params.q_r_lo,
-        float(rtol),
-        float(atol),
-        default_t_max(params),
-        out,
-        jac,
-    )
-    return dict(zip(OUTPUTS, out.tolist(), strict=True)), StanceJacobian(jac), Status(int(code))
-
-
 def jacobian_rows(params: SlipParams, touchdowns, rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL):
     """(n, 4) touchdown states -> (values (n, N_OUT), jacobians (n, N_OUT, N_IN), status (n,)), in
     parallel; a row that is not a valid touchdown state is INVALID_INPUT."""
@@ -328,11 +259,7 @@ def jacobian_rows(params: SlipParams, touchdowns, rtol: float = DEFAULT_RTOL, at
     cols = tuple(ec.column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
     jacobian_batch(
         *cols,
-        params.m,
-        params.l0,
-        params.k_c,
-        params.k_d,
-        params.g_s,
+        *ec.stance_args(params),
         params.q_r_lo,
         float(rtol),
         float(atol),

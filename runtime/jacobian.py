@@ -40,11 +40,12 @@ import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
-from .maps import _Call
+from . import exact_compiled as ec
+from .maps import _apex_rows, _Call
 from .params import SlipParams
 from .results import GROUPS, BatchResult, Result, columns
 from .simulate import default_t_max
-from .validate import leg_angle, non_negative, polar_state, real_array
+from .validate import leg_angle, non_negative, polar_state
 
 __all__ = [
     "Jacobian",
@@ -177,10 +178,6 @@ def _exact_options(call: _Call) -> tuple[float, float]:
     return float(call.options["rtol"]), float(call.options["atol"])
 
 
-def _exact_stance_args(params: SlipParams) -> tuple[float, ...]:
-    return (params.m, params.l0, params.k_c, params.k_d, params.g_s, params.q_r_lo)
-
-
 # ----------------------------------------------------------------------------------------------
 # Public API
 # ----------------------------------------------------------------------------------------------
@@ -219,7 +216,9 @@ def stance_jacobian(name: str, params: SlipParams, touchdown, **options) -> Jaco
 
         rtol, atol = _exact_options(call)
         out, jac = np.empty(ej.N_OUT), np.empty((ej.N_OUT, ej.N_IN))
-        code = ej.jacobian_into(*td, *_exact_stance_args(params), rtol, atol, default_t_max(params), out, jac)
+        code = ej.jacobian_into(
+            *td, *ec.stance_args(params), params.q_r_lo, rtol, atol, default_t_max(params), out, jac
+        )
         return _jacobian(call, "stance", tuple(ej.OUTPUTS), tuple(ej.INPUTS), out, jac, code, point)
     outputs, inputs = _generated_names(call, "stance")
     res = _kernel(call, "stance", False)(*td, *call.params, params.q_r_lo, *call.encoded)
@@ -243,7 +242,7 @@ def apex_return_jacobian(
         rtol, atol = _exact_options(call)
         out, jac = np.empty(esj.N_OUT), np.empty((esj.N_OUT, esj.N_IN))
         code = esj.step_jacobian_into(
-            h, v, th, *_exact_step_args(params), rtol, atol, default_t_max(params), out, jac
+            h, v, th, *ec.step_args(params), rtol, atol, default_t_max(params), out, jac
         )
         return _jacobian(call, "apex_return", tuple(esj.OUTPUTS), esj.INPUTS, out, jac, code, point)
     outputs, inputs = _generated_names(call, "apex_return")
@@ -252,10 +251,6 @@ def apex_return_jacobian(
     )
     row, jac = _split(np.array(res[:-1], dtype=float), len(outputs), len(inputs))
     return _jacobian(call, "apex_return", outputs, inputs, row, jac.copy(), res[-1], point)
-
-
-def _exact_step_args(params: SlipParams) -> tuple[float, ...]:
-    return (params.m, params.l0, params.k_c, params.k_d, params.g_s, params.g_f, params.q_r_td, params.q_r_lo)
 
 
 def _batch(call: _Call, kind: str, outputs, inputs, data, jac, status, shape) -> JacobianBatch:
@@ -279,17 +274,13 @@ def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) 
     call = _Call.of(name, params, options)
     arr = _rows(params, touchdowns)
     n = arr.shape[0]
-    cols = tuple(np.ascontiguousarray(arr[:, j]) for j in range(4))
-    status = np.empty(n, dtype=np.int64)
     if not call.info.generated:
         from . import exact_jacobian as ej
 
-        rtol, atol = _exact_options(call)
-        data, jac = np.empty((n, ej.N_OUT)), np.empty((n, ej.N_OUT, ej.N_IN))
-        ej.jacobian_batch(
-            *cols, *_exact_stance_args(params), rtol, atol, default_t_max(params), data, jac, status
-        )
+        data, jac, status = ej.jacobian_rows(params, arr, *_exact_options(call))
         return _batch(call, "stance", tuple(ej.OUTPUTS), tuple(ej.INPUTS), data, jac, status, (n,))
+    cols = tuple(np.ascontiguousarray(arr[:, j]) for j in range(4))
+    status = np.empty(n, dtype=np.int64)
     outputs, inputs = _generated_names(call, "stance")
     out = np.empty((n, len(outputs) * (1 + len(inputs))))
     _kernel(call, "stance", True)(*cols, *call.params, params.q_r_lo, *call.encoded, out, status)
@@ -303,19 +294,8 @@ def apex_return_jacobian_batch(
     """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
     status per row; the result has the broadcast shape."""
     call = _Call.of(name, params, options)
-    parts = np.broadcast_arrays(
-        *(
-            real_array(n, x)
-            for n, x in zip(
-                ("apex_height", "apex_speed", "touchdown_angle"),
-                (apex_height, apex_speed, touchdown_angle),
-                strict=True,
-            )
-        )
-    )
-    shape = parts[0].shape
+    flat, shape = _apex_rows(apex_height, apex_speed, touchdown_angle)
     n = int(np.prod(shape))
-    flat = tuple(np.ascontiguousarray(p.reshape(n)) for p in parts)
     status = np.empty(n, dtype=np.int64)
     if not call.info.generated:
         from . import exact_step_jacobian as esj
@@ -323,7 +303,14 @@ def apex_return_jacobian_batch(
         rtol, atol = _exact_options(call)
         data, jac = np.empty((n, esj.N_OUT)), np.empty((n, esj.N_OUT, esj.N_IN))
         esj.step_jacobian_batch(
-            *flat, *_exact_step_args(params), rtol, atol, default_t_max(params), data, jac, status
+            *(ec.column(x) for x in flat),
+            *ec.step_args(params),
+            rtol,
+            atol,
+            default_t_max(params),
+            data,
+            jac,
+            status,
         )
         return _batch(call, "apex_return", tuple(esj.OUTPUTS), esj.INPUTS, data, jac, status, shape)
     outputs, inputs = _generated_names(call, "apex_return")

@@ -163,6 +163,19 @@ def stance_batch(
     return BatchResult(call.info.name, "stance", names, out, status, (n,))
 
 
+def _apex_rows(apex_height, apex_speed, touchdown_angle) -> tuple[tuple[np.ndarray, ...], tuple[int, ...]]:
+    """The three apex-return inputs broadcast against each other, flattened (read-only views where
+    possible: stride 0 for a broadcast scalar), and their broadcast shape."""
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    parts = np.broadcast_arrays(*(real_array(key, x) for key, x in given.items()))
+    shape = parts[0].shape
+    n = int(np.prod(shape))
+    flat = tuple(p.reshape(n) for p in parts)
+    for p in flat:
+        p.flags.writeable = False  # the kernels only read; numpy warns on writing through a broadcast
+    return flat, shape
+
+
 def apex_return_batch(
     name: str,
     params: SlipParams,
@@ -178,13 +191,8 @@ def apex_return_batch(
     The result's columns have the broadcast shape of the three inputs.
     """
     call = _Call.of(name, params, options)
-    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
-    parts = np.broadcast_arrays(*(real_array(key, x) for key, x in given.items()))
-    shape = parts[0].shape
+    flat, shape = _apex_rows(apex_height, apex_speed, touchdown_angle)
     n = int(np.prod(shape))
-    flat = tuple(p.reshape(n) for p in parts)  # views where possible (stride 0 for a broadcast scalar)
-    for p in flat:
-        p.flags.writeable = False  # the kernels only read; numpy warns on writing through a broadcast
     names = columns("apex_return", call.info.extras)
     if not call.info.generated:
         from . import exact_map

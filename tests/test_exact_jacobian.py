@@ -1,6 +1,6 @@
-"""Exact stance derivatives (runtime/exact_jacobian.py): the variational equations of (2)-(3) with
-saltation matrices at the bottom (k_c -> k_d) and at liftoff, against central differences of the
-compiled simulator itself (runtime/exact_compiled.py).
+"""Exact stance derivatives (runtime/exact_jacobian.py, through slipmaps.stance_jacobian("exact")):
+the variational equations of (2)-(3) with saltation matrices at the bottom (k_c -> k_d) and at
+liftoff, against central differences of the compiled simulator itself (runtime/exact_compiled.py).
 
 Central-difference step: h = 1e-5 times each input's scale (l0, sqrt(g_s l0), 1 rad, sqrt(g_s/l0),
 k_c, k_d), the best of 1e-4 ... 1e-7 measured on every case below (truncation error ~ h^2 above,
@@ -60,8 +60,8 @@ def _outputs(p: SlipParams, w: np.ndarray) -> np.ndarray:
 
 @pytest.mark.parametrize(("params", "touchdown"), CASES)
 def test_jacobian_matches_central_differences(params, touchdown):
-    values, jac, status = ej.exact_stance_jacobian(params, touchdown)
-    assert status == Status.OK
+    jac = slipmaps.stance_jacobian("exact", params, touchdown)
+    assert jac.status == Status.OK
     p = params
     w0 = np.array([*touchdown, p.k_c, p.k_d])
     scale = np.array([p.l0, math.sqrt(p.g_s * p.l0), 1.0, math.sqrt(p.g_s / p.l0), p.k_c, p.k_d])
@@ -78,8 +78,8 @@ def test_jacobian_matches_central_differences(params, touchdown):
 
 @pytest.mark.parametrize(("params", "touchdown"), CASES)
 def test_values_are_the_exact_maps_and_the_structure_holds(params, touchdown):
-    values, jac, status = ej.exact_stance_jacobian(params, touchdown)
-    assert values == slipmaps.stance("exact", params, touchdown).values  # same steps, same events
+    jac = slipmaps.stance_jacobian("exact", params, touchdown)
+    assert jac.values == slipmaps.stance("exact", params, touchdown).values  # same steps, same events
     # The compression does not see k_d; the bottom stays on q_rd = 0 and liftoff on q_r = q_r_lo.
     assert np.all(jac["bottom", "k_d"] == 0.0) and jac["t_bottom", "k_d"] == 0.0
     for state, on_surface in (("bottom", "bottom_q_rd"), ("liftoff", "liftoff_q_r")):
@@ -96,13 +96,14 @@ def test_batch_rows_equal_scalar_calls_and_failures_are_nan():
     out, jac, status = ej.jacobian_rows(p, rows)
     expected = [Status.OK, Status.RECOMPRESSION, Status.TOUCHDOWN_NOT_COMPRESSING, Status.INVALID_INPUT]
     assert list(status) == expected
-    values, one, code = ej.exact_stance_jacobian(p, rows[0])
-    assert code == Status.OK and np.array_equal(jac[0], one.matrix)
+    one = slipmaps.stance_jacobian("exact", p, rows[0])
+    values = one.values
+    assert one.status == Status.OK and np.array_equal(jac[0], one.matrix)
     assert np.array_equal(out[0], [values[n] for n in ej.OUTPUTS])
     assert np.isnan(out[1:]).all() and np.isnan(jac[1:]).all()
-    values, one, code = ej.exact_stance_jacobian(p, vertical)
-    assert code == Status.RECOMPRESSION and np.isnan(one.matrix).all()
+    one = slipmaps.stance_jacobian("exact", p, vertical)
+    assert one.status == Status.RECOMPRESSION and np.isnan(one.matrix).all()
     with pytest.raises(ValueError, match="q_r"):
-        ej.exact_stance_jacobian(p, (1.2, -1.0, 0.3, -4.0))
+        slipmaps.stance_jacobian("exact", p, (1.2, -1.0, 0.3, -4.0))
     with pytest.raises(KeyError, match="apex"):
         _ = one["apex", "k_c"]
