@@ -19,28 +19,16 @@ AUTO_MIN_ITEMS = 200
 
 
 def progress(items: Iterable[T], total: int, label: str, enabled: bool | None = None) -> Iterator[T]:
-    """Yield ``items``, drawing ``label: i/total [elapsed < remaining]`` on stderr as it goes."""
+    """Yield ``items``, drawing ``label: [###.....] i/total elapsed < remaining`` on stderr as it
+    goes (a :class:`Bar` counting the items)."""
     show = (total >= AUTO_MIN_ITEMS and sys.stderr.isatty()) if enabled is None else bool(enabled)
     if not show or total <= 0:
         yield from items
         return
-    start = last = time.perf_counter()
-    width = 24
-    for i, item in enumerate(items, 1):
-        yield item
-        now = time.perf_counter()
-        if now - last >= 0.1 or i == total:
-            last = now
-            done = int(width * i / total)
-            rate = i / (now - start) if now > start else float("inf")
-            eta = (total - i) / rate if rate > 0 else 0.0
-            sys.stderr.write(
-                f"\r{label}: [{'#' * done}{'.' * (width - done)}] {i}/{total} "
-                f"{now - start:5.1f}s < {eta:5.1f}s "
-            )
-            sys.stderr.flush()
-    sys.stderr.write("\n")
-    sys.stderr.flush()
+    with Bar(total, label, True) as bar:
+        for item in items:
+            yield item
+            bar.update(1)
 
 
 class Bar:
