@@ -134,10 +134,10 @@ def _read_only_runner(ro: Path):
 
 
 def test_read_only_install_without_a_writable_home(tmp_path):
-    """`pip install .` into a read-only place, HOME read-only, NUMBA_CACHE_DIR unset: `import
-    slipmaps` chooses a writable cache directory with one warning, numba caches the kernels there
-    (also when numba was imported first), and `generate --check` is a one-line error. Measured: about
-    4 s, most of it compiling Geyer's stance once."""
+    """`pip install .` into a read-only place, HOME read-only, NUMBA_CACHE_DIR unset: slipmaps caches
+    its kernels in a private temp directory with one warning (also when numba was imported first),
+    nothing inside the install, and `generate --check` is a one-line error. Measured: about 4 s, most
+    of it compiling Geyer's stance once."""
     ro = tmp_path / "ro"
     site = _installed_copy(ro)
     home = ro / "home"
@@ -150,26 +150,76 @@ def test_read_only_install_without_a_writable_home(tmp_path):
     code = (
         "import {first}, os, slipmaps\n"
         "r = slipmaps.stance('geyer', slipmaps.HUMAN_RUNNER, (1.0, -1.5, 0.35, -4.5))\n"
-        "print(r.status.name, slipmaps.__file__, os.environ['NUMBA_CACHE_DIR'])\n"
+        "from slipmaps.generated import geyer\n"
+        "from slipmaps.runtime import kernel_cache\n"
+        "print(r.status.name, slipmaps.__file__, kernel_cache.cache_root(),\n"
+        "      geyer.geyer_stance._cache._cache_path)\n"
     )
     try:
-        for first in ("sys", "numba"):  # numba imported before slipmaps: its config is reloaded
+        for first in ("sys", "numba"):  # numba imported before slipmaps: the locator still applies
             done = run([sys.executable, "-c", code.format(first=first)], env)
             assert done.returncode == 0, done.stderr[-3000:]
-            status, init, cache = done.stdout.split()
+            status, init, cache, kernel_dir = done.stdout.split()
             assert status == "OK" and init == str(site / "slipmaps" / "__init__.py")
             assert Path(cache).parent == scratch, cache  # HOME is read-only: the private temp dir
+            assert Path(kernel_dir).parent == Path(cache), kernel_dir
             assert done.stderr.count("RuntimeWarning") == 1 and "NUMBA_CACHE_DIR" in done.stderr
             assert list(Path(cache).rglob("geyer.geyer_stance-*.nbi")), "numba did not cache there"
+            assert not list(site.rglob("*.nbi")), "numba cached inside the install"
         done = run([sys.executable, "-m", "slipmaps", "generate", "--check"], env)
         assert done.returncode == 2
-        err = done.stderr.split("RuntimeWarning", 1)[-1]  # after the cache warning (when chmod'ed)
-        assert "Traceback" not in done.stderr and "works on a source checkout" in err
+        assert "Traceback" not in done.stderr and "works on a source checkout" in done.stderr
         assert done.stderr.strip().splitlines()[-1].startswith("slipmaps generate: error: ")
     finally:
         for path in [ro, *ro.rglob("*")]:
             if not path.is_symlink():
                 path.chmod(0o755 if path.is_dir() else 0o644)
+
+
+def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp_path):
+    """Issue 16's root cause: numba wrote its cache into the installed package, and the files left by
+    `pip uninstall` shadowed the next (editable) install. Every compiled kernel of slipmaps, generated
+    or the exact simulator's, is cached under $XDG_CACHE_HOME/slipmaps/numba (or NUMBA_CACHE_DIR when
+    set), in a folder per source directory; other numba code keeps numba's own default."""
+    site = _installed_copy(tmp_path / "install")
+    foreign = tmp_path / "foreign"
+    foreign.mkdir()
+    (foreign / "other.py").write_text(
+        "from numba import njit\n\n@njit(cache=True)\ndef f(x):\n    return x + 1.0\n"
+    )
+    code = (
+        "import slipmaps, other\n"
+        "from slipmaps.generated import geyer\n"
+        "from slipmaps.runtime import kernel_cache\n"
+        "assert slipmaps.apex_return('exact', slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35).ok\n"
+        "assert other.f(1.0) == 2.0\n"
+        "print(kernel_cache.cache_root(), geyer.geyer_stance._cache._cache_path,\n"
+        "      other.f._cache._cache_path)\n"
+    )
+    base = {k: v for k, v in os.environ.items() if not k.startswith(("NUMBA_", "XDG_"))}
+    base.update(PYTHONPATH=f"{site}{os.pathsep}{foreign}", PYTHONDONTWRITEBYTECODE="1")
+    xdg = tmp_path / "xdg"
+    done = subprocess.run(
+        [sys.executable, "-c", code], env={**base, "XDG_CACHE_HOME": str(xdg)}, capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    root, kernel_dir, other_dir = done.stdout.split()
+    assert Path(root) == xdg / "slipmaps" / "numba" and Path(kernel_dir).parent == Path(root)
+    assert Path(other_dir) == foreign / "__pycache__", other_dir  # numba's default for other code
+    cached = {p.parent.name.split("_")[0] for p in Path(root).rglob("*.nbi")}
+    assert cached == {"generated", "runtime"}, cached  # the generated maps and the exact simulator
+    assert not list(site.rglob("*.nbi")) and not list(site.rglob("*.nbc")), "numba cached inside the install"
+    # NUMBA_CACHE_DIR, numba's own setting, still wins
+    mine = tmp_path / "mine"
+    done = subprocess.run(
+        [sys.executable, "-c", code],
+        env={**base, "NUMBA_CACHE_DIR": str(mine)},
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    root, kernel_dir, other_dir = done.stdout.split()
+    assert root == "None" and Path(kernel_dir).parent == mine and Path(other_dir).parent == mine
 
 
 # --- compare: one rule for physical failures, exit status ---------------------------------------
