@@ -10,7 +10,7 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
     and the agreement on the 50 states (same statuses, max relative difference);
 (b) batch throughput of ``slipmaps.stance_batch("exact", ...)`` and ``apex_return_batch`` on all
     of numba's threads, and its speed-up over one thread;
-(c) the stance with its Jacobian (``runtime/exact_jacobian.py``, variational equations), per state
+(c) the stance with its Jacobian (``runtime/exact/jacobian.py``, variational equations), per state
     on one thread, and its cost relative to the stance alone;
 (d) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
     (a function pointer, no inlining) instead of an njit dispatcher (the shipped form), compression
@@ -33,10 +33,10 @@ from pathlib import Path
 import numba
 import numpy as np
 import slipmaps
-from slipmaps.runtime import dop853
-from slipmaps.runtime import exact_compiled as ec
-from slipmaps.runtime import exact_jacobian as ej
-from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
+from slipmaps.runtime.exact import compiled as ec
+from slipmaps.runtime.exact import dop853
+from slipmaps.runtime.exact import jacobian as ej
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import best_of, machine, states  # noqa: E402
@@ -185,7 +185,7 @@ def report(r: dict) -> str:
         f"rtol {r['rtol']:g}, atol {r['atol']:g}",
         "",
         "(a) exact stance, per state:",
-        f"    solve_ivp (runtime/simulate.py)        {s['scipy_us']:9.1f} us",
+        f"    solve_ivp (runtime/exact/reference.py)        {s['scipy_us']:9.1f} us",
         f"    compiled, batch kernel on 1 thread      {s['compiled_us']:9.2f} us: {s['speedup']:.0f}x "
         f"(target >= {s['target']:g}x: {met})",
         f"    compiled, slipmaps.stance scalar call   {s['api_scalar_us']:9.2f} us: "

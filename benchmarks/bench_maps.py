@@ -38,7 +38,7 @@ import numpy as np
 import scipy
 import slipmaps
 from slipmaps.generated import flight as gen_flight
-from slipmaps.runtime.simulate import simulate_stance
+from slipmaps.runtime.exact.reference import simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import handwritten_geyer  # noqa: E402
@@ -138,7 +138,8 @@ def run(n: int, repeat: int) -> dict:
         )
 
     # (d) cost against the number of passes of the iterative maps (tol = 0: exactly n passes)
-    from slipmaps.runtime import convergence, index
+    from slipmaps.runtime.api import index
+    from slipmaps.runtime.studies import convergence
 
     out["passes"] = []
     for name in convergence.study_maps():

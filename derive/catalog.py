@@ -103,8 +103,8 @@ TRAJECTORY = Group("", POLAR)
 #: choices that assume it, ``Option.at_rest_length``).
 REST_LENGTH_TOLERANCE = 1e-9
 
-#: The index row of ``"exact"``, the numerical ground truth (runtime/exact_compiled.py, with
-#: runtime/simulate.py as the solve_ivp reference; no generated kernels).
+#: The index row of ``"exact"``, the numerical ground truth (runtime/exact/compiled.py, with
+#: runtime/exact/reference.py as the solve_ivp reference; no generated kernels).
 EXACT = {
     "name": "exact",
     "title": "Exact stance by numerical integration (DOP853)",

@@ -20,7 +20,7 @@ import sys
 from dataclasses import dataclass, replace
 
 import slipmaps
-from slipmaps.runtime.flight import next_apex, touchdown
+from slipmaps.runtime.cli.flight import next_apex, touchdown
 
 PARAMS = slipmaps.HUMAN_RUNNER  # k_c = 20000 N/m
 APEX = (1.0, 5.0, 0.35)  # apex height [m], apex speed [m/s], touchdown angle [rad]

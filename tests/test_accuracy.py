@@ -14,9 +14,9 @@ from pathlib import Path
 import pytest
 from records import assert_close
 from slipmaps.generated import maps_index
-from slipmaps.runtime import convergence
-from slipmaps.runtime.accuracy import measure_all, variants
-from slipmaps.runtime.accuracy_report import SYMMETRIC_RATIO, from_json, render_markdown, summarize
+from slipmaps.runtime.studies import convergence
+from slipmaps.runtime.studies.accuracy import measure_all, variants
+from slipmaps.runtime.studies.accuracy_report import SYMMETRIC_RATIO, from_json, render_markdown, summarize
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 
@@ -67,7 +67,7 @@ def _passes(study: list[dict], grid_kind: str, name: str) -> list[dict]:
 def test_eq42_eq151_iterative_map_improves_with_every_pass_up_to_its_default(study):
     """Target: the converging form never degrades as n grows up to its default (measured on every
     grid: each pass divides the mean next-apex error by 1.5-10 up to n = 6)."""
-    from slipmaps.runtime.index import get
+    from slipmaps.runtime.api.index import get
 
     default = get("iterative").resolve({})["iterations"]
     for grid in study:

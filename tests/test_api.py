@@ -55,7 +55,7 @@ def test_maps_index_lists_generated_maps_then_exact():
 
 def test_exact_map_defaults_are_the_simulators():
     exact = next(m for m in slipmaps.maps() if m.name == "exact")
-    from slipmaps.runtime import simulate
+    from slipmaps.runtime.exact import reference as simulate
 
     assert exact.option("rtol").default == simulate.DEFAULT_RTOL
     assert exact.option("atol").default == simulate.DEFAULT_ATOL

@@ -1,5 +1,5 @@
-"""The compiled exact simulator (runtime/exact_compiled.py, runtime/dop853.py) against the solve_ivp
-reference (runtime/simulate.py), and the ``"exact"`` map's ``method`` option.
+"""The compiled exact simulator (runtime/exact/compiled.py, runtime/exact/dop853.py) against the solve_ivp
+reference (runtime/exact/reference.py), and the ``"exact"`` map's ``method`` option.
 
 Both integrate the polar stance equations (2)-(3) of the report with the same DOP853 algorithm,
 tolerances, step cap, events and statuses, so they agree to round-off: each bound below is set
@@ -17,10 +17,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import Status
-from slipmaps.runtime import exact_compiled as ec
-from slipmaps.runtime import simulate as sim
-from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
-from slipmaps.runtime.results import GROUPS
+from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.api.results import GROUPS
+from slipmaps.runtime.exact import compiled as ec
+from slipmaps.runtime.exact import reference as sim
 
 RTOL, ATOL = sim.DEFAULT_RTOL, sim.DEFAULT_ATOL
 
@@ -219,7 +219,7 @@ def test_apex_batch_rows_equal_scalar_calls_and_invalid_rows_get_invalid_input()
 # 4. The map's method option
 # ----------------------------------------------------------------------------------------------
 def test_method_option_defaults_to_compiled_and_scipy_is_the_reference():
-    exact = slipmaps.runtime.index.get("exact")
+    exact = slipmaps.runtime.api.index.get("exact")
     assert exact.option("method").default == "compiled"
     assert exact.option("method").choices == ("compiled", "scipy")
     p, td = HUMAN_RUNNER.with_(k_d=25_000.0), (1.0, -1.5, 0.35, -4.5)

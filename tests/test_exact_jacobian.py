@@ -1,6 +1,6 @@
-"""Exact stance derivatives (runtime/exact_jacobian.py, through slipmaps.stance_jacobian("exact")):
+"""Exact stance derivatives (runtime/exact/jacobian.py, through slipmaps.stance_jacobian("exact")):
 the variational equations of (2)-(3) with saltation matrices at the bottom (k_c -> k_d) and at
-liftoff, against central differences of the compiled simulator itself (runtime/exact_compiled.py).
+liftoff, against central differences of the compiled simulator itself (runtime/exact/compiled.py).
 
 Central-difference step: h = 1e-5 times each input's scale (l0, sqrt(g_s l0), 1 rad, sqrt(g_s/l0),
 k_c, k_d), the best of 1e-4 ... 1e-7 measured on every case below (truncation error ~ h^2 above,
@@ -17,10 +17,10 @@ import pytest
 import slipmaps
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
-from slipmaps.runtime import exact_compiled as ec
-from slipmaps.runtime import exact_jacobian as ej
-from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
-from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL
+from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.exact import compiled as ec
+from slipmaps.runtime.exact import jacobian as ej
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL
 
 FD_STEP = 1e-5
 

@@ -1,4 +1,4 @@
-"""Periodic gaits (runtime/gait.py, `slipmaps gait`) and the stability docs (docs/stability.md, .json).
+"""Periodic gaits (runtime/analysis/gait.py, `slipmaps gait`) and the stability docs (docs/stability.md).
 
 The fixed points are checked against their definition (the step returns to the same apex), against
 brentq, and their eigenvalue against a finite-difference slope of the one-dimensional return map.
@@ -16,10 +16,11 @@ import pytest
 import slipmaps
 from records import assert_close
 from scipy.optimize import brentq
-from slipmaps.runtime import gait, stability
-from slipmaps.runtime.cli import main
-from slipmaps.runtime.report_format import rounded
-from slipmaps.runtime.stability_report import grid_rows, region_facts, render_markdown
+from slipmaps.runtime.analysis import gait
+from slipmaps.runtime.cli.app import main
+from slipmaps.runtime.studies import stability
+from slipmaps.runtime.studies.report_format import rounded
+from slipmaps.runtime.studies.stability_report import grid_rows, region_facts, render_markdown
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 P = slipmaps.HUMAN_RUNNER

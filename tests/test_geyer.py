@@ -26,7 +26,7 @@ import slipmaps
 from scipy.integrate import solve_ivp
 from slipmaps import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams, Status
 from slipmaps.generated import flight as g_flight
-from slipmaps.runtime.simulate import simulate_step
+from slipmaps.runtime.exact.reference import simulate_step
 
 MAP = "geyer"
 PARAMS = [pytest.param(HUMAN_RUNNER, id="human"), pytest.param(ROBOT_HOPPER, id="hopper")]

@@ -11,8 +11,8 @@ import slipmaps
 from slipmaps.derive.maps import quadrature, schwind
 from slipmaps.derive.symbols import k_c, k_d
 from slipmaps.generated.status import Status
-from slipmaps.runtime import index
-from slipmaps.runtime.params import HUMAN_RUNNER, SlipParams
+from slipmaps.runtime.api import index
+from slipmaps.runtime.api.params import HUMAN_RUNNER, SlipParams
 
 
 def _apex_points():
@@ -172,7 +172,7 @@ def test_half_batch_rows_equal_scalar_calls_and_bad_rows_get_their_own_status():
 
 
 def test_half_maps_are_listed_and_refuse_the_whole_stance_api():
-    from slipmaps.runtime.index import halves as all_halves
+    from slipmaps.runtime.api.index import halves as all_halves
 
     halves = {h.name: h for h in all_halves()}
     assert {n: (h.section, h.start, h.end) for n, h in halves.items()} == {

@@ -750,7 +750,7 @@ def test_batch_bad_rows_do_not_spoil_good_rows(kernel):
 
 
 # ----------------------------------------------------------------------------------------------
-# The public API (runtime/maps.py), every map of slipmaps.maps() including "exact"
+# The public API (runtime/api/maps.py), every map of slipmaps.maps() including "exact"
 # ----------------------------------------------------------------------------------------------
 API_MAPS = [m.name for m in slipmaps.maps()]
 API_OPTIONS = [(m.name, o) for m in slipmaps.maps() for o in m.options]

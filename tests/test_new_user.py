@@ -20,11 +20,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.runtime import checkout
-from slipmaps.runtime import compare as compare_module
-from slipmaps.runtime.apex_defaults import default_apex
-from slipmaps.runtime.cli import build_parser, main
-from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER
+from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER
+from slipmaps.runtime.cli import compare as compare_module
+from slipmaps.runtime.cli.app import build_parser, main
+from slipmaps.runtime.cli.defaults import default_apex
+from slipmaps.runtime.studies import checkout
 
 P = HUMAN_RUNNER
 ROOT = Path(__file__).resolve().parent.parent
@@ -151,7 +151,7 @@ def test_read_only_install_without_a_writable_home(tmp_path):
         "import {first}, os, slipmaps\n"
         "r = slipmaps.stance('geyer', slipmaps.HUMAN_RUNNER, (1.0, -1.5, 0.35, -4.5))\n"
         "from slipmaps.generated import geyer\n"
-        "from slipmaps.runtime import kernel_cache\n"
+        "from slipmaps import kernel_cache\n"
         "print(r.status.name, slipmaps.__file__, kernel_cache.cache_root(),\n"
         "      geyer.geyer_stance._cache._cache_path)\n"
     )
@@ -190,7 +190,7 @@ def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp
     code = (
         "import slipmaps, other\n"
         "from slipmaps.generated import geyer\n"
-        "from slipmaps.runtime import kernel_cache\n"
+        "from slipmaps import kernel_cache\n"
         "assert slipmaps.apex_return('exact', slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35).ok\n"
         "assert other.f(1.0) == 2.0\n"
         "print(kernel_cache.cache_root(), geyer.geyer_stance._cache._cache_path,\n"
@@ -207,7 +207,7 @@ def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp
     assert Path(root) == xdg / "slipmaps" / "numba" and Path(kernel_dir).parent == Path(root)
     assert Path(other_dir) == foreign / "__pycache__", other_dir  # numba's default for other code
     cached = {p.parent.name.split("_")[0] for p in Path(root).rglob("*.nbi")}
-    assert cached == {"generated", "runtime"}, cached  # the generated maps and the exact simulator
+    assert cached == {"generated", "exact"}, cached  # the generated maps and the exact simulator
     assert not list(site.rglob("*.nbi")) and not list(site.rglob("*.nbc")), "numba cached inside the install"
     # NUMBA_CACHE_DIR, numba's own setting, still wins
     mine = tmp_path / "mine"
@@ -266,7 +266,7 @@ def test_compare_json_exit_status_and_statuses(capsys):
 
 
 def test_exit_status_is_documented():
-    from slipmaps.runtime import cli
+    from slipmaps.runtime.cli import app as cli
 
     compare_help = build_parser()._subparsers._group_actions[0].choices["compare"].format_help()
     for text in (compare_help, (ROOT / "README.md").read_text(), cli.__doc__):
@@ -485,7 +485,7 @@ def test_readme_names_importable_modules_and_cites_the_report_by_title():
 @pytest.fixture
 def no_measuring(monkeypatch):
     """Record where `slipmaps accuracy` would write instead of measuring (about 40 s of CPU)."""
-    from slipmaps.runtime import accuracy_report
+    from slipmaps.runtime.studies import accuracy_report
 
     calls = []
     monkeypatch.setattr(

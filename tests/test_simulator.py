@@ -1,4 +1,4 @@
-"""Tests of the exact hybrid simulator (runtime/simulate.py), the ground truth of the maps.
+"""Tests of the exact hybrid simulator (runtime/exact/reference.py), the ground truth of the maps.
 
 Equation numbers refer to the source report: (1)-(3) the stance Lagrangian and its equations of
 motion, (6) the stance energy, (13)-(16) the touchdown/bottom/liftoff times of a symmetric stance,
@@ -20,9 +20,9 @@ from scipy.optimize import brentq
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import MESSAGES, Status
-from slipmaps.runtime import simulate as sim
-from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
-from slipmaps.runtime.simulate import (
+from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.exact import reference as sim
+from slipmaps.runtime.exact.reference import (
     StanceResult,
     StepResult,
     simulate_from_touchdown,

@@ -18,10 +18,10 @@ from records import assert_close
 from slipmaps import HUMAN_RUNNER
 from slipmaps.generated import slip_model
 from slipmaps.generated.geyer_vs import bottom_quartic
-from slipmaps.runtime import stiffness
-from slipmaps.runtime.grids import Grid
-from slipmaps.runtime.simulate import simulate_step
-from slipmaps.runtime.stiffness_report import TARGET, render_markdown, target_rows
+from slipmaps.runtime.exact.reference import simulate_step
+from slipmaps.runtime.studies import stiffness
+from slipmaps.runtime.studies.grids import Grid
+from slipmaps.runtime.studies.stiffness_report import TARGET, render_markdown, target_rows
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 

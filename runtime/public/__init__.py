@@ -20,7 +20,7 @@ top-level package ``slipmaps`` (``pyproject.toml``, ``package-dir``).
 
 numba caches the compiled kernels in ``NUMBA_CACHE_DIR`` when it is set, else in
 ``~/.cache/slipmaps/numba`` (``$XDG_CACHE_HOME``), never inside the installed package; importing
-``slipmaps`` sets this up (``slipmaps.runtime.kernel_cache``).
+``slipmaps`` sets this up (``slipmaps.kernel_cache``).
 """
 
 from __future__ import annotations
@@ -30,32 +30,32 @@ import importlib
 #: Public name -> the module that defines it. Loaded on first use (PEP 562), so that importing
 #: ``slipmaps.derive`` (``slipmaps generate``) never needs the generated kernels.
 _EXPORTS = {
-    "SlipParams": "slipmaps.runtime.params",
-    "HUMAN_RUNNER": "slipmaps.runtime.params",
-    "ROBOT_HOPPER": "slipmaps.runtime.params",
-    "maps": "slipmaps.runtime.index",
-    "MapInfo": "slipmaps.runtime.index",
-    "stance": "slipmaps.runtime.maps",
-    "stance_batch": "slipmaps.runtime.maps",
-    "apex_return": "slipmaps.runtime.maps",
-    "apex_return_batch": "slipmaps.runtime.maps",
-    "trajectory": "slipmaps.runtime.maps",
-    "half_stance": "slipmaps.runtime.maps",
-    "half_stance_batch": "slipmaps.runtime.maps",
-    "stance_jacobian": "slipmaps.runtime.jacobian",
-    "stance_jacobian_batch": "slipmaps.runtime.jacobian",
-    "apex_return_jacobian": "slipmaps.runtime.jacobian",
-    "apex_return_jacobian_batch": "slipmaps.runtime.jacobian",
-    "Jacobian": "slipmaps.runtime.jacobian",
-    "JacobianBatch": "slipmaps.runtime.jacobian",
-    "fixed_points": "slipmaps.runtime.gait",
-    "FixedPoint": "slipmaps.runtime.gait",
-    "Result": "slipmaps.runtime.results",
-    "BatchResult": "slipmaps.runtime.results",
+    "SlipParams": "slipmaps.runtime.api.params",
+    "HUMAN_RUNNER": "slipmaps.runtime.api.params",
+    "ROBOT_HOPPER": "slipmaps.runtime.api.params",
+    "maps": "slipmaps.runtime.api.index",
+    "MapInfo": "slipmaps.runtime.api.index",
+    "stance": "slipmaps.runtime.api.maps",
+    "stance_batch": "slipmaps.runtime.api.maps",
+    "apex_return": "slipmaps.runtime.api.maps",
+    "apex_return_batch": "slipmaps.runtime.api.maps",
+    "trajectory": "slipmaps.runtime.api.maps",
+    "half_stance": "slipmaps.runtime.api.maps",
+    "half_stance_batch": "slipmaps.runtime.api.maps",
+    "stance_jacobian": "slipmaps.runtime.api.jacobian",
+    "stance_jacobian_batch": "slipmaps.runtime.api.jacobian",
+    "apex_return_jacobian": "slipmaps.runtime.api.jacobian",
+    "apex_return_jacobian_batch": "slipmaps.runtime.api.jacobian",
+    "Jacobian": "slipmaps.runtime.api.jacobian",
+    "JacobianBatch": "slipmaps.runtime.api.jacobian",
+    "fixed_points": "slipmaps.runtime.analysis.gait",
+    "FixedPoint": "slipmaps.runtime.analysis.gait",
+    "Result": "slipmaps.runtime.api.results",
+    "BatchResult": "slipmaps.runtime.api.results",
     "Status": "slipmaps.generated.status",
-    "Sweep": "slipmaps.runtime.sweep",
-    "sweep": "slipmaps.runtime.sweep",
-    "read_sweep": "slipmaps.runtime.sweep",
+    "Sweep": "slipmaps.runtime.sweep.run",
+    "sweep": "slipmaps.runtime.sweep.run",
+    "read_sweep": "slipmaps.runtime.sweep.run",
     "MESSAGES": "slipmaps.generated.status",
 }
 
@@ -75,5 +75,5 @@ def __dir__():
 
 
 # Before any kernel module is imported: numba caches slipmaps' compiled kernels in a user cache
-# directory, never inside the installed package (runtime/kernel_cache.py says why and where).
-importlib.import_module("slipmaps.runtime.kernel_cache").install()
+# directory, never inside the installed package (runtime/public/kernel_cache.py says why and where).
+importlib.import_module("slipmaps.kernel_cache").install()

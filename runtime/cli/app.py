@@ -1,0 +1,476 @@
+"""The ``slipmaps`` command line (also ``python -m slipmaps`` and ``python -m slipmaps.runtime``).
+
+Subcommands (``slipmaps --version`` prints the installed version):
+
+- ``maps [--json]``: the maps of the index (name, title, report section, equations, requirements,
+  options), then the half-stance maps;
+- ``compare [--map NAME] [--against NAME] [--option KEY=VALUE ...]``: the main job, one step by two
+  maps from the same touchdown (default Geyer et al. against the exact simulator): table + plot; a
+  half-stance map is compared with the same half of --against (from its bottom for a decompression
+  half). The default step scales with the leg: apex height 1.0 l0 (``--apex-height-l0``), speed by
+  the Froude number 1.596 (``--froude``), touchdown angle 0.35 rad sqrt(25.5 / kappa) with kappa =
+  k_c l0 / (m g_s), i.e. 1.0 m, 5 m/s and 0.35 rad for the human runner; ``--apex-height`` [m],
+  ``--apex-speed`` [m/s] and ``--angle`` [rad] give absolute values. With ``--touchdown`` the
+  touchdown leg length q_r_td is the state's q_r (a different ``--q-r-td`` is refused). Exit status:
+  0 when both sides ran (status OK), 1 when a side failed physically (no touchdown, a fall, no
+  flight phase...: its status and message under the table, ``n/a`` in its cells), 2 for a user error;
+- ``accuracy [--map NAME|all] [--out DIR]``: every map against the exact simulator on the accuracy
+  grids, written as accuracy.md (+ .json, .png) with the convergence study of the iterative maps
+  (convergence.md), the variable-stiffness study over k_d/k_c (stiffness.md) and the periodic
+  gaits' fixed points and stability (stability.md): into the checkout's docs/ when slipmaps runs
+  from a source checkout, else into ``--out DIR`` (required there);
+- ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
+  apex-return map and their eigenvalues (runtime/cli/gait.py);
+- ``equations [--json]``: run the symbolic check of every registered report equation;
+- ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
+  stale); a source checkout only.
+
+A user error (bad value, unknown map or option, a map that refuses the parameters, a plot path that
+cannot be written) is one line on standard error and exit code 2, never a traceback; it names the
+flag as typed. The map names and options come from the generated index.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+from ..api.numeric import num
+from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, ParamError, ParamTypeError, SlipParams
+from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import sweep as sweep_cli
+from .defaults import (
+    APEX_FROUDE,
+    APEX_HEIGHT_L0,
+    TOUCHDOWN_ANGLE,
+    apex_height_of,
+    apex_speed_of,
+    default_touchdown_angle,
+    stiffness_number,
+)
+
+#: The reference of ``compare`` (``"exact"`` in the index; spelled here so that building the parser,
+#: and so ``slipmaps generate``, never needs the generated index).
+EXACT = "exact"
+
+__all__ = ["main", "build_parser"]
+
+
+def _add_params(p: argparse.ArgumentParser) -> None:
+    d = HUMAN_RUNNER
+    g = p.add_argument_group("SLIP parameters (SI units; default: the human runner)")
+    g.add_argument("--m", type=float, default=d.m, help="body mass [kg] (default %(default)s)")
+    g.add_argument("--l0", type=float, default=d.l0, help="rest leg length [m] (default %(default)s)")
+    g.add_argument(
+        "--k", type=float, default=None, help="leg stiffness, sets k_c = k_d [N/m] (default 20000)"
+    )
+    g.add_argument(
+        "--k-c",
+        type=float,
+        default=None,
+        help="compression stiffness [N/m] (default 20000; alone: k_d stays 20000)",
+    )
+    g.add_argument(
+        "--k-d",
+        type=float,
+        default=None,
+        help="decompression stiffness [N/m] (default 20000; alone: k_c stays 20000)",
+    )
+    g.add_argument("--g-s", type=float, default=d.g_s, help="gravity in stance [m/s^2] (default %(default)s)")
+    g.add_argument("--g-f", type=float, default=d.g_f, help="gravity in flight [m/s^2] (default %(default)s)")
+    g.add_argument(
+        "--q-r-td", type=float, default=None, help="touchdown leg length [m] (default l0; --touchdown: Q_R)"
+    )
+    g.add_argument("--q-r-lo", type=float, default=None, help="liftoff leg length [m] (default l0)")
+
+
+def _params(args: argparse.Namespace) -> SlipParams:
+    """The parameters as given (an unset stiffness is the human runner's); a bad value is a
+    ValueError naming the flag typed (``--k`` when it set both stiffnesses). With ``--touchdown``
+    the touchdown leg length is the state's q_r: a different ``--q-r-td`` is refused."""
+    if args.k is not None and (args.k_c is not None or args.k_d is not None):
+        raise ValueError("--k sets both stiffnesses: give either --k or --k-c/--k-d, not both")
+    if args.k_c is None and args.k_d is None:
+        stiff = {"k": HUMAN_RUNNER.k_c if args.k is None else args.k}
+    else:
+        stiff = {
+            "k_c": HUMAN_RUNNER.k_c if args.k_c is None else args.k_c,
+            "k_d": HUMAN_RUNNER.k_d if args.k_d is None else args.k_d,
+        }
+    touchdown = getattr(args, "touchdown", None)
+    if touchdown is not None and args.q_r_td is not None and args.q_r_td != touchdown[0]:
+        raise ValueError(
+            f"--q-r-td {num(args.q_r_td)} contradicts --touchdown, whose q_r {num(touchdown[0])} is the "
+            "touchdown leg length: drop --q-r-td (it is taken from the state)"
+        )
+    try:
+        return SlipParams(
+            m=args.m, l0=args.l0, **stiff, g_s=args.g_s, g_f=args.g_f, q_r_td=args.q_r_td, q_r_lo=args.q_r_lo
+        )
+    except (ParamError, ParamTypeError) as exc:
+        raise ValueError(f"--{exc.field.replace('_', '-')} {exc.problem}, got {num(exc.value)}") from None
+
+
+def _stiffness_note(args: argparse.Namespace, params: SlipParams) -> str | None:
+    """A note when one of --k-c/--k-d alone made k_c != k_d (the other kept its default)."""
+    if params.constant_stiffness or (args.k_c is None) == (args.k_d is None):
+        return None
+    given, other = ("--k-c", "k_d") if args.k_c is not None else ("--k-d", "k_c")
+    return (
+        f"only {given} given: {other} keeps its default {HUMAN_RUNNER.k_c:g} N/m, so k_c != k_d "
+        "(variable stiffness); give both, or --k for a constant stiffness"
+    )
+
+
+def _step(args: argparse.Namespace, params: SlipParams) -> dict:
+    """The step's keywords of :func:`~.compare.compare`, validated under the flags' names: the apex
+    (absolute, or relative to the leg) or the touchdown state; None keeps a default."""
+    height = speed = None
+    if args.apex_height is not None:
+        height = non_negative("--apex-height", args.apex_height)
+    if args.apex_height_l0 is not None:
+        height = apex_height_of(params, positive("--apex-height-l0", args.apex_height_l0))
+    if args.apex_speed is not None:
+        speed = non_negative("--apex-speed", args.apex_speed)
+    if args.froude is not None:
+        speed = apex_speed_of(params, non_negative("--froude", args.froude))
+    angle = None if args.angle is None else leg_angle("--angle", args.angle)
+    td = None if args.touchdown is None else polar_state(params, args.touchdown, what="--touchdown")
+    return {"apex_height": height, "apex_speed": speed, "touchdown_angle": angle, "touchdown": td}
+
+
+#: The image formats --plot can write (matplotlib's; the suffix chooses).
+_PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
+
+
+def _plot_path(path: str) -> str:
+    """``--plot``'s path, checked before any work: an image suffix, its directory created when
+    missing and writable; ValueError (one line) otherwise."""
+    target = Path(path)
+    if target.is_dir():
+        raise ValueError(f"--plot {path} is a directory; give a file, e.g. {target / 'compare.png'}")
+    if target.suffix.lower().lstrip(".") not in _PLOT_FORMATS:
+        raise ValueError(f"--plot {path}: give an image file name ending in .{', .'.join(_PLOT_FORMATS)}")
+    folder = target.parent
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"--plot {path}: cannot create the directory {folder}: {exc.strerror}") from None
+    if not os.access(folder, os.W_OK):
+        raise ValueError(f"--plot {path}: the directory {folder} is not writable")
+    return path
+
+
+def _options(name: str, pairs: list[str] | None) -> dict:
+    """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
+    from ..api.index import lookup
+
+    info = lookup(name)
+    out = {}
+    for pair in pairs or ():
+        key, sep, value = pair.partition("=")
+        if not sep:
+            raise ValueError(f"--option takes KEY=VALUE, got {pair!r}")
+        opt = info.option(key.strip())
+        value = value.strip()
+        try:
+            out[opt.name] = (
+                value if opt.kind == "choice" else (int(value) if opt.kind == "int" else float(value))
+            )
+        except ValueError:
+            raise ValueError(
+                f"map {name!r} option {opt.name!r} must be a {opt.kind}, got {value!r}"
+            ) from None
+    return out
+
+
+def _version() -> str:
+    """The installed distribution's version (``unknown`` when slipmaps runs uninstalled)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("slipmaps")
+    except PackageNotFoundError:
+        return "unknown (not installed)"
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="slipmaps",
+        description="Approximate SLIP stance maps: derived in SymPy, generated as numba kernels, "
+        "checked against numerical integration.",
+    )
+    parser.add_argument("--version", action="version", version=f"slipmaps {_version()}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    mp = sub.add_parser(
+        "maps",
+        help="list the maps (name, title, report section, equations, options)",
+        description="List every map of the index (name, report section, title, equations, requirements, "
+        "options with their defaults), then the half-stance maps.",
+    )
+    mp.add_argument("--json", action="store_true", help="print the index as JSON")
+
+    cmp_ = sub.add_parser(
+        "compare",
+        help="one step by two maps from the same touchdown: table and plot",
+        description="One SLIP step from an apex (default: 1.0 l0 high at Froude number "
+        f"{APEX_FROUDE:.4g}, touchdown angle scaled by the leg's stiffness; 1.0 m, 5 m/s and "
+        f"{TOUCHDOWN_ANGLE:g} rad for the human runner) or from a touchdown state, by --map and by "
+        "--against (default: Geyer et al.'s map, or geyer-vs when k_c != k_d, against the exact simulator).",
+        epilog="exit status: 0 both sides ran (status OK); 1 a side failed physically (no touchdown, a fall, "
+        "no flight phase...: n/a in its cells, its status and message under the table); 2 a user error "
+        "(one line on standard error).",
+    )
+    _add_params(cmp_)
+    cmp_.add_argument(
+        "--map",
+        default=None,
+        help="the map to compare (default geyer; geyer-vs when k_c != k_d; see `slipmaps maps`)",
+    )
+    cmp_.add_argument("--against", default=EXACT, help="the reference map (default %(default)s)")
+    cmp_.add_argument(
+        "--option", action="append", metavar="KEY=VALUE", help="an option of --map (repeatable)"
+    )
+    cmp_.add_argument("--against-option", action="append", metavar="KEY=VALUE", help="an option of --against")
+    t = cmp_.add_argument_group(
+        "touchdown conditions (an apex, or --touchdown)",
+        "The defaults scale with the leg (the human runner's: 1.0 m, 5 m/s, 0.35 rad): --apex-height-l0 "
+        "and --froude are relative to l0, --apex-height [m], --apex-speed [m/s] and --angle [rad] "
+        "absolute (give one of each pair).",
+    )
+    height = t.add_mutually_exclusive_group()
+    height.add_argument(
+        "--apex-height",
+        type=float,
+        default=None,
+        help="apex height [m], absolute (default: see --apex-height-l0)",
+    )
+    height.add_argument(
+        "--apex-height-l0",
+        type=float,
+        default=None,
+        metavar="H",
+        help=f"apex height in units of l0 (default {APEX_HEIGHT_L0}: 1.0 m for the human runner, "
+        "0.25 m for a 0.25 m leg)",
+    )
+    speed = t.add_mutually_exclusive_group()
+    speed.add_argument(
+        "--apex-speed", type=float, default=None, help="apex speed [m/s], absolute (default: see --froude)"
+    )
+    speed.add_argument(
+        "--froude",
+        type=float,
+        default=None,
+        metavar="FR",
+        help=f"apex speed as the Froude number v/sqrt(g_f l0) (default {APEX_FROUDE:.4g}: 5 m/s for the "
+        "human runner, 2.5 m/s for a 0.25 m leg)",
+    )
+    t.add_argument(
+        "--angle",
+        type=float,
+        default=None,
+        help=f"touchdown leg angle q_th_td [rad], absolute (default {TOUCHDOWN_ANGLE:g} "
+        f"sqrt({stiffness_number(HUMAN_RUNNER):.3g}/kappa), kappa = k_c l0/(m g_s) the dimensionless "
+        f"stiffness: {TOUCHDOWN_ANGLE:g} rad for the human runner, "
+        f"{default_touchdown_angle(ROBOT_HOPPER):.3g} rad for the robot hopper)",
+    )
+    t.add_argument(
+        "--touchdown",
+        type=float,
+        nargs=4,
+        metavar=("Q_R", "Q_RD", "Q_TH", "Q_THD"),
+        default=None,
+        help="start from this polar touchdown state instead of an apex (e.g. a nonsymmetric one); "
+        "its Q_R is the touchdown leg length q_r_td",
+    )
+    cmp_.add_argument(
+        "--plot",
+        default="slipmaps_compare.png",
+        help="image path, .png/.pdf/.svg (default %(default)s; a missing directory is created)",
+    )
+    cmp_.add_argument("--no-plot", action="store_true", help="do not write the plot")
+    cmp_.add_argument("--json", action="store_true", help="print the numbers as JSON instead of a table")
+
+    gen = sub.add_parser(
+        "generate",
+        help="regenerate generated/ and docs from derive/ (needs the [derive] extra)",
+        description="Render generated/ (the numba kernels and the map index), docs/equations.md, "
+        "docs/maps.md and the README tables from the SymPy derivations in derive/. Works on a source "
+        "checkout (pip install -e '.[derive]'); writes only files whose content changes.",
+    )
+    gen.add_argument("--check", action="store_true", help="exit 1 if generated files differ from the sources")
+
+    eq = sub.add_parser(
+        "equations",
+        help="check every registered report equation symbolically and print its status",
+        description="Run the SymPy check of every equation of the report registered in derive/equations "
+        "and print its status (verified, corrected, definition) with a note; exit 1 if a check fails. "
+        "Needs the [derive] extra.",
+    )
+    eq.add_argument("--json", action="store_true", help="one JSON object per equation")
+
+    acc = sub.add_parser(
+        "accuracy",
+        help="every map against the exact simulator on the accuracy grids",
+        description="Measure every map (or one) against the exact simulator on the accuracy grids and "
+        "write accuracy.md (+ .json, .png), convergence.md, stiffness.md and stability.md (+ .json, .png): "
+        "into the "
+        "checkout's docs/ when slipmaps runs from a source checkout, else into --out DIR.",
+    )
+    acc.add_argument(
+        "--map",
+        default="all",
+        help="a map name, or 'all' (default): all maps, written as accuracy.md (and beside it "
+        "convergence.md, stiffness.md, stability.md); one map: accuracy_<map>.md",
+    )
+    acc.add_argument(
+        "--out",
+        default=None,
+        metavar="DIR",
+        help="the directory to write into (or a .md path for the accuracy report); default: the "
+        "checkout's docs/, required when slipmaps does not run from a source checkout",
+    )
+    acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+
+    from .gait import add_parser as add_gait
+
+    add_gait(sub)
+    sweep_cli.add_parser(sub)
+    return parser
+
+
+def _cmd_maps(args: argparse.Namespace) -> int:
+    from ..api.index import HalfInfo, halves, maps
+
+    rows = maps() + halves()
+    if args.json:
+        print(json.dumps([m.as_dict() for m in rows], indent=2))
+        return 0
+    w = max(len(m.name) for m in rows) + 1
+    for m in rows:
+        print(f"{m.name:<{w}} {m.section:<6} {m.title}")
+        if isinstance(m, HalfInfo):
+            where = f"half of {m.whole}: {m.start} -> {m.end} (slipmaps.half_stance)"
+        else:
+            where = f"requires {', '.join(m.requires) or 'nothing'}"
+        print(f"{'':<{w}} equations {', '.join(m.equations)}; {where}")
+        for o in m.options:
+            kind = "|".join(o.choices) if o.kind == "choice" else o.kind
+            print(f"{'':<{w}} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
+    return 0
+
+
+def _cmd_compare(args: argparse.Namespace) -> int:
+    """0 when both sides ran, 1 when a side failed physically (its status under the table)."""
+    params = _params(args)
+    step = _step(args, params)  # bad values and plot paths are refused before any work
+    path = None if args.no_plot else _plot_path(args.plot)
+    note = _stiffness_note(args, params)
+    if note:
+        print(f"slipmaps compare: note: {note}", file=sys.stderr)
+    from .compare import compare, default_map, format_table, plot
+
+    name = args.map or default_map(params)
+    c = compare(
+        params,
+        map=name,
+        against=args.against,
+        **step,
+        options=_options(name, args.option),
+        against_options=_options(args.against, args.against_option),
+    )
+    if path:
+        try:
+            plot(c, path)
+        except OSError as exc:
+            raise ValueError(f"--plot {path}: {exc.strerror or exc}") from None
+    if args.json:
+        data = c.to_dict()
+        data["plot"] = path
+        print(json.dumps(data, indent=2))
+    else:
+        print(format_table(c))
+        if path:
+            print(f"\nplot: {path}")
+    return 0 if c.ok else 1
+
+
+def _derive_module(name: str):
+    import importlib
+
+    try:
+        return importlib.import_module(f"slipmaps.derive.{name}")
+    except ImportError as exc:  # sympy / jinja2 missing
+        raise ValueError(f"needs the derive extra (pip install -e '.[derive]'): {exc}") from None
+
+
+def _cmd_generate(args: argparse.Namespace) -> int:
+    return _derive_module("generate").main(check_only=args.check)
+
+
+def _cmd_equations(args: argparse.Namespace) -> int:
+    return _derive_module("equations").main(json_output=args.json)
+
+
+def _accuracy_out(args: argparse.Namespace) -> Path:
+    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path), else the
+    checkout's docs/; ValueError when there is neither (never a relative docs/)."""
+    from ..studies.checkout import docs_dir
+
+    name = "accuracy.md" if args.map == "all" else f"accuracy_{args.map}.md"
+    if args.out is not None:
+        out = Path(args.out)
+        return out if out.suffix == ".md" else out / name
+    docs = docs_dir()
+    if docs is None:
+        raise ValueError(
+            "slipmaps does not run from a source checkout, so there is no docs/ to update: "
+            "give --out DIR (the directory for accuracy.md, convergence.md, stiffness.md)"
+        )
+    return docs / name
+
+
+def _cmd_accuracy(args: argparse.Namespace) -> int:
+    from ..api.index import get
+    from ..studies.accuracy_report import write
+
+    names = None if args.map == "all" else [get(args.map).name]
+    if names == [EXACT]:
+        raise ValueError("accuracy compares maps against the exact simulator; choose an approximate map")
+    out = _accuracy_out(args)  # before any work
+    for path in write(out, names, show_progress=False if args.no_progress else None):
+        print(f"wrote {path}")
+    return 0
+
+
+def _cmd_gait(args: argparse.Namespace) -> int:
+    from .gait import run
+
+    return run(args)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    handlers = {
+        "maps": _cmd_maps,
+        "compare": _cmd_compare,
+        "generate": _cmd_generate,
+        "equations": _cmd_equations,
+        "accuracy": _cmd_accuracy,
+        "gait": _cmd_gait,
+        "sweep": sweep_cli.run,
+    }
+    try:
+        return handlers[args.command](args)
+    except (ValueError, TypeError) as exc:
+        print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,382 @@
+"""The exact stance and step compiled with numba: the default ``"exact"`` map.
+
+The same hybrid simulation as :mod:`.simulate` (its docstring states the conventions, the events
+and the statuses; they are not restated differently here), integrated by the compiled DOP853 of
+:mod:`.dop853` instead of ``solve_ivp``:
+
+* compression with ``k_c`` from touchdown until ``q_rd`` crosses 0 upward (the bottom; ``q_rd`` set
+  to exactly 0 there, report section 2.2.1), then decompression with ``k_d`` until ``q_r`` crosses
+  ``q_r_lo`` upward (liftoff); the right-hand side is the generated kernel
+  ``slip_model.stance_polar_rhs`` (report eqs (2)-(3));
+* failures as :mod:`.simulate` reports them: ``TOUCHDOWN_NOT_COMPRESSING`` (``q_rd >= 0`` at
+  touchdown), ``FALL`` (``cos q_th`` crosses 0, or ``q_r <= COLLAPSE_FRACTION l0``),
+  ``NO_LIFTOFF`` (bottom leg length ``>= q_r_lo``, or ``t_max`` reached), ``RECOMPRESSION`` (the
+  ``k_d`` spring cannot extend the leg at the bottom, or ``q_rd`` crosses 0 downward after it),
+  ``INTEGRATION_FAILED``; the flights are the generated ``flight.apex_to_touchdown`` /
+  ``flight.liftoff_to_apex`` (``APEX_TOO_LOW``, ``LIFTOFF_DOWNWARD``, ``LIFTOFF_BACKWARD``);
+* the same tolerances (``DEFAULT_RTOL``, ``DEFAULT_ATOL``), step cap (:func:`.simulate.max_step`) and
+  time limit (:func:`.simulate.default_t_max`) as the solve_ivp reference.
+
+Kernels (``@njit``, never raise; NaN outputs unless the status is OK):
+
+* :func:`stance_into` (touchdown state -> one row of :data:`STANCE_NAMES`, returns the status) and
+  :func:`stance_batch` (parallel, ``prange``, one status per row; ``INVALID_INPUT`` for a row that
+  is not finite, has ``q_r`` outside ``(0, l0]`` or ``|q_th| >= pi/2``);
+* :func:`step_into` (apex height, apex speed, touchdown angle -> one row of :data:`STEP_NAMES`:
+  every stance output, then the apex-return outputs) and :func:`step_batch`.
+
+Rows are laid out by the index's names (``results.columns``), never by position. Measured against
+the solve_ivp reference (tests/test_exact_compiled.py): on the test steps (human runner and robot
+hopper, symmetric and nonsymmetric, k_c == k_d and k_c != k_d) bottom and liftoff states agree to
+3.8e-15 (relative to max(1, |value|)), t_bottom and t_stance to 4.4e-16 s; over 1463 random
+stances to 6.9e-14 and 3.2e-15 s; every failure case of tests/test_simulator.py gets the same status.
+The energy (27) drifts by at most 7.7e-12 (relative) within a subphase, as with solve_ivp.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from slipmaps.generated import flight as gen_flight
+from slipmaps.generated.slip_model import stance_polar_rhs
+from slipmaps.generated.status import Status
+
+from ..api.params import SlipParams
+from ..api.results import GROUPS, columns
+from ..api.validate import POLAR_NAMES
+from . import dop853
+from .reference import COLLAPSE_FRACTION, default_t_max, max_step
+
+__all__ = [
+    "STANCE_NAMES",
+    "STEP_NAMES",
+    "stance_batch",
+    "stance_into",
+    "stance_values",
+    "step_batch",
+    "step_into",
+    "step_values",
+]
+
+#: The columns of a stance row (the index's stance outputs).
+STANCE_NAMES = columns("stance")
+#: The columns of a step row: every stance output, then the apex-return outputs not among them.
+STEP_NAMES = (*STANCE_NAMES, *(n for n in columns("apex_return") if n not in STANCE_NAMES))
+N_STANCE = len(STANCE_NAMES)
+N_STEP = len(STEP_NAMES)
+
+# Polar state components by name.
+Q_R, Q_RD, Q_TH, Q_THD = (POLAR_NAMES.index(n) for n in ("q_r", "q_rd", "q_th", "q_thd"))
+N_POLAR = len(POLAR_NAMES)
+
+
+def _start(names: tuple[str, ...], group: str) -> int:
+    """First column of a group of 4 in ``names``, checked contiguous and in polar order."""
+    j = names.index(GROUPS[group][0])
+    if names[j : j + len(GROUPS[group])] != GROUPS[group]:
+        raise RuntimeError(f"group {group!r} is not contiguous in {names}")
+    return j
+
+
+# Columns of a stance row (STEP_NAMES starts with the same columns).
+T_BOTTOM = STANCE_NAMES.index("t_bottom")
+T_STANCE = STANCE_NAMES.index("t_stance")
+BOTTOM = _start(STANCE_NAMES, "bottom")
+LIFTOFF = _start(STANCE_NAMES, "liftoff")
+# Columns of a step row beyond the stance's.
+APEX_HEIGHT = STEP_NAMES.index("apex_height")
+APEX_SPEED = STEP_NAMES.index("apex_speed")
+T_DESCENT = STEP_NAMES.index("t_descent")
+T_ASCENT = STEP_NAMES.index("t_ascent")
+if STEP_NAMES[:N_STANCE] != STANCE_NAMES:
+    raise RuntimeError("STEP_NAMES must start with the stance columns")
+
+# Events, in simulate.py's order (ties go to the first); both subphases watch the same event
+# functions with their own directions (NaN: not watched), so the integrator is compiled once.
+EV_LIFTOFF, EV_RADIAL, EV_FALL, EV_COLLAPSE = 0, 1, 2, 3  # q_r - q_r_lo, q_rd, cos q_th, q_r - r_min
+#: Compression: the bottom (q_rd up through 0), fall, collapse.
+COMPRESSION_DIRECTIONS = np.array([math.nan, +1.0, -1.0, -1.0])
+#: Decompression: liftoff (q_r up through q_r_lo), recompression (q_rd down through 0), fall, collapse.
+DECOMPRESSION_DIRECTIONS = np.array([+1.0, -1.0, -1.0, -1.0])
+
+OK = int(Status.OK)
+INVALID_INPUT = int(Status.INVALID_INPUT)
+APEX_TOO_LOW = int(Status.APEX_TOO_LOW)
+TOUCHDOWN_NOT_COMPRESSING = int(Status.TOUCHDOWN_NOT_COMPRESSING)
+NO_LIFTOFF = int(Status.NO_LIFTOFF)
+FALL = int(Status.FALL)
+RECOMPRESSION = int(Status.RECOMPRESSION)
+INTEGRATION_FAILED = int(Status.INTEGRATION_FAILED)
+
+_JIT = {"cache": True, "error_model": "numpy"}
+
+
+@njit(**_JIT)
+def polar_field(t, y, p, dy):
+    """The stance vector field (report eqs (2)-(3)) on y[:4]; p = (m, l0, k, g_s)."""
+    m, l0, k, g_s = p
+    d = stance_polar_rhs(y[Q_R], y[Q_RD], y[Q_TH], y[Q_THD], m, l0, k, g_s)
+    dy[Q_R] = d[Q_R]
+    dy[Q_RD] = d[Q_RD]
+    dy[Q_TH] = d[Q_TH]
+    dy[Q_THD] = d[Q_THD]
+
+
+@njit(**_JIT)
+def stance_events(t, y, pe, g):
+    """The stance's event functions (their directions select them per subphase); pe = (q_r_lo, r_min)."""
+    q_r_lo, r_min = pe
+    g[EV_LIFTOFF] = y[Q_R] - q_r_lo
+    g[EV_RADIAL] = y[Q_RD]
+    g[EV_FALL] = math.cos(y[Q_TH])
+    g[EV_COLLAPSE] = y[Q_R] - r_min
+
+
+POLAR_FIELD = dop853.static(polar_field)
+STANCE_EVENTS = dop853.static(stance_events)
+
+
+@njit(**_JIT)
+def failure_status(code, event):
+    """The status of a subphase that did not reach its goal event (simulate.py's ``failure``)."""
+    if code == dop853.FAILED:
+        return INTEGRATION_FAILED
+    if code == dop853.FINISHED:
+        return NO_LIFTOFF
+    if event == EV_RADIAL:  # q_rd down through 0: only watched in the decompression
+        return RECOMPRESSION
+    return FALL
+
+
+@njit(**_JIT)
+def valid_polar(q_r, q_rd, q_th, q_thd, l0):
+    """simulate.py's polar_state check: finite, 0 < q_r <= l0, |q_th| < pi/2."""
+    finite = math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+    return finite and 0.0 < q_r <= l0 and abs(q_th) < 0.5 * math.pi
+
+
+@njit(**_JIT)
+def _nan(out):
+    for j in range(out.shape[0]):
+        out[j] = math.nan
+
+
+@njit(**_JIT)
+def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out):
+    """The exact stance from a polar touchdown state: writes the :data:`STANCE_NAMES` row into
+    ``out[:N_STANCE]`` (NaN unless OK) and returns the status. Times from touchdown [s]."""
+    _nan(out[:N_STANCE])
+    if not valid_polar(q_r_td, q_rd_td, q_th_td, q_thd_td, l0):
+        return INVALID_INPUT
+    if q_rd_td >= 0.0:
+        return TOUCHDOWN_NOT_COMPRESSING
+    r_min = COLLAPSE_FRACTION * l0
+    if q_r_td <= r_min:
+        return FALL
+    pe = (q_r_lo, r_min)
+    y0 = np.array((q_r_td, q_rd_td, q_th_td, q_thd_td))
+    y_b = np.empty(4)
+    code, t_bottom, event, _ = dop853.solve(
+        POLAR_FIELD(),
+        (m, l0, k_c, g_s),
+        STANCE_EVENTS(),
+        pe,
+        COMPRESSION_DIRECTIONS,
+        0.0,
+        y0,
+        t_max,
+        rtol,
+        atol,
+        max_step(m, l0, k_c, g_s),
+        N_POLAR,
+        y_b,
+    )
+    if code != dop853.EVENT or event != EV_RADIAL:
+        return failure_status(code, event)
+    y_b[Q_RD] = 0.0
+    if y_b[Q_R] >= q_r_lo:
+        return NO_LIFTOFF
+    if not stance_polar_rhs(y_b[Q_R], 0.0, y_b[Q_TH], y_b[Q_THD], m, l0, k_d, g_s)[Q_RD] > 0.0:
+        return RECOMPRESSION
+    if t_bottom >= t_max:
+        return NO_LIFTOFF
+    y_lo = np.empty(4)
+    code, t_stance, event, _ = dop853.solve(
+        POLAR_FIELD(),
+        (m, l0, k_d, g_s),
+        STANCE_EVENTS(),
+        pe,
+        DECOMPRESSION_DIRECTIONS,
+        t_bottom,
+        y_b,
+        t_max,
+        rtol,
+        atol,
+        max_step(m, l0, k_d, g_s),
+        N_POLAR,
+        y_lo,
+    )
+    if code != dop853.EVENT or event != EV_LIFTOFF:
+        return failure_status(code, event)
+    out[T_BOTTOM] = t_bottom
+    out[T_STANCE] = t_stance
+    for j in range(4):
+        out[BOTTOM + j] = y_b[j]
+        out[LIFTOFF + j] = y_lo[j]
+    return OK
+
+
+@njit(**_JIT)
+def step_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out):
+    """One exact step, apex (height h [m], speed v [m/s]) with the leg at th [rad] -> next apex:
+    writes the :data:`STEP_NAMES` row into ``out`` (NaN unless OK) and returns the status
+    (simulate.py's ``simulate_step``: the first failing stage's)."""
+    _nan(out)
+    if not (math.isfinite(h) and math.isfinite(v) and math.isfinite(th)):
+        return INVALID_INPUT
+    if h < 0.0 or v < 0.0 or abs(th) >= 0.5 * math.pi:
+        return INVALID_INPUT
+    if not h > q_r_td * math.cos(th):
+        return APEX_TOO_LOW
+    q_r0, q_rd0, q_th0, q_thd0, t_descent, code = gen_flight.apex_to_touchdown(h, v, th, q_r_td, g_f)
+    if code != OK:
+        return code
+    if not (
+        math.isfinite(q_r0)
+        and math.isfinite(q_rd0)
+        and math.isfinite(q_th0)
+        and math.isfinite(q_thd0)
+        and math.isfinite(t_descent)
+    ):
+        return INVALID_INPUT
+    code = stance_into(q_r0, q_rd0, q_th0, q_thd0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out)
+    if code != OK:
+        _nan(out)
+        return code
+    lo = LIFTOFF
+    apex_height, apex_speed, t_ascent, _, code = gen_flight.liftoff_to_apex(
+        out[lo + Q_R], out[lo + Q_RD], out[lo + Q_TH], out[lo + Q_THD], g_f
+    )
+    if code != OK:
+        _nan(out)
+        return code
+    out[APEX_HEIGHT] = apex_height
+    out[APEX_SPEED] = apex_speed
+    out[T_DESCENT] = t_descent
+    out[T_ASCENT] = t_ascent
+    return OK
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def stance_batch(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out, status):
+    """:func:`stance_into` over rows in parallel: out (n, N_STANCE), status (n,) int64."""
+    for i in prange(out.shape[0]):
+        status[i] = stance_into(
+            q_r[i], q_rd[i], q_th[i], q_thd[i], m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out[i]
+        )
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def step_batch(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out, status):
+    """:func:`step_into` over rows in parallel: out (n, N_STEP), status (n,) int64."""
+    for i in prange(out.shape[0]):
+        status[i] = step_into(
+            h[i], v[i], th[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out[i]
+        )
+
+
+# ----------------------------------------------------------------------------------------------
+# Python wrappers (inputs validated by the caller: runtime/api/maps.py)
+# ----------------------------------------------------------------------------------------------
+def stance_args(params: SlipParams) -> tuple[float, ...]:
+    """The parameters of the compiled stance kernels after the touchdown state, before q_r_lo."""
+    return (params.m, params.l0, params.k_c, params.k_d, params.g_s)
+
+
+def step_args(params: SlipParams) -> tuple[float, ...]:
+    """The parameters of the compiled step kernels after the apex and the angle, before rtol."""
+    return (*stance_args(params), params.g_f, params.q_r_td, params.q_r_lo)
+
+
+def stance_values(params: SlipParams, touchdown, rtol: float, atol: float) -> tuple[Status, dict[str, float]]:
+    """One compiled stance: ``(status, {name: value})`` over :data:`STANCE_NAMES`."""
+    out = np.empty(N_STANCE)
+    q_r, q_rd, q_th, q_thd = touchdown
+    code = stance_into(
+        float(q_r),
+        float(q_rd),
+        float(q_th),
+        float(q_thd),
+        *stance_args(params),
+        params.q_r_lo,
+        float(rtol),
+        float(atol),
+        default_t_max(params),
+        out,
+    )
+    return Status(int(code)), dict(zip(STANCE_NAMES, out.tolist(), strict=True))
+
+
+def step_values(
+    params: SlipParams, h: float, v: float, th: float, rtol: float, atol: float
+) -> tuple[Status, dict[str, float]]:
+    """One compiled step: ``(status, {name: value})`` over :data:`STEP_NAMES`."""
+    out = np.empty(N_STEP)
+    code = step_into(
+        float(h),
+        float(v),
+        float(th),
+        *step_args(params),
+        float(rtol),
+        float(atol),
+        default_t_max(params),
+        out,
+    )
+    return Status(int(code)), dict(zip(STEP_NAMES, out.tolist(), strict=True))
+
+
+def column(x) -> np.ndarray:
+    """A fresh C-contiguous writable float64 copy: one compiled specialisation of the batch kernels
+    (a strided, broadcast or read-only view would compile another; the copy costs ~1 ns a row)."""
+    return np.array(x, dtype=np.float64, order="C")
+
+
+def stance_rows(params: SlipParams, touchdowns: np.ndarray, rtol: float, atol: float):
+    """(n, 4) touchdown states -> (out (n, N_STANCE), status (n,)), rows in parallel."""
+    arr = np.asarray(touchdowns, dtype=float)
+    n = arr.shape[0]
+    out = np.empty((n, N_STANCE))
+    status = np.empty(n, dtype=np.int64)
+    cols = tuple(column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
+    stance_batch(
+        *cols,
+        *stance_args(params),
+        params.q_r_lo,
+        float(rtol),
+        float(atol),
+        default_t_max(params),
+        out,
+        status,
+    )
+    return out, status
+
+
+def step_rows(params: SlipParams, h: np.ndarray, v: np.ndarray, th: np.ndarray, rtol: float, atol: float):
+    """Apex heights, speeds, touchdown angles (1-D, equal length) -> (out (n, N_STEP), status (n,))."""
+    n = h.shape[0]
+    out = np.empty((n, N_STEP))
+    status = np.empty(n, dtype=np.int64)
+    step_batch(
+        column(h),
+        column(v),
+        column(th),
+        *step_args(params),
+        float(rtol),
+        float(atol),
+        default_t_max(params),
+        out,
+        status,
+    )
+    return out, status

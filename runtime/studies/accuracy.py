@@ -1,0 +1,298 @@
+"""Accuracy of every map against the exact simulator (the measurements of ``slipmaps accuracy``).
+
+For every grid of :mod:`.grids` and every point (apex height h, speed v, touchdown angle q_th_td):
+
+* exact: :func:`~slipmaps.runtime.exact.reference.simulate_step` (closed-form descent, stance by
+  ``solve_ivp`` DOP853 at rtol 1e-11, closed-form ascent);
+* each map variant (a map of the index with some options, :func:`variants`): its stance from the
+  SAME exact touchdown state (``stance_batch``: the stance errors are the map's alone) and its
+  apex-return map from the same apex (``apex_return_batch``: the next apex).
+
+Errors are ``map - exact``. The next-apex error of a step is the relative norm
+``|(dh, dv)| / |(h, v)|`` of the Yu, Li and Cai protocol; per-quantity errors (:mod:`.quantities`)
+are absolute and relative to a named scale. A point counts when both sides complete the step;
+the others are counted by status: exact failures (including exact liftoffs that run backward,
+left out as the protocol asks) and map failures where the exact step succeeds.
+
+Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps),
+:func:`measure_all`, :func:`compared`, :func:`map_failures`, :func:`exact_failures` and the statistics
+objects that :mod:`.accuracy_report` renders to docs/accuracy.md, docs/accuracy.json and
+docs/accuracy.png.
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from collections import Counter
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from slipmaps.generated.status import Status
+
+from ..api import index
+from ..api.maps import apex_return_batch, stance_batch
+from ..api.progress import progress
+from ..exact import backend as exact_map
+from ..exact.reference import StepResult, simulate_step
+from .grids import GRIDS, Grid
+from .quantities import QUANTITIES
+
+__all__ = [
+    "Variant",
+    "variants",
+    "GridRun",
+    "VariantStats",
+    "measure",
+    "run_maps",
+    "measure_all",
+    "apex_errors",
+    "compared",
+    "map_failures",
+    "exact_failures",
+]
+
+_OK = int(Status.OK)
+
+
+@dataclass(frozen=True)
+class Variant:
+    """A map with options: one row of the accuracy tables."""
+
+    map: str
+    options: tuple[tuple[str, object], ...] = ()
+    default: bool = True
+    #: "" for the accuracy tables; "convergence" for the pass-count study (docs/convergence.md).
+    study: str = ""
+
+    @property
+    def label(self) -> str:
+        if not self.options:
+            return self.map
+        study = f"{self.study}: " if self.study else ""
+        return f"{self.map} [{study}{', '.join(f'{k}={v}' for k, v in self.options)}]"
+
+    @property
+    def kwargs(self) -> dict:
+        return dict(self.options)
+
+
+#: The pass counts compared for maps with an iterated correction: one pass, or the fixed point.
+ONE_PASS = {"iterations": 1, "tol": 0.0}
+FIXED_POINT = {"iterations": 100, "tol": 1e-12}
+
+
+def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
+    """The measured variants of each map, derived from its options in the index.
+
+    Every map at its defaults; a map with ``reading`` and ``iterations`` options also with every
+    reading at one pass and at the fixed point, one with ``iterations`` only at both (unless its
+    iterated ``gravity`` correction is off by default); every other choice option (and
+    ``samples``) once at a non-default value, the rest at defaults.
+    """
+    names = [m.name for m in index.maps() if m.name != index.EXACT] if map_names is None else list(map_names)
+    out: list[Variant] = []
+    for name in names:
+        info = index.get(name)
+        out.append(Variant(name))
+        opts = {o.name: o for o in info.options}
+        if "reading" in opts and "iterations" in opts:
+            for reading in opts["reading"].choices:
+                for passes in (ONE_PASS, FIXED_POINT):
+                    chosen = {"reading": reading, **passes}
+                    if all(info.resolve({})[k] == v for k, v in chosen.items()):
+                        continue  # the default variant
+                    out.append(Variant(name, tuple(chosen.items()), default=False))
+        elif "iterations" in opts and not (opts.get("gravity") and opts["gravity"].default == "none"):
+            # (a map whose iterated correction is off by default, geyer-vs, is measured with it on
+            # through its gravity choices below)
+            for passes in (ONE_PASS, FIXED_POINT):
+                chosen = {k: v for k, v in passes.items() if k in opts}
+                if any(info.resolve({})[k] != v for k, v in chosen.items()):
+                    out.append(Variant(name, tuple(chosen.items()), default=False))
+        for o in info.options:
+            if o.name in ("reading", "iterations", "tol"):
+                continue
+            if o.kind == "choice":
+                alternatives = [c for c in o.choices if c != o.default]
+            elif o.kind == "int" and o.low is not None and o.high is not None and o.high - o.low <= 4:
+                alternatives = [v for v in range(int(o.low), int(o.high) + 1) if v != o.default]
+            else:
+                alternatives = []
+            out.extend(Variant(name, ((o.name, alt),), default=False) for alt in alternatives)
+    return out
+
+
+# ----------------------------------------------------------------------------------------------
+# Measurement
+# ----------------------------------------------------------------------------------------------
+@dataclass
+class GridRun:
+    """One grid measured: the points, the exact steps and each variant's batch results."""
+
+    grid: Grid
+    points: np.ndarray  # (n, 3): apex height, apex speed, touchdown angle
+    exact: list[StepResult | None]  # None where a symmetric point has no symmetric gait
+    touchdowns: np.ndarray  # (n, 4), NaN where the exact step has no touchdown
+    exact_status: np.ndarray  # (n,) int64, -1 where there is no exact step
+    exact_columns: dict[str, np.ndarray]  # stance and apex-return values by name, NaN unless OK
+    results: dict[str, tuple] = field(default_factory=dict)  # label -> (variant, stance batch, apex batch)
+
+    def exact_value(self, key: str) -> np.ndarray:
+        return self.exact_columns[key]
+
+
+def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = None) -> GridRun:
+    """The exact steps of ``grid`` and every variant of ``chosen`` on it."""
+    points = grid.points(show_progress)
+    exact: list[StepResult | None] = []
+    for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress):
+        exact.append(simulate_step(grid.params, h, v, a) if math.isfinite(a) else None)
+    return run_maps(grid, points, exact, chosen)
+
+
+def run_maps(
+    grid: Grid, points: np.ndarray, exact: Sequence[StepResult | None], chosen: Sequence[Variant]
+) -> GridRun:
+    """A grid's exact steps (one per row of ``points``, None where there is none) and every variant
+    of ``chosen`` on the same points: its stance from each exact touchdown, its apex-return map."""
+    exact = list(exact)
+    tds = np.array(
+        [s.touchdown if s is not None and s.touchdown is not None else (math.nan,) * 4 for s in exact]
+    )
+    status = np.array([int(s.status) if s is not None else -1 for s in exact], dtype=np.int64)
+    names = exact_map.STEP_NAMES
+    rows = np.array([exact_map.step_row(s) if s is not None else [math.nan] * len(names) for s in exact])
+    cols = {n: rows.reshape(-1, len(names))[:, j] for j, n in enumerate(names)}
+    run = GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols)
+    for var in chosen:
+        st = stance_batch(var.map, grid.params, run.touchdowns, **var.kwargs)
+        ap = apex_return_batch(var.map, grid.params, points[:, 0], points[:, 1], points[:, 2], **var.kwargs)
+        run.results[var.label] = (var, st, ap)
+    return run
+
+
+def measure_all(
+    chosen: Sequence[Variant] | None = None, grids: Sequence[Grid] = GRIDS, show_progress=None
+) -> list[GridRun]:
+    chosen = variants() if chosen is None else chosen
+    return [measure(g, chosen, show_progress) for g in grids]
+
+
+# ----------------------------------------------------------------------------------------------
+# Statistics
+# ----------------------------------------------------------------------------------------------
+def _stats(values: np.ndarray) -> dict[str, float]:
+    values = values[np.isfinite(values)]
+    if values.size == 0:
+        return {"mean": math.nan, "median": math.nan, "max": math.nan}
+    return {
+        "mean": float(values.mean()),
+        "median": float(statistics.median(values)),
+        "max": float(values.max()),
+    }
+
+
+def apex_errors(run: GridRun, label: str) -> np.ndarray:
+    """The next-apex relative error |(dh, dv)| / |(h, v)| per point (NaN unless both sides OK)."""
+    _, _, ap = run.results[label]
+    h, v = run.exact_value("apex_height"), run.exact_value("apex_speed")
+    dh, dv = ap["apex_height"] - h, ap["apex_speed"] - v
+    err = np.hypot(dh, dv) / np.hypot(h, v)
+    return np.where(compared(run, label), err, math.nan)
+
+
+def compared(run: GridRun, label: str) -> np.ndarray:
+    """Per point: both sides complete the step (the exact step, the variant's stance and apex return)."""
+    _, st, ap = run.results[label]
+    return (run.exact_status == _OK) & (st.status == _OK) & (ap.status == _OK)
+
+
+def map_failures(run: GridRun, label: str) -> Counter:
+    """Where the exact step succeeds but the map fails: the stance status, else the apex-return's."""
+    _, st, ap = run.results[label]
+    out: Counter = Counter()
+    for ex, s, a in zip(run.exact_status, st.status, ap.status, strict=True):
+        if ex == _OK and (s != _OK or a != _OK):
+            out[Status(int(s if s != _OK else a)).name] += 1
+    return out
+
+
+@dataclass(frozen=True)
+class VariantStats:
+    """Everything the report shows about one variant on one grid."""
+
+    label: str
+    map: str
+    options: dict
+    default: bool
+    n_compared: int
+    failures: dict[str, int]
+    apex_error: dict[str, float]
+    by_angle: list[dict]  # Yu protocol: per angle of attack
+    quantities: dict[str, dict[str, float]]
+    passes: dict[str, float] | None
+
+
+def _rel_scale(run: GridRun, key: str, scale: str) -> np.ndarray:
+    ref = run.exact_value(key)
+    if scale == "self":
+        return np.abs(ref)
+    if scale == "compression":
+        return run.grid.params.l0 - ref
+    return np.abs(ref - run.points[:, 2])  # sweep from the touchdown angle
+
+
+def variant_stats(run: GridRun, label: str) -> VariantStats:
+    var, st, ap = run.results[label]
+    ok = compared(run, label)
+    # stance quantities compare the stance map from the same touchdown; the apex the apex-return map
+    quantities = {}
+    for q in QUANTITIES:
+        source = ap if q.key.startswith("apex_") else st
+        err = source[q.key] - run.exact_value(q.key)
+        err = np.where(ok, err, math.nan)
+        rel = err / _rel_scale(run, q.key, q.rel_scale)
+        a, r = _stats(np.abs(err)), _stats(np.abs(rel))
+        quantities[q.key] = {
+            "max_abs": a["max"],
+            "median_abs": a["median"],
+            "max_rel": r["max"],
+            "median_rel": r["median"],
+        }
+    errors = apex_errors(run, label)
+    by_angle = []
+    if run.grid.kind == "yu":
+        for angle in run.grid.angles:
+            sel = np.isclose(run.points[:, 2], angle)
+            s = _stats(errors[sel])
+            by_angle.append(
+                {
+                    "angle_of_attack_deg": round(90.0 - math.degrees(angle), 6),
+                    "n": int(np.isfinite(errors[sel]).sum()),
+                    **s,
+                    "map_failures": int(((run.exact_status == _OK) & sel & ~ok).sum()),
+                }
+            )
+    passes = None
+    if "passes" in st.names:
+        p = st["passes"][np.isfinite(st["passes"]) & ok]
+        passes = {"median": float(np.median(p)), "max": float(p.max())} if p.size else None
+    return VariantStats(
+        label=label,
+        map=var.map,
+        options=var.kwargs,
+        default=var.default,
+        n_compared=int(ok.sum()),
+        failures=dict(sorted(map_failures(run, label).items())),
+        apex_error=_stats(errors),
+        by_angle=by_angle,
+        quantities=quantities,
+        passes=passes,
+    )
+
+
+def exact_failures(run: GridRun) -> dict[str, int]:
+    counts = Counter(Status(int(c)).name for c in run.exact_status if c not in (_OK, -1))
+    return dict(sorted(counts.items()))

@@ -1,0 +1,227 @@
+"""The convergence study of the iterative maps: error against the exact stance for n = 0..8 passes.
+
+A map takes part when its options have an integer ``iterations`` and no ``reading`` (the gravity
+family's fixed points are studied in docs/accuracy.md), once per value of its option ``variant``
+(the report's mean-value variants) if it has one. Each pass count runs at the map's other
+defaults with ``tol = 0`` (exactly n passes) on the accuracy grids; ``slipmaps accuracy`` writes
+docs/convergence.md (+ .json, .png) from the same exact steps as docs/accuracy.md.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..api import index
+from .accuracy import GridRun, Variant, apex_errors
+
+__all__ = ["PASSES", "study_maps", "variants", "render_markdown", "figure"]
+
+#: Pass counts of the study.
+PASSES = tuple(range(9))
+STUDY = "convergence"
+
+
+def study_maps(map_names=None) -> list[str]:
+    names = [m.name for m in index.maps() if m.name != index.EXACT] if map_names is None else list(map_names)
+    out = []
+    for name in names:
+        opts = {o.name: o for o in index.get(name).options}
+        if "iterations" in opts and opts["iterations"].kind == "int" and "reading" not in opts:
+            out.append(name)
+    return out
+
+
+#: The option whose every value is a series of its own (the report's mean-value variants).
+SERIES_OPTION = "variant"
+
+
+def variants(map_names=None) -> list[Variant]:
+    out = []
+    for name in study_maps(map_names):
+        opts = {o.name: o for o in index.get(name).options}
+        series = opts[SERIES_OPTION].choices if SERIES_OPTION in opts else (None,)
+        for value in series:
+            fixed = ((SERIES_OPTION, value),) if value is not None else ()
+            for n in PASSES:
+                chosen = fixed + (("iterations", n),) + ((("tol", 0.0),) if "tol" in opts else ())
+                out.append(Variant(name, chosen, default=False, study=STUDY))
+    return out
+
+
+def _series(name: str, options: dict) -> str:
+    """A study series: the map, and its variant when it has several."""
+    return f"{name} ({SERIES_OPTION} = {options[SERIES_OPTION]})" if SERIES_OPTION in options else name
+
+
+def _pct(x) -> str:
+    return "n/a" if x is None or not math.isfinite(x) else f"{100 * x:.3g} %"
+
+
+def _n(v: dict) -> int:
+    return int(v["options"]["iterations"])
+
+
+def _by_map(grid: dict) -> dict[str, list[dict]]:
+    out: dict[str, list[dict]] = {}
+    for v in grid["variants"]:
+        out.setdefault(_series(v["map"], v["options"]), []).append(v)
+    return {k: sorted(vs, key=_n) for k, vs in out.items()}
+
+
+def _fails(v: dict) -> int:
+    return sum(v["failures"].values())
+
+
+def _findings(summary: list[dict], name: str) -> list[str]:
+    lines = []
+    for g in summary:
+        rows = _by_map(g).get(name, [])
+        means = [r["apex_error"]["mean"] for r in rows]
+        finite = [(i, e) for i, e in enumerate(means) if e is not None and math.isfinite(e)]
+        if not finite:
+            lines.append(f"- {g['name']}: no step compared at any n.")
+            continue
+        best = min(finite, key=lambda t: t[1])
+        # first n after which no further pass improves the mean by more than 10 %
+        stall = next(
+            (
+                i
+                for i in range(len(means) - 1)
+                if all(
+                    means[j] is not None and means[i] is not None and means[j] > 0.9 * means[i]
+                    for j in range(i + 1, len(means))
+                )
+            ),
+            len(means) - 1,
+        )
+        rising = [
+            i
+            for i in range(1, len(means))
+            if means[i] is not None and means[i - 1] is not None and means[i] > 1.1 * means[i - 1]
+        ]
+        fails = [_fails(r) for r in rows]
+        lines.append(
+            f"- {g['name']}: mean error {_pct(means[0])} at n = 0, "
+            f"{_pct(means[-1])} at n = {len(means) - 1}; "
+            f"smallest {_pct(best[1])} at n = {best[0]}; no pass after n = {stall} improves it by more "
+            f"than 10 %"
+            + (f"; it grows (> 10 %) at n = {', '.join(map(str, rising))}" if rising else "")
+            + f"; map failures {fails[0]} at n = 0, {max(fails)} at most."
+        )
+    return lines
+
+
+def _table(summary: list[dict], name: str) -> list[str]:
+    grids = summary
+    head = "| n | " + " | ".join(g["name"] for g in grids) + " |"
+    lines = [head, "| --- |" + " --- |" * len(grids)]
+    per = [_by_map(g).get(name, []) for g in grids]
+    for i in range(len(PASSES)):
+        cells = []
+        for g, rows in zip(grids, per, strict=True):
+            if i >= len(rows):
+                cells.append("-")
+                continue
+            r = rows[i]
+            text = _pct(r["apex_error"]["mean"])
+            if g["kind"] == "yu":
+                text = " / ".join(_pct(a["mean"]) for a in r["by_angle"])
+            if _fails(r):
+                text += f" ({_fails(r)} failed)"
+            cells.append(text)
+        lines.append(f"| {_n(per[0][i]) if per[0] else i} | " + " | ".join(cells) + " |")
+    return lines
+
+
+_INTRO = """
+Each iterative map at its default options except the number of passes n (tol = 0: exactly n
+passes; n = 0 is the zeroth iterate), against the exact simulator on the grids of
+docs/accuracy.md (same exact steps, same error measure: the mean over the compared steps of the
+next-apex error |(dh, dv)| / |(h, v)|; the Yu protocol per angle of attack 60 / 65 / 68 / 72 deg).
+A step counts as failed when the exact simulator completes it and the map does not; n/a: every
+step of that angle failed.
+"""
+
+
+def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -> str:
+    series = {_series(v["map"], v["options"]): v for g in summary for v in g["variants"]}
+    out = [
+        "# Convergence of the iterative maps with the number of passes",
+        "",
+        "<!-- generated by `slipmaps accuracy` (runtime/studies/convergence.py); do not edit -->",
+        "",
+        " ".join(_INTRO.split()),
+        "",
+        f"![error against n]({figure_name})",
+    ]
+    for name, first in series.items():
+        info = index.get(first["map"])
+        defaults = ", ".join(
+            f"{o.name} = {o.default}"
+            for o in info.options
+            if o.name not in ("iterations", "tol", SERIES_OPTION)
+        )
+        out += [
+            "",
+            f"## `{info.name}`{name.removeprefix(info.name)}: {info.title} (report section {info.section})",
+            "",
+            f"Other options at their defaults ({defaults}).",
+            "",
+            *_table(summary, name),
+            "",
+            *_findings(summary, name),
+        ]
+    return "\n".join(out) + "\n"
+
+
+def _mean(errors: np.ndarray) -> float:
+    """Mean over the compared steps; NaN (a gap in the line) when every step failed."""
+    finite = errors[np.isfinite(errors)]
+    return float(finite.mean()) if finite.size else math.nan
+
+
+def figure(runs: list[GridRun], path: str | Path) -> Path:
+    """Mean next-apex error against n, one panel per map, one line per grid (Yu: per angle)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    names = list(
+        dict.fromkeys(
+            _series(v.map, v.kwargs) for r in runs for v, _, _ in r.results.values() if v.study == STUDY
+        )
+    )
+    fig, axes = plt.subplots(1, max(len(names), 1), figsize=(6 * max(len(names), 1), 4.5), squeeze=False)
+    for ax, name in zip(axes[0], names, strict=False):
+        for run in runs:
+            labels = [
+                lab
+                for lab, (v, _, _) in run.results.items()
+                if v.study == STUDY and _series(v.map, v.kwargs) == name
+            ]
+            labels.sort(key=lambda lab: dict(run.results[lab][0].options)["iterations"])
+            ns = [dict(run.results[lab][0].options)["iterations"] for lab in labels]
+            if run.grid.kind == "yu":
+                for angle in run.grid.angles:
+                    sel = np.isclose(run.points[:, 2], angle)
+                    means = [_mean(apex_errors(run, lab)[sel]) for lab in labels]
+                    ax.plot(
+                        ns, 100 * np.array(means), "o--", ms=3, label=f"Yu {90 - math.degrees(angle):.0f} deg"
+                    )
+            else:
+                means = [_mean(apex_errors(run, lab)) for lab in labels]
+                ax.plot(ns, 100 * np.array(means), "o-", ms=3, label=run.grid.name)
+        ax.set_yscale("log")
+        ax.set_xlabel("passes n")
+        ax.set_ylabel("mean next-apex error [%]")
+        ax.set_title(name, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return Path(path)
