@@ -91,7 +91,7 @@ DEFAULT_ATOL = 1e-12
 #: The stance ends with ``Status.FALL`` when the leg length drops to this fraction of ``l0``.
 COLLAPSE_FRACTION = 1e-3
 #: Number of (spring + pendulum) periods in the default stance time limit.
-_T_MAX_PERIODS = 20
+T_MAX_PERIODS = 20
 #: Steps are capped at this fraction of the shortest natural period of the phase.
 _MAX_STEP_FRACTION = 1.0 / 16.0
 #: With ``dense=True``, each integrator step is sampled at this many equispaced points.
@@ -178,11 +178,9 @@ def _tolerances(rtol: object, atol: object) -> tuple[float, float]:
 
 
 def default_t_max(params: SlipParams) -> float:
-    """Default stance time limit: 20 times (spring period of the softer spring + pendulum period)."""
+    """Default stance time limit (:func:`stance_time_limit` of ``params``)."""
     _check_params(params)
-    spring = 2.0 * math.pi * math.sqrt(params.m / min(params.k_c, params.k_d))
-    pendulum = 2.0 * math.pi * math.sqrt(params.l0 / params.g_s)
-    return _T_MAX_PERIODS * (spring + pendulum)
+    return float(stance_time_limit(params.m, params.l0, params.k_c, params.k_d, params.g_s))
 
 
 # ----------------------------------------------------------------------------------------------
@@ -360,6 +358,16 @@ def max_step(m: float, l0: float, k: float, g_s: float) -> float:
     spring = 2.0 * math.pi * math.sqrt(m / k)
     pendulum = 2.0 * math.pi * math.sqrt(l0 / g_s)
     return _MAX_STEP_FRACTION * min(spring, pendulum)
+
+
+@njit(cache=True, error_model="numpy")
+def stance_time_limit(m: float, l0: float, k_c: float, k_d: float, g_s: float) -> float:
+    """The stance time limit [s]: T_MAX_PERIODS times (the spring period of the softer spring + the
+    pendulum period), shared with the compiled simulator; a stance still on the ground then is
+    NO_LIFTOFF."""
+    spring = 2.0 * math.pi * math.sqrt(m / min(k_c, k_d))
+    pendulum = 2.0 * math.pi * math.sqrt(l0 / g_s)
+    return T_MAX_PERIODS * (spring + pendulum)
 
 
 def _max_step(p: SlipParams, k: float) -> float:
