@@ -25,16 +25,17 @@ Subcommands (``slipmaps --version`` prints the installed version):
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale); a source checkout only.
 
-A user error (bad value, unknown map or option, a map that refuses the parameters, a plot path that
-cannot be written) is one line on standard error and exit code 2, never a traceback; it names the
-flag as typed. The map names and options come from the generated index.
+A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
+that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
+the flag as typed. Every path a command writes (``compare --plot``, ``gait --figure``, ``sweep
+--out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. The map names
+and options come from the generated index.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 from pathlib import Path
 
@@ -50,6 +51,7 @@ from .apex_defaults import (
 )
 from .numeric import num
 from .params import HUMAN_RUNNER, ROBOT_HOPPER, ParamError, ParamTypeError, SlipParams
+from .paths import writable_dir, writable_file
 from .validate import leg_angle, non_negative, polar_state, positive
 
 #: The reference of ``compare`` (``"exact"`` in the index; spelled here so that building the parser,
@@ -142,25 +144,15 @@ def _step(args: argparse.Namespace, params: SlipParams) -> dict:
     return {"apex_height": height, "apex_speed": speed, "touchdown_angle": angle, "touchdown": td}
 
 
-#: The image formats --plot can write (matplotlib's; the suffix chooses).
-_PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
+#: The image formats --plot and gait --figure can write (matplotlib's; the suffix chooses).
+IMAGE_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
 
 
-def _plot_path(path: str) -> str:
-    """``--plot``'s path, checked before any work: an image suffix, its directory created when
-    missing and writable; ValueError (one line) otherwise."""
-    target = Path(path)
-    if target.is_dir():
-        raise ValueError(f"--plot {path} is a directory; give a file, e.g. {target / 'compare.png'}")
-    if target.suffix.lower().lstrip(".") not in _PLOT_FORMATS:
-        raise ValueError(f"--plot {path}: give an image file name ending in .{', .'.join(_PLOT_FORMATS)}")
-    folder = target.parent
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"--plot {path}: cannot create the directory {folder}: {exc.strerror}") from None
-    if not os.access(folder, os.W_OK):
-        raise ValueError(f"--plot {path}: the directory {folder} is not writable")
+def image_path(flag: str, path: str, example: str = "compare") -> str:
+    """An image path given by ``flag`` (``--plot``, ``--figure``), checked before any work by
+    :func:`~.paths.writable_file`: an image suffix, its directory created when missing and
+    writable; ValueError (one line naming the flag) otherwise."""
+    writable_file(flag, path, IMAGE_FORMATS, described="an image file", example=example)
     return path
 
 
@@ -368,7 +360,7 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     """0 when both sides ran, 1 when a side failed physically (its status under the table)."""
     params = _params(args)
     step = _step(args, params)  # bad values and plot paths are refused before any work
-    path = None if args.no_plot else _plot_path(args.plot)
+    path = None if args.no_plot else image_path("--plot", args.plot)
     note = _stiffness_note(args, params)
     if note:
         print(f"slipmaps compare: note: {note}", file=sys.stderr)
@@ -417,14 +409,17 @@ def _cmd_equations(args: argparse.Namespace) -> int:
 
 
 def _accuracy_out(args: argparse.Namespace) -> Path:
-    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path), else the
-    checkout's docs/; ValueError when there is neither (never a relative docs/)."""
+    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path; checked, and its
+    directory created, before any work), else the checkout's docs/; ValueError when there is
+    neither (never a relative docs/) or when ``--out`` cannot be written."""
     from .checkout import docs_dir
 
     name = "accuracy.md" if args.map == "all" else f"accuracy_{args.map}.md"
     if args.out is not None:
         out = Path(args.out)
-        return out if out.suffix == ".md" else out / name
+        if out.suffix == ".md":
+            return writable_file("--out", args.out, ("md",), described="a markdown file")
+        return writable_dir("--out", args.out) / name
     docs = docs_dir()
     if docs is None:
         raise ValueError(

@@ -107,7 +107,7 @@ def _format(rows: list[tuple[dict, str, tuple]]) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    from .cli import _options, _params
+    from .cli import _options, _params, image_path
     from .gait import fixed_points
     from .index import get
     from .params import HUMAN_RUNNER
@@ -121,6 +121,8 @@ def run(args: argparse.Namespace) -> int:
     options = {n: _options(n, args.option) if n in extra else {} for n in names}
     if args.figure and params != HUMAN_RUNNER:
         raise ValueError("--figure draws the human runner's region: give no parameter options with it")
+    if args.figure:
+        image_path("--figure", args.figure, example="stability")  # before any work
     lines = _lines(args, params)
     show = False if args.no_progress else None
     rows = [

@@ -12,6 +12,7 @@ import json
 import sys
 import textwrap
 
+from .paths import writable_dir
 from .sweep_axes import CHUNK_ROWS_EXACT, CHUNK_ROWS_GENERATED, KINDS, quantities
 
 __all__ = ["add_parser", "run"]
@@ -136,6 +137,7 @@ def run(args: argparse.Namespace) -> int:
     definition = Sweep.from_dict(data)
     if "out" not in settings:
         raise ValueError("give an output directory: --out DIR (or out in the TOML file)")
+    writable_dir("--out" if args.out is not None else f"out (in {args.config})", settings["out"])
     try:
         summary = sweep(
             definition,

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .paths import writable_dir
 from .sweep_files import check_format, combine, csv_header, read
 from .sweep_spec import Sweep
 
@@ -52,10 +53,11 @@ class Store:
         self.digest = sweep.digest(fmt)
         self.width = max(5, len(str(sweep.chunks - 1)))
         manifest = self.out / MANIFEST
+        writable_dir("out", self.out)  # ValueError (one line) when it cannot be written
         if manifest.exists():
             self._check(json.loads(manifest.read_text(encoding="utf-8")))
         else:
-            if self.out.exists() and (not self.out.is_dir() or any(self.out.iterdir())):
+            if any(self.out.iterdir()):
                 raise ValueError(
                     f"{self.out} exists and holds no sweep ({MANIFEST} missing): "
                     "give a new or empty directory"

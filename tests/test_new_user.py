@@ -464,3 +464,68 @@ def test_accuracy_outside_a_checkout_needs_out(tmp_path, monkeypatch, no_measuri
     assert main(["accuracy", "--out", "reports"]) == 0
     assert main(["accuracy", "--map", "geyer", "--out", "r/geyer.md"]) == 0
     assert no_measuring == [Path("reports") / "accuracy.md", Path("r/geyer.md")]
+
+
+# --- tracker issue 16: first contact with the command line ------------------------------------------
+#
+# Each test is one item of the issue as the user met it. Paths are refused before any work (the
+# work itself is replaced by a function that fails the test), so those tests cost nothing.
+
+
+def _refuse(monkeypatch, module, name):
+    def no_work(*args, **kwargs):
+        raise AssertionError(f"{module.__name__}.{name} ran before refusing the arguments")
+
+    monkeypatch.setattr(module, name, no_work)
+
+
+@pytest.fixture
+def nothing_runs(monkeypatch):
+    """Every command's work fails the test: compare, sweep, the fixed points and the accuracy study."""
+    from slipmaps.runtime import accuracy_report, gait, sweep
+
+    _refuse(monkeypatch, compare_module, "compare")
+    _refuse(monkeypatch, sweep, "sweep")
+    _refuse(monkeypatch, gait, "fixed_points")
+    _refuse(monkeypatch, accuracy_report, "write")
+
+
+SWEEP = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--axis", "apex_speed=3:7:5"]
+SWEEP += ["--axis", "touchdown_angle=0.3"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        ([*SWEEP, "--out", "{file}"], "--out {file} is a file, not a directory"),
+        (
+            [*SWEEP, "--out", "{file}/sub"],
+            "--out {file}/sub: cannot create the directory {file}/sub: {file} is",
+        ),
+        (["accuracy", "--out", "{file}"], "--out {file} is a file, not a directory"),
+        (["accuracy", "--map", "geyer", "--out", "{file}/g.md"], "--out {file}/g.md: cannot create the dir"),
+        (["gait", "--figure", "{file}/x.png"], "--figure {file}/x.png: cannot create the directory {file}: "),
+        (
+            ["gait", "--figure", "{dir}"],
+            "--figure {dir} is a directory; give a file, e.g. {dir}/stability.png",
+        ),
+        (["gait", "--figure", "{dir}/x.txt"], "--figure {dir}/x.txt: give an image file name ending in .png"),
+        (["compare", "--plot", "{file}/x.png"], "{file} is a file, not a directory"),
+    ],
+)
+def test_every_written_path_is_checked_before_any_work(argv, needle, tmp_path, nothing_runs, capsys):
+    """`sweep --out`, `accuracy --out`, `gait --figure` and `compare --plot`: one helper
+    (runtime/paths.py) checks each before anything runs; one line naming the flag, exit 2."""
+    file = tmp_path / "c.pdf"
+    file.write_text("a file, not a directory")
+    fill = {"file": str(file), "dir": str(tmp_path)}
+    assert main([a.format(**fill) for a in argv]) == 2
+    _one_line_error(capsys, needle.format(**fill))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.pdf"]  # nothing created beside it
+
+
+def test_the_python_sweep_refuses_a_file_as_its_directory(tmp_path):
+    (tmp_path / "f").write_text("x")
+    sw = slipmaps.Sweep("geyer", {"apex_speed": [5.0]}, {"apex_height": 1.0, "touchdown_angle": 0.3})
+    with pytest.raises(ValueError, match=r"^out .*f is a file, not a directory; give a directory$"):
+        slipmaps.sweep(sw, tmp_path / "f")
