@@ -1,8 +1,12 @@
 """``slipmaps sweep``: the command line of :mod:`.sweep` (registered by ``cli.py``).
 
 A TOML file (``examples/sweep.toml``) and/or flags; a flag replaces the file's value, ``--axis`` and
-``--fixed`` the file's entry of that quantity. Errors are one line and exit 2 (``cli.main``); an
-interrupted sweep (Ctrl-C) keeps its chunks, says so and exits 130.
+``--fixed`` the file's entry of that quantity. A quantity given twice on the command line (two
+``--axis``, or ``--axis`` and ``--fixed`` of it) contradicts itself and is refused, as the file
+(an axis listed twice, a quantity both in ``[fixed]`` and ``[axes]``) and :class:`~.sweep_spec.Sweep`
+refuse it. The output directory is checked (:mod:`.paths`) before any chunk runs. Errors are one
+line and exit 2 (``cli.main``); an interrupted sweep (Ctrl-C) keeps its chunks, says so and exits
+130.
 """
 
 from __future__ import annotations
@@ -83,12 +87,20 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _pairs(flag: str, items: list[str] | None) -> dict[str, str]:
+    """``NAME=VALUE`` strings of a repeatable flag, by name; a name given twice is refused (two
+    values for one quantity contradict each other)."""
     out = {}
     for item in items or ():
         key, sep, value = item.partition("=")
         if not sep or not key.strip():
             raise ValueError(f"{flag} takes NAME=VALUE, got {item!r}")
-        out[key.strip()] = value.strip()
+        name = key.strip()
+        if name in out:
+            raise ValueError(
+                f"{flag} {name} given twice ({name}={out[name]} and {name}={value.strip()}): "
+                "give each quantity once"
+            )
+        out[name] = value.strip()
     return out
 
 
@@ -102,15 +114,21 @@ def _float(flag: str, name: str, text: str) -> float:
 def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
     """(the definition's keys, the run settings) from the TOML file and the flags."""
     from .sweep import RUN_KEYS
-    from .sweep_spec import read_toml
+    from .sweep_spec import axes_by_name, read_toml
 
     data = dict(read_toml(args.config)) if args.config else {}
-    axes = dict(data.get("axes", {}))
+    axes = dict(axes_by_name(data.get("axes", {})))
     fixed = dict(data.get("fixed", {}))
-    for name, spec in _pairs("--axis", args.axis).items():
+    flag_axes, flag_fixed = _pairs("--axis", args.axis), _pairs("--fixed", args.fixed)
+    both = [name for name in flag_axes if name in flag_fixed]
+    if both:
+        raise ValueError(
+            f"{', '.join(both)}: given both --axis and --fixed; a quantity is either swept or fixed"
+        )
+    for name, spec in flag_axes.items():
         fixed.pop(name, None)
         axes[name] = spec
-    for name, text in _pairs("--fixed", args.fixed).items():
+    for name, text in flag_fixed.items():
         axes.pop(name, None)
         fixed[name] = _float("--fixed", name, text)
     data.update(axes=axes, fixed=fixed)

@@ -44,7 +44,7 @@ from .sweep_axes import (
     random_points,
 )
 
-__all__ = ["Sweep", "MODES", "DEFINITION_KEYS", "read_toml"]
+__all__ = ["Sweep", "MODES", "DEFINITION_KEYS", "axes_by_name", "read_toml"]
 
 MODES = ("grid", "random")
 #: The keys of a sweep definition (TOML / JSON).
@@ -235,10 +235,7 @@ class Sweep:
         if "map" not in d:
             raise ValueError("a sweep needs map (a name of `slipmaps maps`)")
         kw = {k: d[k] for k in ("kind", "mode", "samples", "seed", "chunk_rows", "options") if k in d}
-        axes = d.get("axes", {})
-        if isinstance(axes, list):  # the canonical form (as_dict): [{"name": ..., <axis>}, ...]
-            axes = {a["name"]: {k: v for k, v in a.items() if k != "name"} for a in axes}
-        return cls(d["map"], axes, d.get("fixed", {}), **kw)
+        return cls(d["map"], axes_by_name(d.get("axes", {})), d.get("fixed", {}), **kw)
 
     def as_dict(self) -> dict:
         """The canonical definition (what the hash covers): everything that decides the rows."""
@@ -320,6 +317,22 @@ class Sweep:
         out["status"] = {"unit": "", "doc": "status code (slipmaps.Status), 0 = OK"}
         out["status_name"] = {"unit": "", "doc": "status name (slipmaps.Status)"}
         return out
+
+
+def axes_by_name(axes: object) -> object:
+    """A definition's ``axes`` by quantity name: a mapping as it is, the canonical list form of
+    :meth:`Sweep.as_dict` (``[{"name": ..., <axis>}, ...]``) as a dict; a name listed twice is a
+    ValueError (two axes of one quantity contradict each other)."""
+    if not isinstance(axes, list):
+        return axes
+    out = {}
+    for a in axes:
+        if not isinstance(a, Mapping) or "name" not in a:
+            raise ValueError(f"axes as a list: each entry needs a name, got {a!r}")
+        if a["name"] in out:
+            raise ValueError(f"axis {a['name']!r} given twice in axes; give each quantity once")
+        out[a["name"]] = {k: v for k, v in a.items() if k != "name"}
+    return out
 
 
 def read_toml(path: str | Path) -> dict:

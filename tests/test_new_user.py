@@ -529,3 +529,43 @@ def test_the_python_sweep_refuses_a_file_as_its_directory(tmp_path):
     sw = slipmaps.Sweep("geyer", {"apex_speed": [5.0]}, {"apex_height": 1.0, "touchdown_angle": 0.3})
     with pytest.raises(ValueError, match=r"^out .*f is a file, not a directory; give a directory$"):
         slipmaps.sweep(sw, tmp_path / "f")
+
+
+@pytest.mark.parametrize(
+    ("extra", "needle"),
+    [
+        (
+            ["--axis", "apex_speed=3:4:2"],
+            "--axis apex_speed given twice (apex_speed=3:7:5 and apex_speed=3:4:2): give each quantity once",
+        ),
+        (["--fixed", "apex_speed=3"], "apex_speed: given both --axis and --fixed"),
+        (["--fixed", "apex_height=2"], "--fixed apex_height given twice (apex_height=1 and apex_height=2)"),
+    ],
+)
+def test_a_quantity_given_twice_is_refused(extra, needle, tmp_path, nothing_runs, capsys):
+    assert main([*SWEEP, *extra, "--out", str(tmp_path / "o")]) == 2
+    _one_line_error(capsys, needle)
+
+
+def test_a_quantity_twice_in_a_toml_file_or_in_python_is_refused(tmp_path, nothing_runs, capsys):
+    listed = tmp_path / "listed.toml"
+    listed.write_text(
+        'map = "geyer"\nout = "o"\n'
+        'axes = [{ name = "apex_speed", values = [3.0] }, { name = "apex_speed", values = [4.0] }]\n'
+        "[fixed]\napex_height = 1.0\ntouchdown_angle = 0.3\n"
+    )
+    assert main(["sweep", str(listed)]) == 2
+    _one_line_error(capsys, "axis 'apex_speed' given twice in axes")
+    both = tmp_path / "both.toml"
+    both.write_text(
+        'map = "geyer"\nout = "o"\n[fixed]\napex_height = 1.0\napex_speed = 3.0\n'
+        "[axes]\napex_speed = [3.0, 4.0]\ntouchdown_angle = [0.3]\n"
+    )
+    assert main(["sweep", str(both)]) == 2
+    _one_line_error(capsys, "apex_speed: both fixed and swept")
+    with pytest.raises(ValueError, match="both fixed and swept"):
+        slipmaps.Sweep("geyer", {"apex_speed": [3.0]}, {"apex_speed": 3.0, "apex_height": 1.0})
+    with pytest.raises(ValueError, match="given twice"):
+        slipmaps.Sweep.from_dict(
+            {"map": "geyer", "axes": [{"name": "k", "values": [1e4]}, {"name": "k", "values": [2e4]}]}
+        )
