@@ -28,6 +28,7 @@ resumes it: the chunks already written are kept, the others computed.
 
 from __future__ import annotations
 
+import itertools
 import time
 from collections import Counter
 from collections.abc import Callable, Mapping
@@ -163,9 +164,9 @@ def sweep(
     t0 = time.perf_counter()
     store = Store(out, definition, fmt)
     done = store.done()
-    todo = [i for i in range(definition.chunks) if i not in done]
+    todo = (i for i in range(definition.chunks) if i not in done)  # lazily: 10^11 rows are 10^6 chunks
     if max_chunks is not None:
-        todo = todo[: int(max_chunks)]
+        todo = itertools.islice(todo, int(max_chunks))
     counts = Counter()
     for rec in done.values():
         counts.update(rec["counts"])

@@ -197,7 +197,7 @@ class Sweep:
                     "samples is for a random sweep (mode = 'random'); a grid has one row per point"
                 )
             for a in parsed:
-                a.grid_values()  # ValueError for a range without num
+                a.check_grid()  # ValueError for a range without num (nothing allocated)
         else:
             samples = _whole("a random sweep's samples", samples, 1)
         seed = _whole("seed", seed, 0)

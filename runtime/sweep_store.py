@@ -105,11 +105,19 @@ class Store:
     def done(self) -> dict[int, dict]:
         """The chunks already written: index -> {"rows": n, "counts": {status name: rows}}."""
         out = {}
-        for i in range(self.sweep.chunks):
-            data = self.path(i)
-            if data.exists():
-                out[i] = json.loads(data.with_suffix(".json").read_text(encoding="utf-8"))
-        return out
+        with os.scandir(self.chunk_dir) as entries:  # the files written, not every chunk's name
+            names = [e.name for e in entries]
+        for name in names:
+            number = name.removeprefix("part-").removesuffix(f".{self.fmt}")
+            if (
+                not number.isdigit()
+                or int(number) >= self.sweep.chunks
+                or name != self.path(int(number)).name
+            ):
+                continue
+            i = int(number)
+            out[i] = json.loads(self.path(i).with_suffix(".json").read_text(encoding="utf-8"))
+        return dict(sorted(out.items()))
 
     def write(self, index: int, payload: bytes, rows: int, counts: dict[str, int]) -> dict:
         """Chunk ``index`` (its file content): the counts first, then the data, each renamed in place."""

@@ -15,6 +15,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -569,3 +570,55 @@ def test_a_quantity_twice_in_a_toml_file_or_in_python_is_refused(tmp_path, nothi
         slipmaps.Sweep.from_dict(
             {"map": "geyer", "axes": [{"name": "k", "values": [1e4]}, {"name": "k", "values": [2e4]}]}
         )
+
+
+def test_a_grid_of_1e11_points_is_planned_without_allocating_the_axis():
+    """`--axis apex_speed=1:2:100000000000`: 3e11 rows. The definition, the chunk plan and a
+    chunk's points are computed from row indices (the axis is never allocated: 745 GiB)."""
+    n = 100_000_000_000
+    tracemalloc.start()
+    sw = slipmaps.Sweep(
+        "geyer", {"apex_speed": f"1:2:{n}", "touchdown_angle": [0.3, 0.35, 0.4]}, {"apex_height": 1.0}
+    )
+    first = sw.points(*sw.chunk_bounds(0))
+    last = sw.points(*sw.chunk_bounds(sw.chunks - 1))
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert sw.rows == 3 * n and sw.chunks == -(-3 * n // sw.chunk_rows)
+    i = np.arange(sw.chunk_rows)
+    step = np.float64(1.0) / (n - 1)
+    assert np.array_equal(first["apex_speed"], (i // 3) * step + 1.0)  # numpy.linspace's arithmetic
+    assert np.array_equal(first["touchdown_angle"], np.array([0.3, 0.35, 0.4])[i % 3])
+    assert last["apex_speed"][-1] == 2.0 and last["touchdown_angle"][-1] == 0.4
+    assert peak < 50e6, peak  # measured 2.1e7 (one chunk of 262144 rows, a few columns)
+
+
+def test_a_grid_of_1e11_points_runs_from_the_command_line(tmp_path, capsys):
+    """The whole command without computing a row (--max-chunks 0): the output directory, its
+    manifest and the summary, no per-row or per-chunk list up front."""
+    argv = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--axis", "apex_speed=1:2:100000000000"]
+    argv += ["--axis", "touchdown_angle=0.3:0.4:3", "--out", str(tmp_path / "huge"), "--max-chunks", "0"]
+    assert main([*argv, "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["rows"] == 300_000_000_000 and summary["rows_done"] == 0 and not summary["complete"]
+    manifest = json.loads((tmp_path / "huge" / "manifest.json").read_text())
+    assert manifest["rows"] == 300_000_000_000
+
+
+def test_grid_points_equal_numpys_spacing_bit_for_bit():
+    """Points computed from their indices equal numpy.linspace / geomspace (a resumed sweep's chunks
+    match the ones written before)."""
+    from slipmaps.runtime.sweep_axes import Axis
+
+    for low, high, num in (
+        (3.0, 7.0, 41),
+        (0.25, 0.45, 21),
+        (1e-3, 10.0, 1001),
+        (2.0, 2.0, 1),
+        (5.0, 5.0, 3),
+    ):
+        for scale, space in (("linear", np.linspace), ("log", np.geomspace)):
+            axis = Axis.of("x", {"low": low, "high": high, "num": num, "scale": scale})
+            assert np.array_equal(axis.grid_values(), space(low, high, num)), (low, high, num, scale)
+            idx = np.array([num - 1, 0, num // 2])
+            assert np.array_equal(axis.grid_at(idx), space(low, high, num)[idx])
