@@ -28,14 +28,16 @@ Subcommands (``slipmaps --version`` prints the installed version):
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
 the flag as typed. Every path a command writes (``compare --plot``, ``gait --figure``, ``sweep
---out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. The map names
-and options come from the generated index.
+--out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. A reader that
+closes standard output early (``slipmaps maps | head -1``) ends any command quietly with exit
+status :data:`BROKEN_PIPE`. The map names and options come from the generated index.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -58,7 +60,11 @@ from .validate import leg_angle, non_negative, polar_state, positive
 #: and so ``slipmaps generate``, never needs the generated index).
 EXACT = "exact"
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "BROKEN_PIPE"]
+
+#: The exit status when standard output's reader closed the pipe early (128 + SIGPIPE, the status
+#: of a process that the signal ended): no traceback, nothing on standard error.
+BROKEN_PIPE = 141
 
 
 def _add_params(p: argparse.ArgumentParser) -> None:
@@ -449,8 +455,26 @@ def _cmd_gait(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``) and return its exit status: a user
+    error is one line on standard error and 2; a reader that closes standard output early
+    (``slipmaps maps | head -1``) ends every command quietly with :data:`BROKEN_PIPE`."""
+    try:
+        return _run(argv)
+    except BrokenPipeError:
+        # The reader stopped early: nothing more to say to it. Python flushes stdout again at
+        # exit; pointing it at devnull keeps that flush quiet (the recipe of Python's signal docs).
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return BROKEN_PIPE
+
+
+def _run(argv: list[str] | None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit:  # --help, --version or a usage error: their output is written now
+        sys.stdout.flush()
+        raise
     handlers = {
         "maps": _cmd_maps,
         "compare": _cmd_compare,
@@ -461,10 +485,12 @@ def main(argv: list[str] | None = None) -> int:
         "sweep": sweep_cli.run,
     }
     try:
-        return handlers[args.command](args)
+        code = handlers[args.command](args)
     except (ValueError, TypeError) as exc:
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    sys.stdout.flush()  # a closed pipe shows here, inside main, not at the interpreter's exit
+    return code
 
 
 if __name__ == "__main__":

@@ -622,3 +622,67 @@ def test_grid_points_equal_numpys_spacing_bit_for_bit():
             assert np.array_equal(axis.grid_values(), space(low, high, num)), (low, high, num, scale)
             idx = np.array([num - 1, 0, num // 2])
             assert np.array_equal(axis.grid_at(idx), space(low, high, num)[idx])
+
+
+def _closed_pipe_run(argv: list[str]) -> subprocess.CompletedProcess:
+    """``python -m slipmaps ARGV`` writing into a pipe whose reader has already gone (`| head -1`
+    after head has exited): every write fails with EPIPE."""
+    read, write = os.pipe()
+    os.close(read)
+    try:
+        return subprocess.run(
+            [sys.executable, "-m", "slipmaps", *argv],
+            stdout=write,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=300,
+        )
+    finally:
+        os.close(write)
+
+
+@pytest.mark.parametrize("argv", [["maps"], ["maps", "--json"], ["compare", "--help"]])
+def test_a_reader_that_closes_early_ends_the_command_quietly(argv):
+    """`slipmaps maps | head -1` printed a BrokenPipeError traceback."""
+    from slipmaps.runtime.cli import BROKEN_PIPE
+
+    done = _closed_pipe_run(argv)
+    assert done.stderr == "", done.stderr
+    assert done.returncode in ((0, BROKEN_PIPE) if "--help" in argv else (BROKEN_PIPE,))
+
+
+class _ClosedPipe:
+    """A standard output whose reader has gone: every write (and flush) raises BrokenPipeError."""
+
+    def __init__(self, fd: int) -> None:
+        self.fd = fd
+
+    def write(self, text: str) -> int:
+        raise BrokenPipeError(32, "Broken pipe")
+
+    def flush(self) -> None:
+        raise BrokenPipeError(32, "Broken pipe")
+
+    def fileno(self) -> int:
+        return self.fd
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["maps"],
+        ["compare", "--no-plot", "--against", "geyer"],
+        ["gait", "--no-exact", "--map", "geyer", "--speed", "5", "--no-progress"],
+        ["sweep", *SWEEP[1:], "--no-progress", "--out", "{tmp}/s"],
+    ],
+)
+def test_every_verb_handles_a_closed_pipe(argv, tmp_path, monkeypatch):
+    """Every verb's output goes through main's one handler: exit BROKEN_PIPE, nothing raised."""
+    from slipmaps.runtime.cli import BROKEN_PIPE
+
+    fd = os.open(os.devnull, os.O_WRONLY)
+    try:
+        monkeypatch.setattr(sys, "stdout", _ClosedPipe(fd))
+        assert main([a.format(tmp=tmp_path) for a in argv]) == BROKEN_PIPE
+    finally:
+        os.close(fd)
