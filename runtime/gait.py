@@ -67,7 +67,16 @@ from .maps import apex_return_batch
 from .params import SlipParams
 from .validate import check_params, leg_angle, positive
 
-__all__ = ["FixedPoint", "fixed_points", "energy_of", "check_conservative", "SCAN", "XTOL", "FTOL"]
+__all__ = [
+    "FixedPoint",
+    "FixedPoints",
+    "fixed_points",
+    "energy_of",
+    "check_conservative",
+    "SCAN",
+    "XTOL",
+    "FTOL",
+]
 
 #: Points of the bracketing scan along the unknown (one batch call).
 SCAN = 96
@@ -141,6 +150,67 @@ class FixedPoint:
             "status": self.status.name,
             "message": self.message,
         }
+
+
+class FixedPoints(tuple):
+    """What :func:`fixed_points` returns: the fixed points found (a tuple of :class:`FixedPoint`, in
+    increasing order of the unknown; compares equal to the plain tuple) and how the search went.
+
+    ``scan``: the map's steps of the bracketing scan per status name (most first; the whole
+    line, not only the brackets). ``status``: OK when the scan could look for fixed points (some
+    steps completed; an empty result is then a line without any), else why not: when every step
+    of the scan failed, the most common failure (``NOT_CONVERGED`` for an iteration bounded too
+    tightly, e.g. ``gravity-type2`` with ``iterations=1`` at its default ``tol``), and
+    ``APEX_TOO_LOW`` when the energy does not reach the touchdown height. ``message`` says it in
+    words (``every step of the scan failed (96 steps: NOT_CONVERGED 72, FALL 24): NOT_CONVERGED:
+    ...``); for an OK search it counts the steps that failed, if any.
+    """
+
+    scan: dict[str, int]
+    status: Status
+    message: str
+
+    def __new__(cls, points=(), *, scan=None, status: Status = Status.OK, message: str = ""):
+        self = super().__new__(cls, points)
+        self.scan = dict(scan or {})
+        self.status = Status(status)
+        self.message = message
+        return self
+
+    @property
+    def ok(self) -> bool:
+        """True when the search ran (its scan had completed steps), whether or not it found any."""
+        return self.status == Status.OK
+
+    def as_dict(self) -> dict:
+        """JSON-ready: ``status`` by name, ``message``, ``scan`` and ``fixed_points``."""
+        return {
+            "status": self.status.name,
+            "message": self.message,
+            "scan": dict(self.scan),
+            "fixed_points": [p.as_dict() for p in self],
+        }
+
+    def __repr__(self) -> str:
+        return f"FixedPoints({tuple(self)!r}, status={self.status.name}, scan={self.scan!r})"
+
+
+def _searched(points, counts: dict[str, int]) -> FixedPoints:
+    """The search's result from its points and the scan's status counts (most first)."""
+    total = sum(counts.values())
+    failed = {k: n for k, n in counts.items() if k != Status.OK.name}
+    if total and not counts.get(Status.OK.name):
+        worst = next(iter(failed))
+        steps = ", ".join(f"{k} {n}" for k, n in failed.items())
+        message = (
+            f"every step of the scan failed ({total} steps: {steps}): {worst}: {MESSAGES[int(Status[worst])]}"
+        )
+        return FixedPoints(points, scan=counts, status=Status[worst], message=message)
+    message = ""
+    if failed:
+        steps = ", ".join(f"{k} {n}" for k, n in failed.items())
+        message = f"{sum(failed.values())} of {total} steps of the scan failed ({steps})"
+    return FixedPoints(points, scan=counts, message=message)
 
 
 def energy_of(params: SlipParams, apex_height: float, apex_speed: float) -> float:
@@ -325,7 +395,7 @@ def fixed_points(
     scan: int = SCAN,
     progress: bool | None = False,
     **options,
-) -> tuple[FixedPoint, ...]:
+) -> FixedPoints:
     """Every fixed point of map ``name``'s apex-return map on a line, in increasing order of the unknown.
 
     Give ``apex_height`` [m] and ``speed`` [m/s] (or ``energy`` [J] and ``speed``): the touchdown
@@ -333,6 +403,9 @@ def fixed_points(
     (q_th_td [rad], from the vertical): the apex heights on the energy level m (g_f h + v^2/2) = E.
     ``options`` are the map's (``slipmaps maps``); ``progress`` shows the scan's bar (exact map).
     A fixed point whose refinement fails has a failure ``status`` (``ok`` False) and NaN stability.
+    The result is a :class:`FixedPoints` (a tuple): when every step of the scan fails (the map
+    fails on the whole line, not a line without gaits) its ``status`` and ``message`` say so, and
+    ``scan`` has the map's status counts.
     ValueError for bad arguments and for parameters whose step does not conserve the energy
     (:func:`check_conservative`).
     """
@@ -343,7 +416,13 @@ def fixed_points(
         raise ValueError(f"scan must be an integer >= 2, got {scan!r}")
     x = line.grid(scan)
     if x.size == 0:
-        return ()
+        top, touch = line.e / line.g, line.q_r_td * math.cos(line.angle)  # only a height line is empty
+        message = (
+            f"no apex on the energy level is above the touchdown height {touch:.6g} m (at zero speed "
+            f"the apex is {top:.6g} m high): no touchdown"
+        )
+        return FixedPoints(status=Status.APEX_TOO_LOW, message=message)
     res = apex_return_batch(name, params, *line.point(x), progress=progress, **options)
     f = np.asarray(res["apex_height"]) - np.asarray(line.point(x)[0])
-    return tuple(_refine(name, params, line, *br, options) for br in _brackets(x, f, np.asarray(res.ok)))
+    points = [_refine(name, params, line, *br, options) for br in _brackets(x, f, np.asarray(res.ok))]
+    return _searched(points, res.counts())

@@ -6,8 +6,10 @@ By default the human runner at apex height 1 m and apex speeds 3-7 m/s, the exac
 ``--angle``: the apex heights on the energy level that a fixed touchdown angle returns to
 (Seyfarth et al.'s setting). ``--json`` prints the fixed points as JSON; ``--figure PATH`` also
 draws the self-stable region (angle of attack against speed) of the maps listed (default: those
-of docs/stability.png; the exact one takes about 25 minutes with the ``solve_ivp`` simulator).
-Registered in :mod:`.cli` by :func:`add_parser`.
+of docs/stability.png; the exact one takes about 25 minutes with the ``solve_ivp`` simulator); its
+path is checked before any work. A search whose every step fails prints its status and message in
+the row (and in ``--json``), and the command exits 1. Registered in :mod:`.cli` by
+:func:`add_parser`.
 """
 
 from __future__ import annotations
@@ -33,6 +35,10 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "by the exact map and every --map. Default: the human runner at apex height 1 m, apex speeds 3-7 "
         "m/s, the touchdown angle unknown. With --energy or --energy-speed and --angle: the apex heights "
         "unknown. Angles in rad from the vertical (angle of attack from the ground: 90 deg - angle).",
+        epilog="exit status: 0 every search ran (found fixed points or not); 1 a search failed because "
+        "the map's steps failed on the whole line (e.g. NOT_CONVERGED: its status and message are "
+        "printed in the row, in --json as status and message); 2 a user error (one line on standard "
+        "error).",
     )
     _add_params(p)
     p.add_argument("--map", action="append", default=None, help="a map beside the exact one (repeatable)")
@@ -95,7 +101,8 @@ def _format(rows: list[tuple[dict, str, tuple]]) -> str:
     out = [head, "-" * len(head)]
     for line, name, points in rows:
         if not points:
-            out.append(f"{_label(line):<30} {name:<16} {'no fixed point':>14}")
+            text = "no fixed point" if points.ok else f"no fixed point: {points.message}"
+            out.append(f"{_label(line):<30} {name:<16} {text}")
         for p in points:
             mult = ", ".join(f"{z.real:.6g}" + (f"{z.imag:+.3g}j" if z.imag else "") for z in p.multipliers)
             out.append(
@@ -139,9 +146,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         data = {
             "params": params.as_dict(),
-            "lines": [
-                {"given": line, "map": n, "fixed_points": [p.as_dict() for p in pts]} for line, n, pts in rows
-            ],
+            "lines": [{"given": line, "map": n, **pts.as_dict()} for line, n, pts in rows],
             "figure": figure,
         }
         print(json.dumps(data, indent=2))
@@ -149,4 +154,4 @@ def run(args: argparse.Namespace) -> int:
         print(_format(rows))
         if figure:
             print(f"\nwrote {figure}")
-    return 0
+    return 0 if all(pts.ok for _, _, pts in rows) else 1

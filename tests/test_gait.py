@@ -256,3 +256,29 @@ def test_gait_errors_are_one_line_exit_2(capsys, argv, match):
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert match in err and len(err.strip().splitlines()) == 1
+
+
+# ----------------------------------------------------------------------------------------------
+# Tracker issue 16: a search that fails says so
+# ----------------------------------------------------------------------------------------------
+
+
+def test_a_search_says_how_it_went():
+    """fixed_points returns a FixedPoints tuple: status OK with the scan's status counts when the
+    scan could search, the map's failure when every step failed, APEX_TOO_LOW when the energy
+    reaches no touchdown."""
+    import pickle
+
+    found = slipmaps.fixed_points("geyer", P, apex_height=1.0, speed=5.0)
+    assert isinstance(found, gait.FixedPoints) and isinstance(found, tuple) and len(found) == 1
+    assert found.ok and sum(found.scan.values()) == gait.SCAN and found.scan["OK"] > 0
+    assert found.message == "" or found.message.endswith(")")
+    again = pickle.loads(pickle.dumps(found))
+    assert again == found and again.scan == found.scan and again.status == found.status
+    failed = slipmaps.fixed_points("gravity-type2", P, apex_height=1.0, speed=5.0, iterations=1)
+    assert failed == () and not failed.ok and failed.status == slipmaps.Status.NOT_CONVERGED
+    assert failed.message.startswith(f"every step of the scan failed ({gait.SCAN} steps: NOT_CONVERGED ")
+    assert "OK" not in failed.scan and sum(failed.scan.values()) == gait.SCAN
+    low = slipmaps.fixed_points("geyer", P, energy=100.0, angle=0.3)
+    assert low == () and low.status == slipmaps.Status.APEX_TOO_LOW and "touchdown height" in low.message
+    assert failed.as_dict()["status"] == "NOT_CONVERGED" and failed.as_dict()["fixed_points"] == []

@@ -686,3 +686,24 @@ def test_every_verb_handles_a_closed_pipe(argv, tmp_path, monkeypatch):
         assert main([a.format(tmp=tmp_path) for a in argv]) == BROKEN_PIPE
     finally:
         os.close(fd)
+
+
+def test_a_search_whose_every_step_fails_says_so(capsys):
+    """`slipmaps gait --map gravity-type2 --option iterations=1` printed "no fixed point" on every
+    line: every step of the scan is NOT_CONVERGED at the default tol. Now the row says so, the JSON
+    has the status, message and the scan's status counts, and the exit status is 1."""
+    argv = ["gait", "--no-exact", "--map", "gravity-type2", "--option", "iterations=1", "--speed", "5"]
+    assert main([*argv, "--no-progress"]) == 1
+    (row,) = [line for line in capsys.readouterr().out.splitlines() if line.startswith("h 1 m")]
+    assert "no fixed point: every step of the scan failed (96 steps: NOT_CONVERGED" in row
+    assert row.endswith("NOT_CONVERGED: " + slipmaps.MESSAGES[int(slipmaps.Status.NOT_CONVERGED)])
+    assert main([*argv, "--no-progress", "--json"]) == 1
+    (line,) = json.loads(capsys.readouterr().out)["lines"]
+    assert line["status"] == "NOT_CONVERGED" and line["fixed_points"] == []
+    assert line["message"].startswith("every step of the scan failed")
+    assert sum(line["scan"].values()) == 96 and "OK" not in line["scan"]
+    assert line["scan"]["NOT_CONVERGED"] > 48
+    # with the tolerance off (the README's example), the same iteration runs and finds the gait
+    assert main([*argv, "--option", "tol=0", "--no-progress", "--json"]) == 0
+    (line,) = json.loads(capsys.readouterr().out)["lines"]
+    assert line["status"] == "OK" and len(line["fixed_points"]) == 1
