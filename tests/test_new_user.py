@@ -707,3 +707,26 @@ def test_a_search_whose_every_step_fails_says_so(capsys):
     assert main([*argv, "--option", "tol=0", "--no-progress", "--json"]) == 0
     (line,) = json.loads(capsys.readouterr().out)["lines"]
     assert line["status"] == "OK" and len(line["fixed_points"]) == 1
+
+
+def test_gait_labels_the_eigenvalue_and_the_multipliers(capsys):
+    """`gait --map geyer`: eigenvalue 0.856 beside multipliers (1, 0.788). The table says which is
+    which, and notes the maps whose step does not conserve the energy (the exact one does)."""
+    from slipmaps.runtime.gait import DEFINITIONS
+
+    assert main(["gait", "--map", "geyer", "--speed", "5", "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    flat = " ".join(out.split())
+    head = out.splitlines()[0]
+    assert "lambda 1-D" in head and "multipliers 2x2" in head and "eigenvalue" not in head
+    assert "lambda 1-D: " + " ".join(DEFINITIONS["eigenvalue"].split()) in flat
+    assert "multipliers 2x2: " + " ".join(DEFINITIONS["multipliers"].split()) in flat
+    assert "note: geyer's step does not conserve the flight energy" in flat
+    assert "note: exact" not in flat
+    assert main(["gait", "--map", "geyer", "--speed", "5", "--no-progress", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["definitions"] == DEFINITIONS
+    geyer = next(line for line in data["lines"] if line["map"] == "geyer")
+    (p,) = geyer["fixed_points"]
+    assert abs(p["multipliers"][0][0] - 1.0) < 1e-12 and abs(p["multipliers"][1][0] - p["eigenvalue"]) > 0.05
+    assert p["energy_gradient_error"] > 0.05
