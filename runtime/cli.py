@@ -21,7 +21,8 @@ Subcommands (``slipmaps --version`` prints the installed version):
   from a source checkout, else into ``--out DIR`` (required there);
 - ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
   apex-return map and their eigenvalues (runtime/gait_cli.py);
-- ``equations [--json]``: run the symbolic check of every registered report equation;
+- ``equations [--json]``: run the symbolic check of every registered report equation (``--json``:
+  one JSON array, an object per equation);
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale); a source checkout only.
 
@@ -162,6 +163,10 @@ def image_path(flag: str, path: str, example: str = "compare") -> str:
     return path
 
 
+#: An option's kind in a message ("must be a whole number"; the index's own words).
+_KIND_WORDS = {"int": "a whole number", "float": "a number"}
+
+
 def _options(name: str, pairs: list[str] | None) -> dict:
     """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
     from .index import lookup
@@ -180,7 +185,7 @@ def _options(name: str, pairs: list[str] | None) -> dict:
             )
         except ValueError:
             raise ValueError(
-                f"map {name!r} option {opt.name!r} must be a {opt.kind}, got {value!r}"
+                f"map {name!r} option {opt.name!r} must be {_KIND_WORDS[opt.kind]}, got {value!r}"
             ) from None
     return out
 
@@ -309,7 +314,11 @@ def build_parser() -> argparse.ArgumentParser:
         "and print its status (verified, corrected, definition) with a note; exit 1 if a check fails. "
         "Needs the [derive] extra.",
     )
-    eq.add_argument("--json", action="store_true", help="one JSON object per equation")
+    eq.add_argument(
+        "--json",
+        action="store_true",
+        help="print the equations as one JSON array (an object per equation) instead of the table",
+    )
 
     acc = sub.add_parser(
         "accuracy",

@@ -34,6 +34,7 @@ from .validate import leg_angle, non_negative, positive, real
 __all__ = [
     "Quantity",
     "Axis",
+    "AXIS_KEYS",
     "KINDS",
     "RATIO",
     "CHUNK_ROWS_GENERATED",
@@ -115,6 +116,10 @@ def _number(where: str, value: object) -> float:
     return real(where, value)
 
 
+#: The keys of an axis given as a mapping: a range (low, high, num, scale) or a list of values.
+AXIS_KEYS = ("low", "high", "num", "scale", "values")
+
+
 @dataclass(frozen=True)
 class Axis:
     """One swept quantity: ``values`` (a list), or a range ``low``..``high`` with ``num`` grid points
@@ -138,10 +143,11 @@ class Axis:
         if isinstance(spec, str):
             return cls.of(name, _parse_text(where, spec))
         if isinstance(spec, Mapping):
-            unknown = set(spec) - {"low", "high", "num", "scale", "values"}
+            unknown = set(spec) - set(AXIS_KEYS)
             if unknown:
                 raise ValueError(
-                    f"{where}: unknown key(s) {', '.join(sorted(unknown))} (low, high, num, scale)"
+                    f"{where}: unknown key(s) {', '.join(sorted(unknown))}; the keys are "
+                    f"{', '.join(AXIS_KEYS)}"
                 )
             if "values" in spec:
                 if set(spec) != {"values"}:

@@ -113,10 +113,11 @@ def _float(flag: str, name: str, text: str) -> float:
 
 def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
     """(the definition's keys, the run settings) from the TOML file and the flags."""
-    from .sweep import RUN_KEYS
+    from .sweep import split_keys
     from .sweep_spec import axes_by_name, read_toml
 
     data = dict(read_toml(args.config)) if args.config else {}
+    split_keys(data, args.config or "sweep")  # an unknown key of the file, listing every known one
     axes = dict(axes_by_name(data.get("axes", {})))
     fixed = dict(data.get("fixed", {}))
     flag_axes, flag_fixed = _pairs("--axis", args.axis), _pairs("--fixed", args.fixed)
@@ -143,8 +144,7 @@ def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
         if "map" not in data:
             raise ValueError("--option needs --map (or map in the TOML file)")
         data["options"] = {**data.get("options", {}), **_options(data["map"], args.option)}
-    run = {k: data.pop(k) for k in RUN_KEYS if k in data}
-    return data, run
+    return split_keys(data, args.config or "sweep")
 
 
 def run(args: argparse.Namespace) -> int:

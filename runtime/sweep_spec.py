@@ -108,14 +108,15 @@ def _check_names(kind: str, known: Mapping[str, Quantity], axes: Mapping, fixed:
     for name in (*axes, *fixed):
         if name not in known:
             raise ValueError(
-                f"unknown sweep quantity {name!r}; a {kind} sweep varies or fixes: {', '.join(known)}"
+                f"unknown sweep quantity {name!r}; a sweep of kind {kind!r} varies or fixes: "
+                + ", ".join(known)
             )
     both = set(axes) & set(fixed)
     if both:
         raise ValueError(f"{', '.join(sorted(both))}: both fixed and swept; choose one")
     missing = [q.name for q in KINDS[kind] if q.name not in axes and q.name not in fixed and not q.optional]
     if missing:
-        raise ValueError(f"a {kind} sweep needs {', '.join(missing)}: fix it or give it an axis")
+        raise ValueError(f"a sweep of kind {kind!r} needs {', '.join(missing)}: fix it or give it an axis")
 
 
 def _check_params(info: MapInfo, constants: dict[str, float], axes: list[Axis]) -> None:

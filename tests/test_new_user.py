@@ -730,3 +730,56 @@ def test_gait_labels_the_eigenvalue_and_the_multipliers(capsys):
     (p,) = geyer["fixed_points"]
     assert abs(p["multipliers"][0][0] - 1.0) < 1e-12 and abs(p["multipliers"][1][0] - p["eigenvalue"]) > 0.05
     assert p["energy_gradient_error"] > 0.05
+
+
+def test_equations_json_help_says_it_prints_one_array():
+    eq = build_parser()._subparsers._group_actions[0].choices["equations"].format_help()
+    assert "one JSON array" in " ".join(eq.split()) and "JSON object per equation" not in eq
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (
+            ["compare", "--no-plot", "--map", "gravity-type2", "--option", "iterations=2.5"],
+            "option 'iterations' must be a whole number, got '2.5'",
+        ),
+        (
+            ["compare", "--no-plot", "--map", "gravity-type2", "--option", "tol=x"],
+            "option 'tol' must be a number, got 'x'",
+        ),
+        (
+            ["sweep", "--map", "geyer", "--axis", "apex_sped=3:4:2", "--out", "o"],
+            "unknown sweep quantity 'apex_sped'; a sweep of kind 'apex_return' varies or fixes: apex_height",
+        ),
+        (
+            ["sweep", "--map", "geyer", "--axis", "apex_speed=3:4:2", "--out", "o"],
+            "a sweep of kind 'apex_return' needs apex_height, touchdown_angle",
+        ),
+    ],
+)
+def test_messages_read_as_english(argv, needle, nothing_runs, capsys):
+    """ "must be a int" and "a apex_return sweep" are gone."""
+    assert main(argv) == 2
+    err = _one_line_error(capsys, needle)
+    assert "a int" not in err and "a float" not in err and "a apex_return" not in err
+
+
+def test_a_toml_files_unknown_key_lists_every_accepted_key(tmp_path, nothing_runs, capsys):
+    """The message named only the definition's keys; out, format, scheduler and combine (in the
+    README) were missing. It lists slipmaps.runtime.sweep.KEYS, the keys split_keys accepts."""
+    from slipmaps.runtime import sweep_axes
+    from slipmaps.runtime.sweep import KEYS, load
+
+    path = tmp_path / "s.toml"
+    path.write_text('map = "geyer"\noutput = "o"\n')
+    assert main(["sweep", str(path)]) == 2
+    err = _one_line_error(capsys, f"{path}: unknown key(s) output; the keys are {', '.join(KEYS)}")
+    assert all(key in err for key in ("out", "format", "scheduler", "combine", "axes", "fixed"))
+    with pytest.raises(ValueError, match="the keys are " + ", ".join(KEYS)):
+        load(path)
+    path.write_text('map = "geyer"\n[fixed]\napex_height = 1.0\ntouchdown_angle = 0.3\n')
+    path.write_text(path.read_text() + "[axes]\napex_speed = { low = 3, high = 7, count = 5 }\n")
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o")]) == 2
+    _one_line_error(capsys, "unknown key(s) count; the keys are " + ", ".join(sweep_axes.AXIS_KEYS))
+    assert "values" in sweep_axes.AXIS_KEYS
