@@ -783,3 +783,20 @@ def test_a_toml_files_unknown_key_lists_every_accepted_key(tmp_path, nothing_run
     assert main(["sweep", str(path), "--out", str(tmp_path / "o")]) == 2
     _one_line_error(capsys, "unknown key(s) count; the keys are " + ", ".join(sweep_axes.AXIS_KEYS))
     assert "values" in sweep_axes.AXIS_KEYS
+
+
+def test_the_region_figure_cites_the_paper_it_reproduces():
+    """The figure cited Seyfarth et al. 2003, the README 2002: the self-stable region is the 2002 J
+    Biomech paper's; the two marked reference points come from the 2003 paper's captions, named so."""
+    from slipmaps.runtime import stability_report
+
+    title = " ".join(stability_report.REGION_TITLE.split())
+    assert "Seyfarth et al. 2002" in title and "A movement criterion for running" in title
+    assert "2003" not in title
+    marks = stability_report.REGION_MARKS
+    assert "2003" in marks and "Swing-leg retraction" in marks and "J Exp Biol" in marks
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert re.findall(r"Seyfarth et al\.,? (\d{4})", readme) and set(
+        re.findall(r"Seyfarth et al\.,? (\d{4})", readme)
+    ) == {"2002"}
+    assert "A movement criterion for running" in readme
