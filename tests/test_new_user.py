@@ -800,3 +800,23 @@ def test_the_region_figure_cites_the_paper_it_reproduces():
         re.findall(r"Seyfarth et al\.,? (\d{4})", readme)
     ) == {"2002"}
     assert "A movement criterion for running" in readme
+
+
+def test_the_example_sweep_file_writes_relative_to_the_current_directory(tmp_path, monkeypatch, capsys):
+    """examples/sweep.toml wrote into the checkout and needed pyarrow without saying so: its
+    comment says what Parquet needs, its out is relative to the directory it runs from."""
+    example = ROOT / "examples" / "sweep.toml"
+    text = example.read_text()
+    header = text.split("\n\n")[0]
+    assert "pip install 'slipmaps[parquet]'" in header and "--format csv" in header
+    assert "relative to the directory you run" in " ".join(header.replace("#", " ").split())
+    in_checkout = (ROOT / "sweep_type5").exists()
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setitem(sys.modules, "pyarrow", None)  # as without the parquet extra
+    assert main(["sweep", str(example), "--no-progress"]) == 2
+    _one_line_error(capsys, "need pyarrow: pip install 'slipmaps[parquet]'")
+    assert main(["sweep", str(example), "--format", "csv", "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    assert "sweep of gravity-type5: 9963 of 9963 rows (complete)" in out
+    assert (tmp_path / "sweep_type5" / "sweep.csv").is_file()
+    assert (ROOT / "sweep_type5").exists() == in_checkout  # nothing written into the checkout
