@@ -3,7 +3,12 @@ plot path, read-only installs (numba's cache, `generate` outside a checkout), th
 rule for physical failures and its exit status, the touchdown leg length, flags named as typed, the
 step defaults that scale with the leg, plain numbers in messages, strings refused as numbers,
 `python -m slipmaps` / `--version` / help texts, the README's import paths and where `slipmaps
-accuracy` writes."""
+accuracy` writes.
+
+Then tracker issue 16 (the command line at first contact): every path a command writes checked
+first, a quantity given twice and a 10^11-point grid in a sweep, a closed pipe, a fixed-point
+search whose every step fails, the eigenvalue and the Floquet multipliers told apart, messages and
+the example sweep file, and maps without a trajectory (the README's examples: test_readme.py)."""
 
 from __future__ import annotations
 
@@ -820,3 +825,53 @@ def test_the_example_sweep_file_writes_relative_to_the_current_directory(tmp_pat
     assert "sweep of gravity-type5: 9963 of 9963 rows (complete)" in out
     assert (tmp_path / "sweep_type5" / "sweep.csv").is_file()
     assert (ROOT / "sweep_type5").exists() == in_checkout  # nothing written into the checkout
+
+
+def test_a_map_without_a_trajectory_says_so_and_names_the_maps_with_one():
+    """`slipmaps.trajectory("iterative")` raised "has no trajectory (only event states)"."""
+    with pytest.raises(ValueError) as exc:
+        slipmaps.trajectory("iterative", P, (1.0, -1.5, 0.35, -4.5))
+    text = str(exc.value)
+    assert "\n" not in text and text.startswith("map 'iterative' has no trajectory")
+    having = [m.name for m in slipmaps.maps() if m.has_trajectory]
+    assert "geyer" in having and "exact" in having and "iterative" not in having
+    assert text.endswith("maps with a trajectory: " + ", ".join(having))
+
+
+def _figure_of(monkeypatch, argv, capsys):
+    """The matplotlib figure `slipmaps compare ... --plot` draws (captured instead of written)."""
+    import matplotlib.figure
+
+    drawn = []
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", lambda fig, *a, **k: drawn.append(fig))
+    assert main(argv) == 0
+    capsys.readouterr()
+    (fig,) = drawn
+    return fig
+
+
+@pytest.mark.parametrize(
+    ("argv", "label", "events"),
+    [
+        (["--map", "iterative"], "iterative: event states only (no trajectory)", 3),
+        (
+            ["--map", "iterative-decompression", "--k-c", "20000", "--k-d", "25000"],
+            "iterative-decompression: bottom and liftoff states only (no trajectory)",
+            2,
+        ),
+    ],
+)
+def test_a_map_without_a_trajectory_is_plotted_as_its_event_states(argv, label, events, monkeypatch, capsys):
+    """`compare --map iterative --plot`: dotted lines joined the three event states like a real
+    V-shaped trajectory. Now: markers only, no line, labelled; the exact stance drawn beside them
+    (for the decompression half too, from the touchdown, not from the half's bottom state)."""
+    fig = _figure_of(monkeypatch, ["compare", *argv, "--plot", "x.png"], capsys)
+    for ax in fig.axes:
+        marks = [line for line in ax.get_lines() if line.get_label() == label]
+        (mark,) = marks
+        assert mark.get_linestyle() == "None" and mark.get_marker() == "o" and len(mark.get_xdata()) == events
+        exact = [line for line in ax.get_lines() if line.get_label().startswith("exact")]
+        assert exact and len(exact[0].get_xdata()) > 50 and exact[0].get_xdata()[0] == 0.0
+        assert label in [t.get_text() for t in ax.get_legend().get_texts()]
+        names = {t.get_text() for t in ax.texts}
+        assert names == ({"touchdown", "bottom", "liftoff"} if events == 3 else {"bottom", "liftoff"})
