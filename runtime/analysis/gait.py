@@ -23,13 +23,29 @@ and touchdown for unequal gravities), so for k_c != k_d at the default leg lengt
 exists at all: :func:`fixed_points` refuses such parameters (ValueError naming the reason) instead of
 searching a two-dimensional (h, v) fixed point that is not there.
 
-The Floquet multipliers are the eigenvalues of the 2x2 apex Jacobian d(h', v')/d(h, v) at the
-fixed point. On an energy-conserving step one of them is 1 (the energy gradient is a left
-eigenvector: a neighbouring gait of another energy stays there) and the other is lambda; both are
-reported for every map. An approximate map conserves the energy only approximately (``geyer`` and
-the gravity corrections to round-off at their fixed points, ``iterative`` to its iteration
-tolerance, measured below), so its multipliers are those of its apex Jacobian at the point, and
-``speed_residual`` = v' - v says how far its step is from a two-dimensional fixed point.
+Two numbers, not one: the eigenvalue and the Floquet multipliers
+-----------------------------------------------------------------
+``eigenvalue`` (lambda) is the slope of the one-dimensional apex-height return map on the energy
+level, above; it decides self-stability (``stable``). ``multipliers`` are the eigenvalues of the 2x2
+apex-return Jacobian A = d(h', v')/d(h, v) at the fixed point (:data:`DEFINITIONS`). They are
+(1, lambda) exactly when the step conserves the flight energy to first order there: the energy
+gradient (m g_f, m v) is then a left eigenvector of A with eigenvalue 1 (a neighbouring gait of
+another energy stays on it), and the other eigenvalue is trace(A) - 1 = lambda. Conversely, with
+one multiplier 1 and dh'/dv != 0, (1, lambda) implies that the gradient is a left eigenvector.
+``energy_gradient_error`` measures how far it is: the larger relative difference of dE'/dh from
+dE/dh and of dE'/dv from dE/dv (0 for an energy-conserving step).
+
+Measured on docs/stability.json's grids (human runner and robot hopper at apex height l0, 3-7 m/s
+and the same Froude numbers; Seyfarth et al.'s energy over angles of attack): the exact map's first
+multiplier is 1 within 6.1e-11 and its second is lambda; the gravity corrections (types 0-5) and
+``iterative-report`` conserve the energy to round-off (first multiplier 1 within 8e-14, second
+lambda to the record's 6 digits); ``iterative`` to its iteration floor (first multiplier 1 within
+8.9e-4, second within 0.016 of lambda, both worst on the robot hopper). Geyer et al.'s map (and
+``geyer-vs`` at k_c == k_d) does not conserve the energy (at 1 m, 5 m/s: dE'/dh = 8.60 m/s^2 per kg
+against g_f = 9.81), yet has a unit multiplier within 9.3e-14, from its curve of fixed points at a
+given angle, not from the energy: its second multiplier is up to 0.30 away from lambda (0.788
+against 0.856 at 5 m/s). ``speed_residual`` = v' - v says how far a step is from a
+two-dimensional fixed point.
 
 Search
 ------
@@ -67,7 +83,29 @@ from ..api.maps import apex_return_batch
 from ..api.params import SlipParams
 from ..api.validate import check_params, leg_angle, positive
 
-__all__ = ["FixedPoint", "fixed_points", "energy_of", "check_conservative", "SCAN", "XTOL", "FTOL"]
+__all__ = [
+    "FixedPoint",
+    "FixedPoints",
+    "fixed_points",
+    "energy_of",
+    "check_conservative",
+    "DEFINITIONS",
+    "SCAN",
+    "XTOL",
+    "FTOL",
+]
+
+#: What each stability number of a :class:`FixedPoint` is (the CLI prints these under its table and
+#: in its JSON).
+DEFINITIONS = {
+    "eigenvalue": "the eigenvalue lambda of the one-dimensional apex-height return map on the energy "
+    "level, dh'/dh - dh'/dv g_f/v; self-stable when abs(lambda) < 1",
+    "multipliers": "the Floquet multipliers, eigenvalues of the 2x2 apex-return Jacobian d(h', v')/d(h, v), "
+    "the one nearest 1 first; they are (1, lambda) only when the step conserves the flight energy",
+    "energy_gradient_error": "how far the step is from conserving the flight energy E = m (g_f h + v^2/2) "
+    "at the point: the larger relative difference of dE'/dh from dE/dh and of dE'/dv from dE/dv "
+    "(0: the multipliers are (1, lambda))",
+}
 
 #: Points of the bracketing scan along the unknown (one batch call).
 SCAN = 96
@@ -90,20 +128,30 @@ HEIGHT_MARGIN = 1e-9
 
 @dataclass(frozen=True)
 class FixedPoint:
-    """One fixed point of map ``map``'s apex-return map (SI units, angle from the vertical)."""
+    """One fixed point of map ``map``'s apex-return map (SI units, angle from the vertical).
+
+    Two different stability numbers (module docstring, :data:`DEFINITIONS`): ``eigenvalue`` is
+    lambda of the one-dimensional apex-height return map on the energy level (``stable`` is
+    abs(lambda) < 1); ``multipliers`` are the eigenvalues of the 2x2 apex-return Jacobian
+    d(h', v')/d(h, v), the one nearest 1 first. They are (1, eigenvalue) only for a step that
+    conserves the flight energy (``energy_gradient_error`` 0: the exact map, the gravity
+    corrections); Geyer et al.'s map has a unit multiplier but a second one up to 0.30 away from
+    its eigenvalue (measured).
+    """
 
     map: str
     apex_height: float  # [m]
     apex_speed: float  # [m/s]
     touchdown_angle: float  # q_th_td [rad]
     energy: float  # m (g_f h + v^2/2) [J]
-    eigenvalue: float  # of the apex-height return map on the energy level
-    multipliers: tuple[complex, complex]  # of d(h', v')/d(h, v), the one nearest 1 first
+    eigenvalue: float  # lambda of the 1-D apex-height return map on the energy level
+    multipliers: tuple[complex, complex]  # eigenvalues of the 2x2 d(h', v')/d(h, v), nearest 1 first
     residual: float  # h' - h [m]
     speed_residual: float  # v' - v [m/s]
     iterations: int  # Jacobian evaluations of the refinement
     status: Status
     message: str
+    energy_gradient_error: float = math.nan  # 0 when the step conserves the energy (DEFINITIONS)
 
     @property
     def ok(self) -> bool:
@@ -120,7 +168,8 @@ class FixedPoint:
         return 90.0 - math.degrees(self.touchdown_angle)
 
     def as_dict(self) -> dict:
-        """JSON-ready: numbers (None for NaN), multipliers as [re, im] pairs, the status by name."""
+        """JSON-ready: numbers (None for NaN), multipliers as [re, im] pairs, the status by name
+        (``eigenvalue``, ``multipliers``, ``energy_gradient_error``: :data:`DEFINITIONS`)."""
 
         def num(x: float):
             return float(x) if math.isfinite(x) else None
@@ -135,12 +184,74 @@ class FixedPoint:
             "eigenvalue": num(self.eigenvalue),
             "stable": self.stable,
             "multipliers": [[num(z.real), num(z.imag)] for z in self.multipliers],
+            "energy_gradient_error": num(self.energy_gradient_error),
             "residual": num(self.residual),
             "speed_residual": num(self.speed_residual),
             "iterations": self.iterations,
             "status": self.status.name,
             "message": self.message,
         }
+
+
+class FixedPoints(tuple):
+    """What :func:`fixed_points` returns: the fixed points found (a tuple of :class:`FixedPoint`, in
+    increasing order of the unknown; compares equal to the plain tuple) and how the search went.
+
+    ``scan``: the map's steps of the bracketing scan per status name (most first; the whole
+    line, not only the brackets). ``status``: OK when the scan could look for fixed points (some
+    steps completed; an empty result is then a line without any), else why not: when every step
+    of the scan failed, the most common failure (``NOT_CONVERGED`` for an iteration bounded too
+    tightly, e.g. ``gravity-type2`` with ``iterations=1`` at its default ``tol``), and
+    ``APEX_TOO_LOW`` when the energy does not reach the touchdown height. ``message`` says it in
+    words (``every step of the scan failed (96 steps: NOT_CONVERGED 72, FALL 24): NOT_CONVERGED:
+    ...``); for an OK search it counts the steps that failed, if any.
+    """
+
+    scan: dict[str, int]
+    status: Status
+    message: str
+
+    def __new__(cls, points=(), *, scan=None, status: Status = Status.OK, message: str = ""):
+        self = super().__new__(cls, points)
+        self.scan = dict(scan or {})
+        self.status = Status(status)
+        self.message = message
+        return self
+
+    @property
+    def ok(self) -> bool:
+        """True when the search ran (its scan had completed steps), whether or not it found any."""
+        return self.status == Status.OK
+
+    def as_dict(self) -> dict:
+        """JSON-ready: ``status`` by name, ``message``, ``scan`` and ``fixed_points``."""
+        return {
+            "status": self.status.name,
+            "message": self.message,
+            "scan": dict(self.scan),
+            "fixed_points": [p.as_dict() for p in self],
+        }
+
+    def __repr__(self) -> str:
+        return f"FixedPoints({tuple(self)!r}, status={self.status.name}, scan={self.scan!r})"
+
+
+def _searched(points, counts: dict[str, int]) -> FixedPoints:
+    """The search's result from its points and the scan's status counts (most first)."""
+    total = sum(counts.values())
+    failed = {k: n for k, n in counts.items() if k != Status.OK.name}
+    if total and not counts.get(Status.OK.name):
+        worst = next(iter(failed))
+        steps = ", ".join(f"{k} {n}" for k, n in failed.items())
+        message = (
+            f"every step of the scan failed ({total} steps: {steps}): {worst}: {MESSAGES[int(Status[worst])]}"
+        )
+        return FixedPoints(points, scan=counts, status=Status[worst], message=message)
+    message = ""
+    if failed:
+        steps = ", ".join(f"{k} {n}" for k, n in failed.items())
+        message = f"{sum(failed.values())} of {total} steps of the scan failed ({steps})"
+    return FixedPoints(points, scan=counts, message=message)
 
 
 def energy_of(params: SlipParams, apex_height: float, apex_speed: float) -> float:
@@ -267,7 +378,7 @@ def _point(name, params, line, x, jr, iterations, status) -> FixedPoint:
     res = jr.result
     nan = math.nan
     dh, dv = (res.apex_height - h, res.apex_speed - v) if res.ok else (nan, nan)
-    lam, mult = nan, (complex(nan, nan),) * 2
+    lam, mult, drift = nan, (complex(nan, nan),) * 2, nan
     if status == Status.OK and jr.ok:
         a = np.array(
             [[jr[o, i] for i in ("apex_height", "apex_speed")] for o in ("apex_height", "apex_speed")]
@@ -275,12 +386,15 @@ def _point(name, params, line, x, jr, iterations, status) -> FixedPoint:
         lam = float(a[0, 0] + a[0, 1] * (-params.g_f / v)) if v > 0.0 else nan
         z = sorted(np.linalg.eigvals(a).astype(complex), key=lambda c: abs(c - 1.0))
         mult = (complex(z[0]), complex(z[1]))
+        grad = np.array([params.g_f, v])  # dE/d(h, v) / m
+        drift = float(np.max(np.abs(grad @ a - grad) / grad)) if v > 0.0 else nan
     elif status == Status.OK:
         status = Status(int(jr.status))
     if status == Status.OK and not math.isfinite(lam):
         status = Status.NUMERICAL_RANGE
     message = MESSAGES[int(status)]
-    return FixedPoint(name, h, v, th, energy_of(params, h, v), lam, mult, dh, dv, iterations, status, message)
+    energy = energy_of(params, h, v)
+    return FixedPoint(name, h, v, th, energy, lam, mult, dh, dv, iterations, status, message, drift)
 
 
 def _refine(name, params, line, a, b, fa, fb, options) -> FixedPoint:
@@ -325,7 +439,7 @@ def fixed_points(
     scan: int = SCAN,
     progress: bool | None = False,
     **options,
-) -> tuple[FixedPoint, ...]:
+) -> FixedPoints:
     """Every fixed point of map ``name``'s apex-return map on a line, in increasing order of the unknown.
 
     Give ``apex_height`` [m] and ``speed`` [m/s] (or ``energy`` [J] and ``speed``): the touchdown
@@ -333,6 +447,9 @@ def fixed_points(
     (q_th_td [rad], from the vertical): the apex heights on the energy level m (g_f h + v^2/2) = E.
     ``options`` are the map's (``slipmaps maps``); ``progress`` shows the scan's bar (exact map).
     A fixed point whose refinement fails has a failure ``status`` (``ok`` False) and NaN stability.
+    The result is a :class:`FixedPoints` (a tuple): when every step of the scan fails (the map
+    fails on the whole line, not a line without gaits) its ``status`` and ``message`` say so, and
+    ``scan`` has the map's status counts.
     ValueError for bad arguments and for parameters whose step does not conserve the energy
     (:func:`check_conservative`).
     """
@@ -343,7 +460,13 @@ def fixed_points(
         raise ValueError(f"scan must be an integer >= 2, got {scan!r}")
     x = line.grid(scan)
     if x.size == 0:
-        return ()
+        top, touch = line.e / line.g, line.q_r_td * math.cos(line.angle)  # only a height line is empty
+        message = (
+            f"no apex on the energy level is above the touchdown height {touch:.6g} m (at zero speed "
+            f"the apex is {top:.6g} m high): no touchdown"
+        )
+        return FixedPoints(status=Status.APEX_TOO_LOW, message=message)
     res = apex_return_batch(name, params, *line.point(x), progress=progress, **options)
     f = np.asarray(res["apex_height"]) - np.asarray(line.point(x)[0])
-    return tuple(_refine(name, params, line, *br, options) for br in _brackets(x, f, np.asarray(res.ok)))
+    points = [_refine(name, params, line, *br, options) for br in _brackets(x, f, np.asarray(res.ok))]
+    return _searched(points, res.counts())

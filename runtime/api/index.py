@@ -101,6 +101,13 @@ class MapInfo:
     def generated(self) -> bool:
         return self.module is not None
 
+    @property
+    def has_trajectory(self) -> bool:
+        """True when :func:`slipmaps.trajectory` can sample the map's stance at any time (a
+        state-at-time kernel, or the exact simulator); False for a map that computes its event
+        states only (touchdown, bottom, liftoff: ``iterative``, ``iterative-report``)."""
+        return not self.generated or (self.kernels or {}).get("state_at") is not None
+
     def option(self, name: str) -> Option:
         for o in self.options:
             if o.name == name:

@@ -223,8 +223,12 @@ def trajectory(
         from ..exact import backend as exact_map
 
         return exact_map.trajectory(params, td, **call.options)
-    if call.info.kernels["state_at"] is None:
-        raise ValueError(f"map {name!r} has no trajectory (only event states)")
+    if not call.info.has_trajectory:
+        with_one = ", ".join(m.name for m in maps() if m.has_trajectory)
+        raise ValueError(
+            f"map {call.info.name!r} has no trajectory: it computes its event states only (touchdown, "
+            f"bottom, liftoff: slipmaps.stance); maps with a trajectory: {with_one}"
+        )
     if t is None:
         res = stance(name, params, td, **options)
         if not res.ok:

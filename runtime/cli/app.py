@@ -21,13 +21,17 @@ Subcommands (``slipmaps --version`` prints the installed version):
   from a source checkout, else into ``--out DIR`` (required there);
 - ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
   apex-return map and their eigenvalues (runtime/cli/gait.py);
-- ``equations [--json]``: run the symbolic check of every registered report equation;
+- ``equations [--json]``: run the symbolic check of every registered report equation (``--json``:
+  one JSON array, an object per equation);
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale); a source checkout only.
 
-A user error (bad value, unknown map or option, a map that refuses the parameters, a plot path that
-cannot be written) is one line on standard error and exit code 2, never a traceback; it names the
-flag as typed. The map names and options come from the generated index.
+A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
+that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
+the flag as typed. Every path a command writes (``compare --plot``, ``gait --figure``, ``sweep
+--out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. A reader that
+closes standard output early (``slipmaps maps | head -1``) ends any command quietly with exit
+status :data:`BROKEN_PIPE`. The map names and options come from the generated index.
 """
 
 from __future__ import annotations
@@ -40,6 +44,7 @@ from pathlib import Path
 
 from ..api.numeric import num
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, ParamError, ParamTypeError, SlipParams
+from ..api.paths import writable_dir, writable_file
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import sweep as sweep_cli
 from .defaults import (
@@ -56,7 +61,11 @@ from .defaults import (
 #: and so ``slipmaps generate``, never needs the generated index).
 EXACT = "exact"
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "BROKEN_PIPE"]
+
+#: The exit status when standard output's reader closed the pipe early (128 + SIGPIPE, the status
+#: of a process that the signal ended): no traceback, nothing on standard error.
+BROKEN_PIPE = 141
 
 
 def _add_params(p: argparse.ArgumentParser) -> None:
@@ -142,26 +151,20 @@ def _step(args: argparse.Namespace, params: SlipParams) -> dict:
     return {"apex_height": height, "apex_speed": speed, "touchdown_angle": angle, "touchdown": td}
 
 
-#: The image formats --plot can write (matplotlib's; the suffix chooses).
-_PLOT_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
+#: The image formats --plot and gait --figure can write (matplotlib's; the suffix chooses).
+IMAGE_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
 
 
-def _plot_path(path: str) -> str:
-    """``--plot``'s path, checked before any work: an image suffix, its directory created when
-    missing and writable; ValueError (one line) otherwise."""
-    target = Path(path)
-    if target.is_dir():
-        raise ValueError(f"--plot {path} is a directory; give a file, e.g. {target / 'compare.png'}")
-    if target.suffix.lower().lstrip(".") not in _PLOT_FORMATS:
-        raise ValueError(f"--plot {path}: give an image file name ending in .{', .'.join(_PLOT_FORMATS)}")
-    folder = target.parent
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"--plot {path}: cannot create the directory {folder}: {exc.strerror}") from None
-    if not os.access(folder, os.W_OK):
-        raise ValueError(f"--plot {path}: the directory {folder} is not writable")
+def image_path(flag: str, path: str, example: str = "compare") -> str:
+    """An image path given by ``flag`` (``--plot``, ``--figure``), checked before any work by
+    :func:`~.paths.writable_file`: an image suffix, its directory created when missing and
+    writable; ValueError (one line naming the flag) otherwise."""
+    writable_file(flag, path, IMAGE_FORMATS, described="an image file", example=example)
     return path
+
+
+#: An option's kind in a message ("must be a whole number"; the index's own words).
+_KIND_WORDS = {"int": "a whole number", "float": "a number"}
 
 
 def _options(name: str, pairs: list[str] | None) -> dict:
@@ -182,7 +185,7 @@ def _options(name: str, pairs: list[str] | None) -> dict:
             )
         except ValueError:
             raise ValueError(
-                f"map {name!r} option {opt.name!r} must be a {opt.kind}, got {value!r}"
+                f"map {name!r} option {opt.name!r} must be {_KIND_WORDS[opt.kind]}, got {value!r}"
             ) from None
     return out
 
@@ -311,7 +314,11 @@ def build_parser() -> argparse.ArgumentParser:
         "and print its status (verified, corrected, definition) with a note; exit 1 if a check fails. "
         "Needs the [derive] extra.",
     )
-    eq.add_argument("--json", action="store_true", help="one JSON object per equation")
+    eq.add_argument(
+        "--json",
+        action="store_true",
+        help="print the equations as one JSON array (an object per equation) instead of the table",
+    )
 
     acc = sub.add_parser(
         "accuracy",
@@ -368,7 +375,7 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     """0 when both sides ran, 1 when a side failed physically (its status under the table)."""
     params = _params(args)
     step = _step(args, params)  # bad values and plot paths are refused before any work
-    path = None if args.no_plot else _plot_path(args.plot)
+    path = None if args.no_plot else image_path("--plot", args.plot)
     note = _stiffness_note(args, params)
     if note:
         print(f"slipmaps compare: note: {note}", file=sys.stderr)
@@ -417,14 +424,17 @@ def _cmd_equations(args: argparse.Namespace) -> int:
 
 
 def _accuracy_out(args: argparse.Namespace) -> Path:
-    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path), else the
-    checkout's docs/; ValueError when there is neither (never a relative docs/)."""
+    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path; checked, and its
+    directory created, before any work), else the checkout's docs/; ValueError when there is
+    neither (never a relative docs/) or when ``--out`` cannot be written."""
     from ..studies.checkout import docs_dir
 
     name = "accuracy.md" if args.map == "all" else f"accuracy_{args.map}.md"
     if args.out is not None:
         out = Path(args.out)
-        return out if out.suffix == ".md" else out / name
+        if out.suffix == ".md":
+            return writable_file("--out", args.out, ("md",), described="a markdown file")
+        return writable_dir("--out", args.out) / name
     docs = docs_dir()
     if docs is None:
         raise ValueError(
@@ -454,8 +464,26 @@ def _cmd_gait(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``) and return its exit status: a user
+    error is one line on standard error and 2; a reader that closes standard output early
+    (``slipmaps maps | head -1``) ends every command quietly with :data:`BROKEN_PIPE`."""
+    try:
+        return _run(argv)
+    except BrokenPipeError:
+        # The reader stopped early: nothing more to say to it. Python flushes stdout again at
+        # exit; pointing it at devnull keeps that flush quiet (the recipe of Python's signal docs).
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return BROKEN_PIPE
+
+
+def _run(argv: list[str] | None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit:  # --help, --version or a usage error: their output is written now
+        sys.stdout.flush()
+        raise
     handlers = {
         "maps": _cmd_maps,
         "compare": _cmd_compare,
@@ -466,10 +494,12 @@ def main(argv: list[str] | None = None) -> int:
         "sweep": sweep_cli.run,
     }
     try:
-        return handlers[args.command](args)
+        code = handlers[args.command](args)
     except (ValueError, TypeError) as exc:
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    sys.stdout.flush()  # a closed pipe shows here, inside main, not at the interpreter's exit
+    return code
 
 
 if __name__ == "__main__":

@@ -109,6 +109,9 @@ class Comparison:
     half: index.HalfInfo | None = None
     #: True when the touchdown state was given (``params.q_r_td`` is then its q_r), False from an apex.
     touchdown_given: bool = False
+    #: The touchdown state of the whole stance, where ``touchdown`` is a half's bottom start state
+    #: (None: ``touchdown`` is the touchdown state); the plot draws the reference's stance from it.
+    stance_touchdown: tuple[float, float, float, float] | None = None
 
     @property
     def ok(self) -> bool:
@@ -272,7 +275,16 @@ def _compare_half(
         )
         for label, unit, key in _HALF_ROWS
     )
-    return Comparison(params, tuple(start), mine, ref, rows, half=half, touchdown_given=touchdown_given)
+    return Comparison(
+        params,
+        tuple(start),
+        mine,
+        ref,
+        rows,
+        half=half,
+        touchdown_given=touchdown_given,
+        stance_touchdown=None if half.start == "touchdown" else tuple(td),
+    )
 
 
 def _fmt(x: float, spec: str) -> str:
@@ -321,8 +333,35 @@ def format_table(c: Comparison) -> str:
     return "\n".join(lines)
 
 
+def _mark_states(axes, t, states, events, label: str, color: str) -> None:
+    """The states a map computes at its events only (no trajectory between them): a marker at each
+    event on the q_r and q_th axes, named beside it, and no line joining them (a line would draw a
+    path the map never computed)."""
+    t, states = np.asarray(t, dtype=float), np.asarray(states, dtype=float)
+    ok = np.all(np.isfinite(states), axis=1)
+    last = t[ok].max(initial=-np.inf)
+    for ax, j in ((axes[0], 0), (axes[1], 2)):
+        ax.plot(
+            t[ok], states[ok, j], ls="none", marker="o", ms=8, mfc="none", mew=2, color=color, label=label
+        )
+        for ti, yi, name in zip(t[ok], states[ok, j], np.asarray(events)[ok], strict=True):
+            right = ti == last and ti > 0.0  # the last event's name to its left, inside the axes
+            ax.annotate(
+                name,
+                (ti, yi),
+                xytext=(-8 if right else 8, 8),
+                textcoords="offset points",
+                ha="right" if right else "left",
+                fontsize=8,
+                color=color,
+            )
+        ax.margins(y=0.12)
+
+
 def plot(c: Comparison, path: str) -> str:
-    """Write a PNG of q_r(t) and q_th(t) of both stances and return its path."""
+    """Write a PNG of q_r(t) and q_th(t) of both stances and return its path. A map without a
+    trajectory (``iterative``, ``iterative-report``, the half-stance maps) shows only the event
+    states it computes, as markers labelled "event states only (no trajectory)"."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -336,23 +375,22 @@ def plot(c: Comparison, path: str) -> str:
             t0 = 0.0 if c.half.start == "touchdown" else c.against.stance.t_bottom
             t = np.array([t0, t0 + c.map.stance["t_half"]])
             states = np.array([c.touchdown, c.map.stance["end"]])
-            label = f"{c.map.map} ({c.half.title})"
-            for ax, j in ((axes[0], 0), (axes[1], 2)):
-                ax.plot(t, states[:, j], "o:", color="C1", ms=7, label=label)
+            label = f"{c.map.map}: {c.half.start} and {c.half.end} states only (no trajectory)"
+            _mark_states(axes, t, states, (c.half.start, c.half.end), label, "C1")
+    td = c.touchdown if c.stance_touchdown is None else c.stance_touchdown
     for side, style in sides:
         if not side.stance.ok:
             continue
         info = index.get(side.map)
-        label = f"{side.map} ({info.title})"
-        if info.generated and info.kernels["state_at"] is None:
-            # a map with event states only: touchdown, bottom and liftoff, marked
+        if not info.has_trajectory:
             st = side.stance
             t = np.array([0.0, st.t_bottom, st.t_stance])
-            states = np.array([c.touchdown, st.bottom, st.liftoff])
-            style = {**style, "marker": "o", "ls": ":"}
-            label += ", event states only"
-        else:
-            t, states, _ = trajectory(side.map, c.params, c.touchdown, **side.options)
+            states = np.array([td, st.bottom, st.liftoff])
+            label = f"{side.map}: event states only (no trajectory)"
+            _mark_states(axes, t, states, ("touchdown", "bottom", "liftoff"), label, style["color"])
+            continue
+        label = f"{side.map} ({info.title})"
+        t, states, _ = trajectory(side.map, c.params, td, **side.options)
         if t.size:
             ok = np.all(np.isfinite(states), axis=1)
             axes[0].plot(t[ok], states[ok, 0], label=label, **style)
@@ -368,7 +406,7 @@ def plot(c: Comparison, path: str) -> str:
     axes[0].set_title(
         f"SLIP stance: m={p.m:g} kg, l0={p.l0:g} m, "
         + (f"k={p.k_c:g} N/m" if p.constant_stiffness else f"k_c={p.k_c:g}, k_d={p.k_d:g} N/m")
-        + f", q_th_td={c.touchdown[2]:.3f} rad"
+        + f", q_th_td={td[2]:.3f} rad"
     )
     fig.tight_layout()
     fig.savefig(path, dpi=110)

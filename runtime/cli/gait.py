@@ -6,19 +6,30 @@ By default the human runner at apex height 1 m and apex speeds 3-7 m/s, the exac
 ``--angle``: the apex heights on the energy level that a fixed touchdown angle returns to
 (Seyfarth et al.'s setting). ``--json`` prints the fixed points as JSON; ``--figure PATH`` also
 draws the self-stable region (angle of attack against speed) of the maps listed (default: those
-of docs/stability.png; the exact one takes about 25 minutes with the ``solve_ivp`` simulator).
-Registered in :mod:`.cli` by :func:`add_parser`.
+of docs/stability.png; the exact one takes about 25 minutes with the ``solve_ivp`` simulator); its
+path is checked before any work.
+
+The table labels its two stability numbers apart (:data:`~.gait.DEFINITIONS`): ``lambda 1-D``, the
+eigenvalue of the one-dimensional apex-height map on the energy level, and ``multipliers 2x2``, the
+eigenvalues of the 2x2 apex-return Jacobian, (1, lambda) only for a step that conserves the energy
+(a note names each map whose points are not). A search whose every step fails prints its status
+and message in the row (and in ``--json``), and the command exits 1. Registered in :mod:`.cli` by
+:func:`add_parser`.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import textwrap
 
 __all__ = ["add_parser", "run"]
 
 DEFAULT_HEIGHT = 1.0
 DEFAULT_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0)
+#: A map's points get a note under the table when their energy_gradient_error exceeds this: their
+#: multipliers are then visibly not (1, lambda) (the exact map's is below 1e-9).
+ENERGY_NOTE = 1e-6
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -32,7 +43,14 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "eigenvalue on the energy level (self-stable when |eigenvalue| < 1) and the Floquet multipliers, "
         "by the exact map and every --map. Default: the human runner at apex height 1 m, apex speeds 3-7 "
         "m/s, the touchdown angle unknown. With --energy or --energy-speed and --angle: the apex heights "
-        "unknown. Angles in rad from the vertical (angle of attack from the ground: 90 deg - angle).",
+        "unknown. Angles in rad from the vertical (angle of attack from the ground: 90 deg - angle). "
+        "lambda (the eigenvalue) is of the one-dimensional apex-height return map on the energy level; "
+        "the multipliers are the eigenvalues of the 2x2 apex-return Jacobian, (1, lambda) only for a "
+        "step that conserves the flight energy.",
+        epilog="exit status: 0 every search ran (found fixed points or not); 1 a search failed because "
+        "the map's steps failed on the whole line (e.g. NOT_CONVERGED: its status and message are "
+        "printed in the row, in --json as status and message); 2 a user error (one line on standard "
+        "error).",
     )
     _add_params(p)
     p.add_argument("--map", action="append", default=None, help="a map beside the exact one (repeatable)")
@@ -88,14 +106,20 @@ def _label(line: dict) -> str:
 
 
 def _format(rows: list[tuple[dict, str, tuple]]) -> str:
+    """The table, then what its two stability columns are (:data:`~.gait.DEFINITIONS`) and a note
+    for each map whose multipliers are not (1, lambda) at its points."""
+    from ..analysis.gait import DEFINITIONS
+
     head = (
         f"{'line':<30} {'map':<16} {'q_th_td [rad]':>14} {'alpha0 [deg]':>12} {'h [m]':>10} {'v [m/s]':>9} "
-        f"{'eigenvalue':>11} {'stable':>6}  {'multipliers':<24} status"
+        f"{'lambda 1-D':>11} {'stable':>6}  {'multipliers 2x2':<24} status"
     )
     out = [head, "-" * len(head)]
+    drift: dict[str, float] = {}
     for line, name, points in rows:
         if not points:
-            out.append(f"{_label(line):<30} {name:<16} {'no fixed point':>14}")
+            text = "no fixed point" if points.ok else f"no fixed point: {points.message}"
+            out.append(f"{_label(line):<30} {name:<16} {text}")
         for p in points:
             mult = ", ".join(f"{z.real:.6g}" + (f"{z.imag:+.3g}j" if z.imag else "") for z in p.multipliers)
             out.append(
@@ -103,15 +127,27 @@ def _format(rows: list[tuple[dict, str, tuple]]) -> str:
                 f"{p.apex_height:10.6f} {p.apex_speed:9.5f} {p.eigenvalue:11.6f} "
                 f"{'yes' if p.stable else 'no':>6}  {mult:<24} {p.status.name}"
             )
+            if p.ok and p.energy_gradient_error > ENERGY_NOTE:
+                drift[name] = max(drift.get(name, 0.0), p.energy_gradient_error)
+    width = len(head)
+    out.append("")
+    for key, label in (("eigenvalue", "lambda 1-D"), ("multipliers", "multipliers 2x2")):
+        out.append(textwrap.fill(f"{label}: {DEFINITIONS[key]}", width, subsequent_indent="  "))
+    for name, worst in drift.items():
+        note = (
+            f"note: {name}'s step does not conserve the flight energy (dE'/d(h, v) differs from dE/d(h, v) "
+            f"by up to {worst:.2g} relative), so its multipliers are not (1, lambda)"
+        )
+        out.append(textwrap.fill(note, width, subsequent_indent="  "))
     return "\n".join(out)
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..analysis.gait import fixed_points
+    from ..analysis.gait import DEFINITIONS, fixed_points
     from ..api.index import get
     from ..api.params import HUMAN_RUNNER
     from ..studies.stability import EXACT, REGION_MAPS, region_record
-    from .app import _options, _params
+    from .app import _options, _params, image_path
 
     params = _params(args)
     extra = [get(n).name for n in (args.map or [])]
@@ -121,6 +157,8 @@ def run(args: argparse.Namespace) -> int:
     options = {n: _options(n, args.option) if n in extra else {} for n in names}
     if args.figure and params != HUMAN_RUNNER:
         raise ValueError("--figure draws the human runner's region: give no parameter options with it")
+    if args.figure:
+        image_path("--figure", args.figure, example="stability")  # before any work
     lines = _lines(args, params)
     show = False if args.no_progress else None
     rows = [
@@ -137,9 +175,8 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         data = {
             "params": params.as_dict(),
-            "lines": [
-                {"given": line, "map": n, "fixed_points": [p.as_dict() for p in pts]} for line, n, pts in rows
-            ],
+            "definitions": dict(DEFINITIONS),
+            "lines": [{"given": line, "map": n, **pts.as_dict()} for line, n, pts in rows],
             "figure": figure,
         }
         print(json.dumps(data, indent=2))
@@ -147,4 +184,4 @@ def run(args: argparse.Namespace) -> int:
         print(_format(rows))
         if figure:
             print(f"\nwrote {figure}")
-    return 0
+    return 0 if all(pts.ok for _, _, pts in rows) else 1

@@ -1,8 +1,12 @@
 """``slipmaps sweep``: the command line of :mod:`.sweep` (registered by ``cli.py``).
 
 A TOML file (``examples/sweep.toml``) and/or flags; a flag replaces the file's value, ``--axis`` and
-``--fixed`` the file's entry of that quantity. Errors are one line and exit 2 (``cli.app``); an
-interrupted sweep (Ctrl-C) keeps its chunks, says so and exits 130.
+``--fixed`` the file's entry of that quantity. A quantity given twice on the command line (two
+``--axis``, or ``--axis`` and ``--fixed`` of it) contradicts itself and is refused, as the file
+(an axis listed twice, a quantity both in ``[fixed]`` and ``[axes]``) and :class:`~.sweep_spec.Sweep`
+refuse it. The output directory is checked (:mod:`.paths`) before any chunk runs. Errors are one
+line and exit 2 (``cli.main``); an interrupted sweep (Ctrl-C) keeps its chunks, says so and exits
+130.
 """
 
 from __future__ import annotations
@@ -12,6 +16,7 @@ import json
 import sys
 import textwrap
 
+from ..api.paths import writable_dir
 from ..sweep.axes import CHUNK_ROWS_EXACT, CHUNK_ROWS_GENERATED, KINDS, quantities
 
 __all__ = ["add_parser", "run"]
@@ -82,12 +87,20 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _pairs(flag: str, items: list[str] | None) -> dict[str, str]:
+    """``NAME=VALUE`` strings of a repeatable flag, by name; a name given twice is refused (two
+    values for one quantity contradict each other)."""
     out = {}
     for item in items or ():
         key, sep, value = item.partition("=")
         if not sep or not key.strip():
             raise ValueError(f"{flag} takes NAME=VALUE, got {item!r}")
-        out[key.strip()] = value.strip()
+        name = key.strip()
+        if name in out:
+            raise ValueError(
+                f"{flag} {name} given twice ({name}={out[name]} and {name}={value.strip()}): "
+                "give each quantity once"
+            )
+        out[name] = value.strip()
     return out
 
 
@@ -100,16 +113,23 @@ def _float(flag: str, name: str, text: str) -> float:
 
 def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
     """(the definition's keys, the run settings) from the TOML file and the flags."""
-    from ..sweep.run import RUN_KEYS
-    from ..sweep.spec import read_toml
+    from ..sweep.run import split_keys
+    from ..sweep.spec import axes_by_name, read_toml
 
     data = dict(read_toml(args.config)) if args.config else {}
-    axes = dict(data.get("axes", {}))
+    split_keys(data, args.config or "sweep")  # an unknown key of the file, listing every known one
+    axes = dict(axes_by_name(data.get("axes", {})))
     fixed = dict(data.get("fixed", {}))
-    for name, spec in _pairs("--axis", args.axis).items():
+    flag_axes, flag_fixed = _pairs("--axis", args.axis), _pairs("--fixed", args.fixed)
+    both = [name for name in flag_axes if name in flag_fixed]
+    if both:
+        raise ValueError(
+            f"{', '.join(both)}: given both --axis and --fixed; a quantity is either swept or fixed"
+        )
+    for name, spec in flag_axes.items():
         fixed.pop(name, None)
         axes[name] = spec
-    for name, text in _pairs("--fixed", args.fixed).items():
+    for name, text in flag_fixed.items():
         axes.pop(name, None)
         fixed[name] = _float("--fixed", name, text)
     data.update(axes=axes, fixed=fixed)
@@ -124,8 +144,7 @@ def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
         if "map" not in data:
             raise ValueError("--option needs --map (or map in the TOML file)")
         data["options"] = {**data.get("options", {}), **_options(data["map"], args.option)}
-    run = {k: data.pop(k) for k in RUN_KEYS if k in data}
-    return data, run
+    return split_keys(data, args.config or "sweep")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -136,6 +155,7 @@ def run(args: argparse.Namespace) -> int:
     definition = Sweep.from_dict(data)
     if "out" not in settings:
         raise ValueError("give an output directory: --out DIR (or out in the TOML file)")
+    writable_dir("--out" if args.out is not None else f"out (in {args.config})", settings["out"])
     try:
         summary = sweep(
             definition,

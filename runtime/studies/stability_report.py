@@ -24,6 +24,17 @@ TABLE_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
 #: (Fig. 4), the return map of alpha0 = 68 deg at the energy of 5 m/s at 1 m (Fig. 6).
 JEB_NO_STABLE_SPEED = 3.0
 JEB_EXAMPLE = (5.0, 68.0)
+#: The figure's title: what it reproduces is the self-stable region of Seyfarth, Geyer, Guenther and
+#: Blickhan 2002 (the README and docs/stability.md cite the same paper); the two marks come from the
+#: captions of the 2003 follow-up (:data:`JEB_NO_STABLE_SPEED`, :data:`JEB_EXAMPLE`), named as such.
+REGION_TITLE = (
+    'Self-stable region of the SLIP as in Seyfarth et al. 2002 ("A movement criterion for running", '
+    "J Biomech): human runner (80 kg, 1 m, 20 kN/m); grey: unstable only, white: none"
+)
+REGION_MARKS = (
+    "red dotted: 3 m/s, red star: 68 deg at 5 m/s (reference points from the figure captions of Seyfarth "
+    'et al. 2003, "Swing-leg retraction", J Exp Biol)'
+)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -449,11 +460,7 @@ def figure(record: dict, path: str | Path) -> Path:
     for ax in list(axes.flat)[len(names) :]:
         ax.set_visible(False)
     fig.colorbar(im, ax=axes, label="smallest abs(eigenvalue) of a self-stable fixed point")
-    fig.suptitle(
-        "Self-stable region of the human runner (80 kg, 1 m, 20 kN/m); grey: unstable only, white: none; "
-        "red dotted: 3 m/s, red star: 68 deg at 5 m/s (Seyfarth et al. 2003 captions)",
-        fontsize=9,
-    )
+    fig.suptitle(f"{REGION_TITLE}\n{REGION_MARKS}", fontsize=9)
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return Path(path)

@@ -34,6 +34,7 @@ from ..api.validate import leg_angle, non_negative, positive, real
 __all__ = [
     "Quantity",
     "Axis",
+    "AXIS_KEYS",
     "KINDS",
     "RATIO",
     "CHUNK_ROWS_GENERATED",
@@ -115,6 +116,10 @@ def _number(where: str, value: object) -> float:
     return real(where, value)
 
 
+#: The keys of an axis given as a mapping: a range (low, high, num, scale) or a list of values.
+AXIS_KEYS = ("low", "high", "num", "scale", "values")
+
+
 @dataclass(frozen=True)
 class Axis:
     """One swept quantity: ``values`` (a list), or a range ``low``..``high`` with ``num`` grid points
@@ -138,10 +143,11 @@ class Axis:
         if isinstance(spec, str):
             return cls.of(name, _parse_text(where, spec))
         if isinstance(spec, Mapping):
-            unknown = set(spec) - {"low", "high", "num", "scale", "values"}
+            unknown = set(spec) - set(AXIS_KEYS)
             if unknown:
                 raise ValueError(
-                    f"{where}: unknown key(s) {', '.join(sorted(unknown))} (low, high, num, scale)"
+                    f"{where}: unknown key(s) {', '.join(sorted(unknown))}; the keys are "
+                    f"{', '.join(AXIS_KEYS)}"
                 )
             if "values" in spec:
                 if set(spec) != {"values"}:
@@ -186,13 +192,33 @@ class Axis:
             return min(self.values), max(self.values)
         return self.low, self.high
 
-    def grid_values(self) -> np.ndarray:
-        if self.values is not None:
-            return np.asarray(self.values, dtype=float)
-        if self.num is None:
+    def check_grid(self) -> None:
+        """ValueError for a range without ``num`` (usable only in a random sweep)."""
+        if self.values is None and self.num is None:
             raise ValueError(f"axis {self.name!r}: a grid needs num (the number of points on low..high)")
-        space = np.geomspace if self.scale == "log" else np.linspace
-        return space(self.low, self.high, self.num)
+
+    def grid_values(self) -> np.ndarray:
+        """Every grid value (``num`` of them: for small axes; a sweep takes :meth:`grid_at`)."""
+        self.check_grid()
+        return self.grid_at(np.arange(self.grid_size, dtype=np.int64))
+
+    def grid_at(self, index: np.ndarray) -> np.ndarray:
+        """The grid values at the point indices ``index`` (0 .. grid_size - 1), computed from the
+        indices alone (never the whole axis: ``num`` may be 10^11) and bit for bit
+        ``numpy.linspace(low, high, num)[index]`` (``numpy.geomspace`` on a log scale)."""
+        self.check_grid()
+        index = np.asarray(index, dtype=np.int64)
+        if self.values is not None:
+            return np.asarray(self.values, dtype=float)[index]
+        if self.scale == "log":
+            log_low, log_high = np.log10(np.float64(self.low)), np.log10(np.float64(self.high))
+            y = np.power(10.0, _linspace_at(log_low, log_high, self.num, index))
+            y[index == 0] = self.low
+        else:
+            y = _linspace_at(self.low, self.high, self.num, index)
+        if self.num > 1:
+            y[index == self.num - 1] = self.high
+        return y
 
     def draw(self, u: np.ndarray) -> np.ndarray:
         """Values for uniform doubles ``u`` in [0, 1): uniform (log-uniform) on the range, or uniform
@@ -221,6 +247,20 @@ class Axis:
         if self.scale != "linear":
             d["scale"] = self.scale
         return d
+
+
+def _linspace_at(low: float, high: float, num: int, index: np.ndarray) -> np.ndarray:
+    """``numpy.linspace(low, high, num)[index]`` by numpy's own arithmetic (index * step + low; the
+    last point is ``high``, which the caller sets), without the other points."""
+    i = index.astype(np.float64)
+    delta = np.float64(high) - np.float64(low)
+    div = num - 1
+    if div > 0:
+        step = delta / div
+        y = i / div * delta if step == 0 else i * step  # numpy's branch for a denormal step
+    else:
+        y = i * delta
+    return y + np.float64(low)
 
 
 def _parse_text(where: str, text: str) -> dict:
@@ -255,7 +295,7 @@ def grid_points(axes: Sequence[Axis], start: int, stop: int) -> dict[str, np.nda
         return {}
     shape = tuple(a.grid_size for a in axes)
     multi = np.unravel_index(idx, shape)
-    return {a.name: a.grid_values()[m] for a, m in zip(axes, multi, strict=True)}
+    return {a.name: a.grid_at(m) for a, m in zip(axes, multi, strict=True)}
 
 
 def random_points(axes: Sequence[Axis], seed: int, start: int, stop: int) -> dict[str, np.ndarray]:

@@ -28,6 +28,7 @@ resumes it: the chunks already written are kept, the others computed.
 
 from __future__ import annotations
 
+import itertools
 import time
 from collections import Counter
 from collections.abc import Callable, Mapping
@@ -39,7 +40,17 @@ from .schedulers import check_scheduler, run_chunks
 from .spec import DEFINITION_KEYS, Sweep, read_toml
 from .store import Store, iter_sweep, read_sweep
 
-__all__ = ["Sweep", "SweepSummary", "sweep", "load", "read_sweep", "iter_sweep", "RUN_KEYS"]
+__all__ = [
+    "Sweep",
+    "SweepSummary",
+    "sweep",
+    "load",
+    "split_keys",
+    "read_sweep",
+    "iter_sweep",
+    "RUN_KEYS",
+    "KEYS",
+]
 
 #: The keys of a sweep TOML file that say how to run it, not what it is.
 RUN_KEYS = ("out", "format", "scheduler", "combine")
@@ -106,17 +117,31 @@ class SweepSummary:
         return "\n".join(lines)
 
 
+#: Every top-level key of a sweep TOML file (or mapping): the definition's, then how to run it.
+KEYS = (*DEFINITION_KEYS, *RUN_KEYS)
+
+
+def split_keys(data: Mapping[str, object], where: str = "sweep") -> tuple[dict, dict]:
+    """A sweep file's (or mapping's) top-level keys -> (the definition's keys, the run settings of
+    :data:`RUN_KEYS`); ValueError naming ``where`` and listing every accepted key (:data:`KEYS`)
+    for a key that is neither."""
+    unknown = set(data) - set(KEYS)
+    if unknown:
+        raise ValueError(
+            f"{where}: unknown key(s) {', '.join(sorted(unknown))}; the keys are {', '.join(KEYS)}"
+        )
+    definition = dict(data)
+    run = {k: definition.pop(k) for k in RUN_KEYS if k in definition}
+    return definition, run
+
+
 def load(path: str | Path, overrides: Mapping[str, object] | None = None) -> tuple[Sweep, dict]:
     """A sweep TOML file -> (the sweep, its run settings :data:`RUN_KEYS`); ``overrides`` replace
     top-level keys of the file (the command line's flags)."""
     data = dict(read_toml(path))
     data.update(overrides or {})
-    unknown = set(data) - set(DEFINITION_KEYS) - set(RUN_KEYS)
-    if unknown:
-        keys = ", ".join((*DEFINITION_KEYS, *RUN_KEYS))
-        raise ValueError(f"{path}: unknown key(s) {', '.join(sorted(unknown))}; the keys are {keys}")
-    run = {k: data.pop(k) for k in RUN_KEYS if k in data}
-    return Sweep.from_dict(data), run
+    definition, run = split_keys(data, str(path))
+    return Sweep.from_dict(definition), run
 
 
 def sweep(
@@ -144,7 +169,8 @@ def sweep(
     if isinstance(definition, (str, Path)):
         definition, run = load(definition)
     elif isinstance(definition, Mapping):
-        definition = Sweep.from_dict(definition)
+        data, run = split_keys(definition)
+        definition = Sweep.from_dict(data)
     elif not isinstance(definition, Sweep):
         raise TypeError(
             f"definition must be a Sweep, a mapping or a TOML path, got {type(definition).__name__}"
@@ -163,9 +189,9 @@ def sweep(
     t0 = time.perf_counter()
     store = Store(out, definition, fmt)
     done = store.done()
-    todo = [i for i in range(definition.chunks) if i not in done]
+    todo = (i for i in range(definition.chunks) if i not in done)  # lazily: 10^11 rows are 10^6 chunks
     if max_chunks is not None:
-        todo = todo[: int(max_chunks)]
+        todo = itertools.islice(todo, int(max_chunks))
     counts = Counter()
     for rec in done.values():
         counts.update(rec["counts"])

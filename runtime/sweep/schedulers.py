@@ -19,7 +19,7 @@ that fails is resubmitted up to :data:`ATTEMPTS` times in all before the sweep s
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
@@ -83,7 +83,7 @@ def check_scheduler(scheduler) -> object:
 
 
 def run_chunks(
-    sweep: Sweep, fmt: str, digest: str, indices: Sequence[int], scheduler=None
+    sweep: Sweep, fmt: str, digest: str, indices: Iterable[int], scheduler=None
 ) -> Iterator[ChunkFile]:
     """The chunks ``indices`` of ``sweep``, computed where ``scheduler`` says, as they complete."""
     scheduler = check_scheduler(scheduler)
@@ -124,7 +124,7 @@ def _client(scheduler):
 
 
 def _on_dask(
-    client, threads, sweep: Sweep, fmt: str, digest: str, indices: Sequence[int]
+    client, threads, sweep: Sweep, fmt: str, digest: str, indices: Iterable[int]
 ) -> Iterator[ChunkFile]:
     from distributed import as_completed
 

@@ -44,7 +44,7 @@ from .axes import (
     random_points,
 )
 
-__all__ = ["Sweep", "MODES", "DEFINITION_KEYS", "read_toml"]
+__all__ = ["Sweep", "MODES", "DEFINITION_KEYS", "axes_by_name", "read_toml"]
 
 MODES = ("grid", "random")
 #: The keys of a sweep definition (TOML / JSON).
@@ -108,14 +108,15 @@ def _check_names(kind: str, known: Mapping[str, Quantity], axes: Mapping, fixed:
     for name in (*axes, *fixed):
         if name not in known:
             raise ValueError(
-                f"unknown sweep quantity {name!r}; a {kind} sweep varies or fixes: {', '.join(known)}"
+                f"unknown sweep quantity {name!r}; a sweep of kind {kind!r} varies or fixes: "
+                + ", ".join(known)
             )
     both = set(axes) & set(fixed)
     if both:
         raise ValueError(f"{', '.join(sorted(both))}: both fixed and swept; choose one")
     missing = [q.name for q in KINDS[kind] if q.name not in axes and q.name not in fixed and not q.optional]
     if missing:
-        raise ValueError(f"a {kind} sweep needs {', '.join(missing)}: fix it or give it an axis")
+        raise ValueError(f"a sweep of kind {kind!r} needs {', '.join(missing)}: fix it or give it an axis")
 
 
 def _check_params(info: MapInfo, constants: dict[str, float], axes: list[Axis]) -> None:
@@ -197,7 +198,7 @@ class Sweep:
                     "samples is for a random sweep (mode = 'random'); a grid has one row per point"
                 )
             for a in parsed:
-                a.grid_values()  # ValueError for a range without num
+                a.check_grid()  # ValueError for a range without num (nothing allocated)
         else:
             samples = _whole("a random sweep's samples", samples, 1)
         seed = _whole("seed", seed, 0)
@@ -235,10 +236,7 @@ class Sweep:
         if "map" not in d:
             raise ValueError("a sweep needs map (a name of `slipmaps maps`)")
         kw = {k: d[k] for k in ("kind", "mode", "samples", "seed", "chunk_rows", "options") if k in d}
-        axes = d.get("axes", {})
-        if isinstance(axes, list):  # the canonical form (as_dict): [{"name": ..., <axis>}, ...]
-            axes = {a["name"]: {k: v for k, v in a.items() if k != "name"} for a in axes}
-        return cls(d["map"], axes, d.get("fixed", {}), **kw)
+        return cls(d["map"], axes_by_name(d.get("axes", {})), d.get("fixed", {}), **kw)
 
     def as_dict(self) -> dict:
         """The canonical definition (what the hash covers): everything that decides the rows."""
@@ -320,6 +318,22 @@ class Sweep:
         out["status"] = {"unit": "", "doc": "status code (slipmaps.Status), 0 = OK"}
         out["status_name"] = {"unit": "", "doc": "status name (slipmaps.Status)"}
         return out
+
+
+def axes_by_name(axes: object) -> object:
+    """A definition's ``axes`` by quantity name: a mapping as it is, the canonical list form of
+    :meth:`Sweep.as_dict` (``[{"name": ..., <axis>}, ...]``) as a dict; a name listed twice is a
+    ValueError (two axes of one quantity contradict each other)."""
+    if not isinstance(axes, list):
+        return axes
+    out = {}
+    for a in axes:
+        if not isinstance(a, Mapping) or "name" not in a:
+            raise ValueError(f"axes as a list: each entry needs a name, got {a!r}")
+        if a["name"] in out:
+            raise ValueError(f"axis {a['name']!r} given twice in axes; give each quantity once")
+        out[a["name"]] = {k: v for k, v in a.items() if k != "name"}
+    return out
 
 
 def read_toml(path: str | Path) -> dict:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.paths import writable_dir
 from .files import check_format, combine, csv_header, read
 from .spec import Sweep
 
@@ -52,10 +53,11 @@ class Store:
         self.digest = sweep.digest(fmt)
         self.width = max(5, len(str(sweep.chunks - 1)))
         manifest = self.out / MANIFEST
+        writable_dir("out", self.out)  # ValueError (one line) when it cannot be written
         if manifest.exists():
             self._check(json.loads(manifest.read_text(encoding="utf-8")))
         else:
-            if self.out.exists() and (not self.out.is_dir() or any(self.out.iterdir())):
+            if any(self.out.iterdir()):
                 raise ValueError(
                     f"{self.out} exists and holds no sweep ({MANIFEST} missing): "
                     "give a new or empty directory"
@@ -103,11 +105,19 @@ class Store:
     def done(self) -> dict[int, dict]:
         """The chunks already written: index -> {"rows": n, "counts": {status name: rows}}."""
         out = {}
-        for i in range(self.sweep.chunks):
-            data = self.path(i)
-            if data.exists():
-                out[i] = json.loads(data.with_suffix(".json").read_text(encoding="utf-8"))
-        return out
+        with os.scandir(self.chunk_dir) as entries:  # the files written, not every chunk's name
+            names = [e.name for e in entries]
+        for name in names:
+            number = name.removeprefix("part-").removesuffix(f".{self.fmt}")
+            if (
+                not number.isdigit()
+                or int(number) >= self.sweep.chunks
+                or name != self.path(int(number)).name
+            ):
+                continue
+            i = int(number)
+            out[i] = json.loads(self.path(i).with_suffix(".json").read_text(encoding="utf-8"))
+        return dict(sorted(out.items()))
 
     def write(self, index: int, payload: bytes, rows: int, counts: dict[str, int]) -> dict:
         """Chunk ``index`` (its file content): the counts first, then the data, each renamed in place."""
