@@ -825,8 +825,8 @@ def test_messages_read_as_english(argv, needle, nothing_runs, capsys):
 def test_a_toml_files_unknown_key_lists_every_accepted_key(tmp_path, nothing_runs, capsys):
     """The message named only the definition's keys; out, format, scheduler and combine (in the
     README) were missing. It lists slipmaps.runtime.sweep.run.KEYS, the keys split_keys accepts."""
-    from slipmaps.runtime.sweep.run import KEYS, load
     from slipmaps.runtime.sweep import axes as sweep_axes
+    from slipmaps.runtime.sweep.run import KEYS, load
 
     path = tmp_path / "s.toml"
     path.write_text('map = "geyer"\noutput = "o"\n')
