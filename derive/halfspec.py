@@ -108,7 +108,11 @@ class HalfSpec:
 
     def args(self) -> tuple[Arg, ...]:
         state = start_args(self.start)
-        return state + tuple(catalog.PARAMS[p] for p in self.params) + tuple(o.arg() for o in self.options)
+        return (
+            state
+            + tuple(catalog.PARAMS[p] for p in self.params)
+            + tuple(o.arg() for o in self.options if o.kernel)
+        )
 
     def kernel(self) -> Kernel:
         if "kernel" not in self._cache:
@@ -153,7 +157,6 @@ class HalfSpec:
             "options": [o.index_row() for o in self.options],
             "module": self.ident,
             "summary": self.summary,
-            "kernels": {"half": kernel.name},
-            "args": list(kernel.arg_names),
-            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],
+            "kernels": {"half": kernel.signature()},
+            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
         }

@@ -44,10 +44,17 @@ class Option:
     #: Choices that assume touchdown at the rest length (q_r_td = l0): with another touchdown leg
     #: length the kernels return INVALID_INPUT.
     at_rest_length: tuple[str, ...] = ()
+    #: Choices that run the map by another implementation than its generated kernels: (choice, the
+    #: Python module whose ``BACKEND`` runs it), e.g. the exact map's ``method="scipy"`` (solve_ivp).
+    #: Such an option selects the implementation and is not a kernel argument.
+    backends: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
         if self.choices and self.default not in self.values:
             raise ValueError(f"option {self.name}: default {self.default!r} is not one of {self.values}")
+        unknown = {c for c, _ in self.backends} - set(self.values)
+        if unknown:
+            raise ValueError(f"option {self.name}: backends name unknown choices {sorted(unknown)}")
         unknown = set(self.at_rest_length) - set(self.values)
         if unknown:
             raise ValueError(f"option {self.name}: at_rest_length names unknown choices {sorted(unknown)}")
@@ -55,6 +62,12 @@ class Option:
     @property
     def symbol(self) -> sp.Symbol:
         return sym(self.name)
+
+    @property
+    def kernel(self) -> bool:
+        """Whether the kernels take this option as an argument (an option choosing the
+        implementation, :attr:`backends`, is not one)."""
+        return not self.backends
 
     @property
     def kind(self) -> str:
@@ -111,6 +124,8 @@ class Option:
             "low": self.low,
             "high": self.high,
             "at_rest_length": list(self.at_rest_length),
+            "kernel": self.kernel,
+            "backends": dict(self.backends),
         }
 
     def domain_guard(self) -> Guard | None:
@@ -213,7 +228,7 @@ class MapSpec:
         return tuple(catalog.PARAMS[p] for p in self.params)
 
     def option_args(self) -> tuple[Arg, ...]:
-        return tuple(o.arg() for o in self.options)
+        return tuple(o.arg() for o in self.options if o.kernel)
 
     def stance_args(self) -> tuple[Arg, ...]:
         return catalog.TOUCHDOWN + self.param_args() + (catalog.PARAMS["q_r_lo"],) + self.option_args()
@@ -267,7 +282,7 @@ class MapSpec:
         args = {
             **{a.name: x for a, x in zip(catalog.TOUCHDOWN, touchdown, strict=True)},
             **{p: params[p] for p in self.params + ("q_r_lo",)},
-            **{o.name: sp.Float(o.default_code) for o in self.options},
+            **{o.name: sp.Float(o.default_code) for o in self.options if o.kernel},
         }
         return Call(self.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
@@ -287,6 +302,9 @@ class MapSpec:
         )
 
     def apex_return_kernel(self, flight_kernels: Mapping[str, Kernel]) -> Kernel:
+        """Apex -> touchdown (exact ballistic descent onto ground ``ground`` higher) -> this map's
+        stance -> liftoff -> next apex (exact ballistic ascent), and the step's geometry. The apex
+        speed is signed: the step's direction (its sign) is the one the liftoff must keep."""
         to_td, to_apex = flight_kernels["apex_to_touchdown"], flight_kernels["liftoff_to_apex"]
         stance = self.stance_kernel()
         td = ("td_q_r", "td_q_rd", "td_q_th", "td_q_thd")
@@ -294,17 +312,25 @@ class MapSpec:
         passthrough = {a.name: a.symbol for a in stance.args if a.name not in touchdown_names}
         stance_outs = {f.name: f.name for f in catalog.APEX_RETURN.fields() if f.name in stance.output_names}
         stance_outs.update({f.name: f.name for f in self.extras})
+        h, v, ground = catalog.APEX_ARGS[0].symbol, catalog.APEX_ARGS[1].symbol, catalog.GROUND.symbol
+        direction, next_apex_x = catalog.DIRECTION.symbol, sym("next_apex_x")
         steps = (
+            Stage(((direction, sp.sign(v)),), comment="the step's direction: the sign of the apex speed"),
             Call(
                 to_td,
                 {
-                    "b_y_apex": catalog.APEX_ARGS[0].symbol,
-                    "b_xd_apex": catalog.APEX_ARGS[1].symbol,
+                    "b_y_apex": h,
+                    "b_xd_apex": v,
                     "q_th_td": catalog.TOUCHDOWN[2].symbol,
                     "q_r_td": catalog.PARAMS["q_r_td"].symbol,
                     "g_f": catalog.PARAMS["g_f"].symbol,
+                    "ground": ground,
                 },
-                {**dict(zip(to_td.output_names[:4], td, strict=True)), "t_flight": "t_descent"},
+                {
+                    **dict(zip(to_td.output_names[:4], td, strict=True)),
+                    "t_flight": "t_descent",
+                    "foot_x": "foot_x",
+                },
                 comment="apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)",
             ),
             Call(
@@ -318,9 +344,19 @@ class MapSpec:
                 {
                     **{p: sym(f"liftoff_{p}") for p in ("q_r", "q_rd", "q_th", "q_thd")},
                     "g_f": catalog.PARAMS["g_f"].symbol,
+                    "direction": direction,
                 },
-                {"apex_b_y": "apex_height", "apex_b_xd": "apex_speed", "t_flight": "t_ascent"},
+                {
+                    "apex_b_y": "apex_height",
+                    "apex_b_xd": "apex_speed",
+                    "t_flight": "t_ascent",
+                    "apex_b_x": next_apex_x.name,
+                },
                 comment="liftoff -> next apex: exact ballistic ascent",
+            ),
+            Stage(
+                ((sym("step_length"), sym("foot_x") + next_apex_x), (sym("foot_y"), ground - h)),
+                comment="the step: apex to the foot, the foot to the next apex",
             ),
         )
         return Kernel(
@@ -345,7 +381,7 @@ class MapSpec:
 
     def apex_wrt(self) -> tuple[str, ...]:
         """What the apex-return Jacobian differentiates with respect to: apex height and speed,
-        touchdown angle, the stiffness."""
+        touchdown angle, ground, the stiffness."""
         return tuple(a.name for a in catalog.APEX_ARGS) + self.stiffness()
 
     def jacobian_kernels(
@@ -388,8 +424,24 @@ class MapSpec:
         )
 
     # -- index ---------------------------------------------------------------------------------
-    def index_row(self) -> dict:
+    def index_row(self, flight_kernels: Mapping[str, Kernel]) -> dict:
+        """The map's row of the generated index: what ``slipmaps maps`` lists, and every kernel's
+        calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name."""
         stance, state_at = self.stance_kernel(), self.state_at_kernel()
+        apex = self.apex_return_kernel(flight_kernels)
+        jac_module = f"{self.ident}_jacobian"
+        kernels = {"stance": stance.signature(), "apex_return": apex.signature()}
+        if state_at is not None:
+            kernels["state_at"] = state_at.signature()
+        for role, primal, wrt in (
+            ("stance", stance, self.stance_wrt()),
+            ("apex_return", apex, self.apex_wrt()),
+        ):
+            kernels[f"{role}_jacobian"] = {
+                **primal.signature(wrt=list(wrt)),
+                "module": jac_module,
+                "name": self.kernel_name(f"{role}_jacobian"),
+            }
         return {
             "name": self.name,
             "title": self.title,
@@ -402,19 +454,6 @@ class MapSpec:
             "summary": self.summary,
             "as_printed": self.as_printed,
             "approximation_statuses": list(self.approximation_statuses),
-            "kernels": {
-                "stance": stance.name,
-                "state_at": state_at.name if state_at else None,
-                "apex_return": self.kernel_name("apex_return"),
-            },
-            "jacobian": {
-                "module": f"{self.ident}_jacobian",
-                "stance": self.kernel_name("stance_jacobian"),
-                "apex_return": self.kernel_name("apex_return_jacobian"),
-                "stance_wrt": list(self.stance_wrt()),
-                "apex_wrt": list(self.apex_wrt()),
-            },
-            "stance_args": list(stance.arg_names),
-            "apex_args": [a.name for a in self.apex_args()],
-            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in self.extras],
+            "kernels": kernels,
+            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
         }

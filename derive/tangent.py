@@ -263,6 +263,8 @@ class _Ctx:
                 self.frame.bind(local, {w: sp.S.Zero for w in self.frame.wrt})
             return [c]
         (w,) = self.frame.wrt
+        if callee.external:
+            return self.external_call(c, arg_t, active)
         jvp = self.diff.jvp(callee, active)
         args = {**c.args, **{tangent_name(a): arg_t[a][w] for a in active}}
         bind = dict(c.bind)
@@ -270,6 +272,40 @@ class _Ctx:
             bind[tangent_name(out)] = tangent_name(local, w)
             self.frame.tangents[local] = {w: sym(tangent_name(local, w))}
         return [Call(jvp, args, bind, comment=c.comment)]
+
+    def external_call(self, c: Call, arg_t: dict[str, _Tangent], active: tuple[str, ...]) -> list:
+        """A hand-written callee (``Kernel.external``): its own Jacobian kernel gives d output / d
+        argument, and each bound output's tangent is that row times the arguments' tangents."""
+        callee = c.kernel
+        if callee.jacobian is None:
+            raise ValueError(
+                f"external kernel {callee.name} has no Jacobian: cannot differentiate a call of it"
+            )
+        missing = [a for a in active if a not in callee.jacobian_wrt]
+        if missing:
+            raise ValueError(
+                f"external kernel {callee.name}: its Jacobian is with respect to "
+                f"{list(callee.jacobian_wrt)}, "
+                f"not {missing}"
+            )
+        (w,) = self.frame.wrt
+        bind = dict(c.bind)
+        tangents = []
+        for out, local in c.bind.items():
+            total = sp.S.Zero
+            for a in active:
+                entry = sym(f"dext_{local}__{a}")
+                bind[tangent_name(out, a)] = entry.name
+                total += entry * arg_t[a][w]
+            tangents.append((sym(tangent_name(local, w)), total))
+            self.frame.tangents[local] = {w: sym(tangent_name(local, w))}
+        return [
+            Call(callee.jacobian, dict(c.args), bind, comment=c.comment),
+            Stage(
+                tuple(tangents),
+                comment=f"tangents of {callee.name}'s outputs: its Jacobian times the direction",
+            ),
+        ]
 
     def iterate(self, it: Iterate) -> Iterate:
         outer = self.frame.copy()

@@ -20,6 +20,7 @@ Modules:
     geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels.
     iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels.
+    exact: Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return kernels.
     flight_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map its stance and apex-return Jacobians.
     geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map its stance and apex-return Jacobians.
     gravity_type0_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians.
@@ -31,6 +32,7 @@ Modules:
     geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians.
+    exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
     iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.
     iterative_decompression: Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff.

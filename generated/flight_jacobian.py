@@ -32,8 +32,8 @@ STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan).
+def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan):
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan).
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
@@ -41,14 +41,16 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s]
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed [m/s], signed
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         q_r_td: touchdown leg length [m], > 0
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
         b_y_apex__tan: direction: its component along b_y_apex
         b_xd_apex__tan: direction: its component along b_xd_apex
         q_th_td__tan: direction: its component along q_th_td
+        ground__tan: direction: its component along ground
 
     Returns a tuple:
         touchdown_q_r: leg length [m]
@@ -56,22 +58,24 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
         touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
         touchdown_q_thd: leg angle rate [rad/s]
         t_flight: time from the apex to touchdown [s]
+        foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         touchdown_q_r__tan: derivative of touchdown_q_r along the direction
         touchdown_q_rd__tan: derivative of touchdown_q_rd along the direction
         touchdown_q_th__tan: derivative of touchdown_q_th along the direction
         touchdown_q_thd__tan: derivative of touchdown_q_thd along the direction
         t_flight__tan: derivative of t_flight along the direction
+        foot_x__tan: derivative of foot_x along the direction
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 48
+    # Total ops: 59
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    drop = b_y_apex - q_r_td*math.cos(q_th_td)
-    drop__tan = b_y_apex__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
+    drop__tan = b_y_apex__tan - ground__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
     # touchdown state from the derived Cartesian -> polar map
     _x0 = math.sin(q_th_td)
     _x1 = math.cos(q_th_td)
@@ -85,6 +89,8 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     _x9 = _x0*_x2*_x3*_x4 - _x1*b_xd_apex
     _x10 = (1.0/q_r_td)
     _x11 = (1.0/_x2)
+    _x12 = _x11*_x5
+    _x13 = _x11*_x7
     touchdown_q_r = q_r_td
     touchdown_q_rd = -_x6
     touchdown_q_rd__tan = -_x0*b_xd_apex__tan - _x1*_x8 + _x9*q_th_td__tan
@@ -92,16 +98,18 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     touchdown_q_th__tan = q_th_td__tan
     touchdown_q_thd = _x10*_x9
     touchdown_q_thd__tan = _x0*_x10*_x8 - _x1*_x10*b_xd_apex__tan + _x10*_x6*q_th_td__tan
-    t_flight = _x11*_x5
-    t_flight__tan = _x11*_x7
+    t_flight = _x12
+    t_flight__tan = _x13
+    foot_x = _x0*q_r_td + _x12*b_xd_apex
+    foot_x__tan = _x1*q_r_td*q_th_td__tan + _x12*b_xd_apex__tan + _x13*b_xd_apex
     # derivatives that are identically zero
     touchdown_q_r__tan = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, STATUS_OK)
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, foot_x__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__tan, q_rd__tan, q_th__tan, q_thd__tan):
+def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, q_r__tan, q_rd__tan, q_th__tan, q_thd__tan):
     """Ballistic ascent from a polar liftoff state to the next apex, with the derivative of every output along the direction (q_r__tan, q_rd__tan, q_th__tan, q_thd__tan).
 
     Report equations: sec2.1-apex, sec2.2.2.
@@ -114,7 +122,8 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
         q_r__tan: direction: its component along q_r
         q_rd__tan: direction: its component along q_rd
         q_th__tan: direction: its component along q_th
@@ -125,16 +134,18 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
         apex_b_xd: next apex horizontal speed [m/s]
         t_flight: time from liftoff to the apex [s]
         dx_flight: horizontal distance travelled from liftoff to the apex [m]
+        apex_b_x: horizontal position of the next apex relative to the toe [m]
         apex_b_y__tan: derivative of apex_b_y along the direction
         apex_b_xd__tan: derivative of apex_b_xd along the direction
         t_flight__tan: derivative of t_flight along the direction
         dx_flight__tan: derivative of dx_flight along the direction
+        apex_b_x__tan: derivative of apex_b_x along the direction
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 48
+    # Total ops: 50
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and ((q_r > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(direction) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and ((q_r > 0.0)) and ((g_f > 0.0)) and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -153,21 +164,25 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     b_yd__tan = -_x1*q_thd__tan - _x2*q_thd + _x3*q_rd__tan + _x5*q_th__tan
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
-    # the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait
-    if not ((b_xd >= -1e-09*math.sqrt(g_f*q_r))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+    # the body must not move against the step's direction (a hop in place: either way)
+    if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
     # apex where b_yd(t) = 0
     _x7 = (1.0/g_f)
     _x8 = _x7*b_yd
     _x9 = _x7*b_yd__tan
+    _x10 = _x8*b_xd
+    _x11 = _x8*b_xd__tan + _x9*b_xd
     apex_b_y = (0.5)*_x7*b_yd**2 + b_y
     apex_b_y__tan = _x8*b_yd__tan + b_y__tan
     apex_b_xd = b_xd
     apex_b_xd__tan = b_xd__tan
     t_flight = _x8
     t_flight__tan = _x9
-    dx_flight = _x8*b_xd
-    dx_flight__tan = _x8*b_xd__tan + _x9*b_xd
+    dx_flight = _x10
+    dx_flight__tan = _x11
+    apex_b_x = _x10 + b_x
+    apex_b_x__tan = _x11 + b_x__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, STATUS_OK)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, apex_b_x__tan, STATUS_OK)

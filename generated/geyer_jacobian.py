@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:ac871132277105be
+#   flight_jacobian.py sha256:93735a9cd1eada3e
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
+from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
 
 NAN = math.nan
 STATUS_OK = 0
@@ -47,10 +47,10 @@ def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_td__tan: direction: its component along q_r_td
         q_rd_td__tan: direction: its component along q_rd_td
         q_thd_td__tan: direction: its component along q_thd_td
@@ -156,7 +156,7 @@ def geyer_liftoff_phase_jvp_a_b(a, b, l0, q_r_lo, a__tan, b__tan):
     Arguments:
         a: offset a of (11)
         b: amplitude b of (11)
-        l0: rest leg length l0 [m]
+        l0: rest leg length l0 [m], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         a__tan: direction: its component along a
         b__tan: direction: its component along b
@@ -198,10 +198,10 @@ def geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td,
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         q_r_td__tan: direction: its component along q_r_td
         q_rd_td__tan: direction: its component along q_rd_td
@@ -348,10 +348,10 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
     Returns a tuple:
@@ -582,8 +582,8 @@ def geyer_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k__tan):
-    """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map, with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k__tan).
+def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan):
+    """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map, with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan).
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
@@ -591,24 +591,26 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         b_y_apex__tan: direction: its component along b_y_apex
         b_xd_apex__tan: direction: its component along b_xd_apex
         q_th_td__tan: direction: its component along q_th_td
+        ground__tan: direction: its component along ground
         k__tan: direction: its component along k
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -616,6 +618,9 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         apex_height__tan: derivative of apex_height along the direction
         apex_speed__tan: derivative of apex_speed along the direction
         t_descent__tan: derivative of t_descent along the direction
@@ -625,30 +630,37 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
         liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
         liftoff_q_th__tan: derivative of liftoff_q_th along the direction
         liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
+        step_length__tan: derivative of step_length along the direction
+        foot_x__tan: derivative of foot_x along the direction
+        foot_y__tan: derivative of foot_y along the direction
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 5
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
-    if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
+    if _c0[12] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+    foot_x = _c0[5]
+    td_q_r__tan = _c0[6]
+    td_q_rd__tan = _c0[7]
+    td_q_th__tan = _c0[8]
+    td_q_thd__tan = _c0[9]
+    t_descent__tan = _c0[10]
+    foot_x__tan = _c0[11]
     # stance: Geyer et al.'s approximate stance map
     _c1 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k__tan)
     if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -660,21 +672,28 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th
     liftoff_q_th__tan = _c1[18]
     liftoff_q_thd__tan = _c1[19]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
+    if _c2[10] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
-    apex_height__tan = _c2[4]
-    apex_speed__tan = _c2[5]
-    t_ascent__tan = _c2[6]
+    next_apex_x = _c2[4]
+    apex_height__tan = _c2[5]
+    apex_speed__tan = _c2[6]
+    t_ascent__tan = _c2[7]
+    next_apex_x__tan = _c2[9]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    step_length__tan = foot_x__tan + next_apex_x__tan
+    foot_y = -b_y_apex + ground
+    foot_y__tan = -b_y_apex__tan + ground__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
+def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
     """Apex-return map by Geyer et al.'s approximate stance map, and its derivatives with respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
@@ -683,20 +702,21 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f,
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -704,61 +724,91 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f,
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         d_apex_height__b_y_apex: d apex_height / d b_y_apex
         d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
         d_apex_height__q_th_td: d apex_height / d q_th_td
+        d_apex_height__ground: d apex_height / d ground
         d_apex_height__k: d apex_height / d k
         d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
         d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
         d_apex_speed__q_th_td: d apex_speed / d q_th_td
+        d_apex_speed__ground: d apex_speed / d ground
         d_apex_speed__k: d apex_speed / d k
         d_t_descent__b_y_apex: d t_descent / d b_y_apex
         d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
         d_t_descent__q_th_td: d t_descent / d q_th_td
+        d_t_descent__ground: d t_descent / d ground
         d_t_descent__k: d t_descent / d k
         d_t_stance__b_y_apex: d t_stance / d b_y_apex
         d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
         d_t_stance__q_th_td: d t_stance / d q_th_td
+        d_t_stance__ground: d t_stance / d ground
         d_t_stance__k: d t_stance / d k
         d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
         d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
         d_t_ascent__q_th_td: d t_ascent / d q_th_td
+        d_t_ascent__ground: d t_ascent / d ground
         d_t_ascent__k: d t_ascent / d k
         d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
         d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
         d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
+        d_liftoff_q_r__ground: d liftoff_q_r / d ground
         d_liftoff_q_r__k: d liftoff_q_r / d k
         d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
         d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
         d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
+        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
         d_liftoff_q_rd__k: d liftoff_q_rd / d k
         d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
         d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
         d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
+        d_liftoff_q_th__ground: d liftoff_q_th / d ground
         d_liftoff_q_th__k: d liftoff_q_th / d k
         d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
         d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
         d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
+        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
         d_liftoff_q_thd__k: d liftoff_q_thd / d k
+        d_step_length__b_y_apex: d step_length / d b_y_apex
+        d_step_length__b_xd_apex: d step_length / d b_xd_apex
+        d_step_length__q_th_td: d step_length / d q_th_td
+        d_step_length__ground: d step_length / d ground
+        d_step_length__k: d step_length / d k
+        d_foot_x__b_y_apex: d foot_x / d b_y_apex
+        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
+        d_foot_x__q_th_td: d foot_x / d q_th_td
+        d_foot_x__ground: d foot_x / d ground
+        d_foot_x__k: d foot_x / d k
+        d_foot_y__b_y_apex: d foot_y / d b_y_apex
+        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
+        d_foot_y__q_th_td: d foot_y / d q_th_td
+        d_foot_y__ground: d foot_y / d ground
+        d_foot_y__k: d foot_y / d k
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # derivatives with respect to b_y_apex
-    _c0 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 1.0, 0.0, 0.0, 0.0)
-    if _c0[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[18])
-    d_apex_height__b_y_apex = _c0[9]
-    d_apex_speed__b_y_apex = _c0[10]
-    d_t_descent__b_y_apex = _c0[11]
-    d_t_stance__b_y_apex = _c0[12]
-    d_t_ascent__b_y_apex = _c0[13]
-    d_liftoff_q_r__b_y_apex = _c0[14]
-    d_liftoff_q_rd__b_y_apex = _c0[15]
-    d_liftoff_q_th__b_y_apex = _c0[16]
-    d_liftoff_q_thd__b_y_apex = _c0[17]
+    _c0 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 1.0, 0.0, 0.0, 0.0, 0.0)
+    if _c0[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
+    d_apex_height__b_y_apex = _c0[12]
+    d_apex_speed__b_y_apex = _c0[13]
+    d_t_descent__b_y_apex = _c0[14]
+    d_t_stance__b_y_apex = _c0[15]
+    d_t_ascent__b_y_apex = _c0[16]
+    d_liftoff_q_r__b_y_apex = _c0[17]
+    d_liftoff_q_rd__b_y_apex = _c0[18]
+    d_liftoff_q_th__b_y_apex = _c0[19]
+    d_liftoff_q_thd__b_y_apex = _c0[20]
+    d_step_length__b_y_apex = _c0[21]
+    d_foot_x__b_y_apex = _c0[22]
+    d_foot_y__b_y_apex = _c0[23]
     apex_height = _c0[0]
     apex_speed = _c0[1]
     t_descent = _c0[2]
@@ -768,62 +818,90 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f,
     liftoff_q_rd = _c0[6]
     liftoff_q_th = _c0[7]
     liftoff_q_thd = _c0[8]
+    step_length = _c0[9]
+    foot_x = _c0[10]
+    foot_y = _c0[11]
     # derivatives with respect to b_xd_apex
-    _c1 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 0.0)
-    if _c1[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[18])
-    d_apex_height__b_xd_apex = _c1[9]
-    d_apex_speed__b_xd_apex = _c1[10]
-    d_t_descent__b_xd_apex = _c1[11]
-    d_t_stance__b_xd_apex = _c1[12]
-    d_t_ascent__b_xd_apex = _c1[13]
-    d_liftoff_q_r__b_xd_apex = _c1[14]
-    d_liftoff_q_rd__b_xd_apex = _c1[15]
-    d_liftoff_q_th__b_xd_apex = _c1[16]
-    d_liftoff_q_thd__b_xd_apex = _c1[17]
+    _c1 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 0.0, 0.0)
+    if _c1[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
+    d_apex_height__b_xd_apex = _c1[12]
+    d_apex_speed__b_xd_apex = _c1[13]
+    d_t_descent__b_xd_apex = _c1[14]
+    d_t_stance__b_xd_apex = _c1[15]
+    d_t_ascent__b_xd_apex = _c1[16]
+    d_liftoff_q_r__b_xd_apex = _c1[17]
+    d_liftoff_q_rd__b_xd_apex = _c1[18]
+    d_liftoff_q_th__b_xd_apex = _c1[19]
+    d_liftoff_q_thd__b_xd_apex = _c1[20]
+    d_step_length__b_xd_apex = _c1[21]
+    d_foot_x__b_xd_apex = _c1[22]
+    d_foot_y__b_xd_apex = _c1[23]
     # derivatives with respect to q_th_td
-    _c2 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 1.0, 0.0)
-    if _c2[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[18])
-    d_apex_height__q_th_td = _c2[9]
-    d_apex_speed__q_th_td = _c2[10]
-    d_t_descent__q_th_td = _c2[11]
-    d_t_stance__q_th_td = _c2[12]
-    d_t_ascent__q_th_td = _c2[13]
-    d_liftoff_q_r__q_th_td = _c2[14]
-    d_liftoff_q_rd__q_th_td = _c2[15]
-    d_liftoff_q_th__q_th_td = _c2[16]
-    d_liftoff_q_thd__q_th_td = _c2[17]
+    _c2 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 1.0, 0.0, 0.0)
+    if _c2[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
+    d_apex_height__q_th_td = _c2[12]
+    d_apex_speed__q_th_td = _c2[13]
+    d_t_descent__q_th_td = _c2[14]
+    d_t_stance__q_th_td = _c2[15]
+    d_t_ascent__q_th_td = _c2[16]
+    d_liftoff_q_r__q_th_td = _c2[17]
+    d_liftoff_q_rd__q_th_td = _c2[18]
+    d_liftoff_q_th__q_th_td = _c2[19]
+    d_liftoff_q_thd__q_th_td = _c2[20]
+    d_step_length__q_th_td = _c2[21]
+    d_foot_x__q_th_td = _c2[22]
+    d_foot_y__q_th_td = _c2[23]
+    # derivatives with respect to ground
+    _c3 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 0.0, 1.0, 0.0)
+    if _c3[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
+    d_apex_height__ground = _c3[12]
+    d_apex_speed__ground = _c3[13]
+    d_t_descent__ground = _c3[14]
+    d_t_stance__ground = _c3[15]
+    d_t_ascent__ground = _c3[16]
+    d_liftoff_q_r__ground = _c3[17]
+    d_liftoff_q_rd__ground = _c3[18]
+    d_liftoff_q_th__ground = _c3[19]
+    d_liftoff_q_thd__ground = _c3[20]
+    d_step_length__ground = _c3[21]
+    d_foot_x__ground = _c3[22]
+    d_foot_y__ground = _c3[23]
     # derivatives with respect to k
-    _c3 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 0.0, 1.0)
-    if _c3[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[18])
-    d_apex_height__k = _c3[9]
-    d_apex_speed__k = _c3[10]
-    d_t_descent__k = _c3[11]
-    d_t_stance__k = _c3[12]
-    d_t_ascent__k = _c3[13]
-    d_liftoff_q_r__k = _c3[14]
-    d_liftoff_q_rd__k = _c3[15]
-    d_liftoff_q_th__k = _c3[16]
-    d_liftoff_q_thd__k = _c3[17]
+    _c4 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 0.0, 0.0, 1.0)
+    if _c4[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
+    d_apex_height__k = _c4[12]
+    d_apex_speed__k = _c4[13]
+    d_t_descent__k = _c4[14]
+    d_t_stance__k = _c4[15]
+    d_t_ascent__k = _c4[16]
+    d_liftoff_q_r__k = _c4[17]
+    d_liftoff_q_rd__k = _c4[18]
+    d_liftoff_q_th__k = _c4[19]
+    d_liftoff_q_thd__k = _c4[20]
+    d_step_length__k = _c4[21]
+    d_foot_x__k = _c4[22]
+    d_foot_y__k = _c4[23]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
+def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
     """Parallel batch form of :func:`geyer_apex_return_jacobian`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 45)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k.
     """
     for i in prange(out.shape[0]):
-        res = geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo)
+        res = geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -869,4 +947,31 @@ def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s
         out[i, 42] = res[42]
         out[i, 43] = res[43]
         out[i, 44] = res[44]
-        status[i] = res[45]
+        out[i, 45] = res[45]
+        out[i, 46] = res[46]
+        out[i, 47] = res[47]
+        out[i, 48] = res[48]
+        out[i, 49] = res[49]
+        out[i, 50] = res[50]
+        out[i, 51] = res[51]
+        out[i, 52] = res[52]
+        out[i, 53] = res[53]
+        out[i, 54] = res[54]
+        out[i, 55] = res[55]
+        out[i, 56] = res[56]
+        out[i, 57] = res[57]
+        out[i, 58] = res[58]
+        out[i, 59] = res[59]
+        out[i, 60] = res[60]
+        out[i, 61] = res[61]
+        out[i, 62] = res[62]
+        out[i, 63] = res[63]
+        out[i, 64] = res[64]
+        out[i, 65] = res[65]
+        out[i, 66] = res[66]
+        out[i, 67] = res[67]
+        out[i, 68] = res[68]
+        out[i, 69] = res[69]
+        out[i, 70] = res[70]
+        out[i, 71] = res[71]
+        status[i] = res[72]

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:ac871132277105be
-#   geyer_jacobian.py sha256:12a6675a37ce361d
+#   flight_jacobian.py sha256:93735a9cd1eada3e
+#   geyer_jacobian.py sha256:2cc3bc7df9c66782
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
+from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
 from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b, geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k
 
 NAN = math.nan
@@ -1003,11 +1003,11 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
         gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
@@ -1217,10 +1217,10 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
     Arguments:
         p: angular momentum p_th [kg m^2/s]
         E_ab: total energy E_ab [J]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         p__tan: direction: its component along p
         E_ab__tan: direction: its component along E_ab
         k_c__tan: direction: its component along k_c
@@ -1363,11 +1363,11 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
         gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
@@ -1699,8 +1699,8 @@ def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k_c__tan, k_d__tan):
-    """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k_c__tan, k_d__tan).
+def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan):
+    """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan).
 
     Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
@@ -1708,15 +1708,16 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
@@ -1726,12 +1727,13 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
         b_y_apex__tan: direction: its component along b_y_apex
         b_xd_apex__tan: direction: its component along b_xd_apex
         q_th_td__tan: direction: its component along q_th_td
+        ground__tan: direction: its component along ground
         k_c__tan: direction: its component along k_c
         k_d__tan: direction: its component along k_d
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -1739,6 +1741,9 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
@@ -1751,33 +1756,40 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
         liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
         liftoff_q_th__tan: derivative of liftoff_q_th along the direction
         liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
+        step_length__tan: derivative of step_length along the direction
+        foot_x__tan: derivative of foot_x along the direction
+        foot_y__tan: derivative of foot_y along the direction
         P_c_compression__tan: derivative of P_c_compression along the direction
         P_c_decompression__tan: derivative of P_c_decompression along the direction
         passes__tan: derivative of passes along the direction
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 5
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
-    if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
+    if _c0[12] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+    foot_x = _c0[5]
+    td_q_r__tan = _c0[6]
+    td_q_rd__tan = _c0[7]
+    td_q_th__tan = _c0[8]
+    td_q_thd__tan = _c0[9]
+    t_descent__tan = _c0[10]
+    foot_x__tan = _c0[11]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
     if _c1[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -1795,21 +1807,28 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
     P_c_decompression__tan = _c1[24]
     passes__tan = _c1[25]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
+    if _c2[10] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
-    apex_height__tan = _c2[4]
-    apex_speed__tan = _c2[5]
-    t_ascent__tan = _c2[6]
+    next_apex_x = _c2[4]
+    apex_height__tan = _c2[5]
+    apex_speed__tan = _c2[6]
+    t_ascent__tan = _c2[7]
+    next_apex_x__tan = _c2[9]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    step_length__tan = foot_x__tan + next_apex_x__tan
+    foot_y = -b_y_apex + ground
+    foot_y__tan = -b_y_apex__tan + ground__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
     """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
@@ -1818,15 +1837,16 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
@@ -1835,8 +1855,8 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -1844,91 +1864,127 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
         d_apex_height__b_y_apex: d apex_height / d b_y_apex
         d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
         d_apex_height__q_th_td: d apex_height / d q_th_td
+        d_apex_height__ground: d apex_height / d ground
         d_apex_height__k_c: d apex_height / d k_c
         d_apex_height__k_d: d apex_height / d k_d
         d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
         d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
         d_apex_speed__q_th_td: d apex_speed / d q_th_td
+        d_apex_speed__ground: d apex_speed / d ground
         d_apex_speed__k_c: d apex_speed / d k_c
         d_apex_speed__k_d: d apex_speed / d k_d
         d_t_descent__b_y_apex: d t_descent / d b_y_apex
         d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
         d_t_descent__q_th_td: d t_descent / d q_th_td
+        d_t_descent__ground: d t_descent / d ground
         d_t_descent__k_c: d t_descent / d k_c
         d_t_descent__k_d: d t_descent / d k_d
         d_t_stance__b_y_apex: d t_stance / d b_y_apex
         d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
         d_t_stance__q_th_td: d t_stance / d q_th_td
+        d_t_stance__ground: d t_stance / d ground
         d_t_stance__k_c: d t_stance / d k_c
         d_t_stance__k_d: d t_stance / d k_d
         d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
         d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
         d_t_ascent__q_th_td: d t_ascent / d q_th_td
+        d_t_ascent__ground: d t_ascent / d ground
         d_t_ascent__k_c: d t_ascent / d k_c
         d_t_ascent__k_d: d t_ascent / d k_d
         d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
         d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
         d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
+        d_liftoff_q_r__ground: d liftoff_q_r / d ground
         d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
         d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
         d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
         d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
         d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
+        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
         d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
         d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
         d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
         d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
         d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
+        d_liftoff_q_th__ground: d liftoff_q_th / d ground
         d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
         d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
         d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
         d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
         d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
+        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
         d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
         d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
+        d_step_length__b_y_apex: d step_length / d b_y_apex
+        d_step_length__b_xd_apex: d step_length / d b_xd_apex
+        d_step_length__q_th_td: d step_length / d q_th_td
+        d_step_length__ground: d step_length / d ground
+        d_step_length__k_c: d step_length / d k_c
+        d_step_length__k_d: d step_length / d k_d
+        d_foot_x__b_y_apex: d foot_x / d b_y_apex
+        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
+        d_foot_x__q_th_td: d foot_x / d q_th_td
+        d_foot_x__ground: d foot_x / d ground
+        d_foot_x__k_c: d foot_x / d k_c
+        d_foot_x__k_d: d foot_x / d k_d
+        d_foot_y__b_y_apex: d foot_y / d b_y_apex
+        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
+        d_foot_y__q_th_td: d foot_y / d q_th_td
+        d_foot_y__ground: d foot_y / d ground
+        d_foot_y__k_c: d foot_y / d k_c
+        d_foot_y__k_d: d foot_y / d k_d
         d_P_c_compression__b_y_apex: d P_c_compression / d b_y_apex
         d_P_c_compression__b_xd_apex: d P_c_compression / d b_xd_apex
         d_P_c_compression__q_th_td: d P_c_compression / d q_th_td
+        d_P_c_compression__ground: d P_c_compression / d ground
         d_P_c_compression__k_c: d P_c_compression / d k_c
         d_P_c_compression__k_d: d P_c_compression / d k_d
         d_P_c_decompression__b_y_apex: d P_c_decompression / d b_y_apex
         d_P_c_decompression__b_xd_apex: d P_c_decompression / d b_xd_apex
         d_P_c_decompression__q_th_td: d P_c_decompression / d q_th_td
+        d_P_c_decompression__ground: d P_c_decompression / d ground
         d_P_c_decompression__k_c: d P_c_decompression / d k_c
         d_P_c_decompression__k_d: d P_c_decompression / d k_d
         d_passes__b_y_apex: d passes / d b_y_apex
         d_passes__b_xd_apex: d passes / d b_xd_apex
         d_passes__q_th_td: d passes / d q_th_td
+        d_passes__ground: d passes / d ground
         d_passes__k_c: d passes / d k_c
         d_passes__k_d: d passes / d k_d
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # derivatives with respect to b_y_apex
-    _c0 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_apex_height__b_y_apex = _c0[12]
-    d_apex_speed__b_y_apex = _c0[13]
-    d_t_descent__b_y_apex = _c0[14]
-    d_t_stance__b_y_apex = _c0[15]
-    d_t_ascent__b_y_apex = _c0[16]
-    d_liftoff_q_r__b_y_apex = _c0[17]
-    d_liftoff_q_rd__b_y_apex = _c0[18]
-    d_liftoff_q_th__b_y_apex = _c0[19]
-    d_liftoff_q_thd__b_y_apex = _c0[20]
-    d_P_c_compression__b_y_apex = _c0[21]
-    d_P_c_decompression__b_y_apex = _c0[22]
-    d_passes__b_y_apex = _c0[23]
+    _c0 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if _c0[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[30])
+    d_apex_height__b_y_apex = _c0[15]
+    d_apex_speed__b_y_apex = _c0[16]
+    d_t_descent__b_y_apex = _c0[17]
+    d_t_stance__b_y_apex = _c0[18]
+    d_t_ascent__b_y_apex = _c0[19]
+    d_liftoff_q_r__b_y_apex = _c0[20]
+    d_liftoff_q_rd__b_y_apex = _c0[21]
+    d_liftoff_q_th__b_y_apex = _c0[22]
+    d_liftoff_q_thd__b_y_apex = _c0[23]
+    d_step_length__b_y_apex = _c0[24]
+    d_foot_x__b_y_apex = _c0[25]
+    d_foot_y__b_y_apex = _c0[26]
+    d_P_c_compression__b_y_apex = _c0[27]
+    d_P_c_decompression__b_y_apex = _c0[28]
+    d_passes__b_y_apex = _c0[29]
     apex_height = _c0[0]
     apex_speed = _c0[1]
     t_descent = _c0[2]
@@ -1938,90 +1994,124 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
     liftoff_q_rd = _c0[6]
     liftoff_q_th = _c0[7]
     liftoff_q_thd = _c0[8]
-    P_c_compression = _c0[9]
-    P_c_decompression = _c0[10]
-    passes = _c0[11]
+    step_length = _c0[9]
+    foot_x = _c0[10]
+    foot_y = _c0[11]
+    P_c_compression = _c0[12]
+    P_c_decompression = _c0[13]
+    passes = _c0[14]
     # derivatives with respect to b_xd_apex
-    _c1 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_apex_height__b_xd_apex = _c1[12]
-    d_apex_speed__b_xd_apex = _c1[13]
-    d_t_descent__b_xd_apex = _c1[14]
-    d_t_stance__b_xd_apex = _c1[15]
-    d_t_ascent__b_xd_apex = _c1[16]
-    d_liftoff_q_r__b_xd_apex = _c1[17]
-    d_liftoff_q_rd__b_xd_apex = _c1[18]
-    d_liftoff_q_th__b_xd_apex = _c1[19]
-    d_liftoff_q_thd__b_xd_apex = _c1[20]
-    d_P_c_compression__b_xd_apex = _c1[21]
-    d_P_c_decompression__b_xd_apex = _c1[22]
-    d_passes__b_xd_apex = _c1[23]
+    _c1 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+    if _c1[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[30])
+    d_apex_height__b_xd_apex = _c1[15]
+    d_apex_speed__b_xd_apex = _c1[16]
+    d_t_descent__b_xd_apex = _c1[17]
+    d_t_stance__b_xd_apex = _c1[18]
+    d_t_ascent__b_xd_apex = _c1[19]
+    d_liftoff_q_r__b_xd_apex = _c1[20]
+    d_liftoff_q_rd__b_xd_apex = _c1[21]
+    d_liftoff_q_th__b_xd_apex = _c1[22]
+    d_liftoff_q_thd__b_xd_apex = _c1[23]
+    d_step_length__b_xd_apex = _c1[24]
+    d_foot_x__b_xd_apex = _c1[25]
+    d_foot_y__b_xd_apex = _c1[26]
+    d_P_c_compression__b_xd_apex = _c1[27]
+    d_P_c_decompression__b_xd_apex = _c1[28]
+    d_passes__b_xd_apex = _c1[29]
     # derivatives with respect to q_th_td
-    _c2 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_apex_height__q_th_td = _c2[12]
-    d_apex_speed__q_th_td = _c2[13]
-    d_t_descent__q_th_td = _c2[14]
-    d_t_stance__q_th_td = _c2[15]
-    d_t_ascent__q_th_td = _c2[16]
-    d_liftoff_q_r__q_th_td = _c2[17]
-    d_liftoff_q_rd__q_th_td = _c2[18]
-    d_liftoff_q_th__q_th_td = _c2[19]
-    d_liftoff_q_thd__q_th_td = _c2[20]
-    d_P_c_compression__q_th_td = _c2[21]
-    d_P_c_decompression__q_th_td = _c2[22]
-    d_passes__q_th_td = _c2[23]
+    _c2 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    if _c2[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[30])
+    d_apex_height__q_th_td = _c2[15]
+    d_apex_speed__q_th_td = _c2[16]
+    d_t_descent__q_th_td = _c2[17]
+    d_t_stance__q_th_td = _c2[18]
+    d_t_ascent__q_th_td = _c2[19]
+    d_liftoff_q_r__q_th_td = _c2[20]
+    d_liftoff_q_rd__q_th_td = _c2[21]
+    d_liftoff_q_th__q_th_td = _c2[22]
+    d_liftoff_q_thd__q_th_td = _c2[23]
+    d_step_length__q_th_td = _c2[24]
+    d_foot_x__q_th_td = _c2[25]
+    d_foot_y__q_th_td = _c2[26]
+    d_P_c_compression__q_th_td = _c2[27]
+    d_P_c_decompression__q_th_td = _c2[28]
+    d_passes__q_th_td = _c2[29]
+    # derivatives with respect to ground
+    _c3 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+    if _c3[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[30])
+    d_apex_height__ground = _c3[15]
+    d_apex_speed__ground = _c3[16]
+    d_t_descent__ground = _c3[17]
+    d_t_stance__ground = _c3[18]
+    d_t_ascent__ground = _c3[19]
+    d_liftoff_q_r__ground = _c3[20]
+    d_liftoff_q_rd__ground = _c3[21]
+    d_liftoff_q_th__ground = _c3[22]
+    d_liftoff_q_thd__ground = _c3[23]
+    d_step_length__ground = _c3[24]
+    d_foot_x__ground = _c3[25]
+    d_foot_y__ground = _c3[26]
+    d_P_c_compression__ground = _c3[27]
+    d_P_c_decompression__ground = _c3[28]
+    d_passes__ground = _c3[29]
     # derivatives with respect to k_c
-    _c3 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_apex_height__k_c = _c3[12]
-    d_apex_speed__k_c = _c3[13]
-    d_t_descent__k_c = _c3[14]
-    d_t_stance__k_c = _c3[15]
-    d_t_ascent__k_c = _c3[16]
-    d_liftoff_q_r__k_c = _c3[17]
-    d_liftoff_q_rd__k_c = _c3[18]
-    d_liftoff_q_th__k_c = _c3[19]
-    d_liftoff_q_thd__k_c = _c3[20]
-    d_P_c_compression__k_c = _c3[21]
-    d_P_c_decompression__k_c = _c3[22]
-    d_passes__k_c = _c3[23]
+    _c4 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
+    if _c4[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[30])
+    d_apex_height__k_c = _c4[15]
+    d_apex_speed__k_c = _c4[16]
+    d_t_descent__k_c = _c4[17]
+    d_t_stance__k_c = _c4[18]
+    d_t_ascent__k_c = _c4[19]
+    d_liftoff_q_r__k_c = _c4[20]
+    d_liftoff_q_rd__k_c = _c4[21]
+    d_liftoff_q_th__k_c = _c4[22]
+    d_liftoff_q_thd__k_c = _c4[23]
+    d_step_length__k_c = _c4[24]
+    d_foot_x__k_c = _c4[25]
+    d_foot_y__k_c = _c4[26]
+    d_P_c_compression__k_c = _c4[27]
+    d_P_c_decompression__k_c = _c4[28]
+    d_passes__k_c = _c4[29]
     # derivatives with respect to k_d
-    _c4 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_apex_height__k_d = _c4[12]
-    d_apex_speed__k_d = _c4[13]
-    d_t_descent__k_d = _c4[14]
-    d_t_stance__k_d = _c4[15]
-    d_t_ascent__k_d = _c4[16]
-    d_liftoff_q_r__k_d = _c4[17]
-    d_liftoff_q_rd__k_d = _c4[18]
-    d_liftoff_q_th__k_d = _c4[19]
-    d_liftoff_q_thd__k_d = _c4[20]
-    d_P_c_compression__k_d = _c4[21]
-    d_P_c_decompression__k_d = _c4[22]
-    d_passes__k_d = _c4[23]
+    _c5 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+    if _c5[30] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[30])
+    d_apex_height__k_d = _c5[15]
+    d_apex_speed__k_d = _c5[16]
+    d_t_descent__k_d = _c5[17]
+    d_t_stance__k_d = _c5[18]
+    d_t_ascent__k_d = _c5[19]
+    d_liftoff_q_r__k_d = _c5[20]
+    d_liftoff_q_rd__k_d = _c5[21]
+    d_liftoff_q_th__k_d = _c5[22]
+    d_liftoff_q_thd__k_d = _c5[23]
+    d_step_length__k_d = _c5[24]
+    d_foot_x__k_d = _c5[25]
+    d_foot_y__k_d = _c5[26]
+    d_P_c_compression__k_d = _c5[27]
+    d_P_c_decompression__k_d = _c5[28]
+    d_passes__k_d = _c5[29]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_P_c_compression__b_y_apex) and math.isfinite(d_P_c_compression__b_xd_apex) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__b_y_apex) and math.isfinite(d_P_c_decompression__b_xd_apex) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k_c) and math.isfinite(d_step_length__k_d) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k_c) and math.isfinite(d_foot_x__k_d) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k_c) and math.isfinite(d_foot_y__k_d) and math.isfinite(d_P_c_compression__b_y_apex) and math.isfinite(d_P_c_compression__b_xd_apex) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__ground) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__b_y_apex) and math.isfinite(d_P_c_decompression__b_xd_apex) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__ground) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__ground) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_apex_return_jacobian`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 105)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
+        res = geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -2094,4 +2184,37 @@ def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c
         out[i, 69] = res[69]
         out[i, 70] = res[70]
         out[i, 71] = res[71]
-        status[i] = res[72]
+        out[i, 72] = res[72]
+        out[i, 73] = res[73]
+        out[i, 74] = res[74]
+        out[i, 75] = res[75]
+        out[i, 76] = res[76]
+        out[i, 77] = res[77]
+        out[i, 78] = res[78]
+        out[i, 79] = res[79]
+        out[i, 80] = res[80]
+        out[i, 81] = res[81]
+        out[i, 82] = res[82]
+        out[i, 83] = res[83]
+        out[i, 84] = res[84]
+        out[i, 85] = res[85]
+        out[i, 86] = res[86]
+        out[i, 87] = res[87]
+        out[i, 88] = res[88]
+        out[i, 89] = res[89]
+        out[i, 90] = res[90]
+        out[i, 91] = res[91]
+        out[i, 92] = res[92]
+        out[i, 93] = res[93]
+        out[i, 94] = res[94]
+        out[i, 95] = res[95]
+        out[i, 96] = res[96]
+        out[i, 97] = res[97]
+        out[i, 98] = res[98]
+        out[i, 99] = res[99]
+        out[i, 100] = res[100]
+        out[i, 101] = res[101]
+        out[i, 102] = res[102]
+        out[i, 103] = res[103]
+        out[i, 104] = res[104]
+        status[i] = res[105]

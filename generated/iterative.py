@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:c042f0c9cf6a9745
-#   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
-#   gravity_type0.py sha256:9ad1b5e5d037404f
-#   gravity_type1.py sha256:8df85c0847f1fb50
-#   gravity_type2.py sha256:089ac77e92240f9a
-#   gravity_type3.py sha256:e58a1a317b1fc866
-#   gravity_type4.py sha256:6bb6498e457c9b35
-#   gravity_type5.py sha256:70d4f36f9336d294
+#   flight.py sha256:4d6fab274bba303b
+#   geyer.py sha256:26ff4a0183dca42d
+#   geyer_vs.py sha256:a9f15f8604543316
+#   gravity_type0.py sha256:04bbbc0de76e2706
+#   gravity_type1.py sha256:37299c1835198fd6
+#   gravity_type2.py sha256:ba6e5874bb098cda
+#   gravity_type3.py sha256:a1deffa577d0b912
+#   gravity_type4.py sha256:ea56cd04d2860d7d
+#   gravity_type5.py sha256:e95d34e96defb7c2
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels."""
 
@@ -61,10 +61,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         q_rd: touchdown state: leg length rate [m/s]
         q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         guess_q_r: zeroth iterate's bottom q_r
         guess_q_th: zeroth iterate's bottom q_th
         guess_q_thd: zeroth iterate's bottom q_thd
@@ -1013,10 +1013,10 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         q_rd: bottom state: leg length rate [m/s]
         q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         guess_q_th: zeroth iterate's liftoff q_th
         guess_q_thd: zeroth iterate's liftoff q_thd
@@ -1964,11 +1964,11 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
@@ -2152,21 +2152,22 @@ def iterative_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, 
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth):
+def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging form).
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
@@ -2175,8 +2176,8 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
         zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -2184,26 +2185,32 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         passes: Picard passes run (the larger of the two halves) [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
-    if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
+    foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _c1 = iterative_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth)
     if _c1[11] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[11])
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[11])
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -2211,29 +2218,33 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
-    if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(passes)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, out, status):
+def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, out, status):
     """Parallel batch form of :func:`iterative_apex_return`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
     """
     for i in prange(out.shape[0]):
-        res = iterative_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth)
+        res = iterative_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -2244,4 +2255,7 @@ def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g
         out[i, 7] = res[7]
         out[i, 8] = res[8]
         out[i, 9] = res[9]
-        status[i] = res[10]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]

@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
-#   gravity_type0.py sha256:9ad1b5e5d037404f
-#   gravity_type1.py sha256:8df85c0847f1fb50
-#   gravity_type2.py sha256:089ac77e92240f9a
-#   gravity_type3.py sha256:e58a1a317b1fc866
-#   gravity_type4.py sha256:6bb6498e457c9b35
-#   gravity_type5.py sha256:70d4f36f9336d294
-#   iterative.py sha256:f9c260a6e0845ad9
+#   geyer.py sha256:26ff4a0183dca42d
+#   geyer_vs.py sha256:a9f15f8604543316
+#   gravity_type0.py sha256:04bbbc0de76e2706
+#   gravity_type1.py sha256:37299c1835198fd6
+#   gravity_type2.py sha256:ba6e5874bb098cda
+#   gravity_type3.py sha256:a1deffa577d0b912
+#   gravity_type4.py sha256:ea56cd04d2860d7d
+#   gravity_type5.py sha256:e95d34e96defb7c2
+#   iterative.py sha256:f9f2103394a85ab5
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 
@@ -61,10 +61,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]

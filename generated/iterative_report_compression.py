@@ -5,14 +5,14 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
-#   gravity_type0.py sha256:9ad1b5e5d037404f
-#   gravity_type1.py sha256:8df85c0847f1fb50
-#   gravity_type2.py sha256:089ac77e92240f9a
-#   gravity_type3.py sha256:e58a1a317b1fc866
-#   gravity_type4.py sha256:6bb6498e457c9b35
-#   gravity_type5.py sha256:70d4f36f9336d294
+#   geyer.py sha256:26ff4a0183dca42d
+#   geyer_vs.py sha256:a9f15f8604543316
+#   gravity_type0.py sha256:04bbbc0de76e2706
+#   gravity_type1.py sha256:37299c1835198fd6
+#   gravity_type2.py sha256:ba6e5874bb098cda
+#   gravity_type3.py sha256:a1deffa577d0b912
+#   gravity_type4.py sha256:ea56cd04d2860d7d
+#   gravity_type5.py sha256:e95d34e96defb7c2
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom."""
 
@@ -59,10 +59,10 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
         zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs

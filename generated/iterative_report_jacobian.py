@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:ac871132277105be
-#   geyer_jacobian.py sha256:12a6675a37ce361d
-#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
-#   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
-#   gravity_type1_jacobian.py sha256:1184a15c09105242
-#   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d
-#   gravity_type3_jacobian.py sha256:11c0e268b35a560d
-#   gravity_type4_jacobian.py sha256:fb1af4380e878b21
-#   gravity_type5_jacobian.py sha256:7fb2d2401838095d
+#   flight_jacobian.py sha256:93735a9cd1eada3e
+#   geyer_jacobian.py sha256:2cc3bc7df9c66782
+#   geyer_vs_jacobian.py sha256:341d8a6698f0710d
+#   gravity_type0_jacobian.py sha256:82882201e605f9fc
+#   gravity_type1_jacobian.py sha256:3202f1b84c0ddf87
+#   gravity_type2_jacobian.py sha256:38cdb9055d649f09
+#   gravity_type3_jacobian.py sha256:d59af6c680c78d17
+#   gravity_type4_jacobian.py sha256:7ea1a5e7afabc60d
+#   gravity_type5_jacobian.py sha256:91b9dbe5f11a434e
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
+from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
 from .geyer_jacobian import geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
 from .geyer_vs_jacobian import bottom_quartic_jvp_p_E_ab_k_c, geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d
 from .gravity_type0_jacobian import gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
@@ -1260,11 +1260,11 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
@@ -1637,11 +1637,11 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
@@ -1910,8 +1910,8 @@ def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k_c__tan, k_d__tan):
-    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, k_c__tan, k_d__tan).
+def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan).
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
@@ -1919,15 +1919,16 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
@@ -1937,12 +1938,13 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
         b_y_apex__tan: direction: its component along b_y_apex
         b_xd_apex__tan: direction: its component along b_xd_apex
         q_th_td__tan: direction: its component along q_th_td
+        ground__tan: direction: its component along ground
         k_c__tan: direction: its component along k_c
         k_d__tan: direction: its component along k_d
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -1950,6 +1952,9 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         apex_height__tan: derivative of apex_height along the direction
         apex_speed__tan: derivative of apex_speed along the direction
         t_descent__tan: derivative of t_descent along the direction
@@ -1959,30 +1964,37 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
         liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
         liftoff_q_th__tan: derivative of liftoff_q_th along the direction
         liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
+        step_length__tan: derivative of step_length along the direction
+        foot_x__tan: derivative of foot_x along the direction
+        foot_y__tan: derivative of foot_y along the direction
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 5
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
-    if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
+    if _c0[12] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+    foot_x = _c0[5]
+    td_q_r__tan = _c0[6]
+    td_q_rd__tan = _c0[7]
+    td_q_th__tan = _c0[8]
+    td_q_thd__tan = _c0[9]
+    t_descent__tan = _c0[10]
+    foot_x__tan = _c0[11]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
     if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -1994,21 +2006,28 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
     liftoff_q_th__tan = _c1[18]
     liftoff_q_thd__tan = _c1[19]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
+    if _c2[10] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
-    apex_height__tan = _c2[4]
-    apex_speed__tan = _c2[5]
-    t_ascent__tan = _c2[6]
+    next_apex_x = _c2[4]
+    apex_height__tan = _c2[5]
+    apex_speed__tan = _c2[6]
+    t_ascent__tan = _c2[7]
+    next_apex_x__tan = _c2[9]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    step_length__tan = foot_x__tan + next_apex_x__tan
+    foot_y = -b_y_apex + ground
+    foot_y__tan = -b_y_apex__tan + ground__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
+def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
     """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
@@ -2017,15 +2036,16 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
     an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
@@ -2034,8 +2054,8 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
         bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -2043,70 +2063,103 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         d_apex_height__b_y_apex: d apex_height / d b_y_apex
         d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
         d_apex_height__q_th_td: d apex_height / d q_th_td
+        d_apex_height__ground: d apex_height / d ground
         d_apex_height__k_c: d apex_height / d k_c
         d_apex_height__k_d: d apex_height / d k_d
         d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
         d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
         d_apex_speed__q_th_td: d apex_speed / d q_th_td
+        d_apex_speed__ground: d apex_speed / d ground
         d_apex_speed__k_c: d apex_speed / d k_c
         d_apex_speed__k_d: d apex_speed / d k_d
         d_t_descent__b_y_apex: d t_descent / d b_y_apex
         d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
         d_t_descent__q_th_td: d t_descent / d q_th_td
+        d_t_descent__ground: d t_descent / d ground
         d_t_descent__k_c: d t_descent / d k_c
         d_t_descent__k_d: d t_descent / d k_d
         d_t_stance__b_y_apex: d t_stance / d b_y_apex
         d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
         d_t_stance__q_th_td: d t_stance / d q_th_td
+        d_t_stance__ground: d t_stance / d ground
         d_t_stance__k_c: d t_stance / d k_c
         d_t_stance__k_d: d t_stance / d k_d
         d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
         d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
         d_t_ascent__q_th_td: d t_ascent / d q_th_td
+        d_t_ascent__ground: d t_ascent / d ground
         d_t_ascent__k_c: d t_ascent / d k_c
         d_t_ascent__k_d: d t_ascent / d k_d
         d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
         d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
         d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
+        d_liftoff_q_r__ground: d liftoff_q_r / d ground
         d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
         d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
         d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
         d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
         d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
+        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
         d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
         d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
         d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
         d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
         d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
+        d_liftoff_q_th__ground: d liftoff_q_th / d ground
         d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
         d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
         d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
         d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
         d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
+        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
         d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
         d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
+        d_step_length__b_y_apex: d step_length / d b_y_apex
+        d_step_length__b_xd_apex: d step_length / d b_xd_apex
+        d_step_length__q_th_td: d step_length / d q_th_td
+        d_step_length__ground: d step_length / d ground
+        d_step_length__k_c: d step_length / d k_c
+        d_step_length__k_d: d step_length / d k_d
+        d_foot_x__b_y_apex: d foot_x / d b_y_apex
+        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
+        d_foot_x__q_th_td: d foot_x / d q_th_td
+        d_foot_x__ground: d foot_x / d ground
+        d_foot_x__k_c: d foot_x / d k_c
+        d_foot_x__k_d: d foot_x / d k_d
+        d_foot_y__b_y_apex: d foot_y / d b_y_apex
+        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
+        d_foot_y__q_th_td: d foot_y / d q_th_td
+        d_foot_y__ground: d foot_y / d ground
+        d_foot_y__k_c: d foot_y / d k_c
+        d_foot_y__k_d: d foot_y / d k_d
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
     # derivatives with respect to b_y_apex
-    _c0 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[18])
-    d_apex_height__b_y_apex = _c0[9]
-    d_apex_speed__b_y_apex = _c0[10]
-    d_t_descent__b_y_apex = _c0[11]
-    d_t_stance__b_y_apex = _c0[12]
-    d_t_ascent__b_y_apex = _c0[13]
-    d_liftoff_q_r__b_y_apex = _c0[14]
-    d_liftoff_q_rd__b_y_apex = _c0[15]
-    d_liftoff_q_th__b_y_apex = _c0[16]
-    d_liftoff_q_thd__b_y_apex = _c0[17]
+    _c0 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if _c0[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
+    d_apex_height__b_y_apex = _c0[12]
+    d_apex_speed__b_y_apex = _c0[13]
+    d_t_descent__b_y_apex = _c0[14]
+    d_t_stance__b_y_apex = _c0[15]
+    d_t_ascent__b_y_apex = _c0[16]
+    d_liftoff_q_r__b_y_apex = _c0[17]
+    d_liftoff_q_rd__b_y_apex = _c0[18]
+    d_liftoff_q_th__b_y_apex = _c0[19]
+    d_liftoff_q_thd__b_y_apex = _c0[20]
+    d_step_length__b_y_apex = _c0[21]
+    d_foot_x__b_y_apex = _c0[22]
+    d_foot_y__b_y_apex = _c0[23]
     apex_height = _c0[0]
     apex_speed = _c0[1]
     t_descent = _c0[2]
@@ -2116,75 +2169,106 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
     liftoff_q_rd = _c0[6]
     liftoff_q_th = _c0[7]
     liftoff_q_thd = _c0[8]
+    step_length = _c0[9]
+    foot_x = _c0[10]
+    foot_y = _c0[11]
     # derivatives with respect to b_xd_apex
-    _c1 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[18])
-    d_apex_height__b_xd_apex = _c1[9]
-    d_apex_speed__b_xd_apex = _c1[10]
-    d_t_descent__b_xd_apex = _c1[11]
-    d_t_stance__b_xd_apex = _c1[12]
-    d_t_ascent__b_xd_apex = _c1[13]
-    d_liftoff_q_r__b_xd_apex = _c1[14]
-    d_liftoff_q_rd__b_xd_apex = _c1[15]
-    d_liftoff_q_th__b_xd_apex = _c1[16]
-    d_liftoff_q_thd__b_xd_apex = _c1[17]
+    _c1 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+    if _c1[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
+    d_apex_height__b_xd_apex = _c1[12]
+    d_apex_speed__b_xd_apex = _c1[13]
+    d_t_descent__b_xd_apex = _c1[14]
+    d_t_stance__b_xd_apex = _c1[15]
+    d_t_ascent__b_xd_apex = _c1[16]
+    d_liftoff_q_r__b_xd_apex = _c1[17]
+    d_liftoff_q_rd__b_xd_apex = _c1[18]
+    d_liftoff_q_th__b_xd_apex = _c1[19]
+    d_liftoff_q_thd__b_xd_apex = _c1[20]
+    d_step_length__b_xd_apex = _c1[21]
+    d_foot_x__b_xd_apex = _c1[22]
+    d_foot_y__b_xd_apex = _c1[23]
     # derivatives with respect to q_th_td
-    _c2 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[18])
-    d_apex_height__q_th_td = _c2[9]
-    d_apex_speed__q_th_td = _c2[10]
-    d_t_descent__q_th_td = _c2[11]
-    d_t_stance__q_th_td = _c2[12]
-    d_t_ascent__q_th_td = _c2[13]
-    d_liftoff_q_r__q_th_td = _c2[14]
-    d_liftoff_q_rd__q_th_td = _c2[15]
-    d_liftoff_q_th__q_th_td = _c2[16]
-    d_liftoff_q_thd__q_th_td = _c2[17]
+    _c2 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+    if _c2[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
+    d_apex_height__q_th_td = _c2[12]
+    d_apex_speed__q_th_td = _c2[13]
+    d_t_descent__q_th_td = _c2[14]
+    d_t_stance__q_th_td = _c2[15]
+    d_t_ascent__q_th_td = _c2[16]
+    d_liftoff_q_r__q_th_td = _c2[17]
+    d_liftoff_q_rd__q_th_td = _c2[18]
+    d_liftoff_q_th__q_th_td = _c2[19]
+    d_liftoff_q_thd__q_th_td = _c2[20]
+    d_step_length__q_th_td = _c2[21]
+    d_foot_x__q_th_td = _c2[22]
+    d_foot_y__q_th_td = _c2[23]
+    # derivatives with respect to ground
+    _c3 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+    if _c3[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
+    d_apex_height__ground = _c3[12]
+    d_apex_speed__ground = _c3[13]
+    d_t_descent__ground = _c3[14]
+    d_t_stance__ground = _c3[15]
+    d_t_ascent__ground = _c3[16]
+    d_liftoff_q_r__ground = _c3[17]
+    d_liftoff_q_rd__ground = _c3[18]
+    d_liftoff_q_th__ground = _c3[19]
+    d_liftoff_q_thd__ground = _c3[20]
+    d_step_length__ground = _c3[21]
+    d_foot_x__ground = _c3[22]
+    d_foot_y__ground = _c3[23]
     # derivatives with respect to k_c
-    _c3 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[18])
-    d_apex_height__k_c = _c3[9]
-    d_apex_speed__k_c = _c3[10]
-    d_t_descent__k_c = _c3[11]
-    d_t_stance__k_c = _c3[12]
-    d_t_ascent__k_c = _c3[13]
-    d_liftoff_q_r__k_c = _c3[14]
-    d_liftoff_q_rd__k_c = _c3[15]
-    d_liftoff_q_th__k_c = _c3[16]
-    d_liftoff_q_thd__k_c = _c3[17]
+    _c4 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
+    if _c4[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
+    d_apex_height__k_c = _c4[12]
+    d_apex_speed__k_c = _c4[13]
+    d_t_descent__k_c = _c4[14]
+    d_t_stance__k_c = _c4[15]
+    d_t_ascent__k_c = _c4[16]
+    d_liftoff_q_r__k_c = _c4[17]
+    d_liftoff_q_rd__k_c = _c4[18]
+    d_liftoff_q_th__k_c = _c4[19]
+    d_liftoff_q_thd__k_c = _c4[20]
+    d_step_length__k_c = _c4[21]
+    d_foot_x__k_c = _c4[22]
+    d_foot_y__k_c = _c4[23]
     # derivatives with respect to k_d
-    _c4 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[18])
-    d_apex_height__k_d = _c4[9]
-    d_apex_speed__k_d = _c4[10]
-    d_t_descent__k_d = _c4[11]
-    d_t_stance__k_d = _c4[12]
-    d_t_ascent__k_d = _c4[13]
-    d_liftoff_q_r__k_d = _c4[14]
-    d_liftoff_q_rd__k_d = _c4[15]
-    d_liftoff_q_th__k_d = _c4[16]
-    d_liftoff_q_thd__k_d = _c4[17]
+    _c5 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+    if _c5[24] != STATUS_OK:
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[24])
+    d_apex_height__k_d = _c5[12]
+    d_apex_speed__k_d = _c5[13]
+    d_t_descent__k_d = _c5[14]
+    d_t_stance__k_d = _c5[15]
+    d_t_ascent__k_d = _c5[16]
+    d_liftoff_q_r__k_d = _c5[17]
+    d_liftoff_q_rd__k_d = _c5[18]
+    d_liftoff_q_th__k_d = _c5[19]
+    d_liftoff_q_thd__k_d = _c5[20]
+    d_step_length__k_d = _c5[21]
+    d_foot_x__k_d = _c5[22]
+    d_foot_y__k_d = _c5[23]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k_c) and math.isfinite(d_step_length__k_d) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k_c) and math.isfinite(d_foot_x__k_d) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k_c) and math.isfinite(d_foot_y__k_d)):
+        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_apex_return_jacobian`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 54)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -2239,4 +2323,34 @@ def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m,
         out[i, 51] = res[51]
         out[i, 52] = res[52]
         out[i, 53] = res[53]
-        status[i] = res[54]
+        out[i, 54] = res[54]
+        out[i, 55] = res[55]
+        out[i, 56] = res[56]
+        out[i, 57] = res[57]
+        out[i, 58] = res[58]
+        out[i, 59] = res[59]
+        out[i, 60] = res[60]
+        out[i, 61] = res[61]
+        out[i, 62] = res[62]
+        out[i, 63] = res[63]
+        out[i, 64] = res[64]
+        out[i, 65] = res[65]
+        out[i, 66] = res[66]
+        out[i, 67] = res[67]
+        out[i, 68] = res[68]
+        out[i, 69] = res[69]
+        out[i, 70] = res[70]
+        out[i, 71] = res[71]
+        out[i, 72] = res[72]
+        out[i, 73] = res[73]
+        out[i, 74] = res[74]
+        out[i, 75] = res[75]
+        out[i, 76] = res[76]
+        out[i, 77] = res[77]
+        out[i, 78] = res[78]
+        out[i, 79] = res[79]
+        out[i, 80] = res[80]
+        out[i, 81] = res[81]
+        out[i, 82] = res[82]
+        out[i, 83] = res[83]
+        status[i] = res[84]

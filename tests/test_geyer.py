@@ -250,7 +250,8 @@ def test_apex_return_is_exact_descent_stance_map_exact_ascent(params):
                 if not st.ok:
                     assert res.status == st.status
                     continue
-                *apex, t_ascent, _, code = g_flight.liftoff_to_apex(*st.liftoff, params.g_f)
+                direction = float(np.sign(speed))  # the step's: 0 for a hop in place
+                *apex, t_ascent, _, _, code = g_flight.liftoff_to_apex(*st.liftoff, params.g_f, direction)
                 assert res.status == code
                 if code != Status.OK:
                     continue

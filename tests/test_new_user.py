@@ -406,8 +406,8 @@ def test_help_shows_the_scaled_defaults_and_which_flags_are_absolute():
             "apex_height must be finite, got nan",
         ),
         (
-            lambda: slipmaps.apex_return("geyer", P, 1.0, np.float64(-1), 0.35),
-            "apex_speed must not be negative, got -1.0",
+            lambda: slipmaps.apex_return("geyer", P, np.float64(-1), 5.0, 0.35),
+            "apex_height must not be negative, got -1.0",
         ),
         (
             lambda: slipmaps.stance("geyer", P, np.array([1.0, np.nan, 0.3, -4])),

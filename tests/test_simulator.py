@@ -316,7 +316,8 @@ def test_from_touchdown_equals_step():
     [
         (lambda: simulate_step(HUMAN_RUNNER, -0.5, 5.0, 0.3), "-0.5"),
         (lambda: simulate_step(HUMAN_RUNNER, math.nan, 5.0, 0.3), "nan"),
-        (lambda: simulate_step(HUMAN_RUNNER, 1.0, -2.0, 0.3), "-2.0"),
+        (lambda: simulate_step(HUMAN_RUNNER, -1.0, 2.0, 0.3), "-1.0"),
+        (lambda: simulate_step(HUMAN_RUNNER, 1.0, 2.0, 0.3, ground=math.nan), "ground.*nan"),
         (lambda: simulate_step(HUMAN_RUNNER, 1.0, math.inf, 0.3), "inf"),
         (lambda: simulate_step(HUMAN_RUNNER, 1.0, 5.0, 1.6), "1.6"),
         (lambda: simulate_step(HUMAN_RUNNER, 1.0, 5.0, -math.pi / 2), "-1.57"),
@@ -409,7 +410,7 @@ def test_random_valid_inputs_never_raise(params, q_rd, q_th, q_thd, height, spee
 def test_flight_kernel_reports_apex_too_low():
     # The simulator checks this itself (so no NaN state reaches the stance), but the generated
     # kernel must agree: an apex below the touchdown height is APEX_TOO_LOW, not OK with NaNs.
-    out = gen_flight.apex_to_touchdown(0.9, 5.0, 0.4, 1.0, 9.81)
+    out = gen_flight.apex_to_touchdown(0.9, 5.0, 0.4, 1.0, 9.81, 0.0)
     assert Status(int(out[-1])) == Status.APEX_TOO_LOW, out
 
 

@@ -4,7 +4,8 @@
 :func:`all_maps` finds every module of this package that declares ``MAPS`` (a tuple of
 :class:`~slipmaps.derive.mapspec.MapSpec`), :func:`all_halves` those that declare ``HALVES``
 (:class:`~slipmaps.derive.halfspec.HalfSpec`), so adding a map is adding its module; the maps are
-ordered by report section, then name.
+ordered by report section, then name. The ground truth, the exact map (``exact.py``), is declared
+the same way as :data:`GROUND_TRUTH` (:func:`ground_truth`), apart from the approximations.
 """
 
 from __future__ import annotations
@@ -37,8 +38,15 @@ def _unique(specs, what: str) -> None:
 def all_halves():
     """Every declared half-stance map (``HALVES``), in report order (section, then name)."""
     specs = [h for module in _modules() for h in getattr(module, "HALVES", ())]
-    _unique(specs + list(all_maps()), "map")
+    _unique(specs + list(all_maps()) + [ground_truth()], "map")
     return tuple(sorted(specs, key=lambda s: (_section_key(s.section), s.name)))
+
+
+@cache
+def ground_truth():
+    """The exact map's declaration (the one module attribute ``GROUND_TRUTH``)."""
+    (spec,) = [m.GROUND_TRUTH for m in _modules() if hasattr(m, "GROUND_TRUTH")]
+    return spec
 
 
 @cache

@@ -197,7 +197,7 @@ def tol_option(default: float) -> Option:
 
 
 _EXTRAS = (
-    Field("P_c", "virtual gravity effect: the stance impulse added to p_th", "N m s"),
+    Field("P_c", "virtual gravity effect: the stance impulse added to p_th", "N m s", odd=True),
     Field("passes", "fixed-point passes run", ""),
 )
 MOMENTUM_SCALE = sp.Abs(sym("p_td")) + m * l0 * sp.sqrt(g_s * l0)

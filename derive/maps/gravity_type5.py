@@ -390,7 +390,7 @@ MAPS = (
             ),
         ),
         extras=(
-            Field("P_c", "stance impulse of the gravity torque P(t_lo) - p_td", "N m s"),
+            Field("P_c", "stance impulse of the gravity torque P(t_lo) - p_td", "N m s", odd=True),
             Field("passes", "fixed-point passes run", ""),
         ),
         summary="the gravity torque at the 3 Gauss-Legendre nodes of the stance, interpolated: a cubic "

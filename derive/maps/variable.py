@@ -545,8 +545,13 @@ MAPS = (
         build=_build,
         options=(CONTINUITY, GRAVITY, iterations_option(100), tol_option(1e-12)),
         extras=(
-            Field("P_c_compression", "virtual gravity effect of the first half (0 unless gravity)", "N m s"),
-            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s"),
+            Field(
+                "P_c_compression",
+                "virtual gravity effect of the first half (0 unless gravity)",
+                "N m s",
+                odd=True,
+            ),
+            Field("P_c_decompression", "virtual gravity effect of the second half", "N m s", odd=True),
             Field("passes", "fixed-point passes run (0 unless gravity)", ""),
         ),
         summary="Geyer et al.'s map with k_c to the bottom, the energy jump (97)-(98), again with k_d to "

@@ -1,18 +1,23 @@
-"""The maps the runtime knows: the generated index plus ``"exact"``, and option resolution.
+"""The maps the runtime knows, and option resolution: read from the generated index.
 
 Everything here is read from ``slipmaps.generated.maps_index`` (written by ``slipmaps generate``
-from the declarations in ``derive/maps/``); nothing restates a map, a parameter list or an output
-layout. ``"exact"`` is the numerical ground truth (DOP853: compiled by default, ``solve_ivp`` with
-``method="scipy"``), a map like the others.
+from the declarations in ``derive/maps/``); nothing restates a map, a parameter list, a kernel's
+arguments or an output layout. Each map's row gives, for every role it has (``stance``,
+``state_at``, ``apex_return``, ``stance_jacobian``, ``apex_return_jacobian``; ``half`` for a
+half-stance map), the kernel's calling convention: its module and name, its arguments by name,
+its batch form's row arguments and argument order, and its outputs (:class:`KernelSpec`). The
+runtime fills those arguments by name (:mod:`.calls`). ``"exact"`` (the numerical ground truth,
+DOP853) is declared and generated like the other maps; its option ``method="scipy"`` runs the
+``solve_ivp`` reference instead (an option choice with a backend of its own).
 """
 
 from __future__ import annotations
 
 import importlib
 import math
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from functools import cache
-from types import ModuleType
 
 from slipmaps.generated import maps_index
 
@@ -20,9 +25,52 @@ from .numeric import NotANumber, is_real, num
 from .params import SlipParams
 from .validate import check_params
 
-__all__ = ["EXACT", "MapInfo", "HalfInfo", "Option", "get", "get_half", "halves", "lookup", "maps", "names"]
+__all__ = [
+    "EXACT",
+    "HalfInfo",
+    "KernelSpec",
+    "MapInfo",
+    "Option",
+    "get",
+    "get_half",
+    "halves",
+    "lookup",
+    "maps",
+    "names",
+]
 
-EXACT = "exact"
+#: The name of the ground truth, the exact map.
+EXACT: str = maps_index.EXACT["name"]
+
+
+@dataclass(frozen=True)
+class KernelSpec:
+    """One generated kernel's calling convention (the index's ``kernels`` entry of a role)."""
+
+    module: str
+    name: str
+    args: tuple[str, ...]
+    rows: tuple[str, ...]  # the batch form's row arguments
+    batch: tuple[str, ...]  # the batch form's arguments, before ``out, status``
+    outputs: tuple[str, ...]  # the scalar form's outputs (the status follows); values of a Jacobian
+    wrt: tuple[str, ...] = ()  # a Jacobian's inputs: its columns
+
+    @classmethod
+    def of(cls, row: dict) -> KernelSpec:
+        return cls(
+            module=row["module"],
+            name=row["name"],
+            args=tuple(row["args"]),
+            rows=tuple(row["rows"] or ()),
+            batch=tuple(row["batch"] or ()),
+            outputs=tuple(row["outputs"]),
+            wrt=tuple(row.get("wrt", ())),
+        )
+
+    def functions(self):
+        """(scalar, batch) functions of the generated module (imported on first use)."""
+        module = importlib.import_module(f"slipmaps.generated.{self.module}")
+        return getattr(module, self.name), getattr(module, f"{self.name}_batch")
 
 
 @dataclass(frozen=True)
@@ -37,6 +85,8 @@ class Option:
     low: float | None = None
     high: float | None = None
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
+    kernel: bool = True  # a kernel argument (else it selects the implementation: ``backends``)
+    backends: Mapping[str, str] = field(default_factory=dict)  # choice -> module with a BACKEND
 
     def encode(self, map_name: str, value: object) -> float:
         """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values,
@@ -71,6 +121,8 @@ class Option:
             "low": self.low,
             "high": self.high,
             "at_rest_length": list(self.at_rest_length),
+            "kernel": self.kernel,
+            "backends": dict(self.backends),
         }
 
 
@@ -87,10 +139,8 @@ class MapInfo:
     options: tuple[Option, ...]
     summary: str = ""
     module: str | None = None
-    kernels: dict | None = None
-    #: The generated Jacobian kernels: module, kernel per role ("stance", "apex_return") and the
-    #: kernel arguments each differentiates with respect to ("stance_wrt", "apex_wrt").
-    jacobian: dict | None = None
+    #: Role -> the kernel's calling convention (:class:`KernelSpec`).
+    kernels: Mapping[str, KernelSpec] = field(default_factory=dict)
     extras: tuple[str, ...] = ()
     #: Reproduces the report's printed formulas, errors included: no accuracy claim.
     as_printed: bool = False
@@ -98,15 +148,20 @@ class MapInfo:
     approximation_statuses: tuple[str, ...] = ()
 
     @property
-    def generated(self) -> bool:
-        return self.module is not None
+    def ground_truth(self) -> bool:
+        """True for the exact map, the numerical ground truth every approximation is compared with."""
+        return self.name == EXACT
+
+    def has(self, role: str) -> bool:
+        """Whether the map has a kernel for ``role`` (``state_at``: a trajectory; ``*_jacobian``)."""
+        return role in self.kernels
 
     @property
     def has_trajectory(self) -> bool:
         """True when :func:`slipmaps.trajectory` can sample the map's stance at any time (a
-        state-at-time kernel, or the exact simulator); False for a map that computes its event
-        states only (touchdown, bottom, liftoff: ``iterative``, ``iterative-report``)."""
-        return not self.generated or (self.kernels or {}).get("state_at") is not None
+        state-at-time kernel); False for a map that computes its event states only (touchdown,
+        bottom, liftoff: ``iterative``, ``iterative-report``)."""
+        return self.has("state_at")
 
     def option(self, name: str) -> Option:
         for o in self.options:
@@ -121,12 +176,23 @@ class MapInfo:
             self.option(key)
         return {o.name: options.get(o.name, o.default) for o in self.options}
 
-    def encode(self, resolved: dict) -> tuple[float, ...]:
-        """The resolved option values (:meth:`resolve`) as kernel arguments, in the kernel's order."""
-        return tuple(o.encode(self.name, resolved[o.name]) for o in self.options)
+    def encode(self, resolved: dict) -> dict[str, float]:
+        """The resolved option values (:meth:`resolve`), each checked (ValueError naming the valid
+        values), and those that are kernel arguments by name (a choice as its index)."""
+        encoded = {o.name: o.encode(self.name, resolved[o.name]) for o in self.options}
+        return {o.name: encoded[o.name] for o in self.options if o.kernel}
 
-    def param_values(self, params: SlipParams) -> tuple[float, ...]:
-        """The map's parameters from ``params``, by name; ValueError when a requirement fails."""
+    def backend(self, resolved: dict) -> str | None:
+        """The module whose ``BACKEND`` runs the map with these options, None for its generated
+        kernels (an option choice with a backend of its own, e.g. ``method="scipy"``)."""
+        for o in self.options:
+            module = o.backends.get(resolved[o.name])
+            if module is not None:
+                return module
+        return None
+
+    def check_params(self, params: SlipParams) -> None:
+        """ValueError when ``params`` break a requirement of the map (a constant stiffness)."""
         check_params(params)
         if "constant_stiffness" in self.requires and not params.constant_stiffness:
             others = [m.name for m in maps() if "constant_stiffness" not in m.requires]
@@ -134,12 +200,6 @@ class MapInfo:
                 f"map {self.name!r} needs a constant leg stiffness (k_c == k_d), got k_c={num(params.k_c)}, "
                 f"k_d={num(params.k_d)}; maps that accept k_c != k_d: {', '.join(others)}"
             )
-        return tuple(getattr(params, p) for p in self.params)
-
-    def kernel_module(self) -> ModuleType:
-        if self.module is None:
-            raise ValueError(f"map {self.name!r} has no generated kernels")
-        return importlib.import_module(f"slipmaps.generated.{self.module}")
 
     def as_dict(self) -> dict:
         return {
@@ -180,6 +240,8 @@ def _option(row: dict) -> Option:
         low=row["low"],
         high=row["high"],
         at_rest_length=tuple(row.get("at_rest_length", ())),
+        kernel=row["kernel"],
+        backends=dict(row["backends"]),
     )
 
 
@@ -195,8 +257,7 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         options=tuple(_option(o) for o in r["options"]),
         summary=r["summary"],
         module=r["module"],
-        kernels=dict(r["kernels"]) if r["kernels"] else None,
-        jacobian=dict(r["jacobian"]) if r.get("jacobian") else None,
+        kernels={role: KernelSpec.of(k) for role, k in r["kernels"].items()},
         extras=tuple(e["name"] for e in r["extras"]),
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),

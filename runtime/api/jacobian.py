@@ -3,10 +3,10 @@
 - :func:`stance_jacobian` (``name, params, touchdown``): rows are the stance outputs
   (``t_bottom``, ``t_stance``, ``bottom_*``, ``liftoff_*``, then the map's extras), columns the
   touchdown state ``q_r_td, q_rd_td, q_th_td, q_thd_td`` and the stiffness.
-- :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle``): rows
-  are the apex-return outputs (``apex_height`` and ``apex_speed`` of the NEXT apex, the flight and
-  stance times, ``liftoff_*``, extras), columns ``apex_height, apex_speed, touchdown_angle`` and
-  the stiffness.
+- :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle, ground=``):
+  rows are the apex-return outputs (``apex_height`` and ``apex_speed`` of the NEXT apex, the flight
+  and stance times, ``liftoff_*``, ``step_length``, ``foot_x``, ``foot_y``, extras), columns
+  ``apex_height, apex_speed, touchdown_angle, ground`` and the stiffness.
 - :func:`stance_jacobian_batch`, :func:`apex_return_jacobian_batch`: the same over arrays, in
   parallel, a status per row.
 
@@ -14,13 +14,14 @@ The stiffness columns are the map's own parameters: ``k`` for a map that needs k
 of both together), ``k_c`` and ``k_d`` for the others and for ``"exact"``. Units: SI per unit input
 (per N/m for a stiffness).
 
-How they are computed. A generated map's Jacobian kernels are generated from its declaration by
+How they are computed. Every map's Jacobian kernels are generated from its declaration by
 forward-mode differentiation (``derive/tangent.py``): closed-form maps symbolically, iterative maps
-through their iterations (the derivative of the iterate the map returns). ``"exact"``
-differentiates the compiled simulator by the variational equations with saltation at the bottom
-and the map to the liftoff surface (:mod:`.exact_jacobian`), composed with the flights' derivatives
-(:mod:`.exact_step_jacobian`); ``method="scipy"`` has no Jacobian. Agreement with central
-differences is measured in tests/test_jacobian.py.
+through their iterations (the derivative of the iterate the map returns), and the exact map
+through its stance's own Jacobian (the compiled simulator's variational equations with saltation
+at the bottom and the map to the liftoff surface, ``runtime/exact/jacobian.py``), composed with
+the flights' derivatives like every map's; ``method="scipy"`` has no Jacobian. They are called
+like the maps, arguments by name (:mod:`.calls`). Agreement with central differences is measured in
+tests/test_jacobian.py.
 
 Where the map is defined but a derivative is not (an infinite one, e.g. as q_rd_td -> 0), the
 status is NUMERICAL_RANGE and everything NaN. With an option choice that assumes touchdown at the
@@ -31,7 +32,6 @@ touchdown).
 
 from __future__ import annotations
 
-import importlib
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -40,12 +40,11 @@ import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
-from ..exact import compiled as ec
-from ..exact.reference import default_t_max
-from .maps import _apex_rows, _Call
+from .calls import Call
+from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
 from .params import SlipParams
-from .results import GROUPS, BatchResult, Result, columns
-from .validate import leg_angle, non_negative, polar_state
+from .results import GROUPS, BatchResult, Result
+from .validate import polar_state
 
 __all__ = [
     "Jacobian",
@@ -56,8 +55,8 @@ __all__ = [
     "apex_return_jacobian_batch",
 ]
 
-#: Kernel argument -> the public name of a Jacobian column.
-_PUBLIC = {"b_y_apex": "apex_height", "b_xd_apex": "apex_speed", "q_th_td": "touchdown_angle"}
+#: Kernel argument -> the public name of a Jacobian column (the apex-return inputs' API names).
+_PUBLIC = dict(maps_index.APEX_PUBLIC)
 _TOUCHDOWN = tuple(maps_index.TOUCHDOWN)
 
 
@@ -143,22 +142,13 @@ class JacobianBatch:
 
 
 # ----------------------------------------------------------------------------------------------
-# Generated maps
+# Every map: the role's kernel (values, then d output_i / d input_j row-major), by name
 # ----------------------------------------------------------------------------------------------
-def _kernel(call: _Call, kind: str, batch: bool):
-    jac = call.info.jacobian
-    if jac is None:
-        raise ValueError(f"map {call.info.name!r} has no generated Jacobian")
-    module = importlib.import_module(f"slipmaps.generated.{jac['module']}")
-    return getattr(module, jac[kind] + ("_batch" if batch else ""))
-
-
-def _generated_names(call: _Call, kind: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    if kind == "stance":
-        inputs = tuple(call.info.jacobian["stance_wrt"])
-    else:
-        inputs = tuple(_PUBLIC.get(w, w) for w in call.info.jacobian["apex_wrt"])
-    return columns(kind, call.info.extras), inputs
+def _names(call: Call, role: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(outputs, inputs) of a Jacobian: its rows and its columns (public names for the apex)."""
+    spec = call.spec(role)
+    wrt = tuple(_PUBLIC.get(w, w) for w in spec.wrt) if role == "apex_return_jacobian" else spec.wrt
+    return spec.outputs, wrt
 
 
 def _split(row: np.ndarray, n_out: int, n_in: int) -> tuple[np.ndarray, np.ndarray]:
@@ -166,94 +156,64 @@ def _split(row: np.ndarray, n_out: int, n_in: int) -> tuple[np.ndarray, np.ndarr
     return row[..., :n_out], row[..., n_out : n_out + n_out * n_in].reshape(*row.shape[:-1], n_out, n_in)
 
 
-# ----------------------------------------------------------------------------------------------
-# "exact"
-# ----------------------------------------------------------------------------------------------
-def _exact_options(call: _Call) -> tuple[float, float]:
-    if call.options.get("method") == "scipy":
-        raise ValueError(
-            "the exact Jacobian comes from the compiled simulator's variational equations; "
-            "method='scipy' has none (use the default method='compiled')"
-        )
-    return float(call.options["rtol"]), float(call.options["atol"])
-
-
-# ----------------------------------------------------------------------------------------------
-# Public API
-# ----------------------------------------------------------------------------------------------
-def _at_rest_length(call: _Call) -> bool:
+def _at_rest_length(call: Call) -> bool:
     """An option choice that assumes touchdown at the rest length (``Option.at_rest_length``): the
     map has no derivative with respect to q_r_td (it is INVALID_INPUT anywhere else)."""
     return any(call.options[o.name] in o.at_rest_length for o in call.info.options)
 
 
-def _mask_rest_length(call: _Call, inputs, jac: np.ndarray) -> None:
+def _mask_rest_length(call: Call, inputs, jac: np.ndarray) -> None:
     if "q_r_td" in inputs and _at_rest_length(call):
         jac[..., inputs.index("q_r_td")] = math.nan
 
 
-def _jacobian(call: _Call, kind: str, outputs, inputs, row, jac, code, point) -> Jacobian:
-    status = Status(int(code))
+def _jacobian(call: Call, role: str, status: Status, row, point) -> Jacobian:
+    outputs, inputs = _names(call, role)
+    values, jac = _split(np.array(row, dtype=float), len(outputs), len(inputs))
+    jac = jac.copy()
     if status == Status.OK and not np.isfinite(jac).all():
-        status = Status.NUMERICAL_RANGE  # a derivative that does not exist there (exact path)
+        status = Status.NUMERICAL_RANGE  # a derivative that does not exist there
     if status != Status.OK:
-        row = np.full(len(outputs), math.nan)
+        values = np.full(len(outputs), math.nan)
         jac = np.full((len(outputs), len(inputs)), math.nan)
-    values = dict(zip(outputs, map(float, row), strict=True))
     _mask_rest_length(call, inputs, jac)
     jac.setflags(write=False)
-    return Jacobian(call.info.name, kind, status, MESSAGES[int(status)], values, outputs, inputs, jac, point)
+    kind = role.removesuffix("_jacobian")
+    named = dict(zip(outputs, map(float, values), strict=True))
+    return Jacobian(call.info.name, kind, status, MESSAGES[int(status)], named, outputs, inputs, jac, point)
 
 
 def stance_jacobian(name: str, params: SlipParams, touchdown, **options) -> Jacobian:
     """Map ``name``'s stance from the polar touchdown state and its derivatives with respect to the
     touchdown state and the stiffness (module docstring)."""
-    call = _Call.of(name, params, options)
+    call = Call.of(name, params, options)
     td = polar_state(params, touchdown)
-    point = {"touchdown": td, "options": dict(call.options)}
-    if not call.info.generated:
-        from ..exact import jacobian as ej
-
-        rtol, atol = _exact_options(call)
-        out, jac = np.empty(ej.N_OUT), np.empty((ej.N_OUT, ej.N_IN))
-        code = ej.jacobian_into(
-            *td, *ec.stance_args(params), params.q_r_lo, rtol, atol, default_t_max(params), out, jac
-        )
-        return _jacobian(call, "stance", tuple(ej.OUTPUTS), tuple(ej.INPUTS), out, jac, code, point)
-    outputs, inputs = _generated_names(call, "stance")
-    res = _kernel(call, "stance", False)(*td, *call.params, params.q_r_lo, *call.encoded)
-    row, jac = _split(np.array(res[:-1], dtype=float), len(outputs), len(inputs))
-    return _jacobian(call, "stance", outputs, inputs, row, jac.copy(), res[-1], point)
+    status, row, _ = call.scalar("stance_jacobian", touchdown_inputs(call, td))
+    return _jacobian(call, "stance_jacobian", status, row, {"touchdown": td, "options": dict(call.options)})
 
 
 def apex_return_jacobian(
-    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, **options
+    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
 ) -> Jacobian:
     """One step of map ``name`` (as :func:`slipmaps.apex_return`) and its derivatives with respect to
-    the apex height and speed, the touchdown angle and the stiffness (module docstring)."""
-    call = _Call.of(name, params, options)
-    h = non_negative("apex_height", apex_height)
-    v = non_negative("apex_speed", apex_speed)
-    th = leg_angle("touchdown_angle", touchdown_angle)
-    point = {"apex_height": h, "apex_speed": v, "touchdown_angle": th, "options": dict(call.options)}
-    if not call.info.generated:
-        from ..exact import step_jacobian as esj
-
-        rtol, atol = _exact_options(call)
-        out, jac = np.empty(esj.N_OUT), np.empty((esj.N_OUT, esj.N_IN))
-        code = esj.step_jacobian_into(
-            h, v, th, *ec.step_args(params), rtol, atol, default_t_max(params), out, jac
-        )
-        return _jacobian(call, "apex_return", tuple(esj.OUTPUTS), esj.INPUTS, out, jac, code, point)
-    outputs, inputs = _generated_names(call, "apex_return")
-    res = _kernel(call, "apex_return", False)(
-        h, v, th, *call.params, params.g_f, params.q_r_td, params.q_r_lo, *call.encoded
-    )
-    row, jac = _split(np.array(res[:-1], dtype=float), len(outputs), len(inputs))
-    return _jacobian(call, "apex_return", outputs, inputs, row, jac.copy(), res[-1], point)
+    the apex height and speed, the touchdown angle, the ground and the stiffness (module docstring)."""
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    given["ground"] = ground
+    inputs = apex_inputs(given)
+    status, row, _ = call.scalar("apex_return_jacobian", inputs)
+    point = {k: inputs[_ARG[k]] for k in given} | {"options": dict(call.options)}
+    return _jacobian(call, "apex_return_jacobian", status, row, point)
 
 
-def _batch(call: _Call, kind: str, outputs, inputs, data, jac, status, shape) -> JacobianBatch:
+#: The apex-return inputs' kernel arguments by public name.
+_ARG = {public: arg for arg, public in _PUBLIC.items()}
+
+
+def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) -> JacobianBatch:
+    outputs, inputs = _names(call, role)
+    data, jac = _split(out, len(outputs), len(inputs))
+    data, jac = data.copy(), jac.copy()
     ok = status == int(Status.OK)
     status[ok & ~np.isfinite(jac).all(axis=(1, 2))] = int(Status.NUMERICAL_RANGE)
     bad = status != int(Status.OK)
@@ -261,6 +221,7 @@ def _batch(call: _Call, kind: str, outputs, inputs, data, jac, status, shape) ->
     jac[bad] = math.nan
     _mask_rest_length(call, inputs, jac)
     jac.setflags(write=False)
+    kind = role.removesuffix("_jacobian")
     result = BatchResult(call.info.name, kind, outputs, data, status, shape)
     return JacobianBatch(
         call.info.name, kind, outputs, inputs, result, jac.reshape(*shape, len(outputs), len(inputs))
@@ -269,53 +230,21 @@ def _batch(call: _Call, kind: str, outputs, inputs, data, jac, status, shape) ->
 
 def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) -> JacobianBatch:
     """:func:`stance_jacobian` over touchdown states of shape (n, 4), in parallel; a status per row."""
-    from .maps import _rows
-
-    call = _Call.of(name, params, options)
-    arr = _rows(params, touchdowns)
+    call = Call.of(name, params, options)
+    arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    if not call.info.generated:
-        from ..exact import jacobian as ej
-
-        data, jac, status = ej.jacobian_rows(params, arr, *_exact_options(call))
-        return _batch(call, "stance", tuple(ej.OUTPUTS), tuple(ej.INPUTS), data, jac, status, (n,))
-    cols = tuple(np.ascontiguousarray(arr[:, j]) for j in range(4))
-    status = np.empty(n, dtype=np.int64)
-    outputs, inputs = _generated_names(call, "stance")
-    out = np.empty((n, len(outputs) * (1 + len(inputs))))
-    _kernel(call, "stance", True)(*cols, *call.params, params.q_r_lo, *call.encoded, out, status)
-    data, jac = _split(out, len(outputs), len(inputs))
-    return _batch(call, "stance", outputs, inputs, data.copy(), jac.copy(), status, (n,))
+    cols = {a: np.ascontiguousarray(arr[:, j]) for j, a in enumerate(call.spec("stance_jacobian").rows)}
+    out, status = call.rows("stance_jacobian", cols, {}, n)
+    return _batch(call, "stance_jacobian", out, status, (n,))
 
 
 def apex_return_jacobian_batch(
-    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, **options
+    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
 ) -> JacobianBatch:
     """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
     status per row; the result has the broadcast shape."""
-    call = _Call.of(name, params, options)
-    flat, shape = _apex_rows(apex_height, apex_speed, touchdown_angle)
-    n = int(np.prod(shape))
-    status = np.empty(n, dtype=np.int64)
-    if not call.info.generated:
-        from ..exact import step_jacobian as esj
-
-        rtol, atol = _exact_options(call)
-        data, jac = np.empty((n, esj.N_OUT)), np.empty((n, esj.N_OUT, esj.N_IN))
-        esj.step_jacobian_batch(
-            *(ec.column(x) for x in flat),
-            *ec.step_args(params),
-            rtol,
-            atol,
-            default_t_max(params),
-            data,
-            jac,
-            status,
-        )
-        return _batch(call, "apex_return", tuple(esj.OUTPUTS), esj.INPUTS, data, jac, status, shape)
-    outputs, inputs = _generated_names(call, "apex_return")
-    out = np.empty((n, len(outputs) * (1 + len(inputs))))
-    extra = (params.g_f, params.q_r_td, params.q_r_lo)
-    _kernel(call, "apex_return", True)(*flat, *call.params, *extra, *call.encoded, out, status)
-    data, jac = _split(out, len(outputs), len(inputs))
-    return _batch(call, "apex_return", outputs, inputs, data.copy(), jac.copy(), status, shape)
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    cols, shape = apex_rows({**given, "ground": ground})
+    out, status = call.rows("apex_return_jacobian", cols, {}, int(np.prod(shape)))
+    return _batch(call, "apex_return_jacobian", out, status, shape)

@@ -14,14 +14,22 @@ both name the argument given (``k`` when ``k`` set both stiffnesses).
 
 from __future__ import annotations
 
+import inspect
 import math
-from dataclasses import dataclass, fields, replace
+
+from slipmaps.derive import params as _table
 
 from .numeric import NotANumber, is_real, num
 
-__all__ = ["SlipParams", "ParamError", "ParamTypeError", "HUMAN_RUNNER", "ROBOT_HOPPER"]
-
-_DEFAULT_K = 20_000.0
+__all__ = [
+    "FIELDS",
+    "HUMAN_RUNNER",
+    "PARAMETERS",
+    "ParamError",
+    "ParamTypeError",
+    "ROBOT_HOPPER",
+    "SlipParams",
+]
 
 
 class _ParamProblem:
@@ -42,67 +50,102 @@ class ParamTypeError(_ParamProblem, NotANumber):
     ValueError, see :class:`~.numeric.NotANumber`)."""
 
 
-@dataclass(frozen=True, init=False)
+#: The parameter table (``derive/params.py``, plain data): every field of :class:`SlipParams` and the
+#: alias ``k``, with its meaning, unit, default and domain. Nothing here restates it.
+PARAMETERS: tuple[dict, ...] = _table.PARAMETERS
+ALIASES: dict[str, dict] = _table.ALIASES
+FIELDS: tuple[str, ...] = tuple(r["name"] for r in PARAMETERS)
+_ROWS = {r["name"]: r for r in PARAMETERS}
+
+
+def _signature() -> inspect.Signature:
+    """``SlipParams(m=80.0, l0=1.0, k=None, *, k_c=None, ...)``: the table's first two fields and
+    ``k`` positional, the rest keyword-only; defaults the table's (None where it defaults to l0 or
+    where ``k`` may set it)."""
+    P = inspect.Parameter
+    sets = {n for a in ALIASES.values() for n in a["sets"]}
+    out = [P("self", P.POSITIONAL_OR_KEYWORD)]
+    for name in FIELDS[:2]:
+        out.append(P(name, P.POSITIONAL_OR_KEYWORD, default=_ROWS[name]["default"]))
+    out += [P(name, P.POSITIONAL_OR_KEYWORD, default=None) for name in ALIASES]
+    for name in FIELDS[2:]:
+        default = None if name in sets or isinstance(_ROWS[name]["default"], str) else _ROWS[name]["default"]
+        out.append(P(name, P.KEYWORD_ONLY, default=default))
+    return inspect.Signature(out)
+
+
 class SlipParams:
-    """Physical parameters of the SLIP template (report Table 1)."""
+    """Physical parameters of the SLIP template (report Table 1), validated on construction.
 
-    m: float
-    l0: float
-    k_c: float
-    k_d: float
-    g_s: float
-    g_f: float
-    q_r_td: float
-    q_r_lo: float
+    Fields (``derive/params.py``): m [kg], l0 [m], k_c and k_d [N/m], g_s and g_f [m/s^2], q_r_td
+    and q_r_lo [m]; ``k=`` sets k_c = k_d. Frozen, hashable, compared by value."""
 
-    def __init__(
-        self,
-        m: float = 80.0,
-        l0: float = 1.0,
-        k: float | None = None,
-        *,
-        k_c: float | None = None,
-        k_d: float | None = None,
-        g_s: float = 9.81,
-        g_f: float = 9.81,
-        q_r_td: float | None = None,
-        q_r_lo: float | None = None,
-    ) -> None:
-        if k is not None and (k_c is not None or k_d is not None):
-            raise ValueError(
-                f"SlipParams: give either k (both stiffnesses) or k_c/k_d, not both (got k={num(k)}, "
-                f"k_c={num(k_c)}, k_d={num(k_d)})"
-            )
-        stiff = _DEFAULT_K if k is None else k
-        values = {
-            "m": m,
-            "l0": l0,
-            "k_c": stiff if k_c is None else k_c,
-            "k_d": stiff if k_d is None else k_d,
-            "g_s": g_s,
-            "g_f": g_f,
-            "q_r_td": q_r_td,
-            "q_r_lo": q_r_lo,
-        }
-        # the argument a value came from: k_c and k_d name k when k set them
-        given = {"k_c": "k" if k is not None else "k_c", "k_d": "k" if k is not None else "k_d"}
-        for name, value in values.items():
+    __slots__ = FIELDS
+
+    def __init__(self, *args, **kwargs) -> None:
+        bound = _SIGNATURE.bind(self, *args, **kwargs)
+        bound.apply_defaults()
+        given = dict(bound.arguments)
+        given.pop("self")
+        aliases = {name: given.pop(name) for name in ALIASES}
+        origin = {}  # the argument a value came from: k_c and k_d name k when k set them
+        for alias, value in aliases.items():
+            if value is None:
+                continue
+            sets = ALIASES[alias]["sets"]
+            clash = {n: given[n] for n in sets if given[n] is not None}
+            if clash:
+                others = ", ".join(f"{n}={num(v)}" for n, v in clash.items())
+                raise ValueError(
+                    f"SlipParams: give either {alias} (both stiffnesses) or {'/'.join(sets)}, not both "
+                    f"(got {alias}={num(value)}, {others})"
+                )
+            for n in sets:
+                given[n], origin[n] = value, alias
+        for name in FIELDS:
+            if given[name] is None and not isinstance(_ROWS[name]["default"], str):
+                given[name] = _ROWS[name]["default"]
+        for name in FIELDS:
+            value = given[name]
             if value is None:
                 continue
             if not is_real(value):
-                raise ParamTypeError(given.get(name, name), "must be a real number", value)
+                raise ParamTypeError(origin.get(name, name), "must be a real number", value)
             if not math.isfinite(value) or value <= 0.0:
-                raise ParamError(given.get(name, name), "must be finite and positive", value)
-            values[name] = float(value)
-        for name in ("q_r_td", "q_r_lo"):
-            if values[name] is None:
-                values[name] = values["l0"]
-            elif values[name] > values["l0"]:
-                raise ParamError(
-                    name, f"must not exceed the rest length l0={num(values['l0'])}", values[name]
-                )
-        for name, value in values.items():
-            object.__setattr__(self, name, value)
+                raise ParamError(origin.get(name, name), "must be finite and positive", value)
+            given[name] = float(value)
+        for name in FIELDS:
+            default = _ROWS[name]["default"]
+            if isinstance(default, str):  # a leg length: defaults to (and must not exceed) l0
+                if given[name] is None:
+                    given[name] = given[default]
+                elif given[name] > given[default]:
+                    raise ParamError(
+                        name, f"must not exceed the rest length {default}={num(given[default])}", given[name]
+                    )
+        for name in FIELDS:
+            object.__setattr__(self, name, given[name])
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"SlipParams is frozen: use .with_({name}=...) for a changed copy")
+
+    def __delattr__(self, name):
+        raise AttributeError("SlipParams is frozen")
+
+    def _key(self) -> tuple[float, ...]:
+        return tuple(getattr(self, n) for n in FIELDS)
+
+    def __eq__(self, other):
+        return type(other) is SlipParams and self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
+
+    def __repr__(self):
+        return "SlipParams(" + ", ".join(f"{n}={getattr(self, n)!r}" for n in FIELDS) + ")"
+
+    def __reduce__(self):
+        return (_rebuild, (self.as_dict(),))
 
     @property
     def constant_stiffness(self) -> bool:
@@ -121,13 +164,35 @@ class SlipParams:
 
     def with_(self, **changes: float) -> SlipParams:
         """A copy with some fields changed (validated again); ``k=`` sets both stiffnesses."""
-        if "k" in changes:
-            k = changes.pop("k")
-            changes.update(k_c=k, k_d=k)
-        return replace(self, **changes)
+        values = self.as_dict()
+        for alias, a in ALIASES.items():
+            if alias in changes:
+                for n in a["sets"]:
+                    values.pop(n)
+        unknown = sorted(set(changes) - set(values) - set(ALIASES))
+        if unknown:
+            raise TypeError(f"SlipParams has no field(s) {', '.join(unknown)}")
+        return SlipParams(**{**values, **changes})
 
     def as_dict(self) -> dict[str, float]:
-        return {f.name: getattr(self, f.name) for f in fields(self)}
+        return {n: getattr(self, n) for n in FIELDS}
+
+    def values(self) -> dict[str, float]:
+        """Every kernel parameter by name: the fields, and each alias (``k``) whose fields agree."""
+        out = self.as_dict()
+        for alias, a in ALIASES.items():
+            first = out[a["sets"][0]]
+            if all(out[n] == first for n in a["sets"]):
+                out[alias] = first
+        return out
+
+
+_SIGNATURE = _signature()
+SlipParams.__init__.__signature__ = _SIGNATURE
+
+
+def _rebuild(values: dict) -> SlipParams:
+    return SlipParams(**values)
 
 
 #: The documented default case: an 80 kg human runner with a 1 m leg and a 20 kN/m spring.

@@ -62,6 +62,23 @@ def leg_angle(name: str, value: object) -> float:
     return x
 
 
+def leg_length(name: str, value: object, l0: float | None = None) -> float:
+    x = positive(name, value)
+    if l0 is not None and x > l0:
+        raise ValueError(f"{name} must not exceed the rest length l0={num(l0)}, got {num(x)}")
+    return x
+
+
+#: The check of each domain of ``derive/params.py`` (one line naming the value, ValueError).
+CHECKS = {
+    "real": real,
+    "non_negative": non_negative,
+    "positive": positive,
+    "leg_angle": leg_angle,
+    "leg_length": leg_length,
+}
+
+
 def real_array(name: str, value: object) -> np.ndarray:
     """``value`` as a float64 array (no copy when it already is one); TypeError when it holds
     strings, bytes or other non-numbers (numpy would parse ``"1.0"`` as 1.0)."""

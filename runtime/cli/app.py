@@ -42,11 +42,11 @@ import os
 import sys
 from pathlib import Path
 
-from ..api.numeric import num
-from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, ParamError, ParamTypeError, SlipParams
+from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
 from ..api.validate import leg_angle, non_negative, polar_state, positive
 from . import sweep as sweep_cli
+from .args import add_params, image_path, map_options, params_of, stiffness_note
 from .defaults import (
     APEX_FROUDE,
     APEX_HEIGHT_L0,
@@ -68,72 +68,6 @@ __all__ = ["main", "build_parser", "BROKEN_PIPE"]
 BROKEN_PIPE = 141
 
 
-def _add_params(p: argparse.ArgumentParser) -> None:
-    d = HUMAN_RUNNER
-    g = p.add_argument_group("SLIP parameters (SI units; default: the human runner)")
-    g.add_argument("--m", type=float, default=d.m, help="body mass [kg] (default %(default)s)")
-    g.add_argument("--l0", type=float, default=d.l0, help="rest leg length [m] (default %(default)s)")
-    g.add_argument(
-        "--k", type=float, default=None, help="leg stiffness, sets k_c = k_d [N/m] (default 20000)"
-    )
-    g.add_argument(
-        "--k-c",
-        type=float,
-        default=None,
-        help="compression stiffness [N/m] (default 20000; alone: k_d stays 20000)",
-    )
-    g.add_argument(
-        "--k-d",
-        type=float,
-        default=None,
-        help="decompression stiffness [N/m] (default 20000; alone: k_c stays 20000)",
-    )
-    g.add_argument("--g-s", type=float, default=d.g_s, help="gravity in stance [m/s^2] (default %(default)s)")
-    g.add_argument("--g-f", type=float, default=d.g_f, help="gravity in flight [m/s^2] (default %(default)s)")
-    g.add_argument(
-        "--q-r-td", type=float, default=None, help="touchdown leg length [m] (default l0; --touchdown: Q_R)"
-    )
-    g.add_argument("--q-r-lo", type=float, default=None, help="liftoff leg length [m] (default l0)")
-
-
-def _params(args: argparse.Namespace) -> SlipParams:
-    """The parameters as given (an unset stiffness is the human runner's); a bad value is a
-    ValueError naming the flag typed (``--k`` when it set both stiffnesses). With ``--touchdown``
-    the touchdown leg length is the state's q_r: a different ``--q-r-td`` is refused."""
-    if args.k is not None and (args.k_c is not None or args.k_d is not None):
-        raise ValueError("--k sets both stiffnesses: give either --k or --k-c/--k-d, not both")
-    if args.k_c is None and args.k_d is None:
-        stiff = {"k": HUMAN_RUNNER.k_c if args.k is None else args.k}
-    else:
-        stiff = {
-            "k_c": HUMAN_RUNNER.k_c if args.k_c is None else args.k_c,
-            "k_d": HUMAN_RUNNER.k_d if args.k_d is None else args.k_d,
-        }
-    touchdown = getattr(args, "touchdown", None)
-    if touchdown is not None and args.q_r_td is not None and args.q_r_td != touchdown[0]:
-        raise ValueError(
-            f"--q-r-td {num(args.q_r_td)} contradicts --touchdown, whose q_r {num(touchdown[0])} is the "
-            "touchdown leg length: drop --q-r-td (it is taken from the state)"
-        )
-    try:
-        return SlipParams(
-            m=args.m, l0=args.l0, **stiff, g_s=args.g_s, g_f=args.g_f, q_r_td=args.q_r_td, q_r_lo=args.q_r_lo
-        )
-    except (ParamError, ParamTypeError) as exc:
-        raise ValueError(f"--{exc.field.replace('_', '-')} {exc.problem}, got {num(exc.value)}") from None
-
-
-def _stiffness_note(args: argparse.Namespace, params: SlipParams) -> str | None:
-    """A note when one of --k-c/--k-d alone made k_c != k_d (the other kept its default)."""
-    if params.constant_stiffness or (args.k_c is None) == (args.k_d is None):
-        return None
-    given, other = ("--k-c", "k_d") if args.k_c is not None else ("--k-d", "k_c")
-    return (
-        f"only {given} given: {other} keeps its default {HUMAN_RUNNER.k_c:g} N/m, so k_c != k_d "
-        "(variable stiffness); give both, or --k for a constant stiffness"
-    )
-
-
 def _step(args: argparse.Namespace, params: SlipParams) -> dict:
     """The step's keywords of :func:`~.compare.compare`, validated under the flags' names: the apex
     (absolute, or relative to the leg) or the touchdown state; None keeps a default."""
@@ -149,45 +83,6 @@ def _step(args: argparse.Namespace, params: SlipParams) -> dict:
     angle = None if args.angle is None else leg_angle("--angle", args.angle)
     td = None if args.touchdown is None else polar_state(params, args.touchdown, what="--touchdown")
     return {"apex_height": height, "apex_speed": speed, "touchdown_angle": angle, "touchdown": td}
-
-
-#: The image formats --plot and gait --figure can write (matplotlib's; the suffix chooses).
-IMAGE_FORMATS = ("png", "pdf", "svg", "jpg", "jpeg", "eps", "ps", "tif", "tiff", "webp")
-
-
-def image_path(flag: str, path: str, example: str = "compare") -> str:
-    """An image path given by ``flag`` (``--plot``, ``--figure``), checked before any work by
-    :func:`~.paths.writable_file`: an image suffix, its directory created when missing and
-    writable; ValueError (one line naming the flag) otherwise."""
-    writable_file(flag, path, IMAGE_FORMATS, described="an image file", example=example)
-    return path
-
-
-#: An option's kind in a message ("must be a whole number"; the index's own words).
-_KIND_WORDS = {"int": "a whole number", "float": "a number"}
-
-
-def _options(name: str, pairs: list[str] | None) -> dict:
-    """``KEY=VALUE`` strings -> options of map ``name``, typed from the index."""
-    from ..api.index import lookup
-
-    info = lookup(name)
-    out = {}
-    for pair in pairs or ():
-        key, sep, value = pair.partition("=")
-        if not sep:
-            raise ValueError(f"--option takes KEY=VALUE, got {pair!r}")
-        opt = info.option(key.strip())
-        value = value.strip()
-        try:
-            out[opt.name] = (
-                value if opt.kind == "choice" else (int(value) if opt.kind == "int" else float(value))
-            )
-        except ValueError:
-            raise ValueError(
-                f"map {name!r} option {opt.name!r} must be {_KIND_WORDS[opt.kind]}, got {value!r}"
-            ) from None
-    return out
 
 
 def _version() -> str:
@@ -228,7 +123,7 @@ def build_parser() -> argparse.ArgumentParser:
         "no flight phase...: n/a in its cells, its status and message under the table); 2 a user error "
         "(one line on standard error).",
     )
-    _add_params(cmp_)
+    add_params(cmp_)
     cmp_.add_argument(
         "--map",
         default=None,
@@ -373,10 +268,10 @@ def _cmd_maps(args: argparse.Namespace) -> int:
 
 def _cmd_compare(args: argparse.Namespace) -> int:
     """0 when both sides ran, 1 when a side failed physically (its status under the table)."""
-    params = _params(args)
+    params = params_of(args)
     step = _step(args, params)  # bad values and plot paths are refused before any work
     path = None if args.no_plot else image_path("--plot", args.plot)
-    note = _stiffness_note(args, params)
+    note = stiffness_note(args, params)
     if note:
         print(f"slipmaps compare: note: {note}", file=sys.stderr)
     from .compare import compare, default_map, format_table, plot
@@ -387,8 +282,8 @@ def _cmd_compare(args: argparse.Namespace) -> int:
         map=name,
         against=args.against,
         **step,
-        options=_options(name, args.option),
-        against_options=_options(args.against, args.against_option),
+        options=map_options(name, args.option),
+        against_options=map_options(args.against, args.against_option),
     )
     if path:
         try:

@@ -165,7 +165,7 @@ def _side(name: str, params: SlipParams, td, options: dict) -> Side:
     res = stance(name, params, td, **options)
     if not res.ok:
         return Side(name, options, res, res.status, (math.nan, math.nan))
-    status, h, v = flight.next_apex(params, res.liftoff)
+    status, h, v = flight.next_apex(params, res.liftoff, flight.direction(td))
     return Side(name, options, res, status, (h, v))
 
 
@@ -202,7 +202,7 @@ def compare(
     info = index.lookup(map)
     half = info if isinstance(info, index.HalfInfo) else None
     for name in (map, against):
-        index.lookup(name).param_values(params)  # ValueError naming the requirement, before any work
+        index.lookup(name).check_params(params)  # ValueError naming the requirement, before any work
     options, against_options = dict(options or {}), dict(against_options or {})
     if touchdown is not None:
         if apex_height is not None or apex_speed is not None or touchdown_angle is not None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from slipmaps.generated import flight as gen_flight
+from slipmaps.generated import slip_model
 from slipmaps.generated.status import Status
 
 from ..api.params import SlipParams
@@ -18,11 +19,12 @@ _NAN4 = (math.nan,) * 4
 
 
 def touchdown(
-    params: SlipParams, apex_height: float, apex_speed: float, angle: float
+    params: SlipParams, apex_height: float, apex_speed: float, angle: float, ground: float = 0.0
 ) -> tuple[Status, PolarState, float]:
-    """(status, polar touchdown state, flight time) from the apex (height, speed), leg at ``angle``."""
-    *state, t_flight, code = gen_flight.apex_to_touchdown(
-        apex_height, apex_speed, angle, params.q_r_td, params.g_f
+    """(status, polar touchdown state, flight time) from the apex (height, speed), leg at ``angle``,
+    on ground ``ground`` higher."""
+    *state, t_flight, _, code = gen_flight.apex_to_touchdown(
+        apex_height, apex_speed, angle, params.q_r_td, params.g_f, ground
     )
     status = Status(int(code))
     if status != Status.OK:
@@ -30,9 +32,15 @@ def touchdown(
     return status, tuple(float(x) for x in state), float(t_flight)
 
 
-def next_apex(params: SlipParams, liftoff) -> tuple[Status, float, float]:
-    """(status, height, speed) of the apex after ``liftoff`` (NaN unless OK)."""
+def direction(touchdown) -> float:
+    """The direction of a step from its touchdown state: the sign of the body's horizontal velocity
+    (+1 toward +x, -1 toward -x, 0 for a hop in place)."""
+    return float(math.copysign(1.0, xd)) if (xd := slip_model.polar_to_cartesian(*touchdown)[1]) else 0.0
+
+
+def next_apex(params: SlipParams, liftoff, direction: float) -> tuple[Status, float, float]:
+    """(status, height, speed) of the apex after ``liftoff`` of a step in ``direction`` (NaN unless OK)."""
     if not all(math.isfinite(x) for x in liftoff):
         return Status.INVALID_INPUT, math.nan, math.nan
-    h, v, _, _, code = gen_flight.liftoff_to_apex(*liftoff, params.g_f)
+    h, v, _, _, _, code = gen_flight.liftoff_to_apex(*liftoff, params.g_f, direction)
     return Status(int(code)), float(h), float(v)

@@ -34,7 +34,7 @@ ENERGY_NOTE = 1e-6
 
 def add_parser(sub) -> argparse.ArgumentParser:
     """Add the ``gait`` subcommand to the subparsers ``sub``."""
-    from .app import _add_params
+    from .args import add_params
 
     p = sub.add_parser(
         "gait",
@@ -52,7 +52,7 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "printed in the row, in --json as status and message); 2 a user error (one line on standard "
         "error).",
     )
-    _add_params(p)
+    add_params(p)
     p.add_argument("--map", action="append", default=None, help="a map beside the exact one (repeatable)")
     p.add_argument("--no-exact", action="store_true", help="leave out the exact map")
     p.add_argument("--option", action="append", metavar="KEY=VALUE", help="an option of every --map")
@@ -147,14 +147,14 @@ def run(args: argparse.Namespace) -> int:
     from ..api.index import get
     from ..api.params import HUMAN_RUNNER
     from ..studies.stability import EXACT, REGION_MAPS, region_record
-    from .app import _options, _params, image_path
+    from .args import image_path, map_options, params_of
 
-    params = _params(args)
+    params = params_of(args)
     extra = [get(n).name for n in (args.map or [])]
     names = ([] if args.no_exact else [EXACT]) + [n for n in extra if n != EXACT]
     if not names:
         raise ValueError("no map left: --no-exact needs a --map")
-    options = {n: _options(n, args.option) if n in extra else {} for n in names}
+    options = {n: map_options(n, args.option) if n in extra else {} for n in names}
     if args.figure and params != HUMAN_RUNNER:
         raise ValueError("--figure draws the human runner's region: give no parameter options with it")
     if args.figure:

@@ -139,11 +139,11 @@ def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
     if args.random is not None:
         data.update(mode="random", samples=args.random)
     if args.option:
-        from .app import _options
+        from .args import map_options
 
         if "map" not in data:
             raise ValueError("--option needs --map (or map in the TOML file)")
-        data["options"] = {**data.get("options", {}), **_options(data["map"], args.option)}
+        data["options"] = {**data.get("options", {}), **map_options(data["map"], args.option)}
     return split_keys(data, args.config or "sweep")
 
 

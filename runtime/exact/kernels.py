@@ -17,18 +17,23 @@ outputs followed by the status (all outputs NaN unless the status is OK). The st
 - :func:`stance_jacobian`: the same outputs, then d output_i / d input_j row-major over the inputs
   (q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d), status (variational equations,
   :mod:`.jacobian`).
+- :func:`state_at`: the polar state a time t after touchdown (k_c until the bottom, then k_d), status;
+  after liftoff the stance equations continued, as the approximate maps' closed forms are.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 from numba import njit
 
 from . import compiled as ec
+from . import dop853
 from . import jacobian as ej
-from .reference import stance_time_limit
+from .reference import COLLAPSE_FRACTION, max_step, stance_time_limit
 
-__all__ = ["STANCE_JACOBIAN_WRT", "stance", "stance_jacobian"]
+__all__ = ["STANCE_JACOBIAN_WRT", "stance", "stance_jacobian", "state_at"]
 
 #: The inputs :func:`stance_jacobian` differentiates with respect to, in its column order.
 STANCE_JACOBIAN_WRT = ej.INPUTS
@@ -74,3 +79,37 @@ def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         j[50], j[51], j[52], j[53], j[54], j[55], j[56], j[57], j[58], j[59],
         code,
     )  # fmt: skip
+
+
+#: state_at watches the bottom while compressing (then switches to k_d), and only the failures after.
+_TO_BOTTOM = np.array([math.nan, +1.0, -1.0, -1.0])
+_AFTER_BOTTOM = np.array([math.nan, math.nan, -1.0, -1.0])
+
+
+@njit(**_JIT)
+def state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+    """The polar state ``t`` >= 0 after touchdown: compression with k_c until the bottom (q_rd up
+    through 0), then k_d; no liftoff event (past liftoff the stance equations continue)."""
+    nan = math.nan
+    if not (math.isfinite(t) and t >= 0.0 and ec.valid_polar(q_r_td, q_rd_td, q_th_td, q_thd_td, l0)):
+        return (nan, nan, nan, nan, ec.INVALID_INPUT)
+    r_min = COLLAPSE_FRACTION * l0
+    pe = (q_r_lo, r_min)
+    y0 = np.array((q_r_td, q_rd_td, q_th_td, q_thd_td))
+    y = np.empty(4)
+    code, t_end, event, _ = dop853.solve(
+        ec.POLAR_FIELD(), (m, l0, k_c, g_s), ec.STANCE_EVENTS(), pe, _TO_BOTTOM, 0.0, y0, t,
+        rtol, atol, max_step(m, l0, k_c, g_s), ec.N_POLAR, y,
+    )  # fmt: skip
+    if code == dop853.EVENT and event == ec.EV_RADIAL and t_end < t:
+        y[ec.Q_RD] = 0.0
+        y_b = y.copy()
+        code, t_end, event, _ = dop853.solve(
+            ec.POLAR_FIELD(), (m, l0, k_d, g_s), ec.STANCE_EVENTS(), pe, _AFTER_BOTTOM, t_end, y_b, t,
+            rtol, atol, max_step(m, l0, k_d, g_s), ec.N_POLAR, y,
+        )  # fmt: skip
+    if code == dop853.FAILED:
+        return (nan, nan, nan, nan, ec.INTEGRATION_FAILED)
+    if code == dop853.EVENT and event != ec.EV_RADIAL:
+        return (nan, nan, nan, nan, ec.FALL)
+    return (y[0], y[1], y[2], y[3], ec.OK)

@@ -5,8 +5,11 @@ Conventions (report Table 1, SI units throughout)
 * Leg angle ``q_th`` is measured from the vertical, counterclockwise positive. The body sits at
   ``(b_x, b_y) = (-q_r sin q_th, q_r cos q_th)`` relative to the toe, which is at the origin of a
   flat ground ``y = 0`` during stance.
-* The runner moves in ``+x``: at touchdown normally ``q_th > 0`` (toe ahead of the body) and
-  ``q_thd < 0``.
+* Running toward ``+x``, at touchdown normally ``q_th > 0`` (toe ahead of the body) and
+  ``q_thd < 0``; running toward ``-x`` (a negative apex speed) is its mirror image. A step's
+  direction is the sign of its apex speed (0: a hop in place); the liftoff must not move against it
+  (``LIFTOFF_BACKWARD``). The touchdown ground may lie ``ground`` higher than the ground under the
+  apex (a step up is positive); heights after touchdown are above the new ground.
 * Polar stance state, everywhere in this module: ``(q_r, q_rd, q_th, q_thd)`` (leg length, its
   rate, leg angle, its rate). Cartesian stance state: ``(b_x, b_xd, b_y, b_yd)`` of the body
   relative to the toe.
@@ -17,7 +20,7 @@ Conventions (report Table 1, SI units throughout)
 Events (report section 2.1)
 ---------------------------
 * Apex: ``b_yd = 0`` in flight. Touchdown: ``q_r = q_r_td`` while descending, which needs the apex
-  above the touchdown height ``q_r_td cos q_th_td`` (else ``APEX_TOO_LOW``). The flight phases are
+  above the touchdown height ``ground + q_r_td cos q_th_td`` (else ``APEX_TOO_LOW``). The flight phases are
   ballistic and solved in closed form by the generated kernels ``flight.apex_to_touchdown`` and
   ``flight.liftoff_to_apex``.
 * Bottom: ``q_rd`` crosses 0 upward during stance (end of compression). The state is continuous
@@ -64,11 +67,12 @@ from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import MESSAGES, Status
 from slipmaps.runtime.api.params import SlipParams
-from slipmaps.runtime.api.validate import PolarState, polar_state
+from slipmaps.runtime.api.validate import POLAR_NAMES, PolarState, polar_state
 from slipmaps.runtime.api.validate import check_params as _check_params
 from slipmaps.runtime.api.validate import leg_angle as _leg_angle
 from slipmaps.runtime.api.validate import non_negative as _non_negative
 from slipmaps.runtime.api.validate import positive as _positive
+from slipmaps.runtime.api.validate import real as _real
 
 __all__ = [
     "COLLAPSE_FRACTION",
@@ -146,8 +150,10 @@ class StepResult:
     ``apex`` and ``next_apex`` are ``(height, speed)`` pairs (NaN when unknown or not reached).
     ``t_descent`` is the flight time from the apex to touchdown, ``t_ascent`` and ``dx_ascent`` the
     flight time and horizontal distance from liftoff to the next apex; ``t_bottom`` and
-    ``t_stance`` are measured from touchdown. The first failing stage's status propagates;
-    ``stance`` is the full :class:`StanceResult` (with the dense trajectory if requested).
+    ``t_stance`` are measured from touchdown. ``step_length`` is the horizontal distance from the
+    apex to the next apex, ``(foot_x, foot_y)`` the foot at touchdown relative to the apex. The
+    first failing stage's status propagates; ``stance`` is the full :class:`StanceResult` (with
+    the dense trajectory if requested).
     """
 
     status: Status
@@ -162,6 +168,9 @@ class StepResult:
     t_descent: float = math.nan
     t_ascent: float = math.nan
     dx_ascent: float = math.nan
+    step_length: float = math.nan
+    foot_x: float = math.nan
+    foot_y: float = math.nan
     stance: StanceResult | None = field(default=None, compare=False, repr=False)
 
     @property
@@ -301,8 +310,11 @@ def _integrate_phase(
     rtol: float,
     atol: float,
     max_step: float,
-    dense: bool,
+    dense: bool | np.ndarray,
 ) -> _Phase:
+    """One subphase; ``dense``: True for the steps and dense samples (:func:`_samples`), or the
+    times (sorted) at which to evaluate the dense output (those inside the subphase are kept)."""
+
     def fun(_t: float, y: np.ndarray) -> Sequence[float]:
         return coords.rhs(y, k)
 
@@ -317,7 +329,7 @@ def _integrate_phase(
                 rtol=rtol,
                 atol=atol,
                 max_step=max_step,
-                dense_output=dense,
+                dense_output=dense is not False,
             )
     except (ArithmeticError, ValueError, RuntimeError, ZeroDivisionError) as exc:
         return _Phase(None, math.nan, None, np.empty(0), np.empty((4, 0)), f"{type(exc).__name__}: {exc}")
@@ -333,13 +345,24 @@ def _integrate_phase(
         y_ev = np.asarray(sol.y_events[i][0], dtype=float)
         if not np.all(np.isfinite(y_ev)):
             return _Phase(None, math.nan, None, sol.t, sol.y, "the event state is non-finite")
-        t, y = _samples(sol) if dense else (sol.t, sol.y)
+        t, y = _samples(sol, dense, t0, t_ev)
         return _Phase(events[i].__name__, t_ev, y_ev, t, y)
-    t, y = _samples(sol) if dense else (sol.t, sol.y)
+    t, y = _samples(sol, dense, t0, float(sol.t[-1]))
     return _Phase(None, float(sol.t[-1]), None, t, y)
 
 
-def _samples(sol) -> tuple[np.ndarray, np.ndarray]:
+def _samples(sol, dense: bool | np.ndarray, t0: float, t1: float) -> tuple[np.ndarray, np.ndarray]:
+    """The subphase's samples: its steps (``dense`` False), the steps plus dense samples (True),
+    or its dense output at the given times inside (t0, t1] (t0 too for the first subphase, at 0)."""
+    if dense is False:
+        return sol.t, sol.y
+    if dense is True:
+        return _step_samples(sol)
+    times = dense[((dense > t0) | ((dense == t0) & (t0 == 0.0))) & (dense <= t1)]
+    return times, (sol.sol(times) if times.size else np.empty((sol.y.shape[0], 0)))
+
+
+def _step_samples(sol) -> tuple[np.ndarray, np.ndarray]:
     """The integrator's steps plus _DENSE_PER_STEP - 1 interpolated samples inside each step."""
     ts = sol.t
     if ts.size < 2 or sol.sol is None:
@@ -392,7 +415,9 @@ def _stance(
     td = polar_state(params, touchdown)
     rtol_f, atol_f = _tolerances(rtol, atol)
     t_end = default_t_max(params) if t_max is None else _positive("t_max", t_max)
-    dense = bool(dense)
+    at_times = not isinstance(dense, bool)
+    if at_times:
+        dense = np.sort(np.asarray(dense, dtype=float))
 
     if td[1] >= 0.0:
         return StanceResult(
@@ -417,7 +442,7 @@ def _stance(
     pieces_y: list[np.ndarray] = []
 
     def dense_fields() -> dict:
-        if not dense:
+        if dense is False:
             return {}
         t = np.concatenate(pieces_t) if pieces_t else np.empty(0)
         ys = np.concatenate(pieces_y, axis=1) if pieces_y else np.empty((4, 0))
@@ -455,7 +480,7 @@ def _stance(
         _max_step(params, params.k_c),
         dense,
     )
-    if dense:
+    if dense is not False:
         pieces_t.append(comp.t)
         pieces_y.append(comp.y)
     if comp.event != "bottom":
@@ -464,7 +489,7 @@ def _stance(
     t_bottom = comp.t_event
     y_b = c.stop_radial(comp.y_event)
     bottom = c.to_polar(y_b)
-    if dense and pieces_y[-1].shape[1] > 0:
+    if dense is True and pieces_y[-1].shape[1] > 0:
         pieces_y[-1] = pieces_y[-1].copy()
         pieces_y[-1][:, -1] = y_b  # the event sample, with q_rd = 0 exactly
     known = {"bottom": bottom, "t_bottom": t_bottom}
@@ -497,9 +522,10 @@ def _stance(
         _max_step(params, params.k_d),
         dense,
     )
-    if dense:
-        pieces_t.append(dec.t[1:])
-        pieces_y.append(dec.y[:, 1:])
+    if dense is not False:
+        first = 0 if at_times else 1  # the step samples start at the bottom, already sampled
+        pieces_t.append(dec.t[first:])
+        pieces_y.append(dec.y[:, first:])
     if dec.event != "liftoff":
         return failure(dec, "decompression", **known)
 
@@ -566,6 +592,8 @@ def _step_from_touchdown(
     dense: bool,
     rtol: float,
     atol: float,
+    direction: float,
+    foot: tuple[float, float] = _NAN2,
 ) -> StepResult:
     stance = simulate_stance(params, touchdown, dense=dense, rtol=rtol, atol=atol)
     common = {
@@ -580,7 +608,9 @@ def _step_from_touchdown(
     }
     if not stance.ok:
         return StepResult(stance.status, f"stance: {stance.message}", **common)
-    y_apex, xd_apex, t_ascent, dx_ascent, code = gen_flight.liftoff_to_apex(*stance.liftoff, params.g_f)
+    y_apex, xd_apex, t_ascent, dx_ascent, apex_b_x, code = gen_flight.liftoff_to_apex(
+        *stance.liftoff, params.g_f, direction
+    )
     status = Status(int(code))
     if status != Status.OK:
         b_x, b_xd, b_y, b_yd = stance.liftoff_cartesian
@@ -592,6 +622,9 @@ def _step_from_touchdown(
         next_apex=(float(y_apex), float(xd_apex)),
         t_ascent=float(t_ascent),
         dx_ascent=float(dx_ascent),
+        step_length=float(foot[0] + apex_b_x),
+        foot_x=float(foot[0]),
+        foot_y=float(foot[1]),
         **common,
     )
 
@@ -602,37 +635,45 @@ def simulate_step(
     apex_speed: float,
     q_th_td: float,
     *,
+    ground: float = 0.0,
     dense: bool = False,
     rtol: float = DEFAULT_RTOL,
     atol: float = DEFAULT_ATOL,
 ) -> StepResult:
-    """One exact step: apex ``(apex_height, apex_speed)`` -> next apex, leg held at ``q_th_td``.
+    """One exact step: apex ``(apex_height, apex_speed)`` -> next apex, leg held at ``q_th_td``,
+    touching down on ground ``ground`` higher than the ground under the apex.
 
     The descent to the touchdown of a leg of length ``params.q_r_td`` at angle ``q_th_td`` and the
     ascent from liftoff to the next apex are ballistic with ``g_f`` (generated kernels); the stance
-    is :func:`simulate_stance`. ValueError for a non-finite or negative apex height or speed, or a
-    non-finite ``q_th_td`` with ``|q_th_td| >= pi/2``; every other failure is a status.
+    is :func:`simulate_stance`. The speed is signed (module docstring). ValueError for a non-finite
+    or negative apex height, a non-finite speed or ground, or ``|q_th_td| >= pi/2``; every other
+    failure is a status.
     """
     _check_params(params)
     h = _non_negative("apex_height", apex_height)
-    v = _non_negative("apex_speed", apex_speed)
+    v = _real("apex_speed", apex_speed)
     th = _leg_angle("q_th_td", q_th_td)
+    ground = _real("ground", ground)
     rtol_f, atol_f = _tolerances(rtol, atol)
-    y_td = params.q_r_td * math.cos(th)
+    y_td = ground + params.q_r_td * math.cos(th)
     detail = f"apex height {h!r}, touchdown height {y_td!r}"
     if not h > y_td:
-        # The touchdown event (report section 2.1) needs the body to descend to q_r_td cos q_th_td;
-        # checked here as well as in the kernel so that no NaN state can reach the stance.
+        # The touchdown event (report section 2.1) needs the body to descend to ground + q_r_td cos
+        # q_th_td; checked here as well as in the kernel so that no NaN state can reach the stance.
         status = Status.APEX_TOO_LOW
         return StepResult(status, f"apex -> touchdown: {_message(status, detail)}", apex=(h, v))
-    *td, t_descent, code = gen_flight.apex_to_touchdown(h, v, th, params.q_r_td, params.g_f)
+    *td, t_descent, foot_x, code = gen_flight.apex_to_touchdown(h, v, th, params.q_r_td, params.g_f, ground)
     status = Status(int(code))
     if status == Status.OK and not all(math.isfinite(x) for x in (*td, t_descent)):
         status, detail = Status.INVALID_INPUT, f"{detail}; apex_to_touchdown returned {(*td, t_descent)!r}"
     if status != Status.OK:
         return StepResult(status, f"apex -> touchdown: {_message(status, detail)}", apex=(h, v))
     touchdown = tuple(float(x) for x in td)
-    return _step_from_touchdown(params, touchdown, (h, v), float(t_descent), dense, rtol_f, atol_f)
+    direction = float(np.sign(v))
+    foot = (float(foot_x), ground - h)
+    return _step_from_touchdown(
+        params, touchdown, (h, v), float(t_descent), dense, rtol_f, atol_f, direction, foot
+    )
 
 
 def simulate_from_touchdown(
@@ -647,4 +688,112 @@ def simulate_from_touchdown(
     _check_params(params)
     rtol_f, atol_f = _tolerances(rtol, atol)
     td = polar_state(params, touchdown)
-    return _step_from_touchdown(params, td, _NAN2, math.nan, dense, rtol_f, atol_f)
+    direction = float(np.sign(gen.polar_to_cartesian(*td)[1]))  # the touchdown's horizontal velocity
+    return _step_from_touchdown(params, td, _NAN2, math.nan, dense, rtol_f, atol_f, direction)
+
+
+# ----------------------------------------------------------------------------------------------
+# The exact map's ``method="scipy"`` backend (runtime/api/calls.py's protocol)
+# ----------------------------------------------------------------------------------------------
+class _Row(tuple):
+    """A backend row (outputs, then the status) that carries the simulator's own message."""
+
+    message: str
+
+
+def _row(names, values: dict, status: Status, message: str) -> _Row:
+    ok = status == Status.OK
+    row = _Row((*(float(values[n]) if ok else math.nan for n in names), int(status)))
+    row.message = message
+    return row
+
+
+def stance_values(r: StanceResult | StepResult) -> dict[str, float]:
+    """A stance's (or a step's stance's) outputs by the index's names (NaN where not reached)."""
+    values = {"t_bottom": r.t_bottom, "t_stance": r.t_stance}
+    for group, state in (("bottom", r.bottom), ("liftoff", r.liftoff)):
+        values.update(zip((f"{group}_{n}" for n in POLAR_NAMES), state or (math.nan,) * 4, strict=True))
+    return values
+
+
+def step_values(r: StepResult) -> dict[str, float]:
+    """A step's stance and apex-return outputs by the index's names (NaN where not reached)."""
+    return {
+        **stance_values(r),
+        "apex_height": r.next_apex[0],
+        "apex_speed": r.next_apex[1],
+        "t_descent": r.t_descent,
+        "t_ascent": r.t_ascent,
+        "step_length": r.step_length,
+        "foot_x": r.foot_x,
+        "foot_y": r.foot_y,
+    }
+
+
+class ReferenceBackend:
+    """The solve_ivp simulator as the exact map's backend (option ``method="scipy"``): stance,
+    apex return and the state at given times, one row at a time (rows loop in Python, with a
+    progress bar); no Jacobian (the compiled simulator's variational equations give those)."""
+
+    def _tolerances(self, call) -> dict[str, float]:
+        return {"rtol": call.values["rtol"], "atol": call.values["atol"]}
+
+    def scalar(self, call, role: str, inputs) -> _Row:
+        names = call.spec(role).outputs
+        p = call.params
+        if role == "stance":
+            td = tuple(inputs[n] for n in call.spec("stance").rows)
+            r = simulate_stance(p, td, **self._tolerances(call))
+            return _row(names, stance_values(r), r.status, r.message)
+        if role == "apex_return":
+            r = simulate_step(
+                p, inputs["b_y_apex"], inputs["b_xd_apex"], inputs["q_th_td"], ground=inputs["ground"],
+                **self._tolerances(call),
+            )  # fmt: skip
+            return _row(names, step_values(r), r.status, r.message)
+        if role.endswith("_jacobian"):
+            raise ValueError(
+                "the exact Jacobian comes from the compiled simulator's variational equations; "
+                "method='scipy' has none (use the default method='compiled')"
+            )
+        raise ValueError(f"the solve_ivp reference has no {role} on its own")
+
+    def rows(self, call, role, rows, inputs, n, show):
+        from slipmaps.runtime.api.progress import progress
+
+        if role == "state_at":
+            return self._states(call, rows["t"], inputs)
+        out = np.full((n, len(call.spec(role).outputs)), math.nan)
+        status = np.empty(n, dtype=np.int64)
+        for i in progress(range(n), n, f"exact {role.replace('_', ' ')}", show):
+            try:
+                res = self.scalar(call, role, {**inputs, **{k: float(v[i]) for k, v in rows.items()}})
+            except ValueError:
+                if role.endswith("_jacobian"):
+                    raise
+                status[i] = int(Status.INVALID_INPUT)
+                continue
+            status[i] = res[-1]
+            out[i] = res[:-1]
+        return out, status
+
+    def _states(self, call, times: np.ndarray, inputs):
+        """The state at ``times`` from solve_ivp's dense output of the stance (its 7th-order
+        interpolants; a time past the stance's end is the end's status, NaN)."""
+        td = tuple(inputs[n] for n in call.spec("stance").rows)
+        order = np.argsort(times, kind="stable")
+        r = _stance(
+            call.params, td, _polar_coords, times[order], call.values["rtol"], call.values["atol"], None
+        )
+        n = times.shape[0]
+        out = np.full((n, 4), math.nan)
+        status = np.full(n, int(r.status if not r.ok else Status.NO_LIFTOFF), dtype=np.int64)
+        if r.t is not None and r.t.size:
+            reached = order[: r.t.size]
+            out[reached] = r.states.T
+            status[reached] = int(Status.OK)
+        return out, status
+
+
+#: The backend named by the exact map's declaration (``derive/maps/exact.py``).
+BACKEND = ReferenceBackend()

@@ -34,8 +34,8 @@ from slipmaps.generated.status import Status
 from ..api import index
 from ..api.maps import apex_return_batch, stance_batch
 from ..api.progress import progress
-from ..exact import backend as exact_map
-from ..exact.reference import StepResult, simulate_step
+from ..api.results import APEX_RETURN, STANCE
+from ..exact.reference import StepResult, simulate_step, step_values
 from .grids import GRIDS, Grid
 from .quantities import QUANTITIES
 
@@ -162,8 +162,10 @@ def run_maps(
         [s.touchdown if s is not None and s.touchdown is not None else (math.nan,) * 4 for s in exact]
     )
     status = np.array([int(s.status) if s is not None else -1 for s in exact], dtype=np.int64)
-    names = exact_map.STEP_NAMES
-    rows = np.array([exact_map.step_row(s) if s is not None else [math.nan] * len(names) for s in exact])
+    names = tuple(dict.fromkeys(STANCE + APEX_RETURN))  # every stance output, then the step's others
+    rows = np.array(
+        [[step_values(s)[n] if s is not None and s.ok else math.nan for n in names] for s in exact]
+    )
     cols = {n: rows.reshape(-1, len(names))[:, j] for j, n in enumerate(names)}
     run = GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols)
     for var in chosen:

@@ -3,7 +3,8 @@
 Quantities (SI units; leg angle from the vertical, counterclockwise positive):
 
 - the inputs of the batch API of the sweep's kind: ``apex_return`` (:func:`slipmaps.apex_return_batch`)
-  ``apex_height`` [m], ``apex_speed`` [m/s], ``touchdown_angle`` [rad]; ``stance``
+  ``apex_height`` [m], ``apex_speed`` [m/s] (signed), ``touchdown_angle`` [rad], ``ground`` [m]
+  (default 0); ``stance``
   (:func:`slipmaps.stance_batch`) the polar touchdown state ``q_r_td`` [m], ``q_rd_td`` [m/s],
   ``q_th_td`` [rad], ``q_thd_td`` [rad/s] (the names of the generated index);
 - the parameters: every :class:`~slipmaps.SlipParams` field (``m``, ``l0``, ``k_c``, ``k_d``, ``g_s``,
@@ -28,8 +29,9 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from slipmaps.derive import params as _table
 
-from ..api.validate import leg_angle, non_negative, positive, real
+from ..api.validate import CHECKS, leg_angle, positive, real
 
 __all__ = [
     "Quantity",
@@ -62,17 +64,18 @@ class Quantity:
     doc: str
     role: str
     check: Callable[[str, object], float]  # ValueError naming the quantity when out of its domain
-    optional: bool = False  # an input that defaults to the row's parameter of the same name
+    optional: bool = False  # an input with a default: ``default``, or the parameter of its name
+    default: float | None = None
 
 
 def _any_real(name: str, value: object) -> float:
     return real(name, value)
 
 
-_APEX_INPUTS = (
-    Quantity("apex_height", "m", "apex height of the body above the ground", "input", non_negative),
-    Quantity("apex_speed", "m/s", "horizontal apex speed", "input", non_negative),
-    Quantity("touchdown_angle", "rad", "touchdown leg angle q_th_td, |q_th_td| < pi/2", "input", leg_angle),
+#: The apex-return inputs (``derive/params.py``); ``ground`` is optional (0: flat ground).
+_APEX_INPUTS = tuple(
+    Quantity(r["name"], r["unit"], r["doc"], "input", CHECKS[r["domain"]], "default" in r, r.get("default"))
+    for r in _table.APEX_INPUTS
 )
 _STANCE_INPUTS = (
     Quantity(
@@ -85,17 +88,18 @@ _STANCE_INPUTS = (
 #: The inputs of each kind of sweep, in the order of its batch API.
 KINDS: dict[str, tuple[Quantity, ...]] = {"apex_return": _APEX_INPUTS, "stance": _STANCE_INPUTS}
 
+
+def _param(name: str, row: dict) -> Quantity:
+    default = f" (default {row['default']})" if isinstance(row.get("default"), str) else ""
+    return Quantity(name, row["unit"], row["doc"] + default, "param", positive)
+
+
+#: The parameters (``derive/params.py``: the fields, then the aliases), and the stiffness ratio.
 _PARAMS = (
-    Quantity("m", "kg", "body mass", "param", positive),
-    Quantity("l0", "m", "rest leg length", "param", positive),
-    Quantity("k", "N/m", "leg stiffness (k_c = k_d = k)", "param", positive),
-    Quantity("k_c", "N/m", "leg stiffness while compressing", "param", positive),
-    Quantity("k_d", "N/m", "leg stiffness after the bottom", "param", positive),
+    *(_param(r["name"], r) for r in _table.PARAMETERS[:2]),
+    *(_param(name, a) for name, a in _table.ALIASES.items()),
+    *(_param(r["name"], r) for r in _table.PARAMETERS[2:]),
     Quantity(RATIO, "1", "stiffness ratio k_d/k_c (k_d = k_c * ratio)", "param", positive),
-    Quantity("g_s", "m/s^2", "gravitational acceleration in stance", "param", positive),
-    Quantity("g_f", "m/s^2", "gravitational acceleration in flight", "param", positive),
-    Quantity("q_r_td", "m", "touchdown leg length, 0 < q_r_td <= l0 (default l0)", "param", positive),
-    Quantity("q_r_lo", "m", "liftoff leg length, 0 < q_r_lo <= l0 (default l0)", "param", positive),
 )
 
 

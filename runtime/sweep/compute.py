@@ -85,9 +85,7 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
         for name in sweep.input_names
     }
     constants = {k: v for k, v in fixed.items() if k not in inputs}
-    from_params = [
-        q.name for q in KINDS[sweep.kind] if q.optional and q.name not in points and q.name not in fixed
-    ]
+    defaults = [q for q in KINDS[sweep.kind] if q.optional and q.name not in points and q.name not in fixed]
     outputs = {name: np.full(n, np.nan) for name in sweep.output_names}
     status = np.full(n, int(Status.INVALID_INPUT), dtype=np.int64)
     opts = dict(sweep.options)
@@ -96,11 +94,11 @@ def compute_rows(sweep: Sweep, start: int, stop: int) -> dict[str, np.ndarray]:
             params = slip_params({**constants, **values})
         except ValueError:
             continue  # INVALID_INPUT, NaN outputs
-        for name in from_params:  # an input left to the parameters (a stance's q_r_td)
-            inputs[name][rows] = getattr(params, name)
+        for q in defaults:  # an input left to its default (ground 0) or the parameters (a stance's q_r_td)
+            inputs[q.name][rows] = getattr(params, q.name) if q.default is None else q.default
         if sweep.kind == "apex_return":
-            args = [inputs[q][rows] for q in sweep.input_names]
-            res = apex_return_batch(sweep.map, params, *args, progress=False, **opts)
+            args = {q: inputs[q][rows] for q in sweep.input_names}
+            res = apex_return_batch(sweep.map, params, **args, progress=False, **opts)
         else:
             td = np.column_stack([inputs[q][rows] for q in sweep.input_names])
             res = stance_batch(sweep.map, params, td, progress=False, **opts)

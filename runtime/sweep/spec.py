@@ -134,7 +134,7 @@ def _check_params(info: MapInfo, constants: dict[str, float], axes: list[Axis]) 
                 + ", ".join(others)
             )
     probe = {n: a.bounds()[1] if n == "l0" else a.bounds()[0] for n, a in swept.items()}
-    info.param_values(slip_params({**constants, **probe}))
+    info.check_params(slip_params({**constants, **probe}))
 
 
 @dataclass(frozen=True, init=False)
