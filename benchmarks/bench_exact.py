@@ -133,6 +133,9 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
             f8,
             types.int64,
             arr,
+            f8,
+            arr,
+            types.boolean,
         )
     )(dop853.solve.py_func)
 
@@ -142,14 +145,48 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     def run_fc(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += solve_fc(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
+            acc += solve_fc(
+                rhs,
+                p,
+                ev,
+                pe,
+                direction,
+                0.0,
+                rows[i],
+                10.0,
+                rtol,
+                atol,
+                cap,
+                4,
+                y_end,
+                math.inf,
+                y_end,
+                False,
+            )[1]
         return acc
 
     @njit
     def run_disp(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += dop853.solve(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
+            acc += dop853.solve(
+                rhs,
+                p,
+                ev,
+                pe,
+                direction,
+                0.0,
+                rows[i],
+                10.0,
+                rtol,
+                atol,
+                cap,
+                4,
+                y_end,
+                math.inf,
+                y_end,
+                False,
+            )[1]
         return acc
 
     rows = np.ascontiguousarray(td[:2000])

@@ -192,6 +192,9 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
         max_step(m, l0, k_c, g_s),
         N_POLAR,
         y_b,
+        math.inf,
+        y_b,
+        False,
     )
     if code != dop853.EVENT or event != EV_RADIAL:
         return failure_status(code, event)
@@ -217,6 +220,9 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
         max_step(m, l0, k_d, g_s),
         N_POLAR,
         y_lo,
+        math.inf,
+        y_lo,
+        False,
     )
     if code != dop853.EVENT or event != EV_LIFTOFF:
         return failure_status(code, event)

@@ -175,6 +175,9 @@ def jacobian_into(
         max_step(m, l0, k_c, g_s),
         N_POLAR,
         z_b,
+        math.inf,
+        z_b,
+        False,
     )
     if code != dop853.EVENT or event != ec.EV_RADIAL:
         return ec.failure_status(code, event)
@@ -213,6 +216,9 @@ def jacobian_into(
         max_step(m, l0, k_d, g_s),
         N_POLAR,
         z_lo,
+        math.inf,
+        z_lo,
+        False,
     )
     if code != dop853.EVENT or event != ec.EV_LIFTOFF:
         return ec.failure_status(code, event)
