@@ -1,6 +1,6 @@
 """The exact stance and step compiled with numba: the default ``"exact"`` map.
 
-The same hybrid simulation as :mod:`.simulate` (its docstring states the conventions, the events
+The same hybrid simulation as :mod:`.reference` (its docstring states the conventions, the events
 and the statuses; they are not restated differently here), integrated by the compiled DOP853 of
 :mod:`.dop853` instead of ``solve_ivp``:
 
@@ -8,20 +8,27 @@ and the statuses; they are not restated differently here), integrated by the com
   to exactly 0 there, report section 2.2.1), then decompression with ``k_d`` until ``q_r`` crosses
   ``q_r_lo`` upward (liftoff); the right-hand side is the generated kernel
   ``slip_model.stance_polar_rhs`` (report eqs (2)-(3));
-* failures as :mod:`.simulate` reports them: ``TOUCHDOWN_NOT_COMPRESSING`` (``q_rd >= 0`` at
+* failures as :mod:`.reference` reports them: ``TOUCHDOWN_NOT_COMPRESSING`` (``q_rd >= 0`` at
   touchdown), ``FALL`` (``cos q_th`` crosses 0, or ``q_r <= COLLAPSE_FRACTION l0``),
   ``NO_LIFTOFF`` (bottom leg length ``>= q_r_lo``, or ``t_max`` reached), ``RECOMPRESSION`` (the
   ``k_d`` spring cannot extend the leg at the bottom, or ``q_rd`` crosses 0 downward after it),
   ``INTEGRATION_FAILED``; the flights are the generated ``flight.apex_to_touchdown`` /
   ``flight.liftoff_to_apex`` (``APEX_TOO_LOW``, ``LIFTOFF_DOWNWARD``, ``LIFTOFF_BACKWARD``);
-* the same tolerances (``DEFAULT_RTOL``, ``DEFAULT_ATOL``), step cap (:func:`.simulate.max_step`) and
-  time limit (:func:`.simulate.default_t_max`) as the solve_ivp reference.
+* the same tolerances (``DEFAULT_RTOL``, ``DEFAULT_ATOL``), step cap (:func:`.reference.max_step`)
+  and time limit (:func:`.reference.default_t_max`) as the solve_ivp reference.
+
+One driver, :func:`hybrid_stance`, holds the hybrid stance (the events, the touchdown and bottom
+checks, the failure statuses) once for every exact kernel: it takes the vector field as an
+argument (a :func:`.dop853.static` handle; the integrated state may carry more than the polar
+state, controlled by its first four components) and a step to run at the bottom (nothing here; the
+saltation of :mod:`.jacobian`, whose own code keeps the sensitivity-specific steps).
 
 Kernels (``@njit``, never raise; NaN outputs unless the status is OK):
 
 * :func:`stance_into` (touchdown state -> one row of :data:`STANCE_NAMES`, returns the status) and
   :func:`stance_batch` (parallel, ``prange``, one status per row; ``INVALID_INPUT`` for a row that
-  is not finite, has ``q_r`` outside ``(0, l0]`` or ``|q_th| >= pi/2``);
+  is not finite, has ``q_r`` outside ``(0, l0]`` or ``|q_th| >= pi/2``, or parameters outside
+  SlipParams' domain);
 * :func:`step_into` (apex height, apex speed, touchdown angle -> one row of :data:`STEP_NAMES`:
   every stance output, then the apex-return outputs) and :func:`step_batch`.
 
@@ -93,8 +100,8 @@ T_ASCENT = STEP_NAMES.index("t_ascent")
 if STEP_NAMES[:N_STANCE] != STANCE_NAMES:
     raise RuntimeError("STEP_NAMES must start with the stance columns")
 
-# Events, in simulate.py's order (ties go to the first); both subphases watch the same event
-# functions with their own directions (NaN: not watched), so the integrator is compiled once.
+# Events, in simulate.py's order (ties go to the first); every run watches the same event functions
+# with its own directions (NaN: not watched), so the integrator is compiled once per vector field.
 EV_LIFTOFF, EV_RADIAL, EV_FALL, EV_COLLAPSE = 0, 1, 2, 3  # q_r - q_r_lo, q_rd, cos q_th, q_r - r_min
 #: Compression: the bottom (q_rd up through 0), fall, collapse.
 COMPRESSION_DIRECTIONS = np.array([math.nan, +1.0, -1.0, -1.0])
@@ -111,6 +118,9 @@ RECOMPRESSION = int(Status.RECOMPRESSION)
 INTEGRATION_FAILED = int(Status.INTEGRATION_FAILED)
 
 _JIT = {"cache": True, "error_model": "numpy"}
+#: The driver takes the vector field and the bottom step as arguments (dop853's ``_GENERIC``): it
+#: is compiled into each (cached) caller, once per vector field.
+_GENERIC = {"error_model": "numpy"}
 
 
 @njit(**_JIT)
@@ -134,8 +144,14 @@ def stance_events(t, y, pe, g):
     g[EV_COLLAPSE] = y[Q_R] - r_min
 
 
+@njit(**_JIT)
+def no_bottom_step(z_b, m, l0, k_c, k_d, g_s, work):
+    """The plain stance's step at the bottom: nothing (the Jacobian's is its saltation)."""
+
+
 POLAR_FIELD = dop853.static(polar_field)
 STANCE_EVENTS = dop853.static(stance_events)
+NO_BOTTOM_STEP = dop853.static(no_bottom_step)
 
 
 @njit(**_JIT)
@@ -158,9 +174,208 @@ def valid_polar(q_r, q_rd, q_th, q_thd, l0):
 
 
 @njit(**_JIT)
+def valid_parameters(m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+    """SlipParams' domain (finite, positive, 0 < q_r_lo <= l0) and positive finite tolerances: the
+    integrator's step control needs them (a NaN tolerance or m = 0 never ends a step)."""
+    finite = (
+        math.isfinite(m)
+        and math.isfinite(l0)
+        and math.isfinite(k_c)
+        and math.isfinite(k_d)
+        and math.isfinite(g_s)
+        and math.isfinite(q_r_lo)
+        and math.isfinite(rtol)
+        and math.isfinite(atol)
+    )
+    positive = m > 0.0 and l0 > 0.0 and k_c > 0.0 and k_d > 0.0 and g_s > 0.0 and rtol > 0.0 and atol > 0.0
+    return finite and positive and 0.0 < q_r_lo <= l0
+
+
+@njit(**_JIT)
+def touchdown_status(q_r, q_rd, q_th, q_thd, l0):
+    """The checks of a touchdown state before the compression: INVALID_INPUT (not a polar state),
+    TOUCHDOWN_NOT_COMPRESSING (q_rd >= 0), FALL (leg length already collapsed), else OK."""
+    if not valid_polar(q_r, q_rd, q_th, q_thd, l0):
+        return INVALID_INPUT
+    if q_rd >= 0.0:
+        return TOUCHDOWN_NOT_COMPRESSING
+    if q_r <= COLLAPSE_FRACTION * l0:
+        return FALL
+    return OK
+
+
+@njit(**_JIT)
+def bottom_status(q_r_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, t_bottom, t_max):
+    """The checks of a bottom state (q_rd = 0) before the decompression: NO_LIFTOFF (q_r_b >=
+    q_r_lo: q_r can never cross q_r_lo upward), RECOMPRESSION (the k_d spring cannot start
+    extending the leg), NO_LIFTOFF (no time left), FALL (a collapsed leg: a bottom given as such;
+    the compression stops at the collapse), else OK."""
+    if q_r_b >= q_r_lo:
+        return NO_LIFTOFF
+    if not stance_polar_rhs(q_r_b, 0.0, q_th_b, q_thd_b, m, l0, k_d, g_s)[Q_RD] > 0.0:
+        return RECOMPRESSION
+    if t_bottom >= t_max:
+        return NO_LIFTOFF
+    if q_r_b <= COLLAPSE_FRACTION * l0:
+        return FALL
+    return OK
+
+
+@njit(**_GENERIC)
+def hybrid_stance(
+    field,
+    p_c,
+    p_d,
+    bottom_step,
+    work,
+    z_start,
+    from_touchdown,
+    to_liftoff,
+    m,
+    l0,
+    k_c,
+    k_d,
+    g_s,
+    q_r_lo,
+    rtol,
+    atol,
+    t_max,
+    t_sample,
+    y_sample,
+    z_b,
+    z_lo,
+):
+    """THE hybrid stance, the one copy of its events and checks, for every exact kernel.
+
+    Integrates the state z (the polar state in z[:4], then anything the vector field carries along
+    with the same steps: the Jacobian's sensitivities) by :func:`.dop853.solve`:
+
+    * from a touchdown state (``from_touchdown``: :func:`touchdown_status`, then the compression
+      with ``field`` and parameters ``p_c`` from t = 0 until q_rd crosses 0 upward, watching the
+      fall and the collapse; ``q_rd`` set to exactly 0 there) or from a bottom state (``z_start``
+      with its q_rd, checked finite, replaced by 0, t = 0: the decompression half);
+    * unless it stops at the bottom (``to_liftoff`` False): :func:`bottom_status`, then
+      ``bottom_step(z_b, m, l0, k_c, k_d, g_s, work)`` (nothing for the plain stance,
+      :func:`no_bottom_step`; the Jacobian's saltation), then the decompression with ``field``,
+      ``p_d`` until q_r crosses q_r_lo upward, watching the recompression, the fall and the
+      collapse.
+
+    Both subphases share the step cap (:func:`.reference.max_step` of their stiffness), the time
+    limit ``t_max`` (from touchdown, or from the bottom given) and the first four components of
+    z as the step control; the sample ``t_sample`` (:func:`.dop853.solve`) goes into ``y_sample``
+    from the subphase it falls in (``inf``: none). Writes the bottom into ``z_b`` and the liftoff
+    into ``z_lo``; returns ``(status, t_bottom, t_end)``, ``t_end`` the liftoff time (the bottom's
+    when stopping there). The parameters are checked (:func:`valid_parameters`), the states by
+    :func:`touchdown_status` or :func:`valid_polar`: INVALID_INPUT, nothing integrated.
+    """
+    nan = math.nan
+    if not valid_parameters(m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+        return INVALID_INPUT, nan, nan
+    r_min = COLLAPSE_FRACTION * l0
+    pe = (q_r_lo, r_min)
+    t_bottom = 0.0
+    if from_touchdown:
+        status = touchdown_status(z_start[Q_R], z_start[Q_RD], z_start[Q_TH], z_start[Q_THD], l0)
+        if status != OK:
+            return status, nan, nan
+        code, t_bottom, event, _ = dop853.solve(
+            field,
+            p_c,
+            STANCE_EVENTS(),
+            pe,
+            COMPRESSION_DIRECTIONS,
+            0.0,
+            z_start,
+            t_max,
+            rtol,
+            atol,
+            max_step(m, l0, k_c, g_s),
+            N_POLAR,
+            z_b,
+            t_sample,
+            y_sample,
+            False,
+        )
+        if code != dop853.EVENT or event != EV_RADIAL:
+            return failure_status(code, event), nan, nan
+        z_b[Q_RD] = 0.0
+        if not to_liftoff:
+            return OK, t_bottom, t_bottom
+    else:
+        if not valid_polar(z_start[Q_R], z_start[Q_RD], z_start[Q_TH], z_start[Q_THD], l0):
+            return INVALID_INPUT, nan, nan
+        for i in range(z_b.shape[0]):
+            z_b[i] = z_start[i]
+        z_b[Q_RD] = 0.0
+    status = bottom_status(z_b[Q_R], z_b[Q_TH], z_b[Q_THD], m, l0, k_d, g_s, q_r_lo, t_bottom, t_max)
+    if status != OK:
+        return status, t_bottom, nan
+    bottom_step(z_b, m, l0, k_c, k_d, g_s, work)
+    code, t_lo, event, _ = dop853.solve(
+        field,
+        p_d,
+        STANCE_EVENTS(),
+        pe,
+        DECOMPRESSION_DIRECTIONS,
+        t_bottom,
+        z_b,
+        t_max,
+        rtol,
+        atol,
+        max_step(m, l0, k_d, g_s),
+        N_POLAR,
+        z_lo,
+        t_sample,
+        y_sample,
+        False,
+    )
+    if code != dop853.EVENT or event != EV_LIFTOFF:
+        return failure_status(code, event), t_bottom, nan
+    return OK, t_bottom, t_lo
+
+
+@njit(**_JIT)
 def _nan(out):
     for j in range(out.shape[0]):
         out[j] = math.nan
+
+
+@njit(**_JIT)
+def _polar(q_r, q_rd, q_th, q_thd):
+    return np.array((q_r, q_rd, q_th, q_thd))
+
+
+@njit(**_JIT)
+def _plain(
+    y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, from_touchdown, to_liftoff, t_sample, y_sample
+):
+    """:func:`hybrid_stance` of the polar state alone: (status, t_bottom, t_end, bottom, liftoff)."""
+    y_b = np.empty(N_POLAR)
+    y_lo = np.empty(N_POLAR)
+    status, t_bottom, t_end = hybrid_stance(
+        POLAR_FIELD(),
+        (m, l0, k_c, g_s),
+        (m, l0, k_d, g_s),
+        NO_BOTTOM_STEP(),
+        y_lo,
+        y0,
+        from_touchdown,
+        to_liftoff,
+        m,
+        l0,
+        k_c,
+        k_d,
+        g_s,
+        q_r_lo,
+        rtol,
+        atol,
+        t_max,
+        t_sample,
+        y_sample,
+        y_b,
+        y_lo,
+    )
+    return status, t_bottom, t_end, y_b, y_lo
 
 
 @njit(**_JIT)
@@ -168,67 +383,15 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     """The exact stance from a polar touchdown state: writes the :data:`STANCE_NAMES` row into
     ``out[:N_STANCE]`` (NaN unless OK) and returns the status. Times from touchdown [s]."""
     _nan(out[:N_STANCE])
-    if not valid_polar(q_r_td, q_rd_td, q_th_td, q_thd_td, l0):
-        return INVALID_INPUT
-    if q_rd_td >= 0.0:
-        return TOUCHDOWN_NOT_COMPRESSING
-    r_min = COLLAPSE_FRACTION * l0
-    if q_r_td <= r_min:
-        return FALL
-    pe = (q_r_lo, r_min)
-    y0 = np.array((q_r_td, q_rd_td, q_th_td, q_thd_td))
-    y_b = np.empty(4)
-    code, t_bottom, event, _ = dop853.solve(
-        POLAR_FIELD(),
-        (m, l0, k_c, g_s),
-        STANCE_EVENTS(),
-        pe,
-        COMPRESSION_DIRECTIONS,
-        0.0,
-        y0,
-        t_max,
-        rtol,
-        atol,
-        max_step(m, l0, k_c, g_s),
-        N_POLAR,
-        y_b,
-        math.inf,
-        y_b,
-        False,
+    y0 = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
+    status, t_bottom, t_stance, y_b, y_lo = _plain(
+        y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, math.inf, y0
     )
-    if code != dop853.EVENT or event != EV_RADIAL:
-        return failure_status(code, event)
-    y_b[Q_RD] = 0.0
-    if y_b[Q_R] >= q_r_lo:
-        return NO_LIFTOFF
-    if not stance_polar_rhs(y_b[Q_R], 0.0, y_b[Q_TH], y_b[Q_THD], m, l0, k_d, g_s)[Q_RD] > 0.0:
-        return RECOMPRESSION
-    if t_bottom >= t_max:
-        return NO_LIFTOFF
-    y_lo = np.empty(4)
-    code, t_stance, event, _ = dop853.solve(
-        POLAR_FIELD(),
-        (m, l0, k_d, g_s),
-        STANCE_EVENTS(),
-        pe,
-        DECOMPRESSION_DIRECTIONS,
-        t_bottom,
-        y_b,
-        t_max,
-        rtol,
-        atol,
-        max_step(m, l0, k_d, g_s),
-        N_POLAR,
-        y_lo,
-        math.inf,
-        y_lo,
-        False,
-    )
-    if code != dop853.EVENT or event != EV_LIFTOFF:
-        return failure_status(code, event)
+    if status != OK:
+        return status
     out[T_BOTTOM] = t_bottom
     out[T_STANCE] = t_stance
-    for j in range(4):
+    for j in range(N_POLAR):
         out[BOTTOM + j] = y_b[j]
         out[LIFTOFF + j] = y_lo[j]
     return OK
