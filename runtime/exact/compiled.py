@@ -398,20 +398,21 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
 
 
 @njit(**_JIT)
-def step_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out):
-    """One exact step, apex (height h [m], speed v [m/s]) with the leg at th [rad] -> next apex:
-    writes the :data:`STEP_NAMES` row into ``out`` (NaN unless OK) and returns the status
-    (simulate.py's ``simulate_step``: the first failing stage's)."""
-    _nan(out)
+def descent(h, v, th, q_r_td, g_f):
+    """Apex (height h, speed v) -> touchdown with the leg at th, the step's first stage (shared by
+    the step and its Jacobian): ``(q_r, q_rd, q_th, q_thd, t_descent, status)``. INVALID_INPUT for
+    a non-finite or negative apex or |th| >= pi/2 (or a non-finite flight), APEX_TOO_LOW, or the
+    generated ``flight.apex_to_touchdown``'s status."""
+    nan = math.nan
     if not (math.isfinite(h) and math.isfinite(v) and math.isfinite(th)):
-        return INVALID_INPUT
+        return nan, nan, nan, nan, nan, INVALID_INPUT
     if h < 0.0 or v < 0.0 or abs(th) >= 0.5 * math.pi:
-        return INVALID_INPUT
+        return nan, nan, nan, nan, nan, INVALID_INPUT
     if not h > q_r_td * math.cos(th):
-        return APEX_TOO_LOW
+        return nan, nan, nan, nan, nan, APEX_TOO_LOW
     q_r0, q_rd0, q_th0, q_thd0, t_descent, code = gen_flight.apex_to_touchdown(h, v, th, q_r_td, g_f)
     if code != OK:
-        return code
+        return nan, nan, nan, nan, nan, code
     if not (
         math.isfinite(q_r0)
         and math.isfinite(q_rd0)
@@ -419,7 +420,19 @@ def step_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t
         and math.isfinite(q_thd0)
         and math.isfinite(t_descent)
     ):
-        return INVALID_INPUT
+        return nan, nan, nan, nan, nan, INVALID_INPUT
+    return q_r0, q_rd0, q_th0, q_thd0, t_descent, OK
+
+
+@njit(**_JIT)
+def step_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out):
+    """One exact step, apex (height h [m], speed v [m/s]) with the leg at th [rad] -> next apex:
+    writes the :data:`STEP_NAMES` row into ``out`` (NaN unless OK) and returns the status
+    (simulate.py's ``simulate_step``: the first failing stage's)."""
+    _nan(out)
+    q_r0, q_rd0, q_th0, q_thd0, t_descent, code = descent(h, v, th, q_r_td, g_f)
+    if code != OK:
+        return code
     code = stance_into(q_r0, q_rd0, q_th0, q_thd0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out)
     if code != OK:
         _nan(out)

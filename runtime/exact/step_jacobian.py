@@ -8,7 +8,7 @@ touchdown angle, k_c, k_d) is the chain rule over the three:
 * the flights' derivatives are their generated JVP kernels (``generated/flight_jacobian.py``,
   forward-mode differentiation of the derived flight maps): the touchdown event of the descent is
   solved in closed form there, so its derivative is exact (it plays the part of the touchdown
-  saltation);
+  saltation); the descent's values and checks are the step's (:func:`.compiled.descent`);
 * the stance's is :func:`.exact_jacobian.jacobian_into` (variational equations with saltation at
   the bottom and the map to the liftoff surface).
 
@@ -23,7 +23,6 @@ import math
 
 import numpy as np
 from numba import njit, prange
-from slipmaps.generated.flight import apex_to_touchdown
 from slipmaps.generated.flight_jacobian import (
     apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td as descent_jvp,
 )
@@ -59,13 +58,7 @@ def step_jacobian_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol
         out[i] = math.nan
         for j in range(N_IN):
             jac[i, j] = math.nan
-    if not (math.isfinite(h) and math.isfinite(v) and math.isfinite(th)):
-        return ec.INVALID_INPUT
-    if h < 0.0 or v < 0.0 or abs(th) >= 0.5 * math.pi:
-        return ec.INVALID_INPUT
-    if not h > q_r_td * math.cos(th):
-        return ec.APEX_TOO_LOW
-    q_r0, q_rd0, q_th0, q_thd0, t_descent, code = apex_to_touchdown(h, v, th, q_r_td, g_f)
+    q_r0, q_rd0, q_th0, q_thd0, t_descent, code = ec.descent(h, v, th, q_r_td, g_f)
     if code != ec.OK:
         return code
     # d(touchdown state, t_descent) / d(h, v, th): one JVP per direction
