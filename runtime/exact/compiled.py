@@ -29,6 +29,8 @@ Kernels (``@njit``, never raise; NaN outputs unless the status is OK):
   :func:`stance_batch` (parallel, ``prange``, one status per row; ``INVALID_INPUT`` for a row that
   is not finite, has ``q_r`` outside ``(0, l0]`` or ``|q_th| >= pi/2``, or parameters outside
   SlipParams' domain);
+* :func:`half_into` (one half of the stance: touchdown -> bottom or bottom -> liftoff) and
+  :func:`state_at_into` (the state a time t after touchdown), behind :mod:`.kernels`;
 * :func:`step_into` (apex height, apex speed, touchdown angle -> one row of :data:`STEP_NAMES`:
   every stance output, then the apex-return outputs) and :func:`step_batch`.
 
@@ -59,9 +61,12 @@ from .reference import COLLAPSE_FRACTION, default_t_max, max_step
 __all__ = [
     "STANCE_NAMES",
     "STEP_NAMES",
+    "half_into",
+    "hybrid_stance",
     "stance_batch",
     "stance_into",
     "stance_values",
+    "state_at_into",
     "step_batch",
     "step_into",
     "step_values",
@@ -107,6 +112,8 @@ EV_LIFTOFF, EV_RADIAL, EV_FALL, EV_COLLAPSE = 0, 1, 2, 3  # q_r - q_r_lo, q_rd, 
 COMPRESSION_DIRECTIONS = np.array([math.nan, +1.0, -1.0, -1.0])
 #: Decompression: liftoff (q_r up through q_r_lo), recompression (q_rd down through 0), fall, collapse.
 DECOMPRESSION_DIRECTIONS = np.array([+1.0, -1.0, -1.0, -1.0])
+#: The stance equations continued beyond liftoff (:func:`state_at_into`): no event.
+CONTINUATION_DIRECTIONS = np.array([math.nan, math.nan, math.nan, math.nan])
 
 OK = int(Status.OK)
 INVALID_INPUT = int(Status.INVALID_INPUT)
@@ -394,6 +401,75 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     for j in range(N_POLAR):
         out[BOTTOM + j] = y_b[j]
         out[LIFTOFF + j] = y_lo[j]
+    return OK
+
+
+@njit(**_JIT)
+def half_into(q_r, q_rd, q_th, q_thd, m, l0, k, g_s, q_r_lo, rtol, atol, t_max, compression, out):
+    """One half of the stance with stiffness k: the compression (touchdown -> bottom,
+    ``compression`` True) or the decompression (bottom -> liftoff; q_rd is not read, 0 at the
+    bottom). Writes ``(t_half, end state)`` into ``out[:5]`` (NaN unless OK), returns the status;
+    ``t_half`` is the time from the half's start, ``t_max`` its own time limit."""
+    _nan(out[:5])
+    y0 = _polar(q_r, q_rd, q_th, q_thd)
+    status, t_bottom, t_end, y_b, y_lo = _plain(
+        y0, m, l0, k, k, g_s, q_r_lo, rtol, atol, t_max, compression, not compression, math.inf, y0
+    )
+    if status != OK:
+        return status
+    out[0] = t_end
+    end = y_b if compression else y_lo
+    for j in range(N_POLAR):
+        out[1 + j] = end[j]
+    return OK
+
+
+@njit(**_JIT)
+def state_at_into(
+    t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out
+):
+    """The polar state a time t after touchdown into ``out[:4]`` (NaN unless OK); returns the status.
+
+    The stance of :func:`stance_into` (the same steps; its status: a stance that fails has no
+    state), sampled at t on the integrator's dense output (compression with k_c for t before the
+    bottom, decompression with k_d from it; at t_bottom the bottom state, q_rd = 0); beyond
+    liftoff the stance equations with k_d continued from the liftoff state (no event, as the
+    approximate maps' closed forms go on), sampled the same way. Domain 0 <= t <= t_max, else
+    INVALID_INPUT.
+    """
+    _nan(out[:N_POLAR])
+    if not (math.isfinite(t) and 0.0 <= t <= t_max):
+        return INVALID_INPUT
+    y0 = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
+    y_at = np.full(N_POLAR, math.nan)
+    status, t_bottom, t_stance, y_b, y_lo = _plain(
+        y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, t, y_at
+    )
+    if status != OK:
+        return status
+    if t >= t_stance:  # beyond liftoff: the stance equations continued
+        code, _, _, _ = dop853.solve(
+            POLAR_FIELD(),
+            (m, l0, k_d, g_s),
+            STANCE_EVENTS(),
+            (q_r_lo, COLLAPSE_FRACTION * l0),
+            CONTINUATION_DIRECTIONS,
+            t_stance,
+            y_lo,
+            t_max,
+            rtol,
+            atol,
+            max_step(m, l0, k_d, g_s),
+            N_POLAR,
+            y0,
+            t,
+            y_at,
+            True,
+        )
+        if code != dop853.SAMPLED:
+            return failure_status(code, -1)
+    for j in range(N_POLAR):
+        out[j] = y_at[j]
     return OK
 
 

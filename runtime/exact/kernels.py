@@ -17,6 +17,22 @@ outputs followed by the status (all outputs NaN unless the status is OK). The st
 - :func:`stance_jacobian`: the same outputs, then d output_i / d input_j row-major over the inputs
   (q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d), status (variational equations,
   :mod:`.jacobian`).
+- :func:`compression`: touchdown state -> t_half (the bottom's time), the bottom state (q_rd = 0
+  exactly), status: the stance's touchdown checks and compression-phase failures; a bottom at or
+  beyond q_r_lo is the decompression's NO_LIFTOFF, not the compression's failure.
+- :func:`decompression`: bottom state -> t_half (from the bottom), the liftoff state, status: the
+  stance's bottom checks (NO_LIFTOFF when q_r_b >= q_r_lo, RECOMPRESSION when the k_d spring cannot
+  start extending the leg) and decompression-phase failures; q_rd_b is not read (0 at the bottom;
+  a non-finite one is INVALID_INPUT all the same).
+- :func:`state_at`: time t after touchdown and the touchdown state -> the polar state at t, status.
+
+Every kernel runs the one hybrid stance of :func:`.compiled.hybrid_stance` (the same steps, events
+and checks): compression then decompression gives :func:`stance`'s bottom, liftoff and times to
+round-off (t_stance = t_bottom + the decompression's t_half; measured in
+tests/test_exact_compiled.py). Each half's time limit is :func:`.reference.stance_time_limit` with
+its own stiffness for both springs. INVALID_INPUT (nothing integrated) for a non-finite argument,
+a state outside its domain (q_r outside (0, l0], |q_th| >= pi/2), parameters outside SlipParams'
+domain or non-positive tolerances.
 """
 
 from __future__ import annotations
@@ -28,7 +44,7 @@ from . import compiled as ec
 from . import jacobian as ej
 from .reference import stance_time_limit
 
-__all__ = ["STANCE_JACOBIAN_WRT", "stance", "stance_jacobian"]
+__all__ = ["STANCE_JACOBIAN_WRT", "compression", "decompression", "stance", "stance_jacobian", "state_at"]
 
 #: The inputs :func:`stance_jacobian` differentiates with respect to, in its column order.
 STANCE_JACOBIAN_WRT = ej.INPUTS
@@ -74,3 +90,46 @@ def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         j[50], j[51], j[52], j[53], j[54], j[55], j[56], j[57], j[58], j[59],
         code,
     )  # fmt: skip
+
+
+@njit(**_JIT)
+def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol):
+    """The compression half, touchdown -> bottom with k_c (:func:`.compiled.half_into`):
+    (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half the time of the bottom."""
+    out = np.empty(5)
+    t_max = stance_time_limit(m, l0, k_c, k_c, g_s)
+    code = ec.half_into(
+        q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol, t_max, True, out
+    )
+    return (out[0], out[1], out[2], out[3], out[4], code)
+
+
+@njit(**_JIT)
+def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol):
+    """The decompression half, bottom -> liftoff with k_d (:func:`.compiled.half_into`; q_rd_b is
+    not read, 0 at the bottom): (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half
+    from the bottom."""
+    out = np.empty(5)
+    t_max = stance_time_limit(m, l0, k_d, k_d, g_s)
+    code = ec.half_into(
+        q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol, t_max, False, out
+    )
+    return (out[0], out[1], out[2], out[3], out[4], code)
+
+
+@njit(**_JIT)
+def state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+    """The polar state a time t after touchdown (:func:`.compiled.state_at_into`):
+    (q_r, q_rd, q_th, q_thd, status).
+
+    The exact stance's state at t: compression with k_c until the bottom, then k_d; t from 0 to the
+    stance time limit (else INVALID_INPUT). For t beyond liftoff, the stance equations with k_d
+    continued past liftoff (no liftoff, recompression or fall event), as the approximate maps'
+    closed forms are: not a flight. The status is the stance's (a stance that fails has no state
+    at any t)."""
+    out = np.empty(4)
+    t_max = stance_time_limit(m, l0, k_c, k_d, g_s)
+    code = ec.state_at_into(
+        t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out
+    )
+    return (out[0], out[1], out[2], out[3], code)
