@@ -601,13 +601,21 @@ def column(x) -> np.ndarray:
     return np.array(x, dtype=np.float64, order="C")
 
 
+def touchdown_columns(touchdowns) -> tuple[np.ndarray, ...]:
+    """(n, 4) touchdown states -> the batch kernels' four columns q_r, q_rd, q_th, q_thd
+    (:func:`column` copies); ValueError for another shape."""
+    arr = np.asarray(touchdowns, dtype=float)
+    if arr.ndim != 2 or arr.shape[1] != N_POLAR:
+        raise ValueError(f"touchdowns must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
+    return tuple(column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
+
+
 def stance_rows(params: SlipParams, touchdowns: np.ndarray, rtol: float, atol: float):
     """(n, 4) touchdown states -> (out (n, N_STANCE), status (n,)), rows in parallel."""
-    arr = np.asarray(touchdowns, dtype=float)
-    n = arr.shape[0]
+    cols = touchdown_columns(touchdowns)
+    n = cols[0].shape[0]
     out = np.empty((n, N_STANCE))
     status = np.empty(n, dtype=np.int64)
-    cols = tuple(column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
     stance_batch(
         *cols,
         *stance_args(params),

@@ -236,14 +236,11 @@ def jacobian_batch(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, a
 def jacobian_rows(params: SlipParams, touchdowns, rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL):
     """(n, 4) touchdown states -> (values (n, N_OUT), jacobians (n, N_OUT, N_IN), status (n,)), in
     parallel; a row that is not a valid touchdown state is INVALID_INPUT."""
-    arr = np.asarray(touchdowns, dtype=float)
-    if arr.ndim != 2 or arr.shape[1] != N_POLAR:
-        raise ValueError(f"touchdowns must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
-    n = arr.shape[0]
+    cols = ec.touchdown_columns(touchdowns)
+    n = cols[0].shape[0]
     out = np.empty((n, N_OUT))
     jac = np.empty((n, N_OUT, N_IN))
     status = np.empty(n, dtype=np.int64)
-    cols = tuple(ec.column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
     jacobian_batch(
         *cols,
         *ec.stance_args(params),
