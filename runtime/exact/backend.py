@@ -1,8 +1,8 @@
 """The ``"exact"`` map: the numerical simulator in the result family of the maps.
 
 Option ``method``: ``"compiled"`` (default) integrates with the numba-compiled DOP853 of
-:mod:`.exact_compiled` (batches in parallel over rows, microseconds per stance); ``"scipy"`` with
-the ``solve_ivp`` reference :mod:`.simulate` (batches loop over rows in Python, 1-2 ms per stance;
+:mod:`.compiled` (batches in parallel over rows, microseconds per stance); ``"scipy"`` with
+the ``solve_ivp`` reference :mod:`.reference` (batches loop over rows in Python, 1-2 ms per stance;
 its messages name the failing stage and event). Both give the same statuses and agree to round-off
 (tests/test_exact_compiled.py). :func:`trajectory` always samples the ``solve_ivp`` dense output.
 

@@ -105,7 +105,7 @@ T_ASCENT = STEP_NAMES.index("t_ascent")
 if STEP_NAMES[:N_STANCE] != STANCE_NAMES:
     raise RuntimeError("STEP_NAMES must start with the stance columns")
 
-# Events, in simulate.py's order (ties go to the first); every run watches the same event functions
+# Events, in reference.py's order (ties go to the first); every run watches the same event functions
 # with its own directions (NaN: not watched), so the integrator is compiled once per vector field.
 EV_LIFTOFF, EV_RADIAL, EV_FALL, EV_COLLAPSE = 0, 1, 2, 3  # q_r - q_r_lo, q_rd, cos q_th, q_r - r_min
 #: Compression: the bottom (q_rd up through 0), fall, collapse.
@@ -163,7 +163,7 @@ NO_BOTTOM_STEP = dop853.static(no_bottom_step)
 
 @njit(**_JIT)
 def failure_status(code, event):
-    """The status of a subphase that did not reach its goal event (simulate.py's ``failure``)."""
+    """The status of a subphase that did not reach its goal event (reference.py's ``failure``)."""
     if code == dop853.FAILED:
         return INTEGRATION_FAILED
     if code == dop853.FINISHED:
@@ -175,7 +175,7 @@ def failure_status(code, event):
 
 @njit(**_JIT)
 def valid_polar(q_r, q_rd, q_th, q_thd, l0):
-    """simulate.py's polar_state check: finite, 0 < q_r <= l0, |q_th| < pi/2."""
+    """The polar_state check of api/validate.py (the reference's): finite, 0 < q_r <= l0, |q_th| < pi/2."""
     finite = math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
     return finite and 0.0 < q_r <= l0 and abs(q_th) < 0.5 * math.pi
 
@@ -504,7 +504,7 @@ def descent(h, v, th, q_r_td, g_f):
 def step_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out):
     """One exact step, apex (height h [m], speed v [m/s]) with the leg at th [rad] -> next apex:
     writes the :data:`STEP_NAMES` row into ``out`` (NaN unless OK) and returns the status
-    (simulate.py's ``simulate_step``: the first failing stage's)."""
+    (reference.py's ``simulate_step``: the first failing stage's)."""
     _nan(out)
     q_r0, q_rd0, q_th0, q_thd0, t_descent, code = descent(h, v, th, q_r_td, g_f)
     if code != OK:

@@ -1,6 +1,6 @@
 """Exact derivatives of the exact apex-return map: flights composed with the exact stance's.
 
-One step (:func:`.exact_compiled.step_into`) is apex -> touchdown (ballistic, generated kernel
+One step (:func:`.compiled.step_into`) is apex -> touchdown (ballistic, generated kernel
 ``flight.apex_to_touchdown``) -> stance (integrated) -> liftoff -> next apex (ballistic,
 ``flight.liftoff_to_apex``). Its Jacobian with respect to :data:`INPUTS` (apex height, apex speed,
 touchdown angle, k_c, k_d) is the chain rule over the three:
@@ -9,7 +9,7 @@ touchdown angle, k_c, k_d) is the chain rule over the three:
   forward-mode differentiation of the derived flight maps): the touchdown event of the descent is
   solved in closed form there, so its derivative is exact (it plays the part of the touchdown
   saltation); the descent's values and checks are the step's (:func:`.compiled.descent`);
-* the stance's is :func:`.exact_jacobian.jacobian_into` (variational equations with saltation at
+* the stance's is :func:`.jacobian.jacobian_into` (variational equations with saltation at
   the bottom and the map to the liftoff surface).
 
 Rows: the apex-return outputs of the index (:data:`OUTPUTS`: next apex height and speed, descent,
@@ -44,7 +44,7 @@ _ROW = {n: i for i, n in enumerate(OUTPUTS)}
 APEX_HEIGHT, APEX_SPEED = _ROW["apex_height"], _ROW["apex_speed"]
 T_DESCENT, T_STANCE, T_ASCENT = _ROW["t_descent"], _ROW["t_stance"], _ROW["t_ascent"]
 LIFTOFF = _ROW["liftoff_q_r"]
-# Stance Jacobian columns (exact_jacobian.INPUTS): the touchdown state, then k_c, k_d.
+# Stance Jacobian columns (jacobian.INPUTS): the touchdown state, then k_c, k_d.
 _S_TD = ej.TOUCHDOWN
 _S_K = (ej.K_C, ej.K_D)
 _K = (INPUTS.index("k_c"), INPUTS.index("k_d"))
@@ -53,7 +53,7 @@ _K = (INPUTS.index("k_c"), INPUTS.index("k_d"))
 @njit(cache=True, error_model="numpy")
 def step_jacobian_into(h, v, th, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol, t_max, out, jac):
     """One exact step (the :data:`OUTPUTS` row into ``out``) and d(OUTPUTS)/d(INPUTS) into ``jac``
-    (N_OUT x N_IN); NaN unless OK; returns the status (that of :func:`.exact_compiled.step_into`)."""
+    (N_OUT x N_IN); NaN unless OK; returns the status (that of :func:`.compiled.step_into`)."""
     for i in range(N_OUT):
         out[i] = math.nan
         for j in range(N_IN):
