@@ -34,6 +34,13 @@ Kernels (``@njit``, never raise; NaN outputs unless the status is OK):
 * :func:`step_into` (apex height, apex speed, touchdown angle -> one row of :data:`STEP_NAMES`:
   every stance output, then the apex-return outputs) and :func:`step_batch`.
 
+The halves and the state at a time are measured in tests/test_exact_compiled.py (section 5):
+compression then decompression against the stance, the compression bitwise, the liftoff state to
+3.5e-15 on the test steps and 2.5e-14 over 2910 random stances, t_stance to 2.5e-16 s; the state at
+a time against solve_ivp's dense output to 4.6e-14 (the two simulators' bottom times differ by
+~4e-16 s, times the radial acceleration there), beyond liftoff to 3.9e-14; every kernel is mirror
+symmetric (x -> -x) bitwise.
+
 Rows are laid out by the index's names (``results.columns``), never by position. Measured against
 the solve_ivp reference (tests/test_exact_compiled.py): on the test steps (human runner and robot
 hopper, symmetric and nonsymmetric, k_c == k_d and k_c != k_d) bottom and liftoff states agree to
@@ -252,7 +259,7 @@ def hybrid_stance(
     z_b,
     z_lo,
 ):
-    """THE hybrid stance, the one copy of its events and checks, for every exact kernel.
+    """The hybrid stance: the one copy of its events, checks and statuses, for every exact kernel.
 
     Integrates the state z (the polar state in z[:4], then anything the vector field carries along
     with the same steps: the Jacobian's sensitivities) by :func:`.dop853.solve`:
@@ -267,13 +274,14 @@ def hybrid_stance(
       ``p_d`` until q_r crosses q_r_lo upward, watching the recompression, the fall and the
       collapse.
 
-    Both subphases share the step cap (:func:`.reference.max_step` of their stiffness), the time
-    limit ``t_max`` (from touchdown, or from the bottom given) and the first four components of
-    z as the step control; the sample ``t_sample`` (:func:`.dop853.solve`) goes into ``y_sample``
-    from the subphase it falls in (``inf``: none). Writes the bottom into ``z_b`` and the liftoff
-    into ``z_lo``; returns ``(status, t_bottom, t_end)``, ``t_end`` the liftoff time (the bottom's
-    when stopping there). The parameters are checked (:func:`valid_parameters`), the states by
-    :func:`touchdown_status` or :func:`valid_polar`: INVALID_INPUT, nothing integrated.
+    Each subphase's step cap is :func:`.reference.max_step` of its stiffness; both have the time
+    limit ``t_max`` (from touchdown, or from the bottom given) and the first four components of z
+    as the step control (``N_POLAR``: the events read only those); the sample ``t_sample``
+    (:func:`.dop853.solve`) goes into ``y_sample`` from the subphase it falls in (``inf``: none).
+    Writes the bottom into ``z_b`` and the liftoff into ``z_lo``; returns ``(status, t_bottom,
+    t_end)``, ``t_end`` the liftoff time (the bottom's when stopping there). The parameters are
+    checked (:func:`valid_parameters`), the states by :func:`touchdown_status` or
+    :func:`valid_polar`: INVALID_INPUT, nothing integrated.
     """
     nan = math.nan
     if not valid_parameters(m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):

@@ -28,11 +28,12 @@ outputs followed by the status (all outputs NaN unless the status is OK). The st
 
 Every kernel runs the one hybrid stance of :func:`.compiled.hybrid_stance` (the same steps, events
 and checks): compression then decompression gives :func:`stance`'s bottom, liftoff and times to
-round-off (t_stance = t_bottom + the decompression's t_half; measured in
-tests/test_exact_compiled.py). Each half's time limit is :func:`.reference.stance_time_limit` with
-its own stiffness for both springs. INVALID_INPUT (nothing integrated) for a non-finite argument,
-a state outside its domain (q_r outside (0, l0], |q_th| >= pi/2), parameters outside SlipParams'
-domain or non-positive tolerances.
+round-off (t_stance = t_bottom + the decompression's t_half; the compression is the stance's own
+integration, bitwise; the liftoff state within 2.5e-14 and t_stance within 2.2e-15 s over 2910
+random stances, tests/test_exact_compiled.py). Each half's time limit is
+:func:`.reference.stance_time_limit` with its own stiffness for both springs. INVALID_INPUT
+(nothing integrated) for a non-finite argument, a state outside its domain (q_r outside (0, l0],
+|q_th| >= pi/2), parameters outside SlipParams' domain or non-positive tolerances.
 """
 
 from __future__ import annotations
