@@ -372,7 +372,7 @@ def _plain(
         (m, l0, k_c, g_s),
         (m, l0, k_d, g_s),
         NO_BOTTOM_STEP(),
-        y_lo,
+        y_lo,  # the bottom step's work array: no_bottom_step does not touch it
         y0,
         from_touchdown,
         to_liftoff,
@@ -399,7 +399,7 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     ``out[:N_STANCE]`` (NaN unless OK) and returns the status. Times from touchdown [s]."""
     _nan(out[:N_STANCE])
     y0 = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
-    status, t_bottom, t_stance, y_b, y_lo = _plain(
+    status, t_bottom, t_stance, y_b, y_lo = _plain(  # no sample (t = inf): y0 is never written
         y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, math.inf, y0
     )
     if status != OK:
@@ -420,7 +420,7 @@ def half_into(q_r, q_rd, q_th, q_thd, m, l0, k, g_s, q_r_lo, rtol, atol, t_max, 
     ``t_half`` is the time from the half's start, ``t_max`` its own time limit."""
     _nan(out[:5])
     y0 = _polar(q_r, q_rd, q_th, q_thd)
-    status, t_bottom, t_end, y_b, y_lo = _plain(
+    status, t_bottom, t_end, y_b, y_lo = _plain(  # no sample (t = inf): y0 is never written
         y0, m, l0, k, k, g_s, q_r_lo, rtol, atol, t_max, compression, not compression, math.inf, y0
     )
     if status != OK:

@@ -196,7 +196,7 @@ def jacobian_into(
         rtol,
         atol,
         t_max,
-        math.inf,
+        math.inf,  # no sample: the sample array (work) is never written by the integrator
         work,
         z_b,
         z_lo,
