@@ -33,6 +33,8 @@ Modules:
     iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians.
     exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map its stance and apex-return Jacobians.
+    exact_compression: Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown -> bottom.
+    exact_decompression: Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom -> liftoff.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
     iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.
     iterative_decompression: Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff.

@@ -176,6 +176,8 @@ def test_half_maps_are_listed_and_refuse_the_whole_stance_api():
 
     halves = {h.name: h for h in all_halves()}
     assert {n: (h.section, h.start, h.end) for n, h in halves.items()} == {
+        "exact-compression": ("2.2", "touchdown", "bottom"),
+        "exact-decompression": ("2.2", "bottom", "liftoff"),
         "iterative-compression": ("5.2.1", "touchdown", "bottom"),
         "iterative-decompression": ("5.2.2", "bottom", "liftoff"),
         "iterative-report-compression": ("5.2.1", "touchdown", "bottom"),

@@ -11,11 +11,17 @@ bottom, ``stance_jacobian``), which the generated derivatives go through.
 Option ``method``: ``"compiled"`` (default) runs those kernels; ``"scipy"`` the ``solve_ivp``
 reference (``slipmaps.runtime.exact.reference``, a backend of its own, 1-2 ms per stance). This map
 is the ground truth: :data:`GROUND_TRUTH`, not in ``MAPS`` (the approximations).
+
+Its halves (``HALVES``): ``exact-compression`` (touchdown -> bottom with k_c) and
+``exact-decompression`` (bottom -> liftoff with k_d), the same integration split at the bottom
+(the external kernels ``compression`` and ``decompression``): a plant for a controller that
+chooses k_d at the bottom from the measured bottom state.
 """
 
 from __future__ import annotations
 
 from .. import catalog
+from ..halfspec import HALF_OUTPUTS, HalfInputs, HalfSpec, start_args
 from ..ir import Call, Group, Kernel
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..tangent import derivative_fields
@@ -99,6 +105,60 @@ def _build(inputs: MapInputs) -> MapBuild:
         state_at=state_at,
     )
 
+
+_HALF_PARAMS = {
+    "touchdown": ("m", "l0", "k_c", "g_s", "q_r_lo"),
+    "bottom": ("m", "l0", "k_d", "g_s", "q_r_lo"),
+}
+_TOLERANCES = tuple(o for o in _OPTIONS if o.kernel)
+
+
+def _half_kernel(name: str, start: str) -> Kernel:
+    args = (
+        start_args(start)
+        + tuple(catalog.PARAMS[p] for p in _HALF_PARAMS[start])
+        + tuple(o.arg() for o in _TOLERANCES)
+    )
+    return Kernel(
+        name=name,
+        summary=f"Exact {name} half: DOP853 integration of (2)-(3) from the {start} state.",
+        equations=("2", "3"),
+        args=args,
+        steps=(),
+        outputs=HALF_OUTPUTS,
+        module=_MODULE,
+        external=True,
+    )
+
+
+def _half_build(kernel: Kernel):
+    def build(inputs: HalfInputs) -> tuple:
+        bind = {name: name for name in kernel.output_names}
+        return (
+            Call(kernel, {a.name: a.symbol for a in kernel.args}, bind, comment="runtime/exact/kernels.py"),
+        )
+
+    return build
+
+
+HALVES = tuple(
+    HalfSpec(
+        name=f"exact-{half}",
+        title=f"Exact {half} half ({start} to {end}, {k}; DOP853 integration)",
+        section="2.2",
+        equations=("2", "3"),
+        whole="exact",
+        start=start,
+        params=_HALF_PARAMS[start],
+        build=_half_build(_half_kernel(half, start)),
+        options=_TOLERANCES,
+        summary=f"the exact stance's {half} half, the same integration split at the bottom",
+    )
+    for half, start, end, k in (
+        ("compression", "touchdown", "bottom", "k_c"),
+        ("decompression", "bottom", "liftoff", "k_d"),
+    )
+)
 
 GROUND_TRUTH = MapSpec(
     name="exact",

@@ -31,7 +31,15 @@ Interfaces (every function ``@njit``; nothing raises):
 * :func:`solve`: integrates ``y0`` from ``t0`` until ``t_bound`` or the first event; returns
   ``(code, t_end, event, steps)`` and writes the end state into ``y_end``. ``code`` is
   :data:`FINISHED` (``t_bound`` reached), :data:`EVENT` (``event`` is its index) or :data:`FAILED`
-  (step size below ``10 ulp(t)``, or a non-finite state), as ``solve_ivp``'s status 0 / 1 / -1.
+  (step size below ``10 ulp(t)``, or a non-finite state), as ``solve_ivp``'s status 0 / 1 / -1;
+  :data:`SAMPLED` when asked to stop at the sample (below).
+* a sample: the interpolant at one time ``t_sample`` (as ``solve_ivp``'s dense output there),
+  written into ``y_sample`` (its first ``len(y_sample)`` components) by the accepted step that
+  reaches it, when ``t0 <= t_sample`` and ``t_sample`` comes before the event that ends the
+  integration (at an event time: not sampled; at or before ``t_bound``: sampled). It changes
+  neither the steps nor the events; ``y_sample`` is left as it is when not sampled;
+  ``t_sample = inf`` samples nothing. With ``sample_ends`` the integration stops there
+  (:data:`SAMPLED`, ``t_end = t_sample``, ``y_end`` the sample's first components too).
 
 The state may have any length, so the same integrator carries augmented (variational) systems:
 with ``n_control`` set to the length of the original state, the steps, events and original
@@ -50,7 +58,7 @@ from numba.extending import intrinsic
 from scipy.integrate._ivp import dop853_coefficients as _coef
 from scipy.integrate._ivp import rk as _rk
 
-__all__ = ["EVENT", "FAILED", "FINISHED", "dense_eval", "solve", "static"]
+__all__ = ["EVENT", "FAILED", "FINISHED", "SAMPLED", "dense_eval", "solve", "static"]
 
 N_STAGES = int(_coef.N_STAGES)  # 12 stages of the 8th-order step (the 13th row holds f_new)
 N_STAGES_EXTENDED = int(_coef.N_STAGES_EXTENDED)  # 16 with the 3 extra stages of the interpolant
@@ -74,6 +82,7 @@ ROOT_MAXITER = 100
 FINISHED = 0
 EVENT = 1
 FAILED = -1
+SAMPLED = 2
 
 _JIT = {"cache": True, "error_model": "numpy"}
 #: Functions taking ``rhs`` / ``events`` are specialised per right-hand side and compiled into their
@@ -303,14 +312,32 @@ def _finite(y):
 
 
 @njit(**_GENERIC)
-def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, n_control, y_end):
+def solve(
+    rhs,
+    p,
+    events,
+    pe,
+    direction,
+    t0,
+    y0,
+    t_bound,
+    rtol,
+    atol,
+    max_step,
+    n_control,
+    y_end,
+    t_sample,
+    y_sample,
+    sample_ends,
+):
     """Integrate dy/dt = rhs from (t0, y0) forward to t_bound or the first event (module docstring).
 
     The first ``n_control`` components of y choose the steps (error norm, initial step); the others
     are carried along with the same steps (``n_control = len(y0)``: scipy's DOP853). Returns
     ``(code, t_end, event, steps)``; the state at ``t_end`` is written into ``y_end`` (the
     interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps`` counts
-    accepted steps.
+    accepted steps. The interpolant at ``t_sample`` goes into ``y_sample`` (module docstring: a
+    sample); with ``sample_ends`` the integration stops there.
     """
     n = y0.shape[0]
     n_ev = direction.shape[0]
@@ -333,6 +360,7 @@ def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, 
     t = t0
     h_abs = initial_step(rhs, p, t0, y, f, t_bound, max_step, rtol, atol, n_control, ys, work, y_new)
     steps = 0
+    sampled = False
     while t < t_bound:
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
         if h_abs > max_step:
@@ -389,6 +417,16 @@ def solve(rhs, p, events, pe, direction, t0, y0, t_bound, rtol, atol, max_step, 
                 if root < t_first:
                     t_first = root
                     first = e
+        if not sampled and t0 <= t_sample and (t_sample < t_first if first >= 0 else t_sample <= t):
+            if not built:
+                dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys)
+                built = True
+            dense_eval(F, t_old, h, work, t_sample, y_sample, y_sample.shape[0])
+            sampled = True
+            if sample_ends:
+                for i in range(y_sample.shape[0]):
+                    y_end[i] = y_sample[i]
+                return SAMPLED, t_sample, -1, steps
         if first >= 0:
             dense_eval(F, t_old, h, work, t_first, y_end, n)
             if not _finite(y_end):

@@ -1,6 +1,6 @@
 """Exact derivatives of the exact stance: variational equations with saltation matrices.
 
-The stance of :mod:`.exact_compiled` maps the inputs ``w = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+The stance of :mod:`.compiled` maps the inputs ``w = (q_r_td, q_rd_td, q_th_td, q_thd_td,
 k_c, k_d)`` (:data:`INPUTS`) to its outputs (:data:`OUTPUTS`, the stance columns of the index:
 ``t_bottom``, ``t_stance``, the bottom and the liftoff states). This module integrates, with the
 same compiled DOP853 (:mod:`.dop853`), the polar state y together with its sensitivity
@@ -10,9 +10,11 @@ S = dy(t)/dw (4 x 6) at fixed time t:
   ``slip_model.stance_polar_jacobian`` (derived from the equations of motion (2)-(3)), k = k_c and
   e_k the k_c column while compressing, k = k_d and the k_d column after the bottom; S = [I | 0 | 0]
   at touchdown;
-* the steps, the events and y are exactly those of :func:`.exact_compiled.stance_into` (only y
-  controls the step size), so S is the derivative of the discrete flow at those steps and the
-  values returned here equal ``slipmaps.stance("exact", ...)``'s;
+* the steps, the events and y are exactly those of :func:`.compiled.stance_into`: both run the
+  one hybrid stance :func:`.compiled.hybrid_stance`, here with the augmented field (only y
+  controls the step size) and :func:`bottom_saltation` as its bottom step, so S is the derivative
+  of the discrete flow at those steps and the values returned here equal
+  ``slipmaps.stance("exact", ...)``'s;
 * bottom, g = q_rd = 0 with the switch f_c -> f_d (k_c -> k_d): dt_b/dw = -(dg/dy) S / (dg/dy . f_c),
   d(bottom)/dw = S + f_c dt_b/dw (the bottom state moves on the surface q_rd = 0), and the
   variation continues at fixed time through the saltation matrix
@@ -32,16 +34,14 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 from slipmaps.generated import maps_index
-from slipmaps.generated.slip_model import stance_polar_jacobian, stance_polar_rhs
+from slipmaps.generated.slip_model import stance_polar_jacobian
 
-from ..api.params import SlipParams
 from . import compiled as ec
 from . import dop853
-from .reference import COLLAPSE_FRACTION, DEFAULT_ATOL, DEFAULT_RTOL, default_t_max, max_step
 
-__all__ = ["INPUTS", "OUTPUTS", "jacobian_batch", "jacobian_into", "jacobian_rows"]
+__all__ = ["INPUTS", "OUTPUTS", "jacobian_into"]
 
 #: The rows of the Jacobian: the stance outputs of the index.
 OUTPUTS = ec.STANCE_NAMES
@@ -120,39 +120,52 @@ AUGMENTED_FIELD = dop853.static(augmented_field)
 
 
 @njit(**_JIT)
-def _field_at(y, m, l0, k, g_s, f):
-    d = stance_polar_rhs(y[Q_R], y[Q_RD], y[Q_TH], y[Q_THD], m, l0, k, g_s)
-    f[Q_R] = d[Q_R]
-    f[Q_RD] = d[Q_RD]
-    f[Q_TH] = d[Q_TH]
-    f[Q_THD] = d[Q_THD]
-
-
-@njit(**_JIT)
 def _event_time_gradient(z, component, rate, dt):
     """dt_event/dw = -(dg/dy) S / (dg/dy . f) for g = y[component] - const (rate = dg/dt)."""
     for j in range(N_IN):
         dt[j] = -z[N_POLAR + N_IN * component + j] / rate
 
 
+#: The bottom step's record: dt_bottom/dw (N_IN), then d(bottom)/dw row by row (N_POLAR x N_IN).
+N_WORK = N_IN + N_POLAR * N_IN
+
+
+@njit(**_JIT)
+def bottom_saltation(z_b, m, l0, k_c, k_d, g_s, work):
+    """The Jacobian's step at the bottom (g = q_rd = 0, the switch f_c -> f_d), called by the
+    hybrid stance after its bottom checks: the event time's gradient into ``work[:N_IN]``, the
+    bottom state's derivative on the surface q_rd = 0 into ``work[N_IN:]``, and S- -> S+ (the
+    saltation matrix) in ``z_b``."""
+    f_c = np.empty(N_POLAR)
+    f_d = np.empty(N_POLAR)
+    ec.polar_field(0.0, z_b, (m, l0, k_c, g_s), f_c)
+    ec.polar_field(0.0, z_b, (m, l0, k_d, g_s), f_d)
+    dt_b = work[:N_IN]
+    _event_time_gradient(z_b, Q_RD, f_c[Q_RD], dt_b)
+    for i in range(N_POLAR):
+        for j in range(N_IN):
+            s_ij = z_b[N_POLAR + N_IN * i + j]
+            work[N_IN + N_IN * i + j] = s_ij + f_c[i] * dt_b[j]
+            z_b[N_POLAR + N_IN * i + j] = s_ij - (f_d[i] - f_c[i]) * dt_b[j]
+
+
+BOTTOM_SALTATION = dop853.static(bottom_saltation)
+
+
 @njit(**_JIT)
 def jacobian_into(
     q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out, jac
 ):
-    """The stance (the :data:`OUTPUTS` row into ``out``, as :func:`.exact_compiled.stance_into`) and
-    its Jacobian d(OUTPUTS)/d(INPUTS) into ``jac`` (N_OUT x N_IN); NaN unless OK; returns the status."""
+    """The stance (the :data:`OUTPUTS` row into ``out``, as :func:`.compiled.stance_into`) and
+    its Jacobian d(OUTPUTS)/d(INPUTS) into ``jac`` (N_OUT x N_IN); NaN unless OK; returns the status.
+
+    The hybrid stance is :func:`.compiled.hybrid_stance` (its events, checks and statuses) on the
+    augmented state, with :func:`bottom_saltation` at the bottom; the map to the liftoff surface
+    is applied here."""
     for i in range(N_OUT):
         out[i] = math.nan
         for j in range(N_IN):
             jac[i, j] = math.nan
-    if not ec.valid_polar(q_r_td, q_rd_td, q_th_td, q_thd_td, l0):
-        return ec.INVALID_INPUT
-    if q_rd_td >= 0.0:
-        return ec.TOUCHDOWN_NOT_COMPRESSING
-    r_min = COLLAPSE_FRACTION * l0
-    if q_r_td <= r_min:
-        return ec.FALL
-    pe = (q_r_lo, r_min)
     z = np.zeros(N_AUG)
     z[Q_R] = q_r_td
     z[Q_RD] = q_rd_td
@@ -161,64 +174,36 @@ def jacobian_into(
     for i in range(N_POLAR):
         z[N_POLAR + N_IN * i + TOUCHDOWN[i]] = 1.0
     z_b = np.empty(N_AUG)
-    code, t_bottom, event, _ = dop853.solve(
+    z_lo = np.empty(N_AUG)
+    work = np.empty(N_WORK)
+    status, t_bottom, t_stance = ec.hybrid_stance(
         AUGMENTED_FIELD(),
         (m, l0, k_c, g_s, float(K_C)),
-        ec.STANCE_EVENTS(),
-        pe,
-        ec.COMPRESSION_DIRECTIONS,
-        0.0,
-        z,
-        t_max,
-        rtol,
-        atol,
-        max_step(m, l0, k_c, g_s),
-        N_POLAR,
-        z_b,
-    )
-    if code != dop853.EVENT or event != ec.EV_RADIAL:
-        return ec.failure_status(code, event)
-    z_b[Q_RD] = 0.0
-    if z_b[Q_R] >= q_r_lo:
-        return ec.NO_LIFTOFF
-    f_c = np.empty(N_POLAR)
-    f_d = np.empty(N_POLAR)
-    _field_at(z_b, m, l0, k_c, g_s, f_c)
-    _field_at(z_b, m, l0, k_d, g_s, f_d)
-    if not f_d[Q_RD] > 0.0:
-        return ec.RECOMPRESSION
-    if t_bottom >= t_max:
-        return ec.NO_LIFTOFF
-    # Bottom: event time, the state on the surface q_rd = 0, then the saltation k_c -> k_d.
-    dt_b = np.empty(N_IN)
-    _event_time_gradient(z_b, Q_RD, f_c[Q_RD], dt_b)
-    d_bottom = np.empty((N_POLAR, N_IN))
-    for i in range(N_POLAR):
-        for j in range(N_IN):
-            s_ij = z_b[N_POLAR + N_IN * i + j]
-            d_bottom[i, j] = s_ij + f_c[i] * dt_b[j]
-            z_b[N_POLAR + N_IN * i + j] = s_ij - (f_d[i] - f_c[i]) * dt_b[j]
-    z_lo = np.empty(N_AUG)
-    code, t_stance, event, _ = dop853.solve(
-        AUGMENTED_FIELD(),
         (m, l0, k_d, g_s, float(K_D)),
-        ec.STANCE_EVENTS(),
-        pe,
-        ec.DECOMPRESSION_DIRECTIONS,
-        t_bottom,
-        z_b,
-        t_max,
+        BOTTOM_SALTATION(),
+        work,
+        z,
+        True,
+        True,
+        m,
+        l0,
+        k_c,
+        k_d,
+        g_s,
+        q_r_lo,
         rtol,
         atol,
-        max_step(m, l0, k_d, g_s),
-        N_POLAR,
+        t_max,
+        math.inf,  # no sample: the sample array (work) is never written by the integrator
+        work,
+        z_b,
         z_lo,
     )
-    if code != dop853.EVENT or event != ec.EV_LIFTOFF:
-        return ec.failure_status(code, event)
+    if status != OK:
+        return status
     # Liftoff: event time and the map to the surface q_r = q_r_lo.
     f_lo = np.empty(N_POLAR)
-    _field_at(z_lo, m, l0, k_d, g_s, f_lo)
+    ec.polar_field(0.0, z_lo, (m, l0, k_d, g_s), f_lo)
     dt_lo = np.empty(N_IN)
     _event_time_gradient(z_lo, Q_R, f_lo[Q_R], dt_lo)
     out[T_BOTTOM] = t_bottom
@@ -227,45 +212,9 @@ def jacobian_into(
         out[BOTTOM + i] = z_b[i]
         out[LIFTOFF + i] = z_lo[i]
     for j in range(N_IN):
-        jac[T_BOTTOM, j] = dt_b[j]
+        jac[T_BOTTOM, j] = work[j]
         jac[T_STANCE, j] = dt_lo[j]
         for i in range(N_POLAR):
-            jac[BOTTOM + i, j] = d_bottom[i, j]
+            jac[BOTTOM + i, j] = work[N_IN + N_IN * i + j]
             jac[LIFTOFF + i, j] = z_lo[N_POLAR + N_IN * i + j] + f_lo[i] * dt_lo[j]
     return OK
-
-
-@njit(cache=True, parallel=True, error_model="numpy")
-def jacobian_batch(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out, jac, status):
-    """:func:`jacobian_into` over rows in parallel: out (n, N_OUT), jac (n, N_OUT, N_IN), status (n,)."""
-    for i in prange(out.shape[0]):
-        td = (q_r[i], q_rd[i], q_th[i], q_thd[i])
-        status[i] = jacobian_into(*td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out[i], jac[i])
-
-
-# ----------------------------------------------------------------------------------------------
-# Python wrapper
-# ----------------------------------------------------------------------------------------------
-def jacobian_rows(params: SlipParams, touchdowns, rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL):
-    """(n, 4) touchdown states -> (values (n, N_OUT), jacobians (n, N_OUT, N_IN), status (n,)), in
-    parallel; a row that is not a valid touchdown state is INVALID_INPUT."""
-    arr = np.asarray(touchdowns, dtype=float)
-    if arr.ndim != 2 or arr.shape[1] != N_POLAR:
-        raise ValueError(f"touchdowns must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
-    n = arr.shape[0]
-    out = np.empty((n, N_OUT))
-    jac = np.empty((n, N_OUT, N_IN))
-    status = np.empty(n, dtype=np.int64)
-    cols = tuple(ec.column(arr[:, j]) for j in (Q_R, Q_RD, Q_TH, Q_THD))
-    jacobian_batch(
-        *cols,
-        *ec.stance_args(params),
-        params.q_r_lo,
-        float(rtol),
-        float(atol),
-        default_t_max(params),
-        out,
-        jac,
-        status,
-    )
-    return out, jac, status

@@ -17,23 +17,35 @@ outputs followed by the status (all outputs NaN unless the status is OK). The st
 - :func:`stance_jacobian`: the same outputs, then d output_i / d input_j row-major over the inputs
   (q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d), status (variational equations,
   :mod:`.jacobian`).
-- :func:`state_at`: the polar state a time t after touchdown (k_c until the bottom, then k_d), status;
-  after liftoff the stance equations continued, as the approximate maps' closed forms are.
+- :func:`compression`: touchdown state -> t_half (the bottom's time), the bottom state (q_rd = 0
+  exactly), status: the stance's touchdown checks and compression-phase failures; a bottom at or
+  beyond q_r_lo is the decompression's NO_LIFTOFF, not the compression's failure.
+- :func:`decompression`: bottom state -> t_half (from the bottom), the liftoff state, status: the
+  stance's bottom checks (NO_LIFTOFF when q_r_b >= q_r_lo, RECOMPRESSION when the k_d spring cannot
+  start extending the leg) and decompression-phase failures; q_rd_b is not read (0 at the bottom;
+  a non-finite one is INVALID_INPUT all the same).
+- :func:`state_at`: time t after touchdown and the touchdown state -> the polar state at t, status.
+
+Every kernel runs the one hybrid stance of :func:`.compiled.hybrid_stance` (the same steps, events
+and checks): compression then decompression gives :func:`stance`'s bottom, liftoff and times to
+round-off (t_stance = t_bottom + the decompression's t_half; the compression is the stance's own
+integration, bitwise; the liftoff state within 2.5e-14 and t_stance within 2.2e-15 s over 2910
+random stances, tests/test_exact_compiled.py). Each half's time limit is
+:func:`.reference.stance_time_limit` with its own stiffness for both springs. INVALID_INPUT
+(nothing integrated) for a non-finite argument, a state outside its domain (q_r outside (0, l0],
+|q_th| >= pi/2), parameters outside SlipParams' domain or non-positive tolerances.
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 from numba import njit
 
 from . import compiled as ec
-from . import dop853
 from . import jacobian as ej
-from .reference import COLLAPSE_FRACTION, max_step, stance_time_limit
+from .reference import stance_time_limit
 
-__all__ = ["STANCE_JACOBIAN_WRT", "stance", "stance_jacobian", "state_at"]
+__all__ = ["STANCE_JACOBIAN_WRT", "compression", "decompression", "stance", "stance_jacobian", "state_at"]
 
 #: The inputs :func:`stance_jacobian` differentiates with respect to, in its column order.
 STANCE_JACOBIAN_WRT = ej.INPUTS
@@ -81,35 +93,44 @@ def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     )  # fmt: skip
 
 
-#: state_at watches the bottom while compressing (then switches to k_d), and only the failures after.
-_TO_BOTTOM = np.array([math.nan, +1.0, -1.0, -1.0])
-_AFTER_BOTTOM = np.array([math.nan, math.nan, -1.0, -1.0])
+@njit(**_JIT)
+def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol):
+    """The compression half, touchdown -> bottom with k_c (:func:`.compiled.half_into`):
+    (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half the time of the bottom."""
+    out = np.empty(5)
+    t_max = stance_time_limit(m, l0, k_c, k_c, g_s)
+    code = ec.half_into(
+        q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol, t_max, True, out
+    )
+    return (out[0], out[1], out[2], out[3], out[4], code)
+
+
+@njit(**_JIT)
+def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol):
+    """The decompression half, bottom -> liftoff with k_d (:func:`.compiled.half_into`; q_rd_b is
+    not read, 0 at the bottom): (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half
+    from the bottom."""
+    out = np.empty(5)
+    t_max = stance_time_limit(m, l0, k_d, k_d, g_s)
+    code = ec.half_into(
+        q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol, t_max, False, out
+    )
+    return (out[0], out[1], out[2], out[3], out[4], code)
 
 
 @njit(**_JIT)
 def state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
-    """The polar state ``t`` >= 0 after touchdown: compression with k_c until the bottom (q_rd up
-    through 0), then k_d; no liftoff event (past liftoff the stance equations continue)."""
-    nan = math.nan
-    if not (math.isfinite(t) and t >= 0.0 and ec.valid_polar(q_r_td, q_rd_td, q_th_td, q_thd_td, l0)):
-        return (nan, nan, nan, nan, ec.INVALID_INPUT)
-    r_min = COLLAPSE_FRACTION * l0
-    pe = (q_r_lo, r_min)
-    y0 = np.array((q_r_td, q_rd_td, q_th_td, q_thd_td))
-    y = np.empty(4)
-    code, t_end, event, _ = dop853.solve(
-        ec.POLAR_FIELD(), (m, l0, k_c, g_s), ec.STANCE_EVENTS(), pe, _TO_BOTTOM, 0.0, y0, t,
-        rtol, atol, max_step(m, l0, k_c, g_s), ec.N_POLAR, y,
-    )  # fmt: skip
-    if code == dop853.EVENT and event == ec.EV_RADIAL and t_end < t:
-        y[ec.Q_RD] = 0.0
-        y_b = y.copy()
-        code, t_end, event, _ = dop853.solve(
-            ec.POLAR_FIELD(), (m, l0, k_d, g_s), ec.STANCE_EVENTS(), pe, _AFTER_BOTTOM, t_end, y_b, t,
-            rtol, atol, max_step(m, l0, k_d, g_s), ec.N_POLAR, y,
-        )  # fmt: skip
-    if code == dop853.FAILED:
-        return (nan, nan, nan, nan, ec.INTEGRATION_FAILED)
-    if code == dop853.EVENT and event != ec.EV_RADIAL:
-        return (nan, nan, nan, nan, ec.FALL)
-    return (y[0], y[1], y[2], y[3], ec.OK)
+    """The polar state a time t after touchdown (:func:`.compiled.state_at_into`):
+    (q_r, q_rd, q_th, q_thd, status).
+
+    The exact stance's state at t: compression with k_c until the bottom, then k_d; t from 0 to the
+    stance time limit (else INVALID_INPUT). For t beyond liftoff, the stance equations with k_d
+    continued past liftoff (no liftoff, recompression or fall event), as the approximate maps'
+    closed forms are: not a flight. The status is the stance's (a stance that fails has no state
+    at any t)."""
+    out = np.empty(4)
+    t_max = stance_time_limit(m, l0, k_c, k_d, g_s)
+    code = ec.state_at_into(
+        t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out
+    )
+    return (out[0], out[1], out[2], out[3], code)

@@ -47,7 +47,7 @@ output (to ~1e-15 in time). The default stance time limit is :func:`default_t_ma
 right-hand sides, the energy and the coordinate maps are the generated kernels of
 ``slipmaps.generated.slip_model``, the flight maps those of ``slipmaps.generated.flight``;
 :func:`simulate_stance_cartesian` integrates the same stance in Cartesian coordinates as an
-independent check of the polar integration. :mod:`.exact_compiled` runs the same stance through
+independent check of the polar integration. :mod:`.compiled` runs the same stance through
 the same algorithm compiled with numba (:mod:`.dop853`), the default ``"exact"`` map; this module
 stays the reference (``method="scipy"``) and the dense trajectory. Measured with the defaults
 (human runner and robot hopper, tests/test_simulator.py): relative energy drift within a subphase
@@ -375,11 +375,17 @@ def _step_samples(sol) -> tuple[np.ndarray, np.ndarray]:
 
 
 @njit(cache=True, error_model="numpy")
+def natural_periods(m: float, l0: float, k: float, g_s: float) -> tuple[float, float]:
+    """The stance's natural periods [s]: the spring's 2 pi sqrt(m/k) and the pendulum's
+    2 pi sqrt(l0/g_s), the scales of :func:`max_step` and :func:`stance_time_limit`."""
+    return 2.0 * math.pi * math.sqrt(m / k), 2.0 * math.pi * math.sqrt(l0 / g_s)
+
+
+@njit(cache=True, error_model="numpy")
 def max_step(m: float, l0: float, k: float, g_s: float) -> float:
     """The step cap of a stance subphase with stiffness k: 1/16 of the shorter of the spring period
-    2 pi sqrt(m/k) and the pendulum period 2 pi sqrt(l0/g_s) [s] (shared with the compiled simulator)."""
-    spring = 2.0 * math.pi * math.sqrt(m / k)
-    pendulum = 2.0 * math.pi * math.sqrt(l0 / g_s)
+    and the pendulum period [s] (shared with the compiled simulator)."""
+    spring, pendulum = natural_periods(m, l0, k, g_s)
     return _MAX_STEP_FRACTION * min(spring, pendulum)
 
 
@@ -388,8 +394,7 @@ def stance_time_limit(m: float, l0: float, k_c: float, k_d: float, g_s: float) -
     """The stance time limit [s]: T_MAX_PERIODS times (the spring period of the softer spring + the
     pendulum period), shared with the compiled simulator; a stance still on the ground then is
     NO_LIFTOFF."""
-    spring = 2.0 * math.pi * math.sqrt(m / min(k_c, k_d))
-    pendulum = 2.0 * math.pi * math.sqrt(l0 / g_s)
+    spring, pendulum = natural_periods(m, l0, min(k_c, k_d), g_s)
     return T_MAX_PERIODS * (spring + pendulum)
 
 
