@@ -1,0 +1,666 @@
+"""The deadbeat solve compiled with numba: a bounded, safeguarded Gauss-Newton method on a map's kernels.
+
+One generic solver (:func:`solve_row`) for every map: it takes the map's apex-return kernel and its
+apex-return Jacobian kernel as arguments, wrapped per map by :func:`kernels_for` into two small
+functions of a float64 argument vector ``a`` (the kernel's arguments by position: the apex, the
+touchdown angle, the ground, the parameters with the stiffness, the map's options) that write the
+outputs into a work vector. Nothing here knows a map: the argument positions, the output columns and
+the Jacobian's columns come from the generated index (:class:`~slipmaps.runtime.api.calls.Call`).
+
+The wrappers and the solver bound to them are compiled once per map and process (a few seconds;
+numba cannot cache a function that takes another compiled function as an argument, and the
+wrappers are built from the index at run time), then a solve costs one call from Python
+(about 0.3 us) and the map's kernel calls.
+
+The method (the controls u, at most 3; the targets the next apex height and speed, 1 or 2):
+
+* scaled unknowns z_j = (u_j - u0_j) / s_j (u0: the starting controls, the stiffness nominal), the
+  residual r = w (F(u) - T) with w = 1/l0 for the height and 1/sqrt(g_f l0) for the speed (0 for a
+  target left out);
+* a step: the damped minimum-norm Gauss-Newton step -J^T (J J^T + mu)^-1 r when the controls are at
+  least as many as the targets, plus the pull -(I - J^T (J J^T + mu)^-1 J) z toward the starting
+  controls in the null space (more controls than targets: the least change, in the scaled norm, among
+  the controls that reach the target); -(J^T J + mu)^-1 J^T r with fewer controls than targets;
+* box bounds by projection, with an active set: a control at a bound whose descent direction leaves
+  the box is held there for the step;
+* a backtracking line search on |r|^2 (a trial where the map fails counts as no decrease); the
+  Jacobian is the map's generated one at the start and, with ``broyden``, rank-one secant updates
+  (Broyden's good update) after each accepted step (a fresh one when a line search fails), else a
+  fresh one after every step; mu grows when a line search fails with a fresh Jacobian;
+* stop when |r| <= tol (and the pull has stopped moving), or when no step decreases |r| (the
+  closest reachable point of that neighbourhood: UNREACHABLE), or after ``max_iter`` Jacobians;
+* one control (the touchdown angle alone, or k_d at the bottom): if that does not reach the target,
+  a scan of the control's whole range (``scan`` points), then the sign change nearest the start
+  bracketed and solved by the Illinois method (one target), or Gauss-Newton again from the scan's
+  best point (two targets, least squares); the same scan restarts a solve whose start fails.
+
+Plan statuses (:data:`REACHED`, :data:`UNREACHABLE`, :data:`MAP_FAILED`) are written in the row's
+head (:data:`HEAD`) beside the map's own status of the final point.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from slipmaps.generated.status import Status
+
+__all__ = [
+    "HEAD",
+    "MAP_FAILED",
+    "REACHED",
+    "UNREACHABLE",
+    "Kernels",
+    "kernels_for",
+]
+
+#: Plan statuses as written by the solver (the Python layer's :class:`~.deadbeat.PlanStatus`).
+REACHED, UNREACHABLE, MAP_FAILED = 0, 1, 2
+
+#: The head of a solver row: its fields by name (then the map's apex-return outputs at the final point).
+HEAD = (
+    "plan_status",  # REACHED / UNREACHABLE / MAP_FAILED
+    "map_status",  # the map's Status at the final point (or at the first failure)
+    "jacobians",  # Jacobian evaluations (the generated kernel)
+    "evaluations",  # apex-return evaluations (line search, scan, bracketing)
+    "iterations",  # accepted steps
+    "u0",
+    "u1",
+    "u2",  # the controls at the final point, in the order given
+    "residual",  # |r| (scaled) at the final point
+    "authority",  # dE'/dk_d [J per N/m] at the final point, m (g_f dh'/dk_d + v' dv'/dk_d); NaN without k_d
+)
+N_HEAD = len(HEAD)
+_PS, _MS, _NJ, _NE, _NI, _U0, _RES, _AUTH = 0, 1, 2, 3, 4, 5, 8, 9
+
+_OK = int(Status.OK)
+_NAN = math.nan
+#: Backtracking: at most this many halvings of a step.
+_HALVINGS = 12
+#: Sufficient decrease of |r|^2 per unit step length (Armijo's constant).
+_ARMIJO = 1e-4
+#: The pull toward the start has stopped when it moves the scaled controls by less than this.
+_PULL_TOL = 1e-10
+#: Rounds of Levenberg damping (mu = 1e-3, then 1e-1 times |J|^2) before a line search gives up.
+_DAMPING_ROUNDS = 2
+#: Failed line searches a Gauss-Newton run may have (each followed by a fresh Jacobian or damping).
+_MAX_FAIL = 3
+#: Golden-section steps of the closest point of one control (0.618^30 = 5e-7 of two scan steps).
+_GOLDEN_ITER = 30
+#: Illinois iterations on a bracket at most.
+_BRACKET_ITER = 80
+
+
+class Kernels:
+    """A map's two wrapped kernels (compiled per map): ``apex(a, d)`` writes the status into
+    ``d[0]`` and the apex-return outputs into ``d[1:1 + n_out]``; ``jac(a, d)`` the same, then
+    d apex_height / d wrt_j into ``d[1 + n_out + j]`` and d apex_speed / d wrt_j into
+    ``d[1 + n_out + n_wrt + j]``. ``scalar`` and ``batch`` are the solver bound to them."""
+
+    def __init__(self, apex, jac, scalar, batch, n_args, n_out, n_wrt):
+        self.apex, self.jac, self.scalar, self.batch = apex, jac, scalar, batch
+        self.n_args, self.n_out, self.n_wrt = n_args, n_out, n_wrt
+
+    @property
+    def width(self) -> int:
+        """The length of a solver row: the head, then the map's outputs."""
+        return N_HEAD + self.n_out
+
+
+def _wrapper_source(name: str, n_args: int, n_out: int, status: int, derivs: list[int]) -> str:
+    """Source of ``name(a, d)`` calling the kernel ``F`` on a[0..n_args-1]: d[0] the status (the
+    kernel's return value ``status``), d[1+j] output j, then the listed Jacobian entries (their
+    positions in the kernel's return tuple)."""
+    args = ", ".join(f"a[{i}]" for i in range(n_args))
+    lines = [f"def {name}(a, d):", f"    r = F({args})", f"    d[0] = r[{status}]"]
+    lines += [f"    d[{1 + j}] = r[{j}]" for j in range(n_out)]
+    lines += [f"    d[{1 + n_out + i}] = r[{pos}]" for i, pos in enumerate(derivs)]
+    return "\n".join(lines) + "\n"
+
+
+_CACHE: dict = {}
+
+
+def kernels_for(call) -> Kernels:
+    """The wrapped kernels and the bound solver of ``call``'s map (compiled once per map; the
+    argument order is the index's, the same for every parameter set and option choice)."""
+    spec_a, spec_j = call.spec("apex_return"), call.spec("apex_return_jacobian")
+    key = (spec_a.module, spec_a.name, spec_j.module, spec_j.name)
+    hit = _CACHE.get(key)
+    if hit is not None:
+        return hit
+    if spec_a.args != spec_j.args:  # the index gives both the same arguments; say so if not
+        raise RuntimeError(f"map {call.info.name!r}: apex_return and its Jacobian take different arguments")
+    n_args, n_out, n_wrt = len(spec_a.args), len(spec_a.outputs), len(spec_j.wrt)
+    i_h, i_v = spec_j.outputs.index("apex_height"), spec_j.outputs.index("apex_speed")
+    derivs = [n_out + i_h * n_wrt + j for j in range(n_wrt)] + [n_out + i_v * n_wrt + j for j in range(n_wrt)]
+    ns_a = {"F": spec_a.functions()[0]}
+    ns_j = {"F": spec_j.functions()[0]}
+    exec(_wrapper_source("apex", n_args, n_out, n_out, []), ns_a)  # the source is built here, from the index
+    exec(_wrapper_source("jac", n_args, n_out, n_out * (1 + n_wrt), derivs), ns_j)
+    apex = njit(error_model="numpy")(ns_a["apex"])
+    jac = njit(error_model="numpy")(ns_j["jac"])
+    scalar, batch = _bind(apex, jac)
+    kernels = Kernels(apex, jac, scalar, batch, n_args, n_out, n_wrt)
+    _CACHE[key] = kernels
+    return kernels
+
+
+def _bind(apex, jac):
+    """The solver bound to one map's wrapped kernels: ``scalar(a, ints, floats, out)`` and the
+    parallel ``batch(A, ints, floats, OUT)`` over rows of A (one argument vector per row)."""
+
+    @njit(error_model="numpy")
+    def scalar(a, ints, floats, out):
+        W = np.empty(N_WORK + 1 + ints[_I_NOUT] + 2 * ints[_I_NWRT])
+        solve_row(apex, jac, a, ints, floats, W, out)
+
+    @njit(error_model="numpy", parallel=True)
+    def batch(A, ints, floats, OUT):
+        n = A.shape[0]
+        for i in prange(n):
+            a = A[i].copy()
+            W = np.empty(N_WORK + 1 + ints[_I_NOUT] + 2 * ints[_I_NWRT])
+            solve_row(apex, jac, a, ints, floats, W, OUT[i])
+
+    return scalar, batch
+
+
+# ----------------------------------------------------------------------------------------------
+# The solver's integer and float settings, by position (built by :mod:`.deadbeat`)
+# ----------------------------------------------------------------------------------------------
+#: ints: n_out, n_wrt, output row of apex_height, of apex_speed, number of controls, their argument
+#: positions (3), their Jacobian columns (3), the k_d column (-1: none), max evaluations, broyden
+#: (0/1), scan points, the targeted components (2: 1 or 0), the kernel's argument count (the target
+#: height and speed follow the arguments in a row).
+_I_NOUT, _I_NWRT, _I_OH, _I_OV, _I_NC = 0, 1, 2, 3, 4
+_I_ARG, _I_COL = 5, 8
+_I_KD, _I_MAXJ, _I_BROYDEN, _I_SCAN, _I_TGT, _I_NARGS = 11, 12, 13, 14, 15, 17
+N_INTS = 18
+#: floats: lower bounds (3), upper bounds (3), scales (3), residual weights (2), tol, the mass and
+#: g_f (for the energy authority).
+_F_LO, _F_HI, _F_S, _F_W, _F_TOL, _F_M, _F_G = 0, 3, 6, 9, 11, 12, 13
+N_FLOATS = 14
+
+INT_FIELDS = {"n_out": 0, "n_wrt": 1, "out_height": 2, "out_speed": 3, "n_controls": 4, "arg": 5, "col": 8}
+INT_FIELDS |= {"kd_col": 11, "max_evaluations": 12, "broyden": 13, "scan": 14, "targeted": 15, "n_args": 17}
+FLOAT_FIELDS = {"lo": 0, "hi": 3, "scale": 6, "weight": 9, "tol": 11, "m": 12, "g_f": 13}
+
+
+# The work buffer W of a solve (one allocation): fixed regions, then the kernels' outputs d.
+_W_U0, _W_Z, _W_ZLO, _W_ZHI, _W_G, _W_ZB, _W_GB, _W_RF = 0, 3, 6, 9, 12, 18, 21, 27
+_W_J, _W_R, _W_RT, _W_F, _W_DELTA, _W_ZT, _W_FREE = 29, 35, 37, 39, 41, 44, 47
+_W_A, _W_B, _W_ROWS, _W_COLS = 50, 59, 62, 64
+_W_ZS, _W_RS, _W_RI, _W_RG = 67, 70, 72, 74
+N_WORK = 76
+
+
+@njit(error_model="numpy")
+def _residual(d, a, ints, floats, r):
+    """r (2) from the outputs in d: w (F - T) for the targeted components, 0 for the others (the
+    targets T follow the kernel's arguments in a); returns |r|^2."""
+    h = d[1 + ints[_I_OH]]
+    v = d[1 + ints[_I_OV]]
+    t = ints[_I_NARGS]
+    r[0] = floats[_F_W] * (h - a[t]) if ints[_I_TGT] else 0.0
+    r[1] = floats[_F_W + 1] * (v - a[t + 1]) if ints[_I_TGT + 1] else 0.0
+    return r[0] * r[0] + r[1] * r[1]
+
+
+@njit(error_model="numpy")
+def _set_controls(a, z, u0, ints, floats):
+    for j in range(ints[_I_NC]):
+        a[ints[_I_ARG + j]] = u0[j] + floats[_F_S + j] * z[j]
+
+
+@njit(error_model="numpy")
+def _jacobian_raw(d, ints, floats, G):
+    """G (2 x 3, row-major): d(apex_height, apex_speed) / d z_j from a Jacobian evaluation in d."""
+    n_out, n_wrt = ints[_I_NOUT], ints[_I_NWRT]
+    for j in range(ints[_I_NC]):
+        col = ints[_I_COL + j]
+        s = floats[_F_S + j]
+        G[j] = d[1 + n_out + col] * s
+        G[3 + j] = d[1 + n_out + n_wrt + col] * s
+
+
+@njit(error_model="numpy")
+def _weighted(G, ints, floats, J):
+    """J = d r / d z: the rows of G weighted, zero for a component that is not a target."""
+    for j in range(ints[_I_NC]):
+        J[j] = floats[_F_W] * G[j] if ints[_I_TGT] else 0.0
+        J[3 + j] = floats[_F_W + 1] * G[3 + j] if ints[_I_TGT + 1] else 0.0
+
+
+@njit(error_model="numpy")
+def _solve_small(A, b, n):
+    """Solve A x = b (A n x n row-major in a 3 x 3 block, n <= 3) by Gaussian elimination with
+    partial pivoting (A, b overwritten; x in b); returns False when A is singular."""
+    for k in range(n):
+        p = k
+        for i in range(k + 1, n):
+            if abs(A[3 * i + k]) > abs(A[3 * p + k]):
+                p = i
+        if A[3 * p + k] == 0.0 or not math.isfinite(A[3 * p + k]):
+            return False
+        if p != k:
+            for j in range(n):
+                A[3 * k + j], A[3 * p + j] = A[3 * p + j], A[3 * k + j]
+            b[k], b[p] = b[p], b[k]
+        for i in range(k + 1, n):
+            f = A[3 * i + k] / A[3 * k + k]
+            for j in range(k, n):
+                A[3 * i + j] -= f * A[3 * k + j]
+            b[i] -= f * b[k]
+    for k in range(n - 1, -1, -1):
+        s = b[k]
+        for j in range(k + 1, n):
+            s -= A[3 * k + j] * b[j]
+        b[k] = s / A[3 * k + k]
+    return True
+
+
+@njit(error_model="numpy")
+def _step(W, J, r, z, free, nc, mu, delta):
+    """The damped Gauss-Newton step over the free controls (module docstring) into delta; False
+    when the linear system is singular. Rows of J for untargeted components are zero and dropped."""
+    A = W[_W_A : _W_A + 9]
+    b = W[_W_B : _W_B + 3]
+    rows = W[_W_ROWS : _W_ROWS + 2]
+    cols = W[_W_COLS : _W_COLS + 3]
+    m = 0
+    for i in range(2):
+        nz = r[i] != 0.0
+        for j in range(nc):
+            if free[j] != 0.0 and J[3 * i + j] != 0.0:
+                nz = True
+        if nz:
+            rows[m] = i
+            m += 1
+    n = 0
+    for j in range(nc):
+        delta[j] = 0.0
+        if free[j] != 0.0:
+            cols[n] = j
+            n += 1
+    if n == 0 or m == 0:
+        return False
+    for i in range(9):
+        A[i] = 0.0
+    if n >= m:
+        # b = (J J^T + mu I)^-1 (r - J z), delta = -J^T b - z: the minimum-norm (least change from
+        # the start) step of the linearised equations, damped.
+        for p in range(m):
+            rp = 3 * int(rows[p])
+            for q in range(m):
+                rq = 3 * int(rows[q])
+                s = 0.0
+                for c in range(n):
+                    jc = int(cols[c])
+                    s += J[rp + jc] * J[rq + jc]
+                A[3 * p + q] = s
+            A[3 * p + p] += mu
+            jz = 0.0
+            for c in range(n):
+                jc = int(cols[c])
+                jz += J[rp + jc] * z[jc]
+            b[p] = r[int(rows[p])] - jz
+        if not _solve_small(A, b, m):
+            return False
+        for c in range(n):
+            jc = int(cols[c])
+            s = 0.0
+            for p in range(m):
+                s += J[3 * int(rows[p]) + jc] * b[p]
+            delta[jc] = -s - z[jc]
+    else:
+        for p in range(n):
+            jp = int(cols[p])
+            for q in range(n):
+                jq = int(cols[q])
+                s = 0.0
+                for i in range(m):
+                    ri = 3 * int(rows[i])
+                    s += J[ri + jp] * J[ri + jq]
+                A[3 * p + q] = s
+            A[3 * p + p] += mu
+            s = 0.0
+            for i in range(m):
+                s += J[3 * int(rows[i]) + jp] * r[int(rows[i])]
+            b[p] = -s
+        if not _solve_small(A, b, n):
+            return False
+        for c in range(n):
+            delta[int(cols[c])] = b[c]
+    for j in range(nc):
+        if not math.isfinite(delta[j]):
+            return False
+    return True
+
+
+@njit(error_model="numpy")
+def _evaluate(apex, a, z, u0, ints, floats, d, r, out):
+    """The map at controls z: |r|^2, or inf when the map fails there (its status in d[0])."""
+    _set_controls(a, z, u0, ints, floats)
+    apex(a, d)
+    out[_NE] += 1.0
+    if int(d[0]) != _OK:
+        return math.inf
+    return _residual(d, a, ints, floats, r)
+
+
+@njit(error_model="numpy")
+def _fresh(jac, a, z, u0, ints, floats, d, out, G):
+    """A Jacobian of the map at z into G; False when the map (or its derivative) fails there."""
+    _set_controls(a, z, u0, ints, floats)
+    jac(a, d)
+    out[_NJ] += 1.0
+    if int(d[0]) != _OK:
+        return False
+    _jacobian_raw(d, ints, floats, G)
+    return True
+
+
+@njit(error_model="numpy")
+def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max_fail):
+    """Bounded, line-searched Gauss-Newton from z (updated in place; G holds the last Jacobian,
+    dF/dz); at most ``max_fail`` failed line searches. Returns |r|^2 at the end (inf when the map
+    fails at the start: d[0] holds its status)."""
+    nc = ints[_I_NC]
+    m = ints[_I_TGT] + ints[_I_TGT + 1]
+    tol2 = floats[_F_TOL] ** 2
+    broyden = ints[_I_BROYDEN] != 0
+    J = W[_W_J : _W_J + 6]
+    r = W[_W_R : _W_R + 2]
+    rt = W[_W_RT : _W_RT + 2]
+    F = W[_W_F : _W_F + 2]
+    delta = W[_W_DELTA : _W_DELTA + 3]
+    zt = W[_W_ZT : _W_ZT + 3]
+    free = W[_W_FREE : _W_FREE + 3]
+    for i in range(6):
+        J[i] = 0.0
+    if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
+        return math.inf
+    phi = _residual(d, a, ints, floats, r)
+    F[0], F[1] = d[1 + ints[_I_OH]], d[1 + ints[_I_OV]]
+    fresh = True
+    damping = 0  # rounds of growing mu since the last accepted step
+    fails = 0
+    while True:
+        _weighted(G, ints, floats, J)
+        # free controls: not held at a bound by the descent direction -J^T r
+        scale = 0.0
+        for j in range(nc):
+            gj = J[j] * r[0] + J[3 + j] * r[1]
+            held = (z[j] <= zlo[j] and gj > 0.0) or (z[j] >= zhi[j] and gj < 0.0)
+            free[j] = 0.0 if held else 1.0
+            scale += J[j] ** 2 + J[3 + j] ** 2
+        mu = 0.0 if damping == 0 else scale * 1e-3 * 100.0 ** (damping - 1)
+        if not _step(W, J, r, z, free, nc, mu, delta):
+            if damping < _DAMPING_ROUNDS:
+                damping += 1
+                continue
+            break
+        # converged: the residual within tol and (more controls than targets) the pull at rest
+        size = 0.0
+        for j in range(nc):
+            size = max(size, abs(delta[j]))
+        if phi <= tol2 and (size <= _PULL_TOL or nc <= m):
+            break
+        if phi <= tol2 and not fresh:  # the pull toward the start needs the null space exactly
+            if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
+                break
+            fresh = True
+            continue
+        # stationary: the linearised residual cannot decrease (a least-squares minimum)
+        pred = 0.0
+        for i in range(2):
+            ri = r[i]
+            for j in range(nc):
+                ri += J[3 * i + j] * delta[j]
+            pred += ri * ri
+        if phi > tol2 and (phi - pred <= 1e-12 * phi or size <= 1e-14):
+            if not fresh:
+                if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
+                    break
+                fresh = True
+                continue
+            break
+        alpha = 1.0
+        accepted = False
+        phi_t = math.inf
+        for _ in range(_HALVINGS):
+            for j in range(nc):
+                zt[j] = min(max(z[j] + alpha * delta[j], zlo[j]), zhi[j])
+            phi_t = _evaluate(apex, a, zt, u0, ints, floats, d, rt, out)
+            if phi_t < phi * (1.0 - _ARMIJO * alpha) or (phi <= tol2 and phi_t <= tol2):
+                accepted = True
+                break
+            alpha *= 0.5
+        if not accepted:
+            fails += 1
+            if fails > max_fail:
+                break
+            if not fresh:  # a secant Jacobian may be off: a fresh one before giving up
+                if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
+                    break
+                fresh = True
+                continue
+            if damping < _DAMPING_ROUNDS:  # damp toward the gradient direction
+                damping += 1
+                continue
+            break
+        out[_NI] += 1.0
+        damping = 0
+        ht, vt = d[1 + ints[_I_OH]], d[1 + ints[_I_OV]]
+        if broyden:
+            # G += ((F_t - F) - G s) s^T / (s^T s)
+            ss = 0.0
+            for j in range(nc):
+                ss += (zt[j] - z[j]) ** 2
+            if ss > 0.0:
+                for i in range(2):
+                    y = (ht - F[0]) if i == 0 else (vt - F[1])
+                    for j in range(nc):
+                        y -= G[3 * i + j] * (zt[j] - z[j])
+                    for j in range(nc):
+                        G[3 * i + j] += y * (zt[j] - z[j]) / ss
+            fresh = False
+        for j in range(nc):
+            z[j] = zt[j]
+        phi = phi_t
+        r[0], r[1] = rt[0], rt[1]
+        F[0], F[1] = ht, vt
+        if out[_NJ] + out[_NE] >= ints[_I_MAXJ]:
+            break
+        if not broyden:
+            if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
+                break  # the values just succeeded: a derivative that does not exist
+            fresh = True
+    return phi
+
+
+@njit(error_model="numpy")
+def _illinois(apex, a, z, u0, ints, floats, W, d, out, za, zb, fa, fb):
+    """The one-control, one-target root in the bracket [za, zb] (f(za) f(zb) < 0) by the Illinois
+    method; z[0] set to it; returns |r|^2 there."""
+    r = W[_W_RI : _W_RI + 2]
+    k = 0 if ints[_I_TGT] else 1
+    tol = floats[_F_TOL]
+    side = 0
+    phi = math.inf
+    for _ in range(_BRACKET_ITER):
+        zc = (za * fb - zb * fa) / (fb - fa)
+        if not (min(za, zb) < zc < max(za, zb)):
+            zc = 0.5 * (za + zb)
+        z[0] = zc
+        phi = _evaluate(apex, a, z, u0, ints, floats, d, r, out)
+        if phi == math.inf:  # the map fails inside the bracket: keep the side that ran
+            zb = zc
+            continue
+        fc = r[k]
+        if phi <= tol * tol or abs(zb - za) <= 1e-15 * max(1.0, abs(zc)):
+            return phi
+        if (fc < 0.0) == (fa < 0.0):
+            za, fa = zc, fc
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        else:
+            zb, fb = zc, fc
+            if side == 1:
+                fa *= 0.5
+            side = 1
+    return phi
+
+
+@njit(error_model="numpy")
+def _golden(apex, a, z, u0, ints, floats, W, d, out, lo, hi):
+    """The minimum of |r|^2 over the first control in [lo, hi] (golden section, a failing map
+    counting as inf); z[0] set to it; returns |r|^2 there."""
+    r = W[_W_RG : _W_RG + 2]
+    g = 0.5 * (math.sqrt(5.0) - 1.0)
+    x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+    z[0] = x1
+    f1 = _evaluate(apex, a, z, u0, ints, floats, d, r, out)
+    z[0] = x2
+    f2 = _evaluate(apex, a, z, u0, ints, floats, d, r, out)
+    for _ in range(_GOLDEN_ITER):
+        if f1 <= f2:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - g * (hi - lo)
+            z[0] = x1
+            f1 = _evaluate(apex, a, z, u0, ints, floats, d, r, out)
+        else:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + g * (hi - lo)
+            z[0] = x2
+            f2 = _evaluate(apex, a, z, u0, ints, floats, d, r, out)
+    z[0] = x1 if f1 <= f2 else x2
+    return min(f1, f2)
+
+
+@njit(error_model="numpy")
+def _scan(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, zbest, G):
+    """The fallback of a one-control solve (or of a start where the map fails): scan the first
+    control's range; one control and one target: the sign change nearest the start, solved by the
+    Illinois method, or without one the closest point (golden section about the scan's best);
+    otherwise Gauss-Newton again from the scan's best point. Returns |r|^2 of the result, whose
+    controls are written into zbest."""
+    n = ints[_I_SCAN]
+    nc = ints[_I_NC]
+    one = nc == 1 and ints[_I_TGT] + ints[_I_TGT + 1] == 1
+    k = 0 if ints[_I_TGT] else 1
+    r = W[_W_RS : _W_RS + 2]
+    zs = W[_W_ZS : _W_ZS + 3]
+    for j in range(nc):
+        zs[j] = z[j]
+    best = math.inf
+    i_best = 0
+    zb0 = z[0]
+    prev_ok = False
+    prev_z, prev_f = 0.0, 0.0
+    bz_a, bz_b, bf_a, bf_b = 0.0, 0.0, 0.0, 0.0
+    bracket_dist = math.inf
+    start = z[0]
+    step = (zhi[0] - zlo[0]) / (n - 1)
+    for i in range(n):
+        zs[0] = zlo[0] + step * i
+        phi = _evaluate(apex, a, zs, u0, ints, floats, d, r, out)
+        ok = phi < math.inf
+        if ok and phi < best:
+            best, zb0, i_best = phi, zs[0], i
+        if ok and one:
+            f = r[k]
+            if prev_ok and (f < 0.0) != (prev_f < 0.0):
+                dist = abs(0.5 * (prev_z + zs[0]) - start)
+                if dist < bracket_dist:
+                    bracket_dist = dist
+                    bz_a, bz_b, bf_a, bf_b = prev_z, zs[0], prev_f, f
+            prev_z, prev_f = zs[0], f
+        prev_ok = ok
+    if best == math.inf:
+        return math.inf
+    for j in range(nc):
+        zbest[j] = z[j]
+    if one and bracket_dist < math.inf:
+        zbest[0] = bz_a
+        return _illinois(apex, a, zbest, u0, ints, floats, W, d, out, bz_a, bz_b, bf_a, bf_b)
+    if nc == 1:
+        lo = zlo[0] + step * max(i_best - 1, 0)
+        hi = zlo[0] + step * min(i_best + 1, n - 1)
+        return _golden(apex, a, zbest, u0, ints, floats, W, d, out, lo, hi)
+    zbest[0] = zb0
+    return _gauss_newton(apex, jac, a, zbest, u0, zlo, zhi, ints, floats, W, d, out, G, _MAX_FAIL)
+
+
+@njit(error_model="numpy")
+def solve_row(apex, jac, a, ints, floats, W, out):
+    """One deadbeat solve: the vector ``a`` holds the kernel's arguments (the apex, the ground, the
+    parameters, the options and the starting controls at the controls' positions), then the target
+    height and speed; ``W`` is the work buffer (:data:`N_WORK`, then room for the kernels' outputs);
+    ``out`` gets the head (:data:`HEAD`) and the map's outputs at the final point (NaN when the map
+    failed)."""
+    nc = ints[_I_NC]
+    n_out = ints[_I_NOUT]
+    tol = floats[_F_TOL]
+    for i in range(out.shape[0]):
+        out[i] = _NAN
+    out[_NJ] = 0.0
+    out[_NE] = 0.0
+    out[_NI] = 0.0
+    d = W[N_WORK:]
+    u0 = W[_W_U0 : _W_U0 + 3]
+    z = W[_W_Z : _W_Z + 3]
+    zlo = W[_W_ZLO : _W_ZLO + 3]
+    zhi = W[_W_ZHI : _W_ZHI + 3]
+    G = W[_W_G : _W_G + 6]
+    for j in range(6):
+        G[j] = _NAN
+    for j in range(nc):
+        u0[j] = a[ints[_I_ARG + j]]
+        s = floats[_F_S + j]
+        zlo[j] = (floats[_F_LO + j] - u0[j]) / s
+        zhi[j] = (floats[_F_HI + j] - u0[j]) / s
+        z[j] = min(max(0.0, zlo[j]), zhi[j])
+    # one control: the scan is the safeguard, so Newton gets one failed line search
+    max_fail = 1 if nc == 1 else _MAX_FAIL
+    phi = _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max_fail)
+    first_status = int(d[0])
+    if phi > tol * tol and (nc == 1 or phi == math.inf) and ints[_I_SCAN] >= 2:
+        zb = W[_W_ZB : _W_ZB + 3]
+        Gb = W[_W_GB : _W_GB + 6]
+        for j in range(6):
+            Gb[j] = _NAN
+        phi_b = _scan(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, zb, Gb)
+        if phi_b < phi:
+            phi = phi_b
+            for j in range(nc):
+                z[j] = zb[j]
+            for j in range(6):
+                G[j] = Gb[j]
+    # the final point: the controls, the outputs, the residual, the energy authority
+    _set_controls(a, z, u0, ints, floats)
+    apex(a, d)
+    out[_NE] += 1.0
+    status = int(d[0])
+    out[_MS] = float(status if phi < math.inf else first_status)
+    for j in range(nc):
+        out[_U0 + j] = a[ints[_I_ARG + j]]
+    if status != _OK or phi == math.inf:
+        out[_PS] = float(MAP_FAILED)
+        if status == _OK:
+            out[_MS] = float(first_status)
+        return
+    r = W[_W_RF : _W_RF + 2]
+    phi = _residual(d, a, ints, floats, r)
+    out[_RES] = math.sqrt(phi)
+    out[_PS] = float(REACHED if phi <= tol * tol else UNREACHABLE)
+    for j in range(n_out):
+        out[N_HEAD + j] = d[1 + j]
+    for j in range(nc):
+        if ints[_I_COL + j] == ints[_I_KD]:
+            v = d[1 + ints[_I_OV]]
+            s = floats[_F_S + j]
+            out[_AUTH] = floats[_F_M] * (floats[_F_G] * G[j] / s + v * G[3 + j] / s)

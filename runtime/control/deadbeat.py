@@ -1,0 +1,787 @@
+"""Deadbeat step control on a map: the controls that take the current apex to a target next apex.
+
+Given the current apex (height h [m] above the ground under it, signed speed v [m/s]), the ground
+of the next touchdown (``ground`` [m], a step up positive) and a target next apex (height H above
+that ground, signed speed V), :func:`deadbeat` chooses the controls of one step on a map (the
+controller's model, any map of ``slipmaps.maps()``):
+
+* ``touchdown_angle`` (q_th_td [rad], from the vertical, counterclockwise positive), set in flight;
+* ``k_c`` [N/m], the leg's stiffness while it compresses (set in flight), and ``k_d`` [N/m], the
+  stiffness from the bottom on; their difference is the only way a step changes its total energy,
+  by (k_d - k_c)(l0 - q_r_b)^2 / 2 at the bottom (report eq 97): at k_c = k_d (and g_s = g_f,
+  q_r_td = q_r_lo) the step conserves the energy, so the next apex height and speed cannot both be
+  chosen;
+* ``k``, for a map that needs a constant stiffness (``"constant_stiffness"`` in its ``requires``:
+  ``geyer``, the gravity corrections): k_c = k_d = k together, the only stiffness such a map has.
+
+Control sets: the angle alone (one target: the speed when ``target_speed`` is given, else the
+height; the other is predicted and reported), the angle and k_d (the default), the angle and k_c,
+all three (two targets, one control to spare: the stiffness nearest the nominal, below), and for a
+constant-stiffness map the angle and k.
+
+The solve (:mod:`.compiled`): Newton's method with the map's generated apex-return Jacobian (its
+d/d touchdown_angle, d/d k_c, d/d k_d or d/d k columns), by default refreshed once and then updated
+by Broyden's rank-one secant (``jacobian="newton"``: the generated Jacobian at every step), in the
+scaled unknowns (angle / :data:`ANGLE_SCALE`, stiffness / the nominal k_c of ``params``) and the
+scaled residual (height / l0, speed / sqrt(g_f l0)); every control within its bounds (projection
+with an active set); a backtracking line search on the residual norm, a step where the map fails
+counting as no decrease; with one control a scan of its range and a bracketed (Illinois) solve
+when Newton does not reach the target. With more controls than targets, the stated preference is
+the least change from the starting controls in the scaled norm, which makes the angle cheap (1 rad
+of angle weighs as much as 1/ANGLE_SCALE of the nominal stiffness): the angle takes what it can,
+and k_c and k_d share the rest, each as close to its nominal value (``params.k_c``, ``params.k_d``)
+as the target allows.
+
+Statuses (:class:`PlanStatus`, a string enum):
+
+* ``REACHED``: the model's next apex is within ``tol`` of the target (scaled: ``tol`` m of height
+  per metre of leg, ``tol`` sqrt(g_f l0) of speed; default 1e-9);
+* ``UNREACHABLE``: no control within the bounds reaches it; the result holds the closest reachable
+  next apex the solve found (its controls, the predicted apex, ``residual`` the scaled distance, and
+  the step's energy budget: ``energy_range``, what k_d within its bounds can add or remove at the
+  chosen angle and k_c, beside ``energy_needed``);
+* ``MAP_FAILED``: the map fails (``map_status``, e.g. ``APEX_TOO_LOW``, ``FALL``) at every
+  control the solve tried.
+
+Bounds (:data:`DEFAULT_ANGLE_BOUNDS`, :data:`DEFAULT_STIFFNESS_RANGE`): ``bounds={"k_d": (lo, hi),
+...}`` overrides any; the default angle bound is |q_th_td| <= 1.2 rad, the stiffnesses k_c, k_d and
+k in [0.5, 2] x ``params.k_c``.
+
+:class:`Deadbeat` is the controller prepared once (map, parameters, controls, bounds, options);
+:func:`deadbeat` and :func:`deadbeat_batch` build one (cached) per call. Its :meth:`Deadbeat.plan`
+is the fast path a run uses (a few microseconds of Python around the compiled solve).
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Mapping
+from functools import lru_cache
+
+import numpy as np
+from slipmaps.generated.status import MESSAGES, Status
+
+from ..api.calls import KERNELS, Call
+from ..api.index import maps
+from ..api.numeric import num
+from ..api.params import SlipParams
+from ..api.validate import check_params, leg_angle, non_negative, real, real_array
+from . import compiled
+from .compiled import N_FLOATS, N_HEAD, N_INTS
+
+__all__ = [
+    "ANGLE_SCALE",
+    "CONTROLS",
+    "DEFAULT_ANGLE_BOUNDS",
+    "DEFAULT_STIFFNESS_RANGE",
+    "Deadbeat",
+    "DeadbeatBatch",
+    "DeadbeatResult",
+    "PlanStatus",
+    "deadbeat",
+    "deadbeat_batch",
+    "default_angle",
+]
+
+
+class PlanStatus(str, enum.Enum):
+    """How a deadbeat solve ended (module docstring): ``REACHED``, ``UNREACHABLE`` or ``MAP_FAILED``."""
+
+    REACHED = "REACHED"
+    UNREACHABLE = "UNREACHABLE"
+    MAP_FAILED = "MAP_FAILED"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+_CODES = {compiled.REACHED: PlanStatus.REACHED, compiled.UNREACHABLE: PlanStatus.UNREACHABLE}
+_CODES[compiled.MAP_FAILED] = PlanStatus.MAP_FAILED
+#: Plan status -> the code the solver writes (batch results hold codes).
+PLAN_CODES = {s: c for c, s in _CODES.items()}
+
+#: The control names and the kernel argument each sets.
+CONTROLS = {"touchdown_angle": "q_th_td", "k_c": "k_c", "k_d": "k_d", "k": "k"}
+#: Default bound of the touchdown angle [rad] (either sign: a step may brake, stop or turn).
+DEFAULT_ANGLE_BOUNDS = (-1.2, 1.2)
+#: Default range of every stiffness control, as multiples of ``params.k_c``.
+DEFAULT_STIFFNESS_RANGE = (0.5, 2.0)
+#: The angle's scale [rad] in the scaled unknowns (and in the least-change preference): large, so
+#: that with a control to spare the stiffness stays nearest its nominal value.
+ANGLE_SCALE = 10.0
+#: Default tolerance on the scaled residual.
+TOL = 1e-9
+#: Points of the one-control scan.
+SCAN = 24
+#: Map evaluations (Jacobians and values) per solve at most.
+MAX_EVALUATIONS = 200
+#: Stance time of the angle guess, as a fraction of the spring's half period pi sqrt(m / k_c)
+#: (measured: the exact stance of the human runner's 5 m/s gait lasts 0.157 s = 0.79 of 0.199 s).
+STANCE_FRACTION = 0.8
+
+
+def default_angle(params: SlipParams, apex_speed: float, k_c: float | None = None) -> float:
+    """The starting touchdown angle: the neutral angle whose foot lands half a stance ahead,
+    asin(v t_s / (2 q_r_td)) with t_s = 0.8 pi sqrt(m / k_c) (clipped to |q_th| <= 1 rad)."""
+    k = params.k_c if k_c is None else k_c
+    t_s = STANCE_FRACTION * math.pi * math.sqrt(params.m / k)
+    x = apex_speed * t_s / (2.0 * params.q_r_td)
+    return math.asin(max(-math.sin(1.0), min(math.sin(1.0), x)))
+
+
+class DeadbeatResult:
+    """One deadbeat solve (module docstring); SI units, NaN where a value does not exist. The values
+    are read from the solver's row when asked for (a run asks for a few of them per step).
+
+    ``status`` (:class:`PlanStatus`), ``message``, the controls ``touchdown_angle``, ``k_c``, ``k_d``
+    (equal for a constant-stiffness map), the model's next apex at them ``apex_height``,
+    ``apex_speed`` (``prediction``: every output of the map), ``residual`` (the scaled distance to
+    the target), ``map_status``, the targets (``target_height`` / ``target_speed``, NaN when not a
+    target), the step's energy ``energy_change`` = E' - E [J] (flight energies above the touchdown
+    ground), ``energy_needed`` (of the target, when both are targets), ``energy_range`` (what k_d
+    within its bounds makes of energy_change at the chosen angle and k_c), ``at_bounds``, the work
+    done (``jacobians``, ``evaluations``, ``iterations``).
+    """
+
+    __slots__ = ("_ctl", "_out", "_a", "_apex", "_targets")
+
+    def __init__(self, ctl: Deadbeat, out: np.ndarray, a: np.ndarray, apex, targets):
+        self._ctl, self._out, self._a, self._apex, self._targets = ctl, out, a, apex, targets
+
+    # the solve
+    @property
+    def map(self) -> str:
+        return self._ctl.name
+
+    @property
+    def controls(self) -> tuple[str, ...]:
+        return self._ctl.controls
+
+    @property
+    def status(self) -> PlanStatus:
+        return _CODES[int(self._out[0])]
+
+    @property
+    def map_status(self) -> Status:
+        return Status(int(self._out[1]))
+
+    @property
+    def reached(self) -> bool:
+        return int(self._out[0]) == compiled.REACHED
+
+    @property
+    def ok(self) -> bool:
+        """True unless the map failed (a reached or the closest reachable apex is returned)."""
+        return int(self._out[0]) != compiled.MAP_FAILED
+
+    @property
+    def jacobians(self) -> int:
+        return int(self._out[2])
+
+    @property
+    def evaluations(self) -> int:
+        return int(self._out[3])
+
+    @property
+    def iterations(self) -> int:
+        return int(self._out[4])
+
+    # the controls
+    def _control(self, name: str) -> float:
+        ctl = self._ctl
+        if name in ctl.controls:
+            return float(self._out[5 + ctl.controls.index(name)])
+        return float(self._a[ctl._pos[CONTROLS[name]]])  # not a control: the fixed value
+
+    @property
+    def touchdown_angle(self) -> float:
+        return self._control("touchdown_angle")
+
+    @property
+    def k_c(self) -> float:
+        return self._control("k" if "k" in self._ctl.wrt else "k_c")
+
+    @property
+    def k_d(self) -> float:
+        return self._control("k" if "k" in self._ctl.wrt else "k_d")
+
+    @property
+    def at_bounds(self) -> tuple[str, ...]:
+        ctl = self._ctl
+        out = []
+        for j, c in enumerate(ctl.controls):
+            lo, hi = ctl.bounds[c]
+            if self._out[5 + j] <= lo or self._out[5 + j] >= hi:
+                out.append(c)
+        return tuple(out)
+
+    # the prediction
+    @property
+    def prediction(self) -> dict[str, float]:
+        return dict(zip(self._ctl.outputs, map(float, self._out[N_HEAD:]), strict=True))
+
+    @property
+    def apex_height(self) -> float:
+        return float(self._out[N_HEAD + self._ctl._out_h])
+
+    @property
+    def apex_speed(self) -> float:
+        return float(self._out[N_HEAD + self._ctl._out_v])
+
+    @property
+    def residual(self) -> float:
+        return float(self._out[8])
+
+    @property
+    def target_height(self) -> float:
+        return self._targets[0]
+
+    @property
+    def target_speed(self) -> float:
+        return self._targets[1]
+
+    @property
+    def height_error(self) -> float:
+        return self.apex_height - self.target_height
+
+    @property
+    def speed_error(self) -> float:
+        return self.apex_speed - self.target_speed
+
+    # the energy
+    def _energy_in(self) -> float:
+        p = self._ctl.params
+        h, v, gr = self._apex
+        return p.m * (p.g_f * (h - gr) + 0.5 * v * v)
+
+    @property
+    def energy_change(self) -> float:
+        p = self._ctl.params
+        hn, vn = self.apex_height, self.apex_speed
+        return p.m * (p.g_f * hn + 0.5 * vn * vn) - self._energy_in()
+
+    @property
+    def energy_needed(self) -> float:
+        p = self._ctl.params
+        H, V = self._targets
+        return p.m * (p.g_f * H + 0.5 * V * V) - self._energy_in()
+
+    @property
+    def authority(self) -> float:
+        """dE'/dk_d at the controls [J per N/m] (NaN for a constant-stiffness map)."""
+        return float(self._out[9])
+
+    @property
+    def energy_range(self) -> tuple[float, float]:
+        lo, hi = self._ctl._kd_bounds
+        change, auth, k_d = self.energy_change, self.authority, self.k_d
+        return (change + (lo - k_d) * auth, change + (hi - k_d) * auth)
+
+    @property
+    def message(self) -> str:
+        return message_of(self, self._ctl.bounds)
+
+    def as_dict(self) -> dict:
+        """JSON-ready: every value by name (None for NaN), statuses by name."""
+
+        def f(x):
+            return float(x) if math.isfinite(x) else None
+
+        return {
+            "map": self.map,
+            "status": self.status.value,
+            "message": self.message,
+            "controls": list(self.controls),
+            "touchdown_angle": f(self.touchdown_angle),
+            "k_c": f(self.k_c),
+            "k_d": f(self.k_d),
+            "apex_height": f(self.apex_height),
+            "apex_speed": f(self.apex_speed),
+            "target_height": f(self.target_height),
+            "target_speed": f(self.target_speed),
+            "residual": f(self.residual),
+            "map_status": self.map_status.name,
+            "energy_change": f(self.energy_change),
+            "energy_needed": f(self.energy_needed),
+            "energy_range": [f(x) for x in self.energy_range],
+            "at_bounds": list(self.at_bounds),
+            "jacobians": self.jacobians,
+            "evaluations": self.evaluations,
+            "iterations": self.iterations,
+        }
+
+    def __repr__(self) -> str:
+        return (
+            f"DeadbeatResult(map={self.map!r}, status={self.status.value}, touchdown_angle="
+            f"{self.touchdown_angle!r}, k_c={self.k_c!r}, k_d={self.k_d!r}, apex_height={self.apex_height!r}, "
+            f"apex_speed={self.apex_speed!r}, residual={self.residual:.3g})"
+        )
+
+
+class DeadbeatBatch(Mapping):
+    """Many deadbeat solves: columns by name in the inputs' broadcast shape (``touchdown_angle``,
+    ``k_c``, ``k_d``, ``apex_height``, ``apex_speed``, ``residual``, ``energy_change``,
+    ``energy_low``, ``energy_high``, ``authority``, ``jacobians``, ``evaluations``, every output of
+    the map as ``next_<name>``), ``status`` (plan codes: 0 REACHED, 1 UNREACHABLE, 2 MAP_FAILED),
+    ``map_status`` (the map's Status codes); ``counts()`` the rows per plan status."""
+
+    def __init__(self, map_name: str, columns: dict[str, np.ndarray], shape: tuple[int, ...]):
+        self.map = map_name
+        self._columns = columns
+        self.shape = shape
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        try:
+            return self._columns[name]
+        except KeyError:
+            raise KeyError(f"deadbeat batch has no column {name!r}; it has {', '.join(self)}") from None
+
+    def __iter__(self):
+        return iter(self._columns)
+
+    def __len__(self) -> int:
+        return len(self._columns)
+
+    @property
+    def status(self) -> np.ndarray:
+        return self._columns["status"]
+
+    @property
+    def reached(self) -> np.ndarray:
+        return self.status == compiled.REACHED
+
+    def counts(self) -> dict[str, int]:
+        codes, counts = np.unique(self.status, return_counts=True)
+        order = np.argsort(-counts, kind="stable")
+        return {_CODES[int(codes[i])].value: int(counts[i]) for i in order}
+
+    def __repr__(self) -> str:
+        return f"DeadbeatBatch(map={self.map!r}, shape={self.shape}, status={self.counts()})"
+
+
+def _const_maps() -> tuple[str, str]:
+    cs = [m.name for m in maps() if "constant_stiffness" in m.requires]
+    vs = [m.name for m in maps() if "constant_stiffness" not in m.requires]
+    return ", ".join(cs), ", ".join(vs)
+
+
+def _controls(call: Call, controls) -> tuple[str, ...]:
+    """The controls validated against the map (ValueError naming the problem), the angle first."""
+    if isinstance(controls, str):
+        controls = (controls,)
+    try:
+        names = tuple(controls)
+    except TypeError:
+        raise TypeError(f"controls must be a tuple of names, got {controls!r}") from None
+    if not names:
+        raise ValueError("controls must name at least one of " + ", ".join(CONTROLS))
+    for c in names:
+        if c not in CONTROLS:
+            raise ValueError(f"unknown control {c!r}: the controls are {', '.join(CONTROLS)}")
+    if len(set(names)) != len(names):
+        raise ValueError(f"controls name a control twice: {names!r}")
+    wrt = call.spec("apex_return_jacobian").wrt
+    constant = "k" in wrt
+    cs, vs = _const_maps()
+    for c in names:
+        if c in ("k_c", "k_d") and constant:
+            raise ValueError(
+                f"map {call.info.name!r} needs a constant stiffness, so it has no {c} to control: give "
+                f"controls=('touchdown_angle',) or ('touchdown_angle', 'k') (k_c = k_d = k together), or a "
+                f"map that accepts k_c != k_d ({vs})"
+            )
+        if c == "k" and not constant:
+            raise ValueError(
+                f"control 'k' (k_c = k_d together) is for the constant-stiffness maps ({cs}); map "
+                f"{call.info.name!r} has k_c and k_d: control them by name"
+            )
+    order = {c: i for i, c in enumerate(CONTROLS)}
+    return tuple(sorted(names, key=order.__getitem__))
+
+
+def _bounds(params: SlipParams, controls: tuple[str, ...], bounds) -> dict[str, tuple[float, float]]:
+    lo_k, hi_k = (f * params.k_c for f in DEFAULT_STIFFNESS_RANGE)
+    out = {c: (DEFAULT_ANGLE_BOUNDS if c == "touchdown_angle" else (lo_k, hi_k)) for c in controls}
+    for key, pair in dict(bounds or {}).items():
+        if key not in CONTROLS:
+            raise ValueError(f"bounds: unknown control {key!r}: the controls are {', '.join(CONTROLS)}")
+        try:
+            lo, hi = pair
+        except (TypeError, ValueError):
+            raise ValueError(f"bounds[{key!r}] must be a pair (low, high), got {pair!r}") from None
+        lo, hi = real(f"bounds[{key!r}] low", lo), real(f"bounds[{key!r}] high", hi)
+        if not lo < hi:
+            raise ValueError(f"bounds[{key!r}] must have low < high, got ({num(lo)}, {num(hi)})")
+        if key == "touchdown_angle":
+            leg_angle(f"bounds[{key!r}] low", lo)
+            leg_angle(f"bounds[{key!r}] high", hi)
+        elif lo <= 0.0:
+            raise ValueError(f"bounds[{key!r}]: a stiffness must be positive, got low {num(lo)}")
+        if key in out:
+            out[key] = (lo, hi)
+    return out
+
+
+_OPTIONS = ("tol", "jacobian", "scan", "max_evaluations")
+
+
+def _finite(name: str, x) -> float:
+    """``x`` as a finite float (the common case checked inline), else :func:`real`'s error."""
+    if type(x) is float and math.isfinite(x):
+        return x
+    return real(name, x)
+
+
+class Deadbeat:
+    """A deadbeat controller on map ``name`` (module docstring), prepared once: validated, its
+    kernels and solver compiled (the first one per map and process takes a few seconds).
+
+    ``plan(h, v, H, V, ground=0.0)`` solves one step; ``plan_batch`` many (arrays broadcast, in
+    parallel). ``touchdown_angle=``, ``k_c=``, ``k_d=``, ``k=`` of a call give the starting values of
+    the controls (the angle's default: :func:`default_angle`; the stiffness's: ``params``, which are
+    also the nominal values of the least-change preference) and the fixed value of a quantity that is
+    not a control (the touchdown angle when only stiffnesses are controlled).
+    """
+
+    def __init__(
+        self,
+        name: str,
+        params: SlipParams,
+        *,
+        controls=("touchdown_angle", "k_d"),
+        bounds=None,
+        tol: float = TOL,
+        jacobian: str = "broyden",
+        scan: int = SCAN,
+        max_evaluations: int = MAX_EVALUATIONS,
+        **options,
+    ):
+        check_params(params)
+        call = Call.of(name, params, options)
+        if call.backend is not KERNELS:
+            raise ValueError(
+                f"map {call.info.name!r} with options {dict(options)!r} runs outside the compiled kernels; "
+                "the deadbeat solve needs them (e.g. the exact map's default method='compiled')"
+            )
+        self.call = call
+        self.name = call.info.name
+        self.params = params
+        self.controls = _controls(call, controls)
+        self.bounds = _bounds(params, self.controls, bounds)
+        if jacobian not in ("broyden", "newton"):
+            raise ValueError(f"jacobian must be 'broyden' or 'newton', got {jacobian!r}")
+        tol = real("tol", tol)
+        if not tol > 0.0:
+            raise ValueError(f"tol must be positive, got {num(tol)}")
+        for key, value in (("scan", scan), ("max_evaluations", max_evaluations)):
+            if isinstance(value, bool) or not isinstance(value, int) or value < 2:
+                raise ValueError(f"{key} must be an integer >= 2, got {value!r}")
+        self.options = dict(call.options)
+        self.tol = tol
+        spec = call.spec("apex_return_jacobian")
+        self.args = spec.args
+        self.outputs = call.spec("apex_return").outputs
+        self.wrt = spec.wrt
+        self._out_h = self.outputs.index("apex_height")
+        self._out_v = self.outputs.index("apex_speed")
+        self._pos = {a: i for i, a in enumerate(self.args)}
+        # a row: the kernel's arguments, then the target height and speed
+        self._template = np.array([float(call.values.get(a, math.nan)) for a in self.args] + [0.0, 0.0])
+        ints = np.zeros(N_INTS, dtype=np.int64)
+        floats = np.zeros(N_FLOATS)
+        fi, ff = compiled.INT_FIELDS, compiled.FLOAT_FIELDS
+        ints[fi["n_out"]] = len(self.outputs)
+        ints[fi["n_wrt"]] = len(self.wrt)
+        ints[fi["out_height"]] = self.outputs.index("apex_height")
+        ints[fi["out_speed"]] = self.outputs.index("apex_speed")
+        ints[fi["n_controls"]] = len(self.controls)
+        for j, c in enumerate(self.controls):
+            ints[fi["arg"] + j] = self._pos[CONTROLS[c]]
+            ints[fi["col"] + j] = self.wrt.index(CONTROLS[c])
+            lo, hi = self.bounds[c]
+            floats[ff["lo"] + j], floats[ff["hi"] + j] = lo, hi
+            floats[ff["scale"] + j] = ANGLE_SCALE if c == "touchdown_angle" else params.k_c
+        ints[fi["kd_col"]] = self.wrt.index("k_d") if "k_d" in self.wrt else -1
+        ints[fi["max_evaluations"]] = max_evaluations
+        ints[fi["broyden"]] = int(jacobian == "broyden")
+        ints[fi["scan"]] = scan
+        ints[fi["targeted"]] = ints[fi["targeted"] + 1] = 1
+        floats[ff["weight"]] = 1.0 / params.l0
+        floats[ff["weight"] + 1] = 1.0 / math.sqrt(params.g_f * params.l0)
+        floats[ff["tol"]] = tol
+        floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
+        ints[fi["n_args"]] = len(self.args)
+        self._ints, self._floats = ints, floats
+        self._kernels = compiled.kernels_for(call)
+        self._i_h, self._i_v = self._pos["b_y_apex"], self._pos["b_xd_apex"]
+        self._i_gr, self._i_th = self._pos["ground"], self._pos["q_th_td"]
+        self._clip = tuple((self._pos[CONTROLS[c]], *self.bounds[c]) for c in self.controls)
+        self._ints_by = {t: self._ints_for(t) for t in ((1, 1), (1, 0), (0, 1))}
+        self._width = self._kernels.width
+        kd = "k_d" if "k_d" in self.wrt else "k"
+        self._kd_bounds = self.bounds.get(kd, tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
+        self._angle_alone = "touchdown_angle" in self.controls and len(self.controls) == 1
+
+    # ------------------------------------------------------------------------------------------
+    def _targeted(self, target_height, target_speed) -> tuple[int, int]:
+        """Which components are targets: both, or with one control (or a constant-stiffness map
+        conserving the energy) the speed when given, else the height."""
+        th, tv = target_height is not None, target_speed is not None
+        if not (th or tv):
+            raise ValueError("give target_height, target_speed or both")
+        if len(self.controls) == 1 and th and tv:
+            return 0, 1
+        return int(th), int(tv)
+
+    def _start(self, a: np.ndarray, v: float, angle, k_c, k_d, k) -> None:
+        """The starting controls (and fixed values) into the row ``a``, each within its bounds."""
+        a[self._i_th] = default_angle(self.params, v) if angle is None else _finite("touchdown_angle", angle)
+        if abs(a[self._i_th]) >= 0.5 * math.pi:
+            leg_angle("touchdown_angle", a[self._i_th])
+        for key, value in (("k_c", k_c), ("k_d", k_d), ("k", k)):
+            if value is not None:
+                if key not in self._pos:
+                    raise ValueError(f"map {self.name!r} has no stiffness {key!r}")
+                x = _finite(key, value)
+                if x <= 0.0:
+                    raise ValueError(f"{key} must be positive, got {num(x)}")
+                a[self._pos[key]] = x
+        for pos, lo, hi in self._clip:  # a start outside its bounds: the nearest bound
+            x = a[pos]
+            a[pos] = lo if x < lo else (hi if x > hi else x)
+
+    def _ints_for(self, tgt: tuple[int, int]) -> np.ndarray:
+        ints = self._ints.copy()
+        t = compiled.INT_FIELDS["targeted"]
+        ints[t], ints[t + 1] = tgt
+        return ints
+
+    def plan(
+        self,
+        apex_height,
+        apex_speed,
+        target_height,
+        target_speed,
+        *,
+        ground=0.0,
+        touchdown_angle=None,
+        k_c=None,
+        k_d=None,
+        k=None,
+    ) -> DeadbeatResult:
+        """One step (module docstring): the controls from the apex (h, v) over ``ground`` to the
+        target (``target_height`` or ``target_speed`` may be None: not a target); the other
+        keywords are starting (or fixed) values of the controls."""
+        h = _finite("apex_height", apex_height)
+        if h < 0.0:
+            non_negative("apex_height", h)
+        v = _finite("apex_speed", apex_speed)
+        gr = _finite("ground", ground)
+        tgt = self._targeted(target_height, target_speed)
+        H = _finite("target_height", target_height) if tgt[0] else math.nan
+        V = _finite("target_speed", target_speed) if tgt[1] else math.nan
+        a = self._template.copy()
+        a[self._i_h] = h
+        a[self._i_v] = v
+        a[self._i_gr] = gr
+        self._start(a, v, touchdown_angle, k_c, k_d, k)
+        a[-2] = H if tgt[0] else 0.0
+        a[-1] = V if tgt[1] else 0.0
+        out = np.empty(self._width)
+        self._kernels.scalar(a, self._ints_by[tgt], self._floats, out)
+        return DeadbeatResult(self, out, a, (h, v, gr), (H, V))
+
+    def plan_batch(
+        self, apex_height, apex_speed, target_height, target_speed, *, ground=0.0, touchdown_angle=None
+    ) -> DeadbeatBatch:
+        """Many steps in parallel: the inputs broadcast (``touchdown_angle``: starting angles, default
+        :func:`default_angle` of each apex speed); a plan status per row (an invalid row, e.g. a NaN
+        apex, is MAP_FAILED with the map's INVALID_INPUT)."""
+        tgt = self._targeted(target_height, target_speed)
+        given = {
+            "apex_height": apex_height,
+            "apex_speed": apex_speed,
+            "touchdown_angle": 0.0 if touchdown_angle is None else touchdown_angle,
+            "ground": ground,
+            "target_height": target_height if tgt[0] else 0.0,
+            "target_speed": target_speed if tgt[1] else 0.0,
+        }
+        parts = np.broadcast_arrays(*(np.asarray(real_array(k, x), dtype=float) for k, x in given.items()))
+        shape = parts[0].shape
+        n = int(np.prod(shape))
+        cols = {k: np.ascontiguousarray(p.reshape(n)) for k, p in zip(given, parts, strict=True)}
+        if touchdown_angle is None:
+            p = self.params
+            t_s = STANCE_FRACTION * math.pi * math.sqrt(p.m / p.k_c)
+            x = cols["apex_speed"] * t_s / (2.0 * p.q_r_td)
+            cols["touchdown_angle"] = np.arcsin(np.clip(x, -math.sin(1.0), math.sin(1.0)))
+        A = np.tile(self._template, (n, 1))
+        for key, arg in (
+            ("apex_height", "b_y_apex"),
+            ("apex_speed", "b_xd_apex"),
+            ("touchdown_angle", "q_th_td"),
+            ("ground", "ground"),
+        ):
+            A[:, self._pos[arg]] = cols[key]
+        A[:, -2], A[:, -1] = cols["target_height"], cols["target_speed"]
+        for c in self.controls:
+            pos = self._pos[CONTROLS[c]]
+            lo, hi = self.bounds[c]
+            A[:, pos] = np.clip(A[:, pos], lo, hi)
+        ints = self._ints if tgt == (1, 1) else self._ints_for(tgt)
+        OUT = np.empty((n, self._kernels.width))
+        if n:
+            self._kernels.batch(A, ints, self._floats, OUT)
+        return self._batch_result(OUT, A, cols, tgt, shape)
+
+    def _batch_result(self, OUT, A, cols, tgt, shape) -> DeadbeatBatch:
+        p = self.params
+        H, V = cols["target_height"], cols["target_speed"]
+        out: dict[str, np.ndarray] = {}
+        out["status"] = OUT[:, 0].astype(np.int64)
+        out["map_status"] = OUT[:, 1].astype(np.int64)
+        u = {c: OUT[:, 5 + j] for j, c in enumerate(self.controls)}
+        out["touchdown_angle"] = u.get("touchdown_angle", A[:, self._pos["q_th_td"]])
+        if "k" in self.wrt:
+            out["k_c"] = out["k_d"] = u.get("k", A[:, self._pos["k"]])
+        else:
+            out["k_c"] = u.get("k_c", A[:, self._pos["k_c"]])
+            out["k_d"] = u.get("k_d", A[:, self._pos["k_d"]])
+        for j, name in enumerate(self.outputs):
+            out[f"next_{name}"] = OUT[:, N_HEAD + j]
+        out["apex_height"] = out["next_apex_height"]
+        out["apex_speed"] = out["next_apex_speed"]
+        out["target_height"] = H if tgt[0] else np.full_like(H, math.nan)
+        out["target_speed"] = V if tgt[1] else np.full_like(V, math.nan)
+        out["residual"] = OUT[:, 8]
+        out["authority"] = OUT[:, 9]
+        for k, name in ((2, "jacobians"), (3, "evaluations"), (4, "iterations")):
+            out[name] = OUT[:, k].astype(np.int64)
+        h, v, gr = cols["apex_height"], cols["apex_speed"], cols["ground"]
+        e_in = p.m * (p.g_f * (h - gr) + 0.5 * v * v)
+        hn, vn = out["apex_height"], out["apex_speed"]
+        out["energy_change"] = p.m * (p.g_f * hn + 0.5 * vn * vn) - e_in
+        lo, hi = self._kd_bounds
+        out["energy_low"] = out["energy_change"] + (lo - out["k_d"]) * out["authority"]
+        out["energy_high"] = out["energy_change"] + (hi - out["k_d"]) * out["authority"]
+        shaped = {k: np.asarray(x).reshape(shape) for k, x in out.items()}
+        return DeadbeatBatch(self.name, shaped, shape)
+
+    def __repr__(self) -> str:
+        return f"Deadbeat({self.name!r}, controls={self.controls}, bounds={self.bounds})"
+
+
+def message_of(res: DeadbeatResult, bounds: dict) -> str:
+    """The result in words: reached, or the closest reachable apex and why (bounds, energy), or the
+    map's failure."""
+    if res.status == PlanStatus.MAP_FAILED:
+        return (
+            f"the map fails at every control the solve tried: {res.map_status.name}: "
+            f"{MESSAGES[int(res.map_status)]}"
+        )
+    if res.status == PlanStatus.REACHED:
+        return f"reached the target (scaled residual {res.residual:.2g})"
+    parts = [
+        f"unreachable: the closest next apex found is {res.apex_height:.6g} m, {res.apex_speed:.6g} m/s"
+        f" (target {_t(res.target_height, 'm')}, {_t(res.target_speed, 'm/s')}; scaled residual "
+        f"{res.residual:.3g})"
+    ]
+    for c in res.at_bounds:
+        lo, hi = bounds[c]
+        value = res.touchdown_angle if c == "touchdown_angle" else getattr(res, "k_c" if c == "k" else c)
+        which = "upper" if value >= hi else "lower"
+        parts.append(f"{c} at its {which} bound {value:.6g}")
+    lo_e, hi_e = res.energy_range
+    if math.isfinite(res.energy_needed) and math.isfinite(lo_e) and not lo_e <= res.energy_needed <= hi_e:
+        parts.append(
+            f"the target needs {res.energy_needed:+.4g} J, and k_d within its bounds changes this step's "
+            f"energy by {lo_e:+.4g} to {hi_e:+.4g} J"
+        )
+    return "; ".join(parts)
+
+
+def _t(x: float, unit: str) -> str:
+    return "free" if not math.isfinite(x) else f"{x:.6g} {unit}"
+
+
+@lru_cache(maxsize=64)
+def _prepared(name, params, controls, bounds_key, settings, options) -> Deadbeat:
+    return Deadbeat(
+        name, params, controls=controls, bounds=dict(bounds_key), **dict(settings), **dict(options)
+    )
+
+
+def _split(options: dict) -> tuple[tuple, tuple]:
+    settings = tuple(sorted((k, options.pop(k)) for k in _OPTIONS if k in options))
+    return settings, tuple(sorted(options.items()))
+
+
+def _controller(name, params, controls, bounds, options) -> Deadbeat:
+    settings, rest = _split(dict(options))
+    try:
+        key_bounds = tuple(sorted((k, tuple(v)) for k, v in dict(bounds or {}).items()))
+        controls_key = (controls,) if isinstance(controls, str) else tuple(controls)
+        hash((name, params, controls_key, key_bounds, settings, rest))
+    except TypeError:
+        return Deadbeat(name, params, controls=controls, bounds=bounds, **options)
+    return _prepared(name, params, controls_key, key_bounds, settings, rest)
+
+
+def deadbeat(
+    name: str,
+    params: SlipParams,
+    apex_height,
+    apex_speed,
+    target_height,
+    target_speed,
+    *,
+    ground=0.0,
+    controls=("touchdown_angle", "k_d"),
+    bounds=None,
+    touchdown_angle=None,
+    k_c=None,
+    k_d=None,
+    k=None,
+    **map_options,
+) -> DeadbeatResult:
+    """The controls of one step of map ``name`` from the apex (``apex_height`` [m], signed
+    ``apex_speed`` [m/s]) over ``ground`` [m] to the target next apex (``target_height`` above the
+    touchdown ground, ``target_speed``; either may be None): module docstring. ``touchdown_angle``,
+    ``k_c``, ``k_d``, ``k`` are starting (or, not being controls, fixed) values; ``map_options``
+    the map's options and the solver's ``tol``, ``jacobian`` ("broyden" or "newton"), ``scan``,
+    ``max_evaluations``."""
+    ctl = _controller(name, params, controls, bounds, map_options)
+    return ctl.plan(
+        apex_height,
+        apex_speed,
+        target_height,
+        target_speed,
+        ground=ground,
+        touchdown_angle=touchdown_angle,
+        k_c=k_c,
+        k_d=k_d,
+        k=k,
+    )
+
+
+def deadbeat_batch(
+    name: str,
+    params: SlipParams,
+    apex_height,
+    apex_speed,
+    target_height,
+    target_speed,
+    *,
+    ground=0.0,
+    controls=("touchdown_angle", "k_d"),
+    bounds=None,
+    touchdown_angle=None,
+    **map_options,
+) -> DeadbeatBatch:
+    """:func:`deadbeat` over arrays (the apex, the targets, the ground and the starting angles
+    broadcast), in parallel; a plan status per row."""
+    ctl = _controller(name, params, controls, bounds, map_options)
+    return ctl.plan_batch(
+        apex_height, apex_speed, target_height, target_speed, ground=ground, touchdown_angle=touchdown_angle
+    )
