@@ -44,6 +44,7 @@ import math
 
 import numpy as np
 from numba import njit, prange
+from slipmaps.generated.flight import liftoff_to_apex
 from slipmaps.generated.status import Status
 
 __all__ = [
@@ -51,7 +52,10 @@ __all__ = [
     "MAP_FAILED",
     "REACHED",
     "UNREACHABLE",
+    "BOTTOM_OUTPUTS",
     "Kernels",
+    "ascent",
+    "bottom_kernels_for",
     "kernels_for",
 ]
 
@@ -78,12 +82,16 @@ _OK = int(Status.OK)
 _NAN = math.nan
 #: Backtracking: at most this many halvings of a step.
 _HALVINGS = 12
-#: Sufficient decrease of |r|^2 per unit step length (Armijo's constant).
+#: Sufficient decrease of |r|^2, as a fraction of the decrease the linearised residual promises
+#: (Armijo's constant).
 _ARMIJO = 1e-4
 #: The pull toward the start has stopped when it moves the scaled controls by less than this.
 _PULL_TOL = 1e-10
 #: Rounds of Levenberg damping (mu = 1e-3, then 1e-1 times |J|^2) before a line search gives up.
 _DAMPING_ROUNDS = 2
+#: A failed line search where the linearised residual promises less than this relative decrease
+#: ends at a least-squares minimum (the promise is below the map's and the Jacobian's noise).
+_FLAT = 1e-8
 #: Failed line searches a Gauss-Newton run may have (each followed by a fresh Jacobian or damping).
 _MAX_FAIL = 3
 #: Golden-section steps of the closest point of one control (0.618^30 = 5e-7 of two scan steps).
@@ -147,6 +155,102 @@ def kernels_for(call) -> Kernels:
     return kernels
 
 
+@njit(error_model="numpy")
+def ascent(q_r, q_rd, q_th, q_thd, g_f):
+    """The flight from a liftoff state to the next apex (the generated ``liftoff_to_apex``) in the
+    direction the body moves at liftoff: a stance that reverses the direction (a turn from a hop
+    in place, or a slight overshoot of a stop) flies on, as the body does."""
+    b_xd = -math.sin(q_th) * q_rd - q_r * math.cos(q_th) * q_thd
+    direction = 0.0 if b_xd == 0.0 else math.copysign(1.0, b_xd)
+    return liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction)
+
+
+#: The outputs of the bottom-stage model (a decompression half, then the flight to the apex).
+BOTTOM_OUTPUTS = (
+    "apex_height",
+    "apex_speed",
+    "t_half",
+    "t_ascent",
+    "liftoff_q_r",
+    "liftoff_q_rd",
+    "liftoff_q_th",
+    "liftoff_q_thd",
+)
+#: Relative step of the central difference in k_d (the half maps have no Jacobian kernel).
+FD_STEP = 1e-5
+
+
+def _bottom_source(n_args: int, status: int, t_half: int, end: tuple[int, ...], i_kd: int) -> str:
+    """Source of the bottom model's ``apex(a, d)`` (the decompression half ``H`` on a[0..n_args-1],
+    then :func:`ascent` with g_f = a[n_args]) and ``jac(a, d)`` (the same and d/d k_d by a central
+    difference)."""
+    args = ", ".join(f"a[{i}]" for i in range(n_args))
+    lo = ", ".join(f"r[{i}]" for i in end)
+    return f"""
+def apex(a, d):
+    r = H({args})
+    if r[{status}] != 0:
+        d[0] = r[{status}]
+        for j in range(8):
+            d[1 + j] = NAN
+        return
+    x = ascent({lo}, a[{n_args}])
+    d[0] = x[5]
+    d[1] = x[0]
+    d[2] = x[1]
+    d[3] = r[{t_half}]
+    d[4] = x[2]
+    d[5] = r[{end[0]}]
+    d[6] = r[{end[1]}]
+    d[7] = r[{end[2]}]
+    d[8] = r[{end[3]}]
+
+
+def jac(a, d):
+    apex(a, d)
+    if d[0] != 0:
+        return
+    k = a[{i_kd}]
+    h = FD_STEP * k
+    e = np.empty(9)
+    a[{i_kd}] = k + h
+    apex(a, e)
+    hp, vp, sp = e[1], e[2], e[0]
+    a[{i_kd}] = k - h
+    apex(a, e)
+    a[{i_kd}] = k
+    if sp != 0 or e[0] != 0:
+        d[0] = sp if sp != 0 else e[0]
+        return
+    d[9] = (hp - e[1]) / (2.0 * h)
+    d[10] = (vp - e[2]) / (2.0 * h)
+"""
+
+
+def bottom_kernels_for(call) -> Kernels:
+    """The bottom-stage model of a decompression half map (``call``: the half, :mod:`.bottom`):
+    its wrapped kernels and the bound solver, compiled once per half map."""
+    spec = call.spec("half")
+    key = ("bottom", spec.module, spec.name)
+    hit = _CACHE.get(key)
+    if hit is not None:
+        return hit
+    n_args = len(spec.args)
+    end = tuple(spec.outputs.index(f"end_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd"))
+    source = _bottom_source(
+        n_args, len(spec.outputs), spec.outputs.index("t_half"), end, spec.args.index("k_d")
+    )
+    ns = {"H": spec.functions()[0], "ascent": ascent, "NAN": _NAN, "FD_STEP": FD_STEP, "np": np}
+    exec(source, ns)  # the source is built here, from the index
+    apex = njit(error_model="numpy")(ns["apex"])
+    ns["apex"] = apex
+    jac = njit(error_model="numpy")(ns["jac"])
+    scalar, batch = _bind(apex, jac)
+    kernels = Kernels(apex, jac, scalar, batch, n_args + 1, len(BOTTOM_OUTPUTS), 1)
+    _CACHE[key] = kernels
+    return kernels
+
+
 def _bind(apex, jac):
     """The solver bound to one map's wrapped kernels: ``scalar(a, ints, floats, out)`` and the
     parallel ``batch(A, ints, floats, OUT)`` over rows of A (one argument vector per row)."""
@@ -193,7 +297,8 @@ _W_U0, _W_Z, _W_ZLO, _W_ZHI, _W_G, _W_ZB, _W_GB, _W_RF = 0, 3, 6, 9, 12, 18, 21,
 _W_J, _W_R, _W_RT, _W_F, _W_DELTA, _W_ZT, _W_FREE = 29, 35, 37, 39, 41, 44, 47
 _W_A, _W_B, _W_ROWS, _W_COLS = 50, 59, 62, 64
 _W_ZS, _W_RS, _W_RI, _W_RG = 67, 70, 72, 74
-N_WORK = 76
+_W_STALL = 76  # 1 when the last Gauss-Newton run ended on a failed line search or its budget
+N_WORK = 77
 
 
 @njit(error_model="numpy")
@@ -380,6 +485,7 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
     free = W[_W_FREE : _W_FREE + 3]
     for i in range(6):
         J[i] = 0.0
+    W[_W_STALL] = 1.0
     if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
         return math.inf
     phi = _residual(d, a, ints, floats, r)
@@ -407,6 +513,7 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
         for j in range(nc):
             size = max(size, abs(delta[j]))
         if phi <= tol2 and (size <= _PULL_TOL or nc <= m):
+            W[_W_STALL] = 0.0
             break
         if phi <= tol2 and not fresh:  # the pull toward the start needs the null space exactly
             if not _fresh(jac, a, z, u0, ints, floats, d, out, G):
@@ -426,7 +533,10 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
                     break
                 fresh = True
                 continue
+            W[_W_STALL] = 0.0
             break
+        # Armijo's condition on the decrease the linearised residual promises (a strict decrease)
+        decrease = max(phi - pred, 0.0)
         alpha = 1.0
         accepted = False
         phi_t = math.inf
@@ -434,11 +544,14 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
             for j in range(nc):
                 zt[j] = min(max(z[j] + alpha * delta[j], zlo[j]), zhi[j])
             phi_t = _evaluate(apex, a, zt, u0, ints, floats, d, rt, out)
-            if phi_t < phi * (1.0 - _ARMIJO * alpha) or (phi <= tol2 and phi_t <= tol2):
+            if (phi_t < phi and phi_t <= phi - _ARMIJO * alpha * decrease) or (phi <= tol2 and phi_t <= tol2):
                 accepted = True
                 break
             alpha *= 0.5
         if not accepted:
+            if fresh and phi - pred <= _FLAT * phi:  # no decrease left to find: a minimum
+                W[_W_STALL] = 0.0
+                break
             fails += 1
             if fails > max_fail:
                 break
@@ -628,7 +741,11 @@ def solve_row(apex, jac, a, ints, floats, W, out):
     max_fail = 1 if nc == 1 else _MAX_FAIL
     phi = _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max_fail)
     first_status = int(d[0])
-    if phi > tol * tol and (nc == 1 or phi == math.inf) and ints[_I_SCAN] >= 2:
+    m = ints[_I_TGT] + ints[_I_TGT + 1]
+    # the scan: a start where the map fails, or one control that missed its target (or, least
+    # squares, stopped on a failed line search rather than at a minimum)
+    retry = phi == math.inf or (nc == 1 and phi > tol * tol and (m == 1 or W[_W_STALL] != 0.0))
+    if retry and ints[_I_SCAN] >= 2:
         zb = W[_W_ZB : _W_ZB + 3]
         Gb = W[_W_GB : _W_GB + 6]
         for j in range(6):

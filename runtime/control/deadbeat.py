@@ -314,8 +314,8 @@ class DeadbeatResult:
     def __repr__(self) -> str:
         return (
             f"DeadbeatResult(map={self.map!r}, status={self.status.value}, touchdown_angle="
-            f"{self.touchdown_angle!r}, k_c={self.k_c!r}, k_d={self.k_d!r}, apex_height={self.apex_height!r}, "
-            f"apex_speed={self.apex_speed!r}, residual={self.residual:.3g})"
+            f"{self.touchdown_angle!r}, k_c={self.k_c!r}, k_d={self.k_d!r}, apex_height="
+            f"{self.apex_height!r}, apex_speed={self.apex_speed!r}, residual={self.residual:.3g})"
         )
 
 

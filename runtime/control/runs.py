@@ -1,0 +1,546 @@
+"""Runs: many consecutive steps, the controller planning with a model map, the plant stepping.
+
+Each step of a run (:func:`run`, :func:`run_batch` for many runs in lockstep):
+
+1. the controller measures the apex (the plant's, plus seeded Gaussian noise of the scenario's
+   standard deviations);
+2. the ground of the next touchdown, relative to the ground under the apex: the true one when the
+   terrain is known (``known`` >= 1, with the grounds of that many touchdowns for the planner), else
+   0 (the controller assumes flat ground);
+3. the step's target: the scenario's nominal target, with two rules of the maps' step (which keeps
+   the direction of the apex speed): a target across zero speed is replaced by a hop in place (0)
+   while the measured speed exceeds :data:`V_REVERSE`; below it the step is planned from a hop in
+   place (apex speed 0), so that a run stops, then turns; then, with known terrain, the planner
+   (:mod:`.planner`) moves it where the coming steps need it;
+4. the deadbeat solve on the model (:class:`~.deadbeat.Deadbeat`, warm-started from the previous
+   step's angle); its controls are applied whatever its status (the closest reachable ones when
+   UNREACHABLE; when the map failed, the previous step's angle and the nominal stiffness);
+5. the plant step (:class:`~.plant.Plant`: the exact simulator by default; with the scenario's mass
+   and stiffness mismatch: the plant's mass is (1 + mismatch) times the model's, its springs (1 +
+   mismatch) times the commanded stiffness); two-stage: the plant's compression half, the k_d chosen
+   again at the measured bottom (:class:`~.bottom.BottomDeadbeat`), the decompression half;
+6. the next apex; a plant step that fails (a fall, no touchdown, no liftoff...) ends the run there.
+
+Records (:class:`RunBatch`, arrays runs x steps; :class:`Run` one run with its steps as rows):
+the apex (true and measured), the ground, the nominal and the planned target, the controls, the
+plan status (``REACHED``, ``UNREACHABLE``, ``MAP_FAILED``; ``FIXED`` for a fixed-angle run, the
+self-stable baseline), the plant status, the next apex and its error against the planned target,
+the step length, the controller's solve time (us; the scalar run times :meth:`Deadbeat.plan` itself,
+a batch the parallel call per run), and the stance states and times that make the continuous path
+(:meth:`Run.path`, for the figures).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from slipmaps.generated.status import Status
+
+from ..api.progress import Bar
+from . import compiled
+from .bottom import BottomDeadbeat
+from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
+from .planner import plan_targets
+from .plant import Plant
+from .scenarios import Scenario, from_dict, load
+
+__all__ = ["Run", "RunBatch", "V_REVERSE", "run", "run_batch", "PLAN_NAMES", "scenario_of"]
+
+#: Below this measured apex speed [m/s] a step that reverses the direction is planned from a hop in
+#: place; above it the target becomes a hop in place first.
+V_REVERSE = 0.05
+#: Plan status codes in the records: the solver's, and the two a record adds.
+FIXED, NOT_RUN = -1, -2
+PLAN_NAMES = {0: "REACHED", 1: "UNREACHABLE", 2: "MAP_FAILED", FIXED: "FIXED", NOT_RUN: "-"}
+
+_FIELDS = (
+    "apex_height",
+    "apex_speed",
+    "measured_height",
+    "measured_speed",
+    "ground",
+    "nominal_height",
+    "nominal_speed",
+    "target_height",
+    "target_speed",
+    "touchdown_angle",
+    "k_c",
+    "k_d",
+    "k_d_planned",
+    "predicted_height",
+    "predicted_speed",
+    "residual",
+    "next_height",
+    "next_speed",
+    "step_length",
+    "solve_us",
+    "bottom_us",
+    "t_descent",
+    "t_bottom",
+    "t_stance",
+    "t_ascent",
+    "foot_x",
+    "energy_low",
+    "energy_high",
+)
+_STATES = ("touchdown", "bottom", "liftoff")
+_CODES = ("plan_status", "bottom_status", "plant_status")
+
+
+def scenario_of(scenario, overrides: dict) -> Scenario:
+    """A :class:`Scenario` from a Scenario, a TOML path or a dict, with fields overridden."""
+    if scenario is None:
+        sc = Scenario()
+    elif isinstance(scenario, Scenario):
+        sc = scenario
+    elif isinstance(scenario, (str, Path)):
+        sc = load(scenario)
+    elif isinstance(scenario, dict):
+        sc = from_dict(scenario)
+    else:
+        raise TypeError(f"scenario must be a Scenario, a TOML path or a dict, got {type(scenario).__name__}")
+    return sc.with_(**overrides) if overrides else sc
+
+
+@dataclass
+class RunBatch:
+    """Many runs of one scenario (arrays runs x steps, NaN where a step did not run; module
+    docstring). ``fell`` (runs,): a plant step failed; ``completed``: steps run; ``grounds``: the
+    terrain of each run."""
+
+    scenario: Scenario
+    grounds: np.ndarray
+    values: dict[str, np.ndarray]
+    states: dict[str, np.ndarray]
+    codes: dict[str, np.ndarray]
+
+    @property
+    def runs(self) -> int:
+        return self.grounds.shape[0]
+
+    @property
+    def plant_ok(self) -> np.ndarray:
+        return self.codes["plant_status"] == int(Status.OK)
+
+    @property
+    def fell(self) -> np.ndarray:
+        ran = self.codes["plant_status"] >= 0
+        return (ran & ~self.plant_ok).any(axis=1)
+
+    @property
+    def completed(self) -> np.ndarray:
+        return self.plant_ok.sum(axis=1)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        for table in (self.values, self.states, self.codes):
+            if name in table:
+                return table[name]
+        raise KeyError(
+            f"a run records no {name!r}; it records {', '.join([*self.values, *self.states, *self.codes])}"
+        )
+
+    def errors(self) -> tuple[np.ndarray, np.ndarray]:
+        """Next apex minus the planned target, height [m] and speed [m/s] (NaN where the step failed)."""
+        return self["next_height"] - self["target_height"], self["next_speed"] - self["target_speed"]
+
+    def run(self, i: int = 0) -> Run:
+        return Run(self, i)
+
+
+class Run:
+    """One run of a :class:`RunBatch` (module docstring): ``steps`` (a dict per step), ``table()``,
+    ``path()`` (the continuous body and foot path), ``as_dict()``."""
+
+    def __init__(self, batch: RunBatch, index: int = 0):
+        self.batch, self.index = batch, index
+
+    @property
+    def scenario(self) -> Scenario:
+        return self.batch.scenario
+
+    @property
+    def fell(self) -> bool:
+        return bool(self.batch.fell[self.index])
+
+    def __len__(self) -> int:
+        return int((self.batch.codes["plant_status"][self.index] >= 0).sum())
+
+    def column(self, name: str) -> np.ndarray:
+        return self.batch[name][self.index][: len(self)]
+
+    @property
+    def steps(self) -> list[dict]:
+        out = []
+        for n in range(len(self)):
+            row = {k: float(v[self.index, n]) for k, v in self.batch.values.items()}
+            row |= {k: v[self.index, n].tolist() for k, v in self.batch.states.items()}
+            row["plan_status"] = PLAN_NAMES[int(self.batch.codes["plan_status"][self.index, n])]
+            row["bottom_status"] = PLAN_NAMES[int(self.batch.codes["bottom_status"][self.index, n])]
+            row["plant_status"] = Status(int(self.batch.codes["plant_status"][self.index, n])).name
+            row["step"] = n
+            out.append(row)
+        return out
+
+    @property
+    def status(self) -> str:
+        n = len(self)
+        if not self.fell:
+            return f"completed {n} steps"
+        last = Status(int(self.batch.codes["plant_status"][self.index, n - 1]))
+        return f"fell at step {n - 1}: {last.name}"
+
+    def errors(self) -> tuple[np.ndarray, np.ndarray]:
+        dh, dv = self.batch.errors()
+        return dh[self.index][: len(self)], dv[self.index][: len(self)]
+
+    def table(self) -> str:
+        """The run as a table, a row per step."""
+        sc = self.scenario
+        head = (
+            f"{'step':>4} {'ground':>7} {'apex h':>8} {'apex v':>8} {'target h':>9} {'target v':>9} "
+            f"{'angle':>8} {'k_c':>8} {'k_d':>8} {'plan':>11} {'next h':>8} {'next v':>8} {'err h mm':>9} "
+            f"{'err v %':>8} {'plant':>8} {'step':>6} {'us':>6}"
+        )
+        lines = [head, "-" * len(head)]
+        for r in self.steps:
+            err_h = 1000.0 * (r["next_height"] - r["target_height"])
+            err_v = 100.0 * (r["next_speed"] - r["target_speed"]) / max(abs(r["target_speed"]), 1e-9)
+            if r["target_speed"] == 0.0:
+                err_v = math.nan
+            plan = r["plan_status"] + ("*" if r["bottom_status"] not in ("-",) else "")
+            lines.append(
+                f"{r['step']:4d} {r['ground']:7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
+                f"{r['target_height']:9.4f} {r['target_speed']:9.4f} {r['touchdown_angle']:8.4f} "
+                f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_height']:8.4f} {r['next_speed']:8.4f} "
+                f"{err_h:9.3f} {err_v:8.3f} {r['plant_status'][:8]:>8} {r['step_length']:6.3f} "
+                f"{r['solve_us'] + (r['bottom_us'] if math.isfinite(r['bottom_us']) else 0.0):6.0f}"
+            )
+        lines.append("")
+        lines.append(
+            f"{sc.name}: model {sc.model}, plant {sc.plant}; {self.status}"
+            + ("; * k_d chosen again at the bottom" if sc.two_stage else "")
+        )
+        return "\n".join(lines)
+
+    def as_dict(self) -> dict:
+        def clean(x):
+            if isinstance(x, float):
+                return x if math.isfinite(x) else None
+            if isinstance(x, list):
+                return [clean(y) for y in x]
+            return x
+
+        return {
+            "scenario": self.scenario.as_dict(),
+            "status": self.status,
+            "fell": self.fell,
+            "steps": [{k: clean(v) for k, v in r.items()} for r in self.steps],
+        }
+
+    def path(self, samples: int = 40):
+        """The continuous body and foot path (:func:`~.motion.path`)."""
+        from .motion import path
+
+        return path(self, samples)
+
+
+def _noise(sc: Scenario, runs: int, seeds) -> np.ndarray:
+    out = np.zeros((runs, sc.steps, 2))
+    if sc.noise_height == 0.0 and sc.noise_speed == 0.0:
+        return out
+    for r in range(runs):
+        z = np.random.default_rng([sc.seed, int(seeds[r])]).normal(size=(sc.steps, 2))
+        out[r] = z * np.array([sc.noise_height, sc.noise_speed])
+    return out
+
+
+class _Controller:
+    """The scenario's controller: the apex stage on the model, the bottom stage (two-stage), the
+    planner's settings; the plant with the mismatch."""
+
+    def __init__(self, sc: Scenario):
+        p = sc.params
+        self.sc = sc
+        self.params = p
+        self.fixed = sc.fixed_angle is not None
+        self.deadbeat = None
+        if not self.fixed:
+            self.deadbeat = Deadbeat(
+                sc.model,
+                p,
+                controls=sc.controls,
+                bounds=sc.bounds,
+                tol=sc.tol,
+                jacobian=sc.jacobian,
+                **sc.model_options,
+            )
+        kd = "k_d" if self.deadbeat is None or "k_d" in self.deadbeat.wrt else "k"
+        lo_k, hi_k = (f * p.k_c for f in DEFAULT_STIFFNESS_RANGE)
+        self.k_d_bounds = tuple(sc.bounds.get(kd, (lo_k, hi_k)))
+        self.energy = self.deadbeat is not None and any(c in self.deadbeat.controls for c in ("k_d", "k_c"))
+        self.bottom = (
+            BottomDeadbeat(sc.decompression, p, bounds=self.k_d_bounds, aim=sc.aim) if sc.two_stage else None
+        )
+        plant_params = p.with_(m=p.m * (1.0 + sc.mismatch_mass))
+        self.plant = Plant(sc.plant, plant_params, **sc.plant_options)
+        self.stiff = 1.0 + sc.mismatch_stiffness
+        if sc.two_stage and not self.plant.has_halves:
+            self.plant._half("touchdown")  # the error naming the plants that have halves
+
+
+def run_batch(
+    scenario=None, grounds=None, *, seeds=None, scalar: bool | None = None, progress=None, **overrides
+) -> RunBatch:
+    """Many runs of a scenario in lockstep (module docstring): ``grounds`` (runs, steps) the absolute
+    touchdown grounds of each run (default: the scenario's, one run), ``seeds`` the noise seed of each
+    run (default 0, 1, ...). ``scalar`` (default: one run) plans with the scalar solve, timed per step.
+    """
+    sc = scenario_of(scenario, overrides)
+    G = np.atleast_2d(np.asarray(sc.ground if grounds is None else grounds, dtype=float))
+    if G.shape[1] != sc.steps:
+        raise ValueError(f"grounds must have {sc.steps} columns (one per step), got shape {G.shape}")
+    R, S = G.shape
+    seeds = np.arange(R) if seeds is None else np.asarray(seeds)
+    scalar = (R == 1) if scalar is None else scalar
+    ctl = _Controller(sc)
+    p = sc.params
+    values = {k: np.full((R, S), math.nan) for k in _FIELDS}
+    states = {k: np.full((R, S, 4), math.nan) for k in _STATES}
+    codes = {k: np.full((R, S), NOT_RUN, dtype=np.int64) for k in _CODES}
+    noise = _noise(sc, R, seeds)
+    h = np.full(R, sc.start_height)
+    v = np.full(R, sc.start_speed)
+    ground_prev = np.zeros(R)
+    alive = np.ones(R, dtype=bool)
+    angle_prev = np.full(R, math.nan)
+    authority = np.full(R, math.nan)
+    Ht_all = np.asarray(sc.target_height)
+    Vt_all = np.asarray(sc.target_speed)
+    with Bar(S, f"{sc.name} ({R} runs)", progress) as bar:
+        for n in range(S):
+            if not alive.any():
+                break
+            idx = np.flatnonzero(alive)
+            _step(
+                ctl,
+                sc,
+                n,
+                idx,
+                h,
+                v,
+                ground_prev,
+                G,
+                noise,
+                angle_prev,
+                authority,
+                Ht_all,
+                Vt_all,
+                values,
+                states,
+                codes,
+                scalar,
+            )
+            ok = codes["plant_status"][idx, n] == int(Status.OK)
+            alive[idx[~ok]] = False
+            h[idx] = values["next_height"][idx, n]
+            v[idx] = values["next_speed"][idx, n]
+            ground_prev[idx] = G[idx, n]
+            bar.update(1)
+    del p
+    return RunBatch(sc, G, values, states, codes)
+
+
+def _step(
+    ctl,
+    sc,
+    n,
+    idx,
+    h,
+    v,
+    ground_prev,
+    G,
+    noise,
+    angle_prev,
+    authority,
+    Ht_all,
+    Vt_all,
+    values,
+    states,
+    codes,
+    scalar,
+):
+    p = sc.params
+    S = sc.steps
+    m = idx.size
+    hm = np.maximum(h[idx] + noise[idx, n, 0], 0.0)
+    vm = v[idx] + noise[idx, n, 1]
+    gr_true = G[idx, n] - ground_prev[idx]
+    gr_model = gr_true if sc.known >= 1 else np.zeros(m)
+    Hn = np.full(m, Ht_all[n])
+    Vn = np.full(m, Vt_all[n])
+    # a step keeps the direction of its apex speed: stop first, then turn from a hop in place
+    opposite = Vn * vm < 0.0
+    near = np.abs(vm) <= V_REVERSE
+    V_step = np.where(opposite & ~near, 0.0, Vn)
+    v_plan = np.where(opposite & near, 0.0, vm)
+    H_step = Hn.copy()
+    values["apex_height"][idx, n] = h[idx]
+    values["apex_speed"][idx, n] = v[idx]
+    values["measured_height"][idx, n] = hm
+    values["measured_speed"][idx, n] = vm
+    values["ground"][idx, n] = G[idx, n]
+    values["nominal_height"][idx, n] = Hn
+    values["nominal_speed"][idx, n] = Vn
+    t0 = time.perf_counter()
+    if ctl.fixed:
+        th = np.full(m, sc.fixed_angle)
+        kc = np.full(m, p.k_c)
+        kd = np.full(m, p.k_d)
+        plan = np.full(m, FIXED)
+        pred_h = pred_v = resid = elo = ehi = np.full(m, math.nan)
+        solve = np.zeros(m)
+    else:
+        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], [default_angle(p, x) for x in v_plan])
+        if sc.known >= 1:
+            if ctl.energy and not np.isfinite(authority[idx]).all():
+                pre = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)
+                authority[idx] = np.where(np.isfinite(authority[idx]), authority[idx], pre["authority"])
+            cols = [min(n + k, S - 1) for k in range(sc.known)]
+            future = G[idx][:, cols] - ground_prev[idx][:, None]
+            Hf = np.tile(Ht_all[cols], (m, 1))
+            Vf = np.tile(Vt_all[cols], (m, 1))
+            Vf[:, 0] = V_step
+
+            def planned(rows, auth):
+                kw = {"mass": p.m, "g": p.g_f, "l0": p.l0, "min_height": sc.floor}
+                args = (hm[rows], v_plan[rows], future[rows], Hf[rows], Vf[rows], auth, p.k_c, ctl.k_d_bounds)
+                return plan_targets(*args, **kw)
+
+            every = np.arange(m)
+            H_step, V_step = planned(every, authority[idx] if ctl.energy else np.full(m, math.nan))
+        res = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)
+        if sc.known >= 1 and ctl.energy:
+            # the authority changes with the angle: where the plan fell short, plan once more with
+            # the authority of this solve
+            again = np.flatnonzero((res["status"] == compiled.UNREACHABLE) & np.isfinite(res["authority"]))
+            if again.size:
+                H2, V2 = planned(again, res["authority"][again])
+                args = (hm[again], v_plan[again], H2, V2, gr_model[again], res["touchdown_angle"][again])
+                res2 = _plan(ctl.deadbeat, *args, scalar)
+                H_step[again], V_step[again] = H2, V2
+                for k in res:
+                    res[k][again] = res[k][again] + res2[k] if k == "solve_us" else res2[k]
+        plan = res["status"]
+        failed = plan == compiled.MAP_FAILED
+        th = np.where(failed, start, res["touchdown_angle"])
+        kc = np.where(failed, p.k_c, res["k_c"])
+        kd = np.where(failed, p.k_d, res["k_d"])
+        pred_h, pred_v, resid = res["apex_height"], res["apex_speed"], res["residual"]
+        elo, ehi = res["energy_low"], res["energy_high"]
+        authority[idx] = np.where(np.isfinite(res["authority"]), res["authority"], authority[idx])
+        solve = res["solve_us"]
+    if not scalar and not ctl.fixed:
+        solve = np.full(m, (time.perf_counter() - t0) * 1e6 / m)
+    values["target_height"][idx, n] = H_step
+    values["target_speed"][idx, n] = V_step
+    values["touchdown_angle"][idx, n] = th
+    values["k_c"][idx, n] = kc
+    values["k_d_planned"][idx, n] = kd
+    values["predicted_height"][idx, n] = pred_h
+    values["predicted_speed"][idx, n] = pred_v
+    values["residual"][idx, n] = resid
+    values["energy_low"][idx, n] = elo
+    values["energy_high"][idx, n] = ehi
+    values["solve_us"][idx, n] = solve
+    codes["plan_status"][idx, n] = plan
+    f = ctl.stiff
+    if ctl.bottom is not None:
+        first = ctl.plant.compress(h[idx], v[idx], th, gr_true, kc * f)
+        bottoms = first[5]
+        ok = first[0] == 0
+        t1 = time.perf_counter()
+        kd_b = kd.copy()
+        bstat = np.full(m, NOT_RUN)
+        if ok.any():
+            rows = np.flatnonzero(ok)
+            if scalar:
+                for i in rows:
+                    b = ctl.bottom.plan(bottoms[i], H_step[i], V_step[i], k_d=kd[i])
+                    bstat[i] = (
+                        compiled.MAP_FAILED
+                        if b.status == PlanStatus.MAP_FAILED
+                        else (0 if b.status == PlanStatus.REACHED else 1)
+                    )
+                    if b.status != PlanStatus.MAP_FAILED:
+                        kd_b[i] = b.k_d
+            else:
+                out = ctl.bottom.plan_batch(bottoms[rows], H_step[rows], V_step[rows], k_d=kd[rows])
+                bstat[rows] = out["status"]
+                good = out["status"] != compiled.MAP_FAILED
+                kd_b[rows[good]] = out["k_d"][good]
+        values["bottom_us"][idx, n] = (time.perf_counter() - t1) * 1e6 / max(int(ok.sum()), 1)
+        codes["bottom_status"][idx, n] = bstat
+        steps = ctl.plant.decompress(first, kc * f, kd_b * f)
+        kd_applied = kd_b
+    else:
+        steps = ctl.plant.step(h[idx], v[idx], th, gr_true, kc * f, kd * f)
+        kd_applied = kd
+    values["k_d"][idx, n] = kd_applied
+    codes["plant_status"][idx, n] = steps.status
+    for name, attr in (
+        ("next_height", "apex_height"),
+        ("next_speed", "apex_speed"),
+        ("step_length", "step_length"),
+        ("t_descent", "t_descent"),
+        ("t_bottom", "t_bottom"),
+        ("t_stance", "t_stance"),
+        ("t_ascent", "t_ascent"),
+        ("foot_x", "foot_x"),
+    ):
+        values[name][idx, n] = getattr(steps, attr)
+    for name in _STATES:
+        states[name][idx, n] = getattr(steps, name)
+    angle_prev[idx] = th
+
+
+def _plan(ctl: Deadbeat, hm, vm, H, V, gr, start, scalar) -> dict[str, np.ndarray]:
+    """The deadbeat solves of the rows: the scalar solve (timed) or one parallel batch."""
+    if not scalar:
+        b = ctl.plan_batch(hm, vm, H, V, ground=gr, touchdown_angle=start)
+        cols = {
+            k: np.asarray(b[k])
+            for k in ("status", "touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed")
+        }
+        cols |= {k: np.asarray(b[k]) for k in ("residual", "energy_low", "energy_high", "authority")}
+        cols["solve_us"] = np.full(hm.size, math.nan)
+        return cols
+    keys = ("touchdown_angle", "k_c", "k_d", "apex_height", "apex_speed", "residual", "authority", "solve_us")
+    out = {k: np.empty(hm.size) for k in (*keys, "energy_low", "energy_high")}
+    out["status"] = np.empty(hm.size, dtype=np.int64)
+    for i in range(hm.size):
+        t = time.perf_counter()
+        r = ctl.plan(
+            float(hm[i]),
+            float(vm[i]),
+            float(H[i]),
+            float(V[i]),
+            ground=float(gr[i]),
+            touchdown_angle=float(start[i]),
+        )
+        dt = (time.perf_counter() - t) * 1e6
+        out["status"][i] = int(r._out[0])
+        for k in keys[:-1]:
+            out[k][i] = getattr(r, k)
+        out["solve_us"][i] = dt
+        out["energy_low"][i], out["energy_high"][i] = r.energy_range
+    return out
+
+
+def run(scenario=None, /, **overrides) -> Run:
+    """One run of a scenario (a :class:`~.scenarios.Scenario`, a TOML path or a dict; keywords
+    override its fields, e.g. ``model="geyer"``, ``steps=5``): module docstring."""
+    return run_batch(scenario, **overrides).run(0)
