@@ -24,7 +24,9 @@ Subcommands (``slipmaps --version`` prints the installed version):
 - ``equations [--json]``: run the symbolic check of every registered report equation (``--json``:
   one JSON array, an object per equation);
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
-  stale); a source checkout only.
+  stale); a source checkout only;
+- ``run SCENARIO.toml`` / ``run --evaluate``: a multi-step controlled run, or the control evaluation
+  (runtime/cli/run.py).
 
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
@@ -45,6 +47,7 @@ from pathlib import Path
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
 from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import run as run_cli
 from . import sweep as sweep_cli
 from .args import add_params, image_path, map_options, params_of, stiffness_note
 from .defaults import (
@@ -242,6 +245,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_gait(sub)
     sweep_cli.add_parser(sub)
+    run_cli.add_parser(sub)
     return parser
 
 
@@ -387,6 +391,7 @@ def _run(argv: list[str] | None) -> int:
         "accuracy": _cmd_accuracy,
         "gait": _cmd_gait,
         "sweep": sweep_cli.run,
+        "run": run_cli.run,
     }
     try:
         code = handlers[args.command](args)

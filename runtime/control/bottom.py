@@ -163,6 +163,16 @@ class BottomDeadbeat:
         floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
         self._ints, self._floats = ints, floats
 
+    def warm(self, batch: bool = False) -> BottomDeadbeat:
+        """Compile the solver now (``batch``: the parallel form too); returns self."""
+        p = self.params
+        state = (0.9 * p.l0, 0.0, 0.0, -math.sqrt(p.g_f / p.l0))
+        v = math.sqrt(p.g_f * p.l0)
+        self.plan(state, p.l0, v)
+        if batch:
+            self.plan_batch(np.array([state]), p.l0, v)
+        return self
+
     def _targets(self, target_height, target_speed) -> tuple[float, float]:
         th, tv = AIMS[self.aim]
         H = real("target_height", target_height) if th else math.nan

@@ -668,6 +668,16 @@ class Deadbeat:
         shaped = {k: np.asarray(x).reshape(shape) for k, x in out.items()}
         return DeadbeatBatch(self.name, shaped, shape)
 
+    def warm(self, batch: bool = False) -> Deadbeat:
+        """Compile the solver now (numba compiles on the first call; a run warms it before timing
+        its steps); ``batch`` the parallel form too. Returns self."""
+        p = self.params
+        v = math.sqrt(p.g_f * p.l0)
+        self.plan(1.05 * p.l0, v, 1.05 * p.l0, v)
+        if batch:
+            self.plan_batch(1.05 * p.l0, v, 1.05 * p.l0, v)
+        return self
+
     def __repr__(self) -> str:
         return f"Deadbeat({self.name!r}, controls={self.controls}, bounds={self.bounds})"
 

@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api.index import get
 from ..api.progress import Bar
 from . import compiled
 from .bottom import BottomDeadbeat
@@ -203,7 +204,7 @@ class Run:
         head = (
             f"{'step':>4} {'ground':>7} {'apex h':>8} {'apex v':>8} {'target h':>9} {'target v':>9} "
             f"{'angle':>8} {'k_c':>8} {'k_d':>8} {'plan':>11} {'next h':>8} {'next v':>8} {'err h mm':>9} "
-            f"{'err v %':>8} {'plant':>8} {'step':>6} {'us':>6}"
+            f"{'err v %':>8} {'plant':>16} {'length':>7} {'us':>6}"
         )
         lines = [head, "-" * len(head)]
         for r in self.steps:
@@ -213,10 +214,10 @@ class Run:
                 err_v = math.nan
             plan = r["plan_status"] + ("*" if r["bottom_status"] not in ("-",) else "")
             lines.append(
-                f"{r['step']:4d} {r['ground']:7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
+                f"{r['step']:4d} {r['ground'] + 0.0:7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
                 f"{r['target_height']:9.4f} {r['target_speed']:9.4f} {r['touchdown_angle']:8.4f} "
                 f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_height']:8.4f} {r['next_speed']:8.4f} "
-                f"{err_h:9.3f} {err_v:8.3f} {r['plant_status'][:8]:>8} {r['step_length']:6.3f} "
+                f"{err_h:9.3f} {err_v:8.3f} {r['plant_status']:>16} {r['step_length']:7.3f} "
                 f"{r['solve_us'] + (r['bottom_us'] if math.isfinite(r['bottom_us']) else 0.0):6.0f}"
             )
         lines.append("")
@@ -269,10 +270,14 @@ class _Controller:
         self.fixed = sc.fixed_angle is not None
         self.deadbeat = None
         if not self.fixed:
+            controls = sc.controls
+            if controls is None:
+                constant = "constant_stiffness" in get(sc.model).requires
+                controls = ("touchdown_angle",) if constant else ("touchdown_angle", "k_d")
             self.deadbeat = Deadbeat(
                 sc.model,
                 p,
-                controls=sc.controls,
+                controls=controls,
                 bounds=sc.bounds,
                 tol=sc.tol,
                 jacobian=sc.jacobian,
@@ -292,6 +297,13 @@ class _Controller:
             self.plant._half("touchdown")  # the error naming the plants that have halves
 
 
+def _warm(ctl: _Controller, scalar: bool) -> None:
+    if ctl.deadbeat is not None:
+        ctl.deadbeat.warm(batch=not scalar)
+    if ctl.bottom is not None:
+        ctl.bottom.warm(batch=not scalar)
+
+
 def run_batch(
     scenario=None, grounds=None, *, seeds=None, scalar: bool | None = None, progress=None, **overrides
 ) -> RunBatch:
@@ -307,6 +319,7 @@ def run_batch(
     seeds = np.arange(R) if seeds is None else np.asarray(seeds)
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
+    _warm(ctl, scalar)
     p = sc.params
     values = {k: np.full((R, S), math.nan) for k in _FIELDS}
     states = {k: np.full((R, S, 4), math.nan) for k in _STATES}

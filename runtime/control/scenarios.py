@@ -20,7 +20,7 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
     up = 4
     known = 3                    # touchdown grounds known ahead (0: unknown, the controller assumes flat)
     [control]                    # controls, bounds, two_stage, decompression, aim, min_height, fixed_angle
-    controls = ["touchdown_angle", "k_d"]
+    controls = ["touchdown_angle", "k_d"]   # default; the angle alone for a constant-stiffness model
     bounds = { k_d = [10000.0, 40000.0] }
     [params]                     # SlipParams fields (the controller's); default the human runner
     [mismatch]                   # the plant's mass and stiffness off by a fraction: mass = 0.05
@@ -108,7 +108,9 @@ class Scenario:
     plant: str = "exact"
     plant_options: dict = field(default_factory=dict)
     params: SlipParams = HUMAN_RUNNER
-    controls: tuple[str, ...] = ("touchdown_angle", "k_d")
+    controls: tuple[str, ...] | None = (
+        None  # None: the angle and k_d, the angle alone for a constant-stiffness model
+    )
     bounds: dict = field(default_factory=dict)
     two_stage: bool = False
     decompression: str = "iterative-decompression"
@@ -155,7 +157,7 @@ class Scenario:
         out["target_height"] = list(self.target_height)
         out["target_speed"] = list(self.target_speed)
         out["ground"] = list(self.ground)
-        out["controls"] = list(self.controls)
+        out["controls"] = None if self.controls is None else list(self.controls)
         return out
 
 
@@ -341,12 +343,14 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
             get(value)
         except ValueError as exc:
             top.fail(key, str(exc))
-    controls = control.data.get("controls", ["touchdown_angle", "k_d"])
+    controls = control.data.get("controls")
     if isinstance(controls, str):
         controls = [controls]
-    if not isinstance(controls, list) or not all(isinstance(c, str) for c in controls):
+    if controls is not None and (
+        not isinstance(controls, list) or not all(isinstance(c, str) for c in controls)
+    ):
         control.fail("controls", f"must be a list of control names, got {controls!r}")
-    for c in controls:
+    for c in controls or ():
         if c not in CONTROLS:
             control.fail("controls", f"unknown control {c!r}; the controls are {', '.join(CONTROLS)}")
     bounds_keys = control.table("bounds")
@@ -389,7 +393,7 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
         plant=plant,
         plant_options=dict(data.get("plant_options", {})),
         params=params,
-        controls=tuple(controls),
+        controls=None if controls is None else tuple(controls),
         bounds=bounds,
         two_stage=control.flag("two_stage", False),
         decompression=decompression,

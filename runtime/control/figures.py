@@ -1,0 +1,149 @@
+"""Figures of runs: the body path over the terrain with the leg at every touchdown and liftoff and
+the targets; the apex per step against its targets; an animation (GIF through matplotlib's Pillow
+writer).
+
+Every path written is checked before any work by the callers (:mod:`slipmaps.runtime.cli.run`);
+here the figure is drawn and saved.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["animate", "run_figure"]
+
+_BODY = "#1f4e79"
+_LEG_TD = "#c0392b"
+_LEG_LO = "#27ae60"
+_TARGET = "#e67e22"
+_GROUND = "#6d4c41"
+
+
+def _draw_path(ax, path, label_targets: bool = True):
+    ax.plot(path.terrain[:, 0], path.terrain[:, 1], color=_GROUND, lw=1.5, label="ground")
+    bottom = min(float(path.terrain[:, 1].min()), 0.0) - 0.3
+    xs = path.terrain[:, 0]
+    if np.all(np.diff(xs) >= 0) or np.all(np.diff(xs) <= 0):
+        ax.fill_between(xs, path.terrain[:, 1], bottom, color=_GROUND, alpha=0.15, step=None)
+    flight = np.where(path.stance, np.nan, path.y)
+    stance = np.where(path.stance, path.y, np.nan)
+    ax.plot(path.x, flight, color=_BODY, lw=1.2, label="body, flight")
+    ax.plot(
+        path.x,
+        stance,
+        color=_BODY,
+        lw=2.4,
+        label="body, stance" + ("" if path.sampled else " (interpolated)"),
+    )
+    for k in range(path.foot_x.size):
+        fx, fy = path.foot_x[k], path.foot_y[k]
+        bx, by = path.touchdown_body[k]
+        ax.plot([fx, bx], [fy, by], color=_LEG_TD, lw=1.0, label="leg at touchdown" if k == 0 else None)
+        lx, ly = path.liftoff_body[k]
+        ax.plot(
+            [fx, lx], [fy, ly], color=_LEG_LO, lw=1.0, ls="--", label="leg at liftoff" if k == 0 else None
+        )
+    ax.plot(path.foot_x, path.foot_y, "v", color="k", ms=4, label="foot")
+    if label_targets and path.target.size:
+        ax.plot(path.target[:, 0], path.target[:, 1], "o", mfc="none", mec=_TARGET, ms=7, label="target apex")
+    if path.apex.size:
+        ax.plot(path.apex[:, 0], path.apex[:, 1], ".", color=_BODY, ms=5)
+    ax.set_ylim(bottom, float(np.nanmax(path.y)) + 0.35)
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+
+
+def run_figure(run, out_path, *, title: str | None = None):
+    """The run's figure (module docstring) written to ``out_path``; returns the path."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    path = run.path()
+    sc = run.scenario
+    fig = plt.figure(figsize=(12, 7.5), constrained_layout=True)
+    grid = fig.add_gridspec(2, 2, height_ratios=(1.35, 1.0))
+    ax = fig.add_subplot(grid[0, :])
+    _draw_path(ax, path)
+    span = float(np.ptp(path.x)) if path.x.size else 1.0
+    ax.set_aspect("equal" if span < 25 else "auto")
+    ax.legend(loc="upper left", fontsize=8, ncol=4, frameon=False)
+    ax.set_title(title or f"{sc.name}: model {sc.model}, plant {sc.plant} ({run.status})", fontsize=11)
+    steps = np.arange(len(run))
+    nxt = steps + 1
+    for col, (key, label, unit) in enumerate(
+        (("height", "apex height", "m"), ("speed", "apex speed", "m/s"))
+    ):
+        a = fig.add_subplot(grid[1, col])
+        a.plot(nxt, run.column(f"nominal_{key}"), "s", mfc="none", color="0.6", label="nominal target")
+        a.plot(nxt, run.column(f"target_{key}"), "o", mfc="none", color=_TARGET, ms=8, label="planned target")
+        a.plot(nxt, run.column(f"predicted_{key}"), "x", color="0.3", label=f"model ({sc.model})")
+        a.plot(nxt, run.column(f"next_{key}"), ".-", color=_BODY, label=f"plant ({sc.plant})")
+        a.plot([0], [run.column(f"apex_{key}")[0]] if len(run) else [], ".", color=_BODY)
+        a.set_xlabel("apex (after step)")
+        a.set_ylabel(f"{label} [{unit}]")
+        a.grid(alpha=0.3)
+        if col == 0:
+            a.legend(fontsize=8, frameon=False)
+    fig.savefig(out_path, dpi=110)
+    plt.close(fig)
+    return out_path
+
+
+def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
+    """A GIF of the run (matplotlib's Pillow writer): the body, the leg (from the foot in stance; at
+    its touchdown angle in flight), the terrain and the targets; ``speed`` the playback speed
+    (0.5: half real time). Returns the path."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FuncAnimation, PillowWriter
+
+    path = run.path(samples=30)
+    sc = run.scenario
+    l0 = sc.params.l0
+    b = run.batch
+    angles = b.values["touchdown_angle"][run.index][: len(run)]
+    frames = max(2, int(math.ceil(float(path.t[-1]) / speed * fps))) if path.t.size else 2
+    times = np.linspace(0.0, float(path.t[-1]) if path.t.size else 0.0, frames)
+    fig, ax = plt.subplots(figsize=(8, 3.6), constrained_layout=True)
+    ax.plot(path.terrain[:, 0], path.terrain[:, 1], color=_GROUND, lw=1.5)
+    ax.plot(path.x, path.y, color=_BODY, lw=0.8, alpha=0.3)
+    if path.target.size:
+        ax.plot(path.target[:, 0], path.target[:, 1], "o", mfc="none", mec=_TARGET, ms=7, label="target apex")
+    ax.plot(path.foot_x, path.foot_y, "v", color="k", ms=4)
+    (body,) = ax.plot([], [], "o", color=_BODY, ms=10)
+    (leg,) = ax.plot([], [], "-", color="k", lw=2.0)
+    label = ax.text(0.01, 0.97, "", transform=ax.transAxes, va="top", fontsize=9)
+    ax.set_title(f"{sc.name}: model {sc.model}, plant {sc.plant}", fontsize=10)
+    y_lo = min(float(path.terrain[:, 1].min()), 0.0) - 0.2
+    y_hi = float(np.nanmax(path.y)) + 0.3 if path.y.size else 2.0
+    half = 4.0 * l0
+    ax.set_ylim(y_lo, y_hi)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+
+    def frame(k):
+        t = times[k]
+        x = float(np.interp(t, path.t, path.x))
+        y = float(np.interp(t, path.t, path.y))
+        body.set_data([x], [y])
+        step = int(np.searchsorted(path.t_liftoff, t))
+        if step < path.foot_x.size and path.t_touchdown[step] <= t <= path.t_liftoff[step]:
+            leg.set_data([path.foot_x[step], x], [path.foot_y[step], y])
+        else:
+            th = angles[min(step, angles.size - 1)] if angles.size else 0.0
+            leg.set_data([x, x + l0 * math.sin(th)], [y, y - l0 * math.cos(th)])
+        label.set_text(f"t = {t:.2f} s, step {min(step, max(len(run) - 1, 0))}")
+        ax.set_xlim(x - half, x + half)
+        return body, leg, label
+
+    anim = FuncAnimation(fig, frame, frames=frames, blit=False)
+    anim.save(str(out_path), writer=PillowWriter(fps=fps), dpi=72)
+    plt.close(fig)
+    return out_path
