@@ -7,9 +7,10 @@ touchdown angle, the ground, the parameters with the stiffness, the map's option
 outputs into a work vector. Nothing here knows a map: the argument positions, the output columns and
 the Jacobian's columns come from the generated index (:class:`~slipmaps.runtime.api.calls.Call`).
 
-The wrappers and the solver bound to them are compiled once per map and process (a few seconds;
-numba cannot cache a function that takes another compiled function as an argument, and the
-wrappers are built from the index at run time), then a solve costs one call from Python
+The solver takes the wrappers as first-class functions of one signature (:data:`WRAPPER`), so it is
+compiled once for every map and cached on disk like the kernels; the wrappers and the two entry
+points bound to them (scalar, parallel batch) are built from the index and compiled once per map
+and process (a few seconds: they link the map's kernels). A solve then costs one call from Python
 (about 0.3 us) and the map's kernel calls.
 
 The method (the controls u, at most 3; the targets the next apex height and speed, 1 or 2):
@@ -43,7 +44,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit, types
 from slipmaps.generated.flight import liftoff_to_apex
 from slipmaps.generated.status import Status
 
@@ -56,6 +57,7 @@ __all__ = [
     "Kernels",
     "ascent",
     "bottom_kernels_for",
+    "in_threads",
     "kernels_for",
 ]
 
@@ -98,6 +100,15 @@ _MAX_FAIL = 3
 _GOLDEN_ITER = 30
 #: Illinois iterations on a bracket at most.
 _BRACKET_ITER = 80
+
+
+#: The wrapped kernels' signature: ``f(a, d)``, both C-contiguous float64 vectors. Every map's wrappers
+#: have it, so the solver takes them as first-class functions of this one type and is compiled (and
+#: cached on disk) once for every map.
+WRAPPER = types.void(types.float64[::1], types.float64[::1])
+_FN = types.FunctionType(WRAPPER)
+_VEC = types.float64[::1]
+_SOLVE = types.void(_FN, _FN, _VEC, types.int64[::1], _VEC, _VEC, _VEC)
 
 
 class Kernels:
@@ -147,8 +158,8 @@ def kernels_for(call) -> Kernels:
     ns_j = {"F": spec_j.functions()[0]}
     exec(_wrapper_source("apex", n_args, n_out, n_out, []), ns_a)  # the source is built here, from the index
     exec(_wrapper_source("jac", n_args, n_out, n_out * (1 + n_wrt), derivs), ns_j)
-    apex = njit(error_model="numpy")(ns_a["apex"])
-    jac = njit(error_model="numpy")(ns_j["jac"])
+    apex = njit(WRAPPER, error_model="numpy")(ns_a["apex"])
+    jac = njit(WRAPPER, error_model="numpy")(ns_j["jac"])
     scalar, batch = _bind(apex, jac)
     kernels = Kernels(apex, jac, scalar, batch, n_args, n_out, n_wrt)
     _CACHE[key] = kernels
@@ -242,9 +253,9 @@ def bottom_kernels_for(call) -> Kernels:
     )
     ns = {"H": spec.functions()[0], "ascent": ascent, "NAN": _NAN, "FD_STEP": FD_STEP, "np": np}
     exec(source, ns)  # the source is built here, from the index
-    apex = njit(error_model="numpy")(ns["apex"])
+    apex = njit(WRAPPER, error_model="numpy")(ns["apex"])
     ns["apex"] = apex
-    jac = njit(error_model="numpy")(ns["jac"])
+    jac = njit(WRAPPER, error_model="numpy")(ns["jac"])
     scalar, batch = _bind(apex, jac)
     kernels = Kernels(apex, jac, scalar, batch, n_args + 1, len(BOTTOM_OUTPUTS), 1)
     _CACHE[key] = kernels
@@ -253,22 +264,49 @@ def bottom_kernels_for(call) -> Kernels:
 
 def _bind(apex, jac):
     """The solver bound to one map's wrapped kernels: ``scalar(a, ints, floats, out)`` and the
-    parallel ``batch(A, ints, floats, OUT)`` over rows of A (one argument vector per row)."""
+    batch ``batch(A, ints, floats, OUT)`` over the rows of A (one argument vector per row), on
+    numba's thread count in chunks (:func:`in_threads`). One compiled entry (a loop over rows,
+    releasing the GIL) serves both: numba's parallel loops would compile the map's kernels again."""
 
-    @njit(error_model="numpy")
-    def scalar(a, ints, floats, out):
+    @njit(error_model="numpy", nogil=True)
+    def rows(A, ints, floats, OUT):
         W = np.empty(N_WORK + 1 + ints[_I_NOUT] + 2 * ints[_I_NWRT])
-        solve_row(apex, jac, a, ints, floats, W, out)
-
-    @njit(error_model="numpy", parallel=True)
-    def batch(A, ints, floats, OUT):
-        n = A.shape[0]
-        for i in prange(n):
+        for i in range(A.shape[0]):
             a = A[i].copy()
-            W = np.empty(N_WORK + 1 + ints[_I_NOUT] + 2 * ints[_I_NWRT])
             solve_row(apex, jac, a, ints, floats, W, OUT[i])
 
+    def scalar(a, ints, floats, out):
+        rows(a.reshape(1, -1), ints, floats, out.reshape(1, -1))
+
+    def batch(A, ints, floats, OUT):
+        in_threads(rows, A, OUT, ints, floats)
+
     return scalar, batch
+
+
+_POOL = None
+
+
+def in_threads(rows, A, OUT, *shared) -> None:
+    """``rows(A[chunk], *shared, OUT[chunk])`` over contiguous chunks of the rows, one per numba
+    thread (``numba.get_num_threads()``), in Python threads (``rows`` releases the GIL)."""
+    import numba
+
+    n = A.shape[0]
+    k = max(1, min(numba.get_num_threads(), n // 8 or 1))
+    if k == 1:
+        rows(A, *shared, OUT)
+        return
+    from concurrent.futures import ThreadPoolExecutor
+
+    bounds = np.linspace(0, n, k + 1).astype(int)
+    with ThreadPoolExecutor(max_workers=k) as pool:
+        jobs = [
+            pool.submit(rows, A[lo:hi], *shared, OUT[lo:hi])
+            for lo, hi in zip(bounds[:-1], bounds[1:], strict=True)
+        ]
+        for job in jobs:
+            job.result()
 
 
 # ----------------------------------------------------------------------------------------------
@@ -708,7 +746,7 @@ def _scan(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, zbest, G):
     return _gauss_newton(apex, jac, a, zbest, u0, zlo, zhi, ints, floats, W, d, out, G, _MAX_FAIL)
 
 
-@njit(error_model="numpy")
+@njit(_SOLVE, cache=True, error_model="numpy")
 def solve_row(apex, jac, a, ints, floats, W, out):
     """One deadbeat solve: the vector ``a`` holds the kernel's arguments (the apex, the ground, the
     parameters, the options and the starting controls at the controls' positions), then the target

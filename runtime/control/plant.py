@@ -27,14 +27,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 from slipmaps.generated.flight import apex_to_touchdown
 from slipmaps.generated.status import Status
 
 from ..api.calls import KERNELS, Call
 from ..api.index import halves
 from ..api.params import SlipParams
-from .compiled import ascent
+from .compiled import ascent, in_threads
 
 __all__ = ["Plant", "PlantSteps", "row_caller"]
 
@@ -42,19 +42,19 @@ _ROWS: dict = {}
 
 
 def row_caller(fn, n_args: int, n_ret: int):
-    """A parallel loop calling the scalar njit function ``fn`` on each row of A (n, n_args), its
-    n_ret return values written into D (n, n_ret) (a status returned as a float); compiled once per
-    function."""
+    """A loop calling the scalar njit function ``fn`` on each row of A (n, n_args), its n_ret return
+    values written into D (n, n_ret) (a status returned as a float); compiled once per function,
+    releasing the GIL (:func:`_call` runs it in threads)."""
     key = (fn, n_args, n_ret)
     hit = _ROWS.get(key)
     if hit is not None:
         return hit
     args = ", ".join(f"A[i, {j}]" for j in range(n_args))
     stores = "\n".join(f"        D[i, {j}] = r[{j}]" for j in range(n_ret))
-    source = f"def rows(A, D):\n    for i in prange(A.shape[0]):\n        r = F({args})\n{stores}\n"
-    ns = {"F": fn, "prange": prange}
+    source = f"def rows(A, D):\n    for i in range(A.shape[0]):\n        r = F({args})\n{stores}\n"
+    ns = {"F": fn}
     exec(source, ns)  # the source is built here, from the kernel's arity
-    caller = njit(error_model="numpy", parallel=True)(ns["rows"])
+    caller = njit(error_model="numpy", nogil=True)(ns["rows"])
     _ROWS[key] = caller
     return caller
 
@@ -63,7 +63,7 @@ def _call(fn, n_ret: int, columns: list[np.ndarray]) -> np.ndarray:
     A = np.ascontiguousarray(np.stack(columns, axis=1), dtype=np.float64)
     D = np.empty((A.shape[0], n_ret))
     if A.shape[0]:
-        row_caller(fn, A.shape[1], n_ret)(A, D)
+        in_threads(row_caller(fn, A.shape[1], n_ret), A, D)
     return D
 
 

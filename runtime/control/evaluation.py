@@ -1,0 +1,421 @@
+"""The control evaluation: every map as the deadbeat controller's model, the exact simulator as the
+plant (the exact map as the model is the ideal). Written into docs/control.md (+ .json, figures) by
+``slipmaps run --evaluate`` (:mod:`.report`); its small version (:data:`QUICK`) is re-run by the tests.
+
+Parts (all on the human runner, :data:`~slipmaps.HUMAN_RUNNER`; SI units):
+
+* **tracking**: the six scenarios of examples/ (speed up, slow down, stop, turn around, stairs,
+  rough ground) run with each model on the exact plant: per step the next apex's error against the
+  target the deadbeat aimed at (the planner's; the nominal one where feasible), mean and max of the
+  height error [m] and of the speed error relative to max(|target|, :data:`SPEED_FLOOR`), the plan
+  statuses, whether the run fell; with a two-stage variant (``iterative`` at the apex, k_d again at
+  the bottom by ``iterative-decompression``);
+* **rough ground**: :data:`RUNS` seeded runs of :data:`STEPS` steps at 5 m/s (apex 1 m), the ground
+  of each touchdown off the previous one by a uniform draw in +-d l0 for each d of :data:`DS`, the
+  same terrains for every model; (a) known to the controller (the next :data:`KNOWN` touchdowns, the
+  planner on), (b) unknown (the controller assumes flat ground); the baseline a fixed touchdown angle
+  at the exact map's self-stable gait (no controller); the share of runs that do not fall (a plant
+  step that fails: no touchdown, a fall, no liftoff...), and the largest d without a fall (searched in
+  steps of :data:`D_STEP` beyond the grid);
+* **mismatch**: the plant's mass or stiffness off by +5 % and +10 % (:data:`MISMATCHES`): the
+  tracking of every scenario, and the rough ground at d = 0.3 known;
+* **cost**: the controller's time per step (the deadbeat solve; scalar :meth:`Deadbeat.plan` and
+  per row of :meth:`Deadbeat.plan_batch`) on the rough-ground steps of each model, with its
+  Jacobian and map evaluations; measured, so machine-dependent (not re-measured by the tests).
+
+Constant-stiffness models (``geyer``, the gravity corrections) control the touchdown angle alone (the
+energy is not theirs to change: their plant runs at k_c = k_d = k), the others the angle and k_d.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..analysis.gait import fixed_points
+from ..api.index import get, maps
+from ..api.params import HUMAN_RUNNER
+from ..api.progress import Bar
+from .runs import PLAN_NAMES, run_batch, scenario_of
+
+__all__ = [
+    "DS",
+    "KNOWN",
+    "MISMATCHES",
+    "QUICK",
+    "RUNS",
+    "SCENARIOS",
+    "SPEED_FLOOR",
+    "STEPS",
+    "evaluate",
+    "rough_grounds",
+]
+
+#: The scenario files of examples/ the tracking runs, in this order.
+SCENARIOS = ("speed_up", "slow_down", "stop", "turn_around", "stairs", "rough_ground")
+#: Rough ground: runs per d, steps per run, the ground changes d (fractions of l0), the known horizon.
+RUNS, STEPS, DS, KNOWN = 1000, 20, (0.1, 0.2, 0.3, 0.4), 3
+#: The search of the largest d without a fall beyond the grid: steps of this size, up to D_MAX.
+D_STEP, D_MAX = 0.05, 1.0
+#: The seed of the rough-ground terrains (run r draws from default_rng([SEED, r])).
+SEED = 2024
+#: The speed errors are relative to max(|target speed|, SPEED_FLOOR) [m/s] (a hop in place aims at 0).
+SPEED_FLOOR = 1.0
+#: The plant's mass or stiffness off by these fractions.
+MISMATCHES = (("mass", 0.05), ("mass", 0.10), ("stiffness", 0.05), ("stiffness", 0.10))
+#: The d of the rough ground with mismatch (known ground).
+MISMATCH_D = 0.3
+#: Problems timed per model, and repetitions (the best of each).
+COST_PROBLEMS, COST_REPEATS = 400, 3
+
+#: The small version the tests re-run: three models, two scenarios, few runs, no timing.
+QUICK = {
+    "maps": ("geyer", "iterative", "exact"),
+    "scenarios": ("turn_around", "stairs"),
+    "runs": 16,
+    "ds": (0.2, 0.3),
+    "mismatches": (("stiffness", 0.10),),
+    "search": False,
+    "cost": False,
+    "two_stage": True,
+}
+
+
+def _variants(names) -> list[dict]:
+    out = [{"label": n, "model": n, "two_stage": False} for n in names]
+    if "iterative" in names:
+        out.append({"label": "iterative, two-stage", "model": "iterative", "two_stage": True})
+    return out
+
+
+def rough_grounds(d: float, runs: int = RUNS, steps: int = STEPS, l0: float = 1.0) -> np.ndarray:
+    """The absolute touchdown grounds (runs, steps): per run the first touchdown on the start's
+    ground, then the cumulative sum of uniform changes in +-d l0 (run r seeded by [SEED, r]: the
+    same terrain for every model). The first step is flat because the start apex is given: from
+    1 m a step up of more than 1 - cos(0.41) = 0.083 l0 has no touchdown at all."""
+    out = np.zeros((runs, steps))
+    for r in range(runs):
+        out[r, 1:] = np.cumsum(np.random.default_rng([SEED, r]).uniform(-d * l0, d * l0, steps - 1))
+    return out
+
+
+def _stats(batch) -> dict:
+    """Errors against the planned target over the steps the plant ran, and the statuses."""
+    dh, dv = batch.errors()
+    v_t = np.abs(batch["target_speed"])
+    rel = np.abs(dv) / np.maximum(v_t, SPEED_FLOOR)
+    ok = np.isfinite(dh)
+    plan = batch["plan_status"][batch["plan_status"] != -2]
+    counts = {PLAN_NAMES[int(c)]: int((plan == c).sum()) for c in np.unique(plan)}
+    out = {
+        "steps": int(ok.sum()),
+        "fell": bool(batch.fell.any()),
+        "plan": dict(sorted(counts.items())),
+        "height_error_mean": float(np.mean(np.abs(dh[ok]))) if ok.any() else math.nan,
+        "height_error_max": float(np.max(np.abs(dh[ok]))) if ok.any() else math.nan,
+        "speed_error_mean": float(np.mean(rel[ok])) if ok.any() else math.nan,
+        "speed_error_max": float(np.max(rel[ok])) if ok.any() else math.nan,
+    }
+    if batch.fell.any():
+        last = batch["plant_status"][0][batch["plant_status"][0] >= 0][-1]
+        from slipmaps.generated.status import Status
+
+        out["fall"] = Status(int(last)).name
+    return out
+
+
+def _per_step(batch) -> dict:
+    dh, dv = batch.errors()
+    rel = np.abs(dv) / np.maximum(np.abs(batch["target_speed"]), SPEED_FLOOR)
+    n = len(batch.run(0))
+    return {
+        "height_error": [float(x) for x in dh[0][:n]],
+        "speed_error": [float(x) for x in rel[0][:n]],
+        "plan": [PLAN_NAMES[int(c)] for c in batch["plan_status"][0][:n]],
+    }
+
+
+def _scenario(examples: Path, name: str):
+    return scenario_of(examples / f"{name}.toml", {})
+
+
+def tracking(examples: Path, names, scenarios, mismatch=None, bar=None) -> tuple[dict, dict]:
+    """Per scenario and model variant: :func:`_stats` of the run; and the per-step errors of the
+    iterative and exact models (for the target check)."""
+    out, steps = {}, {}
+    for s in scenarios:
+        sc = _scenario(examples, s)
+        if mismatch is not None:
+            sc = sc.with_(**{f"mismatch_{mismatch[0]}": mismatch[1]})
+        out[s] = {}
+        steps[s] = {}
+        for var in _variants(names):
+            batch = run_batch(sc, model=var["model"], two_stage=var["two_stage"], progress=False)
+            out[s][var["label"]] = _stats(batch)
+            if var["label"] in ("iterative", "exact") and mismatch is None:
+                steps[s][var["label"]] = _per_step(batch)
+            if bar is not None:
+                bar.update(1)
+    return out, steps
+
+
+def _rough_scenario(model: str | None, known: int, d: float = 0.0, *, angle=None, two_stage: bool = False):
+    """The rough-ground scenario: 5 m/s at a 1 m apex (known ground: the planner raises it where the
+    coming steps need it); unknown ground: the apex 1 + d above the ground, clear of any step up of
+    the distribution; the baseline (``angle``): that apex, a fixed touchdown angle, no controller."""
+    h = 1.0 if known else 1.0 + d
+    base = {"name": "rough", "steps": STEPS, "start": {"height": h, "speed": 5.0}}
+    base["targets"] = {"height": h, "speed": 5.0}
+    base["terrain"] = {"known": known}
+    sc = scenario_of(base, {})
+    if angle is not None:
+        return sc.with_(fixed_angle=angle, model="exact")
+    return sc.with_(model=model, two_stage=two_stage)
+
+
+def survival(sc, d: float, runs: int) -> float:
+    """The share of ``runs`` rough-ground runs of ``sc`` at ground changes +-d l0 that do not fall."""
+    batch = run_batch(sc, rough_grounds(d, runs, sc.steps, sc.params.l0), scalar=False, progress=False)
+    return float(1.0 - batch.fell.mean())
+
+
+def _largest(make, shares: dict[float, float], runs: int, search: bool) -> float | None:
+    """The largest d without a fall (``make(d)``: the scenario at d): the grid's, then beyond it in
+    steps of D_STEP, or below the grid halving D_STEP (``search``)."""
+    clean = [d for d, s in sorted(shares.items()) if s == 1.0]
+    if not clean or any(s < 1.0 for d, s in shares.items() if d < max(clean)):
+        if not search:
+            return (
+                max(clean) if clean and all(s == 1.0 for d, s in shares.items() if d < max(clean)) else None
+            )
+        d = min(shares) / 2.0
+        while d > 0.012:
+            if survival(make(d), d, runs) == 1.0:
+                return d
+            d /= 2.0
+        return 0.0
+    best = max(clean)
+    if not search:
+        return best
+    d = round(best + D_STEP, 10)
+    while d <= D_MAX + 1e-12:
+        if survival(make(d), d, runs) < 1.0:
+            break
+        best = d
+        d = round(d + D_STEP, 10)
+    return best
+
+
+def baseline_angle(height: float = 1.0) -> float:
+    """The touchdown angle of the exact map's self-stable gait at ``height``, 5 m/s (the first stable
+    one; the first found when none is stable)."""
+    gaits = fixed_points("exact", HUMAN_RUNNER, apex_height=height, speed=5.0)
+    stable = [g for g in gaits if g.stable]
+    return float((stable or list(gaits))[0].touchdown_angle)
+
+
+def rough(names, ds, runs: int, search: bool, bar=None) -> dict:
+    out = {"runs": runs, "steps": STEPS, "speed": 5.0, "d": list(ds), "known_steps": KNOWN, "models": {}}
+
+    def base(d):
+        return _rough_scenario(None, 0, d, angle=baseline_angle(1.0 + d))
+
+    shares = {d: survival(base(d), d, runs) for d in ds}
+    out["baseline"] = {
+        "touchdown_angle": [baseline_angle(1.0 + d) for d in ds],
+        "share": [shares[d] for d in ds],
+        "largest_d": _largest(base, shares, runs, search),
+    }
+    if bar is not None:
+        bar.update(1)
+    for var in _variants(names):
+        row = {}
+        for mode, known in (("known", KNOWN), ("unknown", 0)):
+
+            def make(d, known=known, var=var):
+                return _rough_scenario(var["model"], known, d, two_stage=var["two_stage"])
+
+            shares = {d: survival(make(d), d, runs) for d in ds}
+            row[mode] = {"share": [shares[d] for d in ds], "largest_d": _largest(make, shares, runs, search)}
+        out["models"][var["label"]] = row
+        if bar is not None:
+            bar.update(1)
+    return out
+
+
+def mismatch(examples: Path, names, scenarios, variants, runs: int, bar=None) -> dict:
+    out = {}
+    for quantity, fraction in variants:
+        key = f"{quantity} {fraction:+.0%}"
+        track, _ = tracking(examples, names, scenarios, mismatch=(quantity, fraction))
+        row = {}
+        for var in _variants(names):
+            cells = [track[s][var["label"]] for s in scenarios]
+            steps = [c for c in cells if c["steps"]]
+            sc = _rough_scenario(var["model"], KNOWN, MISMATCH_D, two_stage=var["two_stage"])
+            sc = sc.with_(**{f"mismatch_{quantity}": fraction})
+            row[var["label"]] = {
+                "height_error_mean": float(np.mean([c["height_error_mean"] for c in steps]))
+                if steps
+                else math.nan,
+                "height_error_max": float(np.max([c["height_error_max"] for c in steps]))
+                if steps
+                else math.nan,
+                "speed_error_mean": float(np.mean([c["speed_error_mean"] for c in steps]))
+                if steps
+                else math.nan,
+                "speed_error_max": float(np.max([c["speed_error_max"] for c in steps]))
+                if steps
+                else math.nan,
+                "falls": int(sum(c["fell"] for c in cells)),
+                "rough_share": survival(sc, MISMATCH_D, runs),
+            }
+            if bar is not None:
+                bar.update(1)
+        out[key] = row
+    return out
+
+
+def cost(names, bar=None) -> dict:
+    """Per model: the deadbeat's time per step on rough-ground problems (d = 0.2, known), scalar
+    (the median and the 90th percentile of the best of COST_REPEATS) and per row of a batch."""
+    out = {"problems": COST_PROBLEMS, "load": _load(), "models": {}}
+    for name in names:
+        sc = _rough_scenario(name, KNOWN)
+        batch = run_batch(
+            sc, rough_grounds(0.2, COST_PROBLEMS // STEPS + 1, STEPS), scalar=False, progress=False
+        )
+        ran = batch["plan_status"] >= 0
+        h = batch["measured_height"][ran][:COST_PROBLEMS]
+        v = batch["measured_speed"][ran][:COST_PROBLEMS]
+        H = batch["target_height"][ran][:COST_PROBLEMS]
+        V = batch["target_speed"][ran][:COST_PROBLEMS]
+        gr = (batch["ground"] - np.concatenate([np.zeros((batch.runs, 1)), batch["ground"][:, :-1]], axis=1))[
+            ran
+        ]
+        gr = gr[:COST_PROBLEMS]
+        th = batch["touchdown_angle"][ran][:COST_PROBLEMS]
+        from .deadbeat import Deadbeat
+
+        constant = "constant_stiffness" in get(name).requires
+        ctl = Deadbeat(
+            name, sc.params, controls=("touchdown_angle",) if constant else ("touchdown_angle", "k_d")
+        )
+        ctl.warm(batch=True)
+        times, jac, ev = [], [], []
+        for i in range(h.size):
+            best = math.inf
+            for _ in range(COST_REPEATS):
+                t = time.perf_counter()
+                r = ctl.plan(
+                    float(h[i]),
+                    float(v[i]),
+                    float(H[i]),
+                    float(V[i]),
+                    ground=float(gr[i]),
+                    touchdown_angle=float(th[i]),
+                )
+                best = min(best, time.perf_counter() - t)
+            times.append(best * 1e6)
+            jac.append(r.jacobians)
+            ev.append(r.evaluations)
+        best = math.inf
+        for _ in range(COST_REPEATS):
+            t = time.perf_counter()
+            ctl.plan_batch(h, v, H, V, ground=gr, touchdown_angle=th)
+            best = min(best, time.perf_counter() - t)
+        out["models"][name] = {
+            "scalar_us_median": float(np.median(times)),
+            "scalar_us_p90": float(np.percentile(times, 90)),
+            "batch_us_per_row": best * 1e6 / h.size,
+            "jacobians_mean": float(np.mean(jac)),
+            "evaluations_mean": float(np.mean(ev)),
+            "cold_start_angle": False,
+        }
+        if bar is not None:
+            bar.update(1)
+    return out
+
+
+def _load() -> float | None:
+    try:
+        return float(os.getloadavg()[0])
+    except (AttributeError, OSError):
+        return None
+
+
+def target_check(steps: dict) -> dict:
+    """The iterative model's exact-plant errors on every step where the exact model reached its
+    target: within 1 mm and 0.1 % of the target speed (floored at SPEED_FLOOR)?"""
+    out = {"steps": 0, "within": 0, "height_error_max": 0.0, "speed_error_max": 0.0, "misses": []}
+    for s, per in steps.items():
+        if "iterative" not in per or "exact" not in per:
+            continue
+        ex, it = per["exact"], per["iterative"]
+        for n, status in enumerate(ex["plan"]):
+            if status != "REACHED":
+                continue
+            out["steps"] += 1
+            if n >= len(it["height_error"]):
+                out["misses"].append({"scenario": s, "step": n, "why": "the iterative run ended before"})
+                continue
+            dh, dv = abs(it["height_error"][n]), abs(it["speed_error"][n])
+            out["height_error_max"] = max(out["height_error_max"], dh)
+            out["speed_error_max"] = max(out["speed_error_max"], dv)
+            if dh <= 1e-3 and dv <= 1e-3:
+                out["within"] += 1
+            else:
+                out["misses"].append({"scenario": s, "step": n, "height_error": dh, "speed_error": dv})
+    return out
+
+
+def evaluate(examples: str | Path, *, quick: bool = False, progress=None) -> dict:
+    """The evaluation record (module docstring): every map (``quick``: :data:`QUICK`)."""
+    examples = Path(examples)
+    cfg = (
+        dict(QUICK)
+        if quick
+        else {
+            "maps": tuple(m.name for m in maps()),
+            "scenarios": SCENARIOS,
+            "runs": RUNS,
+            "ds": DS,
+            "mismatches": MISMATCHES,
+            "search": True,
+            "cost": True,
+            "two_stage": True,
+        }
+    )
+    names = cfg["maps"]
+    n_var = len(_variants(names))
+    total = (
+        len(cfg["scenarios"]) * n_var
+        + 1
+        + n_var
+        + len(cfg["mismatches"]) * n_var
+        + (len(names) if cfg["cost"] else 0)
+    )
+    with Bar(total, "control evaluation", progress, unit="parts") as bar:
+        track, steps = tracking(examples, names, cfg["scenarios"], bar=bar)
+        record = {
+            "params": HUMAN_RUNNER.as_dict(),
+            "settings": {
+                "maps": list(names),
+                "scenarios": list(cfg["scenarios"]),
+                "speed_floor": SPEED_FLOOR,
+                "seed": SEED,
+                "quick": quick,
+            },
+            "tracking": track,
+            "per_step": steps,
+            "target_check": target_check(steps),
+            "rough": rough(names, cfg["ds"], cfg["runs"], cfg["search"], bar=bar),
+            "mismatch": mismatch(examples, names, cfg["scenarios"], cfg["mismatches"], cfg["runs"], bar=bar),
+        }
+        if cfg["cost"]:
+            record["cost"] = cost(names, bar=bar)
+    return record
