@@ -4,6 +4,7 @@ Imports run one way (a test checks it): ``api`` (the public names, parameters, v
 the index) < ``exact`` (the exact simulator: the compiled DOP853 integrator, its stance and
 Jacobian, the ``solve_ivp`` reference) < ``analysis`` (periodic gaits), ``sweep`` (parameter
 sweeps), ``studies`` (the accuracy, convergence, stiffness and stability studies and their
-reports) < ``cli`` (one module per command). Where numba caches the compiled kernels is set up by the
-top-level package (``slipmaps.kernel_cache``).
+reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it uses ``api``,
+``exact`` and ``analysis``) < ``cli`` (one module per command). Where numba caches the compiled
+kernels is set up by the top-level package (``slipmaps.kernel_cache``).
 """

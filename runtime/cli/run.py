@@ -74,10 +74,15 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 def _evaluate(args: argparse.Namespace) -> int:
     from ..api.paths import writable_dir
-    from ..studies.checkout import docs_dir
+    from ..studies.checkout import checkout_root, docs_dir
 
     if args.scenario is not None:
         raise ValueError("--evaluate runs its own scenarios: give no scenario file with it")
+    root = checkout_root()
+    if root is None or not (root / "examples").is_dir():
+        raise ValueError(
+            "--evaluate runs the scenarios of a source checkout's examples/: run it from a checkout"
+        )
     if args.out is not None:
         out = writable_dir("--out", args.out)
     else:
@@ -88,7 +93,7 @@ def _evaluate(args: argparse.Namespace) -> int:
             )
     from ..control.report import write
 
-    for path in write(out, quick=args.quick, progress=False if args.no_progress else None):
+    for path in write(out, root / "examples", quick=args.quick, progress=False if args.no_progress else None):
         print(f"wrote {path}")
     return 0
 

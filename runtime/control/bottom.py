@@ -156,11 +156,13 @@ class BottomDeadbeat:
         ints[fi["scan"]] = scan
         ints[fi["targeted"]], ints[fi["targeted"] + 1] = AIMS[aim]
         ints[fi["n_args"]] = n + 1
+        ints[fi["kd_arg"]] = self._i_kd
         floats[ff["lo"]], floats[ff["hi"]], floats[ff["scale"]] = lo, hi, params.k_c
         floats[ff["weight"]] = 1.0 / params.l0
         floats[ff["weight"] + 1] = 1.0 / math.sqrt(params.g_f * params.l0)
         floats[ff["tol"]] = real("tol", tol)
         floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
+        floats[ff["kd_lo"]], floats[ff["kd_hi"]] = lo, hi
         self._ints, self._floats = ints, floats
 
     def warm(self, batch: bool = False) -> BottomDeadbeat:

@@ -75,10 +75,12 @@ HEAD = (
     "u1",
     "u2",  # the controls at the final point, in the order given
     "residual",  # |r| (scaled) at the final point
-    "authority",  # dE'/dk_d [J per N/m] at the final point, m (g_f dh'/dk_d + v' dv'/dk_d); NaN without k_d
+    "authority",  # dE'/dk_d [J per N/m] at the final controls (the secant between the k_d bounds)
+    "energy_low",  # the next apex's flight energy m (g_f h' + v'^2/2) [J] with k_d at its lower bound
+    "energy_high",  # ... at its upper bound (the other controls as found); NaN where the map fails there
 )
 N_HEAD = len(HEAD)
-_PS, _MS, _NJ, _NE, _NI, _U0, _RES, _AUTH = 0, 1, 2, 3, 4, 5, 8, 9
+_PS, _MS, _NJ, _NE, _NI, _U0, _RES, _AUTH, _ELO, _EHI = 0, 1, 2, 3, 4, 5, 8, 9, 10, 11
 
 _OK = int(Status.OK)
 _NAN = math.nan
@@ -315,19 +317,31 @@ def in_threads(rows, A, OUT, *shared) -> None:
 #: ints: n_out, n_wrt, output row of apex_height, of apex_speed, number of controls, their argument
 #: positions (3), their Jacobian columns (3), the k_d column (-1: none), max evaluations, broyden
 #: (0/1), scan points, the targeted components (2: 1 or 0), the kernel's argument count (the target
-#: height and speed follow the arguments in a row).
+#: height and speed follow the arguments in a row), the k_d argument's position (-1: none).
 _I_NOUT, _I_NWRT, _I_OH, _I_OV, _I_NC = 0, 1, 2, 3, 4
 _I_ARG, _I_COL = 5, 8
-_I_KD, _I_MAXJ, _I_BROYDEN, _I_SCAN, _I_TGT, _I_NARGS = 11, 12, 13, 14, 15, 17
-N_INTS = 18
+_I_KD, _I_MAXJ, _I_BROYDEN, _I_SCAN, _I_TGT, _I_NARGS, _I_KDARG = 11, 12, 13, 14, 15, 17, 18
+N_INTS = 19
 #: floats: lower bounds (3), upper bounds (3), scales (3), residual weights (2), tol, the mass and
-#: g_f (for the energy authority).
+#: g_f, the bounds of k_d (for the energy budget).
 _F_LO, _F_HI, _F_S, _F_W, _F_TOL, _F_M, _F_G = 0, 3, 6, 9, 11, 12, 13
-N_FLOATS = 14
+_F_KDLO, _F_KDHI = 14, 15
+N_FLOATS = 16
 
 INT_FIELDS = {"n_out": 0, "n_wrt": 1, "out_height": 2, "out_speed": 3, "n_controls": 4, "arg": 5, "col": 8}
 INT_FIELDS |= {"kd_col": 11, "max_evaluations": 12, "broyden": 13, "scan": 14, "targeted": 15, "n_args": 17}
-FLOAT_FIELDS = {"lo": 0, "hi": 3, "scale": 6, "weight": 9, "tol": 11, "m": 12, "g_f": 13}
+INT_FIELDS |= {"kd_arg": 18}
+FLOAT_FIELDS = {
+    "lo": 0,
+    "hi": 3,
+    "scale": 6,
+    "weight": 9,
+    "tol": 11,
+    "m": 12,
+    "g_f": 13,
+    "kd_lo": 14,
+    "kd_hi": 15,
+}
 
 
 # The work buffer W of a solve (one allocation): fixed regions, then the kernels' outputs d.
@@ -819,3 +833,17 @@ def solve_row(apex, jac, a, ints, floats, W, out):
             v = d[1 + ints[_I_OV]]
             s = floats[_F_S + j]
             out[_AUTH] = floats[_F_M] * (floats[_F_G] * G[j] / s + v * G[3 + j] / s)
+    # the energy budget: the next apex's energy with k_d at each bound, the other controls as found
+    i_kd = ints[_I_KDARG]
+    if i_kd >= 0:
+        k_now = a[i_kd]
+        for slot, k in ((_ELO, floats[_F_KDLO]), (_EHI, floats[_F_KDHI])):
+            a[i_kd] = k
+            apex(a, d)
+            out[_NE] += 1.0
+            if int(d[0]) == _OK:
+                h, v = d[1 + ints[_I_OH]], d[1 + ints[_I_OV]]
+                out[slot] = floats[_F_M] * (floats[_F_G] * h + 0.5 * v * v)
+        a[i_kd] = k_now
+        if math.isfinite(out[_ELO]) and math.isfinite(out[_EHI]):
+            out[_AUTH] = (out[_EHI] - out[_ELO]) / (floats[_F_KDHI] - floats[_F_KDLO])

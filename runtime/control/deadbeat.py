@@ -121,13 +121,17 @@ MAX_EVALUATIONS = 200
 STANCE_FRACTION = 0.8
 
 
-def default_angle(params: SlipParams, apex_speed: float, k_c: float | None = None) -> float:
+def default_angle(params: SlipParams, apex_speed, k_c: float | None = None):
     """The starting touchdown angle: the neutral angle whose foot lands half a stance ahead,
-    asin(v t_s / (2 q_r_td)) with t_s = 0.8 pi sqrt(m / k_c) (clipped to |q_th| <= 1 rad)."""
+    asin(v t_s / (2 q_r_td)) with t_s = 0.8 pi sqrt(m / k_c) (clipped to |q_th| <= 1 rad); a float
+    for a float, an array for an array (the same numbers: the batch starts where the scalar does)."""
     k = params.k_c if k_c is None else k_c
     t_s = STANCE_FRACTION * math.pi * math.sqrt(params.m / k)
-    x = apex_speed * t_s / (2.0 * params.q_r_td)
-    return math.asin(max(-math.sin(1.0), min(math.sin(1.0), x)))
+    x = np.arcsin(np.clip(np.asarray(apex_speed, dtype=float) * t_s / (2.0 * params.q_r_td), -_SIN1, _SIN1))
+    return float(x) if x.ndim == 0 else x
+
+
+_SIN1 = math.sin(1.0)
 
 
 class DeadbeatResult:
@@ -274,9 +278,10 @@ class DeadbeatResult:
 
     @property
     def energy_range(self) -> tuple[float, float]:
-        lo, hi = self._ctl._kd_bounds
-        change, auth, k_d = self.energy_change, self.authority, self.k_d
-        return (change + (lo - k_d) * auth, change + (hi - k_d) * auth)
+        """E' - E with k_d at its lower and at its upper bound, the angle and k_c as found [J]
+        (NaN for a constant-stiffness map, or where the map fails at the bound)."""
+        e_in = self._energy_in()
+        return (float(self._out[10]) - e_in, float(self._out[11]) - e_in)
 
     @property
     def message(self) -> str:
@@ -503,6 +508,7 @@ class Deadbeat:
             floats[ff["lo"] + j], floats[ff["hi"] + j] = lo, hi
             floats[ff["scale"] + j] = ANGLE_SCALE if c == "touchdown_angle" else params.k_c
         ints[fi["kd_col"]] = self.wrt.index("k_d") if "k_d" in self.wrt else -1
+        ints[fi["kd_arg"]] = self._pos["k_d"] if "k_d" in self._pos else -1
         ints[fi["max_evaluations"]] = max_evaluations
         ints[fi["broyden"]] = int(jacobian == "broyden")
         ints[fi["scan"]] = scan
@@ -512,6 +518,8 @@ class Deadbeat:
         floats[ff["tol"]] = tol
         floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
         ints[fi["n_args"]] = len(self.args)
+        kd_bounds = self.bounds.get("k_d", tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
+        floats[ff["kd_lo"]], floats[ff["kd_hi"]] = kd_bounds
         self._ints, self._floats = ints, floats
         self._kernels = compiled.kernels_for(call)
         self._i_h, self._i_v = self._pos["b_y_apex"], self._pos["b_xd_apex"]
@@ -612,10 +620,7 @@ class Deadbeat:
         n = int(np.prod(shape))
         cols = {k: np.ascontiguousarray(p.reshape(n)) for k, p in zip(given, parts, strict=True)}
         if touchdown_angle is None:
-            p = self.params
-            t_s = STANCE_FRACTION * math.pi * math.sqrt(p.m / p.k_c)
-            x = cols["apex_speed"] * t_s / (2.0 * p.q_r_td)
-            cols["touchdown_angle"] = np.arcsin(np.clip(x, -math.sin(1.0), math.sin(1.0)))
+            cols["touchdown_angle"] = default_angle(self.params, cols["apex_speed"])
         A = np.tile(self._template, (n, 1))
         for key, arg in (
             ("apex_height", "b_y_apex"),
@@ -662,9 +667,8 @@ class Deadbeat:
         e_in = p.m * (p.g_f * (h - gr) + 0.5 * v * v)
         hn, vn = out["apex_height"], out["apex_speed"]
         out["energy_change"] = p.m * (p.g_f * hn + 0.5 * vn * vn) - e_in
-        lo, hi = self._kd_bounds
-        out["energy_low"] = out["energy_change"] + (lo - out["k_d"]) * out["authority"]
-        out["energy_high"] = out["energy_change"] + (hi - out["k_d"]) * out["authority"]
+        out["energy_low"] = OUT[:, 10] - e_in
+        out["energy_high"] = OUT[:, 11] - e_in
         shaped = {k: np.asarray(x).reshape(shape) for k, x in out.items()}
         return DeadbeatBatch(self.name, shaped, shape)
 
@@ -703,10 +707,16 @@ def message_of(res: DeadbeatResult, bounds: dict) -> str:
         which = "upper" if value >= hi else "lower"
         parts.append(f"{c} at its {which} bound {value:.6g}")
     lo_e, hi_e = res.energy_range
-    if math.isfinite(res.energy_needed) and math.isfinite(lo_e) and not lo_e <= res.energy_needed <= hi_e:
+    need = res.energy_needed
+    if math.isfinite(need) and math.isfinite(hi_e) and need > hi_e:
         parts.append(
-            f"the target needs {res.energy_needed:+.4g} J, and k_d within its bounds changes this step's "
-            f"energy by {lo_e:+.4g} to {hi_e:+.4g} J"
+            f"the target needs {need:+.4g} J and k_d at its upper bound makes this step's energy change "
+            f"{hi_e:+.4g} J"
+        )
+    elif math.isfinite(need) and math.isfinite(lo_e) and need < lo_e:
+        parts.append(
+            f"the target needs {need:+.4g} J and k_d at its lower bound makes this step's energy change "
+            f"{lo_e:+.4g} J"
         )
     return "; ".join(parts)
 

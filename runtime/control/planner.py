@@ -49,14 +49,14 @@ def split_energy(e, ground, height, speed, floor, g: float, l0: float):
     # x = x0 + lam, y = y0 / (1 - lam): f(lam) = x0 + lam + y0^2 / (2 (1 - lam)^2) - c, increasing on
     # lam < 1, from -inf; bisection between a point below the root and 1
     lo = np.minimum(0.0, c - x0 - 0.5 * y0 * y0) - 1.0
-    hi = np.ones_like(lo)
+    hi = np.full_like(lo, 1.0 - 1e-12)
     for _ in range(80):
         mid = 0.5 * (lo + hi)
         f = x0 + mid + 0.5 * y0 * y0 / (1.0 - mid) ** 2 - c
         below = f < 0.0
         lo = np.where(below, mid, lo)
         hi = np.where(below, hi, mid)
-    lam = 0.5 * (lo + hi)
+    lam = 0.5 * (lo + hi)  # < 1: the speed keeps its sign
     x = x0 + lam
     y = np.where(y0 == 0.0, 0.0, y0 / (1.0 - lam))
     x = np.where(y0 == 0.0, c, x)

@@ -417,7 +417,7 @@ def _step(
         pred_h = pred_v = resid = elo = ehi = np.full(m, math.nan)
         solve = np.zeros(m)
     else:
-        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], [default_angle(p, x) for x in v_plan])
+        start = np.where(np.isfinite(angle_prev[idx]), angle_prev[idx], default_angle(p, v_plan))
         if sc.known >= 1:
             if ctl.energy and not np.isfinite(authority[idx]).all():
                 pre = _plan(ctl.deadbeat, hm, v_plan, H_step, V_step, gr_model, start, scalar)

@@ -48,7 +48,7 @@ from ..api.index import get, get_half
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from .deadbeat import CONTROLS
 
-__all__ = ["Scenario", "from_dict", "load", "read_toml", "KEYS"]
+__all__ = ["Scenario", "from_dict", "load", "load_scenario", "read_toml", "KEYS"]
 
 #: The accepted keys: top level and per table.
 KEYS = {
@@ -413,3 +413,7 @@ def from_dict(data: dict, where: str = "scenario") -> Scenario:
 def load(path: str | Path) -> Scenario:
     """A scenario from a TOML file (module docstring); ValueError naming the file and the key."""
     return from_dict(read_toml(path), where=str(path))
+
+
+#: :func:`load` under its public name (``slipmaps.load_scenario``).
+load_scenario = load

@@ -13,6 +13,9 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     batch["apex_height"], batch["status"]
     gaits = slipmaps.fixed_points("exact", params, apex_height=1.0, speed=5.0)  # periodic gaits
     gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
+    plan = slipmaps.deadbeat("iterative", params, 1.0, 5.0, 1.0, 5.2)   # touchdown angle and k_d
+    plan.touchdown_angle, plan.k_d, plan.status                          # REACHED
+    trip = slipmaps.run("examples/stairs.toml")                          # steps on the exact plant
 
 Conventions: SI units; leg angle from the vertical, counterclockwise positive; polar state
 ``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
@@ -57,6 +60,19 @@ _EXPORTS = {
     "sweep": "slipmaps.runtime.sweep.run",
     "read_sweep": "slipmaps.runtime.sweep.run",
     "MESSAGES": "slipmaps.generated.status",
+    "deadbeat": "slipmaps.runtime.control.deadbeat",
+    "deadbeat_batch": "slipmaps.runtime.control.deadbeat",
+    "Deadbeat": "slipmaps.runtime.control.deadbeat",
+    "DeadbeatResult": "slipmaps.runtime.control.deadbeat",
+    "DeadbeatBatch": "slipmaps.runtime.control.deadbeat",
+    "PlanStatus": "slipmaps.runtime.control.deadbeat",
+    "BottomDeadbeat": "slipmaps.runtime.control.bottom",
+    "run": "slipmaps.runtime.control.runs",
+    "run_batch": "slipmaps.runtime.control.runs",
+    "Run": "slipmaps.runtime.control.runs",
+    "RunBatch": "slipmaps.runtime.control.runs",
+    "Scenario": "slipmaps.runtime.control.scenarios",
+    "load_scenario": "slipmaps.runtime.control.scenarios",
 }
 
 __all__ = sorted(_EXPORTS)

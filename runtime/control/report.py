@@ -1,0 +1,355 @@
+"""docs/control.md, .json and figures: the control evaluation (:mod:`.evaluation`) written and rendered.
+
+:func:`write` measures (the full evaluation, and its small version :data:`~.evaluation.QUICK` for
+the tests, in the same record under ``quick``), writes ``control.json`` (6 significant digits),
+``control.md`` (exactly :func:`render` of the record), ``control_rough.png`` (the rough-ground
+survival) and a figure per scenario of the ``iterative`` model on the exact plant
+(``control_<scenario>.png``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
+
+__all__ = ["render", "rounded", "write", "TARGETS"]
+
+#: The issue's targets, checked against the record.
+TARGETS = {
+    "tracking": "iterative as the model: the exact plant's next apex within 1 mm and 0.1 % of the target "
+    f"speed (floored at {SPEED_FLOOR:g} m/s) on every step where the exact map as the model reaches it",
+    "rough": "no fall on known ground changes of up to 30 % of l0 at 5 m/s (Wu and Geyer's figure)",
+    "cost_iterative": "a step planned in under 50 us with iterative",
+    "cost_geyer": "a step planned in under 5 us with geyer",
+}
+
+
+def rounded(x, digits: int = 6):
+    """``x`` (floats, or dicts and lists of them) to ``digits`` significant digits; NaN -> None."""
+    if isinstance(x, float):
+        return None if not math.isfinite(x) else float(f"{x:.{digits}g}")
+    if isinstance(x, dict):
+        return {k: rounded(v, digits) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [rounded(v, digits) for v in x]
+    return x
+
+
+def _f(x, digits: int = 3) -> str:
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "n/a"
+    if x == 0:
+        return "0"
+    if 1e-3 <= abs(x) < 1e4:
+        return f"{x:.{max(digits - 1 - math.floor(math.log10(abs(x))), 0)}f}"
+    return f"{x:.{digits - 1}e}"
+
+
+def _mm(x) -> str:
+    return "n/a" if x is None else _f(1000.0 * x)
+
+
+def _pct(x) -> str:
+    return "n/a" if x is None else _f(100.0 * x)
+
+
+def _share(x) -> str:
+    return "n/a" if x is None else f"{100.0 * x:.1f} %"
+
+
+def _cell(c: dict, key: str, fmt) -> str:
+    if not c["steps"]:
+        return "fell at once"
+    text = f"{fmt(c[key + '_error_mean'])} / {fmt(c[key + '_error_max'])}"
+    if c["fell"]:
+        text += f" (fell: {c.get('fall', '?')})"
+    return text
+
+
+def _tracking(rec: dict) -> list[str]:
+    track = rec["tracking"]
+    scen = list(track)
+    models = list(next(iter(track.values())))
+    out = []
+    for key, label, fmt in (
+        ("height", "next-apex height error [mm], mean / max", _mm),
+        ("speed", f"speed error [% of max(|target|, {SPEED_FLOOR:g} m/s)], mean / max", _pct),
+    ):
+        out += [f"**{label}**", "", "| model | " + " | ".join(f"`{s}`" for s in scen) + " |"]
+        out.append("| --- |" + " --- |" * len(scen))
+        for m in models:
+            out.append(f"| `{m}` | " + " | ".join(_cell(track[s][m], key, fmt) for s in scen) + " |")
+        out.append("")
+    out += ["**plan statuses** (steps REACHED / UNREACHABLE / MAP_FAILED)", ""]
+    out.append("| model | " + " | ".join(f"`{s}`" for s in scen) + " |")
+    out.append("| --- |" + " --- |" * len(scen))
+    for m in models:
+        cells = []
+        for s in scen:
+            p = track[s][m]["plan"]
+            cells.append(f"{p.get('REACHED', 0)} / {p.get('UNREACHABLE', 0)} / {p.get('MAP_FAILED', 0)}")
+        out.append(f"| `{m}` | " + " | ".join(cells) + " |")
+    out.append("")
+    return out
+
+
+def _rough(rec: dict) -> list[str]:
+    r = rec["rough"]
+    ds = r["d"]
+    head = (
+        "| model | "
+        + " | ".join(f"known {d:g}" for d in ds)
+        + " | "
+        + " | ".join(f"unknown {d:g}" for d in ds)
+        + " | largest d, known | largest d, unknown |"
+    )
+    out = [head, "| --- |" + " --- |" * (2 * len(ds) + 2)]
+    for m, row in r["models"].items():
+        cells = [_share(x) for x in row["known"]["share"]] + [_share(x) for x in row["unknown"]["share"]]
+        cells += [_f(row["known"]["largest_d"]), _f(row["unknown"]["largest_d"])]
+        out.append(f"| `{m}` | " + " | ".join(cells) + " |")
+    b = r["baseline"]
+    cells = ["-"] * len(ds) + [_share(x) for x in b["share"]] + ["-", _f(b["largest_d"])]
+    out.append("| fixed angle (self-stable gait) | " + " | ".join(cells) + " |")
+    return out
+
+
+def _mismatch(rec: dict) -> list[str]:
+    mm = rec["mismatch"]
+    keys = list(mm)
+    models = list(next(iter(mm.values()))) if mm else []
+    out = ["| model | " + " | ".join(keys) + " |", "| --- |" + " --- |" * len(keys)]
+    for m in models:
+        cells = []
+        for k in keys:
+            c = mm[k][m]
+            cells.append(
+                f"{_mm(c['height_error_mean'])} mm / {_pct(c['speed_error_mean'])} %; "
+                f"max {_mm(c['height_error_max'])}"
+                f" mm / {_pct(c['speed_error_max'])} %; falls {c['falls']}; rough {_share(c['rough_share'])}"
+            )
+        out.append(f"| `{m}` | " + " | ".join(cells) + " |")
+    return out
+
+
+def _cost(rec: dict) -> list[str]:
+    c = rec["cost"]
+    out = [
+        "| model | scalar, median [us] | scalar, 90th percentile [us] | batch, per row [us] | Jacobians | "
+        "evaluations |",
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
+    for m, row in c["models"].items():
+        out.append(
+            f"| `{m}` | {_f(row['scalar_us_median'])} | {_f(row['scalar_us_p90'])} | "
+            f"{_f(row['batch_us_per_row'])} | "
+            f"{_f(row['jacobians_mean'])} | {_f(row['evaluations_mean'])} |"
+        )
+    return out
+
+
+def verdicts(rec: dict) -> list[tuple[str, bool, str]]:
+    """Each target of :data:`TARGETS`: (target, met, what was measured)."""
+    out = []
+    tc = rec["target_check"]
+    met = tc["steps"] > 0 and tc["within"] == tc["steps"]
+    out.append(
+        (
+            TARGETS["tracking"],
+            met,
+            f"{tc['within']} of {tc['steps']} steps within; largest errors "
+            f"{_mm(tc['height_error_max'])} mm and "
+            f"{_pct(tc['speed_error_max'])} %",
+        )
+    )
+    it = rec["rough"]["models"].get("iterative")
+    if it is not None:
+        ds = rec["rough"]["d"]
+        shares = dict(zip(ds, it["known"]["share"], strict=True))
+        ok = all(s == 1.0 for d, s in shares.items() if d <= 0.3 + 1e-12)
+        out.append(
+            (
+                TARGETS["rough"],
+                ok,
+                "iterative, known ground: "
+                f"{', '.join(f'{_share(s)} at {d:g}' for d, s in shares.items())} of "
+                f"{rec['rough']['runs']} runs do not fall; no fall up to d = {_f(it['known']['largest_d'])}",
+            )
+        )
+    cost = rec.get("cost", {}).get("models", {})
+    for key, name, limit in (("cost_iterative", "iterative", 50.0), ("cost_geyer", "geyer", 5.0)):
+        if name in cost:
+            c = cost[name]
+            out.append(
+                (
+                    TARGETS[key],
+                    c["scalar_us_median"] < limit,
+                    f"scalar median {_f(c['scalar_us_median'])} us "
+                    f"(90th percentile {_f(c['scalar_us_p90'])} us), "
+                    f"batch {_f(c['batch_us_per_row'])} us per row",
+                )
+            )
+    return out
+
+
+def render(rec: dict) -> str:
+    """docs/control.md from the record."""
+    s = rec["settings"]
+    r = rec["rough"]
+    lines = [
+        "# Control on the maps: deadbeat steps on the exact plant",
+        "",
+        "<!-- written by `slipmaps run --evaluate` (runtime/control/report.py) from control.json; "
+        "do not edit -->",
+        "",
+        "Every map as the model of the deadbeat controller (`slipmaps.deadbeat`: the touchdown angle and the "
+        "leg stiffness that take the current apex to a target next apex), the exact simulator as the plant "
+        "(`slipmaps.run`), the human runner (80 kg, 1 m leg, k_c = 20 kN/m; k_d and k_c bounded to "
+        "[0.5, 2] x 20 kN/m, the touchdown angle to +-1.2 rad). Models that accept k_c != k_d control the "
+        "touchdown angle and k_d; the constant-stiffness maps (`geyer`, the gravity corrections) the angle "
+        "alone, their plant at k_c = k_d = k, so their runs change energy only with the ground. "
+        "`iterative, two-stage` plans at the apex with `iterative` and chooses k_d again at the bottom, from "
+        "the plant's bottom state, with `iterative-decompression`. Errors are the plant's next apex against "
+        "the target the deadbeat aimed at (the planner's, where the nominal one is beyond a step's energy "
+        "budget or the coming ground needs another).",
+        "",
+        "## Targets",
+        "",
+        "| target | met | measured |",
+        "| --- | --- | --- |",
+    ]
+    for target, met, measured in verdicts(rec):
+        lines.append(f"| {target} | {'yes' if met else '**no**'} | {measured} |")
+    lines += [
+        "",
+        "## Tracking on the exact plant",
+        "",
+        f"The scenarios of examples/ ({', '.join(f'`{x}.toml`' for x in s['scenarios'])}), one run each.",
+        "",
+        *_tracking(rec),
+        "### Where the exact model reaches the target",
+        "",
+    ]
+    tc = rec["target_check"]
+    lines.append(
+        f"On {tc['steps']} steps the exact map as the model reaches its target; there the `iterative` "
+        f"model's run is within 1 mm and 0.1 % on {tc['within']}, its largest errors "
+        f"{_mm(tc['height_error_max'])} mm and "
+        f"{_pct(tc['speed_error_max'])} %."
+        + ("" if not tc["misses"] else f" Misses: {json.dumps(tc['misses'])}.")
+    )
+    lines += [
+        "",
+        "## Rough ground",
+        "",
+        f"Share of {r['runs']} seeded runs of {r['steps']} steps at {r['speed']:g} m/s that do not fall; the "
+        "ground of each touchdown differs from the previous one by a uniform draw in +-d l0 (the first "
+        "touchdown on the start's ground; the same terrains for every model). Known: the next "
+        f"{r['known_steps']} touchdowns' grounds, the planner on, nominal apex 1 m. Unknown: the controller "
+        "assumes flat ground and flies an apex 1 + d m high (clear of any step up of the distribution; from "
+        "1 m a step up of more than 0.083 l0 leaves no touchdown at all). The baseline: no controller, the "
+        "touchdown angle of the exact map's self-stable gait at that apex and 5 m/s, k constant. The largest "
+        "d without a fall is searched beyond the grid in steps of 0.05 (below it by halving).",
+        "",
+        *_rough(rec),
+        "",
+        "![rough ground](control_rough.png)",
+        "",
+        "## Model mismatch",
+        "",
+        "The plant's mass or its springs (the stiffness it runs with, against the commanded one) off by the "
+        "fraction: the tracking over every scenario (mean and max of the per-scenario errors, the runs that "
+        f"fell), and the share of the rough-ground runs at d = {MISMATCH_D:g}, known ground, that do not "
+        "fall.",
+        "",
+        *_mismatch(rec),
+        "",
+    ]
+    if "cost" in rec:
+        c = rec["cost"]
+        load = c.get("load")
+        lines += [
+            "## Cost per step",
+            "",
+            "The deadbeat solve (`Deadbeat.plan`, warm-started from the previous step's angle, as a run "
+            f"does) on {c['problems']} rough-ground steps of each model (d = 0.2, known), the best of 3 per "
+            "step; the batch "
+            "form (`Deadbeat.plan_batch`, threads) per row; the mean numbers of generated Jacobians and of "
+            f"map evaluations per solve. Measured on a shared 2-core machine (load average {_f(load)}): "
+            "machine-dependent, not re-measured by the tests.",
+            "",
+            *_cost(rec),
+            "",
+        ]
+    lines += [
+        "## Scenario runs (model `iterative`, plant `exact`)",
+        "",
+        *[f"![{x}](control_{x}.png)" for x in s["scenarios"]],
+        "",
+        f"Regenerate: `slipmaps run --evaluate` (about {_f(rec.get('seconds'))} s); the tests re-run the "
+        "small version (`quick` in control.json: geyer, iterative and exact on two scenarios, 16 runs of "
+        "rough ground).",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def rough_figure(rec: dict, path) -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    r = rec["rough"]
+    ds = r["d"]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True, constrained_layout=True)
+    for ax, mode in zip(axes, ("known", "unknown"), strict=True):
+        for m, row in r["models"].items():
+            ax.plot(ds, [100 * x for x in row[mode]["share"]], "o-", label=m, lw=1.2, ms=4)
+        if mode == "unknown":
+            ax.plot(ds, [100 * x for x in r["baseline"]["share"]], "k--", label="fixed angle", lw=1.5)
+        ax.set_title(f"ground {mode} to the controller", fontsize=10)
+        ax.set_xlabel("ground change per step, +- d l0")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel(f"runs that do not fall [% of {r['runs']}]")
+    axes[1].legend(fontsize=7, ncol=2, loc="lower left")
+    fig.suptitle(f"Rough ground at 5 m/s, {r['steps']} steps per run", fontsize=11)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return Path(path)
+
+
+def write(out: str | Path, examples: str | Path, *, quick: bool = False, progress=None) -> list[Path]:
+    """Measure and write the evaluation into directory ``out`` (module docstring); ``quick``: the small
+    version only (no markdown, no figures: control_quick.json). Returns the paths written."""
+    import time
+
+    from .figures import run_figure
+    from .runs import run, scenario_of
+
+    out = Path(out)
+    t0 = time.perf_counter()
+    small = evaluate(examples, quick=True, progress=progress)
+    if quick:
+        path = out / "control_quick.json"
+        path.write_text(json.dumps(rounded(small), indent=1) + "\n")
+        return [path]
+    record = evaluate(examples, progress=progress)
+    record["quick"] = small
+    record["seconds"] = time.perf_counter() - t0
+    record = rounded(record)
+    written = []
+    path = out / "control.json"
+    path.write_text(json.dumps(record, indent=1) + "\n")
+    written.append(path)
+    written.append(rough_figure(record, out / "control_rough.png"))
+    for name in record["settings"]["scenarios"]:
+        sc = scenario_of(Path(examples) / f"{name}.toml", {})
+        written.append(Path(run_figure(run(sc, model="iterative"), out / f"control_{name}.png")))
+    path = out / "control.md"
+    path.write_text(render(record))
+    written.append(path)
+    return written
