@@ -69,7 +69,9 @@ def test_a_target_beyond_the_energy_budget_is_unreachable_with_the_closest_apex_
     assert res.energy_needed == pytest.approx(210.0, abs=1e-9)
     assert hi == pytest.approx(res.energy_change, abs=1e-9) and hi < res.energy_needed  # measured +122.9 J
     assert "unreachable" in res.message and "k_d at its upper bound 40000" in res.message
-    assert f"needs +210 J and k_d at its upper bound makes this step's energy change {hi:+.4g} J" in res.message
+    assert (
+        f"needs +210 J and k_d at its upper bound makes this step's energy change {hi:+.4g} J" in res.message
+    )
     step = _check("exact", res, 1.0, 5.0)
     assert step.apex_height == res.apex_height and step.apex_speed == res.apex_speed
 
@@ -224,10 +226,10 @@ def test_the_bottom_stage_removes_the_compression_halfs_error():
 
 def test_a_warm_started_solve_takes_few_generated_jacobians():
     """The generated Jacobian once, then Broyden's updates (a fresh one when a line search fails):
-    measured 1-2 Jacobians and 5-8 apex evaluations from 1e-3 rad away, against 3 Jacobians with
+    measured 2 Jacobians and 10 apex evaluations from 1e-3 rad away (1 and 8-12 from 1e-2 to 5e-2 rad), against 3 Jacobians with
     jacobian='newton'."""
     ctl = Deadbeat("iterative", P)
     first = ctl.plan(1.0, 5.0, 1.0, 5.1)
     again = ctl.plan(1.0, 5.0, 1.0, 5.1, touchdown_angle=first.touchdown_angle + 1e-3)
     assert again.reached and 1 <= again.jacobians <= 2
-    assert again.evaluations <= 10
+    assert again.evaluations <= 12  # measured 10, two of them the energy budget at the k_d bounds

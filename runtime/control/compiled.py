@@ -86,6 +86,8 @@ _OK = int(Status.OK)
 _NAN = math.nan
 #: Backtracking: at most this many halvings of a step.
 _HALVINGS = 12
+#: ... of a step on a secant (Broyden) Jacobian, before a fresh one is asked for.
+_SECANT_HALVINGS = 3
 #: Sufficient decrease of |r|^2, as a fraction of the decrease the linearised residual promises
 #: (Armijo's constant).
 _ARMIJO = 1e-4
@@ -592,7 +594,7 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
         alpha = 1.0
         accepted = False
         phi_t = math.inf
-        for _ in range(_HALVINGS):
+        for _ in range(_HALVINGS if fresh else _SECANT_HALVINGS):
             for j in range(nc):
                 zt[j] = min(max(z[j] + alpha * delta[j], zlo[j]), zhi[j])
             phi_t = _evaluate(apex, a, zt, u0, ints, floats, d, rt, out)
