@@ -226,8 +226,8 @@ def test_the_bottom_stage_removes_the_compression_halfs_error():
 
 def test_a_warm_started_solve_takes_few_generated_jacobians():
     """The generated Jacobian once, then Broyden's updates (a fresh one when a line search fails):
-    measured 2 Jacobians and 10 apex evaluations from 1e-3 rad away (1 and 8-12 from 1e-2 to 5e-2 rad), against 3 Jacobians with
-    jacobian='newton'."""
+    measured 2 Jacobians and 10 apex evaluations from 1e-3 rad away (1 and 8-12 from 1e-2 to
+    5e-2 rad)."""
     ctl = Deadbeat("iterative", P)
     first = ctl.plan(1.0, 5.0, 1.0, 5.1)
     again = ctl.plan(1.0, 5.0, 1.0, 5.1, touchdown_angle=first.touchdown_angle + 1e-3)
