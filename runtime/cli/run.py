@@ -142,7 +142,10 @@ def run(args: argparse.Namespace) -> int:
     if "steps" in overrides:
         sc = _resized(sc, overrides.pop("steps"))
     sc = sc.with_(**overrides)
+    from ..control.runs import check
     from ..control.runs import run as run_scenario
+
+    check(sc)  # the maps and their options, before any work
 
     result = run_scenario(sc)
     written = []

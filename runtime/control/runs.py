@@ -49,7 +49,7 @@ from .planner import plan_targets
 from .plant import Plant
 from .scenarios import Scenario, from_dict, load
 
-__all__ = ["Run", "RunBatch", "V_REVERSE", "run", "run_batch", "PLAN_NAMES", "scenario_of"]
+__all__ = ["Run", "RunBatch", "V_REVERSE", "check", "run", "run_batch", "PLAN_NAMES", "scenario_of"]
 
 #: Below this measured apex speed [m/s] a step that reverses the direction is planned from a hop in
 #: place; above it the target becomes a hop in place first.
@@ -295,6 +295,20 @@ class _Controller:
         self.stiff = 1.0 + sc.mismatch_stiffness
         if sc.two_stage and not self.plant.has_halves:
             self.plant._half("touchdown")  # the error naming the plants that have halves
+
+
+def check(sc: Scenario) -> None:
+    """ValueError (one line) for a scenario whose maps, options or settings cannot run, before any
+    work: the model and its options, the plant and its options, the bottom stage's half map."""
+    from ..api.calls import Call
+
+    p = sc.params
+    Call.of(
+        sc.model, p.with_(k=p.k_c) if "constant_stiffness" in get(sc.model).requires else p, sc.model_options
+    )
+    Call.of(sc.plant, p.with_(k=p.k_c), sc.plant_options)
+    if sc.two_stage:
+        Call.of(sc.decompression, p, {}, half=True)
 
 
 def _warm(ctl: _Controller, scalar: bool) -> None:

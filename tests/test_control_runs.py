@@ -1,0 +1,321 @@
+"""Runs, scenarios, the plant, the path, the CLI verb and the evaluation record
+(runtime/control/runs.py, scenarios.py, plant.py, motion.py, evaluation.py, report.py,
+runtime/cli/run.py).
+
+Every example scenario runs with the ``iterative`` model on the exact plant; the errors are bounded
+by the measured ones (in the comments). The evaluation's small version is re-measured against
+docs/control.json's ``quick`` record (tests/records.py tolerances) and docs/control.md must be the
+rendering of the committed record.
+"""
+
+from __future__ import annotations
+
+import ast
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import slipmaps
+from records import assert_close
+from slipmaps.runtime.cli.app import main
+from slipmaps.runtime.control import evaluation, report, runs, scenarios
+from slipmaps.runtime.control.plant import Plant
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = ROOT / "examples"
+DOCS = ROOT / "docs"
+P = slipmaps.HUMAN_RUNNER
+NAMES = ("speed_up", "slow_down", "stop", "turn_around", "stairs", "rough_ground")
+
+
+@pytest.fixture(scope="module")
+def example_runs():
+    return {name: slipmaps.run(EXAMPLES / f"{name}.toml") for name in NAMES}
+
+
+def test_the_examples_are_the_evaluations_scenarios():
+    assert sorted(p.stem for p in EXAMPLES.glob("*.toml") if p.stem != "sweep") == sorted(NAMES)
+    assert evaluation.SCENARIOS == NAMES
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_example_runs_on_the_exact_plant_within_a_hundredth_of_a_millimetre(example_runs, name):
+    """Measured largest errors over the six: 1.2e-5 m and 5.5e-5 of the target speed (stop)."""
+    r = example_runs[name]
+    assert not r.fell, r.status
+    assert len(r) == r.scenario.steps
+    steps = r.steps
+    assert steps and all(s["plan_status"] == "REACHED" for s in steps)
+    assert all(s["plant_status"] == "OK" for s in steps)
+    dh, dv = r.errors()
+    rel = np.abs(dv) / np.maximum(np.abs(r.column("target_speed")), 1.0)
+    assert np.max(np.abs(dh)) < 2e-5
+    assert np.max(rel) < 1e-4
+    assert np.all(np.isfinite(r.column("solve_us")))
+
+
+def test_the_speed_changes_reach_their_ends(example_runs):
+    assert example_runs["speed_up"].column("next_speed")[-1] == pytest.approx(7.0, abs=1e-4)
+    assert example_runs["slow_down"].column("next_speed")[-1] == pytest.approx(3.0, abs=1e-4)
+    stop = example_runs["stop"]
+    assert abs(stop.column("next_speed")[-1]) < 1e-6 and stop.column("next_height")[-1] == pytest.approx(
+        1.1, abs=1e-4
+    )
+    turn = example_runs["turn_around"].column("next_speed")
+    assert turn[-1] == pytest.approx(-3.0, abs=1e-4)
+    assert (turn > 0).any() and (turn < 0).any()
+
+
+def test_the_planner_raises_the_apex_before_a_stair_and_keeps_it_within_a_steps_budget(example_runs):
+    stairs = example_runs["stairs"]
+    grounds = stairs.column("ground")
+    before = np.concatenate([[0.0], grounds[:-1]])
+    up = grounds - before > 0
+    assert up.any()
+    # the apex before each stair up is l0 above the stair (the floor; measured 1.15 m less the
+    # iterative model's 3.6e-6 m)
+    heights = stairs.column("apex_height")
+    assert np.all(heights[up] >= grounds[up] - before[up] + P.l0 - 2e-5)
+    speed_up = example_runs["speed_up"]
+    nominal, planned = speed_up.column("nominal_speed"), speed_up.column("target_speed")
+    assert (planned < nominal - 1e-3).any()  # the ramp is steeper than a step's energy budget
+    assert np.all(planned <= nominal + 1e-12)
+
+
+def test_a_plant_step_is_the_maps_apex_return_except_that_a_reversal_flies_on():
+    rng = np.random.default_rng(3)
+    n = 60
+    h, v = rng.uniform(1.0, 1.3, n), rng.uniform(-6, 6, n)
+    th, gr = np.sign(v) * rng.uniform(0.2, 0.5, n), rng.uniform(-0.2, 0.2, n)
+    kd = rng.uniform(15_000, 30_000, n)
+    steps = Plant("exact", P).step(h, v, th, gr, P.k_c, kd)
+    same = reversed_ = 0
+    for i in range(n):
+        r = slipmaps.apex_return("exact", P.with_(k_d=kd[i]), h[i], v[i], th[i], ground=gr[i])
+        if r.ok:
+            assert (steps.apex_height[i], steps.apex_speed[i], steps.step_length[i]) == (
+                r.apex_height,
+                r.apex_speed,
+                r.step_length,
+            )
+            same += 1
+        elif r.status == slipmaps.Status.LIFTOFF_BACKWARD:
+            assert steps.ok[i] and steps.apex_speed[i] * v[i] < 0
+            reversed_ += 1
+        else:
+            assert steps.status[i] == r.status
+    assert same > 20 and reversed_ > 0  # measured 33 and 13
+
+
+def test_two_stage_plant_halves_compose_to_the_whole_stance():
+    pl = Plant("exact", P)
+    args = (np.array([1.0, 1.1]), np.array([5.0, 3.0]), np.array([0.36, 0.3]), np.zeros(2))
+    whole = pl.step(*args, P.k_c, 25_000.0)
+    halves = pl.decompress(pl.compress(*args, P.k_c), P.k_c, 25_000.0)
+    assert np.max(np.abs(halves.apex_height - whole.apex_height)) < 1e-13  # measured 5e-15
+
+
+def test_a_run_is_reproducible_and_its_noise_is_seeded():
+    sc = scenarios.load(EXAMPLES / "stairs.toml").with_(noise_height=0.002, noise_speed=0.02, seed=7)
+    a, b = slipmaps.run(sc), slipmaps.run(sc)
+    assert np.array_equal(a.column("measured_speed"), b.column("measured_speed"))
+    assert np.array_equal(a.column("next_height"), b.column("next_height"))
+    c = slipmaps.run(sc.with_(seed=8))
+    assert not np.array_equal(a.column("measured_speed"), c.column("measured_speed"))
+    noise = a.column("measured_height") - a.column("apex_height")
+    assert 0.0 < np.std(noise) < 0.01
+
+
+def test_mismatch_and_unknown_ground_cost_accuracy_and_the_bottom_stage_wins_some_back():
+    base = scenarios.load(EXAMPLES / "rough_ground.toml")
+    exact = slipmaps.run(base)
+    heavy = slipmaps.run(base.with_(mismatch_mass=0.1))
+    dh0, _ = exact.errors()
+    dh1, _ = heavy.errors()
+    assert np.max(np.abs(dh1)) > 100 * np.max(np.abs(dh0))  # measured 3.4 cm against 4e-6 m
+    blind = base.with_(known=0, start_height=1.2, target_height=(1.2,) * base.steps)
+    one = slipmaps.run(blind)
+    two = slipmaps.run(blind.with_(two_stage=True))
+    assert not two.fell
+    assert np.nanmax(np.abs(two.errors()[0])) < 0.2 * np.nanmax(np.abs(one.errors()[0]))
+
+
+def test_a_fixed_angle_run_has_no_plan_and_falls_on_rough_ground():
+    sc = scenarios.load(EXAMPLES / "rough_ground.toml").with_(fixed_angle=0.4111649, known=0)
+    r = slipmaps.run(sc)
+    assert r.fell and "fell at step" in r.status
+    assert {s["plan_status"] for s in r.steps} == {"FIXED"}
+    assert r.steps[-1]["plant_status"] != "OK"
+
+
+def test_the_path_is_continuous_and_lands_the_foot_on_the_terrain(example_runs):
+    r = example_runs["stairs"]
+    path = r.path()
+    assert path.sampled
+    assert np.all(np.diff(path.t) >= 0)
+    jumps = np.hypot(np.diff(path.x), np.diff(path.y))
+    assert jumps.max() < 0.1  # 40 samples per phase: measured 0.06 m
+    assert len(path.foot_x) == len(r)
+    assert np.allclose(path.foot_y, r.column("ground"))
+    legs = np.hypot(path.touchdown_body[:, 0] - path.foot_x, path.touchdown_body[:, 1] - path.foot_y)
+    assert np.allclose(legs, P.q_r_td, atol=1e-12)
+    x_apex = np.concatenate([[0.0], np.cumsum(r.column("step_length"))])
+    assert np.allclose(path.apex[:, 0], x_apex)
+
+
+@pytest.mark.parametrize(
+    ("data", "needle"),
+    [
+        ({"stepz": 3}, "unknown key stepz; accepted: name"),
+        ({"targets": {"speed": {"from": 1, "too": 2}}}, "[targets.speed] too: unknown key"),
+        ({"targets": {"speed": "fast"}}, "[targets] speed: must be a number, a list or a ramp"),
+        ({"terrain": {"kind": "hills"}}, "[terrain] kind: must be one of flat, steps, stairs, random"),
+        ({"terrain": {"kind": "flat", "rise": 0.1}}, "[terrain] rise: is not a key of kind 'flat'"),
+        ({"mismatch": {"mass": -1.5}}, "[mismatch] mass: a fraction above -1"),
+        ({"model": "geyr"}, "model:"),
+        ({"control": {"controls": ["angle"]}}, "[control] controls: unknown control 'angle'"),
+        ({"control": {"bounds": {"k_d": [1.0]}}}, "[control.bounds] k_d: must be a pair"),
+        ({"params": {"m": -80}}, "[params] m: must be positive"),
+        ({"steps": 0}, "steps: must be a whole number >= 1"),
+    ],
+)
+def test_a_bad_scenario_is_one_line_naming_the_key(data, needle):
+    with pytest.raises(ValueError) as err:
+        scenarios.from_dict(data, where="s.toml")
+    message = str(err.value)
+    assert needle in message and "\n" not in message and message.startswith("s.toml: ")
+
+
+def test_a_scenario_file_round_trips_its_profiles():
+    sc = scenarios.load(EXAMPLES / "speed_up.toml")
+    assert sc.steps == 16 and len(sc.target_speed) == 16
+    assert sc.target_speed[0] == pytest.approx(3.0 + 4.0 / 12) and sc.target_speed[11:] == (7.0,) * 5
+    stairs = scenarios.load(EXAMPLES / "stairs.toml")
+    assert max(stairs.ground) == pytest.approx(0.6) and stairs.ground[-1] == pytest.approx(0.0, abs=1e-12)
+    assert stairs.known == 3
+
+
+def test_the_cli_runs_a_scenario_prints_its_table_and_writes_the_figure(tmp_path, capsys):
+    figure = tmp_path / "out" / "stairs.png"
+    assert main(["run", str(EXAMPLES / "stairs.toml"), "--figure", str(figure)]) == 0
+    out = capsys.readouterr().out
+    assert "stairs up and down: model iterative, plant exact; completed 14 steps" in out
+    assert out.count("REACHED") == 14 and figure.stat().st_size > 10_000
+    assert main(["run", str(EXAMPLES / "stop.toml"), "--no-figure", "--json", "--steps", "3"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["steps"]) == 3 and data["fell"] is False
+
+
+def test_the_cli_says_when_the_plant_fell(capsys):
+    argv = ["run", str(EXAMPLES / "rough_ground.toml"), "--no-figure", "--model", "geyer", "--known", "0"]
+    assert main(argv) == 1  # measured: geyer without the ground falls at step 2 (APEX_TOO_LOW)
+    assert "fell at step" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    ("extra", "needle"),
+    [
+        (["--figure", "{file}/x.png"], "--figure {file}/x.png: cannot create the directory"),
+        (["--figure", "{dir}/x.txt"], "--figure {dir}/x.txt: give an image file name ending in .png"),
+        (["--gif", "{dir}/x.png"], "--gif {dir}/x.png: give an animation name ending in .gif"),
+        (["--steps", "0"], "--steps must be at least 1"),
+        (["--model", "nope"], "unknown map 'nope'"),
+        (["--option", "nodes=5"], "nodes"),
+    ],
+)
+def test_cli_errors_are_one_line_before_any_work(extra, needle, tmp_path, capsys, monkeypatch):
+    def no_work(*args, **kwargs):
+        raise AssertionError("a run started before the arguments were refused")
+
+    monkeypatch.setattr(runs, "run_batch", no_work)
+    file = tmp_path / "c.pdf"
+    file.write_text("a file")
+    fill = {"file": str(file), "dir": str(tmp_path)}
+    assert main(["run", str(EXAMPLES / "stairs.toml"), *(a.format(**fill) for a in extra)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert needle.format(**fill) in err and "\n" not in err, err
+    assert main(["run"]) == 2
+    assert "give a scenario file" in capsys.readouterr().err
+
+
+def test_a_gif_is_written_with_the_pillow_writer(tmp_path):
+    from PIL import Image
+
+    r = slipmaps.run(
+        EXAMPLES / "stop.toml", steps=2, target_height=(1.01, 1.02), target_speed=(4.5, 4.0), ground=(0, 0)
+    )
+    from slipmaps.runtime.control.figures import animate
+
+    path = animate(r, tmp_path / "stop.gif", fps=10)
+    with Image.open(path) as im:
+        assert im.format == "GIF" and im.n_frames > 5
+
+
+def test_control_imports_only_the_layers_below_it_and_nothing_below_imports_it():
+    """control uses api, exact, analysis (and the generated kernels); only cli and control
+    itself import control."""
+    runtime = ROOT / "runtime"
+    for path in runtime.rglob("*.py"):
+        layer = path.relative_to(runtime).parts[0]
+        tree = ast.parse(path.read_text())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module:
+                mod = "." * node.level + node.module
+                names = [mod]
+            elif isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            else:
+                continue
+            for name in names:
+                uses_control = "control" in name.split(".") and ("runtime" in name or name.startswith("."))
+                if layer not in ("control", "cli", "public"):
+                    assert not uses_control, f"{path} imports {name}"
+                if layer == "control" and name.startswith(".."):
+                    assert name.split(".")[2] in ("api", "exact", "analysis"), f"{path} imports {name}"
+
+
+# --- the evaluation record ------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def record():
+    return json.loads((DOCS / "control.json").read_text())
+
+
+def test_the_small_evaluation_is_current(record):
+    """control.json's quick record re-measured (regenerate with `slipmaps run --evaluate`)."""
+    measured = report.rounded(evaluation.evaluate(EXAMPLES, quick=True, progress=False))
+    assert_close(measured, record["quick"], "quick")
+    assert measured["target_check"]["steps"] > 0  # the filter below is not empty
+
+
+def test_the_markdown_renders_the_record(record):
+    assert (DOCS / "control.md").read_text() == report.render(record)
+
+
+def test_the_recorded_evaluation_meets_its_targets_or_says_so(record):
+    verdicts = report.verdicts(record)
+    assert len(verdicts) == 4
+    text = (DOCS / "control.md").read_text()
+    for target, met, measured in verdicts:
+        assert f"| {target} | {'yes' if met else '**no**'} | {measured} |" in text
+    tc = record["target_check"]
+    assert tc["steps"] > 50 and tc["within"] == tc["steps"]  # every step of every scenario
+    it = record["rough"]["models"]["iterative"]["known"]
+    ds = record["rough"]["d"]
+    assert [s for d, s in zip(ds, it["share"], strict=True) if d <= 0.3] == [1.0, 1.0, 1.0]
+    assert it["largest_d"] >= 0.3
+    assert record["rough"]["runs"] == 1000 and record["rough"]["steps"] == 20
+    assert set(record["tracking"]["stairs"]) >= {m.name for m in slipmaps.maps()}
+    for figure in ["control_rough.png", *(f"control_{n}.png" for n in NAMES)]:
+        assert (DOCS / figure).stat().st_size > 10_000
+
+
+def test_every_map_has_its_cost_recorded(record):
+    cost = record["cost"]["models"]
+    assert set(cost) == {m.name for m in slipmaps.maps()}
+    for row in cost.values():
+        assert row["scalar_us_median"] > 0 and math.isfinite(row["batch_us_per_row"])
+        assert row["jacobians_mean"] >= 1.0
