@@ -38,6 +38,7 @@ SKIPPED = {
     "python3 -m pip install -e '.[derive]'": "installs slipmaps with the derive extra",
     "slipmaps generate": "rewrites the checkout's generated/ and docs",
     "slipmaps accuracy": "rewrites the checkout's docs/ and takes minutes",
+    "slipmaps run --evaluate": "rewrites the checkout's docs/control.* and takes minutes",
 }
 PREFIXES = (("python3", "-m", "slipmaps"), ("python", "-m", "slipmaps"), ("slipmaps",))
 

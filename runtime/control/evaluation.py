@@ -59,8 +59,9 @@ __all__ = [
 SCENARIOS = ("speed_up", "slow_down", "stop", "turn_around", "stairs", "rough_ground")
 #: Rough ground: runs per d, steps per run, the ground changes d (fractions of l0), the known horizon.
 RUNS, STEPS, DS, KNOWN = 1000, 20, (0.1, 0.2, 0.3, 0.4), 3
-#: The search of the largest d without a fall beyond the grid: steps of this size, up to D_MAX.
-D_STEP, D_MAX = 0.05, 1.0
+#: The search of the largest d without a fall: beyond the grid in steps of D_STEP up to D_MAX, below
+#: it by halving down to D_MIN (0 is recorded when even D_MIN falls).
+D_STEP, D_MAX, D_MIN = 0.05, 1.0, 0.0125
 #: The seed of the rough-ground terrains (run r draws from default_rng([SEED, r])).
 SEED = 2024
 #: The speed errors are relative to max(|target speed|, SPEED_FLOOR) [m/s] (a hop in place aims at 0).
@@ -193,7 +194,7 @@ def _largest(make, shares: dict[float, float], runs: int, search: bool) -> float
                 max(clean) if clean and all(s == 1.0 for d, s in shares.items() if d < max(clean)) else None
             )
         d = min(shares) / 2.0
-        while d > 0.012:
+        while d >= D_MIN - 1e-12:
             if survival(make(d), d, runs) == 1.0:
                 return d
             d /= 2.0
@@ -334,7 +335,6 @@ def cost(names, bar=None) -> dict:
             "batch_us_per_row": best * 1e6 / h.size,
             "jacobians_mean": float(np.mean(jac)),
             "evaluations_mean": float(np.mean(ev)),
-            "cold_start_angle": False,
         }
         if bar is not None:
             bar.update(1)

@@ -13,6 +13,9 @@ import json
 import math
 from pathlib import Path
 
+import numpy as np
+
+from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
 
 __all__ = ["render", "rounded", "write", "TARGETS"]
@@ -58,6 +61,13 @@ def _pct(x) -> str:
 
 def _share(x) -> str:
     return "n/a" if x is None else f"{100.0 * x:.1f} %"
+
+
+def _largest(d) -> str:
+    """The largest d without a fall; 0 means a fall even at the smallest d searched."""
+    if d is None:
+        return "n/a"
+    return f"< {_f(EVAL_D_MIN)}" if d == 0 else _f(d)
 
 
 def _cell(c: dict, key: str, fmt) -> str:
@@ -109,10 +119,10 @@ def _rough(rec: dict) -> list[str]:
     out = [head, "| --- |" + " --- |" * (2 * len(ds) + 2)]
     for m, row in r["models"].items():
         cells = [_share(x) for x in row["known"]["share"]] + [_share(x) for x in row["unknown"]["share"]]
-        cells += [_f(row["known"]["largest_d"]), _f(row["unknown"]["largest_d"])]
+        cells += [_largest(row["known"]["largest_d"]), _largest(row["unknown"]["largest_d"])]
         out.append(f"| `{m}` | " + " | ".join(cells) + " |")
     b = r["baseline"]
-    cells = ["-"] * len(ds) + [_share(x) for x in b["share"]] + ["-", _f(b["largest_d"])]
+    cells = ["-"] * len(ds) + [_share(x) for x in b["share"]] + ["-", _largest(b["largest_d"])]
     out.append("| fixed angle (self-stable gait) | " + " | ".join(cells) + " |")
     return out
 
@@ -305,18 +315,37 @@ def rough_figure(rec: dict, path) -> Path:
 
     r = rec["rough"]
     ds = r["d"]
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True, constrained_layout=True)
+    models = list(r["models"])
+    colors = plt.get_cmap("tab20")(np.linspace(0.0, 1.0, 20))
+    markers = "osD^v<>ph*XP"
+    fig, axes = plt.subplots(1, 2, figsize=(11, 5.0), sharey=True)
     for ax, mode in zip(axes, ("known", "unknown"), strict=True):
-        for m, row in r["models"].items():
-            ax.plot(ds, [100 * x for x in row[mode]["share"]], "o-", label=m, lw=1.2, ms=4)
+        for k, m in enumerate(models):
+            exact = m == "exact"
+            ax.plot(
+                ds,
+                [100 * x for x in r["models"][m][mode]["share"]],
+                ls="--" if exact else "-",
+                marker="" if exact else markers[k % len(markers)],
+                color="k" if exact else colors[(2 * k) % 20 if k < 10 else (2 * k + 1) % 20],
+                label=m,
+                lw=1.0 if exact else 1.3,
+                ms=5,
+                zorder=3 if exact else 2,
+            )
         if mode == "unknown":
-            ax.plot(ds, [100 * x for x in r["baseline"]["share"]], "k--", label="fixed angle", lw=1.5)
+            ax.plot(
+                ds, [100 * x for x in r["baseline"]["share"]], ":", color="0.3", lw=2.0, label="fixed angle"
+            )
         ax.set_title(f"ground {mode} to the controller", fontsize=10)
         ax.set_xlabel("ground change per step, +- d l0")
         ax.grid(alpha=0.3)
+        ax.set_ylim(-3, 103)
     axes[0].set_ylabel(f"runs that do not fall [% of {r['runs']}]")
-    axes[1].legend(fontsize=7, ncol=2, loc="lower left")
+    handles, labels = axes[1].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=7, fontsize=8, frameon=False)
     fig.suptitle(f"Rough ground at 5 m/s, {r['steps']} steps per run", fontsize=11)
+    fig.tight_layout(rect=(0, 0.1, 1, 0.96))
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return Path(path)

@@ -214,7 +214,7 @@ class Run:
                 err_v = math.nan
             plan = r["plan_status"] + ("*" if r["bottom_status"] not in ("-",) else "")
             lines.append(
-                f"{r['step']:4d} {r['ground'] + 0.0:7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
+                f"{r['step']:4d} {_zero(r['ground']):7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
                 f"{r['target_height']:9.4f} {r['target_speed']:9.4f} {r['touchdown_angle']:8.4f} "
                 f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_height']:8.4f} {r['next_speed']:8.4f} "
                 f"{err_h:9.3f} {err_v:8.3f} {r['plant_status']:>16} {r['step_length']:7.3f} "
@@ -247,6 +247,11 @@ class Run:
         from .motion import path
 
         return path(self, samples)
+
+
+def _zero(x: float) -> float:
+    """x, with the round-off of a sum of ground changes back to 0 (never printed as -0.000)."""
+    return 0.0 if abs(x) < 5e-13 else x
 
 
 def _noise(sc: Scenario, runs: int, seeds) -> np.ndarray:
