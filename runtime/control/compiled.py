@@ -121,9 +121,10 @@ class Kernels:
     d apex_height / d wrt_j into ``d[1 + n_out + j]`` and d apex_speed / d wrt_j into
     ``d[1 + n_out + n_wrt + j]``. ``scalar`` and ``batch`` are the solver bound to them."""
 
-    def __init__(self, apex, jac, scalar, batch, n_args, n_out, n_wrt):
+    def __init__(self, apex, jac, scalar, batch, n_args, n_out, n_wrt, one=None):
         self.apex, self.jac, self.scalar, self.batch = apex, jac, scalar, batch
         self.n_args, self.n_out, self.n_wrt = n_args, n_out, n_wrt
+        self.one = one
 
     @property
     def width(self) -> int:
@@ -165,7 +166,7 @@ def kernels_for(call) -> Kernels:
     apex = njit(WRAPPER, error_model="numpy")(ns_a["apex"])
     jac = njit(WRAPPER, error_model="numpy")(ns_j["jac"])
     scalar, batch = _bind(apex, jac)
-    kernels = Kernels(apex, jac, scalar, batch, n_args, n_out, n_wrt)
+    kernels = Kernels(apex, jac, scalar, batch, n_args, n_out, n_wrt, one=_bind_one(apex, jac))
     _CACHE[key] = kernels
     return kernels
 
@@ -291,6 +292,26 @@ def _bind(apex, jac):
 _POOL = None
 
 
+def _bind_one(apex, jac):
+    """The scalar solve's fast entry: ``one(T, h, v, ground, angle, H, V, ints, floats, out)`` copies
+    the row template T and puts the apex, the ground, the starting angle and the targets at their
+    positions (``ints``) in compiled code (a deadbeat step's Python side is then a few checks)."""
+
+    @njit(error_model="numpy", nogil=True)
+    def one(T, h, v, gr, th, H, V, ints, floats, out):
+        a = T.copy()
+        a[ints[_I_POS]] = h
+        a[ints[_I_POS + 1]] = v
+        a[ints[_I_POS + 2]] = gr
+        a[ints[_I_POS + 3]] = th
+        a[ints[_I_NARGS]] = H
+        a[ints[_I_NARGS] + 1] = V
+        W = np.empty(N_WORK + 1 + ints[_I_NOUT] + 2 * ints[_I_NWRT])
+        solve_row(apex, jac, a, ints, floats, W, out)
+
+    return one
+
+
 def in_threads(rows, A, OUT, *shared) -> None:
     """``rows(A[chunk], *shared, OUT[chunk])`` over contiguous chunks of the rows, one per numba
     thread (``numba.get_num_threads()``), in Python threads (``rows`` releases the GIL)."""
@@ -319,11 +340,12 @@ def in_threads(rows, A, OUT, *shared) -> None:
 #: ints: n_out, n_wrt, output row of apex_height, of apex_speed, number of controls, their argument
 #: positions (3), their Jacobian columns (3), the k_d column (-1: none), max evaluations, broyden
 #: (0/1), scan points, the targeted components (2: 1 or 0), the kernel's argument count (the target
-#: height and speed follow the arguments in a row), the k_d argument's position (-1: none).
+#: height and speed follow the arguments in a row), the k_d argument's position (-1: none), the
+#: positions of the apex height, the apex speed, the ground and the touchdown angle.
 _I_NOUT, _I_NWRT, _I_OH, _I_OV, _I_NC = 0, 1, 2, 3, 4
 _I_ARG, _I_COL = 5, 8
-_I_KD, _I_MAXJ, _I_BROYDEN, _I_SCAN, _I_TGT, _I_NARGS, _I_KDARG = 11, 12, 13, 14, 15, 17, 18
-N_INTS = 19
+_I_KD, _I_MAXJ, _I_BROYDEN, _I_SCAN, _I_TGT, _I_NARGS, _I_KDARG, _I_POS = 11, 12, 13, 14, 15, 17, 18, 19
+N_INTS = 23
 #: floats: lower bounds (3), upper bounds (3), scales (3), residual weights (2), tol, the mass and
 #: g_f, the bounds of k_d (for the energy budget).
 _F_LO, _F_HI, _F_S, _F_W, _F_TOL, _F_M, _F_G = 0, 3, 6, 9, 11, 12, 13
@@ -332,7 +354,7 @@ N_FLOATS = 16
 
 INT_FIELDS = {"n_out": 0, "n_wrt": 1, "out_height": 2, "out_speed": 3, "n_controls": 4, "arg": 5, "col": 8}
 INT_FIELDS |= {"kd_col": 11, "max_evaluations": 12, "broyden": 13, "scan": 14, "targeted": 15, "n_args": 17}
-INT_FIELDS |= {"kd_arg": 18}
+INT_FIELDS |= {"kd_arg": 18, "positions": 19}  # positions: the apex height, speed, ground, angle
 FLOAT_FIELDS = {
     "lo": 0,
     "hi": 3,
@@ -421,13 +443,10 @@ def _solve_small(A, b, n):
 
 
 @njit(error_model="numpy")
-def _step(W, J, r, z, free, nc, mu, delta):
-    """The damped Gauss-Newton step over the free controls (module docstring) into delta; False
-    when the linear system is singular. Rows of J for untargeted components are zero and dropped."""
-    A = W[_W_A : _W_A + 9]
-    b = W[_W_B : _W_B + 3]
-    rows = W[_W_ROWS : _W_ROWS + 2]
-    cols = W[_W_COLS : _W_COLS + 3]
+def _step(A, b, rows, cols, J, r, z, free, nc, mu, delta):
+    """The damped Gauss-Newton step over the free controls (module docstring) into delta, with the
+    work vectors A (9), b (3), rows (2), cols (3); False when the linear system is singular. Rows of
+    J for untargeted components are zero and dropped."""
     m = 0
     for i in range(2):
         nz = r[i] != 0.0
@@ -537,6 +556,10 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
     delta = W[_W_DELTA : _W_DELTA + 3]
     zt = W[_W_ZT : _W_ZT + 3]
     free = W[_W_FREE : _W_FREE + 3]
+    A = W[_W_A : _W_A + 9]
+    b = W[_W_B : _W_B + 3]
+    rows = W[_W_ROWS : _W_ROWS + 2]
+    cols = W[_W_COLS : _W_COLS + 3]
     for i in range(6):
         J[i] = 0.0
     W[_W_STALL] = 1.0
@@ -557,7 +580,7 @@ def _gauss_newton(apex, jac, a, z, u0, zlo, zhi, ints, floats, W, d, out, G, max
             free[j] = 0.0 if held else 1.0
             scale += J[j] ** 2 + J[3 + j] ** 2
         mu = 0.0 if damping == 0 else scale * 1e-3 * 100.0 ** (damping - 1)
-        if not _step(W, J, r, z, free, nc, mu, delta):
+        if not _step(A, b, rows, cols, J, r, z, free, nc, mu, delta):
             if damping < _DAMPING_ROUNDS:
                 damping += 1
                 continue

@@ -132,6 +132,7 @@ def default_angle(params: SlipParams, apex_speed, k_c: float | None = None):
 
 
 _SIN1 = math.sin(1.0)
+_HALF_PI = 0.5 * math.pi
 
 
 class DeadbeatResult:
@@ -148,10 +149,11 @@ class DeadbeatResult:
     done (``jacobians``, ``evaluations``, ``iterations``).
     """
 
-    __slots__ = ("_ctl", "_out", "_a", "_apex", "_targets")
+    __slots__ = ("_ctl", "_out", "_a", "_apex", "_targets", "_angle")
 
-    def __init__(self, ctl: Deadbeat, out: np.ndarray, a: np.ndarray, apex, targets):
+    def __init__(self, ctl: Deadbeat, out: np.ndarray, a: np.ndarray, apex, targets, angle: float):
         self._ctl, self._out, self._a, self._apex, self._targets = ctl, out, a, apex, targets
+        self._angle = angle  # the starting (or, not a control, the fixed) touchdown angle
 
     # the solve
     @property
@@ -196,7 +198,9 @@ class DeadbeatResult:
         ctl = self._ctl
         if name in ctl.controls:
             return float(self._out[5 + ctl.controls.index(name)])
-        return float(self._a[ctl._pos[CONTROLS[name]]])  # not a control: the fixed value
+        if name == "touchdown_angle":
+            return self._angle  # not a control: the fixed value
+        return float(self._a[ctl._pos[CONTROLS[name]]])
 
     @property
     def touchdown_angle(self) -> float:
@@ -509,6 +513,8 @@ class Deadbeat:
             floats[ff["scale"] + j] = ANGLE_SCALE if c == "touchdown_angle" else params.k_c
         ints[fi["kd_col"]] = self.wrt.index("k_d") if "k_d" in self.wrt else -1
         ints[fi["kd_arg"]] = self._pos["k_d"] if "k_d" in self._pos else -1
+        for j, arg in enumerate(("b_y_apex", "b_xd_apex", "ground", "q_th_td")):
+            ints[fi["positions"] + j] = self._pos[arg]
         ints[fi["max_evaluations"]] = max_evaluations
         ints[fi["broyden"]] = int(jacobian == "broyden")
         ints[fi["scan"]] = scan
@@ -527,6 +533,7 @@ class Deadbeat:
         self._clip = tuple((self._pos[CONTROLS[c]], *self.bounds[c]) for c in self.controls)
         self._ints_by = {t: self._ints_for(t) for t in ((1, 1), (1, 0), (0, 1))}
         self._width = self._kernels.width
+        self._one = self._kernels.one
         kd = "k_d" if "k_d" in self.wrt else "k"
         self._kd_bounds = self.bounds.get(kd, tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
         self._angle_alone = "touchdown_angle" in self.controls and len(self.controls) == 1
@@ -542,11 +549,9 @@ class Deadbeat:
             return 0, 1
         return int(th), int(tv)
 
-    def _start(self, a: np.ndarray, v: float, angle, k_c, k_d, k) -> None:
-        """The starting controls (and fixed values) into the row ``a``, each within its bounds."""
-        a[self._i_th] = default_angle(self.params, v) if angle is None else _finite("touchdown_angle", angle)
-        if abs(a[self._i_th]) >= 0.5 * math.pi:
-            leg_angle("touchdown_angle", a[self._i_th])
+    def _template_with(self, k_c, k_d, k) -> np.ndarray:
+        """The row template with given starting (or fixed) stiffness values."""
+        T = self._template
         for key, value in (("k_c", k_c), ("k_d", k_d), ("k", k)):
             if value is not None:
                 if key not in self._pos:
@@ -554,10 +559,9 @@ class Deadbeat:
                 x = _finite(key, value)
                 if x <= 0.0:
                     raise ValueError(f"{key} must be positive, got {num(x)}")
-                a[self._pos[key]] = x
-        for pos, lo, hi in self._clip:  # a start outside its bounds: the nearest bound
-            x = a[pos]
-            a[pos] = lo if x < lo else (hi if x > hi else x)
+                T = T.copy() if T is self._template else T
+                T[self._pos[key]] = x
+        return T
 
     def _ints_for(self, tgt: tuple[int, int]) -> np.ndarray:
         ints = self._ints.copy()
@@ -589,16 +593,19 @@ class Deadbeat:
         tgt = self._targeted(target_height, target_speed)
         H = _finite("target_height", target_height) if tgt[0] else math.nan
         V = _finite("target_speed", target_speed) if tgt[1] else math.nan
-        a = self._template.copy()
-        a[self._i_h] = h
-        a[self._i_v] = v
-        a[self._i_gr] = gr
-        self._start(a, v, touchdown_angle, k_c, k_d, k)
-        a[-2] = H if tgt[0] else 0.0
-        a[-1] = V if tgt[1] else 0.0
+        th = (
+            default_angle(self.params, v)
+            if touchdown_angle is None
+            else _finite("touchdown_angle", touchdown_angle)
+        )
+        if not -_HALF_PI < th < _HALF_PI:
+            leg_angle("touchdown_angle", th)
+        T = self._template if k_c is None and k_d is None and k is None else self._template_with(k_c, k_d, k)
         out = np.empty(self._width)
-        self._kernels.scalar(a, self._ints_by[tgt], self._floats, out)
-        return DeadbeatResult(self, out, a, (h, v, gr), (H, V))
+        self._one(
+            T, h, v, gr, th, H if tgt[0] else 0.0, V if tgt[1] else 0.0, self._ints_by[tgt], self._floats, out
+        )
+        return DeadbeatResult(self, out, T, (h, v, gr), (H, V), th)
 
     def plan_batch(
         self, apex_height, apex_speed, target_height, target_speed, *, ground=0.0, touchdown_angle=None

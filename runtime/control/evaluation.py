@@ -299,8 +299,14 @@ def cost(names, bar=None) -> dict:
             ran
         ]
         gr = gr[:COST_PROBLEMS]
-        th = batch["touchdown_angle"][ran][:COST_PROBLEMS]
-        from .deadbeat import Deadbeat
+        # the start a run gives each solve: the previous step's angle (the first step's default)
+        from .deadbeat import Deadbeat, default_angle
+
+        previous = np.concatenate(
+            [np.full((batch.runs, 1), math.nan), batch["touchdown_angle"][:, :-1]], axis=1
+        )
+        first = default_angle(sc.params, batch["measured_speed"])
+        th = np.where(np.isfinite(previous), previous, first)[ran][:COST_PROBLEMS]
 
         constant = "constant_stiffness" in get(name).requires
         ctl = Deadbeat(
