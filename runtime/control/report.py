@@ -15,10 +15,11 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.index import get
 from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
 
-__all__ = ["render", "rounded", "write", "TARGETS"]
+__all__ = ["render", "rounded", "summary", "write", "TARGETS"]
 
 #: The issue's targets, checked against the record.
 TARGETS = {
@@ -203,6 +204,55 @@ def verdicts(rec: dict) -> list[tuple[str, bool, str]]:
                 )
             )
     return out
+
+
+def summary(rec: dict) -> str:
+    """The README's paragraph of measured numbers (tests/test_control_runs.py checks the README
+    holds it, so no number there is typed by hand)."""
+    tc, r, cost = rec["target_check"], rec["rough"], rec["cost"]["models"]
+    ds, models = r["d"], r["models"]
+    at = ds.index(MISMATCH_D)
+    constant = [n for n in models if n in cost and "constant_stiffness" in get(n).requires]
+    kept = [100.0 * models[n]["known"]["share"][at] for n in constant]
+    it, two, base = models["iterative"], models["iterative, two-stage"], r["baseline"]
+    both = [rec["mismatch"][f"mass +{p}%"]["iterative"] for p in (5, 10)]
+    geyer, iterative = cost["geyer"]["scalar_us_median"], cost["iterative"]["scalar_us_median"]
+    no_fall = [
+        n for n in ("iterative", "exact") if models[n]["known"]["largest_d"] == it["known"]["largest_d"]
+    ]
+    two_all = 0.0  # the largest d of the grid up to which no two-stage run falls, ground unknown
+    for d, share in zip(ds, two["unknown"]["share"], strict=True):
+        if share < 1.0:
+            break
+        two_all = d
+    return (
+        f"Measured (docs/control.md, .json and figures, written by `slipmaps run --evaluate` in about "
+        f"{round(rec['seconds'] / 60.0):.0f} minutes; tests/test_control_runs.py re-runs its small version): "
+        f"with `iterative` as the model the exact plant's next apex is within "
+        f"{_f(1000.0 * tc['height_error_max'], 2)} mm and {_f(100.0 * tc['speed_error_max'], 2)} % of the "
+        f"target speed on every step of the six scenarios ({tc['within']} of {tc['steps']} steps where the "
+        f"exact map as the model reaches its target; target 1 mm and 0.1 %). Rough ground at "
+        f"{r['speed']:g} m/s, {r['runs']} seeded runs of {r['steps']} steps, the next {r['known_steps']} "
+        f"grounds known: no run falls up to ground changes of +-{_f(it['known']['largest_d'])} l0 per step "
+        f"with {' or '.join(f'`{n}`' for n in no_fall)} as the model (target: 0.3, Wu and Geyer's figure), "
+        f"`geyer-vs` to {_f(models['geyer-vs']['known']['largest_d'])}; the constant-stiffness maps, which "
+        f"control the angle alone, keep {min(kept):.0f}-{max(kept):.0f} % of the runs at {MISMATCH_D:g}. "
+        f"With the ground unknown (the controller assumes flat ground, its apex 1 + d high) the one-stage "
+        f"controller keeps {_share(it['unknown']['share'][0])} at {ds[0]:g} and "
+        f"{_share(it['unknown']['share'][at])} at {MISMATCH_D:g}; the two-stage form, k_d chosen again at "
+        f"the bottom where the ground is known, keeps every run up to {two_all:g}; the fixed-angle "
+        f"self-stable baseline {_share(base['share'][0])} at {ds[0]:g}. A plant 5 % (10 %) heavier than the "
+        f"model costs `iterative` {_mm(both[0]['height_error_mean'])} ({_mm(both[1]['height_error_mean'])}) "
+        f"mm of mean height error and up to {_pct(both[0]['speed_error_max'])} % "
+        f"({_pct(both[1]['speed_error_max'])} %) of the speed, and keeps "
+        f"{_share(both[0]['rough_share'])} ({_share(both[1]['rough_share'])}) of the rough-ground runs at "
+        f"d = {MISMATCH_D:g}. Cost per step (the scalar `Deadbeat.plan`, warm-started from the previous "
+        f"step's angle, median on a shared 2-core machine): `geyer` {_f(geyer)} us (target 5 us: "
+        f"{'met' if geyer < 5.0 else 'not met'}), `iterative` {_f(iterative)} us (target 50 us: "
+        f"{'met' if iterative < 50.0 else 'not met'}), `exact` {_f(cost['exact']['scalar_us_median'])} us; "
+        f"{_f(cost['iterative']['jacobians_mean'])} generated Jacobians and "
+        f"{_f(cost['iterative']['evaluations_mean'])} map evaluations per `iterative` solve."
+    )
 
 
 def render(rec: dict) -> str:
