@@ -6,14 +6,14 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
+#   geyer_vs.py sha256:7cd5386e20978657
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a
 #   gravity_type3.py sha256:e58a1a317b1fc866
 #   gravity_type4.py sha256:6bb6498e457c9b35
 #   gravity_type5.py sha256:70d4f36f9336d294
-#   iterative.py sha256:f9c260a6e0845ad9
+#   iterative.py sha256:5cbc67896649dba2
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 

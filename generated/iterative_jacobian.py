@@ -7,7 +7,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:ac871132277105be
 #   geyer_jacobian.py sha256:12a6675a37ce361d
-#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
+#   geyer_vs_jacobian.py sha256:3d14aa61ba4110a9
 #   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
 #   gravity_type1_jacobian.py sha256:1184a15c09105242
 #   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d

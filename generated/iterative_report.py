@@ -1,13 +1,13 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind_report.py
+# Source:    derive/maps/iterative_report.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:c042f0c9cf6a9745
 #   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
+#   geyer_vs.py sha256:7cd5386e20978657
 #   gravity_type0.py sha256:9ad1b5e5d037404f
 #   gravity_type1.py sha256:8df85c0847f1fb50
 #   gravity_type2.py sha256:089ac77e92240f9a

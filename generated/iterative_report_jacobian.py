@@ -1,13 +1,13 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind_report.py
+# Source:    derive/maps/iterative_report.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:ac871132277105be
 #   geyer_jacobian.py sha256:12a6675a37ce361d
-#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
+#   geyer_vs_jacobian.py sha256:3d14aa61ba4110a9
 #   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
 #   gravity_type1_jacobian.py sha256:1184a15c09105242
 #   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d

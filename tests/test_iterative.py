@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.derive.maps import quadrature, schwind
+from slipmaps.derive.maps import quadrature_helpers, schwind
 from slipmaps.derive.symbols import k_c, k_d
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api import index
@@ -23,7 +23,7 @@ def _apex_points():
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 6])
 def test_eq41_gauss_rule_in_u_integrates_polynomials(n):
     """The n-node rule on [0, 1] is exact to degree 2n - 1; the collocation matrices to degree n - 1."""
-    r = quadrature.rule(n)
+    r = quadrature_helpers.rule(n)
     u = np.array(r.nodes, dtype=float)
     for deg in range(2 * n):
         assert abs(np.dot(np.array(r.w, dtype=float), u**deg) - 1 / (deg + 1)) < 1e-15
@@ -35,7 +35,7 @@ def test_eq41_gauss_rule_in_u_integrates_polynomials(n):
 
 def test_eq41_one_node_is_the_mean_value_point():
     """One node: u = 1/2, weight 1, i.e. sigma = q_r_b + (x - q_r_b)/4 = 3/4 q_r_b + 1/4 x of (41)."""
-    r = quadrature.rule(1)
+    r = quadrature_helpers.rule(1)
     assert float(r.nodes[0]) == 0.5 and float(r.w[0]) == 1.0
 
 

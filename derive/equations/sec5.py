@@ -5,7 +5,7 @@ Section 5.1 (eqs 78-113) is Geyer's map of section 3.1 split at the bottom: apex
 with k_c (subscript ab), bottom to apex (90)-(105) with k_d (subscript ba), the energy jump (97)-(98)
 and the continuity constraint (106)-(111), then the piecewise stance map (112)-(113). Its checks
 compare the printed displays with :mod:`slipmaps.derive.maps.geyer` (the half's parameters put into
-(7), (11)-(14), (17)-(19)) and :mod:`slipmaps.derive.maps.variable` (the half solutions, the jump,
+(7), (11)-(14), (17)-(19)) and :mod:`slipmaps.derive.maps.geyer_vs` (the half solutions, the jump,
 the constraint, the map's second half). Rows 88, 112, 113 and 152 carry no tag in the scan; their
 notes say how the number was assigned; (95) is a definition row for a number with no display.
 
@@ -16,10 +16,10 @@ section 3.2). Each half comes twice: with the mean-value rule of (38)-(40) (f th
 g = 1) and with the variant of (128)/(144) (f = 1/H^{-1}, the weight g = 1, 1/sigma^2, sigma
 integrated exactly). Each check compares a transcription of a printed display, typed as printed
 (errors included), with :mod:`slipmaps.derive.model.mechanics` (114, 115, 137) or
-:mod:`slipmaps.derive.maps.iterative` (the rest). The iterates are checked with the mean-value point
+:mod:`slipmaps.derive.maps.iterative_helpers` (the rest). The iterates are checked with the mean-value point
 xi_hat_r left as a symbol; the point itself is checked where it is printed, (123), (132) and (143).
 The bottom leg length (152)-(154) is checked against the energy (27) at a vertical bottom
-(:func:`~slipmaps.derive.maps.variable.bottom_quartic`) and Geyer's bottom (13).
+(:func:`~slipmaps.derive.maps.geyer_vs.bottom_quartic`) and Geyer's bottom (13).
 """
 
 from __future__ import annotations
@@ -30,8 +30,8 @@ from functools import cache
 import sympy as sp
 
 from ..ir import sym
-from ..maps import geyer, iterative, variable
-from ..maps.iterative import (
+from ..maps import geyer, geyer_vs, iterative_helpers
+from ..maps.iterative_helpers import (
     BOTTOM,
     H_INV,
     P_TH_N,
@@ -97,7 +97,9 @@ def _h_inv(energy, xi=XI):
 def _closed_form(expr, stiffness):
     """``expr`` with H_INV replaced by its closed form (33) for ``stiffness`` and constant iterates
     q_th_n = q_th, p_th_n = p_th (the symbols)."""
-    h_inv = iterative.radial_momentum(stiffness, _e).subs({q_r: _x, q_th: _a, p_th: _b}, simultaneous=True)
+    h_inv = iterative_helpers.radial_momentum(stiffness, _e).subs(
+        {q_r: _x, q_th: _a, p_th: _b}, simultaneous=True
+    )
     expr = expr.replace(H_INV, sp.Lambda((_x, _a, _b, _e), h_inv))
     return expr.replace(Q_TH_N, sp.Lambda(_x, q_th)).replace(P_TH_N, sp.Lambda(_x, p_th))
 
@@ -131,7 +133,7 @@ def _units(expr, stiffness, energy):
 # Each half is Geyer's solution (11), (19) with its own stiffness: k_c from touchdown to the bottom
 # (subscript ab), k_d from the bottom to liftoff (subscript ba). The derivation is that of section
 # 3.1 (:mod:`slipmaps.derive.maps.geyer`) with the half's parameters, and :mod:`slipmaps.derive.maps.
-# variable` for what is new: the energy jump (97), the continuity constraint (111), the bottom quartic
+# geyer_vs` for what is new: the energy jump (97), the continuity constraint (111), the bottom quartic
 # (153).
 
 N = sp.Symbol("n", integer=True, nonnegative=True)  # the n in N of (80)-(81), (89), (93)-(96)
@@ -139,7 +141,7 @@ eps_ab, eps_ba = sp.symbols("epsilon_ab epsilon_ba", real=True)
 w_ab, w_ba = sp.symbols("omega_ab omega_ba", real=True)  # omega_ab, omega_ba = p_th/(m l0^2)
 w0_ab, w0_ba = sp.symbols("omega0_ab omega0_ba", positive=True)
 wh_ab, wh_ba = sp.symbols("omega0_hat_ab omega0_hat_ba", positive=True)
-# The names and assumptions of variable.continuity_constraint()'s symbols, so that they compare equal.
+# The names and assumptions of geyer_vs.continuity_constraint()'s symbols, so that they compare equal.
 a_ab, b_ab, a_ba, b_ba = sp.symbols("a_ab b_ab a_ba b_ba", real=True)
 t_b_ab, t_b_ba, t_lo = sp.symbols("t_b_ab t_b_ba t_lo", real=True)
 
@@ -164,9 +166,9 @@ class _Half:
 
     @property
     def derived(self) -> dict:
-        """This half's omega0_hat, a, b^2 from :func:`variable.half_solution` (omega0^2 = stiffness/m),
+        """This half's omega0_hat, a, b^2 from :func:`geyer_vs.half_solution` (omega0^2 = stiffness/m),
         in its epsilon and omega."""
-        sol = variable.half_solution(self.stiffness)
+        sol = geyer_vs.half_solution(self.stiffness)
         return {key: value.subs({epsilon: self.eps, omega: self.omega}) for key, value in sol.items()}
 
     @property
@@ -345,7 +347,7 @@ def _printed_b_forms(half: _Half):
 
 
 def _check_half_parameters(keys, half: _Half) -> None:
-    """(85)-(88) / (102)-(105) as printed against :func:`variable.half_solution` of the half's stiffness.
+    """(85)-(88) / (102)-(105) as printed against :func:`geyer_vs.half_solution` of the half's stiffness.
 
     The printed forms are in the half's omega0 (84)/(101), omega0_hat and a; those are replaced by
     their printed definitions, omega0 = sqrt(stiffness/m), and the derived omega0_hat, a."""
@@ -437,8 +439,8 @@ def _printed_eq91_92():
 
 
 def _map_second_half(expr_index: int):
-    """variable.py's second half (q_r or q_th) at time t, bottom at t_b_ab, in this module's symbols."""
-    phase = variable.BOTTOM_PHASE + wh_ba * (t - t_b_ab)
+    """geyer_vs.py's second half (q_r or q_th) at time t, bottom at t_b_ab, in this module's symbols."""
+    phase = geyer_vs.BOTTOM_PHASE + wh_ba * (t - t_b_ab)
     names = {
         sym("ba_omega"): w_ba,
         sym("ba_omega0_hat"): wh_ba,
@@ -446,7 +448,7 @@ def _map_second_half(expr_index: int):
         sym("ba_b"): b_ba,
         sym("bottom_q_th"): q_th_b,
     }
-    return variable._second_state(phase)[expr_index].subs(names)
+    return geyer_vs.second_state(phase)[expr_index].subs(names)
 
 
 @equation(
@@ -563,13 +565,13 @@ def check_eq96() -> None:
     "97",
     "E_additional = (k_d - k_c)(l0 - q_r_b)^2/2",
     "verified",
-    "The total energy (27) with k_d minus with k_c at the same state (variable.energy_jump): only "
+    "The total energy (27) with k_d minus with k_c at the same state (geyer_vs.energy_jump): only "
     "the spring term changes, whatever q_rd, q_th, q_thd.",
 )
 def check_eq97() -> None:
     """Printed: E_additional = 1/2 (k_d - k_c)(l0 - q_r_b)^2."""
     printed = (k_d - k_c) * (l0 - q_r_b) ** 2 / 2
-    jump = variable.energy_jump()
+    jump = geyer_vs.energy_jump()
     expect(jump.free_symbols == {k_c, k_d, l0, q_r}, "eq 97 the jump depends on the leg length only")
     expect_zero(printed - jump.subs(q_r, q_r_b), "eq 97 printed E_additional equals the jump of (27)")
 
@@ -727,7 +729,7 @@ def check_eq108_109() -> None:
     "when E_ab is the energy the first half conserves (Geyer's (8), not the total energy (27) the "
     "text names): then (97)-(99) give epsilon_ba = epsilon_ab + (k_d - k_c)/m rho_b^2, the bottom "
     "rho_b = a_ab - b_ab is a root of the second half's quadratic (9), whose roots are a_ba -+ b_ba "
-    "(variable.consistent_bottom_is_a_root), and (110) holds when it is the lower one.",
+    "(geyer_vs.consistent_bottom_is_a_root), and (110) holds when it is the lower one.",
 )
 def check_eq110() -> None:
     """Printed: a_ab - b_ab = a_ba - b_ba."""
@@ -737,11 +739,11 @@ def check_eq110() -> None:
     expect_zero((left - right) - l0 * printed, "eq 110 (108) at (81), (93) is l0 times (110)")
     rate_left, rate_right = (side.subs(bottoms).subs(w_ba, w_ab) for side in _printed_eq109())
     expect_zero((rate_left - rate_right) + 2 * w_ab * printed, "eq 110 (109) at (81), (93) is -2 omega (110)")
-    expect_zero(printed.subs(a_ba, variable.continuity_constraint()), "eq 110 holds at (111)")
+    expect_zero(printed.subs(a_ba, geyer_vs.continuity_constraint()), "eq 110 holds at (111)")
     # The energy of the first half: the bottom is a root of the second half's quadratic.
-    expect_zero(variable.consistent_bottom_is_a_root(), "eq 110 the bottom solves the second half's (9)")
+    expect_zero(geyer_vs.consistent_bottom_is_a_root(), "eq 110 the bottom solves the second half's (9)")
     rho_b = sp.Symbol("rho_b", real=True)
-    jump = variable.energy_jump().subs(q_r, l0 * (1 + rho_b))
+    jump = geyer_vs.energy_jump().subs(q_r, l0 * (1 + rho_b))
     expect_zero(2 * jump / (m * l0**2) - (k_d - k_c) / m * rho_b**2, "eq 110 (97)-(99): the jump in epsilon")
     lam_, mu_, nu_ = (
         c.subs({omega0: sp.sqrt(k_d / m), epsilon: eps_ba, omega: w_ba}) for c in geyer.radial_quadratic()
@@ -758,14 +760,14 @@ def check_eq110() -> None:
     "111",
     "a_ba = a_ab - b_ab + b_ba",
     "verified",
-    "(110) solved for a_ba; variable.continuity_constraint solves (108)-(109) at (81), (93). It replaces "
+    "(110) solved for a_ba; geyer_vs.continuity_constraint solves (108)-(109) at (81), (93). It replaces "
     "(103): the second half then no longer solves its own (9) (the text's 'invariant under small shift').",
 )
 def check_eq111() -> None:
     """Printed: a_ba = a_ab - b_ab + b_ba."""
     printed = a_ab - b_ab + b_ba
     expect_zero(
-        printed - variable.continuity_constraint(), "eq 111 printed a_ba solves (108)-(109) at the bottoms"
+        printed - geyer_vs.continuity_constraint(), "eq 111 printed a_ba solves (108)-(109) at the bottoms"
     )
     expect_nonzero(printed - BA.derived["a"], "eq 111 differs from (103) in general")
 
@@ -822,7 +824,7 @@ def check_eq112_113() -> None:
     bottoms = {t_b_ab: _printed_eq81(), t_b_ba: _printed_eq93()}
     jump = (r2 - r1).subs(t, t_b_ab).subs(bottoms)
     expect_zero(jump - l0 * ((a_ba - b_ba) - (a_ab - b_ab)), "eq 112 the jump at t_b_ab is l0 times (110)")
-    expect_zero(jump.subs(a_ba, variable.continuity_constraint()), "eq 112 continuous at t_b_ab under (111)")
+    expect_zero(jump.subs(a_ba, geyer_vs.continuity_constraint()), "eq 112 continuous at t_b_ab under (111)")
     expect_zero(th1 - _printed_eq79().subs(omega, w_ab), "eq 113 first piece is (79)")
     expect_zero(th2 - _printed_eq91_92().subs(omega, w_ba), "eq 113 second piece is (91)-(92)")
     expect_zero(th1 - _derived_angle(AB, q_th_td, t_td), "eq 113 first piece is (19) with the ab parameters")
@@ -881,7 +883,7 @@ def check_eq116_118() -> None:
     printed = (m / p_r, p_th / (q_r**2 * p_r), m**2 * g_s * q_r * sp.sin(q_th) / p_r)
     _expect_rows_zero(
         printed,
-        iterative.leg_length_derivatives(k_c),
+        iterative_helpers.leg_length_derivatives(k_c),
         "eqs 116-118 printed rates equal the rates of (115) divided by dq_r/dt = p_r/m",
     )
 
@@ -904,7 +906,7 @@ def check_eq119() -> None:
     corrected = -sp.sqrt(
         2 * m * (E_ab - k_c / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
     )
-    derived = iterative.radial_momentum(k_c, E_ab, -1)
+    derived = iterative_helpers.radial_momentum(k_c, E_ab, -1)
     hamiltonian = mechanics.hamiltonian(k_c)
     # Both roots are negative: they differ exactly when their squares do.
     expect_zero(
@@ -970,21 +972,23 @@ def _check_compression_point(key: str, weighted: bool) -> None:
     printed = _printed_compression_point()
     variant = "f = 1/H^{-1}, g = 1, 1/sigma^2, sigma" if weighted else "f = integrand, g = 1"
     # Touchdown: H^{-1} = |p_r_td| > 0, the integrands are regular (r = 1, s = 0): (35) gives 1/2.
-    exponents = iterative.integrand_exponents(k_c, "touchdown")  # order of the first nonzero Taylor term
+    exponents = iterative_helpers.integrand_exponents(
+        k_c, "touchdown"
+    )  # order of the first nonzero Taylor term
     for integral in ("38", "39", "40"):
         expect_zero(
             exponents[integral] - 1, f"eq {key} integrand of ({integral}) - its touchdown value ~ delta^1"
         )
-    for integral, fraction in iterative.mean_value_fractions(k_c, "touchdown", weighted).items():
+    for integral, fraction in iterative_helpers.mean_value_fractions(k_c, "touchdown", weighted).items():
         expect_zero(fraction - HALF, f"eq {key} (35) at touchdown ({variant}) gives 1/2 for ({integral})")
     expect_nonzero(
         (printed - q_r_td) / (q_r - q_r_td) - HALF,
         f"eq {key} printed fraction from touchdown is not (35)'s 1/2",
     )
     # Bottom: H^{-1} ~ (sigma - q_r_b)^(1/2), the integrands ~ (sigma - q_r_b)^(-1/2): 1/4 from the bottom.
-    for integral, fraction in iterative.mean_value_fractions(k_c, "bottom", weighted).items():
+    for integral, fraction in iterative_helpers.mean_value_fractions(k_c, "bottom", weighted).items():
         expect_zero(fraction - QUARTER, f"eq {key} (35) at the bottom ({variant}) gives 1/4 for ({integral})")
-    whole = iterative.mean_value_point(k_c, q_r_td)  # the point of int_{q_r_td}^{q_r_b}
+    whole = iterative_helpers.mean_value_point(k_c, q_r_td)  # the point of int_{q_r_td}^{q_r_b}
     corrected = sp.Rational(3, 4) * q_r_b + QUARTER * q_r_td
     expect_zero(
         corrected - whole, f"eq {key} corrected xi of the whole half equals q_r_b + 1/4 (q_r_td - q_r_b)"
@@ -1004,7 +1008,7 @@ def _check_compression_point(key: str, weighted: bool) -> None:
     # 4/sqrt(15) sqrt(m/k_c) at the printed one.
     amplitude, u = sp.symbols("A u", positive=True)
     spring = {q_th: 0, p_th: 0, g_s: 0, E_ab: k_c * amplitude**2 / 2}
-    h_inv = iterative.radial_momentum(k_c, E_ab).subs(spring)
+    h_inv = iterative_helpers.radial_momentum(k_c, E_ab).subs(spring)
     expect_zero(
         (h_inv**2).subs(q_r, l0 - amplitude * u) - m * k_c * amplitude**2 * (1 - u**2),
         f"eq {key} spring: H^{{-1}} = sqrt(m k_c) A sqrt(1 - u^2) at sigma = l0 - A u",
@@ -1019,16 +1023,16 @@ def _check_compression_point(key: str, weighted: bool) -> None:
         square = sp.factor((h_inv**2).subs(q_r, xi.subs(limits)).subs(l0, bottom + amplitude))
         time = m / sp.sqrt(square) * amplitude  # (38) over the whole half: m/H^{-1}(xi) (q_r_td - q_r_b)
         expect_zero(time - value * sp.sqrt(m / k_c), f"eq {key} spring: the rule at the {name} xi")
-    # The corrected iterate as a function of q_r (iterative.compression_step): the difference of two
+    # The corrected iterate as a function of q_r (iterative_helpers.compression_step): the difference of two
     # integrals anchored at the bottom. It starts at the touchdown state, reaches the bottom with the
     # whole-half point, and is exact on the leading term for every q_r; the printed one is not.
-    step = iterative.compression_step(k_c, E_ab, weighted)
+    step = iterative_helpers.compression_step(k_c, E_ab, weighted)
     _expect_rows_zero(
         [row.subs(q_r, q_r_td) for row in step],
         TOUCHDOWN[1:],
         f"eq {key} corrected iterate equals the touchdown state at q_r = q_r_td",
     )
-    whole_rule = iterative.iteration_step(k_c, whole, -1, TOUCHDOWN, E_ab, weighted)
+    whole_rule = iterative_helpers.iteration_step(k_c, whole, -1, TOUCHDOWN, E_ab, weighted)
     _expect_rows_zero(
         [row.subs(q_r, q_r_b) for row in step],
         [row.subs(q_r, q_r_b) for row in whole_rule],
@@ -1036,7 +1040,7 @@ def _check_compression_point(key: str, weighted: bool) -> None:
     )
     rule, exact = _leading_term_time(step[0])
     expect_zero(rule - exact, f"eq {key} corrected iterate reproduces the leading-term time integral")
-    printed_step = iterative.iteration_step(k_c, printed, -1, TOUCHDOWN, E_ab, weighted)
+    printed_step = iterative_helpers.iteration_step(k_c, printed, -1, TOUCHDOWN, E_ab, weighted)
     rule, exact = _leading_term_time(printed_step[0])
     expect_nonzero(rule - exact, f"eq {key} printed iterate misses the leading-term time integral")
 
@@ -1103,7 +1107,7 @@ def check_eq124_126() -> None:
     (125) q_th_(n+1)(q_r) = q_th_td - p_th_n(xi)/(xi^2 H^{-1}_n) (q_r - q_r_td);
     (126) p_th_(n+1)(q_r) = p_th_td - m^2 g_s xi sin(q_th_n(xi))/H^{-1}_n (q_r - q_r_td).
     """
-    derived = iterative.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab)
+    derived = iterative_helpers.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab)
     _expect_rows_zero(
         _printed_compression_iterate(),
         derived,
@@ -1123,10 +1127,10 @@ def _check_momentum_at_xi(key: str, stiffness, energy, sign: int, point, sample)
         2 * m * (energy - stiffness / 2 * (l0 - XI) ** 2 - m * g_s * XI * sp.cos(Q_TH_NEXT(XI)))
         - P_TH_NEXT(XI) ** 2 / XI**2
     )
-    h_inv = iterative.radial_momentum(stiffness, energy, sign)
+    h_inv = iterative_helpers.radial_momentum(stiffness, energy, sign)
     at_xi = h_inv.subs({q_r: XI, q_th: Q_TH_NEXT(XI), p_th: P_TH_NEXT(XI)}, simultaneous=True)
     expect_zero(printed - at_xi, f"eq {key} printed p_r is p_r at the leg length xi on the (n+1)-th iterate")
-    derived = iterative.next_radial_momentum(stiffness, energy, sign)
+    derived = iterative_helpers.next_radial_momentum(stiffness, energy, sign)
     corrected = sign * sp.sqrt(
         2 * m * (energy - stiffness / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(Q_TH_NEXT(q_r)))
         - P_TH_NEXT(q_r) ** 2 / q_r**2
@@ -1190,7 +1194,10 @@ def _check_weighted_integrals(keys, start, energy, stiffness) -> None:
         1 / h_inv * (1 / start - 1 / q_r),
         1 / (2 * h_inv) * (q_r**2 - start**2),
     )
-    weights = [iterative.weight_split(rate)[1] for rate in iterative.leg_length_derivatives(stiffness)]
+    weights = [
+        iterative_helpers.weight_split(rate)[1]
+        for rate in iterative_helpers.leg_length_derivatives(stiffness)
+    ]
     expect_zero(weights[0] - 1, f"eq {keys[0]} the weight of (116)/(30) is g = 1")
     expect_zero(weights[1] - 1 / q_r**2, f"eq {keys[1]} the weight of (117)/(31) is g = 1/sigma^2")
     expect_zero(weights[2] - q_r, f"eq {keys[2]} the weight of (118)/(32) is g = sigma")
@@ -1244,7 +1251,7 @@ def check_eq132() -> None:
 
 @cache
 def _weighted_compression():
-    return iterative.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab, weighted=True)
+    return iterative_helpers.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab, weighted=True)
 
 
 @equation(
@@ -1370,7 +1377,8 @@ def check_eq138() -> None:
         2 * m * (E_ba - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
     )
     expect_zero(
-        printed - iterative.radial_momentum(k_d, E_ba), "eq 138 printed H_ba^{-1} is the root of H_ba = E_ba"
+        printed - iterative_helpers.radial_momentum(k_d, E_ba),
+        "eq 138 printed H_ba^{-1} is the root of H_ba = E_ba",
     )
     expect_zero(
         mechanics.hamiltonian(k_d).subs(p_r, printed) - E_ba, "eq 138 H_ba at the printed root is E_ba"
@@ -1400,7 +1408,7 @@ def check_eq139_141() -> None:
     )
     _expect_rows_zero(
         printed,
-        iterative.iteration_step(k_d, XI, 1, BOTTOM, E_ba),
+        iterative_helpers.iteration_step(k_d, XI, 1, BOTTOM, E_ba),
         "eqs 139-141 printed iterate equals (30)-(32) integrated from the bottom with (37) at xi",
     )
 
@@ -1435,13 +1443,14 @@ def check_eq142() -> None:
 def check_eq143() -> None:
     """Printed: xi_hat_x = 3/4 q_r_b + 1/4 q_r."""
     for weighted in (False, True):
-        for integral, fraction in iterative.mean_value_fractions(k_d, "bottom", weighted).items():
+        for integral, fraction in iterative_helpers.mean_value_fractions(k_d, "bottom", weighted).items():
             expect_zero(
                 fraction - QUARTER, f"eq 143 (35) at the bottom gives 1/4 for ({integral}), {weighted=}"
             )
     printed = _printed_decompression_point()
     expect_zero(
-        printed - iterative.mean_value_point(k_d), "eq 143 printed xi equals q_r_b + 1/4 (q_r - q_r_b)"
+        printed - iterative_helpers.mean_value_point(k_d),
+        "eq 143 printed xi equals q_r_b + 1/4 (q_r - q_r_b)",
     )
 
 
@@ -1481,7 +1490,7 @@ def check_eq145_147() -> None:
 
 @cache
 def _weighted_decompression():
-    return iterative.iteration_step(k_d, XI, 1, BOTTOM, E_ba, weighted=True)
+    return iterative_helpers.iteration_step(k_d, XI, 1, BOTTOM, E_ba, weighted=True)
 
 
 @equation(
@@ -1578,7 +1587,7 @@ def check_eq152() -> None:
         "eq 152 the printed rotational term is in 1/s",
     )
     expect_zero(
-        (q_r**2 * (corrected - E)).expand() - variable.bottom_quartic(),
+        (q_r**2 * (corrected - E)).expand() - geyer_vs.bottom_quartic(),
         "eq 152 (153)'s quartic is q_r^2 times the corrected form minus E",
     )
 
@@ -1587,7 +1596,7 @@ def check_eq152() -> None:
     "153",
     "bottom quartic in q_r",
     "verified",
-    "q_r^2 (E - E_ab) with E the energy (27) with k_c at a vertical bottom (variable.bottom_quartic); "
+    "q_r^2 (E - E_ab) with E the energy (27) with k_c at a vertical bottom (geyer_vs.bottom_quartic); "
     "follows from the corrected (152), not the printed one.",
 )
 def check_eq153() -> None:
@@ -1599,7 +1608,7 @@ def check_eq153() -> None:
         + p_th**2 / (2 * m)
     )
     expect_zero(
-        printed - variable.bottom_quartic().subs(E, E_ab), "eq 153 printed quartic equals q_r^2 (E - E_ab)"
+        printed - geyer_vs.bottom_quartic().subs(E, E_ab), "eq 153 printed quartic equals q_r^2 (E - E_ab)"
     )
     printed152 = p_th / (2 * m * q_r**2) + k_c / 2 * (l0 - q_r) ** 2 + m * g_s * q_r
     expect_nonzero(

@@ -11,7 +11,7 @@ converge to the exact stance (docs/iterative.md). Two changes make it converge:
    kinetic energy, so near the bottom its square root goes negative; the work form stays
    O(sigma - q_r_b) and positive whatever the iterate.
 2. **N-node Gauss-Legendre collocation in u = sqrt((sigma - q_r_b)/(x - q_r_b))**, whose one-node
-   rule is the report's mean value xi = 3/4 q_r_b + 1/4 x of (41) (module :mod:`.quadrature`). The
+   rule is the report's mean value xi = 3/4 q_r_b + 1/4 x of (41) (module :mod:`.quadrature_helpers`). The
    integrands of (30)-(32) in u are regular at the bottom; the iterates are the values at the
    nodes and each pass is a Picard step of Schwind and Koditschek's integral operator.
 
@@ -36,10 +36,10 @@ from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
 from . import geyer as _geyer
+from . import geyer_vs as _geyer_vs
 from . import gravity as _gravity
 from . import gravity_type5 as _gravity_type5
-from . import quadrature
-from . import variable as _variable
+from . import quadrature_helpers
 
 __all__ = ["NODE_COUNTS", "radial_force", "u_rates", "half_kernel", "MAPS", "HALVES"]
 
@@ -63,7 +63,7 @@ def u_rates(stiffness: sp.Symbol) -> tuple[sp.Basic, sp.Basic, sp.Basic]:
     2 m int_{q_r_b}^{sigma} F_r = 4 m D int_0^u F_r v dv = 4 m D Psi u^2, Psi the F_r-weighted
     mean (1/u^2) int_0^u F_r v dv). The result has no 1/u: regular at the bottom.
     """
-    from .iterative import leg_length_derivatives
+    from .iterative_helpers import leg_length_derivatives
 
     p_r = mechanics.p_r
     momentum = _U * sp.sqrt(4 * m * _D * _PSI)
@@ -79,7 +79,7 @@ def _dot(row, values) -> sp.Basic:
     return sp.Add(*(c * v for c, v in zip(row, values, strict=True)))
 
 
-def _evaluate(prefix: str, rule: quadrature.Rule, stiffness, base, D, Q, P) -> Stage:
+def _evaluate(prefix: str, rule: quadrature_helpers.Rule, stiffness, base, D, Q, P) -> Stage:
     """Node quantities of one pass: sigma, F_r, Psi and the u-rates (t, q_th, p_th) at each node."""
     F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
     rows, guards = [], []
@@ -102,7 +102,7 @@ def _evaluate(prefix: str, rule: quadrature.Rule, stiffness, base, D, Q, P) -> S
     )
 
 
-def _rates(prefix: str, rule: quadrature.Rule, name: str) -> list[sp.Symbol]:
+def _rates(prefix: str, rule: quadrature_helpers.Rule, name: str) -> list[sp.Symbol]:
     return [_n(prefix, name, j) for j in range(rule.n)]
 
 
@@ -115,7 +115,7 @@ def _bottom_quadratic(rule, prefix, stiffness, top, p_r_top, D) -> sp.Basic:
     return 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
 
 
-def _half_case(rule: quadrature.Rule, kind: str, a: dict) -> tuple[Step, ...]:
+def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step, ...]:
     """Steps of one half-stance with ``rule``; ``kind`` "compression" or "decompression"."""
     n = rule.n
     compress = kind == "compression"
@@ -252,7 +252,7 @@ def half_kernel(kind: str) -> Kernel:
             Guard(radial_force(k_d).subs(at_start) > 0, "RECOMPRESSION", "F_r > 0 at the bottom with k_d"),
         )
     )
-    cases = tuple((NODES.code(str(n)), _half_case(quadrature.rule(n), kind, a)) for n in NODE_COUNTS)
+    cases = tuple((NODES.code(str(n)), _half_case(quadrature_helpers.rule(n), kind, a)) for n in NODE_COUNTS)
     outputs = Group(
         "",
         (
@@ -280,7 +280,7 @@ def half_kernel(kind: str) -> Kernel:
 
 #: The maps a zeroth iterate can come from: every declared map that is not itself iterated from a
 #: zeroth iterate (tests/test_iterative.py checks that no such map is left out).
-ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS + _variable.MAPS
+ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS + _geyer_vs.MAPS
 #: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
 HELD = "held"
 

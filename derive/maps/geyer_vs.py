@@ -85,6 +85,7 @@ __all__ = [
     "energy_jump",
     "continuity_constraint",
     "consistent_bottom_is_a_root",
+    "second_state",
     "bottom_quartic",
     "quartic_kernel",
     "MAPS",
@@ -371,7 +372,7 @@ def _second_half(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Step, ...]:
     )
 
 
-def _second_state(phase: sp.Basic, n: _Names | None = None) -> tuple[sp.Basic, ...]:
+def second_state(phase: sp.Basic, n: _Names | None = None) -> tuple[sp.Basic, ...]:
     """(90)-(92) at ``phase`` of the second half (bottom at 3 pi/2): (11), (19), (17) (the rate with
     the half's mean momentum)."""
     n = n or _Names()
@@ -384,7 +385,7 @@ def _liftoff(inp: MapInputs, n: _Names, P2: sp.Basic) -> tuple[Stage, ...]:
     """The liftoff state; with a gravity correction its radial speed comes from the energy after the
     bottom (the touchdown's energy (27) plus the jump (97) at the bottom), as in the ``mean`` reading
     of section 4, since (11) knows nothing of the changed momentum."""
-    state = _second_state(n.ba("phase_lo"), n)
+    state = second_state(n.ba("phase_lo"), n)
     trig = {
         sp.sin(n.ba("phase_lo")): n.ba("s_lo"),
         sp.cos(n.ba("phase_lo")): sp.sqrt(1 - n.ba("s_lo") ** 2),
@@ -503,7 +504,7 @@ def _build(inp: MapInputs) -> MapBuild:
         first = geyer.state_kernel()
         n = _Names()
         ab = {x: n.ab(x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
-        second = _second_state(BOTTOM_PHASE + n.ba("omega0_hat") * (time - n("t_bottom")))
+        second = second_state(BOTTOM_PHASE + n.ba("omega0_hat") * (time - n("t_bottom")))
         t_b, t_s = n("t_bottom"), n("t_stance")
         rates = (
             (sym("p_td") + P1 * time / t_b) / (m * sym("c_q_r") ** 2),

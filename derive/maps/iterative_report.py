@@ -41,7 +41,7 @@ Zeroth iterate of a half: linear in u = sqrt((sigma - q_r_b)/(x_far - q_r_b)) be
 :mod:`.schwind`: Geyer et al.'s map (section 3.1, with k_c) or the held touchdown state.
 
 Not done: the compression half anchored at the bottom (the corrected (124)-(126) of
-:func:`.iterative.compression_step`, points 3/4 q_r_b + 1/4 x). There the bottom values themselves
+:func:`.iterative_helpers.compression_step`, points 3/4 q_r_b + 1/4 x). There the bottom values themselves
 change with every iterate (q_th_b = q_th_td - int_{q_r_b}^{q_r_td}), so the n-th iterate needs the
 (n-1)-th at the points x_1 ... x_{n} of every level: n(n+1)/2 evaluations on a state that grows
 with n, not a chain with a fixed loop state. The converging map :mod:`.schwind` anchors that half
@@ -57,8 +57,8 @@ from ..ir import Call, Guard, Iterate, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
-from . import variable
-from .iterative import radial_momentum
+from . import geyer_vs
+from .iterative_helpers import radial_momentum
 from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
 
 __all__ = ["HALVES", "VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
@@ -200,7 +200,7 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
         u = sp.sqrt(1 - e / (q_r_b - q_r_td))  # sqrt((x - q_r_b)/(q_r_td - q_r_b)), x = q_r_td + e
         return sym("z_b_q_th") + (q_th_td - sym("z_b_q_th")) * u, z_p_b + (p_td - z_p_b) * u
 
-    quartic = variable.quartic_kernel()
+    quartic = geyer_vs.quartic_kernel()
     return (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
         _zeroth_bottom(touchdown, p, geyer_q_r_lo),

@@ -1,4 +1,7 @@
-"""Schwind and Koditschek's iterative stance map (report sections 3.2 and 5.2), derived step by step.
+"""Helpers of the iterative maps: Schwind and Koditschek's iterative stance map (report sections 3.2
+and 5.2), derived step by step. This module declares no map: the maps ``iterative`` (:mod:`.schwind`)
+and ``iterative-report`` (:mod:`.iterative_report`) and the equation checks of sections 3.2 and 5.2
+(derive/equations/) build on it.
 
 From the Hamiltonian vector field (29) with the decompression stiffness k_d: the leg length q_r is
 the independent variable of the decompression phase (p_r > 0), so each rate is divided by
