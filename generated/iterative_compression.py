@@ -1,6 +1,6 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
@@ -13,7 +13,7 @@
 #   gravity_type3.py sha256:e58a1a317b1fc866
 #   gravity_type4.py sha256:6bb6498e457c9b35
 #   gravity_type5.py sha256:70d4f36f9336d294
-#   iterative.py sha256:5cbc67896649dba2
+#   iterative.py sha256:f90bd53ea7b8beaa
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 

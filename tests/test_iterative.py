@@ -1,4 +1,4 @@
-"""The converging form of Schwind and Koditschek's iteration (map ``iterative``, derive/maps/schwind.py).
+"""The converging form of Schwind and Koditschek's iteration (map ``iterative``, derive/maps/iterative.py).
 
 Tolerances are measured (see each docstring).
 """
@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.derive.maps import quadrature_helpers, schwind
+from slipmaps.derive.maps import iterative as d_iterative
+from slipmaps.derive.maps import quadrature_helpers
 from slipmaps.derive.symbols import k_c, k_d
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api import index
@@ -42,8 +43,8 @@ def test_eq41_one_node_is_the_mean_value_point():
 @pytest.mark.parametrize("stiffness", [k_c, k_d])
 def test_eq30_eq32_u_rates_are_regular_at_the_bottom(stiffness):
     """(30)-(32) in u with the work form of p_r: no negative power of u is left."""
-    for rate in schwind.u_rates(stiffness):
-        assert schwind._U not in rate.free_symbols
+    for rate in d_iterative.u_rates(stiffness):
+        assert d_iterative._U not in rate.free_symbols
 
 
 @pytest.mark.parametrize("ratio", [0.8, 1.0, 1.25])

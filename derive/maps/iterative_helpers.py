@@ -1,5 +1,5 @@
 """Helpers of the iterative maps: Schwind and Koditschek's iterative stance map (report sections 3.2
-and 5.2), derived step by step. This module declares no map: the maps ``iterative`` (:mod:`.schwind`)
+and 5.2), derived step by step. This module declares no map: the maps ``iterative`` (:mod:`.iterative`)
 and ``iterative-report`` (:mod:`.iterative_report`) and the equation checks of sections 3.2 and 5.2
 (derive/equations/) build on it.
 

@@ -38,13 +38,13 @@ printed they evaluate it at xi).
 
 Zeroth iterate of a half: linear in u = sqrt((sigma - q_r_b)/(x_far - q_r_b)) between the bottom
 (u = 0) and the far end (u = 1: touchdown, or the zeroth iterate's liftoff state), as in
-:mod:`.schwind`: Geyer et al.'s map (section 3.1, with k_c) or the held touchdown state.
+:mod:`.iterative`: Geyer et al.'s map (section 3.1, with k_c) or the held touchdown state.
 
 Not done: the compression half anchored at the bottom (the corrected (124)-(126) of
 :func:`.iterative_helpers.compression_step`, points 3/4 q_r_b + 1/4 x). There the bottom values themselves
 change with every iterate (q_th_b = q_th_td - int_{q_r_b}^{q_r_td}), so the n-th iterate needs the
 (n-1)-th at the points x_1 ... x_{n} of every level: n(n+1)/2 evaluations on a state that grows
-with n, not a chain with a fixed loop state. The converging map :mod:`.schwind` anchors that half
+with n, not a chain with a fixed loop state. The converging map :mod:`.iterative` anchors that half
 at the bottom.
 """
 
@@ -58,8 +58,8 @@ from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
 from . import geyer_vs
+from .iterative import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
 from .iterative_helpers import radial_momentum
-from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
 
 __all__ = ["HALVES", "VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
 
@@ -188,7 +188,7 @@ def chain_steps(
 
 def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) -> tuple[Step, ...]:
     """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``,
-    after the zeroth iterate's bottom (:func:`.schwind._zeroth_bottom`; its Geyer call takes
+    after the zeroth iterate's bottom (:func:`.iterative._zeroth_bottom`; its Geyer call takes
     ``geyer_q_r_lo``)."""
     q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
     q_r_b, e_ab = sym("bottom_q_r"), sym("E_ab")

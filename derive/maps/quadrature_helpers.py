@@ -5,7 +5,7 @@ Near the bottom p_r vanishes like (sigma - q_r_b)^(1/2), so the integrands of (3
 int_0^1 f(sigma(u)) 2 D u du with a regular integrand, and the one-node Gauss-Legendre rule on
 u in [0, 1] (node 1/2, weight 1) is exactly the mean-value rule of (37) with xi = 3/4 q_r_b + 1/4 x
 of (41). N nodes are its refinement (docs/mean_value_point.md). A helper of the map ``iterative``
-(:mod:`.schwind`); this module declares no map.
+(:mod:`.iterative`); this module declares no map.
 
 :func:`rule` gives, for N nodes u_j in (0, 1), the weights and the integration matrices of the
 Lagrange interpolant through the nodes (collocation): ``S[j][k] = int_0^{u_j} L_k(v) dv`` and
