@@ -81,7 +81,8 @@ def _zeroth_choices() -> tuple[str, ...]:
 
 def test_zeroth_iterate_choices_are_every_map_not_itself_iterated_from_one():
     """Any declared map can start the iteration: every map without a ``zeroth`` option is a choice
-    (a new map that is not listed in schwind.ZEROTH_MAPS fails here), plus the held state."""
+    (derived from the declarations, derive/maps/__init__.py's starting_maps: a new map is one with
+    no edit elsewhere), plus the held state."""
     maps = {m.name for m in slipmaps.maps() if m.name != "exact"}
     starters = {n for n in maps if "zeroth" not in {o.name for o in index.lookup(n).options}}
     for name in ("iterative", "iterative-report", "iterative-compression", "iterative-report-compression"):

@@ -24,6 +24,9 @@ P_c = 0 (Geyer's map), stopping early when P_c moves by less than ``tol`` times 
 
 Every formula below is derived here (SymPy) from the model and from Geyer's derivation; the
 registry (:mod:`slipmaps.derive.equations.sec4`) compares the printed equations with them.
+
+A family module: it declares the maps ``gravity-type0`` ... ``gravity-type4``; type 5, a design of
+its own, is declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
 """
 
 from __future__ import annotations

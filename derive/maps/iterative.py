@@ -35,24 +35,22 @@ from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, S
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
-from . import geyer as _geyer
-from . import geyer_vs as _geyer_vs
-from . import gravity as _gravity
-from . import gravity_type5 as _gravity_type5
 from . import quadrature_helpers
+from .iterative_helpers import (
+    held_liftoff,
+    leg_length_derivatives,
+    radial_force,
+    zeroth_bottom,
+    zeroth_liftoff,
+    zeroth_option,
+)
 
-__all__ = ["NODE_COUNTS", "radial_force", "u_rates", "half_kernel", "MAPS", "HALVES"]
+__all__ = ["NODE_COUNTS", "u_rates", "half_kernel", "declare_maps", "declare_halves"]
 
 #: Node counts a kernel is generated for (option ``nodes``).
 NODE_COUNTS = (1, 2, 3, 4, 6)
 
 _D, _PSI, _U = sp.symbols("D Psi u", positive=True)
-
-
-@cache
-def radial_force(stiffness: sp.Symbol) -> sp.Basic:
-    """F_r = dp_r/dt of (29) with the half's stiffness: p_th^2/(m q_r^3) + k (l0 - q_r) - m g_s cos q_th."""
-    return mechanics.hamiltonian_vector_field(stiffness)[2]
 
 
 @cache
@@ -63,8 +61,6 @@ def u_rates(stiffness: sp.Symbol) -> tuple[sp.Basic, sp.Basic, sp.Basic]:
     2 m int_{q_r_b}^{sigma} F_r = 4 m D int_0^u F_r v dv = 4 m D Psi u^2, Psi the F_r-weighted
     mean (1/u^2) int_0^u F_r v dv). The result has no 1/u: regular at the bottom.
     """
-    from .iterative_helpers import leg_length_derivatives
-
     p_r = mechanics.p_r
     momentum = _U * sp.sqrt(4 * m * _D * _PSI)
     rates = leg_length_derivatives(stiffness)
@@ -278,89 +274,14 @@ def half_kernel(kind: str) -> Kernel:
     )
 
 
-#: The maps a zeroth iterate can come from: every declared map that is not itself iterated from a
-#: zeroth iterate (tests/test_iterative.py checks that no such map is left out).
-ZEROTH_MAPS = _geyer.MAPS + _gravity.MAPS + _gravity_type5.MAPS + _geyer_vs.MAPS
-#: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
-HELD = "held"
-
-ZEROTH = Option(
-    "zeroth",
-    "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear "
-    "in u between the half's ends",
-    "geyer",
-    (
-        ("geyer", "Geyer et al.'s map (section 3.1) with k_c"),
-        (HELD, "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown"),
-        *(
-            (s.name, f"{s.title} (section {s.section}) with k_c" + (", k_d" if "k_d" in s.params else ""))
-            for s in ZEROTH_MAPS
-            if s.name != "geyer"
-        ),
-    ),
-)
-
 _POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
-
-
-def _zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
-    """The zeroth iterate's bottom (``z_b_*``; a map's choice also its liftoff, ``z_lo_*``) from
-    the touchdown state, before the compression half. A map runs at its default options with the
-    stiffness k_c (q_r_lo as given: a compression half passes q_r_td, as only the bottom is used)."""
-    q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
-    given = {**p, "k": p["k_c"], "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
-    bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
-    bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
-    p_td = m * q_r_td**2 * q_thd_td
-    force = radial_force(k_c).subs({q_r: q_r_td, q_th: q_th_td, p_th: p_td})
-    b = force  # k_c (l0 - q_r_td) + Rbar, Rbar = F_r(td) - k_c (l0 - q_r_td)
-    c = (m * q_rd_td) ** 2 / (2 * m)
-    z_b = sym("z_b_q_r")
-    held = Stage(
-        (
-            (z_b, q_r_td - 2 * c / (b + sp.sqrt(b**2 + 2 * k_c * c))),
-            (sym("z_b_q_th"), q_th_td),
-            (sym("z_b_q_thd"), p_td / (m * z_b**2)),
-            (sym("z_lo_q_th"), sp.S.Zero),  # replaced after the bottom
-            (sym("z_lo_q_thd"), sp.S.Zero),
-        ),
-        comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
-    )
-    from_maps = tuple(
-        (
-            ZEROTH.code(spec.name),
-            (spec.stance_call(touchdown, given, bind, comment=f"zeroth iterate: {spec.title}"),),
-        )
-        for spec in ZEROTH_MAPS
-    )
-    return Switch(sym(ZEROTH.name), ((ZEROTH.code(HELD), (held,)),) + from_maps, comment="zeroth iterate")
-
-
-def _held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
-    """The held bottom state's liftoff (q_th, q_thd): angle and angular momentum of the bottom."""
-    q_r_b, _, q_th_b, q_thd_b = bottom
-    return q_th_b, q_thd_b * q_r_b**2 / q_r_lo**2
-
-
-def _zeroth_liftoff(q_r_lo) -> Stage:
-    """The zeroth iterate's liftoff ``g_lo_q_th``, ``g_lo_q_thd`` before the decompression half:
-    the map's (``z_lo_*`` of :func:`_zeroth_bottom`) or, held, the computed bottom state's."""
-    held = _held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
-    is_held = ZEROTH.is_(HELD)
-    return Stage(
-        (
-            (sym("g_lo_q_th"), sp.Piecewise((held[0], is_held), (sym("z_lo_q_th"), True))),
-            (sym("g_lo_q_thd"), sp.Piecewise((held[1], is_held), (sym("z_lo_q_thd"), True))),
-        ),
-        comment="zeroth iterate at liftoff",
-    )
 
 
 def _build(inp: MapInputs) -> MapBuild:
     q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
     p = inp.params
     options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
-    before, after = _zeroth_bottom(inp.touchdown, p, p["q_r_lo"]), _zeroth_liftoff(p["q_r_lo"])
+    before, after = zeroth_bottom(inp.touchdown, p, p["q_r_lo"]), zeroth_liftoff(p["q_r_lo"])
     compression, decompression = half_kernel("compression"), half_kernel("decompression")
     physical = {q: p[q] for q in ("m", "l0", "g_s")}
     steps = (
@@ -421,23 +342,28 @@ def _build(inp: MapInputs) -> MapBuild:
 
 _EQUATIONS = ("27", "29", "30", "31", "32", "33", "35", "37", "41", "114", "115", "116", "117", "118", "137")
 
-MAPS = (
-    MapSpec(
-        name="iterative",
-        title="Iterative stance map (Schwind and Koditschek, converging form)",
-        section="5.2",
-        equations=tuple(sorted(_EQUATIONS, key=int)),
-        params=("m", "l0", "k_c", "k_d", "g_s"),
-        build=_build,
-        options=(NODES, ITERATIONS, TOL, ZEROTH),
-        extras=(Field("passes", "Picard passes run (the larger of the two halves)", "1"),),
-        summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the radial "
-        "work; k_c before the bottom, k_d after",
-        notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of "
-        "(33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
-        "p_r_td^2 = 2 m int F_r.",
-    ),
-)
+
+@cache
+def declare_maps() -> tuple[MapSpec, ...]:
+    """This module's ``MAPS``: declared once every map that can be a zeroth iterate is known (the
+    choices of option ``zeroth``, :func:`~.iterative_helpers.zeroth_option`)."""
+    return (
+        MapSpec(
+            name="iterative",
+            title="Iterative stance map (Schwind and Koditschek, converging form)",
+            section="5.2",
+            equations=tuple(sorted(_EQUATIONS, key=int)),
+            params=("m", "l0", "k_c", "k_d", "g_s"),
+            build=_build,
+            options=(NODES, ITERATIONS, TOL, zeroth_option()),
+            extras=(Field("passes", "Picard passes run (the larger of the two halves)", "1"),),
+            summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the "
+            "radial work; k_c before the bottom, k_d after",
+            notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead "
+            "of (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
+            "p_r_td^2 = 2 m int F_r.",
+        ),
+    )
 
 
 _HALF_OUTPUTS = {"t_half": "t_half", **{f"end_{q}": f"end_{q}" for q in _POLAR_NAMES}, "passes": "passes"}
@@ -450,7 +376,7 @@ def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
     p = inp.params
     options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
     return (
-        _zeroth_bottom(inp.state, p, inp.state[0]),
+        zeroth_bottom(inp.state, p, inp.state[0]),
         Call(
             half_kernel("compression"),
             {
@@ -468,7 +394,7 @@ def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
 def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
     """Bottom -> liftoff with k_d; zeroth iterate: the bottom's angle and angular momentum held."""
     p = inp.params
-    guess_q_th, guess_q_thd = _held_liftoff(inp.state, p["q_r_lo"])
+    guess_q_th, guess_q_thd = held_liftoff(inp.state, p["q_r_lo"])
     return (
         Call(
             half_kernel("decompression"),
@@ -485,33 +411,36 @@ def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
     )
 
 
-HALVES = (
-    HalfSpec(
-        name="iterative-compression",
-        title="Iterative compression half (touchdown to bottom, k_c; converging form)",
-        section="5.2.1",
-        equations=("29", "30", "31", "32", "114", "115", "116", "117", "118", "123"),
-        whole="iterative",
-        start="touchdown",
-        params=("m", "l0", "k_c", "g_s"),
-        build=_compression_half,
-        options=(NODES, ITERATIONS, TOL, ZEROTH),
-        extras=(_PASSES,),
-        summary="the compression half of `iterative`: bottom leg length from the radial work, Picard passes "
-        "on Gauss nodes in u",
-    ),
-    HalfSpec(
-        name="iterative-decompression",
-        title="Iterative decompression half (bottom to liftoff, k_d; converging form)",
-        section="5.2.2",
-        equations=("29", "30", "31", "32", "37", "41", "137", "138", "139", "140", "141", "143"),
-        whole="iterative",
-        start="bottom",
-        params=("m", "l0", "k_d", "g_s", "q_r_lo"),
-        build=_decompression_half,
-        options=(NODES, ITERATIONS, TOL),
-        extras=(_PASSES,),
-        summary="the decompression half of `iterative` from any bottom state: zeroth iterate the bottom's "
-        "angle and angular momentum held, liftoff p_r from the radial work",
-    ),
-)
+@cache
+def declare_halves() -> tuple[HalfSpec, ...]:
+    """This module's ``HALVES`` (the compression half takes option ``zeroth`` too)."""
+    return (
+        HalfSpec(
+            name="iterative-compression",
+            title="Iterative compression half (touchdown to bottom, k_c; converging form)",
+            section="5.2.1",
+            equations=("29", "30", "31", "32", "114", "115", "116", "117", "118", "123"),
+            whole="iterative",
+            start="touchdown",
+            params=("m", "l0", "k_c", "g_s"),
+            build=_compression_half,
+            options=(NODES, ITERATIONS, TOL, zeroth_option()),
+            extras=(_PASSES,),
+            summary="the compression half of `iterative`: bottom leg length from the radial work, Picard "
+            "passes on Gauss nodes in u",
+        ),
+        HalfSpec(
+            name="iterative-decompression",
+            title="Iterative decompression half (bottom to liftoff, k_d; converging form)",
+            section="5.2.2",
+            equations=("29", "30", "31", "32", "37", "41", "137", "138", "139", "140", "141", "143"),
+            whole="iterative",
+            start="bottom",
+            params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+            build=_decompression_half,
+            options=(NODES, ITERATIONS, TOL),
+            extras=(_PASSES,),
+            summary="the decompression half of `iterative` from any bottom state: zeroth iterate the "
+            "bottom's angle and angular momentum held, liftoff p_r from the radial work",
+        ),
+    )

@@ -26,6 +26,11 @@ integrals anchored at the bottom (:func:`compression_step`).
 The report's H^{-1}(q_r, q_th, p_th, E) appears in (42)-(44) as the unevaluated function
 :data:`H_INV`, the iterates q_th_n, p_th_n as undefined functions; :func:`radial_momentum` is its
 closed form. Results are cached.
+
+Both iterative maps start from a zeroth iterate (option ``zeroth``, :func:`zeroth_option`): the
+bottom and liftoff states of any map not itself iterated from one (:func:`zeroth_maps`, derived
+from the declarations), or the held touchdown / bottom state (:data:`HELD`); :func:`zeroth_bottom`,
+:func:`zeroth_liftoff` and :func:`held_liftoff` compute them in a map's steps.
 """
 
 from __future__ import annotations
@@ -34,6 +39,9 @@ from functools import cache
 
 import sympy as sp
 
+from .. import catalog
+from ..ir import Stage, Switch, sym
+from ..mapspec import MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, k_c, k_d, m, p_r, p_th, q_r, q_r_td, q_th, q_th_td, t
 
@@ -71,6 +79,13 @@ __all__ = [
     "iteration_step",
     "compression_step",
     "next_radial_momentum",
+    "radial_force",
+    "HELD",
+    "zeroth_maps",
+    "zeroth_option",
+    "zeroth_bottom",
+    "held_liftoff",
+    "zeroth_liftoff",
 ]
 
 sigma = sp.Symbol("sigma", positive=True)  # leg length as the integration variable
@@ -307,3 +322,106 @@ def next_radial_momentum(stiffness=k_d, energy=E, sign=1):
     """
     on_iterate = {q_th: Q_TH_NEXT(q_r), p_th: P_TH_NEXT(q_r)}
     return radial_momentum(stiffness, energy, sign).subs(on_iterate, simultaneous=True)
+
+
+# ----------------------------------------------------------------------------------------------
+# The zeroth iterate of both iterative maps
+# ----------------------------------------------------------------------------------------------
+@cache
+def radial_force(stiffness: sp.Symbol) -> sp.Basic:
+    """F_r = dp_r/dt of (29) with the half's stiffness: p_th^2/(m q_r^3) + k (l0 - q_r) - m g_s cos q_th."""
+    return mechanics.hamiltonian_vector_field(stiffness)[2]
+
+
+#: The zeroth-iterate choice that holds the touchdown (compression) or bottom (decompression) state.
+HELD = "held"
+#: The default zeroth iterate: Geyer et al.'s map (report section 3.1).
+_DEFAULT = "geyer"
+_POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
+
+
+def zeroth_maps() -> tuple[MapSpec, ...]:
+    """The maps a zeroth iterate can come from: every declared map that is not itself iterated from
+    a zeroth iterate (:func:`~slipmaps.derive.maps.starting_maps`), in report order."""
+    from . import starting_maps
+
+    return starting_maps()
+
+
+@cache
+def zeroth_option() -> Option:
+    """Option ``zeroth`` of the iterative maps and their compression halves: Geyer et al.'s map (the
+    default), the held state, then every other map of :func:`zeroth_maps` (a choice's code is its
+    index)."""
+    return Option(
+        "zeroth",
+        "zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear "
+        "in u between the half's ends",
+        _DEFAULT,
+        (
+            (_DEFAULT, "Geyer et al.'s map (section 3.1) with k_c"),
+            (
+                HELD,
+                "the touchdown state held (q_th, p_th constant), bottom from the radial work at touchdown",
+            ),
+            *(
+                (s.name, f"{s.title} (section {s.section}) with k_c" + (", k_d" if "k_d" in s.params else ""))
+                for s in zeroth_maps()
+                if s.name != _DEFAULT
+            ),
+        ),
+    )
+
+
+def zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
+    """The zeroth iterate's bottom (``z_b_*``; a map's choice also its liftoff, ``z_lo_*``) from
+    the touchdown state, before the compression half. A map runs at its default options with the
+    stiffness k_c (q_r_lo as given: a compression half passes q_r_td, as only the bottom is used)."""
+    zeroth = zeroth_option()
+    q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
+    given = {**p, "k": p["k_c"], "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
+    bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
+    bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
+    p_td = m * q_r_td**2 * q_thd_td
+    force = radial_force(k_c).subs({q_r: q_r_td, q_th: q_th_td, p_th: p_td})
+    b = force  # k_c (l0 - q_r_td) + Rbar, Rbar = F_r(td) - k_c (l0 - q_r_td)
+    c = (m * q_rd_td) ** 2 / (2 * m)
+    z_b = sym("z_b_q_r")
+    held = Stage(
+        (
+            (z_b, q_r_td - 2 * c / (b + sp.sqrt(b**2 + 2 * k_c * c))),
+            (sym("z_b_q_th"), q_th_td),
+            (sym("z_b_q_thd"), p_td / (m * z_b**2)),
+            (sym("z_lo_q_th"), sp.S.Zero),  # replaced after the bottom
+            (sym("z_lo_q_thd"), sp.S.Zero),
+        ),
+        comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
+    )
+    from_maps = tuple(
+        (
+            zeroth.code(spec.name),
+            (spec.stance_call(touchdown, given, bind, comment=f"zeroth iterate: {spec.title}"),),
+        )
+        for spec in zeroth_maps()
+    )
+    return Switch(sym(zeroth.name), ((zeroth.code(HELD), (held,)),) + from_maps, comment="zeroth iterate")
+
+
+def held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
+    """The held bottom state's liftoff (q_th, q_thd): angle and angular momentum of the bottom."""
+    q_r_b, _, q_th_b, q_thd_b = bottom
+    return q_th_b, q_thd_b * q_r_b**2 / q_r_lo**2
+
+
+def zeroth_liftoff(q_r_lo) -> Stage:
+    """The zeroth iterate's liftoff ``g_lo_q_th``, ``g_lo_q_thd`` before the decompression half:
+    the map's (``z_lo_*`` of :func:`zeroth_bottom`) or, held, the computed bottom state's."""
+    held = held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
+    is_held = zeroth_option().is_(HELD)
+    return Stage(
+        (
+            (sym("g_lo_q_th"), sp.Piecewise((held[0], is_held), (sym("z_lo_q_th"), True))),
+            (sym("g_lo_q_thd"), sp.Piecewise((held[1], is_held), (sym("z_lo_q_thd"), True))),
+        ),
+        comment="zeroth iterate at liftoff",
+    )
