@@ -44,6 +44,9 @@ class Option:
     #: Choices that assume touchdown at the rest length (q_r_td = l0): with another touchdown leg
     #: length the kernels return INVALID_INPUT.
     at_rest_length: tuple[str, ...] = ()
+    #: What the studies do with the option (which of its values they measure): any of
+    #: :data:`slipmaps.derive.maps.OPTION_ROLES`; published in the index (``Option.roles``).
+    roles: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.choices and self.default not in self.values:
@@ -111,6 +114,7 @@ class Option:
             "low": self.low,
             "high": self.high,
             "at_rest_length": list(self.at_rest_length),
+            "roles": list(self.roles),
         }
 
     def domain_guard(self) -> Guard | None:
@@ -180,6 +184,10 @@ class MapSpec:
     #: no accuracy claim (the tests over every map check its contract, not its accuracy).
     as_printed: bool = False
     _cache: dict = field(default_factory=dict, compare=False, repr=False)
+    #: What the studies and the command line do with the map (the maps each study runs, draws or
+    #: compares with): any of :data:`slipmaps.derive.maps.MAP_ROLES`; published in the index
+    #: (``MapInfo.roles``).
+    roles: tuple[str, ...] = ()
 
     def __post_init__(self):
         unknown = [p for p in self.params if p not in catalog.PARAMS]
@@ -402,6 +410,7 @@ class MapSpec:
             "summary": self.summary,
             "as_printed": self.as_printed,
             "approximation_statuses": list(self.approximation_statuses),
+            "roles": list(self.roles),
             "kernels": {
                 "stance": stance.name,
                 "state_at": state_at.name if state_at else None,

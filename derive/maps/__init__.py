@@ -16,6 +16,10 @@ option ``zeroth``). Such a module declares its maps and halves by functions, ``d
 ``declare_halves()``, called once every tuple is known. :func:`starting_maps` are the maps declared
 as tuples: the maps a zeroth iterate can come from, so a new map is a zeroth-iterate choice of the
 iterative maps with no edit elsewhere.
+
+What the studies of ``slipmaps accuracy`` and the command line do with a map, and which values of
+its options they measure, is declared with it too: ``roles`` (:data:`MAP_ROLES`,
+:data:`OPTION_ROLES`), published in the index, which is all the runtime reads.
 """
 
 from __future__ import annotations
@@ -24,10 +28,40 @@ import importlib
 import pkgutil
 from functools import cache
 
-__all__ = ["HELPERS_SUFFIX", "all_maps", "all_halves", "starting_maps"]
+__all__ = ["HELPERS_SUFFIX", "MAP_ROLES", "OPTION_ROLES", "all_maps", "all_halves", "starting_maps"]
 
 #: The name ending of a module that declares no map.
 HELPERS_SUFFIX = "_helpers"
+
+#: The values of ``MapSpec.roles``: what the studies of ``slipmaps accuracy`` (runtime/studies/) and
+#: the command line do with a map. They read the roles from the index; no map list is written there.
+MAP_ROLES = {
+    "baseline": "the accuracy study's reference: docs/accuracy.md's findings compare every map with it, "
+    "and `slipmaps accuracy --map NAME` measures it beside NAME",
+    "accuracy-figure": "a heatmap of docs/accuracy.png (next-apex error over apex speed and touchdown angle)",
+    "yu-target": "held to the Yu, Li and Cai protocol target in docs/accuracy.md's findings (the best "
+    "variant of these maps is named)",
+    "region": "a panel of the self-stable region in docs/stability.png (beside the exact map), and of "
+    "`slipmaps gait --figure` without --map",
+    "default": "`slipmaps compare`'s map without --map: the first of these maps (report order) whose "
+    "requirements the parameters meet",
+}
+#: The values of ``Option.roles``: which values of the option the studies measure. An option without
+#: roles stays at its default in every study.
+OPTION_ROLES = {
+    "accuracy-variants": "docs/accuracy.md measures every value but the default once, the other options at "
+    "their defaults (a choice's other choices, an integer's other whole numbers in [low, high])",
+    "accuracy-passes": "the pass count of an iterated correction: docs/accuracy.md measures the map at one "
+    "pass and at its fixed point (the option's tolerance option in step)",
+    "accuracy-readings": "docs/accuracy.md measures every value at one pass and at the fixed point of the "
+    "map's accuracy-passes option",
+    "convergence-passes": "the pass count docs/convergence.md varies, n = 0..8 (the tolerance option at 0: "
+    "exactly n passes)",
+    "convergence-series": "docs/convergence.md runs every value as a series of its own",
+    "stiffness-variants": "docs/stiffness.md measures every value but the default once",
+    "tolerance": "the stopping tolerance of the map's pass count (0: every pass runs), set by the studies "
+    "with the passes",
+}
 
 
 def _section_key(section: str) -> tuple[int, ...]:
@@ -89,6 +123,16 @@ def _check_layout(declared: list[tuple[str, object]], what: str) -> None:
             )
 
 
+def _check_roles(specs) -> None:
+    """Every role of a declaration, and of its options, is one of :data:`MAP_ROLES` /
+    :data:`OPTION_ROLES` (a misspelt role would leave a map out of a study)."""
+    for spec in specs:
+        unknown = [r for r in getattr(spec, "roles", ()) if r not in MAP_ROLES]
+        unknown += [f"{o.name}: {r}" for o in spec.options for r in o.roles if r not in OPTION_ROLES]
+        if unknown:
+            raise ValueError(f"map {spec.name}: unknown role(s) {unknown}")
+
+
 def _unique(specs, what: str) -> None:
     names = [s.name for s in specs]
     dup = sorted({n for n in names if names.count(n) > 1})
@@ -110,6 +154,7 @@ def all_halves():
     declared = _declared("HALVES")
     _check_layout(declared, "half map")
     specs = [s for _, s in declared]
+    _check_roles(specs)
     _unique(specs + list(all_maps()), "map")
     return _ordered(specs)
 
@@ -120,5 +165,6 @@ def all_maps():
     declared = _declared("MAPS")
     _check_layout(declared, "map")
     specs = [s for _, s in declared]
+    _check_roles(specs)
     _unique(specs, "map")
     return _ordered(specs)

@@ -205,9 +205,16 @@ NODES = Option(
     "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))",
     "4",
     tuple((str(n), f"{n} node{'s' if n > 1 else ''}") for n in NODE_COUNTS),
+    roles=("accuracy-variants",),
 )
 ITERATIONS = Option(
-    "iterations", "Picard passes per half-stance (0 = the zeroth iterate)", 6, low=0, high=100, integer=True
+    "iterations",
+    "Picard passes per half-stance (0 = the zeroth iterate)",
+    6,
+    low=0,
+    high=100,
+    integer=True,
+    roles=("accuracy-passes", "convergence-passes"),
 )
 TOL = Option(
     "tol",
@@ -215,6 +222,7 @@ TOL = Option(
     0.0,
     low=0.0,
     high=1.0,
+    roles=("tolerance",),
 )
 
 
@@ -362,6 +370,7 @@ def declare_maps() -> tuple[MapSpec, ...]:
             notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead "
             "of (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
             "p_r_td^2 = 2 m int F_r.",
+            roles=("region",),
         ),
     )
 

@@ -370,6 +370,7 @@ def zeroth_option() -> Option:
                 if s.name != _DEFAULT
             ),
         ),
+        roles=("accuracy-variants",),
     )
 
 

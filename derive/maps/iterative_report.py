@@ -77,6 +77,7 @@ VARIANT = Option(
             "(148)-(150), with (134)/(149) keeping p_th",
         ),
     ),
+    roles=("accuracy-variants", "convergence-series"),
 )
 BOTTOM_LENGTH = Option(
     "bottom_length",
@@ -86,6 +87,7 @@ BOTTOM_LENGTH = Option(
         ("zeroth", "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"),
         ("eq153", "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"),
     ),
+    roles=("accuracy-variants",),
 )
 ITERATIONS = Option(
     "iterations",
@@ -94,6 +96,7 @@ ITERATIONS = Option(
     low=0,
     high=100,
     integer=True,
+    roles=("accuracy-passes", "convergence-passes"),
 )
 
 

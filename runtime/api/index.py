@@ -37,6 +37,8 @@ class Option:
     low: float | None = None
     high: float | None = None
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
+    #: Which of its values the studies measure (derive/maps/__init__.py's OPTION_ROLES).
+    roles: tuple[str, ...] = ()
 
     def encode(self, map_name: str, value: object) -> float:
         """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values,
@@ -96,6 +98,8 @@ class MapInfo:
     as_printed: bool = False
     #: Statuses the approximation itself returns on gaits the exact stance completes.
     approximation_statuses: tuple[str, ...] = ()
+    #: What the studies and the command line do with the map (derive/maps/__init__.py's MAP_ROLES).
+    roles: tuple[str, ...] = ()
 
     @property
     def generated(self) -> bool:
@@ -180,6 +184,7 @@ def _option(row: dict) -> Option:
         low=row["low"],
         high=row["high"],
         at_rest_length=tuple(row.get("at_rest_length", ())),
+        roles=tuple(row.get("roles", ())),
     )
 
 
@@ -200,6 +205,7 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         extras=tuple(e["name"] for e in r["extras"]),
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),
+        roles=tuple(r.get("roles", ())),
         **extra,
     )
 
