@@ -14,7 +14,16 @@ from pathlib import Path
 import numpy as np
 
 from ..api.index import get
-from .accuracy import GridRun, apex_errors, exact_failures, measure_all, variant_stats, variants
+from .accuracy import (
+    GridRun,
+    apex_errors,
+    baseline,
+    exact_failures,
+    maps_with,
+    measure_all,
+    variant_stats,
+    variants,
+)
 from .quantities import QUANTITIES
 from .report_format import fails, pct, rounded, sig
 
@@ -23,7 +32,7 @@ __all__ = ["summarize", "render_markdown", "to_json", "figure", "write"]
 #: A map "is not worse than Geyer's on symmetric steps" when its mean error is at most this ratio.
 SYMMETRIC_RATIO = 1.10
 #: The targets of the gravity family on the Yu protocol (issue: mean < 2 % at 60 and 65 degrees,
-#: < 5 % at every angle, max < 10 %).
+#: < 5 % at every angle, max < 10 %), for the maps with the role "yu-target".
 YU_TARGET = {"mean_60_65": 0.02, "mean_all": 0.05, "max": 0.10}
 
 
@@ -147,7 +156,7 @@ def _ratio(a: float, b: float) -> float:
 def findings(summary: list[dict]) -> list[str]:
     """Statements computed from the numbers: per map, against Geyer's on each kind of grid."""
     lines = []
-    geyer = "geyer"
+    geyer = baseline()
     defaults = [v["label"] for v in summary[0]["variants"] if v["default"] and v["map"] != geyer]
     for label in defaults:
         parts = []
@@ -172,7 +181,7 @@ def findings(summary: list[dict]) -> list[str]:
     yu = _grid(summary, "yu")
     if yu is not None:
         best = min(
-            (v for v in yu["variants"] if v["map"].startswith("gravity")),
+            (v for v in yu["variants"] if v["map"] in maps_with("yu-target")),
             key=lambda v: v["apex_error"]["mean"],
             default=None,
         )
@@ -290,7 +299,7 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
 
     human = next(r for r in runs if r.grid.kind == "nonsymmetric")
     yu = next((r for r in runs if r.grid.kind == "yu"), None)
-    shown = [label for label in ("geyer", "gravity-type2", "gravity-type5") if label in human.results]
+    shown = [label for label in maps_with("accuracy-figure") if label in human.results]
     fig = plt.figure(figsize=(12, 9), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=(1.0, 1.0))
     height = sorted(set(human.points[:, 0]))[len(set(human.points[:, 0])) // 2]
@@ -334,7 +343,7 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
 
 
 def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
-    """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
+    """Measure (all maps, or ``map_names`` with the baseline map for reference) and write the report files:
     ``out`` (+ .json, .png) and beside it, where iterative maps are measured, the convergence study
     (convergence.md, .json, .png; runtime/studies/convergence.py) and, where maps that accept k_c != k_d are
     measured, the variable-stiffness study (stiffness.md, .json, .png; runtime/studies/stiffness.py), and the
@@ -343,7 +352,7 @@ def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
 
     names = None
     if map_names is not None:
-        names = ["geyer", *[n for n in map_names if n != "geyer"]]
+        names = [baseline(), *[n for n in map_names if n != baseline()]]
         for n in names:
             get(n)
     study = convergence.variants(names)

@@ -8,8 +8,9 @@ hopper's of docs/accuracy.md, the nonsymmetric ones subsampled) and every k_d/k_
 
 * exact: :func:`~slipmaps.runtime.exact.reference.simulate_step` with (k_c, k_d);
 * each variant of :func:`variants` (every map whose parameters include k_d but the exact one, at
-  its defaults, and once per other value of its option ``continuity``): its stance from the same
-  exact touchdown and its apex-return map from the same apex (:func:`.accuracy.run_maps`).
+  its defaults, and once per other value of each of its options with the role
+  "stiffness-variants" in the index): its stance from the same exact touchdown and its apex-return
+  map from the same apex (:func:`.accuracy.run_maps`).
 
 Errors (:data:`ERRORS`) are absolute differences to the exact step, scaled: the next apex height by
 l0, its speed by the exact one; the liftoff velocity |d(b_xd, b_yd)| by the exact |(b_xd, b_yd)|, the
@@ -47,7 +48,16 @@ from ..api.params import SlipParams
 from ..api.progress import progress
 from ..api.results import GROUPS
 from ..exact.reference import simulate_step
-from .accuracy import GridRun, Variant, compared, exact_failures, map_failures, run_maps
+from .accuracy import (
+    GridRun,
+    Variant,
+    compared,
+    exact_failures,
+    map_failures,
+    options_with,
+    other_values,
+    run_maps,
+)
 from .grids import GRIDS, Grid
 from .report_format import rounded
 
@@ -67,8 +77,6 @@ __all__ = [
 
 #: The stiffness ratios k_d/k_c of the study (k_c = the parameter set's k).
 RATIOS = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.5)
-#: The options whose every value is a variant of its own (``geyer-vs``: how q_r joins at the bottom).
-SERIES_OPTIONS = ("continuity", "gravity")
 #: The nonsymmetric grids keep every SUBSAMPLE-th apex speed and touchdown angle (all heights; with 9
 #: of each, both ends stay): the study then adds seconds, not minutes, to ``slipmaps accuracy``.
 SUBSAMPLE = 2
@@ -116,7 +124,8 @@ ERRORS: tuple[Error, ...] = (
 
 def variants(map_names: Sequence[str] | None = None) -> list[Variant]:
     """Every map of ``map_names`` (default: all) whose parameters include k_d, except the exact one,
-    at its defaults and at every other value of each of its options in :data:`SERIES_OPTIONS`."""
+    at its defaults and at every other value of each of its options with the role
+    "stiffness-variants" (``geyer-vs``: how q_r joins at the bottom, its gravity correction)."""
     names = [m.name for m in index.maps()] if map_names is None else list(map_names)
     out: list[Variant] = []
     for name in names:
@@ -124,9 +133,8 @@ def variants(map_names: Sequence[str] | None = None) -> list[Variant]:
         if name == index.EXACT or "k_d" not in info.params:
             continue
         out.append(Variant(name))
-        for o in info.options:
-            if o.name in SERIES_OPTIONS:
-                out += [Variant(name, ((o.name, c),), default=False) for c in o.choices if c != o.default]
+        for o in options_with(info, "stiffness-variants"):
+            out += [Variant(name, ((o.name, c),), default=False) for c in other_values(o)]
     return out
 
 
