@@ -15,8 +15,15 @@ import pytest
 from records import assert_close
 from slipmaps.generated import maps_index
 from slipmaps.runtime.studies import convergence
+from slipmaps.runtime.studies import study as pipeline
 from slipmaps.runtime.studies.accuracy import measure_all, variants
-from slipmaps.runtime.studies.accuracy_report import SYMMETRIC_RATIO, from_json, render_markdown, summarize
+from slipmaps.runtime.studies.accuracy_report import (
+    SYMMETRIC_RATIO,
+    figure_record,
+    from_json,
+    render_markdown,
+    summarize,
+)
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 
@@ -44,6 +51,16 @@ def study() -> list[dict]:
 def test_accuracy_record_is_current(measured, record):
     """docs/accuracy.json re-measured (regenerate with `slipmaps accuracy` after changing a map)."""
     assert_close(measured, record, "grids")
+
+
+def test_accuracy_figure_record_is_current(runs):
+    """docs/accuracy.json's "figure": the heatmaps' next-apex errors (maps with the role
+    accuracy-figure, human runner, middle apex height), re-measured; docs/accuracy.png draws it."""
+    recorded = pipeline.from_json((DOCS / "accuracy.json").read_text())["figure"]
+    assert recorded["apex_error"], recorded
+    assert_close(
+        pipeline.from_json(pipeline.to_json({"figure": figure_record(runs)}))["figure"], recorded, "figure"
+    )
 
 
 def test_accuracy_markdown_renders_the_record(record):

@@ -17,10 +17,10 @@ left out as the protocol asks) and map failures where the exact step succeeds.
 The maps and variants measured come from the index: every map, and the values of its options
 that the option roles mark (:func:`variants`); :func:`maps_with` lists the maps of a map role.
 
-Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps),
-:func:`measure_all`, :func:`compared`, :func:`map_failures`, :func:`exact_failures` and the statistics
-objects that :mod:`.accuracy_report` renders to docs/accuracy.md, docs/accuracy.json and
-docs/accuracy.png.
+Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps,
+:func:`exact_steps` the grid's, simulated once per process), :func:`measure_all`, :func:`compared`,
+:func:`map_failures`, :func:`exact_failures` and the statistics that :mod:`.accuracy_report`
+records and renders (docs/accuracy.json, .md, .png).
 """
 
 from __future__ import annotations
@@ -55,6 +55,7 @@ __all__ = [
     "GridRun",
     "VariantStats",
     "measure",
+    "exact_steps",
     "run_maps",
     "measure_all",
     "apex_errors",
@@ -176,13 +177,25 @@ class GridRun:
         return self.exact_columns[key]
 
 
+#: The exact steps of each grid, simulated once per process (the accuracy and the convergence
+#: studies run on the same steps).
+_EXACT_STEPS: dict[Grid, tuple[StepResult | None, ...]] = {}
+
+
+def exact_steps(grid: Grid, show_progress: bool | None = None) -> tuple[StepResult | None, ...]:
+    """The exact step of every point of ``grid`` (None where a symmetric point has no symmetric gait)."""
+    if grid not in _EXACT_STEPS:
+        points = grid.points(show_progress)
+        _EXACT_STEPS[grid] = tuple(
+            simulate_step(grid.params, h, v, a) if math.isfinite(a) else None
+            for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress)
+        )
+    return _EXACT_STEPS[grid]
+
+
 def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = None) -> GridRun:
     """The exact steps of ``grid`` and every variant of ``chosen`` on it."""
-    points = grid.points(show_progress)
-    exact: list[StepResult | None] = []
-    for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress):
-        exact.append(simulate_step(grid.params, h, v, a) if math.isfinite(a) else None)
-    return run_maps(grid, points, exact, chosen)
+    return run_maps(grid, grid.points(show_progress), exact_steps(grid, show_progress), chosen)
 
 
 def run_maps(

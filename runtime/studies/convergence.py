@@ -4,8 +4,9 @@ A map takes part when one of its options has the role "convergence-passes" in th
 count; the gravity family's fixed points are studied in docs/accuracy.md), once per value of its
 option with the role "convergence-series" (the report's mean-value variants) if it has one. Each
 pass count runs at the map's other defaults with its "tolerance" option at 0 (exactly n passes) on
-the accuracy grids; ``slipmaps accuracy`` writes docs/convergence.md (+ .json, .png) from the same
-exact steps as docs/accuracy.md.
+the accuracy grids; ``slipmaps accuracy`` writes docs/convergence.json, .md and .png
+(:class:`ConvergenceStudy`, through :mod:`.study`) from the same exact steps as docs/accuracy.md;
+the record is :func:`.accuracy_report.summarize` of the study's variants.
 """
 
 from __future__ import annotations
@@ -16,15 +17,19 @@ from pathlib import Path
 import numpy as np
 
 from ..api import index
-from .accuracy import GridRun, Variant, apex_errors, options_with
+from . import study
+from .accuracy import Variant, measure_all, options_with
+from .accuracy_report import from_json, summarize
 
 __all__ = [
     "PASSES",
     "STUDY",
+    "ConvergenceStudy",
     "study_maps",
     "pass_option",
     "series_option",
     "variants",
+    "from_json",
     "render_markdown",
     "figure",
 ]
@@ -197,49 +202,32 @@ def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -
     return "\n".join(out) + "\n"
 
 
-def _mean(errors: np.ndarray) -> float:
-    """Mean over the compared steps; NaN (a gap in the line) when every step failed."""
-    finite = errors[np.isfinite(errors)]
-    return float(finite.mean()) if finite.size else math.nan
+def _means(rows: list[dict], angle: int | None = None) -> np.ndarray:
+    """Each row's mean next-apex error (of the Yu protocol's ``angle``-th angle), NaN (a gap in the
+    line) where every step failed."""
+    means = [r["apex_error"]["mean"] if angle is None else r["by_angle"][angle]["mean"] for r in rows]
+    return np.array([math.nan if m is None else m for m in means], dtype=float)
 
 
-def figure(runs: list[GridRun], path: str | Path) -> Path:
-    """Mean next-apex error against n, one panel per map, one line per grid (Yu: per angle)."""
+def figure(summary: list[dict], path: str | Path) -> Path:
+    """Mean next-apex error against n, one panel per series, one line per grid (Yu: per angle)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    names = list(
-        dict.fromkeys(
-            _series(v.map, v.kwargs) for r in runs for v, _, _ in r.results.values() if v.study == STUDY
-        )
-    )
+    names = list(dict.fromkeys(name for g in summary for name in _by_map(g)))
     fig, axes = plt.subplots(1, max(len(names), 1), figsize=(6 * max(len(names), 1), 4.5), squeeze=False)
     for ax, name in zip(axes[0], names, strict=False):
-        for run in runs:
-            labels = [
-                lab
-                for lab, (v, _, _) in run.results.items()
-                if v.study == STUDY and _series(v.map, v.kwargs) == name
-            ]
-
-            def n_of(lab: str, run=run) -> int:
-                var = run.results[lab][0]
-                return dict(var.options)[pass_option(var.map)]
-
-            labels.sort(key=n_of)
-            ns = [n_of(lab) for lab in labels]
-            if run.grid.kind == "yu":
-                for angle in run.grid.angles:
-                    sel = np.isclose(run.points[:, 2], angle)
-                    means = [_mean(apex_errors(run, lab)[sel]) for lab in labels]
-                    ax.plot(
-                        ns, 100 * np.array(means), "o--", ms=3, label=f"Yu {90 - math.degrees(angle):.0f} deg"
-                    )
+        for g in summary:
+            rows = _by_map(g).get(name, [])
+            ns = [_n(r) for r in rows]
+            if g["kind"] == "yu":
+                for i, a in enumerate(rows[0]["by_angle"] if rows else ()):
+                    label = f"Yu {a['angle_of_attack_deg']:.0f} deg"
+                    ax.plot(ns, 100 * _means(rows, i), "o--", ms=3, label=label)
             else:
-                means = [_mean(apex_errors(run, lab)) for lab in labels]
-                ax.plot(ns, 100 * np.array(means), "o-", ms=3, label=run.grid.name)
+                ax.plot(ns, 100 * _means(rows), "o-", ms=3, label=g["name"])
         ax.set_yscale("log")
         ax.set_xlabel("passes n")
         ax.set_ylabel("mean next-apex error [%]")
@@ -250,3 +238,25 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return Path(path)
+
+
+class ConvergenceStudy(study.Study):
+    """docs/convergence.*: the maps of ``map_names`` (default: all) with a pass count, n = 0..8."""
+
+    name = STUDY
+
+    def __init__(self, map_names=None):
+        self.map_names = map_names
+
+    def applies(self) -> bool:
+        return bool(study_maps(self.map_names))
+
+    def measure(self, show_progress=None) -> dict:
+        runs = measure_all(variants(self.map_names), show_progress=show_progress)
+        return {"grids": summarize(runs, STUDY)}
+
+    def markdown(self, record: dict, figure_name: str) -> str:
+        return render_markdown(record["grids"], figure_name)
+
+    def figure(self, record: dict, path: Path) -> Path:
+        return figure(record["grids"], path)

@@ -1,6 +1,7 @@
 """The periodic-gait study (measurements): each map's fixed points and eigenvalues against the exact
-ones, and the self-stable region. ``slipmaps accuracy`` writes docs/stability.md, .json, .png from
-it (:func:`write`; rendering in :mod:`.stability_report`).
+ones, and the self-stable region. ``slipmaps accuracy`` writes docs/stability.json, .md, .png from
+it (:func:`measure` is the record; :class:`.stability_report.StabilityStudy` renders it, through
+:mod:`.study`).
 
 * Fixed points (:data:`GRIDS`, small: the exact simulator finds each line's fixed points in about
   0.2-0.5 s with ``solve_ivp``): on every line of every grid, :func:`.gait.fixed_points` of the
@@ -16,18 +17,16 @@ it (:func:`write`; rendering in :mod:`.stability_report`).
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..analysis.gait import FixedPoint, fixed_points
 from ..api import index
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.progress import progress
+from . import study
 from .grids import equispaced
-from .report_format import rounded
 
 __all__ = [
     "EXACT",
@@ -44,9 +43,7 @@ __all__ = [
     "region_maps",
     "region_record",
     "measure",
-    "to_json",
     "from_json",
-    "write",
 ]
 
 EXACT = "exact"
@@ -212,23 +209,7 @@ def measure(
     }
 
 
-def to_json(record: dict) -> str:
-    return json.dumps({"version": 1, **rounded(record)}, indent=1) + "\n"
-
-
 def from_json(text: str) -> dict:
-    data = json.loads(text)
+    """The record of docs/stability.json: ``grids`` and ``region``."""
+    data = study.from_json(text)
     return {"grids": data["grids"], "region": data["region"]}
-
-
-def write(out: str | Path = "docs/stability.md", map_names=None, show_progress=None) -> list[Path]:
-    """Measure (all maps, or ``map_names``) and write ``out`` (+ .json, .png)."""
-    from .stability_report import figure, render_markdown
-
-    md = Path(out)
-    text = to_json(measure(map_names, show_progress=show_progress))
-    js, png = md.with_suffix(".json"), md.with_suffix(".png")
-    js.write_text(text, encoding="utf-8")
-    record = from_json(text)
-    md.write_text(render_markdown(record, png.name), encoding="utf-8")
-    return [md, js, figure(record, png)]

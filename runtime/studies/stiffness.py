@@ -1,10 +1,10 @@
 """The variable-stiffness study (measurements): every map that accepts k_c != k_d against the exact
 simulator over k_d/k_c, and the bottom leg length estimates (153) and (154).
 
-``slipmaps accuracy`` writes docs/stiffness.md, .json, .png from it (:func:`write`; rendering in
-:mod:`.stiffness_report`). For every grid of :func:`grids` (the human runner's and the robot
-hopper's of docs/accuracy.md, the nonsymmetric ones subsampled) and every k_d/k_c of
-:data:`RATIOS` (k_c the parameter set's k):
+``slipmaps accuracy`` writes docs/stiffness.json, .md, .png from it (:func:`summarize` is the
+record; :class:`.stiffness_report.StiffnessStudy` renders it, through :mod:`.study`). For every
+grid of :func:`grids` (the human runner's and the robot hopper's of docs/accuracy.md, the
+nonsymmetric ones subsampled) and every k_d/k_c of :data:`RATIOS` (k_c the parameter set's k):
 
 * exact: :func:`~slipmaps.runtime.exact.reference.simulate_step` with (k_c, k_d);
 * each variant of :func:`variants` (every map whose parameters include k_d but the exact one, at
@@ -30,12 +30,10 @@ during the compression); and (154), Geyer et al.'s bottom l0 (1 + a_ab - b_ab) (
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 import numpy as np
 from slipmaps.generated import slip_model
@@ -48,6 +46,7 @@ from ..api.params import SlipParams
 from ..api.progress import progress
 from ..api.results import GROUPS
 from ..exact.reference import simulate_step
+from . import study
 from .accuracy import (
     GridRun,
     Variant,
@@ -70,9 +69,7 @@ __all__ = [
     "measure",
     "errors",
     "summarize",
-    "to_json",
     "from_json",
-    "write",
 ]
 
 #: The stiffness ratios k_d/k_c of the study (k_c = the parameter set's k).
@@ -354,26 +351,6 @@ def summarize(studies: Sequence[GridStudy]) -> list[dict]:
     return rounded(out)
 
 
-def to_json(summary: list[dict]) -> str:
-    return json.dumps({"version": 1, "grids": summary}, indent=1) + "\n"
-
-
 def from_json(text: str) -> list[dict]:
-    return json.loads(text)["grids"]
-
-
-def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
-    """Measure the variants of ``map_names`` (default: all) and write ``out`` (+ .json, .png); nothing
-    when no map of ``map_names`` accepts k_c != k_d."""
-    from .stiffness_report import figure, render_markdown
-
-    chosen = variants(map_names)
-    if not chosen:
-        return []
-    md = Path(out)
-    text = to_json(summarize(measure(chosen, show_progress=show_progress)))
-    js, png = md.with_suffix(".json"), md.with_suffix(".png")
-    js.write_text(text, encoding="utf-8")
-    record = from_json(text)
-    md.write_text(render_markdown(record, png.name), encoding="utf-8")
-    return [md, js, figure(record, png)]
+    """The grids of docs/stiffness.json (:func:`summarize`'s list)."""
+    return study.from_json(text)["grids"]
