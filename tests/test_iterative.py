@@ -85,6 +85,7 @@ def test_zeroth_iterate_choices_are_every_map_not_itself_iterated_from_one():
     no edit elsewhere), plus the held state."""
     maps = {m.name for m in slipmaps.maps() if m.name != "exact"}
     starters = {n for n in maps if "zeroth" not in {o.name for o in index.lookup(n).options}}
+    assert starters and starters < maps, (starters, maps)
     for name in ("iterative", "iterative-report", "iterative-compression", "iterative-report-compression"):
         assert set(index.lookup(name).option("zeroth").choices) == starters | {"held"}, name
 
