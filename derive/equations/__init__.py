@@ -133,7 +133,10 @@ _REGISTRY: dict[str, list[Entry]] = {}
 
 
 def _section_name(module: str) -> str:
-    return module.rsplit(".", 1)[-1]
+    """The section module that ``module`` belongs to: itself (``...equations.sec3``), or the
+    section package it lies in (``...equations.sec5.sec5_2_1`` is in ``sec5``)."""
+    inside = module.partition(f"{__name__}.")[2]
+    return inside.split(".")[0] if inside else module.rsplit(".", 1)[-1]
 
 
 def _register(entry: Entry, before: str | None = None) -> None:

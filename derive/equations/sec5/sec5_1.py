@@ -29,9 +29,9 @@ from functools import cache
 
 import sympy as sp
 
-from ..ir import sym
-from ..maps import geyer, geyer_vs, iterative_helpers
-from ..maps.iterative_helpers import (
+from ...ir import sym
+from ...maps import geyer, geyer_vs, iterative_helpers
+from ...maps.iterative_helpers import (
     BOTTOM,
     H_INV,
     P_TH_N,
@@ -49,8 +49,8 @@ from ..maps.iterative_helpers import (
     t_b,
     t_td,
 )
-from ..model import mechanics
-from ..symbols import (
+from ...model import mechanics
+from ...symbols import (
     E,
     a,
     b,
@@ -76,7 +76,7 @@ from ..symbols import (
     rho,
     t,
 )
-from . import definition, equation, expect, expect_nonzero, expect_zero
+from .. import definition, equation, expect, expect_nonzero, expect_zero
 
 XI = sp.Symbol("xi", positive=True)  # the mean-value point xi_hat_r, as a symbol
 QUARTER, HALF = sp.Rational(1, 4), sp.Rational(1, 2)
