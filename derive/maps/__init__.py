@@ -102,6 +102,21 @@ def _declared(attr: str) -> list[tuple[str, object]]:
     return _tuples(attr) + lazy
 
 
+def _declares(module) -> bool:
+    """Whether ``module`` declares a map: a ``declare_*`` function, or a module attribute that is a
+    declaration or a tuple of them (``MAPS``, ``HALVES``, or any other name)."""
+    from ..halfspec import HalfSpec
+    from ..mapspec import MapSpec
+
+    def is_spec(value) -> bool:
+        return isinstance(value, (MapSpec, HalfSpec))
+
+    values = [v for k, v in vars(module).items() if not k.startswith("__")]
+    return any(hasattr(module, f) for f in _FUNCTIONS) or any(
+        is_spec(v) or (isinstance(v, tuple) and bool(v) and all(is_spec(x) for x in v)) for v in values
+    )
+
+
 def _check_layout(declared: list[tuple[str, object]], what: str) -> None:
     """Each declaration lives in the module named the longest prefix of its identifier; a module
     declares something or is named ``*_helpers``, never both."""
@@ -115,8 +130,7 @@ def _check_layout(declared: list[tuple[str, object]], what: str) -> None:
                 f"derive/maps/{home or spec.ident}.py, the module named after the map or its family"
             )
     for m in _modules():
-        declares = any(hasattr(m, a) for a in _TUPLES + _FUNCTIONS)
-        if declares == _short(m).endswith(HELPERS_SUFFIX):
+        if _declares(m) == _short(m).endswith(HELPERS_SUFFIX):
             raise ValueError(
                 f"derive/maps/{_short(m)}.py: a module that declares no map is named *{HELPERS_SUFFIX}.py, "
                 "and only such a module"
