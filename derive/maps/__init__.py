@@ -52,7 +52,8 @@ OPTION_ROLES = {
     "accuracy-variants": "docs/accuracy.md measures every value but the default once, the other options at "
     "their defaults (a choice's other choices, an integer's other whole numbers in [low, high])",
     "accuracy-passes": "the pass count of an iterated correction: docs/accuracy.md measures the map at one "
-    "pass and at its fixed point (the option's tolerance option in step)",
+    "pass and at its fixed point (1 pass with the map's tolerance option at 0, 100 passes with it at "
+    "1e-12)",
     "accuracy-readings": "docs/accuracy.md measures every value at one pass and at the fixed point of the "
     "map's accuracy-passes option",
     "convergence-passes": "the pass count docs/convergence.md varies, n = 0..8 (the tolerance option at 0: "

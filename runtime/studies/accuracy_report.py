@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import study
+from . import study as pipeline
 from .accuracy import (
     GridRun,
     apex_errors,
@@ -103,7 +103,7 @@ def figure_record(runs: list[GridRun]) -> dict:
 
 def from_json(text: str) -> list[dict]:
     """The grids of docs/accuracy.json (:func:`summarize`'s list)."""
-    return study.from_json(text)["grids"]
+    return pipeline.from_json(text)["grids"]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -375,7 +375,7 @@ def figure(record: dict, path: str | Path) -> Path:
     return Path(path)
 
 
-class AccuracyStudy(study.Study):
+class AccuracyStudy(pipeline.Study):
     """docs/accuracy.*: every map of ``map_names`` (default: all) and its variants against the exact
     simulator on the grids of :mod:`.grids`."""
 

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from ..api import index
-from . import study
+from . import study as pipeline
 from .accuracy import Variant, measure_all, options_with
 from .accuracy_report import from_json, summarize
 
@@ -240,7 +240,7 @@ def figure(summary: list[dict], path: str | Path) -> Path:
     return Path(path)
 
 
-class ConvergenceStudy(study.Study):
+class ConvergenceStudy(pipeline.Study):
     """docs/convergence.*: the maps of ``map_names`` (default: all) with a pass count, n = 0..8."""
 
     name = STUDY

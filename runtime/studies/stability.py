@@ -25,7 +25,7 @@ from ..analysis.gait import FixedPoint, fixed_points
 from ..api import index
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.progress import progress
-from . import study
+from . import study as pipeline
 from .grids import equispaced
 
 __all__ = [
@@ -211,5 +211,5 @@ def measure(
 
 def from_json(text: str) -> dict:
     """The record of docs/stability.json: ``grids`` and ``region``."""
-    data = study.from_json(text)
+    data = pipeline.from_json(text)
     return {"grids": data["grids"], "region": data["region"]}

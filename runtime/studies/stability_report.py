@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import study
+from . import study as pipeline
 from .report_format import sig
 from .stability import EXACT, measure
 
@@ -477,7 +477,7 @@ def figure(record: dict, path: str | Path) -> Path:
     return Path(path)
 
 
-class StabilityStudy(study.Study):
+class StabilityStudy(pipeline.Study):
     """docs/stability.*: the fixed points of every map of ``map_names`` (default: all) against the
     exact ones, and the self-stable region of :func:`.stability.region_maps`."""
 

@@ -46,7 +46,7 @@ from ..api.params import SlipParams
 from ..api.progress import progress
 from ..api.results import GROUPS
 from ..exact.reference import simulate_step
-from . import study
+from . import study as pipeline
 from .accuracy import (
     GridRun,
     Variant,
@@ -353,4 +353,4 @@ def summarize(studies: Sequence[GridStudy]) -> list[dict]:
 
 def from_json(text: str) -> list[dict]:
     """The grids of docs/stiffness.json (:func:`summarize`'s list)."""
-    return study.from_json(text)["grids"]
+    return pipeline.from_json(text)["grids"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from . import study
+from . import study as pipeline
 from .report_format import fails, pct, sig
 from .stiffness import BOTTOM_MAP, ERRORS, SUBSAMPLED, measure, summarize, variants
 
@@ -358,7 +358,7 @@ def figure(record: list[dict], path: str | Path) -> Path:
     return Path(path)
 
 
-class StiffnessStudy(study.Study):
+class StiffnessStudy(pipeline.Study):
     """docs/stiffness.*: the maps of ``map_names`` (default: all) that accept k_c != k_d, over k_d/k_c."""
 
     name = "stiffness"
