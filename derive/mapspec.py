@@ -48,6 +48,9 @@ class Option:
     #: Python module whose ``BACKEND`` runs it), e.g. the exact map's ``method="scipy"`` (solve_ivp).
     #: Such an option selects the implementation and is not a kernel argument.
     backends: tuple[tuple[str, str], ...] = ()
+    #: What the studies do with the option (which of its values they measure): any of
+    #: :data:`slipmaps.derive.maps.OPTION_ROLES`; published in the index (``Option.roles``).
+    roles: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.choices and self.default not in self.values:
@@ -126,6 +129,7 @@ class Option:
             "at_rest_length": list(self.at_rest_length),
             "kernel": self.kernel,
             "backends": dict(self.backends),
+            "roles": list(self.roles),
         }
 
     def domain_guard(self) -> Guard | None:
@@ -195,6 +199,10 @@ class MapSpec:
     #: no accuracy claim (the tests over every map check its contract, not its accuracy).
     as_printed: bool = False
     _cache: dict = field(default_factory=dict, compare=False, repr=False)
+    #: What the studies and the command line do with the map (the maps each study runs, draws or
+    #: compares with): any of :data:`slipmaps.derive.maps.MAP_ROLES`; published in the index
+    #: (``MapInfo.roles``).
+    roles: tuple[str, ...] = ()
 
     def __post_init__(self):
         unknown = [p for p in self.params if p not in catalog.PARAMS]
@@ -454,6 +462,7 @@ class MapSpec:
             "summary": self.summary,
             "as_printed": self.as_printed,
             "approximation_statuses": list(self.approximation_statuses),
+            "roles": list(self.roles),
             "kernels": kernels,
             "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
         }
