@@ -60,10 +60,6 @@ from .defaults import (
     stiffness_number,
 )
 
-#: The reference of ``compare`` (``"exact"`` in the index; spelled here so that building the parser,
-#: and so ``slipmaps generate``, never needs the generated index).
-EXACT = "exact"
-
 __all__ = ["main", "build_parser", "BROKEN_PIPE"]
 
 #: The exit status when standard output's reader closed the pipe early (128 + SIGPIPE, the status
@@ -132,7 +128,9 @@ def build_parser() -> argparse.ArgumentParser:
         default=None,
         help="the map to compare (default geyer; geyer-vs when k_c != k_d; see `slipmaps maps`)",
     )
-    cmp_.add_argument("--against", default=EXACT, help="the reference map (default %(default)s)")
+    cmp_.add_argument(
+        "--against", default=None, help="the reference map (default: the exact map, the ground truth)"
+    )
     cmp_.add_argument(
         "--option", action="append", metavar="KEY=VALUE", help="an option of --map (repeatable)"
     )
@@ -278,16 +276,18 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     note = stiffness_note(args, params)
     if note:
         print(f"slipmaps compare: note: {note}", file=sys.stderr)
+    from ..api.index import EXACT
     from .compare import compare, default_map, format_table, plot
 
     name = args.map or default_map(params)
+    against = args.against or EXACT
     c = compare(
         params,
         map=name,
-        against=args.against,
+        against=against,
         **step,
         options=map_options(name, args.option),
-        against_options=map_options(args.against, args.against_option),
+        against_options=map_options(against, args.against_option),
     )
     if path:
         try:
@@ -345,13 +345,13 @@ def _accuracy_out(args: argparse.Namespace) -> Path:
 
 def _cmd_accuracy(args: argparse.Namespace) -> int:
     from ..api.index import get
-    from ..studies.accuracy_report import write
+    from ..studies.runner import run
 
     names = None if args.map == "all" else [get(args.map).name]
-    if names == [EXACT]:
+    if names is not None and get(names[0]).ground_truth:
         raise ValueError("accuracy compares maps against the exact simulator; choose an approximate map")
     out = _accuracy_out(args)  # before any work
-    for path in write(out, names, show_progress=False if args.no_progress else None):
+    for path in run(out, names, show_progress=False if args.no_progress else None):
         print(f"wrote {path}")
     return 0
 

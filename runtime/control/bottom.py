@@ -31,7 +31,7 @@ from ..api.params import SlipParams
 from ..api.validate import check_params, polar_state, real
 from . import compiled
 from .compiled import BOTTOM_OUTPUTS, N_FLOATS, N_HEAD, N_INTS
-from .deadbeat import _CODES, DEFAULT_STIFFNESS_RANGE, MAX_EVALUATIONS, SCAN, TOL, PlanStatus
+from .deadbeat import DEFAULT_STIFFNESS_RANGE, MAX_EVALUATIONS, PLAN_STATUS, SCAN, TOL, PlanStatus
 
 __all__ = ["AIMS", "BottomDeadbeat", "BottomResult"]
 
@@ -51,7 +51,7 @@ class BottomResult:
 
     @property
     def status(self) -> PlanStatus:
-        return _CODES[int(self._out[0])]
+        return PLAN_STATUS[int(self._out[0])]
 
     @property
     def map_status(self) -> Status:

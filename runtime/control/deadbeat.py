@@ -96,10 +96,11 @@ class PlanStatus(str, enum.Enum):
         return self.value
 
 
-_CODES = {compiled.REACHED: PlanStatus.REACHED, compiled.UNREACHABLE: PlanStatus.UNREACHABLE}
-_CODES[compiled.MAP_FAILED] = PlanStatus.MAP_FAILED
+#: The code the solver writes -> the plan status.
+PLAN_STATUS = {compiled.REACHED: PlanStatus.REACHED, compiled.UNREACHABLE: PlanStatus.UNREACHABLE}
+PLAN_STATUS[compiled.MAP_FAILED] = PlanStatus.MAP_FAILED
 #: Plan status -> the code the solver writes (batch results hold codes).
-PLAN_CODES = {s: c for c, s in _CODES.items()}
+PLAN_CODES = {s: c for c, s in PLAN_STATUS.items()}
 
 #: The control names and the kernel argument each sets.
 CONTROLS = {"touchdown_angle": "q_th_td", "k_c": "k_c", "k_d": "k_d", "k": "k"}
@@ -166,7 +167,7 @@ class DeadbeatResult:
 
     @property
     def status(self) -> PlanStatus:
-        return _CODES[int(self._out[0])]
+        return PLAN_STATUS[int(self._out[0])]
 
     @property
     def map_status(self) -> Status:
@@ -363,7 +364,7 @@ class DeadbeatBatch(Mapping):
     def counts(self) -> dict[str, int]:
         codes, counts = np.unique(self.status, return_counts=True)
         order = np.argsort(-counts, kind="stable")
-        return {_CODES[int(codes[i])].value: int(counts[i]) for i in order}
+        return {PLAN_STATUS[int(codes[i])].value: int(counts[i]) for i in order}
 
     def __repr__(self) -> str:
         return f"DeadbeatBatch(map={self.map!r}, shape={self.shape}, status={self.counts()})"
