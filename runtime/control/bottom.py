@@ -23,7 +23,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from slipmaps.generated.status import Status
 
 from ..api.calls import KERNELS, Call
 from ..api.numeric import num
@@ -31,7 +30,7 @@ from ..api.params import SlipParams
 from ..api.validate import check_params, polar_state, real
 from . import compiled
 from .compiled import BOTTOM_OUTPUTS, N_FLOATS, N_HEAD, N_INTS
-from .deadbeat import DEFAULT_STIFFNESS_RANGE, MAX_EVALUATIONS, PLAN_STATUS, SCAN, TOL, PlanStatus
+from .deadbeat import DEFAULT_STIFFNESS_RANGE, MAX_EVALUATIONS, SCAN, TOL, SolveStatus
 
 __all__ = ["AIMS", "BottomDeadbeat", "BottomResult"]
 
@@ -39,23 +38,16 @@ __all__ = ["AIMS", "BottomDeadbeat", "BottomResult"]
 AIMS = {"both": (1, 1), "height": (1, 0), "speed": (0, 1)}
 
 
-class BottomResult:
+class BottomResult(SolveStatus):
     """One bottom-stage solve: ``status`` (:class:`~.deadbeat.PlanStatus`), ``k_d``, the predicted
     next apex ``apex_height`` / ``apex_speed``, ``residual`` (scaled), ``map_status``, ``t_half``,
-    ``t_ascent``, ``liftoff`` (the polar state), ``evaluations``."""
+    ``t_ascent``, ``liftoff`` (the polar state), ``evaluations``; ``reached``, ``ok`` as a
+    :class:`~.deadbeat.DeadbeatResult`'s."""
 
     __slots__ = ("_out", "half", "targets")
 
     def __init__(self, half: str, out: np.ndarray, targets):
         self._out, self.half, self.targets = out, half, targets
-
-    @property
-    def status(self) -> PlanStatus:
-        return PLAN_STATUS[int(self._out[0])]
-
-    @property
-    def map_status(self) -> Status:
-        return Status(int(self._out[1]))
 
     @property
     def k_d(self) -> float:

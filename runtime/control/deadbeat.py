@@ -79,6 +79,7 @@ __all__ = [
     "DeadbeatBatch",
     "DeadbeatResult",
     "PlanStatus",
+    "SolveStatus",
     "deadbeat",
     "deadbeat_batch",
     "default_angle",
@@ -136,7 +137,32 @@ _SIN1 = math.sin(1.0)
 _HALF_PI = 0.5 * math.pi
 
 
-class DeadbeatResult:
+class SolveStatus:
+    """The status of a solve held in a solver's row ``_out`` (:class:`DeadbeatResult`, the bottom
+    stage's result): ``status``, ``map_status``, ``reached``, ``ok``."""
+
+    __slots__ = ()
+    _out: np.ndarray
+
+    @property
+    def status(self) -> PlanStatus:
+        return PLAN_STATUS[int(self._out[0])]
+
+    @property
+    def map_status(self) -> Status:
+        return Status(int(self._out[1]))
+
+    @property
+    def reached(self) -> bool:
+        return int(self._out[0]) == compiled.REACHED
+
+    @property
+    def ok(self) -> bool:
+        """True unless the map failed (a reached or the closest reachable apex is returned)."""
+        return int(self._out[0]) != compiled.MAP_FAILED
+
+
+class DeadbeatResult(SolveStatus):
     """One deadbeat solve (module docstring); SI units, NaN where a value does not exist. The values
     are read from the solver's row when asked for (a run asks for a few of them per step).
 
@@ -164,23 +190,6 @@ class DeadbeatResult:
     @property
     def controls(self) -> tuple[str, ...]:
         return self._ctl.controls
-
-    @property
-    def status(self) -> PlanStatus:
-        return PLAN_STATUS[int(self._out[0])]
-
-    @property
-    def map_status(self) -> Status:
-        return Status(int(self._out[1]))
-
-    @property
-    def reached(self) -> bool:
-        return int(self._out[0]) == compiled.REACHED
-
-    @property
-    def ok(self) -> bool:
-        """True unless the map failed (a reached or the closest reachable apex is returned)."""
-        return int(self._out[0]) != compiled.MAP_FAILED
 
     @property
     def jacobians(self) -> int:

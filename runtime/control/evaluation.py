@@ -70,6 +70,8 @@ SPEED_FLOOR = 1.0
 MISMATCHES = (("mass", 0.05), ("mass", 0.10), ("stiffness", 0.05), ("stiffness", 0.10))
 #: The d of the rough ground with mismatch (known ground).
 MISMATCH_D = 0.3
+#: How the mismatch row reduces the per-scenario errors.
+_REDUCTIONS = (("mean", np.mean), ("max", np.max))
 #: Problems timed per model, and repetitions (the best of each).
 COST_PROBLEMS, COST_REPEATS = 400, 3
 
@@ -259,19 +261,9 @@ def mismatch(examples: Path, names, scenarios, variants, runs: int, bar=None) ->
             steps = [c for c in cells if c["steps"]]
             sc = _rough_scenario(var["model"], KNOWN, MISMATCH_D, two_stage=var["two_stage"])
             sc = sc.with_(**{f"mismatch_{quantity}": fraction})
-            row[var["label"]] = {
-                "height_error_mean": float(np.mean([c["height_error_mean"] for c in steps]))
-                if steps
-                else math.nan,
-                "height_error_max": float(np.max([c["height_error_max"] for c in steps]))
-                if steps
-                else math.nan,
-                "speed_error_mean": float(np.mean([c["speed_error_mean"] for c in steps]))
-                if steps
-                else math.nan,
-                "speed_error_max": float(np.max([c["speed_error_max"] for c in steps]))
-                if steps
-                else math.nan,
+            keys = [(f"{q}_error_{how}", f) for q in ("height", "speed") for how, f in _REDUCTIONS]
+            row[var["label"]] = {k: float(f([c[k] for c in steps])) if steps else math.nan for k, f in keys}
+            row[var["label"]] |= {
                 "falls": int(sum(c["fell"] for c in cells)),
                 "rough_share": survival(sc, MISMATCH_D, runs),
             }

@@ -165,15 +165,21 @@ class Plant:
         lo = S[:, self._lo]
         bottom = S[:, self._bo]
         lo[status != 0] = math.nan
+        t_bottom = S[:, self._stance.outputs.index("t_bottom")]
+        t_stance = S[:, self._stance.outputs.index("t_stance")]
+        return self._finish(status, td, t_descent, foot_x, t_bottom, bottom, t_stance, lo, kc, kd)
+
+    def _finish(self, status, td, t_descent, foot_x, t_bottom, bottom, t_stance, lo, kc, kd) -> PlantSteps:
+        """The ascent from liftoff ``lo`` and the steps' record (NaN in the rows that failed)."""
         apex_h, apex_v, t_ascent, step_length = self._ascent(lo, status, foot_x)
         out = PlantSteps(
             status=status,
             touchdown=td,
             t_descent=t_descent,
             foot_x=foot_x,
-            t_bottom=S[:, self._stance.outputs.index("t_bottom")],
+            t_bottom=t_bottom,
             bottom=bottom,
-            t_stance=S[:, self._stance.outputs.index("t_stance")],
+            t_stance=t_stance,
             liftoff=lo,
             t_ascent=t_ascent,
             apex_height=apex_h,
@@ -208,20 +214,25 @@ class Plant:
             np.ascontiguousarray(np.atleast_1d(np.asarray(x, dtype=float)))
             for x in np.broadcast_arrays(apex_height, apex_speed, touchdown_angle, ground, k_c)
         )
-        n = h.shape[0]
         status, td, t_descent, foot_x = self._descent(h, v, th, gr)
-        call, spec = self._half("touchdown")
-        values = {a: td[:, j] for j, a in enumerate(spec.rows)} | {"k_c": kc}
+        bottom, t_half = self._run_half("touchdown", td, "k_c", kc, status)
+        return status, td, t_descent, foot_x, t_half, bottom
+
+    def _run_half(self, start: str, rows: np.ndarray, key: str, stiffness: np.ndarray, status: np.ndarray):
+        """The half map from ``start`` on the polar ``rows`` with its stiffness ``key``: its end
+        state (NaN where a row failed) and its duration; a fresh failure's code into ``status``."""
+        call, spec = self._half(start)
+        n = status.shape[0]
+        values = {a: rows[:, j] for j, a in enumerate(spec.rows)} | {key: stiffness}
         base = {**call.values, **self.params.values()}
         cols = [values[a] if a in values else np.full(n, float(base[a])) for a in spec.args]
         D = _call(spec.functions()[0], len(spec.outputs) + 1, cols)
         code = D[:, -1].astype(np.int64)
         fresh = (status == 0) & (code != 0)
         status[fresh] = code[fresh]
-        end = [spec.outputs.index(f"end_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]
-        bottom = D[:, end]
-        bottom[status != 0] = math.nan
-        return status, td, t_descent, foot_x, D[:, spec.outputs.index("t_half")], bottom
+        end = D[:, [spec.outputs.index(f"end_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]]
+        end[status != 0] = math.nan
+        return end, D[:, spec.outputs.index("t_half")]
 
     def decompress(self, first, k_c, k_d) -> PlantSteps:
         """The second stage: from :meth:`compress`'s result ``first`` the decompression half with
@@ -229,39 +240,10 @@ class Plant:
         status, td, t_descent, foot_x, t_bottom, bottom = (np.array(x, copy=True) for x in first)
         kc = np.broadcast_to(np.asarray(k_c, dtype=float), status.shape).copy()
         kd = np.broadcast_to(np.asarray(k_d, dtype=float), status.shape).copy()
-        n = status.shape[0]
-        call, spec = self._half("bottom")
         rows = np.where(np.isfinite(bottom), bottom, 0.0)
         rows[:, 0] = np.where(status == 0, rows[:, 0], self.params.l0 * 0.9)
-        values = {a: rows[:, j] for j, a in enumerate(spec.rows)} | {"k_d": kd}
-        base = {**call.values, **self.params.values()}
-        cols = [values[a] if a in values else np.full(n, float(base[a])) for a in spec.args]
-        D = _call(spec.functions()[0], len(spec.outputs) + 1, cols)
-        code = D[:, -1].astype(np.int64)
-        fresh = (status == 0) & (code != 0)
-        status[fresh] = code[fresh]
-        end = [spec.outputs.index(f"end_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]
-        lo = D[:, end]
-        lo[status != 0] = math.nan
-        t_half = D[:, spec.outputs.index("t_half")]
-        apex_h, apex_v, t_ascent, step_length = self._ascent(lo, status, foot_x)
-        out = PlantSteps(
-            status=status,
-            touchdown=td,
-            t_descent=t_descent,
-            foot_x=foot_x,
-            t_bottom=t_bottom,
-            bottom=bottom,
-            t_stance=t_bottom + t_half,
-            liftoff=lo,
-            t_ascent=t_ascent,
-            apex_height=apex_h,
-            apex_speed=apex_v,
-            step_length=step_length,
-            k_c=kc,
-            k_d=kd,
-        )
-        return _blank(out)
+        lo, t_half = self._run_half("bottom", rows, "k_d", kd, status)
+        return self._finish(status, td, t_descent, foot_x, t_bottom, bottom, t_bottom + t_half, lo, kc, kd)
 
 
 def _blank(out: PlantSteps) -> PlantSteps:

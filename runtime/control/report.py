@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.files import rounded
 from ..api.index import get
 from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
@@ -29,17 +30,6 @@ TARGETS = {
     "cost_iterative": "a step planned in under 50 us with iterative",
     "cost_geyer": "a step planned in under 5 us with geyer",
 }
-
-
-def rounded(x, digits: int = 6):
-    """``x`` (floats, or dicts and lists of them) to ``digits`` significant digits; NaN -> None."""
-    if isinstance(x, float):
-        return None if not math.isfinite(x) else float(f"{x:.{digits}g}")
-    if isinstance(x, dict):
-        return {k: rounded(v, digits) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [rounded(v, digits) for v in x]
-    return x
 
 
 def _f(x, digits: int = 3) -> str:

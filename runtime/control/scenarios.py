@@ -44,6 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.files import read_toml
 from ..api.index import get, get_half
 from ..api.params import FIELDS, HUMAN_RUNNER, ParamError, ParamTypeError, SlipParams
 from .deadbeat import CONTROLS
@@ -159,24 +160,6 @@ class Scenario:
         out["ground"] = list(self.ground)
         out["controls"] = None if self.controls is None else list(self.controls)
         return out
-
-
-def read_toml(path: str | Path) -> dict:
-    """A TOML file as a dict (tomllib, Python 3.11+; tomli on 3.10); ValueError naming the file."""
-    try:
-        import tomllib
-    except ImportError:  # Python 3.10
-        try:
-            import tomli as tomllib
-        except ImportError:
-            raise ValueError("reading a TOML file needs Python 3.11 (tomllib) or the tomli package") from None
-    try:
-        with open(path, "rb") as f:
-            return tomllib.load(f)
-    except OSError as exc:
-        raise ValueError(f"cannot read {path}: {exc.strerror}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{path}: not valid TOML: {exc}") from None
 
 
 class _Keys:

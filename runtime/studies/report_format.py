@@ -8,18 +8,9 @@ from __future__ import annotations
 
 import math
 
+from ..api.files import rounded
+
 __all__ = ["rounded", "sig", "pct", "fails"]
-
-
-def rounded(x, digits: int = 6):
-    """``x`` (a float, or dicts / lists of them) to ``digits`` significant digits; non-finite -> None."""
-    if isinstance(x, float):
-        return None if not math.isfinite(x) else float(f"{x:.{digits}g}")
-    if isinstance(x, dict):
-        return {k: rounded(v, digits) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [rounded(v, digits) for v in x]
-    return x
 
 
 def sig(x: float, digits: int = 3) -> str:

@@ -24,11 +24,11 @@ import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 from slipmaps.generated import maps_index
 
+from ..api.files import read_toml
 from ..api.index import EXACT, MapInfo, get, maps
 from ..api.params import HUMAN_RUNNER, SlipParams
 from ..api.results import columns as result_columns
@@ -334,21 +334,3 @@ def axes_by_name(axes: object) -> object:
             raise ValueError(f"axis {a['name']!r} given twice in axes; give each quantity once")
         out[a["name"]] = {k: v for k, v in a.items() if k != "name"}
     return out
-
-
-def read_toml(path: str | Path) -> dict:
-    """A TOML file as a dict (tomllib, Python 3.11+; tomli on 3.10); ValueError naming the file."""
-    try:
-        import tomllib
-    except ImportError:  # Python 3.10
-        try:
-            import tomli as tomllib
-        except ImportError:
-            raise ValueError("reading a TOML file needs Python 3.11 (tomllib) or the tomli package") from None
-    try:
-        with open(path, "rb") as f:
-            return tomllib.load(f)
-    except OSError as exc:
-        raise ValueError(f"cannot read {path}: {exc.strerror}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{path}: not valid TOML: {exc}") from None
