@@ -123,6 +123,7 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
     missing = sorted(m for m in callees if f"generated/{m}.py" not in files)
     if missing:
         raise ValueError(f"module {mod.name} calls into {missing}, which must be generated before it")
+    used = set().union(*(k["statuses"] for k in kernels))
     return render(
         "kernels.py.j2",
         source=mod.source,
@@ -132,7 +133,8 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
         imports=[f"from .{m} import {', '.join(sorted(names))}" for m, names in sorted(callees.items())],
         kernels=kernels,
         versions=VERSIONS,
-        statuses=_STATUSES,
+        statuses=[st["name"] for st in _STATUSES if st["name"] in used],
+        status_module=".status",
     )
 
 

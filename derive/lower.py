@@ -72,6 +72,8 @@ class _Ctx:
     loops: int = 0
     ops: int = 0
     callees: set[tuple[str, str]] = field(default_factory=set)
+    #: the status codes the kernel's code names (imported from generated/status.py)
+    statuses: set[str] = field(default_factory=set)
 
     def where(self, what: str) -> str:
         return f"kernel {self.kernel.name}: {what}"
@@ -173,6 +175,7 @@ def _guard(ctx: _Ctx, g: Guard, where: str) -> dict:
     if not ctx.kernel.status:
         raise LoweringError(ctx.where(f"{where} has a guard but the kernel returns no status"))
     ctx.require(g.condition, f"{where}, guard {g.status}")
+    ctx.statuses.add(g.status)
     return {"kind": "guard", "code": to_code(g.condition), "status": g.status, "doc": g.doc}
 
 
@@ -245,6 +248,8 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
     ctx.scope.frames.pop()
     if it.fail_status is not None and not ctx.kernel.status:
         raise LoweringError(ctx.where(f"{where}: a failing iteration needs a status output"))
+    if it.fail_status is not None:
+        ctx.statuses.add(it.fail_status)
     nodes = [{"kind": "comment", "text": it.comment}] if it.comment else []
     nodes.append(
         {
@@ -268,6 +273,7 @@ def _lower_switch(ctx: _Ctx, sw: Switch, idx: str) -> list[dict]:
     ctx.require(sw.selector, where)
     if not ctx.kernel.status:
         raise LoweringError(ctx.where(f"{where}: a switch needs a status output (unknown codes)"))
+    ctx.statuses.add("INVALID_INPUT")
     # Every branch must define the same public names; a name starting with "_" may be defined by
     # some branches only (a branch-local helper) and is visible after the switch only if all do.
     cases = []
@@ -328,6 +334,7 @@ def lower(kernel: Kernel) -> dict:
             if a.domain is not None:
                 ctx.require(a.domain, f"domain of argument {a.name}")
         input_guard = " and ".join(conds)
+        ctx.statuses.add("INVALID_INPUT")
     body = _lower_steps(ctx, kernel.steps)
     outputs = kernel.outputs.fields()
     missing = [f.name for f in outputs if not ctx.scope.defined(f.name)]
@@ -350,6 +357,10 @@ def lower(kernel: Kernel) -> dict:
             "scalars": [n for n in names if n not in kernel.batch.rows],
             "call": ", ".join(f"{n}[i]" if n in kernel.batch.rows else n for n in names),
         }
+    if kernel.status:
+        ctx.statuses.add("OK")
+        if kernel.check_outputs:
+            ctx.statuses.add("NUMERICAL_RANGE")
     return {
         "name": kernel.name,
         "summary": kernel.summary,
@@ -367,4 +378,5 @@ def lower(kernel: Kernel) -> dict:
         "batch": batch,
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),
+        "statuses": sorted(ctx.statuses),
     }

@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:c042f0c9cf6a9745
-#   geyer.py sha256:b93d5e8ad96a402f
-#   geyer_vs.py sha256:1fa2cded963ff2c2
-#   gravity_type0.py sha256:9ad1b5e5d037404f
-#   gravity_type1.py sha256:8df85c0847f1fb50
-#   gravity_type2.py sha256:089ac77e92240f9a
-#   gravity_type3.py sha256:e58a1a317b1fc866
-#   gravity_type4.py sha256:6bb6498e457c9b35
-#   gravity_type5.py sha256:70d4f36f9336d294
+#   flight.py sha256:d03e16d4ad28b293
+#   geyer.py sha256:b5957f8d4d622f96
+#   geyer_vs.py sha256:498b77869b6a1757
+#   gravity_type0.py sha256:09bc8f3897a63929
+#   gravity_type1.py sha256:47da0cd470c47a14
+#   gravity_type2.py sha256:d3f5e143d0032a77
+#   gravity_type3.py sha256:5317afa5553c4c39
+#   gravity_type4.py sha256:6d0d5f5a724b468f
+#   gravity_type5.py sha256:d2bee75f452c8694
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels."""
 
@@ -31,23 +31,11 @@ from .gravity_type3 import gravity_type3_stance
 from .gravity_type4 import gravity_type4_stance
 from .gravity_type5 import gravity_type5_stance
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_IMAGINARY_MOMENTUM
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")

@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:ac871132277105be
-#   geyer_jacobian.py sha256:12a6675a37ce361d
-#   geyer_vs_jacobian.py sha256:9f4d2b8cbacef934
-#   gravity_type0_jacobian.py sha256:69c71a38be2a66a5
-#   gravity_type1_jacobian.py sha256:1184a15c09105242
-#   gravity_type2_jacobian.py sha256:6e5ddc10ab49632d
-#   gravity_type3_jacobian.py sha256:11c0e268b35a560d
-#   gravity_type4_jacobian.py sha256:fb1af4380e878b21
-#   gravity_type5_jacobian.py sha256:7fb2d2401838095d
+#   flight_jacobian.py sha256:6d2a79031b9ac2b8
+#   geyer_jacobian.py sha256:ebd2115f68e33426
+#   geyer_vs_jacobian.py sha256:bb285f304f83604f
+#   gravity_type0_jacobian.py sha256:43e6e5c6eebcb499
+#   gravity_type1_jacobian.py sha256:470965ecec39f988
+#   gravity_type2_jacobian.py sha256:660c5b1015ce6676
+#   gravity_type3_jacobian.py sha256:b6db47722699db7b
+#   gravity_type4_jacobian.py sha256:100334fa0aee2645
+#   gravity_type5_jacobian.py sha256:f0240d5b343888e3
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -31,23 +31,11 @@ from .gravity_type3_jacobian import gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th
 from .gravity_type4_jacobian import gravity_type4_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
 from .gravity_type5_jacobian import gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")

@@ -35,6 +35,25 @@ class Status(IntEnum):
     IMAGINARY_MOMENTUM = 15
 
 
+# The codes as plain ints, which the generated kernel modules import (numba freezes a module-level
+# int into the machine code it caches; the codes are fixed, so such a cache stays valid).
+STATUS_OK = 0
+STATUS_INVALID_INPUT = 1
+STATUS_APEX_TOO_LOW = 2
+STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
+STATUS_NO_REAL_SOLUTION = 4
+STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
+STATUS_NO_LIFTOFF = 6
+STATUS_FALL = 7
+STATUS_LIFTOFF_DOWNWARD = 8
+STATUS_LIFTOFF_BACKWARD = 9
+STATUS_RECOMPRESSION = 10
+STATUS_INTEGRATION_FAILED = 11
+STATUS_NUMERICAL_RANGE = 12
+STATUS_NOT_CONVERGED = 13
+STATUS_ENERGY_DEFICIT = 14
+STATUS_IMAGINARY_MOMENTUM = 15
+
 #: Human-readable message for each status code.
 MESSAGES = {
     0: "ok",

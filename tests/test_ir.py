@@ -94,6 +94,7 @@ def _kernel(name, args, steps, outputs, **kw) -> Kernel:
 # Rendering and loading a module of test kernels, the way derive/generate.py does
 # ----------------------------------------------------------------------------------------------
 def render_module(kernels) -> str:
+    lowered = [lower(k) for k in kernels]
     return render(
         "kernels.py.j2",
         source="tests/test_ir.py",
@@ -101,9 +102,10 @@ def render_module(kernels) -> str:
         depends=[],
         module_doc="Kernels of tests/test_ir.py.",
         imports=[],
-        kernels=[lower(k) for k in kernels],
+        kernels=lowered,
         versions=generate.VERSIONS,
-        statuses=[{"name": nm, "code": cd, "message": msg} for nm, cd, msg in STATUS_CODES],
+        statuses=[nm for nm, _, _ in STATUS_CODES if any(nm in k["statuses"] for k in lowered)],
+        status_module="slipmaps.generated.status",
     )
 
 
@@ -935,3 +937,21 @@ def test_every_function_is_a_numba_dispatcher_and_compiles(gen):
         disp = getattr(gen, kern.name)
         disp(*([1.0] * len(kern.args)))
         assert disp.signatures, kern.name
+
+
+# ----------------------------------------------------------------------------------------------
+# The status codes: imported from generated/status.py, not copied into each module
+# ----------------------------------------------------------------------------------------------
+def test_status_codes_are_imported_not_copied(gen):
+    from slipmaps.generated import status as g_status
+
+    text = render_module(_all_kernels())
+    assert not re.search(r"^STATUS_\w+ = ", text, re.MULTILINE)
+    (line,) = re.findall(r"^from slipmaps\.generated\.status import .*$", text, re.MULTILINE)
+    names = set(re.findall(r"STATUS_(\w+)", line))
+    # exactly the codes the kernels name, with the values of derive/status.py
+    assert names == set(re.findall(r"\bSTATUS_(\w+)\b", text.replace(line, "")))
+    assert all(
+        getattr(gen, f"STATUS_{nm}") == STATUS[nm] == getattr(g_status, f"STATUS_{nm}") for nm in names
+    )
+    assert gen.guarded(0.5, 1.0)[-1] == g_status.STATUS_FALL
