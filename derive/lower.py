@@ -25,6 +25,9 @@ import sympy as sp
 from .ir import Call, Guard, Iterate, Kernel, Stage, Switch
 from .printer import to_code
 
+#: A call binding at least this many outputs binds them by one tuple unpacking.
+_UNPACK = 8
+
 
 class LoweringError(ValueError):
     """A kernel declaration that cannot be generated (names the kernel, the step and the cause)."""
@@ -35,7 +38,7 @@ def _names(expr) -> set[str]:
 
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
-_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|n\d+_\d+|conv\d+)|STATUS_\w+")
+_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|n\d+_\d+|conv\d+|NAN\d+)|STATUS_\w+")
 _TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
 
 
@@ -207,6 +210,11 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
     for out_name, local in call.bind.items():
         ctx.scope.define(local, ctx.where(where))
         binds.append({"name": local, "index": None if single else outs.index(out_name)})
+    unpack = None
+    if not single and len(binds) >= _UNPACK:
+        # one tuple unpacking instead of an indexing per output (the unbound ones to "_")
+        names = {b["index"]: b["name"] for b in binds}
+        unpack = ", ".join(names.get(i, "_") for i in range(len(outs) + (1 if callee.status else 0)))
     nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
     nodes.append(
         {
@@ -216,6 +224,7 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
             "args": ", ".join(to_code(call.args[n]) for n in callee.arg_names),
             "status_index": len(outs) if callee.status else None,
             "binds": binds,
+            "unpack": unpack,
         }
     )
     return nodes
@@ -343,7 +352,6 @@ def lower(kernel: Kernel) -> dict:
     dup_out = [n for n, c in Counter(f.name for f in outputs).items() if c > 1]
     if dup_out:
         raise LoweringError(f"kernel {kernel.name}: duplicate output(s) {dup_out}")
-    nan = "".join("NAN, " for _ in outputs)
     batch = None
     if kernel.batch is not None:
         if not kernel.status:
@@ -374,7 +382,6 @@ def lower(kernel: Kernel) -> dict:
         "status": kernel.status,
         "check_outputs": kernel.check_outputs,
         "inline": kernel.inline,
-        "nan_return": f"({nan}" if kernel.status else "",
         "batch": batch,
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),

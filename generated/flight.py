@@ -17,6 +17,8 @@ from numba import njit, prange
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD, STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
+_NAN4 = (NAN,) * 4
+_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
@@ -43,11 +45,11 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     # Total ops: 24
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+        return _NAN5 + (STATUS_APEX_TOO_LOW,)
     # touchdown state from the derived Cartesian -> polar map
     _x0 = math.sin(q_th_td)
     _x1 = math.cos(q_th_td)
@@ -62,7 +64,7 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     t_flight = _x5/_x2
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, STATUS_OK)
 
 
@@ -89,7 +91,7 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     # Total ops: 19
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -101,10 +103,10 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     b_yd = -_x1*q_thd + _x2*q_rd
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+        return _NAN4 + (STATUS_LIFTOFF_DOWNWARD,)
     # the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait
     if not ((b_xd >= -1e-09*math.sqrt(g_f*q_r))):
-        return (NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+        return _NAN4 + (STATUS_LIFTOFF_BACKWARD,)
     # apex where b_yd(t) = 0
     _x4 = (1.0/g_f)
     _x5 = _x4*b_yd
@@ -114,5 +116,5 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     dx_flight = _x5*b_xd
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, STATUS_OK)

@@ -17,6 +17,8 @@ from numba import njit, prange
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD, STATUS_LIFTOFF_BACKWARD
 
 NAN = math.nan
+_NAN8 = (NAN,) * 8
+_NAN10 = (NAN,) * 10
 
 
 @njit(cache=True, error_model="numpy")
@@ -54,12 +56,12 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     # Total ops: 48
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     drop__tan = b_y_apex__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+        return _NAN10 + (STATUS_APEX_TOO_LOW,)
     # touchdown state from the derived Cartesian -> polar map
     _x0 = math.sin(q_th_td)
     _x1 = math.cos(q_th_td)
@@ -122,7 +124,7 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     # Total ops: 48
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and ((q_r > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN8 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -141,10 +143,10 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     b_yd__tan = -_x1*q_thd__tan - _x2*q_thd + _x3*q_rd__tan + _x5*q_th__tan
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+        return _NAN8 + (STATUS_LIFTOFF_DOWNWARD,)
     # the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait
     if not ((b_xd >= -1e-09*math.sqrt(g_f*q_r))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+        return _NAN8 + (STATUS_LIFTOFF_BACKWARD,)
     # apex where b_yd(t) = 0
     _x7 = (1.0/g_f)
     _x8 = _x7*b_yd

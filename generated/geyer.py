@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
+#   flight.py sha256:a291c3b0eaea5af3
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
 
@@ -20,6 +20,11 @@ from .flight import apex_to_touchdown, liftoff_to_apex
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
+_NAN2 = (NAN,) * 2
+_NAN4 = (NAN,) * 4
+_NAN6 = (NAN,) * 6
+_NAN9 = (NAN,) * 9
+_NAN10 = (NAN,) * 10
 
 
 @njit(cache=True, error_model="numpy")
@@ -55,7 +60,7 @@ def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
     rho_d_td = _x0*q_rd_td
     # stance starts compressing
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
     _x1 = omega**2
     _x2 = 2.0*g_s/l0
@@ -73,17 +78,17 @@ def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
     b2 = (0.25)*_x5**2*(-4.0*lam*nu + mu**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN6 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x6 = math.sqrt(b2)
     b = _x6
     s_td = (-a - 1.0 + q_r_td/l0)/_x6
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN6 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN6 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     # (internal helper: its callers check that their outputs are finite)
@@ -112,7 +117,7 @@ def geyer_liftoff_phase(a, b, l0, q_r_lo):
     s_lo = (-a - 1.0 + q_r_lo/l0)/b
     # eq (14) needs |s_lo| <= 1
     if not ((abs(s_lo) <= 1.0)):
-        return (NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN2 + (STATUS_NO_LIFTOFF,)
     # eq (14), n = 0: extending root
     phase_lo = math.asin(s_lo) + 2.0*math.pi
     # (internal helper: its callers check that their outputs are finite)
@@ -196,11 +201,11 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     # Total ops: 54
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN10 + (_c0[6],)
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -209,7 +214,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     s_td = _c0[5]
     _c1 = geyer_liftoff_phase(a, b, l0, q_r_lo)
     if _c1[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+        return _NAN10 + (_c1[2],)
     phase_lo = _c1[0]
     s_lo = _c1[1]
     # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -235,10 +240,10 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     liftoff_q_thd = omega/(_x1 + b*s_lo)**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
@@ -294,11 +299,11 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
     # Total ops: 2
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN4 + (_c0[6],)
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -314,7 +319,7 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
     q_thd = _c1[3]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
@@ -369,11 +374,11 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN9 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN9 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -382,7 +387,7 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, 
     # stance: Geyer et al.'s approximate stance map
     _c1 = geyer_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
     if _c1[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
+        return _NAN9 + (_c1[10],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -391,13 +396,13 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, 
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN9 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN9 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 

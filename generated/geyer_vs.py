@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
-#   geyer.py sha256:b5957f8d4d622f96
+#   flight.py sha256:a291c3b0eaea5af3
+#   geyer.py sha256:677d7d2464b0d738
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels."""
 
@@ -22,6 +22,10 @@ from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
 
 NAN = math.nan
+_NAN1 = (NAN,) * 1
+_NAN4 = (NAN,) * 4
+_NAN12 = (NAN,) * 12
+_NAN13 = (NAN,) * 13
 
 
 @njit(cache=True, error_model="numpy")
@@ -45,7 +49,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     # Total ops: 64
     # inputs: finite and inside their domains
     if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
-        return (NAN, STATUS_INVALID_INPUT)
+        return _NAN1 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
     _x0 = g_s*m
     _x1 = _x0/k_c
@@ -59,7 +63,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     q_start = -0.5*_x1 - 0.5*_x7 + (0.25)*_x8 + (0.5)*l0 + (0.5)*abs(_x3 + _x7 + (0.5)*_x8)
     # E_ab above the minimum of the potential
     if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
-        return (NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # Newton's method on V - E: monotone from the left
     qb = q_start
     passes = 0.0
@@ -68,7 +72,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         slope = g_s*m - k_c*l0 + k_c*qb - p**2/(m*qb**3)
         # V decreasing left of the root
         if not ((slope < 0.0)):
-            return (NAN, STATUS_NO_REAL_SOLUTION)
+            return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
         _n0_0 = qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2 + (0.5)*p**2/(m*qb**2))/slope
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -78,14 +82,14 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         if _conv0:
             break
     if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-        return (NAN, STATUS_NOT_CONVERGED)
+        return _NAN1 + (STATUS_NOT_CONVERGED,)
     q_r_b = qb
     # the bottom root is at most l0
     if not ((qb <= l0)):
-        return (NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r_b)):
-        return (NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (q_r_b, STATUS_OK)
 
 
@@ -135,7 +139,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     # Total ops: 506
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN13 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -153,7 +157,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN13 + (_c0[6],)
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -185,7 +189,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+            return _NAN13 + (STATUS_RECOMPRESSION,)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -201,13 +205,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             _x16 = (1.0/m)
             i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN13 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+            return _NAN13 + (STATUS_NO_REAL_SOLUTION,)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -215,7 +219,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN13 + (_c1[2],)
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -236,10 +240,10 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN13 + (STATUS_FALL,)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN13 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
         # the virtual gravity effect of each half
@@ -270,7 +274,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN13 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -282,13 +286,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN13 + (STATUS_NOT_CONVERGED,)
     # the first half's mean momentum as a touchdown rate
     q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
     # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
     _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
     if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[6])
+        return _NAN13 + (_c2[6],)
     ab_omega = _c2[0]
     ab_omega0_hat = _c2[1]
     ab_a = _c2[2]
@@ -320,7 +324,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
     # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN13 + (STATUS_RECOMPRESSION,)
     # E_ab of (98)
     if continuity == 0.0:
         # eqs (97)-(99), E_ab the energy (27)
@@ -335,13 +339,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         _x57 = (1.0/m)
         eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN13 + (STATUS_INVALID_INPUT,)
     _x58 = ba_omega**2
     _x59 = 3.0*_x58*m + k_d
     ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
     # eq (104): real amplitude b_ba
     if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN13 + (STATUS_NO_REAL_SOLUTION,)
     # eq (104); eq (103), or (111) when constrained
     _x60 = math.sqrt(ba_b2)
     ba_b = _x60
@@ -349,7 +353,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     # eq (94): the liftoff phase of the second half
     _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
     if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
+        return _NAN13 + (_c3[2],)
     ba_phase_lo = _c3[0]
     ba_s_lo = _c3[1]
     # eqs (90)-(94) at liftoff
@@ -370,15 +374,15 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN13 + (STATUS_FALL,)
     # q_rd_lo^2 from the energy
     if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN13 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo: (11) without a gravity correction, the energy with one
     liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 
@@ -442,7 +446,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # Total ops: 558
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -460,7 +464,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN4 + (_c0[6],)
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -492,7 +496,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+            return _NAN4 + (STATUS_RECOMPRESSION,)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -508,13 +512,13 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             _x16 = (1.0/m)
             i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -522,7 +526,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -543,10 +547,10 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN4 + (STATUS_FALL,)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN4 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
         # the virtual gravity effect of each half
@@ -577,7 +581,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -589,13 +593,13 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN4 + (STATUS_NOT_CONVERGED,)
     # the first half's mean momentum as a touchdown rate
     q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
     # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
     _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
     if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c2[6])
+        return _NAN4 + (_c2[6],)
     ab_omega = _c2[0]
     ab_omega0_hat = _c2[1]
     ab_a = _c2[2]
@@ -627,7 +631,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
     # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN4 + (STATUS_RECOMPRESSION,)
     # E_ab of (98)
     if continuity == 0.0:
         # eqs (97)-(99), E_ab the energy (27)
@@ -642,13 +646,13 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         _x57 = (1.0/m)
         eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
     else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     _x58 = ba_omega**2
     _x59 = 3.0*_x58*m + k_d
     ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
     # eq (104): real amplitude b_ba
     if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
     # eq (104); eq (103), or (111) when constrained
     _x60 = math.sqrt(ba_b2)
     ba_b = _x60
@@ -656,7 +660,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     # eq (94): the liftoff phase of the second half
     _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
     if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c3[2])
+        return _NAN4 + (_c3[2],)
     ba_phase_lo = _c3[0]
     ba_s_lo = _c3[1]
     # eqs (90)-(94) at liftoff
@@ -677,10 +681,10 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN4 + (STATUS_FALL,)
     # q_rd_lo^2 from the energy
     if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN4 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo: (11) without a gravity correction, the energy with one
     liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
     # eqs (78)-(79): the first half
@@ -706,7 +710,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     q_thd = ((_x80*(P_c_compression*t/t_bottom + p_td)/c_q_r**2) if _x71 else (_x80*(P_c_decompression*_x72/(-t_bottom + t_stance) + p_b)/(_x74**2*l0**2)))
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
@@ -769,11 +773,11 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN12 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -782,25 +786,18 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _c1 = geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
     if _c1[13] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[13])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c_compression = _c1[10]
-    P_c_decompression = _c1[11]
-    passes = _c1[12]
+        return _NAN12 + (_c1[13],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN12 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 

@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:6d2a79031b9ac2b8
-#   geyer_jacobian.py sha256:ebd2115f68e33426
+#   flight_jacobian.py sha256:e58e885f76eb1aa8
+#   geyer_jacobian.py sha256:849e7410cc446e23
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -22,6 +22,13 @@ from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b, geyer_solution_jvp_q_r_
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
 
 NAN = math.nan
+_NAN2 = (NAN,) * 2
+_NAN4 = (NAN,) * 4
+_NAN21 = (NAN,) * 21
+_NAN24 = (NAN,) * 24
+_NAN26 = (NAN,) * 26
+_NAN72 = (NAN,) * 72
+_NAN91 = (NAN,) * 91
 
 
 @njit(cache=True, error_model="numpy")
@@ -367,19 +374,8 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
     # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
     _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k_c__tan)
     if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c0[12])
-    i_ab_omega = _c0[0]
-    i_ab_omega0_hat = _c0[1]
-    i_ab_a = _c0[2]
-    i_ab_b = _c0[3]
-    i_ab_phase_td = _c0[4]
-    i_ab_s_td = _c0[5]
-    i_ab_omega__tan = _c0[6]
-    i_ab_omega0_hat__tan = _c0[7]
-    i_ab_a__tan = _c0[8]
-    i_ab_b__tan = _c0[9]
-    i_ab_phase_td__tan = _c0[10]
-    i_ab_s_td__tan = _c0[11]
+        return _NAN4 + (_c0[12],)
+    (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, i_ab_omega__tan, i_ab_omega0_hat__tan, i_ab_a__tan, i_ab_b__tan, i_ab_phase_td__tan, i_ab_s_td__tan, _) = _c0
     # eqs (79)-(81): the bottom at phase 3 pi/2
     _x4 = (1.0/i_ab_omega0_hat)
     _x30 = (1.0/l0)
@@ -447,31 +443,31 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
     i_ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
     # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((i_rho_b < i_ba_a_free)):
-        return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN4 + (STATUS_RECOMPRESSION,)
     # E_ab of (98)
     if continuity == 0.0:
         # branch continuity = 0
         _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_eps_ba = _c1[0]
         i_eps_ba__tan = _c1[1]
     elif continuity == 1.0:
         # branch continuity = 1
         _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
         if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c2[2])
+            return _NAN4 + (_c2[2],)
         i_eps_ba = _c2[0]
         i_eps_ba__tan = _c2[1]
     elif continuity == 2.0:
         # branch continuity = 2
         _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omega, i_ba_omega__tan, i_bottom_q_r, i_bottom_q_r__tan, i_rho_b, i_rho_b__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
         if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c3[2])
+            return _NAN4 + (_c3[2],)
         i_eps_ba = _c3[0]
         i_eps_ba__tan = _c3[1]
     else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     _x48 = i_ba_omega**2
     _x49 = 3.0*_x48*m + k_d
     _x60 = (1.0/_x49)
@@ -489,7 +485,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
     i_ba_b2__tan = _x60*i_eps_ba__tan*m + i_ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*i_ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*i_ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
     # eq (104): real amplitude b_ba
     if not ((i_ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
     # eq (104); eq (103), or (111) when constrained
     _x61 = math.sqrt(i_ba_b2)
     _x62 = (0.5)*i_ba_b2__tan/_x61
@@ -502,7 +498,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
     # eq (94): the liftoff phase of the second half
     _c4 = geyer_liftoff_phase_jvp_a_b(i_ba_a, i_ba_b, l0, q_r_lo, i_ba_a__tan, i_ba_b__tan)
     if _c4[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c4[4])
+        return _NAN4 + (_c4[4],)
     i_ba_phase_lo = _c4[0]
     i_ba_s_lo = _c4[1]
     i_ba_phase_lo__tan = _c4[2]
@@ -546,10 +542,10 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
     i_q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*i_p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
     # the leg stays above horizontal
     if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN4 + (STATUS_FALL,)
     # q_rd_lo^2 from the energy
     if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN4 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo: (11) without a gravity correction, the energy with one
     _x92 = math.sqrt(1.0 - i_ba_s_lo**2)
     _x93 = _x92*l0
@@ -563,7 +559,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
         # branch gravity = 0
         _c5 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3()
         if _c5[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c5[4])
+            return _NAN4 + (_c5[4],)
         i_P_new1 = _c5[0]
         i_P_new2 = _c5[1]
         i_P_new1__tan = _c5[2]
@@ -572,7 +568,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
         # branch gravity = 1
         _c6 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
         if _c6[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c6[4])
+            return _NAN4 + (_c6[4],)
         i_P_new1 = _c6[0]
         i_P_new2 = _c6[1]
         i_P_new1__tan = _c6[2]
@@ -581,13 +577,13 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
         # branch gravity = 2
         _c7 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
         if _c7[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c7[4])
+            return _NAN4 + (_c7[4],)
         i_P_new1 = _c7[0]
         i_P_new2 = _c7[1]
         i_P_new1__tan = _c7[2]
         i_P_new2__tan = _c7[3]
     else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # next values
     _next_P_c_compression = i_P_new1
     _next_P_c_decompression = i_P_new2
@@ -778,19 +774,8 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
     # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
     _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, q_thd_eff__tan, k_c__tan)
     if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    ab_omega = _c0[0]
-    ab_omega0_hat = _c0[1]
-    ab_a = _c0[2]
-    ab_b = _c0[3]
-    ab_phase_td = _c0[4]
-    ab_s_td = _c0[5]
-    ab_omega__tan = _c0[6]
-    ab_omega0_hat__tan = _c0[7]
-    ab_a__tan = _c0[8]
-    ab_b__tan = _c0[9]
-    ab_phase_td__tan = _c0[10]
-    ab_s_td__tan = _c0[11]
+        return _NAN21 + (_c0[12],)
+    (ab_omega, ab_omega0_hat, ab_a, ab_b, ab_phase_td, ab_s_td, ab_omega__tan, ab_omega0_hat__tan, ab_a__tan, ab_b__tan, ab_phase_td__tan, ab_s_td__tan, _) = _c0
     # eqs (79)-(81): the bottom at phase 3 pi/2
     _x4 = (1.0/ab_omega0_hat)
     _x30 = (1.0/l0)
@@ -858,31 +843,31 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
     ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
     # with k_d the bottom lies below the centre a_ba of (90): the leg extends
     if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN21 + (STATUS_RECOMPRESSION,)
     # E_ab of (98)
     if continuity == 0.0:
         # branch continuity = 0
         _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN21 + (_c1[2],)
         eps_ba = _c1[0]
         eps_ba__tan = _c1[1]
     elif continuity == 1.0:
         # branch continuity = 1
         _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
         if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
+            return _NAN21 + (_c2[2],)
         eps_ba = _c2[0]
         eps_ba__tan = _c2[1]
     elif continuity == 2.0:
         # branch continuity = 2
         _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(ba_omega, ba_omega__tan, bottom_q_r, bottom_q_r__tan, g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, rho_b, rho_b__tan)
         if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
+            return _NAN21 + (_c3[2],)
         eps_ba = _c3[0]
         eps_ba__tan = _c3[1]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN21 + (STATUS_INVALID_INPUT,)
     _x48 = ba_omega**2
     _x49 = 3.0*_x48*m + k_d
     _x60 = (1.0/_x49)
@@ -900,7 +885,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
     ba_b2__tan = _x60*eps_ba__tan*m + ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
     # eq (104): real amplitude b_ba
     if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN21 + (STATUS_NO_REAL_SOLUTION,)
     # eq (104); eq (103), or (111) when constrained
     _x61 = math.sqrt(ba_b2)
     _x62 = (0.5)*ba_b2__tan/_x61
@@ -913,7 +898,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
     # eq (94): the liftoff phase of the second half
     _c4 = geyer_liftoff_phase_jvp_a_b(ba_a, ba_b, l0, q_r_lo, ba_a__tan, ba_b__tan)
     if _c4[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[4])
+        return _NAN21 + (_c4[4],)
     ba_phase_lo = _c4[0]
     ba_s_lo = _c4[1]
     ba_phase_lo__tan = _c4[2]
@@ -957,10 +942,10 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
     q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN21 + (STATUS_FALL,)
     # q_rd_lo^2 from the energy
     if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN21 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo: (11) without a gravity correction, the energy with one
     _x92 = math.sqrt(1.0 - ba_s_lo**2)
     _x93 = _x92*l0
@@ -1040,7 +1025,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     # Total ops: 52
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN26 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -1066,7 +1051,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         # loop body
         _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
         if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
+            return _NAN26 + (_c0[4],)
         _next_P_c_compression = _c0[0]
         _next_P_c_decompression = _c0[1]
         _next_P_c_compression__tan = _c0[2]
@@ -1086,32 +1071,12 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN26 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
     if _c1[21] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[21])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    t_bottom__tan = _c1[10]
-    t_stance__tan = _c1[11]
-    bottom_q_r__tan = _c1[12]
-    bottom_q_rd__tan = _c1[13]
-    bottom_q_th__tan = _c1[14]
-    bottom_q_thd__tan = _c1[15]
-    liftoff_q_r__tan = _c1[16]
-    liftoff_q_rd__tan = _c1[17]
-    liftoff_q_th__tan = _c1[18]
-    liftoff_q_thd__tan = _c1[19]
-    passes__tan = _c1[20]
+        return _NAN26 + (_c1[21],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
 
@@ -1149,7 +1114,7 @@ def bottom_quartic_jvp_p_E_ab_k_c_0(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, 
     slope__tan = -2.0*_x0*_x1*p*p__tan + k_c__tan*(-l0 + qb) + qb__tan*(3.0*_x2*_x3**4 + k_c)
     # V decreasing left of the root
     if not ((slope < 0.0)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN2 + (STATUS_NO_REAL_SOLUTION,)
     # next values
     _x4 = (1.0/slope)
     _x5 = g_s*m
@@ -1188,7 +1153,7 @@ def bottom_quartic_jvp_p_E_ab_k_c_1(l0, qb, qb__tan):
     q_r_b__tan = qb__tan
     # the bottom root is at most l0
     if not ((qb <= l0)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN2 + (STATUS_NO_REAL_SOLUTION,)
     # (internal helper: its callers check that their outputs are finite)
     return (q_r_b, q_r_b__tan, STATUS_OK)
 
@@ -1221,7 +1186,7 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
     # Total ops: 237
     # inputs: finite and inside their domains
     if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(p__tan) and math.isfinite(E_ab__tan) and math.isfinite(k_c__tan) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
-        return (NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN2 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
     _x74 = (1.0/k_c)
     _x0 = (0.5)*l0
@@ -1302,7 +1267,7 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
     q_start__tan = E_ab__tan*((0.5)*_x52*_x53*(_x47*(-_x28*_x60 - _x62) + _x50*(-_x49*_x60 + _x63)) - _x56 - 0.125*_x57) + k_c__tan*((0.25)*_x14*_x66 + _x54*(_x47*(_x28*_x55*_x59*_x72 - _x28*_x70 + _x62*_x73) + _x50*((0.5)*_x35*_x4*_x49*_x58*_x72 - _x49*_x70 - _x63*_x73 - _x65)) - _x56*(-_x2*_x6 + _x6*l0 - _x69 - 0.5*_x7) + (0.25)*_x57*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x67 + (0.25)*_x7) + (0.5)*_x65) + p__tan*((0.25)*_x25*_x26 + _x54*((0.5)*_x19*_x20*_x25*_x44*_x48*_x50 - 0.5*_x25*_x38*_x45*_x47))
     # E_ab above the minimum of the potential
     if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN2 + (STATUS_NO_REAL_SOLUTION,)
     # Newton's method on V - E: monotone from the left
     qb = q_start
     qb__tan = q_start__tan
@@ -1312,7 +1277,7 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
         # loop body
         _c0 = bottom_quartic_jvp_p_E_ab_k_c_0(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, p, p__tan, qb, qb__tan)
         if _c0[2] != STATUS_OK:
-            return (NAN, NAN, _c0[2])
+            return _NAN2 + (_c0[2],)
         _next_qb = _c0[0]
         _next_qb__tan = _c0[1]
         _n0_0 = _next_qb
@@ -1326,11 +1291,11 @@ def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k
         if _conv0:
             break
     if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-        return (NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN2 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = bottom_quartic_jvp_p_E_ab_k_c_1(l0, qb, qb__tan)
     if _c1[2] != STATUS_OK:
-        return (NAN, NAN, _c1[2])
+        return _NAN2 + (_c1[2],)
     q_r_b = _c1[0]
     q_r_b__tan = _c1[1]
     # (internal helper: its callers check that their outputs are finite)
@@ -1459,125 +1424,40 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN91 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to q_r_td
     _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-    d_t_bottom__q_r_td = _c0[13]
-    d_t_stance__q_r_td = _c0[14]
-    d_bottom_q_r__q_r_td = _c0[15]
-    d_bottom_q_rd__q_r_td = _c0[16]
-    d_bottom_q_th__q_r_td = _c0[17]
-    d_bottom_q_thd__q_r_td = _c0[18]
-    d_liftoff_q_r__q_r_td = _c0[19]
-    d_liftoff_q_rd__q_r_td = _c0[20]
-    d_liftoff_q_th__q_r_td = _c0[21]
-    d_liftoff_q_thd__q_r_td = _c0[22]
-    d_P_c_compression__q_r_td = _c0[23]
-    d_P_c_decompression__q_r_td = _c0[24]
-    d_passes__q_r_td = _c0[25]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    P_c_compression = _c0[10]
-    P_c_decompression = _c0[11]
-    passes = _c0[12]
+        return _NAN91 + (_c0[26],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_stance__q_r_td, d_bottom_q_r__q_r_td, d_bottom_q_rd__q_r_td, d_bottom_q_th__q_r_td, d_bottom_q_thd__q_r_td, d_liftoff_q_r__q_r_td, d_liftoff_q_rd__q_r_td, d_liftoff_q_th__q_r_td, d_liftoff_q_thd__q_r_td, d_P_c_compression__q_r_td, d_P_c_decompression__q_r_td, d_passes__q_r_td, _) = _c0
     # derivatives with respect to q_rd_td
     _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c1[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
-    d_t_bottom__q_rd_td = _c1[13]
-    d_t_stance__q_rd_td = _c1[14]
-    d_bottom_q_r__q_rd_td = _c1[15]
-    d_bottom_q_rd__q_rd_td = _c1[16]
-    d_bottom_q_th__q_rd_td = _c1[17]
-    d_bottom_q_thd__q_rd_td = _c1[18]
-    d_liftoff_q_r__q_rd_td = _c1[19]
-    d_liftoff_q_rd__q_rd_td = _c1[20]
-    d_liftoff_q_th__q_rd_td = _c1[21]
-    d_liftoff_q_thd__q_rd_td = _c1[22]
-    d_P_c_compression__q_rd_td = _c1[23]
-    d_P_c_decompression__q_rd_td = _c1[24]
-    d_passes__q_rd_td = _c1[25]
+        return _NAN91 + (_c1[26],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_rd_td, d_t_stance__q_rd_td, d_bottom_q_r__q_rd_td, d_bottom_q_rd__q_rd_td, d_bottom_q_th__q_rd_td, d_bottom_q_thd__q_rd_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_thd__q_rd_td, d_P_c_compression__q_rd_td, d_P_c_decompression__q_rd_td, d_passes__q_rd_td, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c2[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[26])
-    d_t_bottom__q_th_td = _c2[13]
-    d_t_stance__q_th_td = _c2[14]
-    d_bottom_q_r__q_th_td = _c2[15]
-    d_bottom_q_rd__q_th_td = _c2[16]
-    d_bottom_q_th__q_th_td = _c2[17]
-    d_bottom_q_thd__q_th_td = _c2[18]
-    d_liftoff_q_r__q_th_td = _c2[19]
-    d_liftoff_q_rd__q_th_td = _c2[20]
-    d_liftoff_q_th__q_th_td = _c2[21]
-    d_liftoff_q_thd__q_th_td = _c2[22]
-    d_P_c_compression__q_th_td = _c2[23]
-    d_P_c_decompression__q_th_td = _c2[24]
-    d_passes__q_th_td = _c2[25]
+        return _NAN91 + (_c2[26],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_th_td, d_t_stance__q_th_td, d_bottom_q_r__q_th_td, d_bottom_q_rd__q_th_td, d_bottom_q_th__q_th_td, d_bottom_q_thd__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_P_c_compression__q_th_td, d_P_c_decompression__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to q_thd_td
     _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c3[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[26])
-    d_t_bottom__q_thd_td = _c3[13]
-    d_t_stance__q_thd_td = _c3[14]
-    d_bottom_q_r__q_thd_td = _c3[15]
-    d_bottom_q_rd__q_thd_td = _c3[16]
-    d_bottom_q_th__q_thd_td = _c3[17]
-    d_bottom_q_thd__q_thd_td = _c3[18]
-    d_liftoff_q_r__q_thd_td = _c3[19]
-    d_liftoff_q_rd__q_thd_td = _c3[20]
-    d_liftoff_q_th__q_thd_td = _c3[21]
-    d_liftoff_q_thd__q_thd_td = _c3[22]
-    d_P_c_compression__q_thd_td = _c3[23]
-    d_P_c_decompression__q_thd_td = _c3[24]
-    d_passes__q_thd_td = _c3[25]
+        return _NAN91 + (_c3[26],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_thd_td, d_t_stance__q_thd_td, d_bottom_q_r__q_thd_td, d_bottom_q_rd__q_thd_td, d_bottom_q_th__q_thd_td, d_bottom_q_thd__q_thd_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_thd__q_thd_td, d_P_c_compression__q_thd_td, d_P_c_decompression__q_thd_td, d_passes__q_thd_td, _) = _c3
     # derivatives with respect to k_c
     _c4 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c4[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[26])
-    d_t_bottom__k_c = _c4[13]
-    d_t_stance__k_c = _c4[14]
-    d_bottom_q_r__k_c = _c4[15]
-    d_bottom_q_rd__k_c = _c4[16]
-    d_bottom_q_th__k_c = _c4[17]
-    d_bottom_q_thd__k_c = _c4[18]
-    d_liftoff_q_r__k_c = _c4[19]
-    d_liftoff_q_rd__k_c = _c4[20]
-    d_liftoff_q_th__k_c = _c4[21]
-    d_liftoff_q_thd__k_c = _c4[22]
-    d_P_c_compression__k_c = _c4[23]
-    d_P_c_decompression__k_c = _c4[24]
-    d_passes__k_c = _c4[25]
+        return _NAN91 + (_c4[26],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__k_c, d_t_stance__k_c, d_bottom_q_r__k_c, d_bottom_q_rd__k_c, d_bottom_q_th__k_c, d_bottom_q_thd__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, d_P_c_compression__k_c, d_P_c_decompression__k_c, d_passes__k_c, _) = _c4
     # derivatives with respect to k_d
     _c5 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c5[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[26])
-    d_t_bottom__k_d = _c5[13]
-    d_t_stance__k_d = _c5[14]
-    d_bottom_q_r__k_d = _c5[15]
-    d_bottom_q_rd__k_d = _c5[16]
-    d_bottom_q_th__k_d = _c5[17]
-    d_bottom_q_thd__k_d = _c5[18]
-    d_liftoff_q_r__k_d = _c5[19]
-    d_liftoff_q_rd__k_d = _c5[20]
-    d_liftoff_q_th__k_d = _c5[21]
-    d_liftoff_q_thd__k_d = _c5[22]
-    d_P_c_compression__k_d = _c5[23]
-    d_P_c_decompression__k_d = _c5[24]
-    d_passes__k_d = _c5[25]
+        return _NAN91 + (_c5[26],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__k_d, d_t_stance__k_d, d_bottom_q_r__k_d, d_bottom_q_rd__k_d, d_bottom_q_th__k_d, d_bottom_q_thd__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, d_P_c_compression__k_d, d_P_c_decompression__k_d, d_passes__k_d, _) = _c5
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k_c) and math.isfinite(d_t_bottom__k_d) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k_c) and math.isfinite(d_bottom_q_r__k_d) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k_c) and math.isfinite(d_bottom_q_rd__k_d) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k_c) and math.isfinite(d_bottom_q_th__k_d) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k_c) and math.isfinite(d_bottom_q_thd__k_d) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_P_c_compression__q_r_td) and math.isfinite(d_P_c_compression__q_rd_td) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__q_thd_td) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__q_r_td) and math.isfinite(d_P_c_decompression__q_rd_td) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__q_thd_td) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN91 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
@@ -1747,45 +1627,21 @@ def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_a
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN24 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
     if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+        return _NAN24 + (_c0[10],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, t_descent__tan, _) = _c0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
     if _c1[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c_compression = _c1[10]
-    P_c_decompression = _c1[11]
-    passes = _c1[12]
-    t_stance__tan = _c1[14]
-    liftoff_q_r__tan = _c1[19]
-    liftoff_q_rd__tan = _c1[20]
-    liftoff_q_th__tan = _c1[21]
-    liftoff_q_thd__tan = _c1[22]
-    P_c_compression__tan = _c1[23]
-    P_c_decompression__tan = _c1[24]
-    passes__tan = _c1[25]
+        return _NAN24 + (_c1[26],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, _, t_stance__tan, _, _, _, _, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
     if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+        return _NAN24 + (_c2[8],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -1900,102 +1756,35 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN72 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to b_y_apex
     _c0 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_apex_height__b_y_apex = _c0[12]
-    d_apex_speed__b_y_apex = _c0[13]
-    d_t_descent__b_y_apex = _c0[14]
-    d_t_stance__b_y_apex = _c0[15]
-    d_t_ascent__b_y_apex = _c0[16]
-    d_liftoff_q_r__b_y_apex = _c0[17]
-    d_liftoff_q_rd__b_y_apex = _c0[18]
-    d_liftoff_q_th__b_y_apex = _c0[19]
-    d_liftoff_q_thd__b_y_apex = _c0[20]
-    d_P_c_compression__b_y_apex = _c0[21]
-    d_P_c_decompression__b_y_apex = _c0[22]
-    d_passes__b_y_apex = _c0[23]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    P_c_compression = _c0[9]
-    P_c_decompression = _c0[10]
-    passes = _c0[11]
+        return _NAN72 + (_c0[24],)
+    (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_speed__b_y_apex, d_t_descent__b_y_apex, d_t_stance__b_y_apex, d_t_ascent__b_y_apex, d_liftoff_q_r__b_y_apex, d_liftoff_q_rd__b_y_apex, d_liftoff_q_th__b_y_apex, d_liftoff_q_thd__b_y_apex, d_P_c_compression__b_y_apex, d_P_c_decompression__b_y_apex, d_passes__b_y_apex, _) = _c0
     # derivatives with respect to b_xd_apex
     _c1 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_apex_height__b_xd_apex = _c1[12]
-    d_apex_speed__b_xd_apex = _c1[13]
-    d_t_descent__b_xd_apex = _c1[14]
-    d_t_stance__b_xd_apex = _c1[15]
-    d_t_ascent__b_xd_apex = _c1[16]
-    d_liftoff_q_r__b_xd_apex = _c1[17]
-    d_liftoff_q_rd__b_xd_apex = _c1[18]
-    d_liftoff_q_th__b_xd_apex = _c1[19]
-    d_liftoff_q_thd__b_xd_apex = _c1[20]
-    d_P_c_compression__b_xd_apex = _c1[21]
-    d_P_c_decompression__b_xd_apex = _c1[22]
-    d_passes__b_xd_apex = _c1[23]
+        return _NAN72 + (_c1[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_apex_height__b_xd_apex, d_apex_speed__b_xd_apex, d_t_descent__b_xd_apex, d_t_stance__b_xd_apex, d_t_ascent__b_xd_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_thd__b_xd_apex, d_P_c_compression__b_xd_apex, d_P_c_decompression__b_xd_apex, d_passes__b_xd_apex, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_apex_height__q_th_td = _c2[12]
-    d_apex_speed__q_th_td = _c2[13]
-    d_t_descent__q_th_td = _c2[14]
-    d_t_stance__q_th_td = _c2[15]
-    d_t_ascent__q_th_td = _c2[16]
-    d_liftoff_q_r__q_th_td = _c2[17]
-    d_liftoff_q_rd__q_th_td = _c2[18]
-    d_liftoff_q_th__q_th_td = _c2[19]
-    d_liftoff_q_thd__q_th_td = _c2[20]
-    d_P_c_compression__q_th_td = _c2[21]
-    d_P_c_decompression__q_th_td = _c2[22]
-    d_passes__q_th_td = _c2[23]
+        return _NAN72 + (_c2[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_apex_height__q_th_td, d_apex_speed__q_th_td, d_t_descent__q_th_td, d_t_stance__q_th_td, d_t_ascent__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_P_c_compression__q_th_td, d_P_c_decompression__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to k_c
     _c3 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_apex_height__k_c = _c3[12]
-    d_apex_speed__k_c = _c3[13]
-    d_t_descent__k_c = _c3[14]
-    d_t_stance__k_c = _c3[15]
-    d_t_ascent__k_c = _c3[16]
-    d_liftoff_q_r__k_c = _c3[17]
-    d_liftoff_q_rd__k_c = _c3[18]
-    d_liftoff_q_th__k_c = _c3[19]
-    d_liftoff_q_thd__k_c = _c3[20]
-    d_P_c_compression__k_c = _c3[21]
-    d_P_c_decompression__k_c = _c3[22]
-    d_passes__k_c = _c3[23]
+        return _NAN72 + (_c3[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_apex_height__k_c, d_apex_speed__k_c, d_t_descent__k_c, d_t_stance__k_c, d_t_ascent__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, d_P_c_compression__k_c, d_P_c_decompression__k_c, d_passes__k_c, _) = _c3
     # derivatives with respect to k_d
     _c4 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_apex_height__k_d = _c4[12]
-    d_apex_speed__k_d = _c4[13]
-    d_t_descent__k_d = _c4[14]
-    d_t_stance__k_d = _c4[15]
-    d_t_ascent__k_d = _c4[16]
-    d_liftoff_q_r__k_d = _c4[17]
-    d_liftoff_q_rd__k_d = _c4[18]
-    d_liftoff_q_th__k_d = _c4[19]
-    d_liftoff_q_thd__k_d = _c4[20]
-    d_P_c_compression__k_d = _c4[21]
-    d_P_c_decompression__k_d = _c4[22]
-    d_passes__k_d = _c4[23]
+        return _NAN72 + (_c4[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_apex_height__k_d, d_apex_speed__k_d, d_t_descent__k_d, d_t_stance__k_d, d_t_ascent__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, d_P_c_compression__k_d, d_P_c_decompression__k_d, d_passes__k_d, _) = _c4
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_P_c_compression__b_y_apex) and math.isfinite(d_P_c_compression__b_xd_apex) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__b_y_apex) and math.isfinite(d_P_c_decompression__b_xd_apex) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 

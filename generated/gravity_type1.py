@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
-#   geyer.py sha256:b5957f8d4d622f96
+#   flight.py sha256:a291c3b0eaea5af3
+#   geyer.py sha256:677d7d2464b0d738
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and apex-return kernels."""
 
@@ -22,6 +22,9 @@ from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
 
 NAN = math.nan
+_NAN4 = (NAN,) * 4
+_NAN11 = (NAN,) * 11
+_NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
@@ -66,7 +69,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     # Total ops: 212
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -81,7 +84,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         share = 1.0
         ramp = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
@@ -92,7 +95,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN12 + (_c0[6],)
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -101,7 +104,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN12 + (_c1[2],)
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -127,7 +130,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN12 + (STATUS_FALL,)
         # eq (48) with 2 or 3 samples
         if samples == 2.0:
             _x13 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
@@ -136,7 +139,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             _x14 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
             i_P_new = (0.3333333333333333)*i_t_stance*(_x14*math.sin(i_bottom_q_th) + _x14*math.sin(i_liftoff_q_th) + _x14*math.sin(q_th_td))
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN12 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -146,13 +149,13 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN12 + (STATUS_NOT_CONVERGED,)
     # effective touchdown rate
     f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
     if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[6])
+        return _NAN12 + (_c2[6],)
     f_omega = _c2[0]
     f_omega0_hat = _c2[1]
     f_a = _c2[2]
@@ -161,7 +164,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     f_s_td = _c2[5]
     _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
+        return _NAN12 + (_c3[2],)
     f_phase_lo = _c3[0]
     f_s_lo = _c3[1]
     # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -187,7 +190,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     f_liftoff_q_thd = f_omega/(_x16 + f_b*f_s_lo)**2
     # the leg stays above horizontal
     if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN12 + (STATUS_FALL,)
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
     _x25 = (1.0/m)
     t_bottom = f_t_bottom
@@ -206,17 +209,17 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _q_rd_lo_sq = 2.0*E_td*_x26 - _x26**2*(P_c + p_td)**2/_x28 + 2.0*_x26*k*l0*q_r_lo - _x27*_x28 - _x27*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN12 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo from the energy
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)
         liftoff_q_rd = f_liftoff_q_rd
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
@@ -278,7 +281,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     # Total ops: 181
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -293,7 +296,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         share = 1.0
         ramp = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
@@ -304,7 +307,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN4 + (_c0[6],)
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -313,7 +316,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -339,7 +342,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN4 + (STATUS_FALL,)
         # eq (48) with 2 or 3 samples
         if samples == 2.0:
             _x13 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
@@ -348,7 +351,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
             _x14 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
             i_P_new = (0.3333333333333333)*i_t_stance*(_x14*math.sin(i_bottom_q_th) + _x14*math.sin(i_liftoff_q_th) + _x14*math.sin(q_th_td))
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -358,13 +361,13 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN4 + (STATUS_NOT_CONVERGED,)
     # effective touchdown rate
     f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
     if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c2[6])
+        return _NAN4 + (_c2[6],)
     f_omega = _c2[0]
     f_omega0_hat = _c2[1]
     f_a = _c2[2]
@@ -373,7 +376,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     f_s_td = _c2[5]
     _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c3[2])
+        return _NAN4 + (_c3[2],)
     f_phase_lo = _c3[0]
     f_s_lo = _c3[1]
     # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -399,7 +402,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     f_liftoff_q_thd = f_omega/(_x16 + f_b*f_s_lo)**2
     # the leg stays above horizontal
     if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN4 + (STATUS_FALL,)
     phase_t = f_omega0_hat*t + f_phase_td
     _c4 = geyer_state(phase_t, f_phase_td, q_th_td, f_omega, f_omega0_hat, f_a, f_b, l0)
     q_r = _c4[0]
@@ -409,7 +412,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/f_t_stance) + p_td)/(m*q_r**2)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
@@ -470,11 +473,11 @@ def gravity_type1_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN11 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN11 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -483,7 +486,7 @@ def gravity_type1_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c1 = gravity_type1_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol)
     if _c1[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        return _NAN11 + (_c1[12],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -494,13 +497,13 @@ def gravity_type1_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN11 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 

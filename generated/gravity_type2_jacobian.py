@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:6d2a79031b9ac2b8
-#   geyer_jacobian.py sha256:ebd2115f68e33426
+#   flight_jacobian.py sha256:e58e885f76eb1aa8
+#   geyer_jacobian.py sha256:849e7410cc446e23
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type2: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -22,6 +22,12 @@ from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b, geyer_solution_jvp_q_r_
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
 
 NAN = math.nan
+_NAN2 = (NAN,) * 2
+_NAN21 = (NAN,) * 21
+_NAN22 = (NAN,) * 22
+_NAN24 = (NAN,) * 24
+_NAN55 = (NAN,) * 55
+_NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
@@ -324,22 +330,11 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(P_c, P_c__tan, 
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k__tan)
     if _c0[12] != STATUS_OK:
-        return (NAN, NAN, _c0[12])
-    i_omega = _c0[0]
-    i_omega0_hat = _c0[1]
-    i_a = _c0[2]
-    i_b = _c0[3]
-    i_phase_td = _c0[4]
-    i_s_td = _c0[5]
-    i_omega__tan = _c0[6]
-    i_omega0_hat__tan = _c0[7]
-    i_a__tan = _c0[8]
-    i_b__tan = _c0[9]
-    i_phase_td__tan = _c0[10]
-    i_s_td__tan = _c0[11]
+        return _NAN2 + (_c0[12],)
+    (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, i_omega__tan, i_omega0_hat__tan, i_a__tan, i_b__tan, i_phase_td__tan, i_s_td__tan, _) = _c0
     _c1 = geyer_liftoff_phase_jvp_a_b(i_a, i_b, l0, q_r_lo, i_a__tan, i_b__tan)
     if _c1[4] != STATUS_OK:
-        return (NAN, NAN, _c1[4])
+        return _NAN2 + (_c1[4],)
     i_phase_lo = _c1[0]
     i_s_lo = _c1[1]
     i_phase_lo__tan = _c1[2]
@@ -411,48 +406,48 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(P_c, P_c__tan, 
     i_liftoff_q_thd__tan = _x46*i_omega__tan - _x47*i_a__tan - _x47*i_b*i_s_lo__tan - _x47*i_b__tan*i_s_lo
     # the leg stays above horizontal
     if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, STATUS_FALL)
+        return _NAN2 + (STATUS_FALL,)
     # average leg length, eqs (55)-(61) / (67)-(75)
     if leg_length == 0.0:
         # branch leg_length = 0
         _c2 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(i_a, i_a__tan, i_b, i_b__tan, i_omega0_hat, i_omega0_hat__tan, i_phase_td, i_phase_td__tan, i_t_stance, i_t_stance__tan, l0)
         if _c2[2] != STATUS_OK:
-            return (NAN, NAN, _c2[2])
+            return _NAN2 + (_c2[2],)
         i_L = _c2[0]
         i_L__tan = _c2[1]
     elif leg_length == 1.0:
         # branch leg_length = 1
         _c3 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(i_a, i_a__tan, i_b, i_b__tan, i_omega0_hat, i_omega0_hat__tan, i_t_stance, i_t_stance__tan, l0)
         if _c3[2] != STATUS_OK:
-            return (NAN, NAN, _c3[2])
+            return _NAN2 + (_c3[2],)
         i_L = _c3[0]
         i_L__tan = _c3[1]
     elif leg_length == 2.0:
         # branch leg_length = 2
         _c4 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(g_s, i_omega0_hat, i_omega0_hat__tan, i_q_thd_eff, i_q_thd_eff__tan, i_t_stance, i_t_stance__tan, l0, q_rd_td, q_rd_td__tan)
         if _c4[2] != STATUS_OK:
-            return (NAN, NAN, _c4[2])
+            return _NAN2 + (_c4[2],)
         i_L = _c4[0]
         i_L__tan = _c4[1]
     else:
-        return (NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN2 + (STATUS_INVALID_INPUT,)
     # eq (48) with 2 or 3 samples
     if samples == 2.0:
         # branch samples = 2
         _c5 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(g_s, i_L, i_L__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_th_td, q_th_td__tan)
         if _c5[2] != STATUS_OK:
-            return (NAN, NAN, _c5[2])
+            return _NAN2 + (_c5[2],)
         i_P_new = _c5[0]
         i_P_new__tan = _c5[1]
     elif samples == 3.0:
         # branch samples = 3
         _c6 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(g_s, i_L, i_L__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_th_td, q_th_td__tan)
         if _c6[2] != STATUS_OK:
-            return (NAN, NAN, _c6[2])
+            return _NAN2 + (_c6[2],)
         i_P_new = _c6[0]
         i_P_new__tan = _c6[1]
     else:
-        return (NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN2 + (STATUS_INVALID_INPUT,)
     # next values
     _next_P_c = i_P_new
     _next_P_c__tan = i_P_new__tan
@@ -499,7 +494,7 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_8(E_td, E_td__tan
     _q_rd_lo_sq__tan = 2.0*E_td__tan*_x0 - P_c__tan*_x6 + _x1*f_liftoff_q_th__tan*math.sin(f_liftoff_q_th) - _x6*p_td__tan + k__tan*(2.0*_x0*l0*q_r_lo - _x2 - _x4)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN2 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
     _x7 = math.sqrt(_q_rd_lo_sq)
     liftoff_q_rd = _x7
@@ -595,22 +590,11 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_10(E_td, E_td__ta
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, f_q_thd_eff__tan, k__tan)
     if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    f_omega = _c0[0]
-    f_omega0_hat = _c0[1]
-    f_a = _c0[2]
-    f_b = _c0[3]
-    f_phase_td = _c0[4]
-    f_s_td = _c0[5]
-    f_omega__tan = _c0[6]
-    f_omega0_hat__tan = _c0[7]
-    f_a__tan = _c0[8]
-    f_b__tan = _c0[9]
-    f_phase_td__tan = _c0[10]
-    f_s_td__tan = _c0[11]
+        return _NAN21 + (_c0[12],)
+    (f_omega, f_omega0_hat, f_a, f_b, f_phase_td, f_s_td, f_omega__tan, f_omega0_hat__tan, f_a__tan, f_b__tan, f_phase_td__tan, f_s_td__tan, _) = _c0
     _c1 = geyer_liftoff_phase_jvp_a_b(f_a, f_b, l0, q_r_lo, f_a__tan, f_b__tan)
     if _c1[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
+        return _NAN21 + (_c1[4],)
     f_phase_lo = _c1[0]
     f_s_lo = _c1[1]
     f_phase_lo__tan = _c1[2]
@@ -682,7 +666,7 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_10(E_td, E_td__ta
     f_liftoff_q_thd__tan = _x46*f_omega__tan - _x47*f_a__tan - _x47*f_b*f_s_lo__tan - _x47*f_b__tan*f_s_lo
     # the leg stays above horizontal
     if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN21 + (STATUS_FALL,)
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
     _x57 = (1.0/f_bottom_q_r)
     _x58 = (1.0/f_t_stance)
@@ -713,18 +697,18 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_10(E_td, E_td__ta
         # branch reading = 0
         _c2 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_8(E_td, E_td__tan, P_c, P_c__tan, f_liftoff_q_th, f_liftoff_q_th__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo)
         if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
+            return _NAN21 + (_c2[2],)
         liftoff_q_rd = _c2[0]
         liftoff_q_rd__tan = _c2[1]
     elif reading == 1.0:
         # branch reading = 1
         _c3 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_9(f_liftoff_q_rd, f_liftoff_q_rd__tan)
         if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
+            return _NAN21 + (_c3[2],)
         liftoff_q_rd = _c3[0]
         liftoff_q_rd__tan = _c3[1]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN21 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero
     bottom_q_rd__tan = 0.0
     liftoff_q_r__tan = 0.0
@@ -793,10 +777,10 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
     # Total ops: 52
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN24 + (STATUS_INVALID_INPUT,)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN24 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -816,18 +800,18 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         # branch reading = 0
         _c0 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0()
         if _c0[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[2])
+            return _NAN24 + (_c0[2],)
         share = _c0[0]
         ramp = _c0[1]
     elif reading == 1.0:
         # branch reading = 1
         _c1 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1()
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN24 + (_c1[2],)
         share = _c1[0]
         ramp = _c1[1]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN24 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     P_c__tan = 0.0
@@ -837,7 +821,7 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         # loop body
         _c2 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(P_c, P_c__tan, g_s, k, k__tan, l0, leg_length, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, samples, share)
         if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
+            return _NAN24 + (_c2[2],)
         _next_P_c = _c2[0]
         _next_P_c__tan = _c2[1]
         _n0_0 = _next_P_c
@@ -851,32 +835,12 @@ def gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN24 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c3 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_10(E_td, E_td__tan, P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, ramp, reading, share)
     if _c3[21] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[21])
-    t_bottom = _c3[0]
-    t_stance = _c3[1]
-    bottom_q_r = _c3[2]
-    bottom_q_rd = _c3[3]
-    bottom_q_th = _c3[4]
-    bottom_q_thd = _c3[5]
-    liftoff_q_r = _c3[6]
-    liftoff_q_rd = _c3[7]
-    liftoff_q_th = _c3[8]
-    liftoff_q_thd = _c3[9]
-    t_bottom__tan = _c3[10]
-    t_stance__tan = _c3[11]
-    bottom_q_r__tan = _c3[12]
-    bottom_q_rd__tan = _c3[13]
-    bottom_q_th__tan = _c3[14]
-    bottom_q_thd__tan = _c3[15]
-    liftoff_q_r__tan = _c3[16]
-    liftoff_q_rd__tan = _c3[17]
-    liftoff_q_th__tan = _c3[18]
-    liftoff_q_thd__tan = _c3[19]
-    passes__tan = _c3[20]
+        return _NAN24 + (_c3[21],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c3
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
 
@@ -984,102 +948,35 @@ def gravity_type2_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN72 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to q_r_td
     _c0 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_t_bottom__q_r_td = _c0[12]
-    d_t_stance__q_r_td = _c0[13]
-    d_bottom_q_r__q_r_td = _c0[14]
-    d_bottom_q_rd__q_r_td = _c0[15]
-    d_bottom_q_th__q_r_td = _c0[16]
-    d_bottom_q_thd__q_r_td = _c0[17]
-    d_liftoff_q_r__q_r_td = _c0[18]
-    d_liftoff_q_rd__q_r_td = _c0[19]
-    d_liftoff_q_th__q_r_td = _c0[20]
-    d_liftoff_q_thd__q_r_td = _c0[21]
-    d_P_c__q_r_td = _c0[22]
-    d_passes__q_r_td = _c0[23]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    P_c = _c0[10]
-    passes = _c0[11]
+        return _NAN72 + (_c0[24],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_stance__q_r_td, d_bottom_q_r__q_r_td, d_bottom_q_rd__q_r_td, d_bottom_q_th__q_r_td, d_bottom_q_thd__q_r_td, d_liftoff_q_r__q_r_td, d_liftoff_q_rd__q_r_td, d_liftoff_q_th__q_r_td, d_liftoff_q_thd__q_r_td, d_P_c__q_r_td, d_passes__q_r_td, _) = _c0
     # derivatives with respect to q_rd_td
     _c1 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_t_bottom__q_rd_td = _c1[12]
-    d_t_stance__q_rd_td = _c1[13]
-    d_bottom_q_r__q_rd_td = _c1[14]
-    d_bottom_q_rd__q_rd_td = _c1[15]
-    d_bottom_q_th__q_rd_td = _c1[16]
-    d_bottom_q_thd__q_rd_td = _c1[17]
-    d_liftoff_q_r__q_rd_td = _c1[18]
-    d_liftoff_q_rd__q_rd_td = _c1[19]
-    d_liftoff_q_th__q_rd_td = _c1[20]
-    d_liftoff_q_thd__q_rd_td = _c1[21]
-    d_P_c__q_rd_td = _c1[22]
-    d_passes__q_rd_td = _c1[23]
+        return _NAN72 + (_c1[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_rd_td, d_t_stance__q_rd_td, d_bottom_q_r__q_rd_td, d_bottom_q_rd__q_rd_td, d_bottom_q_th__q_rd_td, d_bottom_q_thd__q_rd_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_thd__q_rd_td, d_P_c__q_rd_td, d_passes__q_rd_td, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_t_bottom__q_th_td = _c2[12]
-    d_t_stance__q_th_td = _c2[13]
-    d_bottom_q_r__q_th_td = _c2[14]
-    d_bottom_q_rd__q_th_td = _c2[15]
-    d_bottom_q_th__q_th_td = _c2[16]
-    d_bottom_q_thd__q_th_td = _c2[17]
-    d_liftoff_q_r__q_th_td = _c2[18]
-    d_liftoff_q_rd__q_th_td = _c2[19]
-    d_liftoff_q_th__q_th_td = _c2[20]
-    d_liftoff_q_thd__q_th_td = _c2[21]
-    d_P_c__q_th_td = _c2[22]
-    d_passes__q_th_td = _c2[23]
+        return _NAN72 + (_c2[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_th_td, d_t_stance__q_th_td, d_bottom_q_r__q_th_td, d_bottom_q_rd__q_th_td, d_bottom_q_th__q_th_td, d_bottom_q_thd__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_P_c__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to q_thd_td
     _c3 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_t_bottom__q_thd_td = _c3[12]
-    d_t_stance__q_thd_td = _c3[13]
-    d_bottom_q_r__q_thd_td = _c3[14]
-    d_bottom_q_rd__q_thd_td = _c3[15]
-    d_bottom_q_th__q_thd_td = _c3[16]
-    d_bottom_q_thd__q_thd_td = _c3[17]
-    d_liftoff_q_r__q_thd_td = _c3[18]
-    d_liftoff_q_rd__q_thd_td = _c3[19]
-    d_liftoff_q_th__q_thd_td = _c3[20]
-    d_liftoff_q_thd__q_thd_td = _c3[21]
-    d_P_c__q_thd_td = _c3[22]
-    d_passes__q_thd_td = _c3[23]
+        return _NAN72 + (_c3[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_thd_td, d_t_stance__q_thd_td, d_bottom_q_r__q_thd_td, d_bottom_q_rd__q_thd_td, d_bottom_q_th__q_thd_td, d_bottom_q_thd__q_thd_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_thd__q_thd_td, d_P_c__q_thd_td, d_passes__q_thd_td, _) = _c3
     # derivatives with respect to k
     _c4 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_t_bottom__k = _c4[12]
-    d_t_stance__k = _c4[13]
-    d_bottom_q_r__k = _c4[14]
-    d_bottom_q_rd__k = _c4[15]
-    d_bottom_q_th__k = _c4[16]
-    d_bottom_q_thd__k = _c4[17]
-    d_liftoff_q_r__k = _c4[18]
-    d_liftoff_q_rd__k = _c4[19]
-    d_liftoff_q_th__k = _c4[20]
-    d_liftoff_q_thd__k = _c4[21]
-    d_P_c__k = _c4[22]
-    d_passes__k = _c4[23]
+        return _NAN72 + (_c4[24],)
+    (_, _, _, _, _, _, _, _, _, _, _, _, d_t_bottom__k, d_t_stance__k, d_bottom_q_r__k, d_bottom_q_rd__k, d_bottom_q_th__k, d_bottom_q_thd__k, d_liftoff_q_r__k, d_liftoff_q_rd__k, d_liftoff_q_th__k, d_liftoff_q_thd__k, d_P_c__k, d_passes__k, _) = _c4
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_P_c__q_r_td) and math.isfinite(d_P_c__q_rd_td) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__q_thd_td) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
 
 
@@ -1227,43 +1124,21 @@ def gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_ap
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN22 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
     if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+        return _NAN22 + (_c0[10],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, t_descent__tan, _) = _c0
     # stance: Gravity correction type 2 (average leg length)
     _c1 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c = _c1[10]
-    passes = _c1[11]
-    t_stance__tan = _c1[13]
-    liftoff_q_r__tan = _c1[18]
-    liftoff_q_rd__tan = _c1[19]
-    liftoff_q_th__tan = _c1[20]
-    liftoff_q_thd__tan = _c1[21]
-    P_c__tan = _c1[22]
-    passes__tan = _c1[23]
+        return _NAN22 + (_c1[24],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, t_stance__tan, _, _, _, _, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
     if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+        return _NAN22 + (_c2[8],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -1361,81 +1236,30 @@ def gravity_type2_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN55 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to b_y_apex
     _c0 = gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol, 1.0, 0.0, 0.0, 0.0)
     if _c0[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[22])
-    d_apex_height__b_y_apex = _c0[11]
-    d_apex_speed__b_y_apex = _c0[12]
-    d_t_descent__b_y_apex = _c0[13]
-    d_t_stance__b_y_apex = _c0[14]
-    d_t_ascent__b_y_apex = _c0[15]
-    d_liftoff_q_r__b_y_apex = _c0[16]
-    d_liftoff_q_rd__b_y_apex = _c0[17]
-    d_liftoff_q_th__b_y_apex = _c0[18]
-    d_liftoff_q_thd__b_y_apex = _c0[19]
-    d_P_c__b_y_apex = _c0[20]
-    d_passes__b_y_apex = _c0[21]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    P_c = _c0[9]
-    passes = _c0[10]
+        return _NAN55 + (_c0[22],)
+    (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_speed__b_y_apex, d_t_descent__b_y_apex, d_t_stance__b_y_apex, d_t_ascent__b_y_apex, d_liftoff_q_r__b_y_apex, d_liftoff_q_rd__b_y_apex, d_liftoff_q_th__b_y_apex, d_liftoff_q_thd__b_y_apex, d_P_c__b_y_apex, d_passes__b_y_apex, _) = _c0
     # derivatives with respect to b_xd_apex
     _c1 = gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 1.0, 0.0, 0.0)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    d_apex_height__b_xd_apex = _c1[11]
-    d_apex_speed__b_xd_apex = _c1[12]
-    d_t_descent__b_xd_apex = _c1[13]
-    d_t_stance__b_xd_apex = _c1[14]
-    d_t_ascent__b_xd_apex = _c1[15]
-    d_liftoff_q_r__b_xd_apex = _c1[16]
-    d_liftoff_q_rd__b_xd_apex = _c1[17]
-    d_liftoff_q_th__b_xd_apex = _c1[18]
-    d_liftoff_q_thd__b_xd_apex = _c1[19]
-    d_P_c__b_xd_apex = _c1[20]
-    d_passes__b_xd_apex = _c1[21]
+        return _NAN55 + (_c1[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_apex_height__b_xd_apex, d_apex_speed__b_xd_apex, d_t_descent__b_xd_apex, d_t_stance__b_xd_apex, d_t_ascent__b_xd_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_thd__b_xd_apex, d_P_c__b_xd_apex, d_passes__b_xd_apex, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 0.0, 1.0, 0.0)
     if _c2[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[22])
-    d_apex_height__q_th_td = _c2[11]
-    d_apex_speed__q_th_td = _c2[12]
-    d_t_descent__q_th_td = _c2[13]
-    d_t_stance__q_th_td = _c2[14]
-    d_t_ascent__q_th_td = _c2[15]
-    d_liftoff_q_r__q_th_td = _c2[16]
-    d_liftoff_q_rd__q_th_td = _c2[17]
-    d_liftoff_q_th__q_th_td = _c2[18]
-    d_liftoff_q_thd__q_th_td = _c2[19]
-    d_P_c__q_th_td = _c2[20]
-    d_passes__q_th_td = _c2[21]
+        return _NAN55 + (_c2[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_apex_height__q_th_td, d_apex_speed__q_th_td, d_t_descent__q_th_td, d_t_stance__q_th_td, d_t_ascent__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_P_c__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to k
     _c3 = gravity_type2_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol, 0.0, 0.0, 0.0, 1.0)
     if _c3[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[22])
-    d_apex_height__k = _c3[11]
-    d_apex_speed__k = _c3[12]
-    d_t_descent__k = _c3[13]
-    d_t_stance__k = _c3[14]
-    d_t_ascent__k = _c3[15]
-    d_liftoff_q_r__k = _c3[16]
-    d_liftoff_q_rd__k = _c3[17]
-    d_liftoff_q_th__k = _c3[18]
-    d_liftoff_q_thd__k = _c3[19]
-    d_P_c__k = _c3[20]
-    d_passes__k = _c3[21]
+        return _NAN55 + (_c3[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_apex_height__k, d_apex_speed__k, d_t_descent__k, d_t_stance__k, d_t_ascent__k, d_liftoff_q_r__k, d_liftoff_q_rd__k, d_liftoff_q_th__k, d_liftoff_q_thd__k, d_P_c__k, d_passes__k, _) = _c3
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_P_c__b_y_apex) and math.isfinite(d_P_c__b_xd_apex) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN55 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k, STATUS_OK)
 
 

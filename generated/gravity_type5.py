@@ -5,8 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
-#   geyer.py sha256:b5957f8d4d622f96
+#   flight.py sha256:a291c3b0eaea5af3
+#   geyer.py sha256:677d7d2464b0d738
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
 
@@ -22,6 +22,10 @@ from .geyer import geyer_liftoff_phase
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
 
 NAN = math.nan
+_NAN4 = (NAN,) * 4
+_NAN5 = (NAN,) * 5
+_NAN11 = (NAN,) * 11
+_NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
@@ -51,7 +55,7 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     # Total ops: 73
     omega0_sq = k/m
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # T5.4: the quadratic about r_c with g_eff
     _x0 = (r_c + 1.0)**-4
     _x1 = 4.0*omega0_sq
@@ -73,17 +77,17 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     b2 = (0.25)*_x9**2*(-4.0*lam*nu + mu**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN5 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x10 = math.sqrt(b2)
     b = _x10
     s_td = (-a - 1.0 + q_r_td/l0)/_x10
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN5 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN5 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     # (internal helper: its callers check that their outputs are finite)
@@ -190,7 +194,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     # Total ops: 385
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -219,7 +223,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+            return _NAN12 + (_c0[5],)
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
@@ -227,7 +231,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN12 + (_c1[2],)
         i_phase_lo = _c1[0]
         # eqs (13)-(14) minus (12); T5.6: the rate factor
         _x6 = (1.0/i_omega0_hat)
@@ -278,7 +282,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN12 + (STATUS_NOT_CONVERGED,)
     # T5.1: the torque quadratic through the nodal torques of the previous pass
     _x20 = (1.0/T)
     _x18 = math.sqrt(15.0)
@@ -291,7 +295,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     # T5.4-T5.5: radial solution
     _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
     if _c5[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[5])
+        return _NAN12 + (_c5[5],)
     f_omega0_hat = _c5[0]
     f_a = _c5[1]
     f_b = _c5[2]
@@ -299,7 +303,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     f_s_td = _c5[4]
     _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c6[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[2])
+        return _NAN12 + (_c6[2],)
     f_phase_lo = _c6[0]
     # eqs (13)-(14) minus (12); T5.6: the rate factor
     _x21 = (1.0/f_omega0_hat)
@@ -351,19 +355,19 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     liftoff_q_thd = _x34*(_x37 + p_td)/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN12 + (STATUS_FALL,)
     _x38 = (1.0/m)
     _x39 = _x38*k
     _x40 = q_r_lo**2
     _q_rd_lo_sq = 2.0*E_td*_x38 - _x38**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN12 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
     liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
@@ -423,7 +427,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     # Total ops: 344
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -452,7 +456,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[5])
+            return _NAN4 + (_c0[5],)
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
@@ -460,7 +464,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_phase_lo = _c1[0]
         # eqs (13)-(14) minus (12); T5.6: the rate factor
         _x6 = (1.0/i_omega0_hat)
@@ -511,7 +515,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN4 + (STATUS_NOT_CONVERGED,)
     # T5.1: the torque quadratic through the nodal torques of the previous pass
     _x20 = (1.0/T)
     _x18 = math.sqrt(15.0)
@@ -524,7 +528,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     # T5.4-T5.5: radial solution
     _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
     if _c5[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c5[5])
+        return _NAN4 + (_c5[5],)
     f_omega0_hat = _c5[0]
     f_a = _c5[1]
     f_b = _c5[2]
@@ -532,7 +536,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     f_s_td = _c5[4]
     _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
     if _c6[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c6[2])
+        return _NAN4 + (_c6[2],)
     f_phase_lo = _c6[0]
     # eqs (13)-(14) minus (12); T5.6: the rate factor
     _x21 = (1.0/f_omega0_hat)
@@ -574,7 +578,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     q_thd = (f_c0*t + (0.5)*f_c1*t**2 + (0.3333333333333333)*f_c2*t**3 + p_td)/(_x34**2*l0**2*m)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
@@ -633,11 +637,11 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN11 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN11 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -646,7 +650,7 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # stance: Gravity correction type 5 (time-varying momentum)
     _c1 = gravity_type5_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, iterations, tol)
     if _c1[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        return _NAN11 + (_c1[12],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -657,13 +661,13 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN11 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 

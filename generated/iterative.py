@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
-#   geyer.py sha256:b5957f8d4d622f96
-#   geyer_vs.py sha256:498b77869b6a1757
-#   gravity_type0.py sha256:09bc8f3897a63929
-#   gravity_type1.py sha256:47da0cd470c47a14
-#   gravity_type2.py sha256:d3f5e143d0032a77
-#   gravity_type3.py sha256:5317afa5553c4c39
-#   gravity_type4.py sha256:6d0d5f5a724b468f
-#   gravity_type5.py sha256:d2bee75f452c8694
+#   flight.py sha256:a291c3b0eaea5af3
+#   geyer.py sha256:677d7d2464b0d738
+#   geyer_vs.py sha256:9cc9456ce6fb44c3
+#   gravity_type0.py sha256:45b075413f97ed18
+#   gravity_type1.py sha256:02ca50bea1ed5185
+#   gravity_type2.py sha256:e3a216dc9914ebb0
+#   gravity_type3.py sha256:536dce4dccb0bbb2
+#   gravity_type4.py sha256:fab9ba064bfcd486
+#   gravity_type5.py sha256:50b0f871920d6a5a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels."""
 
@@ -36,6 +36,9 @@ from .gravity_type5 import gravity_type5_stance
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN6 = (NAN,) * 6
+_NAN10 = (NAN,) * 10
+_NAN11 = (NAN,) * 11
 
 
 @njit(cache=True, error_model="numpy")
@@ -72,10 +75,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     # Total ops: 2126
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # node count
     if nodes == 0.0:
         # Picard passes on the 1 node values (collocation in u)
@@ -103,7 +106,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _ifp0 = _x0*_x7*g_s*m**(1.5)*math.sin(_Q0)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n0_0 = m*q_rd**2/(1.0*_iF0 - 1.0*k_c*(-_isigma0 + l0) + k_c*(l0 - q_r) + math.sqrt(k_c*m*q_rd**2 + (1.0*_iF0 - 1.0*k_c*(-_isigma0 + l0) + k_c*(l0 - q_r))**2))
             _n0_1 = 0.5*_ifq0 + q_th
             _n0_2 = 0.5*_ifp0 + m*q_r**2*q_thd
@@ -117,7 +120,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             if _conv0:
                 break
         if not _conv0 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x9 = -0.75*_D + q_r
         _x17 = (1.0/_x9)
@@ -136,7 +139,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _ffp0 = _x16*_x9*g_s*m**(1.5)*math.sin(_Q0)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # bottom state
         _x18 = -_D + q_r
         t_half = 1.0*_fft0
@@ -147,7 +150,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         passes = _passes
         # bottom leg length q_r_b > 0
         if not ((end_q_r > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN6 + (STATUS_FALL,)
     elif nodes == 1.0:
         # Picard passes on the 2 node values (collocation in u)
         _D = -guess_q_r + q_r
@@ -200,10 +203,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _ifp1 = _x29*_x41*_x43*math.sin(_Q1)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n1_0 = m*q_rd**2/(0.2113248654051871*_iF0 + 0.7886751345948129*_iF1 - 0.2113248654051871*k_c*(-_isigma0 + l0) - 0.7886751345948129*k_c*(-_isigma1 + l0) + k_c*(l0 - q_r) + math.sqrt(k_c*m*q_rd**2 + (0.2113248654051871*_iF0 + 0.7886751345948129*_iF1 - 0.2113248654051871*k_c*(-_isigma0 + l0) - 0.7886751345948129*k_c*(-_isigma1 + l0) + k_c*(l0 - q_r))**2))
             _n1_1 = 0.25*_ifq0 + 0.5386751345948129*_ifq1 + q_th
             _n1_2 = -0.03867513459481288*_ifq0 + 0.25*_ifq1 + q_th
@@ -221,7 +224,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             if _conv1:
                 break
         if not _conv1 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x46 = -q_r
         _x47 = -0.9553418012614795*_D - _x46
@@ -264,10 +267,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _ffp1 = _x56*_x68*_x70*math.sin(_Q1)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # bottom state
         _x73 = -_D + q_r
         t_half = 0.5*_fft0 + 0.5*_fft1
@@ -278,7 +281,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         passes = _passes
         # bottom leg length q_r_b > 0
         if not ((end_q_r > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN6 + (STATUS_FALL,)
     elif nodes == 2.0:
         # Picard passes on the 3 node values (collocation in u)
         _D = -guess_q_r + q_r
@@ -348,13 +351,13 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _ifp2 = _x102*_x106*_x90*math.sin(_Q2)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n2_0 = m*q_rd**2/(0.06261203632181017*_iF0 + 0.4444444444444444*_iF1 + 0.4929435192337454*_iF2 - 0.06261203632181017*k_c*(-_isigma0 + l0) - 0.4444444444444444*k_c*(-_isigma1 + l0) - 0.4929435192337454*k_c*(-_isigma2 + l0) + k_c*(l0 - q_r) + math.sqrt(k_c*m*q_rd**2 + (0.06261203632181017*_iF0 + 0.4444444444444444*_iF1 + 0.4929435192337454*_iF2 - 0.06261203632181017*k_c*(-_isigma0 + l0) - 0.4444444444444444*k_c*(-_isigma1 + l0) - 0.4929435192337454*k_c*(-_isigma2 + l0) + k_c*(l0 - q_r))**2))
             _n2_1 = 0.1388888888888889*_ifq0 + 0.48042111196938336*_ifq1 + 0.26798833376246944*_ifq2 + q_th
             _n2_2 = -0.022485417203086815*_ifq0 + 0.2222222222222222*_ifq1 + 0.30026319498086457*_ifq2 + q_th
@@ -376,7 +379,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             if _conv2:
                 break
         if not _conv2 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x110 = -q_r
         _x111 = -0.9872983346207417*_D - _x110
@@ -434,13 +437,13 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _ffp2 = _x126*_x138*_x142*math.sin(_Q2)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # bottom state
         _x146 = -_D + q_r
         t_half = 0.2777777777777778*_fft0 + 0.4444444444444444*_fft1 + 0.2777777777777778*_fft2
@@ -451,7 +454,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         passes = _passes
         # bottom leg length q_r_b > 0
         if not ((end_q_r > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN6 + (STATUS_FALL,)
     elif nodes == 3.0:
         # Picard passes on the 4 node values (collocation in u)
         _D = -guess_q_r + q_r
@@ -540,16 +543,16 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _ifp3 = _x170*_x183*_x189*math.sin(_Q3)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi3 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n3_0 = m*q_rd**2/(0.024152203412833244*_iF0 + 0.215214082271785*_iF1 + 0.43693107259076114*_iF2 + 0.3237026417246206*_iF3 - 0.024152203412833244*k_c*(-_isigma0 + l0) - 0.215214082271785*k_c*(-_isigma1 + l0) - 0.43693107259076114*k_c*(-_isigma2 + l0) - 0.3237026417246206*k_c*(-_isigma3 + l0) + k_c*(l0 - q_r) + math.sqrt(k_c*m*q_rd**2 + (0.024152203412833244*_iF0 + 0.215214082271785*_iF1 + 0.43693107259076114*_iF2 + 0.3237026417246206*_iF3 - 0.024152203412833244*k_c*(-_isigma0 + l0) - 0.215214082271785*k_c*(-_isigma1 + l0) - 0.43693107259076114*k_c*(-_isigma2 + l0) - 0.3237026417246206*k_c*(-_isigma3 + l0) + k_c*(l0 - q_r))**2))
             _n3_1 = 0.08696371128436346*_ifq0 + 0.35267675751627187*_ifq1 + 0.31344511474186837*_ifq2 + 0.1774825722545226*_ifq3 + q_th
             _n3_2 = -0.014190694931141144*_ifq0 + 0.16303628871563652*_ifq1 + 0.35395300603374397*_ifq2 + 0.16719192197418878*_ifq3 + q_th
@@ -575,7 +578,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             if _conv3:
                 break
         if not _conv3 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x194 = -q_r
         _x195 = -0.9951792190105739*_D - _x194
@@ -650,16 +653,16 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _ffp3 = _x217*_x230*_x236*math.sin(_Q3)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi3 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # bottom state
         _x241 = -_D + q_r
         t_half = 0.17392742256872692*_fft0 + 0.32607257743127305*_fft1 + 0.32607257743127305*_fft2 + 0.17392742256872692*_fft3
@@ -670,7 +673,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         passes = _passes
         # bottom leg length q_r_b > 0
         if not ((end_q_r > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN6 + (STATUS_FALL,)
     elif nodes == 4.0:
         # Picard passes on the 6 node values (collocation in u)
         _D = -guess_q_r + q_r
@@ -797,22 +800,22 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             _ifp5 = _x279*_x292*_x304*math.sin(_Q5)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi3 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi4 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi5 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n4_0 = m*q_rd**2/(0.005784813099631875*_iF0 + 0.06111131733618721*_iF1 + 0.17813034617398463*_iF2 + 0.28978358839870644*_iF3 + 0.2996502557119514*_iF4 + 0.16553967927953847*_iF5 - 0.005784813099631875*k_c*(-_isigma0 + l0) - 0.06111131733618721*k_c*(-_isigma1 + l0) - 0.17813034617398463*k_c*(-_isigma2 + l0) - 0.28978358839870644*k_c*(-_isigma3 + l0) - 0.2996502557119514*k_c*(-_isigma4 + l0) - 0.16553967927953847*k_c*(-_isigma5 + l0) + k_c*(l0 - q_r) + math.sqrt(k_c*m*q_rd**2 + (0.005784813099631875*_iF0 + 0.06111131733618721*_iF1 + 0.17813034617398463*_iF2 + 0.28978358839870644*_iF3 + 0.2996502557119514*_iF4 + 0.16553967927953847*_iF5 - 0.005784813099631875*k_c*(-_isigma0 + l0) - 0.06111131733618721*k_c*(-_isigma1 + l0) - 0.17813034617398463*k_c*(-_isigma2 + l0) - 0.28978358839870644*k_c*(-_isigma3 + l0) - 0.2996502557119514*k_c*(-_isigma4 + l0) - 0.16553967927953847*k_c*(-_isigma5 + l0) + k_c*(l0 - q_r))**2))
             _n4_1 = 0.04283112309479259*_ifq0 + 0.19514451252126672*_ifq1 + 0.22463191657986778*_ifq2 + 0.23962582533582905*_ifq3 + 0.17752635320896998*_ifq4 + 0.08647502636084993*_ifq5 + q_th
             _n4_2 = -0.007011245240793691*_ifq0 + 0.09019039326203465*_ifq1 + 0.2542570695795851*_ifq2 + 0.2235938110460991*_ifq3 + 0.18526797945210696*_ifq4 + 0.08430668513410011*_ifq5 + q_th
@@ -846,7 +849,7 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             if _conv4:
                 break
         if not _conv4 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x311 = -q_r
         _x312 = -0.9988599083720104*_D - _x311
@@ -955,22 +958,22 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         _ffp5 = _x348*_x361*_x373*math.sin(_Q5)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi3 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi4 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi5 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # bottom state
         _x380 = -_D + q_r
         t_half = 0.08566224618958518*_fft0 + 0.1803807865240693*_fft1 + 0.23395696728634552*_fft2 + 0.23395696728634552*_fft3 + 0.1803807865240693*_fft4 + 0.08566224618958518*_fft5
@@ -981,12 +984,12 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         passes = _passes
         # bottom leg length q_r_b > 0
         if not ((end_q_r > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN6 + (STATUS_FALL,)
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
@@ -1024,13 +1027,13 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     # Total ops: 2145
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN6 + (STATUS_NO_LIFTOFF,)
     # F_r > 0 at the bottom with k_d
     if not ((-g_s*m*math.cos(q_th) + k_d*l0 - k_d*q_r + m*q_r*q_thd**2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN6 + (STATUS_RECOMPRESSION,)
     # node count
     if nodes == 0.0:
         # Picard passes on the 1 node values (collocation in u)
@@ -1058,7 +1061,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _ifp0 = _x0*_x7*g_s*m**(1.5)*math.sin(_Q0)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n0_0 = _D
             _n0_1 = 0.5*_ifq0 + q_th
             _n0_2 = 0.5*_ifp0 + m*q_r**2*q_thd
@@ -1072,7 +1075,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             if _conv0:
                 break
         if not _conv0 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x9 = 0.25*_D + q_r
         _x17 = (1.0/_x9)
@@ -1091,11 +1094,11 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _ffp0 = _x16*_x9*g_s*m**(1.5)*math.sin(_Q0)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         _work = 0.5*_fF0
         # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
         if not ((_work > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+            return _NAN6 + (STATUS_NO_LIFTOFF,)
         # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
         t_half = 1.0*_fft0
         end_q_th = 1.0*_ffq0 + q_th
@@ -1154,10 +1157,10 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _ifp1 = _x27*_x39*_x41*math.sin(_Q1)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n1_0 = _D
             _n1_1 = 0.25*_ifq0 - 0.03867513459481288*_ifq1 + q_th
             _n1_2 = 0.5386751345948129*_ifq0 + 0.25*_ifq1 + q_th
@@ -1175,7 +1178,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             if _conv1:
                 break
         if not _conv1 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x44 = 0.04465819873852045*_D + q_r
         _x68 = (1.0/_x44)
@@ -1217,14 +1220,14 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _ffp1 = _x53*_x65*_x67*math.sin(_Q1)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         _work = 0.10566243270259355*_fF0 + 0.39433756729740643*_fF1
         # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
         if not ((_work > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+            return _NAN6 + (STATUS_NO_LIFTOFF,)
         # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
         t_half = 0.5*_fft0 + 0.5*_fft1
         end_q_th = 0.5*_ffq0 + 0.5*_ffq1 + q_th
@@ -1300,13 +1303,13 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _ifp2 = _x101*_x85*_x97*math.sin(_Q2)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n2_0 = _D
             _n2_1 = 0.1388888888888889*_ifq0 - 0.0359766675249389*_ifq1 + 0.009789444015308325*_ifq2 + q_th
             _n2_2 = 0.30026319498086457*_ifq0 + 0.2222222222222222*_ifq1 - 0.022485417203086815*_ifq2 + q_th
@@ -1328,7 +1331,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             if _conv2:
                 break
         if not _conv2 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x105 = 0.012701665379258311*_D + q_r
         _x137 = (1.0/_x105)
@@ -1385,17 +1388,17 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _ffp2 = _x120*_x132*_x136*math.sin(_Q2)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         _work = 0.031306018160905086*_fF0 + 0.2222222222222222*_fF1 + 0.2464717596168727*_fF2
         # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
         if not ((_work > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+            return _NAN6 + (STATUS_NO_LIFTOFF,)
         # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
         t_half = 0.2777777777777778*_fft0 + 0.4444444444444444*_fft1 + 0.2777777777777778*_fft2
         end_q_th = 0.2777777777777778*_ffq0 + 0.4444444444444444*_ffq1 + 0.2777777777777778*_ffq2 + q_th
@@ -1490,16 +1493,16 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _ifp3 = _x162*_x175*_x181*math.sin(_Q3)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi3 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n3_0 = _D
             _n3_1 = 0.08696371128436346*_ifq0 - 0.026604180084998794*_ifq1 + 0.012627462689404725*_ifq2 - 0.0035551496857956833*_ifq3 + q_th
             _n3_2 = 0.18811811749986806*_ifq0 + 0.16303628871563652*_ifq1 - 0.027880428602470895*_ifq2 + 0.006735500594538156*_ifq3 + q_th
@@ -1525,7 +1528,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             if _conv3:
                 break
         if not _conv3 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x186 = 0.004820780989426014*_D + q_r
         _x228 = (1.0/_x186)
@@ -1599,20 +1602,20 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _ffp3 = _x208*_x221*_x227*math.sin(_Q3)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi3 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         _work = 0.012076101706416622*_fF0 + 0.1076070411358925*_fF1 + 0.21846553629538057*_fF2 + 0.1618513208623103*_fF3
         # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
         if not ((_work > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+            return _NAN6 + (STATUS_NO_LIFTOFF,)
         # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
         t_half = 0.17392742256872692*_fft0 + 0.32607257743127305*_fft1 + 0.32607257743127305*_fft2 + 0.17392742256872692*_fft3
         end_q_th = 0.17392742256872692*_ffq0 + 0.32607257743127305*_ffq1 + 0.32607257743127305*_ffq2 + 0.17392742256872692*_ffq3 + q_th
@@ -1745,22 +1748,22 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             _ifp5 = _x268*_x281*_x293*math.sin(_Q5)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi0 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi1 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi2 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi3 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi4 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             # p_r^2 = 2 m int F_r > 0 at every node
             if not ((_iPsi5 > 0.0)):
-                return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+                return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
             _n4_0 = _D
             _n4_1 = 0.04283112309479259*_ifq0 - 0.014763725997197413*_ifq1 + 0.009325050706477751*_ifq2 - 0.005668858049483512*_ifq3 + 0.002854433315099335*_ifq4 - 0.0008127801712647621*_ifq5 + q_th
             _n4_2 = 0.09267349143037887*_ifq0 + 0.09019039326203465*_ifq1 - 0.020300102293239586*_ifq2 + 0.010363156240246424*_ifq3 - 0.004887192928037671*_ifq4 + 0.0013555610554850618*_ifq5 + q_th
@@ -1794,7 +1797,7 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             if _conv4:
                 break
         if not _conv4 and tol > 0.0 and _passes > 0.0:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+            return _NAN6 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
         _x300 = 0.0011400916279895713*_D + q_r
         _x362 = (1.0/_x300)
@@ -1902,26 +1905,26 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         _ffp5 = _x336*_x349*_x361*math.sin(_Q5)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi0 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi1 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi3 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi4 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_fPsi5 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
         _work = 0.0028924065498159377*_fF0 + 0.030555658668093604*_fF1 + 0.08906517308699231*_fF2 + 0.14489179419935322*_fF3 + 0.1498251278559757*_fF4 + 0.08276983963976924*_fF5
         # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
         if not ((_work > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+            return _NAN6 + (STATUS_NO_LIFTOFF,)
         # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
         t_half = 0.08566224618958518*_fft0 + 0.1803807865240693*_fft1 + 0.23395696728634552*_fft2 + 0.23395696728634552*_fft3 + 0.1803807865240693*_fft4 + 0.08566224618958518*_fft5
         end_q_th = 0.08566224618958518*_ffq0 + 0.1803807865240693*_ffq1 + 0.23395696728634552*_ffq2 + 0.23395696728634552*_ffq3 + 0.1803807865240693*_ffq4 + 0.08566224618958518*_ffq5 + q_th
@@ -1930,10 +1933,10 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         end_q_thd = (0.08566224618958518*_ffp0 + 0.1803807865240693*_ffp1 + 0.23395696728634552*_ffp2 + 0.23395696728634552*_ffp3 + 0.1803807865240693*_ffp4 + 0.08566224618958518*_ffp5 + m*q_r**2*q_thd)/(m*q_r_lo**2)
         passes = _passes
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
@@ -1980,10 +1983,10 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
     # Total ops: 46
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -2001,7 +2004,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN11 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -2011,7 +2014,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 0 (leg length l0)
         _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0)
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN11 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -2021,7 +2024,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
         _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12)
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN11 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -2031,7 +2034,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 2 (average leg length)
         _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12)
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN11 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -2041,7 +2044,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
         _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12)
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN11 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -2051,7 +2054,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
         _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12)
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN11 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -2061,7 +2064,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN11 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -2071,18 +2074,18 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
         _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN11 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN11 + (STATUS_INVALID_INPUT,)
     # compression half, k_c (report 5.2.1)
     _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
     if _c8[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
+        return _NAN11 + (_c8[6],)
     t_bottom = _c8[0]
     bottom_q_r = _c8[1]
     bottom_q_rd = _c8[2]
@@ -2096,7 +2099,7 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
     # decompression half, k_d (report 3.2, 5.2.2)
     _c9 = schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo, g_lo_q_th, g_lo_q_thd, nodes, iterations, tol)
     if _c9[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c9[6])
+        return _NAN11 + (_c9[6],)
     t_decompression = _c9[0]
     liftoff_q_r = _c9[1]
     liftoff_q_rd = _c9[2]
@@ -2107,10 +2110,10 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
     passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN11 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
 
 
@@ -2178,11 +2181,11 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN10 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -2191,7 +2194,7 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _c1 = iterative_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth)
     if _c1[11] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[11])
+        return _NAN10 + (_c1[11],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -2201,13 +2204,13 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN10 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
 
 

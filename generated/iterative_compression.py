@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b5957f8d4d622f96
-#   geyer_vs.py sha256:498b77869b6a1757
-#   gravity_type0.py sha256:09bc8f3897a63929
-#   gravity_type1.py sha256:47da0cd470c47a14
-#   gravity_type2.py sha256:d3f5e143d0032a77
-#   gravity_type3.py sha256:5317afa5553c4c39
-#   gravity_type4.py sha256:6d0d5f5a724b468f
-#   gravity_type5.py sha256:d2bee75f452c8694
-#   iterative.py sha256:9d608fcd25fd287c
+#   geyer.py sha256:677d7d2464b0d738
+#   geyer_vs.py sha256:9cc9456ce6fb44c3
+#   gravity_type0.py sha256:45b075413f97ed18
+#   gravity_type1.py sha256:02ca50bea1ed5185
+#   gravity_type2.py sha256:e3a216dc9914ebb0
+#   gravity_type3.py sha256:536dce4dccb0bbb2
+#   gravity_type4.py sha256:fab9ba064bfcd486
+#   gravity_type5.py sha256:50b0f871920d6a5a
+#   iterative.py sha256:900e6b9cc2dda114
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 
@@ -36,6 +36,7 @@ from .iterative import schwind_compression
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
+_NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
@@ -70,7 +71,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     # Total ops: 31
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -88,7 +89,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN6 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -98,7 +99,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 0 (leg length l0)
         _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0, 0.0)
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN6 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -108,7 +109,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
         _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0, 1e-12)
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN6 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -118,7 +119,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 2 (average leg length)
         _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12)
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN6 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -128,7 +129,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
         _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0, 1e-12)
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN6 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -138,7 +139,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
         _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12)
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN6 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -148,7 +149,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN6 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -158,18 +159,18 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
         _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN6 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # compression half, k_c (report 5.2.1)
     _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
     if _c8[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
+        return _NAN6 + (_c8[6],)
     t_half = _c8[0]
     end_q_r = _c8[1]
     end_q_rd = _c8[2]
@@ -178,7 +179,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     passes = _c8[5]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 

@@ -5,7 +5,7 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:9d608fcd25fd287c
+#   iterative.py sha256:900e6b9cc2dda114
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff."""
 
@@ -20,6 +20,7 @@ from .iterative import schwind_decompression
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
+_NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
@@ -54,11 +55,11 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b) and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b, q_r_b**2*q_thd_b/q_r_lo**2, nodes, iterations, tol)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN6 + (_c0[6],)
     t_half = _c0[0]
     end_q_r = _c0[1]
     end_q_rd = _c0[2]
@@ -67,7 +68,7 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
     passes = _c0[5]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 

@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:6d2a79031b9ac2b8
-#   geyer_jacobian.py sha256:ebd2115f68e33426
-#   geyer_vs_jacobian.py sha256:bb285f304f83604f
-#   gravity_type0_jacobian.py sha256:43e6e5c6eebcb499
-#   gravity_type1_jacobian.py sha256:470965ecec39f988
-#   gravity_type2_jacobian.py sha256:660c5b1015ce6676
-#   gravity_type3_jacobian.py sha256:b6db47722699db7b
-#   gravity_type4_jacobian.py sha256:100334fa0aee2645
-#   gravity_type5_jacobian.py sha256:f0240d5b343888e3
+#   flight_jacobian.py sha256:e58e885f76eb1aa8
+#   geyer_jacobian.py sha256:849e7410cc446e23
+#   geyer_vs_jacobian.py sha256:ed8004ee3dc8f349
+#   gravity_type0_jacobian.py sha256:9c8801e32205e472
+#   gravity_type1_jacobian.py sha256:4169ef80df01f145
+#   gravity_type2_jacobian.py sha256:e540f2eab7594ea0
+#   gravity_type3_jacobian.py sha256:71a238c113adc0f4
+#   gravity_type4_jacobian.py sha256:dcb77054308f58c3
+#   gravity_type5_jacobian.py sha256:0fe0cff033dbdcbe
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -36,6 +36,19 @@ from .gravity_type5_jacobian import gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN6 = (NAN,) * 6
+_NAN10 = (NAN,) * 10
+_NAN12 = (NAN,) * 12
+_NAN14 = (NAN,) * 14
+_NAN18 = (NAN,) * 18
+_NAN20 = (NAN,) * 20
+_NAN22 = (NAN,) * 22
+_NAN24 = (NAN,) * 24
+_NAN26 = (NAN,) * 26
+_NAN29 = (NAN,) * 29
+_NAN31 = (NAN,) * 31
+_NAN60 = (NAN,) * 60
+_NAN77 = (NAN,) * 77
 
 
 @njit(cache=True, error_model="numpy")
@@ -125,7 +138,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp0__tan = (0.5)*_D__tan*_x22*_x23*_x33 + _Q0__tan*_x26*_x32*_x4 + _x2*_x31 - _x24*_x33
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x35 = m*q_rd**2
     _x36 = -q_r
@@ -254,7 +267,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ffp0__tan = (0.5)*_D__tan*_x22*_x23*_x33 + _Q0__tan*_x26*_x32*_x4 + _x2*_x31 - _x24*_x33
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # bottom state
     _x35 = -_D + q_r
     _x42 = (1.0/_x35)
@@ -276,7 +289,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -356,7 +369,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         # loop body
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN29 + (_c0[6],)
         _next_D = _c0[0]
         _next_Q0 = _c0[1]
         _next_P0 = _c0[2]
@@ -382,33 +395,12 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    t_half = _c1[12]
-    t_half__tan = _c1[13]
-    end_q_th = _c1[14]
-    end_q_th__tan = _c1[15]
-    end_q_r = _c1[16]
-    end_q_r__tan = _c1[17]
-    end_q_rd = _c1[18]
-    end_q_thd = _c1[19]
-    end_q_thd__tan = _c1[20]
-    passes = _c1[21]
+        return _NAN29 + (_c1[22],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -555,10 +547,10 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp1__tan = _Q1__tan*_x25*_x55*_x67 - _x23*_x32*_x59*_x63 + _x24*_x66 + _x32*_x58*_x67
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x70 = m*q_rd**2
     _x71 = -q_r
@@ -749,10 +741,10 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ffp1__tan = _Q1__tan*_x25*_x55*_x67 - _x23*_x32*_x59*_x63 + _x24*_x66 + _x32*_x58*_x67
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # bottom state
     _x70 = -_D + q_r
     _x78 = (1.0/_x70)
@@ -775,7 +767,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -859,17 +851,8 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         # loop body
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_P0 = _c0[3]
-        _next_P1 = _c0[4]
-        _next_D__tan = _c0[5]
-        _next_Q0__tan = _c0[6]
-        _next_Q1__tan = _c0[7]
-        _next_P0__tan = _c0[8]
-        _next_P1__tan = _c0[9]
+            return _NAN29 + (_c0[10],)
+        (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -897,33 +880,12 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    t_half = _c1[12]
-    t_half__tan = _c1[13]
-    end_q_th = _c1[14]
-    end_q_th__tan = _c1[15]
-    end_q_r = _c1[16]
-    end_q_r__tan = _c1[17]
-    end_q_rd = _c1[18]
-    end_q_thd = _c1[19]
-    end_q_thd__tan = _c1[20]
-    passes = _c1[21]
+        return _NAN29 + (_c1[22],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -1116,13 +1078,13 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp2__tan = _Q2__tan*_x41*_x72*_x92 - _x39*_x48*_x76*_x88 + _x40*_x91 + _x48*_x75*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x96 = m*q_rd**2
     _x97 = -q_r
@@ -1362,13 +1324,13 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ffp2__tan = _Q2__tan*_x41*_x72*_x92 - _x39*_x48*_x76*_x88 + _x40*_x91 + _x48*_x75*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # bottom state
     _x96 = -_D + q_r
     _x104 = (1.0/_x96)
@@ -1391,7 +1353,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -1479,21 +1441,8 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         # loop body
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[14] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[14])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_P0 = _c0[4]
-        _next_P1 = _c0[5]
-        _next_P2 = _c0[6]
-        _next_D__tan = _c0[7]
-        _next_Q0__tan = _c0[8]
-        _next_Q1__tan = _c0[9]
-        _next_Q2__tan = _c0[10]
-        _next_P0__tan = _c0[11]
-        _next_P1__tan = _c0[12]
-        _next_P2__tan = _c0[13]
+            return _NAN29 + (_c0[14],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -1529,33 +1478,12 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    t_half = _c1[12]
-    t_half__tan = _c1[13]
-    end_q_th = _c1[14]
-    end_q_th__tan = _c1[15]
-    end_q_r = _c1[16]
-    end_q_r__tan = _c1[17]
-    end_q_rd = _c1[18]
-    end_q_thd = _c1[19]
-    end_q_thd__tan = _c1[20]
-    passes = _c1[21]
+        return _NAN29 + (_c1[22],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -1794,16 +1722,16 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp3__tan = _Q3__tan*_x117*_x57*_x89 - _x113*_x55*_x64*_x93 + _x116*_x56 + _x117*_x64*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x122 = m*q_rd**2
     _x123 = -q_r
@@ -2093,16 +2021,16 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ffp3__tan = _Q3__tan*_x117*_x57*_x89 - _x113*_x55*_x64*_x93 + _x116*_x56 + _x117*_x64*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # bottom state
     _x122 = -_D + q_r
     _x131 = (1.0/_x122)
@@ -2126,7 +2054,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -2218,25 +2146,8 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         # loop body
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[18] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[18])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_Q3 = _c0[4]
-        _next_P0 = _c0[5]
-        _next_P1 = _c0[6]
-        _next_P2 = _c0[7]
-        _next_P3 = _c0[8]
-        _next_D__tan = _c0[9]
-        _next_Q0__tan = _c0[10]
-        _next_Q1__tan = _c0[11]
-        _next_Q2__tan = _c0[12]
-        _next_Q3__tan = _c0[13]
-        _next_P0__tan = _c0[14]
-        _next_P1__tan = _c0[15]
-        _next_P2__tan = _c0[16]
-        _next_P3__tan = _c0[17]
+            return _NAN29 + (_c0[18],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -2280,33 +2191,12 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    t_half = _c1[12]
-    t_half__tan = _c1[13]
-    end_q_th = _c1[14]
-    end_q_th__tan = _c1[15]
-    end_q_r = _c1[16]
-    end_q_r__tan = _c1[17]
-    end_q_rd = _c1[18]
-    end_q_thd = _c1[19]
-    end_q_thd__tan = _c1[20]
-    passes = _c1[21]
+        return _NAN29 + (_c1[22],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -2639,22 +2529,22 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp5__tan = _Q5__tan*_x123*_x169*_x89 + _x126*_x169*_x96 - _x127*_x165*_x87*_x96 + _x168*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi4 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi5 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x176 = m*q_rd**2
     _x177 = -q_r
@@ -3043,22 +2933,22 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ffp5__tan = _Q5__tan*_x123*_x169*_x89 + _x126*_x169*_x96 - _x127*_x165*_x87*_x96 + _x168*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi4 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi5 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
     # bottom state
     _x176 = -_D + q_r
     _x186 = (1.0/_x176)
@@ -3083,7 +2973,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -3183,33 +3073,8 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         # loop body
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[26] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_Q3 = _c0[4]
-        _next_Q4 = _c0[5]
-        _next_Q5 = _c0[6]
-        _next_P0 = _c0[7]
-        _next_P1 = _c0[8]
-        _next_P2 = _c0[9]
-        _next_P3 = _c0[10]
-        _next_P4 = _c0[11]
-        _next_P5 = _c0[12]
-        _next_D__tan = _c0[13]
-        _next_Q0__tan = _c0[14]
-        _next_Q1__tan = _c0[15]
-        _next_Q2__tan = _c0[16]
-        _next_Q3__tan = _c0[17]
-        _next_Q4__tan = _c0[18]
-        _next_Q5__tan = _c0[19]
-        _next_P0__tan = _c0[20]
-        _next_P1__tan = _c0[21]
-        _next_P2__tan = _c0[22]
-        _next_P3__tan = _c0[23]
-        _next_P4__tan = _c0[24]
-        _next_P5__tan = _c0[25]
+            return _NAN29 + (_c0[26],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -3269,33 +3134,12 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    t_half = _c1[12]
-    t_half__tan = _c1[13]
-    end_q_th = _c1[14]
-    end_q_th__tan = _c1[15]
-    end_q_r = _c1[16]
-    end_q_r__tan = _c1[17]
-    end_q_rd = _c1[18]
-    end_q_thd = _c1[19]
-    end_q_thd__tan = _c1[20]
-    passes = _c1[21]
+        return _NAN29 + (_c1[22],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -3351,183 +3195,43 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and math.isfinite(k_c__tan) and math.isfinite(guess_q_r__tan) and math.isfinite(guess_q_th__tan) and math.isfinite(guess_q_thd__tan) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN12 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # node count
     if nodes == 0.0:
         # branch nodes = 0
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_2(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c0[29] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[29])
-        _D = _c0[0]
-        _Q0 = _c0[1]
-        _P0 = _c0[2]
-        _D__tan = _c0[3]
-        _Q0__tan = _c0[4]
-        _P0__tan = _c0[5]
-        _passes = _c0[6]
-        _fsigma0 = _c0[7]
-        _fsigma0__tan = _c0[8]
-        _fF0 = _c0[9]
-        _fF0__tan = _c0[10]
-        _fPsi0 = _c0[11]
-        _fPsi0__tan = _c0[12]
-        _fft0 = _c0[13]
-        _fft0__tan = _c0[14]
-        _ffq0 = _c0[15]
-        _ffq0__tan = _c0[16]
-        _ffp0 = _c0[17]
-        _ffp0__tan = _c0[18]
-        t_half = _c0[19]
-        t_half__tan = _c0[20]
-        end_q_th = _c0[21]
-        end_q_th__tan = _c0[22]
-        end_q_r = _c0[23]
-        end_q_r__tan = _c0[24]
-        end_q_rd = _c0[25]
-        end_q_thd = _c0[26]
-        end_q_thd__tan = _c0[27]
-        passes = _c0[28]
+            return _NAN12 + (_c0[29],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_5(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c1[29] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[29])
-        _D = _c1[0]
-        _Q0 = _c1[1]
-        _P0 = _c1[2]
-        _D__tan = _c1[3]
-        _Q0__tan = _c1[4]
-        _P0__tan = _c1[5]
-        _passes = _c1[6]
-        _fsigma0 = _c1[7]
-        _fsigma0__tan = _c1[8]
-        _fF0 = _c1[9]
-        _fF0__tan = _c1[10]
-        _fPsi0 = _c1[11]
-        _fPsi0__tan = _c1[12]
-        _fft0 = _c1[13]
-        _fft0__tan = _c1[14]
-        _ffq0 = _c1[15]
-        _ffq0__tan = _c1[16]
-        _ffp0 = _c1[17]
-        _ffp0__tan = _c1[18]
-        t_half = _c1[19]
-        t_half__tan = _c1[20]
-        end_q_th = _c1[21]
-        end_q_th__tan = _c1[22]
-        end_q_r = _c1[23]
-        end_q_r__tan = _c1[24]
-        end_q_rd = _c1[25]
-        end_q_thd = _c1[26]
-        end_q_thd__tan = _c1[27]
-        passes = _c1[28]
+            return _NAN12 + (_c1[29],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_8(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c2[29] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[29])
-        _D = _c2[0]
-        _Q0 = _c2[1]
-        _P0 = _c2[2]
-        _D__tan = _c2[3]
-        _Q0__tan = _c2[4]
-        _P0__tan = _c2[5]
-        _passes = _c2[6]
-        _fsigma0 = _c2[7]
-        _fsigma0__tan = _c2[8]
-        _fF0 = _c2[9]
-        _fF0__tan = _c2[10]
-        _fPsi0 = _c2[11]
-        _fPsi0__tan = _c2[12]
-        _fft0 = _c2[13]
-        _fft0__tan = _c2[14]
-        _ffq0 = _c2[15]
-        _ffq0__tan = _c2[16]
-        _ffp0 = _c2[17]
-        _ffp0__tan = _c2[18]
-        t_half = _c2[19]
-        t_half__tan = _c2[20]
-        end_q_th = _c2[21]
-        end_q_th__tan = _c2[22]
-        end_q_r = _c2[23]
-        end_q_r__tan = _c2[24]
-        end_q_rd = _c2[25]
-        end_q_thd = _c2[26]
-        end_q_thd__tan = _c2[27]
-        passes = _c2[28]
+            return _NAN12 + (_c2[29],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_11(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c3[29] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[29])
-        _D = _c3[0]
-        _Q0 = _c3[1]
-        _P0 = _c3[2]
-        _D__tan = _c3[3]
-        _Q0__tan = _c3[4]
-        _P0__tan = _c3[5]
-        _passes = _c3[6]
-        _fsigma0 = _c3[7]
-        _fsigma0__tan = _c3[8]
-        _fF0 = _c3[9]
-        _fF0__tan = _c3[10]
-        _fPsi0 = _c3[11]
-        _fPsi0__tan = _c3[12]
-        _fft0 = _c3[13]
-        _fft0__tan = _c3[14]
-        _ffq0 = _c3[15]
-        _ffq0__tan = _c3[16]
-        _ffp0 = _c3[17]
-        _ffp0__tan = _c3[18]
-        t_half = _c3[19]
-        t_half__tan = _c3[20]
-        end_q_th = _c3[21]
-        end_q_th__tan = _c3[22]
-        end_q_r = _c3[23]
-        end_q_r__tan = _c3[24]
-        end_q_rd = _c3[25]
-        end_q_thd = _c3[26]
-        end_q_thd__tan = _c3[27]
-        passes = _c3[28]
+            return _NAN12 + (_c3[29],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_14(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c4[29] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[29])
-        _D = _c4[0]
-        _Q0 = _c4[1]
-        _P0 = _c4[2]
-        _D__tan = _c4[3]
-        _Q0__tan = _c4[4]
-        _P0__tan = _c4[5]
-        _passes = _c4[6]
-        _fsigma0 = _c4[7]
-        _fsigma0__tan = _c4[8]
-        _fF0 = _c4[9]
-        _fF0__tan = _c4[10]
-        _fPsi0 = _c4[11]
-        _fPsi0__tan = _c4[12]
-        _fft0 = _c4[13]
-        _fft0__tan = _c4[14]
-        _ffq0 = _c4[15]
-        _ffq0__tan = _c4[16]
-        _ffp0 = _c4[17]
-        _ffp0__tan = _c4[18]
-        t_half = _c4[19]
-        t_half__tan = _c4[20]
-        end_q_th = _c4[21]
-        end_q_th__tan = _c4[22]
-        end_q_r = _c4[23]
-        end_q_r__tan = _c4[24]
-        end_q_rd = _c4[25]
-        end_q_thd = _c4[26]
-        end_q_thd__tan = _c4[27]
-        passes = _c4[28]
+            return _NAN12 + (_c4[29],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c4
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero
     end_q_rd__tan = 0.0
     passes__tan = 0.0
@@ -3619,7 +3323,7 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_
     _ifp0__tan = (0.5)*_D__tan*_x21*_x22*_x32 + _Q0__tan*_x25*_x3*_x31 + _x1*_x30 - _x23*_x32
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x34 = m*q_r**2
     _next_D = _D
@@ -3736,12 +3440,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_
     _ffp0__tan = (0.5)*_D__tan*_x21*_x22*_x32 + _Q0__tan*_x25*_x3*_x31 + _x1*_x30 - _x23*_x32
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     _work = 0.5*_fF0
     _work__tan = 0.5*_fF0__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN24 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     _x34 = math.sqrt(_D*_work)/math.sqrt(m)
     _x35 = q_r**2
@@ -3835,7 +3539,7 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g
         # loop body
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN31 + (_c0[6],)
         _next_D = _c0[0]
         _next_Q0 = _c0[1]
         _next_P0 = _c0[2]
@@ -3861,35 +3565,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    _work = _c1[12]
-    _work__tan = _c1[13]
-    t_half = _c1[14]
-    t_half__tan = _c1[15]
-    end_q_th = _c1[16]
-    end_q_th__tan = _c1[17]
-    end_q_r = _c1[18]
-    end_q_rd = _c1[19]
-    end_q_rd__tan = _c1[20]
-    end_q_thd = _c1[21]
-    end_q_thd__tan = _c1[22]
-    passes = _c1[23]
+        return _NAN31 + (_c1[24],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -4031,10 +3712,10 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_
     _ifp1__tan = _Q1__tan*_x22*_x52*_x64 - _x20*_x29*_x56*_x60 + _x21*_x63 + _x29*_x55*_x64
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x67 = m*q_r**2
     _x68 = _x67*q_thd
@@ -4206,15 +3887,15 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_
     _ffp1__tan = _Q1__tan*_x22*_x52*_x64 - _x20*_x29*_x56*_x60 + _x21*_x63 + _x29*_x55*_x64
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     _work = 0.10566243270259355*_fF0 + 0.39433756729740643*_fF1
     _work__tan = 0.10566243270259355*_fF0__tan + 0.39433756729740643*_fF1__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN24 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     _x67 = math.sqrt(_D*_work)/math.sqrt(m)
     _x68 = q_r**2
@@ -4313,17 +3994,8 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g
         # loop body
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_P0 = _c0[3]
-        _next_P1 = _c0[4]
-        _next_D__tan = _c0[5]
-        _next_Q0__tan = _c0[6]
-        _next_Q1__tan = _c0[7]
-        _next_P0__tan = _c0[8]
-        _next_P1__tan = _c0[9]
+            return _NAN31 + (_c0[10],)
+        (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -4351,35 +4023,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    _work = _c1[12]
-    _work__tan = _c1[13]
-    t_half = _c1[14]
-    t_half__tan = _c1[15]
-    end_q_th = _c1[16]
-    end_q_th__tan = _c1[17]
-    end_q_r = _c1[18]
-    end_q_rd = _c1[19]
-    end_q_rd__tan = _c1[20]
-    end_q_thd = _c1[21]
-    end_q_thd__tan = _c1[22]
-    passes = _c1[23]
+        return _NAN31 + (_c1[24],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -4566,13 +4215,13 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_
     _ifp2__tan = _Q2__tan*_x37*_x68*_x88 - _x35*_x44*_x72*_x84 + _x36*_x87 + _x44*_x71*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x92 = m*q_r**2
     _x93 = _x92*q_thd
@@ -4789,18 +4438,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_
     _ffp2__tan = _Q2__tan*_x37*_x68*_x88 - _x35*_x44*_x72*_x84 + _x36*_x87 + _x44*_x71*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     _work = 0.031306018160905086*_fF0 + 0.2222222222222222*_fF1 + 0.2464717596168727*_fF2
     _work__tan = 0.031306018160905086*_fF0__tan + 0.2222222222222222*_fF1__tan + 0.2464717596168727*_fF2__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN24 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     _x92 = math.sqrt(_D*_work)/math.sqrt(m)
     _x93 = q_r**2
@@ -4903,21 +4552,8 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g
         # loop body
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[14] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[14])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_P0 = _c0[4]
-        _next_P1 = _c0[5]
-        _next_P2 = _c0[6]
-        _next_D__tan = _c0[7]
-        _next_Q0__tan = _c0[8]
-        _next_Q1__tan = _c0[9]
-        _next_Q2__tan = _c0[10]
-        _next_P0__tan = _c0[11]
-        _next_P1__tan = _c0[12]
-        _next_P2__tan = _c0[13]
+            return _NAN31 + (_c0[14],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -4953,35 +4589,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    _work = _c1[12]
-    _work__tan = _c1[13]
-    t_half = _c1[14]
-    t_half__tan = _c1[15]
-    end_q_th = _c1[16]
-    end_q_th__tan = _c1[17]
-    end_q_r = _c1[18]
-    end_q_rd = _c1[19]
-    end_q_rd__tan = _c1[20]
-    end_q_thd = _c1[21]
-    end_q_thd__tan = _c1[22]
-    passes = _c1[23]
+        return _NAN31 + (_c1[24],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -5213,16 +4826,16 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_
     _ifp3__tan = _Q3__tan*_x112*_x52*_x84 - _x108*_x50*_x59*_x88 + _x111*_x51 + _x112*_x59*_x87
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x117 = m*q_r**2
     _x118 = _x117*q_thd
@@ -5484,21 +5097,21 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(
     _ffp3__tan = _Q3__tan*_x112*_x52*_x84 - _x108*_x50*_x59*_x88 + _x111*_x51 + _x112*_x59*_x87
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     _work = 0.012076101706416622*_fF0 + 0.1076070411358925*_fF1 + 0.21846553629538057*_fF2 + 0.1618513208623103*_fF3
     _work__tan = 0.012076101706416622*_fF0__tan + 0.1076070411358925*_fF1__tan + 0.21846553629538057*_fF2__tan + 0.1618513208623103*_fF3__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN24 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     _x117 = math.sqrt(_D*_work)/math.sqrt(m)
     _x118 = q_r**2
@@ -5606,25 +5219,8 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(
         # loop body
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[18] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[18])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_Q3 = _c0[4]
-        _next_P0 = _c0[5]
-        _next_P1 = _c0[6]
-        _next_P2 = _c0[7]
-        _next_P3 = _c0[8]
-        _next_D__tan = _c0[9]
-        _next_Q0__tan = _c0[10]
-        _next_Q1__tan = _c0[11]
-        _next_Q2__tan = _c0[12]
-        _next_Q3__tan = _c0[13]
-        _next_P0__tan = _c0[14]
-        _next_P1__tan = _c0[15]
-        _next_P2__tan = _c0[16]
-        _next_P3__tan = _c0[17]
+            return _NAN31 + (_c0[18],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -5668,35 +5264,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    _work = _c1[12]
-    _work__tan = _c1[13]
-    t_half = _c1[14]
-    t_half__tan = _c1[15]
-    end_q_th = _c1[16]
-    end_q_th__tan = _c1[17]
-    end_q_r = _c1[18]
-    end_q_rd = _c1[19]
-    end_q_rd__tan = _c1[20]
-    end_q_thd = _c1[21]
-    end_q_thd__tan = _c1[22]
-    passes = _c1[23]
+        return _NAN31 + (_c1[24],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -6020,22 +5593,22 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(
     _ifp5__tan = _Q5__tan*_x116*_x162*_x82 + _x119*_x162*_x89 - _x120*_x158*_x80*_x89 + _x161*_x81
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi4 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi5 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x169 = m*q_r**2
     _x170 = _x169*q_thd
@@ -6389,27 +5962,27 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(
     _ffp5__tan = _Q5__tan*_x116*_x162*_x82 + _x119*_x162*_x89 - _x120*_x158*_x80*_x89 + _x161*_x81
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi1 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi3 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi4 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_fPsi5 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
     _work = 0.0028924065498159377*_fF0 + 0.030555658668093604*_fF1 + 0.08906517308699231*_fF2 + 0.14489179419935322*_fF3 + 0.1498251278559757*_fF4 + 0.08276983963976924*_fF5
     _work__tan = 0.0028924065498159377*_fF0__tan + 0.030555658668093604*_fF1__tan + 0.08906517308699231*_fF2__tan + 0.14489179419935322*_fF3__tan + 0.1498251278559757*_fF4__tan + 0.08276983963976924*_fF5__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN24 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     _x169 = math.sqrt(_D*_work)/math.sqrt(m)
     _x170 = q_r**2
@@ -6526,33 +6099,8 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(
         # loop body
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
         if _c0[26] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_Q1 = _c0[2]
-        _next_Q2 = _c0[3]
-        _next_Q3 = _c0[4]
-        _next_Q4 = _c0[5]
-        _next_Q5 = _c0[6]
-        _next_P0 = _c0[7]
-        _next_P1 = _c0[8]
-        _next_P2 = _c0[9]
-        _next_P3 = _c0[10]
-        _next_P4 = _c0[11]
-        _next_P5 = _c0[12]
-        _next_D__tan = _c0[13]
-        _next_Q0__tan = _c0[14]
-        _next_Q1__tan = _c0[15]
-        _next_Q2__tan = _c0[16]
-        _next_Q3__tan = _c0[17]
-        _next_Q4__tan = _c0[18]
-        _next_Q5__tan = _c0[19]
-        _next_P0__tan = _c0[20]
-        _next_P1__tan = _c0[21]
-        _next_P2__tan = _c0[22]
-        _next_P3__tan = _c0[23]
-        _next_P4__tan = _c0[24]
-        _next_P5__tan = _c0[25]
+            return _NAN31 + (_c0[26],)
+        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -6612,35 +6160,12 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(
         if _conv0:
             break
     if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
+        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
     _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
     if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    _fsigma0 = _c1[0]
-    _fsigma0__tan = _c1[1]
-    _fF0 = _c1[2]
-    _fF0__tan = _c1[3]
-    _fPsi0 = _c1[4]
-    _fPsi0__tan = _c1[5]
-    _fft0 = _c1[6]
-    _fft0__tan = _c1[7]
-    _ffq0 = _c1[8]
-    _ffq0__tan = _c1[9]
-    _ffp0 = _c1[10]
-    _ffp0__tan = _c1[11]
-    _work = _c1[12]
-    _work__tan = _c1[13]
-    t_half = _c1[14]
-    t_half__tan = _c1[15]
-    end_q_th = _c1[16]
-    end_q_th__tan = _c1[17]
-    end_q_r = _c1[18]
-    end_q_rd = _c1[19]
-    end_q_rd__tan = _c1[20]
-    end_q_thd = _c1[21]
-    end_q_thd__tan = _c1[22]
-    passes = _c1[23]
+        return _NAN31 + (_c1[24],)
+    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
@@ -6695,196 +6220,46 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and math.isfinite(k_d__tan) and math.isfinite(guess_q_th__tan) and math.isfinite(guess_q_thd__tan) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # F_r > 0 at the bottom with k_d
     if not ((-g_s*m*math.cos(q_th) + k_d*l0 - k_d*q_r + m*q_r*q_thd**2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+        return _NAN12 + (STATUS_RECOMPRESSION,)
     # node count
     if nodes == 0.0:
         # branch nodes = 0
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c0[31] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[31])
-        _D = _c0[0]
-        _Q0 = _c0[1]
-        _P0 = _c0[2]
-        _D__tan = _c0[3]
-        _Q0__tan = _c0[4]
-        _P0__tan = _c0[5]
-        _passes = _c0[6]
-        _fsigma0 = _c0[7]
-        _fsigma0__tan = _c0[8]
-        _fF0 = _c0[9]
-        _fF0__tan = _c0[10]
-        _fPsi0 = _c0[11]
-        _fPsi0__tan = _c0[12]
-        _fft0 = _c0[13]
-        _fft0__tan = _c0[14]
-        _ffq0 = _c0[15]
-        _ffq0__tan = _c0[16]
-        _ffp0 = _c0[17]
-        _ffp0__tan = _c0[18]
-        _work = _c0[19]
-        _work__tan = _c0[20]
-        t_half = _c0[21]
-        t_half__tan = _c0[22]
-        end_q_th = _c0[23]
-        end_q_th__tan = _c0[24]
-        end_q_r = _c0[25]
-        end_q_rd = _c0[26]
-        end_q_rd__tan = _c0[27]
-        end_q_thd = _c0[28]
-        end_q_thd__tan = _c0[29]
-        passes = _c0[30]
+            return _NAN12 + (_c0[31],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c1[31] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[31])
-        _D = _c1[0]
-        _Q0 = _c1[1]
-        _P0 = _c1[2]
-        _D__tan = _c1[3]
-        _Q0__tan = _c1[4]
-        _P0__tan = _c1[5]
-        _passes = _c1[6]
-        _fsigma0 = _c1[7]
-        _fsigma0__tan = _c1[8]
-        _fF0 = _c1[9]
-        _fF0__tan = _c1[10]
-        _fPsi0 = _c1[11]
-        _fPsi0__tan = _c1[12]
-        _fft0 = _c1[13]
-        _fft0__tan = _c1[14]
-        _ffq0 = _c1[15]
-        _ffq0__tan = _c1[16]
-        _ffp0 = _c1[17]
-        _ffp0__tan = _c1[18]
-        _work = _c1[19]
-        _work__tan = _c1[20]
-        t_half = _c1[21]
-        t_half__tan = _c1[22]
-        end_q_th = _c1[23]
-        end_q_th__tan = _c1[24]
-        end_q_r = _c1[25]
-        end_q_rd = _c1[26]
-        end_q_rd__tan = _c1[27]
-        end_q_thd = _c1[28]
-        end_q_thd__tan = _c1[29]
-        passes = _c1[30]
+            return _NAN12 + (_c1[31],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c2[31] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[31])
-        _D = _c2[0]
-        _Q0 = _c2[1]
-        _P0 = _c2[2]
-        _D__tan = _c2[3]
-        _Q0__tan = _c2[4]
-        _P0__tan = _c2[5]
-        _passes = _c2[6]
-        _fsigma0 = _c2[7]
-        _fsigma0__tan = _c2[8]
-        _fF0 = _c2[9]
-        _fF0__tan = _c2[10]
-        _fPsi0 = _c2[11]
-        _fPsi0__tan = _c2[12]
-        _fft0 = _c2[13]
-        _fft0__tan = _c2[14]
-        _ffq0 = _c2[15]
-        _ffq0__tan = _c2[16]
-        _ffp0 = _c2[17]
-        _ffp0__tan = _c2[18]
-        _work = _c2[19]
-        _work__tan = _c2[20]
-        t_half = _c2[21]
-        t_half__tan = _c2[22]
-        end_q_th = _c2[23]
-        end_q_th__tan = _c2[24]
-        end_q_r = _c2[25]
-        end_q_rd = _c2[26]
-        end_q_rd__tan = _c2[27]
-        end_q_thd = _c2[28]
-        end_q_thd__tan = _c2[29]
-        passes = _c2[30]
+            return _NAN12 + (_c2[31],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c3[31] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[31])
-        _D = _c3[0]
-        _Q0 = _c3[1]
-        _P0 = _c3[2]
-        _D__tan = _c3[3]
-        _Q0__tan = _c3[4]
-        _P0__tan = _c3[5]
-        _passes = _c3[6]
-        _fsigma0 = _c3[7]
-        _fsigma0__tan = _c3[8]
-        _fF0 = _c3[9]
-        _fF0__tan = _c3[10]
-        _fPsi0 = _c3[11]
-        _fPsi0__tan = _c3[12]
-        _fft0 = _c3[13]
-        _fft0__tan = _c3[14]
-        _ffq0 = _c3[15]
-        _ffq0__tan = _c3[16]
-        _ffp0 = _c3[17]
-        _ffp0__tan = _c3[18]
-        _work = _c3[19]
-        _work__tan = _c3[20]
-        t_half = _c3[21]
-        t_half__tan = _c3[22]
-        end_q_th = _c3[23]
-        end_q_th__tan = _c3[24]
-        end_q_r = _c3[25]
-        end_q_rd = _c3[26]
-        end_q_rd__tan = _c3[27]
-        end_q_thd = _c3[28]
-        end_q_thd__tan = _c3[29]
-        passes = _c3[30]
+            return _NAN12 + (_c3[31],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c4[31] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[31])
-        _D = _c4[0]
-        _Q0 = _c4[1]
-        _P0 = _c4[2]
-        _D__tan = _c4[3]
-        _Q0__tan = _c4[4]
-        _P0__tan = _c4[5]
-        _passes = _c4[6]
-        _fsigma0 = _c4[7]
-        _fsigma0__tan = _c4[8]
-        _fF0 = _c4[9]
-        _fF0__tan = _c4[10]
-        _fPsi0 = _c4[11]
-        _fPsi0__tan = _c4[12]
-        _fft0 = _c4[13]
-        _fft0__tan = _c4[14]
-        _ffq0 = _c4[15]
-        _ffq0__tan = _c4[16]
-        _ffp0 = _c4[17]
-        _ffp0__tan = _c4[18]
-        _work = _c4[19]
-        _work__tan = _c4[20]
-        t_half = _c4[21]
-        t_half__tan = _c4[22]
-        end_q_th = _c4[23]
-        end_q_th__tan = _c4[24]
-        end_q_r = _c4[25]
-        end_q_rd = _c4[26]
-        end_q_rd__tan = _c4[27]
-        end_q_thd = _c4[28]
-        end_q_thd__tan = _c4[29]
-        passes = _c4[30]
+            return _NAN12 + (_c4[31],)
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c4
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero
     end_q_r__tan = 0.0
     passes__tan = 0.0
@@ -7008,17 +6383,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k_c, k_c
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[12]
-    z_b_q_th__tan = _c0[14]
-    z_b_q_thd__tan = _c0[15]
-    z_lo_q_th__tan = _c0[18]
-    z_lo_q_thd__tan = _c0[19]
+        return _NAN10 + (_c0[20],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7062,17 +6428,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7116,17 +6473,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = gravity_type1_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7170,17 +6518,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7224,17 +6563,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7278,17 +6608,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = gravity_type4_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7332,17 +6653,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k_c, k_c
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7388,17 +6700,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k_c, k_c
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan)
     if _c0[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[15]
-    z_b_q_th__tan = _c0[17]
-    z_b_q_thd__tan = _c0[18]
-    z_lo_q_th__tan = _c0[21]
-    z_lo_q_thd__tan = _c0[22]
+        return _NAN10 + (_c0[26],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -7462,164 +6765,72 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td
     # Total ops: 41
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN22 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN22 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # branch zeroth = 1
         _c0 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        z_b_q_r = _c0[0]
-        z_b_q_r__tan = _c0[1]
-        z_b_q_th = _c0[2]
-        z_b_q_th__tan = _c0[3]
-        z_b_q_thd = _c0[4]
-        z_b_q_thd__tan = _c0[5]
-        z_lo_q_th = _c0[6]
-        z_lo_q_thd = _c0[7]
-        z_lo_q_th__tan = _c0[8]
-        z_lo_q_thd__tan = _c0[9]
+            return _NAN22 + (_c0[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c0
     elif zeroth == 0.0:
         # branch zeroth = 0
         _c1 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c1[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
-        z_b_q_r = _c1[0]
-        z_b_q_r__tan = _c1[1]
-        z_b_q_th = _c1[2]
-        z_b_q_th__tan = _c1[3]
-        z_b_q_thd = _c1[4]
-        z_b_q_thd__tan = _c1[5]
-        z_lo_q_th = _c1[6]
-        z_lo_q_thd = _c1[7]
-        z_lo_q_th__tan = _c1[8]
-        z_lo_q_thd__tan = _c1[9]
+            return _NAN22 + (_c1[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c1
     elif zeroth == 2.0:
         # branch zeroth = 2
         _c2 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c2[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-        z_b_q_r = _c2[0]
-        z_b_q_r__tan = _c2[1]
-        z_b_q_th = _c2[2]
-        z_b_q_th__tan = _c2[3]
-        z_b_q_thd = _c2[4]
-        z_b_q_thd__tan = _c2[5]
-        z_lo_q_th = _c2[6]
-        z_lo_q_thd = _c2[7]
-        z_lo_q_th__tan = _c2[8]
-        z_lo_q_thd__tan = _c2[9]
+            return _NAN22 + (_c2[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c2
     elif zeroth == 3.0:
         # branch zeroth = 3
         _c3 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c3[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[10])
-        z_b_q_r = _c3[0]
-        z_b_q_r__tan = _c3[1]
-        z_b_q_th = _c3[2]
-        z_b_q_th__tan = _c3[3]
-        z_b_q_thd = _c3[4]
-        z_b_q_thd__tan = _c3[5]
-        z_lo_q_th = _c3[6]
-        z_lo_q_thd = _c3[7]
-        z_lo_q_th__tan = _c3[8]
-        z_lo_q_thd__tan = _c3[9]
+            return _NAN22 + (_c3[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c3
     elif zeroth == 4.0:
         # branch zeroth = 4
         _c4 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c4[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[10])
-        z_b_q_r = _c4[0]
-        z_b_q_r__tan = _c4[1]
-        z_b_q_th = _c4[2]
-        z_b_q_th__tan = _c4[3]
-        z_b_q_thd = _c4[4]
-        z_b_q_thd__tan = _c4[5]
-        z_lo_q_th = _c4[6]
-        z_lo_q_thd = _c4[7]
-        z_lo_q_th__tan = _c4[8]
-        z_lo_q_thd__tan = _c4[9]
+            return _NAN22 + (_c4[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c4
     elif zeroth == 5.0:
         # branch zeroth = 5
         _c5 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c5[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[10])
-        z_b_q_r = _c5[0]
-        z_b_q_r__tan = _c5[1]
-        z_b_q_th = _c5[2]
-        z_b_q_th__tan = _c5[3]
-        z_b_q_thd = _c5[4]
-        z_b_q_thd__tan = _c5[5]
-        z_lo_q_th = _c5[6]
-        z_lo_q_thd = _c5[7]
-        z_lo_q_th__tan = _c5[8]
-        z_lo_q_thd__tan = _c5[9]
+            return _NAN22 + (_c5[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c5
     elif zeroth == 6.0:
         # branch zeroth = 6
         _c6 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c6[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[10])
-        z_b_q_r = _c6[0]
-        z_b_q_r__tan = _c6[1]
-        z_b_q_th = _c6[2]
-        z_b_q_th__tan = _c6[3]
-        z_b_q_thd = _c6[4]
-        z_b_q_thd__tan = _c6[5]
-        z_lo_q_th = _c6[6]
-        z_lo_q_thd = _c6[7]
-        z_lo_q_th__tan = _c6[8]
-        z_lo_q_thd__tan = _c6[9]
+            return _NAN22 + (_c6[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c6
     elif zeroth == 7.0:
         # branch zeroth = 7
         _c7 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c7[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[10])
-        z_b_q_r = _c7[0]
-        z_b_q_r__tan = _c7[1]
-        z_b_q_th = _c7[2]
-        z_b_q_th__tan = _c7[3]
-        z_b_q_thd = _c7[4]
-        z_b_q_thd__tan = _c7[5]
-        z_lo_q_th = _c7[6]
-        z_lo_q_thd = _c7[7]
-        z_lo_q_th__tan = _c7[8]
-        z_lo_q_thd__tan = _c7[9]
+            return _NAN22 + (_c7[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c7
     elif zeroth == 8.0:
         # branch zeroth = 8
         _c8 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c8[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[10])
-        z_b_q_r = _c8[0]
-        z_b_q_r__tan = _c8[1]
-        z_b_q_th = _c8[2]
-        z_b_q_th__tan = _c8[3]
-        z_b_q_thd = _c8[4]
-        z_b_q_thd__tan = _c8[5]
-        z_lo_q_th = _c8[6]
-        z_lo_q_thd = _c8[7]
-        z_lo_q_th__tan = _c8[8]
-        z_lo_q_thd__tan = _c8[9]
+            return _NAN22 + (_c8[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c8
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN22 + (STATUS_INVALID_INPUT,)
     # compression half, k_c (report 5.2.1)
     _c9 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, z_b_q_r__tan, z_b_q_th__tan, z_b_q_thd__tan)
     if _c9[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c9[12])
-    t_bottom = _c9[0]
-    bottom_q_r = _c9[1]
-    bottom_q_rd = _c9[2]
-    bottom_q_th = _c9[3]
-    bottom_q_thd = _c9[4]
-    c_passes = _c9[5]
-    t_bottom__tan = _c9[6]
-    bottom_q_r__tan = _c9[7]
-    bottom_q_rd__tan = _c9[8]
-    bottom_q_th__tan = _c9[9]
-    bottom_q_thd__tan = _c9[10]
-    c_passes__tan = _c9[11]
+        return _NAN22 + (_c9[12],)
+    (t_bottom, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, c_passes, t_bottom__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, c_passes__tan, _) = _c9
     # zeroth iterate at liftoff
     _x0 = (zeroth == 1.0)
     _x1 = ((0.0) if _x0 else (1.0))
@@ -7632,19 +6843,8 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td
     # decompression half, k_d (report 3.2, 5.2.2)
     _c10 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo, g_lo_q_th, g_lo_q_thd, nodes, iterations, tol, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, k_d__tan, g_lo_q_th__tan, g_lo_q_thd__tan)
     if _c10[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c10[12])
-    t_decompression = _c10[0]
-    liftoff_q_r = _c10[1]
-    liftoff_q_rd = _c10[2]
-    liftoff_q_th = _c10[3]
-    liftoff_q_thd = _c10[4]
-    d_passes = _c10[5]
-    t_decompression__tan = _c10[6]
-    liftoff_q_r__tan = _c10[7]
-    liftoff_q_rd__tan = _c10[8]
-    liftoff_q_th__tan = _c10[9]
-    liftoff_q_thd__tan = _c10[10]
-    d_passes__tan = _c10[11]
+        return _NAN22 + (_c10[12],)
+    (t_decompression, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_passes, t_decompression__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, d_passes__tan, _) = _c10
     _x4 = c_passes - d_passes
     _x5 = (0.5)*(0.0 if _x4 == 0 else math.copysign(1, _x4))
     t_stance = t_bottom + t_decompression
@@ -7653,7 +6853,7 @@ def iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td
     passes__tan = c_passes__tan*(_x5 + 0.5) + d_passes__tan*(0.5 - _x5)
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN22 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, STATUS_OK)
 
@@ -7766,111 +6966,40 @@ def iterative_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN77 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to q_r_td
     _c0 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[22])
-    d_t_bottom__q_r_td = _c0[11]
-    d_t_stance__q_r_td = _c0[12]
-    d_bottom_q_r__q_r_td = _c0[13]
-    d_bottom_q_rd__q_r_td = _c0[14]
-    d_bottom_q_th__q_r_td = _c0[15]
-    d_bottom_q_thd__q_r_td = _c0[16]
-    d_liftoff_q_r__q_r_td = _c0[17]
-    d_liftoff_q_rd__q_r_td = _c0[18]
-    d_liftoff_q_th__q_r_td = _c0[19]
-    d_liftoff_q_thd__q_r_td = _c0[20]
-    d_passes__q_r_td = _c0[21]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    passes = _c0[10]
+        return _NAN77 + (_c0[22],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_stance__q_r_td, d_bottom_q_r__q_r_td, d_bottom_q_rd__q_r_td, d_bottom_q_th__q_r_td, d_bottom_q_thd__q_r_td, d_liftoff_q_r__q_r_td, d_liftoff_q_rd__q_r_td, d_liftoff_q_th__q_r_td, d_liftoff_q_thd__q_r_td, d_passes__q_r_td, _) = _c0
     # derivatives with respect to q_rd_td
     _c1 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    d_t_bottom__q_rd_td = _c1[11]
-    d_t_stance__q_rd_td = _c1[12]
-    d_bottom_q_r__q_rd_td = _c1[13]
-    d_bottom_q_rd__q_rd_td = _c1[14]
-    d_bottom_q_th__q_rd_td = _c1[15]
-    d_bottom_q_thd__q_rd_td = _c1[16]
-    d_liftoff_q_r__q_rd_td = _c1[17]
-    d_liftoff_q_rd__q_rd_td = _c1[18]
-    d_liftoff_q_th__q_rd_td = _c1[19]
-    d_liftoff_q_thd__q_rd_td = _c1[20]
-    d_passes__q_rd_td = _c1[21]
+        return _NAN77 + (_c1[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_rd_td, d_t_stance__q_rd_td, d_bottom_q_r__q_rd_td, d_bottom_q_rd__q_rd_td, d_bottom_q_th__q_rd_td, d_bottom_q_thd__q_rd_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_thd__q_rd_td, d_passes__q_rd_td, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c2[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[22])
-    d_t_bottom__q_th_td = _c2[11]
-    d_t_stance__q_th_td = _c2[12]
-    d_bottom_q_r__q_th_td = _c2[13]
-    d_bottom_q_rd__q_th_td = _c2[14]
-    d_bottom_q_th__q_th_td = _c2[15]
-    d_bottom_q_thd__q_th_td = _c2[16]
-    d_liftoff_q_r__q_th_td = _c2[17]
-    d_liftoff_q_rd__q_th_td = _c2[18]
-    d_liftoff_q_th__q_th_td = _c2[19]
-    d_liftoff_q_thd__q_th_td = _c2[20]
-    d_passes__q_th_td = _c2[21]
+        return _NAN77 + (_c2[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_th_td, d_t_stance__q_th_td, d_bottom_q_r__q_th_td, d_bottom_q_rd__q_th_td, d_bottom_q_th__q_th_td, d_bottom_q_thd__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to q_thd_td
     _c3 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c3[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[22])
-    d_t_bottom__q_thd_td = _c3[11]
-    d_t_stance__q_thd_td = _c3[12]
-    d_bottom_q_r__q_thd_td = _c3[13]
-    d_bottom_q_rd__q_thd_td = _c3[14]
-    d_bottom_q_th__q_thd_td = _c3[15]
-    d_bottom_q_thd__q_thd_td = _c3[16]
-    d_liftoff_q_r__q_thd_td = _c3[17]
-    d_liftoff_q_rd__q_thd_td = _c3[18]
-    d_liftoff_q_th__q_thd_td = _c3[19]
-    d_liftoff_q_thd__q_thd_td = _c3[20]
-    d_passes__q_thd_td = _c3[21]
+        return _NAN77 + (_c3[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_t_bottom__q_thd_td, d_t_stance__q_thd_td, d_bottom_q_r__q_thd_td, d_bottom_q_rd__q_thd_td, d_bottom_q_th__q_thd_td, d_bottom_q_thd__q_thd_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_thd__q_thd_td, d_passes__q_thd_td, _) = _c3
     # derivatives with respect to k_c
     _c4 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c4[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[22])
-    d_t_bottom__k_c = _c4[11]
-    d_t_stance__k_c = _c4[12]
-    d_bottom_q_r__k_c = _c4[13]
-    d_bottom_q_rd__k_c = _c4[14]
-    d_bottom_q_th__k_c = _c4[15]
-    d_bottom_q_thd__k_c = _c4[16]
-    d_liftoff_q_r__k_c = _c4[17]
-    d_liftoff_q_rd__k_c = _c4[18]
-    d_liftoff_q_th__k_c = _c4[19]
-    d_liftoff_q_thd__k_c = _c4[20]
-    d_passes__k_c = _c4[21]
+        return _NAN77 + (_c4[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_t_bottom__k_c, d_t_stance__k_c, d_bottom_q_r__k_c, d_bottom_q_rd__k_c, d_bottom_q_th__k_c, d_bottom_q_thd__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, d_passes__k_c, _) = _c4
     # derivatives with respect to k_d
     _c5 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c5[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[22])
-    d_t_bottom__k_d = _c5[11]
-    d_t_stance__k_d = _c5[12]
-    d_bottom_q_r__k_d = _c5[13]
-    d_bottom_q_rd__k_d = _c5[14]
-    d_bottom_q_th__k_d = _c5[15]
-    d_bottom_q_thd__k_d = _c5[16]
-    d_liftoff_q_r__k_d = _c5[17]
-    d_liftoff_q_rd__k_d = _c5[18]
-    d_liftoff_q_th__k_d = _c5[19]
-    d_liftoff_q_thd__k_d = _c5[20]
-    d_passes__k_d = _c5[21]
+        return _NAN77 + (_c5[22],)
+    (_, _, _, _, _, _, _, _, _, _, _, d_t_bottom__k_d, d_t_stance__k_d, d_bottom_q_r__k_d, d_bottom_q_rd__k_d, d_bottom_q_th__k_d, d_bottom_q_thd__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, d_passes__k_d, _) = _c5
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k_c) and math.isfinite(d_t_bottom__k_d) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k_c) and math.isfinite(d_bottom_q_r__k_d) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k_c) and math.isfinite(d_bottom_q_rd__k_d) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k_c) and math.isfinite(d_bottom_q_th__k_d) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k_c) and math.isfinite(d_bottom_q_thd__k_d) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN77 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
@@ -8022,41 +7151,21 @@ def iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN20 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
     if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+        return _NAN20 + (_c0[10],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, t_descent__tan, _) = _c0
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _c1 = iterative_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
     if _c1[22] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[22])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    passes = _c1[10]
-    t_stance__tan = _c1[12]
-    liftoff_q_r__tan = _c1[17]
-    liftoff_q_rd__tan = _c1[18]
-    liftoff_q_th__tan = _c1[19]
-    liftoff_q_thd__tan = _c1[20]
-    passes__tan = _c1[21]
+        return _NAN20 + (_c1[22],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, _, t_stance__tan, _, _, _, _, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
     if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+        return _NAN20 + (_c2[8],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -8159,90 +7268,35 @@ def iterative_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN60 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to b_y_apex
     _c0 = iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    d_apex_height__b_y_apex = _c0[10]
-    d_apex_speed__b_y_apex = _c0[11]
-    d_t_descent__b_y_apex = _c0[12]
-    d_t_stance__b_y_apex = _c0[13]
-    d_t_ascent__b_y_apex = _c0[14]
-    d_liftoff_q_r__b_y_apex = _c0[15]
-    d_liftoff_q_rd__b_y_apex = _c0[16]
-    d_liftoff_q_th__b_y_apex = _c0[17]
-    d_liftoff_q_thd__b_y_apex = _c0[18]
-    d_passes__b_y_apex = _c0[19]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    passes = _c0[9]
+        return _NAN60 + (_c0[20],)
+    (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_apex_height__b_y_apex, d_apex_speed__b_y_apex, d_t_descent__b_y_apex, d_t_stance__b_y_apex, d_t_ascent__b_y_apex, d_liftoff_q_r__b_y_apex, d_liftoff_q_rd__b_y_apex, d_liftoff_q_th__b_y_apex, d_liftoff_q_thd__b_y_apex, d_passes__b_y_apex, _) = _c0
     # derivatives with respect to b_xd_apex
     _c1 = iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    d_apex_height__b_xd_apex = _c1[10]
-    d_apex_speed__b_xd_apex = _c1[11]
-    d_t_descent__b_xd_apex = _c1[12]
-    d_t_stance__b_xd_apex = _c1[13]
-    d_t_ascent__b_xd_apex = _c1[14]
-    d_liftoff_q_r__b_xd_apex = _c1[15]
-    d_liftoff_q_rd__b_xd_apex = _c1[16]
-    d_liftoff_q_th__b_xd_apex = _c1[17]
-    d_liftoff_q_thd__b_xd_apex = _c1[18]
-    d_passes__b_xd_apex = _c1[19]
+        return _NAN60 + (_c1[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_apex_height__b_xd_apex, d_apex_speed__b_xd_apex, d_t_descent__b_xd_apex, d_t_stance__b_xd_apex, d_t_ascent__b_xd_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_thd__b_xd_apex, d_passes__b_xd_apex, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c2[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[20])
-    d_apex_height__q_th_td = _c2[10]
-    d_apex_speed__q_th_td = _c2[11]
-    d_t_descent__q_th_td = _c2[12]
-    d_t_stance__q_th_td = _c2[13]
-    d_t_ascent__q_th_td = _c2[14]
-    d_liftoff_q_r__q_th_td = _c2[15]
-    d_liftoff_q_rd__q_th_td = _c2[16]
-    d_liftoff_q_th__q_th_td = _c2[17]
-    d_liftoff_q_thd__q_th_td = _c2[18]
-    d_passes__q_th_td = _c2[19]
+        return _NAN60 + (_c2[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_apex_height__q_th_td, d_apex_speed__q_th_td, d_t_descent__q_th_td, d_t_stance__q_th_td, d_t_ascent__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, d_passes__q_th_td, _) = _c2
     # derivatives with respect to k_c
     _c3 = iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c3[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[20])
-    d_apex_height__k_c = _c3[10]
-    d_apex_speed__k_c = _c3[11]
-    d_t_descent__k_c = _c3[12]
-    d_t_stance__k_c = _c3[13]
-    d_t_ascent__k_c = _c3[14]
-    d_liftoff_q_r__k_c = _c3[15]
-    d_liftoff_q_rd__k_c = _c3[16]
-    d_liftoff_q_th__k_c = _c3[17]
-    d_liftoff_q_thd__k_c = _c3[18]
-    d_passes__k_c = _c3[19]
+        return _NAN60 + (_c3[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_apex_height__k_c, d_apex_speed__k_c, d_t_descent__k_c, d_t_stance__k_c, d_t_ascent__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, d_passes__k_c, _) = _c3
     # derivatives with respect to k_d
     _c4 = iterative_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c4[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[20])
-    d_apex_height__k_d = _c4[10]
-    d_apex_speed__k_d = _c4[11]
-    d_t_descent__k_d = _c4[12]
-    d_t_stance__k_d = _c4[13]
-    d_t_ascent__k_d = _c4[14]
-    d_liftoff_q_r__k_d = _c4[15]
-    d_liftoff_q_rd__k_d = _c4[16]
-    d_liftoff_q_th__k_d = _c4[17]
-    d_liftoff_q_thd__k_d = _c4[18]
-    d_passes__k_d = _c4[19]
+        return _NAN60 + (_c4[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_apex_height__k_d, d_apex_speed__k_d, d_t_descent__k_d, d_t_stance__k_d, d_t_ascent__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, d_passes__k_d, _) = _c4
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN60 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 

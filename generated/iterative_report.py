@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:d03e16d4ad28b293
-#   geyer.py sha256:b5957f8d4d622f96
-#   geyer_vs.py sha256:498b77869b6a1757
-#   gravity_type0.py sha256:09bc8f3897a63929
-#   gravity_type1.py sha256:47da0cd470c47a14
-#   gravity_type2.py sha256:d3f5e143d0032a77
-#   gravity_type3.py sha256:5317afa5553c4c39
-#   gravity_type4.py sha256:6d0d5f5a724b468f
-#   gravity_type5.py sha256:d2bee75f452c8694
+#   flight.py sha256:a291c3b0eaea5af3
+#   geyer.py sha256:677d7d2464b0d738
+#   geyer_vs.py sha256:9cc9456ce6fb44c3
+#   gravity_type0.py sha256:45b075413f97ed18
+#   gravity_type1.py sha256:02ca50bea1ed5185
+#   gravity_type2.py sha256:e3a216dc9914ebb0
+#   gravity_type3.py sha256:536dce4dccb0bbb2
+#   gravity_type4.py sha256:fab9ba064bfcd486
+#   gravity_type5.py sha256:50b0f871920d6a5a
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels."""
 
@@ -36,6 +36,8 @@ from .gravity_type5 import gravity_type5_stance
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN9 = (NAN,) * 9
+_NAN10 = (NAN,) * 10
 
 
 @njit(cache=True, error_model="numpy")
@@ -80,10 +82,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     # Total ops: 310
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN10 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -101,7 +103,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN10 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -111,7 +113,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 0 (leg length l0)
         _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0)
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN10 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -121,7 +123,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
         _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12)
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN10 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -131,7 +133,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 2 (average leg length)
         _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12)
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN10 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -141,7 +143,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
         _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12)
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN10 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -151,7 +153,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
         _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12)
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN10 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -161,7 +163,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN10 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -171,14 +173,14 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
         _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN10 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
@@ -191,16 +193,16 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # (153): the vertical bottom's quartic
         _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
         if _c8[1] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[1])
+            return _NAN10 + (_c8[1],)
         bottom_q_r = _c8[0]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # bottom below touchdown
     if not ((-bottom_q_r + q_r_td > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x8 = 4.0**(-iterations)
     _x9 = _x8*(bottom_q_r - q_r_td)
@@ -223,7 +225,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     c_T0 = ((-_x9*m/math.sqrt(_x19)) if (_x19 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     c_e = c_e_n
     c_Q = c_Q0
@@ -240,7 +242,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         c_rad = (2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q) + 2.0*_x24*k_c*l0*m - c_P**2)/_x22
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((c_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
         c_h = math.sqrt(c_rad)
         c_e_next = 4.0*c_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -251,7 +253,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
             c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
             c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN10 + (STATUS_INVALID_INPUT,)
         _n0_0 = c_e_next
         _n0_1 = -c_P*c_wq/c_h + q_th_td
         _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
@@ -279,7 +281,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x25 else (z_lo_q_thd))
     # bottom below q_r_lo
     if not ((-bottom_q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN10 + (STATUS_NO_LIFTOFF,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x26 = 4.0**(-iterations)*(-bottom_q_r + q_r_lo)
     _x27 = (0.25)*_x26
@@ -300,7 +302,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     d_T0 = ((_x26*m/math.sqrt(_x36) + t_bottom) if (_x36 > 0.0) else (t_bottom))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -317,7 +319,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         d_rad = (2.0*E_ba*_x38*m - _x37**4*_x39 - _x38*_x39*l0**2 - 2.0*_x40*g_s*m**2*math.cos(d_Q) + 2.0*_x40*k_d*l0*m - d_P**2)/_x38
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
         d_h = math.sqrt(d_rad)
         d_e_next = 4.0*d_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -328,7 +330,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
             d_wq = d_e_next/(bottom_q_r*(bottom_q_r + d_e_next))
             d_wp = (0.5)*d_e_next*(2.0*bottom_q_r + d_e_next)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN10 + (STATUS_INVALID_INPUT,)
         _n1_0 = d_e_next
         _n1_1 = bottom_q_th + d_P*d_wq/d_h
         _n1_2 = bottom_q_r**2*bottom_q_thd*m + d_wp*g_s*m**2*math.sin(d_Q)/d_h
@@ -350,7 +352,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     rad_lo = (2.0*E_ba*_x41*m - _x41*_x42*l0**2 - _x42*q_r_lo**4 - 2.0*_x43*g_s*m**2*math.cos(d_Q) + 2.0*_x43*k_d*l0*m - d_P**2)/_x41
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # liftoff state
     _x44 = (1.0/m)
     t_stance = d_T
@@ -360,10 +362,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     liftoff_q_thd = _x44*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
@@ -429,11 +431,11 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN9 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN9 + (_c0[5],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -442,7 +444,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _c1 = iterative_report_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
     if _c1[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
+        return _NAN9 + (_c1[10],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -451,13 +453,13 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, 
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[4])
+        return _NAN9 + (_c2[4],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN9 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 

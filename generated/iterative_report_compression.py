@@ -5,14 +5,14 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b5957f8d4d622f96
-#   geyer_vs.py sha256:498b77869b6a1757
-#   gravity_type0.py sha256:09bc8f3897a63929
-#   gravity_type1.py sha256:47da0cd470c47a14
-#   gravity_type2.py sha256:d3f5e143d0032a77
-#   gravity_type3.py sha256:5317afa5553c4c39
-#   gravity_type4.py sha256:6d0d5f5a724b468f
-#   gravity_type5.py sha256:d2bee75f452c8694
+#   geyer.py sha256:677d7d2464b0d738
+#   geyer_vs.py sha256:9cc9456ce6fb44c3
+#   gravity_type0.py sha256:45b075413f97ed18
+#   gravity_type1.py sha256:02ca50bea1ed5185
+#   gravity_type2.py sha256:e3a216dc9914ebb0
+#   gravity_type3.py sha256:536dce4dccb0bbb2
+#   gravity_type4.py sha256:fab9ba064bfcd486
+#   gravity_type5.py sha256:50b0f871920d6a5a
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom."""
 
@@ -34,6 +34,7 @@ from .gravity_type5 import gravity_type5_stance
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
@@ -67,10 +68,10 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
     # Total ops: 161
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -88,7 +89,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN5 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -98,7 +99,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 0 (leg length l0)
         _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0, 0.0)
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN5 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -108,7 +109,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
         _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0, 1e-12)
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN5 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -118,7 +119,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 2 (average leg length)
         _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12)
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN5 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -128,7 +129,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
         _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0, 1e-12)
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN5 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -138,7 +139,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
         _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12)
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN5 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -148,7 +149,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN5 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -158,14 +159,14 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
         _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN5 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
@@ -178,16 +179,16 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         # (153): the vertical bottom's quartic
         _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
         if _c8[1] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, _c8[1])
+            return _NAN5 + (_c8[1],)
         bottom_q_r = _c8[0]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN5 + (STATUS_FALL,)
     # bottom below touchdown
     if not ((-bottom_q_r + q_r_td > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x8 = 4.0**(-iterations)
     _x9 = _x8*(bottom_q_r - q_r_td)
@@ -210,7 +211,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
     c_T0 = ((-_x9*m/math.sqrt(_x19)) if (_x19 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     c_e = c_e_n
     c_Q = c_Q0
@@ -227,7 +228,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         c_rad = (2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q) + 2.0*_x24*k_c*l0*m - c_P**2)/_x22
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((c_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
         c_h = math.sqrt(c_rad)
         c_e_next = 4.0*c_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -238,7 +239,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
             c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
             c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN5 + (STATUS_INVALID_INPUT,)
         _n0_0 = c_e_next
         _n0_1 = -c_P*c_wq/c_h + q_th_td
         _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
@@ -266,7 +267,7 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
     end_q_thd = bottom_q_thd
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
 
 

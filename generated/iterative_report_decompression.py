@@ -17,6 +17,7 @@ from numba import njit, prange
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
@@ -49,14 +50,14 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     # Total ops: 140
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b) and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # E_ba (137)
     _x0 = (0.5)*k_d
     _x1 = q_r_b**2
     E_ba = _x0*_x1 + _x0*l0**2 + (0.5)*_x1*m*q_thd_b**2 + g_s*m*q_r_b*math.cos(q_th_b) - k_d*l0*q_r_b
     # bottom below q_r_lo
     if not ((-q_r_b + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN5 + (STATUS_NO_LIFTOFF,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x2 = 4.0**(-iterations)*(-q_r_b + q_r_lo)
     _x3 = (0.25)*_x2
@@ -74,7 +75,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     d_T0 = ((_x2*m/math.sqrt(_x9)) if (_x9 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -91,7 +92,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         d_rad = (2.0*E_ba*_x11*m - _x10**4*_x12 - _x11*_x12*l0**2 - 2.0*_x13*g_s*m**2*math.cos(d_Q) + 2.0*_x13*k_d*l0*m - d_P**2)/_x11
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
         d_h = math.sqrt(d_rad)
         d_e_next = 4.0*d_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -102,7 +103,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
             d_wq = d_e_next/(q_r_b*(d_e_next + q_r_b))
             d_wp = (0.5)*d_e_next*(d_e_next + 2.0*q_r_b)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN5 + (STATUS_INVALID_INPUT,)
         _n0_0 = d_e_next
         _n0_1 = d_P*d_wq/d_h + q_th_b
         _n0_2 = m*q_r_b**2*q_thd_b + d_wp*g_s*m**2*math.sin(d_Q)/d_h
@@ -124,7 +125,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     rad_lo = (2.0*E_ba*_x14*m - _x14*_x15*l0**2 - _x15*q_r_lo**4 - 2.0*_x16*g_s*m**2*math.cos(d_Q) + 2.0*_x16*k_d*l0*m - d_P**2)/_x14
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
     # liftoff state
     _x17 = (1.0/m)
     t_stance = d_T
@@ -134,7 +135,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     liftoff_q_thd = _x17*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN5 + (STATUS_FALL,)
     # the liftoff state
     t_half = t_stance
     end_q_r = liftoff_q_r
@@ -143,7 +144,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     end_q_thd = liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
 
 

@@ -5,15 +5,15 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:6d2a79031b9ac2b8
-#   geyer_jacobian.py sha256:ebd2115f68e33426
-#   geyer_vs_jacobian.py sha256:bb285f304f83604f
-#   gravity_type0_jacobian.py sha256:43e6e5c6eebcb499
-#   gravity_type1_jacobian.py sha256:470965ecec39f988
-#   gravity_type2_jacobian.py sha256:660c5b1015ce6676
-#   gravity_type3_jacobian.py sha256:b6db47722699db7b
-#   gravity_type4_jacobian.py sha256:100334fa0aee2645
-#   gravity_type5_jacobian.py sha256:f0240d5b343888e3
+#   flight_jacobian.py sha256:e58e885f76eb1aa8
+#   geyer_jacobian.py sha256:849e7410cc446e23
+#   geyer_vs_jacobian.py sha256:ed8004ee3dc8f349
+#   gravity_type0_jacobian.py sha256:9c8801e32205e472
+#   gravity_type1_jacobian.py sha256:4169ef80df01f145
+#   gravity_type2_jacobian.py sha256:e540f2eab7594ea0
+#   gravity_type3_jacobian.py sha256:71a238c113adc0f4
+#   gravity_type4_jacobian.py sha256:dcb77054308f58c3
+#   gravity_type5_jacobian.py sha256:0fe0cff033dbdcbe
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -36,6 +36,15 @@ from .gravity_type5_jacobian import gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
+_NAN2 = (NAN,) * 2
+_NAN4 = (NAN,) * 4
+_NAN8 = (NAN,) * 8
+_NAN10 = (NAN,) * 10
+_NAN11 = (NAN,) * 11
+_NAN18 = (NAN,) * 18
+_NAN20 = (NAN,) * 20
+_NAN54 = (NAN,) * 54
+_NAN70 = (NAN,) * 70
 
 
 @njit(cache=True, error_model="numpy")
@@ -154,17 +163,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[12]
-    z_b_q_th__tan = _c0[14]
-    z_b_q_thd__tan = _c0[15]
-    z_lo_q_th__tan = _c0[18]
-    z_lo_q_thd__tan = _c0[19]
+        return _NAN10 + (_c0[20],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -208,17 +208,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -262,17 +253,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = gravity_type1_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -316,17 +298,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -370,17 +343,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -424,17 +388,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = gravity_type4_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -478,17 +433,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
     if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
+        return _NAN10 + (_c0[24],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -534,17 +480,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan)
     if _c0[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[15]
-    z_b_q_th__tan = _c0[17]
-    z_b_q_thd__tan = _c0[18]
-    z_lo_q_th__tan = _c0[21]
-    z_lo_q_thd__tan = _c0[22]
+        return _NAN10 + (_c0[26],)
+    (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, z_b_q_r__tan, _, z_b_q_th__tan, z_b_q_thd__tan, _, _, z_lo_q_th__tan, z_lo_q_thd__tan, _, _, _, _) = _c0
     # (internal helper: its callers check that their outputs are finite)
     return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
 
@@ -599,7 +536,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_ab,
     # (153): the vertical bottom's quartic
     _c0 = bottom_quartic_jvp_p_E_ab_k_c(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s, m*q_r_td**2*q_thd_td__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td, E_ab__tan, k_c__tan)
     if _c0[2] != STATUS_OK:
-        return (NAN, NAN, _c0[2])
+        return _NAN2 + (_c0[2],)
     bottom_q_r = _c0[0]
     bottom_q_r__tan = _c0[1]
     # (internal helper: its callers check that their outputs are finite)
@@ -727,7 +664,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab,
     c_rad__tan = E_ab__tan*_x11 + 2.0*_x0*_x8*c_Q__tan*g_s*math.sin(c_Q) + _x1*(-2.0*_x10/_x5 + _x3*(4.0*E_ab*_x0*m - _x0*_x11*_x6*k_c - 6.0*_x2*_x9 + 6.0*_x2*k_c*l0*m - 4.0*_x5*k_c*m)) - 2.0*_x3*c_P*c_P__tan + _x3*k_c__tan*(-_x4 + 2.0*_x5*l0*m - _x7)
     # H^{-1} real at x_{j+1} on the current iterate
     if not ((c_rad > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN8 + (STATUS_IMAGINARY_MOMENTUM,)
     _x12 = math.sqrt(c_rad)
     c_h = _x12
     c_h__tan = (0.5)*c_rad__tan/_x12
@@ -738,7 +675,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab,
         # branch variant = 0
         _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_11(c_e_next, c_e_next__tan, c_x, c_x__tan)
         if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
+            return _NAN8 + (_c0[4],)
         c_wq = _c0[0]
         c_wq__tan = _c0[1]
         c_wp = _c0[2]
@@ -747,13 +684,13 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab,
         # branch variant = 1
         _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_12(c_e_next, c_e_next__tan, q_r_td, q_r_td__tan)
         if _c1[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
+            return _NAN8 + (_c1[4],)
         c_wq = _c1[0]
         c_wq__tan = _c1[1]
         c_wp = _c1[2]
         c_wp__tan = _c1[3]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN8 + (STATUS_INVALID_INPUT,)
     # next values
     _x13 = (1.0/c_h)
     _x14 = _x13*c_P
@@ -900,7 +837,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba,
     d_rad__tan = E_ba__tan*_x11 + 2.0*_x0*_x8*d_Q__tan*g_s*math.sin(d_Q) + _x1*(-2.0*_x10/_x5 + _x3*(4.0*E_ba*_x0*m - _x0*_x11*_x6*k_d - 6.0*_x2*_x9 + 6.0*_x2*k_d*l0*m - 4.0*_x5*k_d*m)) - 2.0*_x3*d_P*d_P__tan + _x3*k_d__tan*(-_x4 + 2.0*_x5*l0*m - _x7)
     # H^{-1} real at x_{j+1} on the current iterate
     if not ((d_rad > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN8 + (STATUS_IMAGINARY_MOMENTUM,)
     _x12 = math.sqrt(d_rad)
     d_h = _x12
     d_h__tan = (0.5)*d_rad__tan/_x12
@@ -911,7 +848,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba,
         # branch variant = 0
         _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_14(d_e_next, d_e_next__tan, d_x, d_x__tan)
         if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
+            return _NAN8 + (_c0[4],)
         d_wq = _c0[0]
         d_wq__tan = _c0[1]
         d_wp = _c0[2]
@@ -920,13 +857,13 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba,
         # branch variant = 1
         _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_15(bottom_q_r, bottom_q_r__tan, d_e_next, d_e_next__tan)
         if _c1[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
+            return _NAN8 + (_c1[4],)
         d_wq = _c1[0]
         d_wq__tan = _c1[1]
         d_wp = _c1[2]
         d_wp__tan = _c1[3]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN8 + (STATUS_INVALID_INPUT,)
     # next values
     _x13 = (1.0/d_h)
     _x14 = _x13*d_P
@@ -997,7 +934,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_17(E_ba,
     rad_lo__tan = 2.0*E_ba__tan*m - 2.0*_x1*d_P*d_P__tan + _x1*k_d__tan*(-_x2 + 2.0*_x3*l0*m - _x4) + _x5*d_Q__tan*q_r_lo*math.sin(d_Q)
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN11 + (STATUS_IMAGINARY_MOMENTUM,)
     # liftoff state
     _x6 = (1.0/m)
     _x7 = math.sqrt(rad_lo)
@@ -1013,7 +950,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_17(E_ba,
     liftoff_q_thd__tan = _x8*d_P__tan
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN11 + (STATUS_FALL,)
     # derivatives that are identically zero
     bottom_q_rd__tan = 0.0
     liftoff_q_r__tan = 0.0
@@ -1104,7 +1041,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab,
     g_lo_q_thd__tan = _x7*z_lo_q_thd__tan + bottom_q_r__tan*((2.0*_x8*bottom_q_r*bottom_q_thd) if _x6 else (0.0)) + bottom_q_thd__tan*((_x9) if _x6 else (0.0))
     # bottom below q_r_lo
     if not ((-bottom_q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN18 + (STATUS_NO_LIFTOFF,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x10 = 4.0**(-iterations)
     _x11 = -bottom_q_r + q_r_lo
@@ -1168,7 +1105,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab,
     d_T0__tan = -_x13*((_x56) if _x57 else (0.0)) + _x55*((-_x48*m/_x38**(1.5)) if _x57 else (0.0)) + t_bottom__tan
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -1184,15 +1121,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab,
         # loop body
         _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba, E_ba__tan, bottom_q_r, bottom_q_r__tan, bottom_q_th, bottom_q_th__tan, bottom_q_thd, bottom_q_thd__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_e, d_e__tan, g_s, k_d, k_d__tan, l0, m, t_bottom, t_bottom__tan, variant)
         if _c0[8] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[8])
-        _next_d_e = _c0[0]
-        _next_d_Q = _c0[1]
-        _next_d_P = _c0[2]
-        _next_d_T = _c0[3]
-        _next_d_e__tan = _c0[4]
-        _next_d_Q__tan = _c0[5]
-        _next_d_P__tan = _c0[6]
-        _next_d_T__tan = _c0[7]
+            return _NAN18 + (_c0[8],)
+        (_next_d_e, _next_d_Q, _next_d_P, _next_d_T, _next_d_e__tan, _next_d_Q__tan, _next_d_P__tan, _next_d_T__tan, _) = _c0
         _n0_0 = _next_d_e
         _n0_1 = _next_d_Q
         _n0_2 = _next_d_P
@@ -1218,18 +1148,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab,
     # continuation
     _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_17(E_ba, E_ba__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_T, d_T__tan, g_s, k_d, k_d__tan, l0, m, q_r_lo)
     if _c1[11] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[11])
-    t_stance = _c1[0]
-    liftoff_q_r = _c1[1]
-    liftoff_q_rd = _c1[2]
-    liftoff_q_th = _c1[3]
-    liftoff_q_thd = _c1[4]
-    t_stance__tan = _c1[5]
-    bottom_q_rd__tan = _c1[6]
-    liftoff_q_r__tan = _c1[7]
-    liftoff_q_rd__tan = _c1[8]
-    liftoff_q_th__tan = _c1[9]
-    liftoff_q_thd__tan = _c1[10]
+        return _NAN18 + (_c1[11],)
+    (t_stance, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_stance__tan, bottom_q_rd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
@@ -1291,148 +1211,67 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
     # Total ops: 275
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN20 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN20 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # branch zeroth = 1
         _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        z_b_q_r = _c0[0]
-        z_b_q_r__tan = _c0[1]
-        z_b_q_th = _c0[2]
-        z_b_q_th__tan = _c0[3]
-        z_b_q_thd = _c0[4]
-        z_b_q_thd__tan = _c0[5]
-        z_lo_q_th = _c0[6]
-        z_lo_q_thd = _c0[7]
-        z_lo_q_th__tan = _c0[8]
-        z_lo_q_thd__tan = _c0[9]
+            return _NAN20 + (_c0[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c0
     elif zeroth == 0.0:
         # branch zeroth = 0
         _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c1[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
-        z_b_q_r = _c1[0]
-        z_b_q_r__tan = _c1[1]
-        z_b_q_th = _c1[2]
-        z_b_q_th__tan = _c1[3]
-        z_b_q_thd = _c1[4]
-        z_b_q_thd__tan = _c1[5]
-        z_lo_q_th = _c1[6]
-        z_lo_q_thd = _c1[7]
-        z_lo_q_th__tan = _c1[8]
-        z_lo_q_thd__tan = _c1[9]
+            return _NAN20 + (_c1[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c1
     elif zeroth == 2.0:
         # branch zeroth = 2
         _c2 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c2[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-        z_b_q_r = _c2[0]
-        z_b_q_r__tan = _c2[1]
-        z_b_q_th = _c2[2]
-        z_b_q_th__tan = _c2[3]
-        z_b_q_thd = _c2[4]
-        z_b_q_thd__tan = _c2[5]
-        z_lo_q_th = _c2[6]
-        z_lo_q_thd = _c2[7]
-        z_lo_q_th__tan = _c2[8]
-        z_lo_q_thd__tan = _c2[9]
+            return _NAN20 + (_c2[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c2
     elif zeroth == 3.0:
         # branch zeroth = 3
         _c3 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c3[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[10])
-        z_b_q_r = _c3[0]
-        z_b_q_r__tan = _c3[1]
-        z_b_q_th = _c3[2]
-        z_b_q_th__tan = _c3[3]
-        z_b_q_thd = _c3[4]
-        z_b_q_thd__tan = _c3[5]
-        z_lo_q_th = _c3[6]
-        z_lo_q_thd = _c3[7]
-        z_lo_q_th__tan = _c3[8]
-        z_lo_q_thd__tan = _c3[9]
+            return _NAN20 + (_c3[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c3
     elif zeroth == 4.0:
         # branch zeroth = 4
         _c4 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c4[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[10])
-        z_b_q_r = _c4[0]
-        z_b_q_r__tan = _c4[1]
-        z_b_q_th = _c4[2]
-        z_b_q_th__tan = _c4[3]
-        z_b_q_thd = _c4[4]
-        z_b_q_thd__tan = _c4[5]
-        z_lo_q_th = _c4[6]
-        z_lo_q_thd = _c4[7]
-        z_lo_q_th__tan = _c4[8]
-        z_lo_q_thd__tan = _c4[9]
+            return _NAN20 + (_c4[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c4
     elif zeroth == 5.0:
         # branch zeroth = 5
         _c5 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c5[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[10])
-        z_b_q_r = _c5[0]
-        z_b_q_r__tan = _c5[1]
-        z_b_q_th = _c5[2]
-        z_b_q_th__tan = _c5[3]
-        z_b_q_thd = _c5[4]
-        z_b_q_thd__tan = _c5[5]
-        z_lo_q_th = _c5[6]
-        z_lo_q_thd = _c5[7]
-        z_lo_q_th__tan = _c5[8]
-        z_lo_q_thd__tan = _c5[9]
+            return _NAN20 + (_c5[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c5
     elif zeroth == 6.0:
         # branch zeroth = 6
         _c6 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c6[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[10])
-        z_b_q_r = _c6[0]
-        z_b_q_r__tan = _c6[1]
-        z_b_q_th = _c6[2]
-        z_b_q_th__tan = _c6[3]
-        z_b_q_thd = _c6[4]
-        z_b_q_thd__tan = _c6[5]
-        z_lo_q_th = _c6[6]
-        z_lo_q_thd = _c6[7]
-        z_lo_q_th__tan = _c6[8]
-        z_lo_q_thd__tan = _c6[9]
+            return _NAN20 + (_c6[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c6
     elif zeroth == 7.0:
         # branch zeroth = 7
         _c7 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c7[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[10])
-        z_b_q_r = _c7[0]
-        z_b_q_r__tan = _c7[1]
-        z_b_q_th = _c7[2]
-        z_b_q_th__tan = _c7[3]
-        z_b_q_thd = _c7[4]
-        z_b_q_thd__tan = _c7[5]
-        z_lo_q_th = _c7[6]
-        z_lo_q_thd = _c7[7]
-        z_lo_q_th__tan = _c7[8]
-        z_lo_q_thd__tan = _c7[9]
+            return _NAN20 + (_c7[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c7
     elif zeroth == 8.0:
         # branch zeroth = 8
         _c8 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
         if _c8[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[10])
-        z_b_q_r = _c8[0]
-        z_b_q_r__tan = _c8[1]
-        z_b_q_th = _c8[2]
-        z_b_q_th__tan = _c8[3]
-        z_b_q_thd = _c8[4]
-        z_b_q_thd__tan = _c8[5]
-        z_lo_q_th = _c8[6]
-        z_lo_q_thd = _c8[7]
-        z_lo_q_th__tan = _c8[8]
-        z_lo_q_thd__tan = _c8[9]
+            return _NAN20 + (_c8[10],)
+        (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, _) = _c8
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN20 + (STATUS_INVALID_INPUT,)
     # E_ab (114) of the touchdown state
     _x0 = l0*q_r_td
     _x1 = (0.5)*l0**2
@@ -1448,24 +1287,24 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         # branch bottom_length = 0
         _c9 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(z_b_q_r, z_b_q_r__tan)
         if _c9[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c9[2])
+            return _NAN20 + (_c9[2],)
         bottom_q_r = _c9[0]
         bottom_q_r__tan = _c9[1]
     elif bottom_length == 1.0:
         # branch bottom_length = 1
         _c10 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_thd_td, q_thd_td__tan)
         if _c10[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c10[2])
+            return _NAN20 + (_c10[2],)
         bottom_q_r = _c10[0]
         bottom_q_r__tan = _c10[1]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN20 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN20 + (STATUS_FALL,)
     # bottom below touchdown
     if not ((-bottom_q_r + q_r_td > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN20 + (STATUS_NUMERICAL_RANGE,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x7 = 4.0**(-iterations)
     _x8 = bottom_q_r - q_r_td
@@ -1538,7 +1377,7 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
     c_T0__tan = _x12*((-_x62) if _x63 else (0.0)) + _x56*((_x53*m/_x35**(1.5)) if _x63 else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN20 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     c_e = c_e_n
     c_Q = c_Q0
@@ -1554,15 +1393,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         # loop body
         _c11 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab, E_ab__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_e, c_e__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan, variant)
         if _c11[8] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c11[8])
-        _next_c_e = _c11[0]
-        _next_c_Q = _c11[1]
-        _next_c_P = _c11[2]
-        _next_c_T = _c11[3]
-        _next_c_e__tan = _c11[4]
-        _next_c_Q__tan = _c11[5]
-        _next_c_P__tan = _c11[6]
-        _next_c_T__tan = _c11[7]
+            return _NAN20 + (_c11[8],)
+        (_next_c_e, _next_c_Q, _next_c_P, _next_c_T, _next_c_e__tan, _next_c_Q__tan, _next_c_P__tan, _next_c_T__tan, _) = _c11
         _n0_0 = _next_c_e
         _n0_1 = _next_c_Q
         _n0_2 = _next_c_P
@@ -1588,25 +1420,8 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
     # continuation
     _c12 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab, E_ab__tan, bottom_q_r, bottom_q_r__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_T, c_T__tan, g_s, iterations, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, variant, z_lo_q_th, z_lo_q_th__tan, z_lo_q_thd, z_lo_q_thd__tan, zeroth)
     if _c12[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c12[18])
-    t_bottom = _c12[0]
-    t_stance = _c12[1]
-    bottom_q_rd = _c12[2]
-    bottom_q_th = _c12[3]
-    bottom_q_thd = _c12[4]
-    liftoff_q_r = _c12[5]
-    liftoff_q_rd = _c12[6]
-    liftoff_q_th = _c12[7]
-    liftoff_q_thd = _c12[8]
-    t_bottom__tan = _c12[9]
-    t_stance__tan = _c12[10]
-    bottom_q_rd__tan = _c12[11]
-    bottom_q_th__tan = _c12[12]
-    bottom_q_thd__tan = _c12[13]
-    liftoff_q_r__tan = _c12[14]
-    liftoff_q_rd__tan = _c12[15]
-    liftoff_q_th__tan = _c12[16]
-    liftoff_q_thd__tan = _c12[17]
+        return _NAN20 + (_c12[18],)
+    (t_bottom, t_stance, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, _) = _c12
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
 
@@ -1712,104 +1527,40 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN70 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to q_r_td
     _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    d_t_bottom__q_r_td = _c0[10]
-    d_t_stance__q_r_td = _c0[11]
-    d_bottom_q_r__q_r_td = _c0[12]
-    d_bottom_q_rd__q_r_td = _c0[13]
-    d_bottom_q_th__q_r_td = _c0[14]
-    d_bottom_q_thd__q_r_td = _c0[15]
-    d_liftoff_q_r__q_r_td = _c0[16]
-    d_liftoff_q_rd__q_r_td = _c0[17]
-    d_liftoff_q_th__q_r_td = _c0[18]
-    d_liftoff_q_thd__q_r_td = _c0[19]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
+        return _NAN70 + (_c0[20],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_stance__q_r_td, d_bottom_q_r__q_r_td, d_bottom_q_rd__q_r_td, d_bottom_q_th__q_r_td, d_bottom_q_thd__q_r_td, d_liftoff_q_r__q_r_td, d_liftoff_q_rd__q_r_td, d_liftoff_q_th__q_r_td, d_liftoff_q_thd__q_r_td, _) = _c0
     # derivatives with respect to q_rd_td
     _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    d_t_bottom__q_rd_td = _c1[10]
-    d_t_stance__q_rd_td = _c1[11]
-    d_bottom_q_r__q_rd_td = _c1[12]
-    d_bottom_q_rd__q_rd_td = _c1[13]
-    d_bottom_q_th__q_rd_td = _c1[14]
-    d_bottom_q_thd__q_rd_td = _c1[15]
-    d_liftoff_q_r__q_rd_td = _c1[16]
-    d_liftoff_q_rd__q_rd_td = _c1[17]
-    d_liftoff_q_th__q_rd_td = _c1[18]
-    d_liftoff_q_thd__q_rd_td = _c1[19]
+        return _NAN70 + (_c1[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_t_bottom__q_rd_td, d_t_stance__q_rd_td, d_bottom_q_r__q_rd_td, d_bottom_q_rd__q_rd_td, d_bottom_q_th__q_rd_td, d_bottom_q_thd__q_rd_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_thd__q_rd_td, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c2[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[20])
-    d_t_bottom__q_th_td = _c2[10]
-    d_t_stance__q_th_td = _c2[11]
-    d_bottom_q_r__q_th_td = _c2[12]
-    d_bottom_q_rd__q_th_td = _c2[13]
-    d_bottom_q_th__q_th_td = _c2[14]
-    d_bottom_q_thd__q_th_td = _c2[15]
-    d_liftoff_q_r__q_th_td = _c2[16]
-    d_liftoff_q_rd__q_th_td = _c2[17]
-    d_liftoff_q_th__q_th_td = _c2[18]
-    d_liftoff_q_thd__q_th_td = _c2[19]
+        return _NAN70 + (_c2[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_t_bottom__q_th_td, d_t_stance__q_th_td, d_bottom_q_r__q_th_td, d_bottom_q_rd__q_th_td, d_bottom_q_th__q_th_td, d_bottom_q_thd__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, _) = _c2
     # derivatives with respect to q_thd_td
     _c3 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c3[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[20])
-    d_t_bottom__q_thd_td = _c3[10]
-    d_t_stance__q_thd_td = _c3[11]
-    d_bottom_q_r__q_thd_td = _c3[12]
-    d_bottom_q_rd__q_thd_td = _c3[13]
-    d_bottom_q_th__q_thd_td = _c3[14]
-    d_bottom_q_thd__q_thd_td = _c3[15]
-    d_liftoff_q_r__q_thd_td = _c3[16]
-    d_liftoff_q_rd__q_thd_td = _c3[17]
-    d_liftoff_q_th__q_thd_td = _c3[18]
-    d_liftoff_q_thd__q_thd_td = _c3[19]
+        return _NAN70 + (_c3[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_t_bottom__q_thd_td, d_t_stance__q_thd_td, d_bottom_q_r__q_thd_td, d_bottom_q_rd__q_thd_td, d_bottom_q_th__q_thd_td, d_bottom_q_thd__q_thd_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_thd__q_thd_td, _) = _c3
     # derivatives with respect to k_c
     _c4 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c4[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[20])
-    d_t_bottom__k_c = _c4[10]
-    d_t_stance__k_c = _c4[11]
-    d_bottom_q_r__k_c = _c4[12]
-    d_bottom_q_rd__k_c = _c4[13]
-    d_bottom_q_th__k_c = _c4[14]
-    d_bottom_q_thd__k_c = _c4[15]
-    d_liftoff_q_r__k_c = _c4[16]
-    d_liftoff_q_rd__k_c = _c4[17]
-    d_liftoff_q_th__k_c = _c4[18]
-    d_liftoff_q_thd__k_c = _c4[19]
+        return _NAN70 + (_c4[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_t_bottom__k_c, d_t_stance__k_c, d_bottom_q_r__k_c, d_bottom_q_rd__k_c, d_bottom_q_th__k_c, d_bottom_q_thd__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, _) = _c4
     # derivatives with respect to k_d
     _c5 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c5[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[20])
-    d_t_bottom__k_d = _c5[10]
-    d_t_stance__k_d = _c5[11]
-    d_bottom_q_r__k_d = _c5[12]
-    d_bottom_q_rd__k_d = _c5[13]
-    d_bottom_q_th__k_d = _c5[14]
-    d_bottom_q_thd__k_d = _c5[15]
-    d_liftoff_q_r__k_d = _c5[16]
-    d_liftoff_q_rd__k_d = _c5[17]
-    d_liftoff_q_th__k_d = _c5[18]
-    d_liftoff_q_thd__k_d = _c5[19]
+        return _NAN70 + (_c5[20],)
+    (_, _, _, _, _, _, _, _, _, _, d_t_bottom__k_d, d_t_stance__k_d, d_bottom_q_r__k_d, d_bottom_q_rd__k_d, d_bottom_q_th__k_d, d_bottom_q_thd__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, _) = _c5
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k_c) and math.isfinite(d_t_bottom__k_d) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k_c) and math.isfinite(d_bottom_q_r__k_d) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k_c) and math.isfinite(d_bottom_q_rd__k_d) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k_c) and math.isfinite(d_bottom_q_th__k_d) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k_c) and math.isfinite(d_bottom_q_thd__k_d) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN70 + (STATUS_NUMERICAL_RANGE,)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
 
 
@@ -1952,39 +1703,21 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN18 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan)
     if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    td_q_r__tan = _c0[5]
-    td_q_rd__tan = _c0[6]
-    td_q_th__tan = _c0[7]
-    td_q_thd__tan = _c0[8]
-    t_descent__tan = _c0[9]
+        return _NAN18 + (_c0[10],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, t_descent__tan, _) = _c0
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
     if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    t_stance__tan = _c1[11]
-    liftoff_q_r__tan = _c1[16]
-    liftoff_q_rd__tan = _c1[17]
-    liftoff_q_th__tan = _c1[18]
-    liftoff_q_thd__tan = _c1[19]
+        return _NAN18 + (_c1[20],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, t_stance__tan, _, _, _, _, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
     if _c2[8] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[8])
+        return _NAN18 + (_c2[8],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -2081,84 +1814,35 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
     # Total ops: 0
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN54 + (STATUS_INVALID_INPUT,)
     # derivatives with respect to b_y_apex
     _c0 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0)
     if _c0[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[18])
-    d_apex_height__b_y_apex = _c0[9]
-    d_apex_speed__b_y_apex = _c0[10]
-    d_t_descent__b_y_apex = _c0[11]
-    d_t_stance__b_y_apex = _c0[12]
-    d_t_ascent__b_y_apex = _c0[13]
-    d_liftoff_q_r__b_y_apex = _c0[14]
-    d_liftoff_q_rd__b_y_apex = _c0[15]
-    d_liftoff_q_th__b_y_apex = _c0[16]
-    d_liftoff_q_thd__b_y_apex = _c0[17]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
+        return _NAN54 + (_c0[18],)
+    (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_speed__b_y_apex, d_t_descent__b_y_apex, d_t_stance__b_y_apex, d_t_ascent__b_y_apex, d_liftoff_q_r__b_y_apex, d_liftoff_q_rd__b_y_apex, d_liftoff_q_th__b_y_apex, d_liftoff_q_thd__b_y_apex, _) = _c0
     # derivatives with respect to b_xd_apex
     _c1 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0)
     if _c1[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[18])
-    d_apex_height__b_xd_apex = _c1[9]
-    d_apex_speed__b_xd_apex = _c1[10]
-    d_t_descent__b_xd_apex = _c1[11]
-    d_t_stance__b_xd_apex = _c1[12]
-    d_t_ascent__b_xd_apex = _c1[13]
-    d_liftoff_q_r__b_xd_apex = _c1[14]
-    d_liftoff_q_rd__b_xd_apex = _c1[15]
-    d_liftoff_q_th__b_xd_apex = _c1[16]
-    d_liftoff_q_thd__b_xd_apex = _c1[17]
+        return _NAN54 + (_c1[18],)
+    (_, _, _, _, _, _, _, _, _, d_apex_height__b_xd_apex, d_apex_speed__b_xd_apex, d_t_descent__b_xd_apex, d_t_stance__b_xd_apex, d_t_ascent__b_xd_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_thd__b_xd_apex, _) = _c1
     # derivatives with respect to q_th_td
     _c2 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0)
     if _c2[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[18])
-    d_apex_height__q_th_td = _c2[9]
-    d_apex_speed__q_th_td = _c2[10]
-    d_t_descent__q_th_td = _c2[11]
-    d_t_stance__q_th_td = _c2[12]
-    d_t_ascent__q_th_td = _c2[13]
-    d_liftoff_q_r__q_th_td = _c2[14]
-    d_liftoff_q_rd__q_th_td = _c2[15]
-    d_liftoff_q_th__q_th_td = _c2[16]
-    d_liftoff_q_thd__q_th_td = _c2[17]
+        return _NAN54 + (_c2[18],)
+    (_, _, _, _, _, _, _, _, _, d_apex_height__q_th_td, d_apex_speed__q_th_td, d_t_descent__q_th_td, d_t_stance__q_th_td, d_t_ascent__q_th_td, d_liftoff_q_r__q_th_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_th__q_th_td, d_liftoff_q_thd__q_th_td, _) = _c2
     # derivatives with respect to k_c
     _c3 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0)
     if _c3[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[18])
-    d_apex_height__k_c = _c3[9]
-    d_apex_speed__k_c = _c3[10]
-    d_t_descent__k_c = _c3[11]
-    d_t_stance__k_c = _c3[12]
-    d_t_ascent__k_c = _c3[13]
-    d_liftoff_q_r__k_c = _c3[14]
-    d_liftoff_q_rd__k_c = _c3[15]
-    d_liftoff_q_th__k_c = _c3[16]
-    d_liftoff_q_thd__k_c = _c3[17]
+        return _NAN54 + (_c3[18],)
+    (_, _, _, _, _, _, _, _, _, d_apex_height__k_c, d_apex_speed__k_c, d_t_descent__k_c, d_t_stance__k_c, d_t_ascent__k_c, d_liftoff_q_r__k_c, d_liftoff_q_rd__k_c, d_liftoff_q_th__k_c, d_liftoff_q_thd__k_c, _) = _c3
     # derivatives with respect to k_d
     _c4 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0)
     if _c4[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[18])
-    d_apex_height__k_d = _c4[9]
-    d_apex_speed__k_d = _c4[10]
-    d_t_descent__k_d = _c4[11]
-    d_t_stance__k_d = _c4[12]
-    d_t_ascent__k_d = _c4[13]
-    d_liftoff_q_r__k_d = _c4[14]
-    d_liftoff_q_rd__k_d = _c4[15]
-    d_liftoff_q_th__k_d = _c4[16]
-    d_liftoff_q_thd__k_d = _c4[17]
+        return _NAN54 + (_c4[18],)
+    (_, _, _, _, _, _, _, _, _, d_apex_height__k_d, d_apex_speed__k_d, d_t_descent__k_d, d_t_stance__k_d, d_t_ascent__k_d, d_liftoff_q_r__k_d, d_liftoff_q_rd__k_d, d_liftoff_q_th__k_d, d_liftoff_q_thd__k_d, _) = _c4
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN54 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
 
 
