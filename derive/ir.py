@@ -11,7 +11,8 @@ code. Steps:
 - :class:`Call`: calls another kernel, passing arguments **by the callee's argument names** and
   binding the callee's outputs **by name**; a failing callee status is propagated.
 - :class:`Iterate`: a bounded fixed-point iteration on named state variables (at most ``max_iter``
-  updates, stopping when every update moves by at most ``tol * scale``).
+  updates, stopping when every update moves by at most ``tol * scale``); what it ``evaluate`` s at
+  every iterate stays visible after the loop, at the iterate it stops at.
 - :class:`Switch`: branches on an integer option; every branch defines the same names.
 
 Kernels never raise. :mod:`.lower` checks the declaration (every symbol an expression uses is an
@@ -158,8 +159,15 @@ class Iterate:
     ``scales`` entry (a positive expression in the units of that variable), or after ``max_iter``
     passes; then ``fail_status`` (if set) is returned when ``tol > 0``. With ``tol = 0`` it runs
     exactly ``max_iter`` passes; with ``max_iter = 0`` none (the initial values stand, no failure).
-    After the loop only the state variables and ``count`` (the number of passes, a float) are
-    visible.
+    After the loop the state variables and ``count`` (the number of passes, a float) are visible,
+    and the names ``evaluate`` defines.
+
+    ``evaluate`` holds steps run at every iterate, the one the loop stops at included: each pass
+    runs ``evaluate`` then ``body`` (both see the current state) then the updates, and once the loop
+    stops (converged, or ``max_iter`` passes run, or none with ``max_iter = 0``) ``evaluate`` runs once
+    more at the final state, after the ``fail_status`` check. Its names stay visible after the loop
+    with their values at that iterate, so a declaration does not repeat the loop's steps after it to
+    get them (the loop's code is emitted once). Its guards fail the kernel as anywhere else.
 
     ``carry`` holds variables updated every pass but outside the convergence test, each as
     ``(variable, initial value, update)``: the derivatives a Jacobian kernel carries through the
@@ -176,6 +184,7 @@ class Iterate:
     fail_status: str | None = "NOT_CONVERGED"
     comment: str = ""
     carry: tuple[tuple[sp.Symbol, sp.Basic, sp.Basic], ...] = ()
+    evaluate: tuple[Step, ...] = ()
 
     def __post_init__(self):
         if not len(self.update) == len(self.scales) == len(self.state):

@@ -38,7 +38,7 @@ def _names(expr) -> set[str]:
 
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
-_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|n\d+_\d+|conv\d+|NAN\d+)|STATUS_\w+")
+_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|n\d+_\d+|last\d+|conv\d+|NAN\d+)|STATUS_\w+")
 _TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
 
 
@@ -244,6 +244,8 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
         state.append({"name": s.name, "code": to_code(init)})
     ctx.scope.define(it.count.name, ctx.where(where))
     ctx.scope.frames.append(set())
+    evaluate = _lower_steps(ctx, it.evaluate, f"{idx}.evaluate.")
+    evaluated = set(ctx.scope.frames[-1])
     body = _lower_steps(ctx, it.body, f"{idx}.")
     updates = []
     for k, ((s, _), e, scale) in enumerate(zip(it.state, it.update, it.scales, strict=True)):
@@ -255,6 +257,8 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
         ctx.require(e, f"{where}, update of {s.name}")
         updates.append({"tmp": f"_n{n}_{k}", "name": s.name, "code": to_code(e), "scale": "", "check": False})
     ctx.scope.frames.pop()
+    # what the loop evaluates at every iterate stays visible, at the iterate it stops at
+    ctx.scope.frames[-1] |= evaluated
     if it.fail_status is not None and not ctx.kernel.status:
         raise LoweringError(ctx.where(f"{where}: a failing iteration needs a status output"))
     if it.fail_status is not None:
@@ -264,9 +268,11 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
         {
             "kind": "loop",
             "it": f"_it{n}",
+            "last": f"_last{n}",
             "max_iter": to_code(it.max_iter),
             "state": state,
             "count": it.count.name,
+            "evaluate": evaluate,
             "body": body,
             "updates": updates,
             "conv": f"_conv{n}",

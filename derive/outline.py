@@ -37,7 +37,7 @@ def defined(steps) -> set[str]:
             out |= set(step.bind.values())
         elif isinstance(step, Iterate):
             out |= {s.name for s, _ in step.state} | {c[0].name for c in step.carry} | {step.count.name}
-            out |= defined(step.body)
+            out |= defined(step.evaluate) | defined(step.body)
         elif isinstance(step, Switch):
             for _, branch in step.cases:
                 out |= defined(branch)
@@ -61,7 +61,7 @@ def used(steps) -> set[str]:
             exprs += [c[1] for c in step.carry] + [c[2] for c in step.carry] + [step.max_iter, step.tol]
             for e in exprs:
                 out |= _symbols(e)
-            out |= used(step.body)
+            out |= used(step.evaluate) | used(step.body)
         elif isinstance(step, Switch):
             out.add(step.selector.name)
             for _, branch in step.cases:
@@ -80,6 +80,7 @@ def visible(steps) -> list[str]:
             out += list(step.bind.values())
         elif isinstance(step, Iterate):
             out += [s.name for s, _ in step.state] + [c[0].name for c in step.carry] + [step.count.name]
+            out += visible(step.evaluate)
         elif isinstance(step, Switch):
             branches = [visible(b) for _, b in step.cases]
             common = set.intersection(*(set(b) for b in branches)) if branches else set()
@@ -126,8 +127,8 @@ class Outliner:
         steps = tuple(steps)
         for i, step in enumerate(steps):
             if isinstance(step, Iterate):
-                out.append(self.iterate(step))
                 tail = steps[i + 1 :]
+                out.append(self.iterate(step, used(tail) | set(needed)))
                 if tail:
                     after = set(visible(tail))
                     outputs = [n for n in needed if n in after]
@@ -136,17 +137,31 @@ class Outliner:
             out.append(self.switch(step, needed) if isinstance(step, Switch) else step)
         return tuple(out)
 
-    def iterate(self, it: Iterate) -> Iterate:
-        """The body and the updates become one kernel returning the next values (``_next_<name>``)."""
+    def iterate(self, it: Iterate, after: set[str]) -> Iterate:
+        """The body and the updates become one kernel returning the next values (``_next_<name>``);
+        what the loop evaluates at every iterate another, returning what the body, the updates and
+        the steps ``after`` the loop read of it. Without a body, one kernel evaluates the iterate and
+        returns the next values too (computed once more than needed, at the final iterate)."""
         names = [s.name for s, _ in it.state] + [c[0].name for c in it.carry]
         updates = list(it.update) + [c[2] for c in it.carry]
         nxt = [f"_next{n}" if n.startswith("_") else f"_next_{n}" for n in names]
         final = Stage(tuple((sym(n), u) for n, u in zip(nxt, updates, strict=True)), comment="next values")
-        call = self._call(self.steps(it.body + (final,), nxt), nxt, "loop body")
+        evaluate: tuple = ()
+        if it.evaluate and not it.body:
+            outputs = [n for n in visible(it.evaluate) if n in after] + nxt
+            call = self._call(self.steps(it.evaluate + (final,), outputs), outputs, "evaluation and update")
+            evaluate, body = (call,), ()
+        else:
+            if it.evaluate:
+                wanted = used(it.body) | set().union(*map(_symbols, updates)) | after
+                read = [n for n in visible(it.evaluate) if n in wanted]
+                evaluate = (self._call(self.steps(it.evaluate, read), read, "evaluation of the iterate"),)
+            body = (self._call(self.steps(it.body + (final,), nxt), nxt, "loop body"),)
         k = len(it.state)
         return Iterate(
             state=it.state,
-            body=(call,),
+            evaluate=evaluate,
+            body=body,
             update=tuple(sym(n) for n in nxt[:k]),
             max_iter=it.max_iter,
             tol=it.tol,

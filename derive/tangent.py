@@ -14,7 +14,8 @@ each, named ``d_<output>__<argument>``. Symbolic forward mode over the declarati
   that carry a tangent) gets the arguments' tangents: the chain rule, done by the callee.
 - :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass
   (:attr:`~.ir.Iterate.carry`, outside the convergence test): the derivative of the iterate the
-  loop stops at, which is what the map returns (derivatives through the iterations).
+  loop stops at, which is what the map returns (derivatives through the iterations). What the
+  loop evaluates at every iterate (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it.
 - :class:`~.ir.Switch`: each branch is differentiated; a tangent one branch defines is zero in the
   others.
 
@@ -33,7 +34,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .ir import Arg, Call, Field, Group, Iterate, Kernel, Stage, Switch, sym
-from .outline import Outliner
+from .outline import Outliner, visible
 
 #: A tangent per direction: direction name -> expression (0 when the value does not depend on it).
 _Tangent = dict[str, sp.Basic]
@@ -283,6 +284,8 @@ class _Ctx:
             inits[s.name] = outer.of(init)
             self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) for w in wrt}
         self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
+        evaluate = self.steps(it.evaluate)
+        evaluated = {n: dict(self.frame.tangents[n]) for n in visible(it.evaluate)}
         body = self.steps(it.body)
         updates = [self.frame.of(u) for u in it.update] + [self.frame.of(u) for _, _, u in it.carry]
         names = [s for s, _ in it.state] + [s for s, _, _ in it.carry]
@@ -294,6 +297,8 @@ class _Ctx:
         for s in names:
             self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) for w in wrt}
         self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
+        # what the loop evaluates at every iterate keeps its tangents after it
+        self.frame.tangents.update(evaluated)
         return Iterate(
             state=it.state,
             body=body,
@@ -305,6 +310,7 @@ class _Ctx:
             fail_status=it.fail_status,
             comment=it.comment,
             carry=tuple(it.carry) + tuple(carry),
+            evaluate=evaluate,
         )
 
     def switch(self, sw: Switch) -> Switch:

@@ -136,7 +136,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         passes: fixed-point passes run (0 unless gravity)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 506
+    # Total ops: 297
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN13 + (STATUS_INVALID_INPUT,)
@@ -151,7 +151,12 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     P_c_decompression = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN13 + (STATUS_NOT_CONVERGED,)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
@@ -246,6 +251,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             return _NAN13 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        if _conv0 or _it0 == _last0:
+            break
         # the virtual gravity effect of each half
         if gravity == 0.0:
             i_P_new1 = 0.0
@@ -283,103 +290,17 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN13 + (STATUS_NOT_CONVERGED,)
-    # the first half's mean momentum as a touchdown rate
-    q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
-    if _c2[6] != STATUS_OK:
-        return _NAN13 + (_c2[6],)
-    ab_omega = _c2[0]
-    ab_omega0_hat = _c2[1]
-    ab_a = _c2[2]
-    ab_b = _c2[3]
-    ab_phase_td = _c2[4]
-    ab_s_td = _c2[5]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x44 = (1.0/ab_omega0_hat)
-    _x45 = ab_a - ab_b
-    _x46 = _x45 + 1.0
-    _x47 = _x44*ab_omega
-    _x48 = _x44*ab_phase_td
-    _x49 = P_c_compression + p_td
-    t_bottom = _x44*(-ab_phase_td + (1.5)*math.pi)
-    bottom_q_r = _x46*l0
-    bottom_q_rd = 0.0
-    bottom_q_th = -3.0*math.pi*_x47*ab_a + (1.5)*math.pi*_x47 - _x48*ab_omega + 2.0*ab_omega*(_x44*ab_b*math.sqrt(1.0 - ab_s_td**2) + _x48*ab_a) + q_th_td
-    p_b = _x49
-    bottom_q_thd = _x49/(_x46**2*l0**2*m)
-    rho_b = _x45
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x54 = (1.0/l0)
-    _x50 = (1.0/m)
-    _x51 = (0.5)*P_c_decompression + p_b
-    _x52 = _x51**2
-    _x53 = 3.0*_x50*_x52*_x54**4 + k_d
-    ba_omega = _x50*_x51*_x54**2
-    ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
-    ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return _NAN13 + (STATUS_RECOMPRESSION,)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # eqs (97)-(99), E_ab the energy (27)
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 1.0:
-        # as report
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 2.0:
-        # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-        _x56 = (1.0/l0)
-        _x55 = ba_omega**2
-        _x57 = (1.0/m)
-        eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
-    else:
-        return _NAN13 + (STATUS_INVALID_INPUT,)
-    _x58 = ba_omega**2
-    _x59 = 3.0*_x58*m + k_d
-    ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return _NAN13 + (STATUS_NO_REAL_SOLUTION,)
-    # eq (104); eq (103), or (111) when constrained
-    _x60 = math.sqrt(ba_b2)
-    ba_b = _x60
-    ba_a = ((_x60 + rho_b) if (continuity == 1.0) else (ba_a_free))
-    # eq (94): the liftoff phase of the second half
-    _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return _NAN13 + (_c3[2],)
-    ba_phase_lo = _c3[0]
-    ba_s_lo = _c3[1]
-    # eqs (90)-(94) at liftoff
-    _x66 = (1.0/m)
-    _x61 = (1.0/ba_omega0_hat)
-    _x62 = (1.5)*math.pi
-    _x63 = _x61*ba_phase_lo
-    _x64 = _x61*ba_omega
-    _x65 = -_x62*_x64 + _x63*ba_omega + 3.0*math.pi*_x64*ba_a - 2.0*ba_omega*(-_x61*ba_b*math.sqrt(1.0 - ba_s_lo**2) + _x63*ba_a) + bottom_q_th
-    _x67 = q_r_lo**2
-    _x68 = (1.0/_x67)
-    _x69 = P_c_decompression + p_b
-    _x70 = _x66*k_d
-    t_stance = _x61*(-_x62 + ba_phase_lo) + t_bottom
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x65
-    liftoff_q_thd = _x66*_x68*_x69
-    q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN13 + (STATUS_FALL,)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return _NAN13 + (STATUS_ENERGY_DEFICIT,)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = i_bottom_q_thd
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = i_liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
         return _NAN13 + (STATUS_NUMERICAL_RANGE,)
@@ -443,7 +364,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 558
+    # Total ops: 349
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
@@ -458,7 +379,12 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     P_c_decompression = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
@@ -553,6 +479,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             return _NAN4 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        if _conv0 or _it0 == _last0:
+            break
         # the virtual gravity effect of each half
         if gravity == 0.0:
             i_P_new1 = 0.0
@@ -590,124 +518,38 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN4 + (STATUS_NOT_CONVERGED,)
-    # the first half's mean momentum as a touchdown rate
-    q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
-    if _c2[6] != STATUS_OK:
-        return _NAN4 + (_c2[6],)
-    ab_omega = _c2[0]
-    ab_omega0_hat = _c2[1]
-    ab_a = _c2[2]
-    ab_b = _c2[3]
-    ab_phase_td = _c2[4]
-    ab_s_td = _c2[5]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x44 = (1.0/ab_omega0_hat)
-    _x45 = ab_a - ab_b
-    _x46 = _x45 + 1.0
-    _x47 = _x44*ab_omega
-    _x48 = _x44*ab_phase_td
-    _x49 = P_c_compression + p_td
-    t_bottom = _x44*(-ab_phase_td + (1.5)*math.pi)
-    bottom_q_r = _x46*l0
-    bottom_q_rd = 0.0
-    bottom_q_th = -3.0*math.pi*_x47*ab_a + (1.5)*math.pi*_x47 - _x48*ab_omega + 2.0*ab_omega*(_x44*ab_b*math.sqrt(1.0 - ab_s_td**2) + _x48*ab_a) + q_th_td
-    p_b = _x49
-    bottom_q_thd = _x49/(_x46**2*l0**2*m)
-    rho_b = _x45
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x54 = (1.0/l0)
-    _x50 = (1.0/m)
-    _x51 = (0.5)*P_c_decompression + p_b
-    _x52 = _x51**2
-    _x53 = 3.0*_x50*_x52*_x54**4 + k_d
-    ba_omega = _x50*_x51*_x54**2
-    ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
-    ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return _NAN4 + (STATUS_RECOMPRESSION,)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # eqs (97)-(99), E_ab the energy (27)
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 1.0:
-        # as report
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 2.0:
-        # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-        _x56 = (1.0/l0)
-        _x55 = ba_omega**2
-        _x57 = (1.0/m)
-        eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
-    else:
-        return _NAN4 + (STATUS_INVALID_INPUT,)
-    _x58 = ba_omega**2
-    _x59 = 3.0*_x58*m + k_d
-    ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    # eq (104); eq (103), or (111) when constrained
-    _x60 = math.sqrt(ba_b2)
-    ba_b = _x60
-    ba_a = ((_x60 + rho_b) if (continuity == 1.0) else (ba_a_free))
-    # eq (94): the liftoff phase of the second half
-    _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return _NAN4 + (_c3[2],)
-    ba_phase_lo = _c3[0]
-    ba_s_lo = _c3[1]
-    # eqs (90)-(94) at liftoff
-    _x66 = (1.0/m)
-    _x61 = (1.0/ba_omega0_hat)
-    _x62 = (1.5)*math.pi
-    _x63 = _x61*ba_phase_lo
-    _x64 = _x61*ba_omega
-    _x65 = -_x62*_x64 + _x63*ba_omega + 3.0*math.pi*_x64*ba_a - 2.0*ba_omega*(-_x61*ba_b*math.sqrt(1.0 - ba_s_lo**2) + _x63*ba_a) + bottom_q_th
-    _x67 = q_r_lo**2
-    _x68 = (1.0/_x67)
-    _x69 = P_c_decompression + p_b
-    _x70 = _x66*k_d
-    t_stance = _x61*(-_x62 + ba_phase_lo) + t_bottom
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x65
-    liftoff_q_thd = _x66*_x68*_x69
-    q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN4 + (STATUS_FALL,)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return _NAN4 + (STATUS_ENERGY_DEFICIT,)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = i_bottom_q_thd
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = i_liftoff_q_thd
     # eqs (78)-(79): the first half
-    _c4 = geyer_state(ab_omega0_hat*t + ab_phase_td, ab_phase_td, q_th_td, ab_omega, ab_omega0_hat, ab_a, ab_b, l0)
-    c_q_r = _c4[0]
-    c_q_rd = _c4[1]
-    c_q_th = _c4[2]
-    c_q_thd = _c4[3]
+    _c2 = geyer_state(i_ab_omega0_hat*t + i_ab_phase_td, i_ab_phase_td, q_th_td, i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, l0)
+    c_q_r = _c2[0]
+    c_q_rd = _c2[1]
+    c_q_th = _c2[2]
+    c_q_thd = _c2[3]
     # the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, (90)-(92) after; the rates with the momentum at t
-    _x71 = (t <= t_bottom)
-    _x72 = t - t_bottom
-    _x73 = _x72*ba_omega0_hat
-    _x74 = ba_a - ba_b*math.cos(_x73) + 1.0
-    _x75 = ba_b*math.sin(_x73)
-    _x76 = (1.5)*math.pi
-    _x77 = (1.0/ba_omega0_hat)
-    _x78 = _x77*ba_omega
-    _x79 = _x77*(_x73 + _x76)
-    _x80 = (1.0/m)
-    q_r = ((c_q_r) if _x71 else (_x74*l0))
-    q_rd = ((c_q_rd) if _x71 else (_x75*ba_omega0_hat*l0))
-    q_th = ((c_q_th) if _x71 else (-_x76*_x78 + 3.0*math.pi*_x78*ba_a + _x79*ba_omega - 2.0*ba_omega*(-_x75*_x77 + _x79*ba_a) + bottom_q_th))
-    q_thd = ((_x80*(P_c_compression*t/t_bottom + p_td)/c_q_r**2) if _x71 else (_x80*(P_c_decompression*_x72/(-t_bottom + t_stance) + p_b)/(_x74**2*l0**2)))
+    _x44 = (i_t_bottom >= t)
+    _x45 = -i_t_bottom + t
+    _x46 = _x45*i_ba_omega0_hat
+    _x47 = i_ba_a - i_ba_b*math.cos(_x46) + 1.0
+    _x48 = i_ba_b*math.sin(_x46)
+    _x49 = (1.5)*math.pi
+    _x50 = (1.0/i_ba_omega0_hat)
+    _x51 = _x50*i_ba_omega
+    _x52 = _x50*(_x46 + _x49)
+    _x53 = (1.0/m)
+    q_r = ((c_q_r) if _x44 else (_x47*l0))
+    q_rd = ((c_q_rd) if _x44 else (_x48*i_ba_omega0_hat*l0))
+    q_th = ((c_q_th) if _x44 else (-_x49*_x51 + 3.0*math.pi*_x51*i_ba_a + _x52*i_ba_omega - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
+    q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44 else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return _NAN4 + (STATUS_NUMERICAL_RANGE,)

@@ -27,6 +27,7 @@ _NAN4 = (NAN,) * 4
 _NAN21 = (NAN,) * 21
 _NAN24 = (NAN,) * 24
 _NAN26 = (NAN,) * 26
+_NAN34 = (NAN,) * 34
 _NAN72 = (NAN,) * 72
 _NAN91 = (NAN,) * 91
 
@@ -146,7 +147,271 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omeg
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3():
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan):
+    """evaluation of the iterate of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
+
+    Report equations: .
+
+    Arguments:
+        E_td: value of the caller's variable
+        E_td__tan: value of the caller's variable
+        P_c_compression: value of the caller's variable
+        P_c_compression__tan: value of the caller's variable
+        P_c_decompression: value of the caller's variable
+        P_c_decompression__tan: value of the caller's variable
+        continuity: value of the caller's variable
+        g_s: value of the caller's variable
+        gravity: value of the caller's variable
+        k_c: value of the caller's variable
+        k_c__tan: value of the caller's variable
+        k_d: value of the caller's variable
+        k_d__tan: value of the caller's variable
+        l0: value of the caller's variable
+        m: value of the caller's variable
+        p_td: value of the caller's variable
+        p_td__tan: value of the caller's variable
+        q_r_lo: value of the caller's variable
+        q_r_td: value of the caller's variable
+        q_r_td__tan: value of the caller's variable
+        q_rd_td: value of the caller's variable
+        q_rd_td__tan: value of the caller's variable
+        q_th_td: value of the caller's variable
+        q_th_td__tan: value of the caller's variable
+
+    Returns a tuple:
+        i_ab_omega0_hat: result for the caller
+        i_ab_a: result for the caller
+        i_ab_b: result for the caller
+        i_ab_phase_td: result for the caller
+        i_ab_omega0_hat__tan: result for the caller
+        i_ab_a__tan: result for the caller
+        i_ab_b__tan: result for the caller
+        i_ab_phase_td__tan: result for the caller
+        i_t_bottom: result for the caller
+        i_t_bottom__tan: result for the caller
+        i_bottom_q_r: result for the caller
+        i_bottom_q_r__tan: result for the caller
+        i_bottom_q_rd: result for the caller
+        i_bottom_q_th: result for the caller
+        i_bottom_q_th__tan: result for the caller
+        i_bottom_q_thd: result for the caller
+        i_bottom_q_thd__tan: result for the caller
+        i_ba_omega0_hat: result for the caller
+        i_ba_omega0_hat__tan: result for the caller
+        i_ba_b: result for the caller
+        i_ba_b__tan: result for the caller
+        i_ba_a: result for the caller
+        i_ba_a__tan: result for the caller
+        i_ba_phase_lo: result for the caller
+        i_ba_phase_lo__tan: result for the caller
+        i_t_stance: result for the caller
+        i_t_stance__tan: result for the caller
+        i_liftoff_q_r: result for the caller
+        i_liftoff_q_th: result for the caller
+        i_liftoff_q_th__tan: result for the caller
+        i_liftoff_q_thd: result for the caller
+        i_liftoff_q_thd__tan: result for the caller
+        i_liftoff_q_rd: result for the caller
+        i_liftoff_q_rd__tan: result for the caller
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 429
+    # the first half's mean momentum as a touchdown rate
+    _x3 = (1.0/q_r_td)
+    _x0 = (0.5)*P_c_compression + p_td
+    _x1 = (1.0/m)
+    _x2 = _x1*_x3**2
+    i_q_thd_eff = _x0*_x2
+    i_q_thd_eff__tan = (0.5)*P_c_compression__tan*_x2 - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
+    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
+    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k_c__tan)
+    if _c0[12] != STATUS_OK:
+        return _NAN34 + (_c0[12],)
+    (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, i_ab_omega__tan, i_ab_omega0_hat__tan, i_ab_a__tan, i_ab_b__tan, i_ab_phase_td__tan, i_ab_s_td__tan, _) = _c0
+    # eqs (79)-(81): the bottom at phase 3 pi/2
+    _x4 = (1.0/i_ab_omega0_hat)
+    _x30 = (1.0/l0)
+    _x5 = -i_ab_phase_td + (1.5)*math.pi
+    _x6 = _x4**2
+    _x7 = i_ab_a - i_ab_b
+    _x8 = _x7 + 1.0
+    _x29 = (1.0/_x8)
+    _x9 = i_ab_a__tan*l0 - i_ab_b__tan*l0
+    _x10 = (1.5)*math.pi
+    _x11 = _x4*i_ab_omega
+    _x12 = _x4*i_ab_phase_td
+    _x13 = 3.0*math.pi
+    _x14 = _x11*_x13
+    _x15 = _x12*i_ab_a
+    _x16 = math.sqrt(1.0 - i_ab_s_td**2)
+    _x17 = _x16*i_ab_b
+    _x18 = _x17*_x4
+    _x19 = 2.0*i_ab_omega
+    _x20 = 2.0*_x11
+    _x21 = _x13*i_ab_a
+    _x22 = _x6*i_ab_phase_td
+    _x23 = _x6*i_ab_omega
+    _x24 = P_c_compression + p_td
+    _x25 = P_c_compression__tan + p_td__tan
+    _x26 = (1.0/m)
+    _x27 = _x24*_x26
+    _x28 = _x29**2*_x30**2
+    i_t_bottom = _x4*_x5
+    i_t_bottom__tan = -_x4*i_ab_phase_td__tan - _x5*_x6*i_ab_omega0_hat__tan
+    i_bottom_q_r = _x8*l0
+    i_bottom_q_r__tan = _x9
+    i_bottom_q_rd = 0.0
+    i_bottom_q_th = _x10*_x11 - _x12*i_ab_omega - _x14*i_ab_a + _x19*(_x15 + _x18) + q_th_td
+    i_bottom_q_th__tan = _x16*_x20*i_ab_b__tan + i_ab_a__tan*(_x12*_x19 - _x14) + i_ab_omega0_hat__tan*(-_x10*_x23 + _x19*(-_x17*_x6 - _x22*i_ab_a) + _x21*_x23 + _x22*i_ab_omega) + i_ab_omega__tan*(_x10*_x4 - _x12 + 2.0*_x15 + 2.0*_x18 - _x21*_x4) + i_ab_phase_td__tan*(-_x11 + _x20*i_ab_a) + q_th_td__tan - _x20*i_ab_b*i_ab_s_td*i_ab_s_td__tan/_x16
+    i_p_b = _x24
+    i_p_b__tan = _x25
+    i_bottom_q_thd = _x27*_x28
+    i_bottom_q_thd__tan = _x25*_x26*_x28 - 2.0*_x27*_x29**3*_x30**3*_x9
+    i_rho_b = _x7
+    i_rho_b__tan = _x30*_x9
+    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
+    _x47 = (1.0/l0)
+    _x33 = (1.0/m)
+    _x31 = (0.5)*P_c_decompression + i_p_b
+    _x32 = _x47**2
+    _x34 = _x32*_x33
+    _x35 = (0.5)*P_c_decompression__tan*_x34 + _x34*i_p_b__tan
+    _x36 = (1.0/math.sqrt(m))
+    _x37 = _x31**2
+    _x38 = 3.0*_x33*_x37*_x47**4 + k_d
+    _x42 = (1.0/_x38)
+    _x39 = math.sqrt(_x38)
+    _x40 = _x36/_x39
+    _x41 = _x31*_x32
+    _x43 = _x47**3
+    _x44 = m*(_x33**2*_x37*_x43 - g_s)
+    _x45 = _x44*_x47
+    _x46 = _x42**2
+    i_ba_omega = _x31*_x34
+    i_ba_omega__tan = _x35
+    i_ba_omega0_hat = _x36*_x39
+    i_ba_omega0_hat__tan = 3.0*_x35*_x40*_x41 + (0.5)*_x40*k_d__tan
+    i_ba_a_free = _x42*_x45
+    i_ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
+    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
+    if not ((i_rho_b < i_ba_a_free)):
+        return _NAN34 + (STATUS_RECOMPRESSION,)
+    # E_ab of (98)
+    if continuity == 0.0:
+        # branch continuity = 0
+        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
+        if _c1[2] != STATUS_OK:
+            return _NAN34 + (_c1[2],)
+        i_eps_ba = _c1[0]
+        i_eps_ba__tan = _c1[1]
+    elif continuity == 1.0:
+        # branch continuity = 1
+        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
+        if _c2[2] != STATUS_OK:
+            return _NAN34 + (_c2[2],)
+        i_eps_ba = _c2[0]
+        i_eps_ba__tan = _c2[1]
+    elif continuity == 2.0:
+        # branch continuity = 2
+        _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omega, i_ba_omega__tan, i_bottom_q_r, i_bottom_q_r__tan, i_rho_b, i_rho_b__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
+        if _c3[2] != STATUS_OK:
+            return _NAN34 + (_c3[2],)
+        i_eps_ba = _c3[0]
+        i_eps_ba__tan = _c3[1]
+    else:
+        return _NAN34 + (STATUS_INVALID_INPUT,)
+    _x48 = i_ba_omega**2
+    _x49 = 3.0*_x48*m + k_d
+    _x60 = (1.0/_x49)
+    _x50 = _x60**2*m
+    _x51 = l0**2
+    _x52 = (1.0/_x51)
+    _x53 = -_x48*l0 + g_s
+    _x54 = 2.0*g_s - l0*(-_x48 + i_eps_ba)
+    _x55 = _x54*l0
+    _x56 = _x49*_x55 - _x53**2*m
+    _x57 = _x52*_x56
+    _x58 = _x60**3
+    _x59 = i_ba_omega*m
+    i_ba_b2 = -_x50*_x57
+    i_ba_b2__tan = _x60*i_eps_ba__tan*m + i_ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*i_ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*i_ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
+    # eq (104): real amplitude b_ba
+    if not ((i_ba_b2 > 0.0)):
+        return _NAN34 + (STATUS_NO_REAL_SOLUTION,)
+    # eq (104); eq (103), or (111) when constrained
+    _x61 = math.sqrt(i_ba_b2)
+    _x62 = (0.5)*i_ba_b2__tan/_x61
+    _x63 = (continuity == 1.0)
+    _x64 = ((1.0) if _x63 else (0.0))
+    i_ba_b = _x61
+    i_ba_b__tan = _x62
+    i_ba_a = ((_x61 + i_rho_b) if _x63 else (i_ba_a_free))
+    i_ba_a__tan = _x62*_x64 + _x64*i_rho_b__tan + i_ba_a_free__tan*((0.0) if _x63 else (1.0))
+    # eq (94): the liftoff phase of the second half
+    _c4 = geyer_liftoff_phase_jvp_a_b(i_ba_a, i_ba_b, l0, q_r_lo, i_ba_a__tan, i_ba_b__tan)
+    if _c4[4] != STATUS_OK:
+        return _NAN34 + (_c4[4],)
+    i_ba_phase_lo = _c4[0]
+    i_ba_s_lo = _c4[1]
+    i_ba_phase_lo__tan = _c4[2]
+    i_ba_s_lo__tan = _c4[3]
+    # eqs (90)-(94) at liftoff
+    _x65 = (1.0/i_ba_omega0_hat)
+    _x82 = (1.0/m)
+    _x66 = (1.5)*math.pi
+    _x67 = -_x66 + i_ba_phase_lo
+    _x68 = _x65**2
+    _x69 = _x65*i_ba_phase_lo
+    _x70 = _x65*i_ba_omega
+    _x71 = 3.0*math.pi
+    _x72 = _x69*i_ba_a
+    _x73 = math.sqrt(1.0 - i_ba_s_lo**2)
+    _x74 = _x65*_x73*i_ba_b
+    _x75 = 2.0*i_ba_omega
+    _x76 = -_x66*_x70 + _x69*i_ba_omega + _x70*_x71*i_ba_a - _x75*(_x72 - _x74) + i_bottom_q_th
+    _x77 = 2.0*_x70
+    _x78 = _x71*i_ba_a
+    _x79 = _x68*i_ba_phase_lo
+    _x80 = _x73*_x77*i_ba_b__tan + i_ba_a__tan*(3.0*math.pi*_x65*i_ba_omega - _x69*_x75) + i_ba_omega0_hat__tan*(-_x68*_x78*i_ba_omega + (1.5)*math.pi*_x68*i_ba_omega - _x75*(_x68*_x73*i_ba_b - _x79*i_ba_a) - _x79*i_ba_omega) + i_ba_omega__tan*(-_x65*_x66 + _x65*_x78 + _x69 - 2.0*_x72 + 2.0*_x74) + i_ba_phase_lo__tan*(_x65*i_ba_omega - _x77*i_ba_a) + i_bottom_q_th__tan - _x77*i_ba_b*i_ba_s_lo*i_ba_s_lo__tan/_x73
+    _x81 = P_c_decompression + i_p_b
+    _x83 = q_r_lo**2
+    _x84 = (1.0/_x83)
+    _x85 = _x82*_x84
+    _x86 = _x82*l0**2
+    _x87 = _x82*_x83
+    _x88 = _x82**2*_x84
+    _x89 = k_c - k_d
+    _x90 = (-i_bottom_q_r + l0)**2
+    _x91 = _x88*(2.0*P_c_decompression + 2.0*i_p_b)
+    i_t_stance = _x65*_x67 + i_t_bottom
+    i_t_stance__tan = _x65*i_ba_phase_lo__tan - _x67*_x68*i_ba_omega0_hat__tan + i_t_bottom__tan
+    i_liftoff_q_r = q_r_lo
+    i_liftoff_q_th = _x76
+    i_liftoff_q_th__tan = _x80
+    i_liftoff_q_thd = _x81*_x85
+    i_liftoff_q_thd__tan = P_c_decompression__tan*_x85 + _x85*i_p_b__tan
+    i_q_rd_lo_sq = -_x81**2*_x88 + 2.0*_x82*k_d*l0*q_r_lo + 2.0*_x82*(E_td - 0.5*_x89*_x90) - _x86*k_d - _x87*k_d - 2.0*g_s*q_r_lo*math.cos(_x76)
+    i_q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*i_p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
+    # the leg stays above horizontal
+    if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN34 + (STATUS_FALL,)
+    # q_rd_lo^2 from the energy
+    if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
+        return _NAN34 + (STATUS_ENERGY_DEFICIT,)
+    # q_rd_lo: (11) without a gravity correction, the energy with one
+    _x92 = math.sqrt(1.0 - i_ba_s_lo**2)
+    _x93 = _x92*l0
+    _x94 = _x93*i_ba_omega0_hat
+    _x95 = (gravity == 0.0)
+    _x96 = math.sqrt(i_q_rd_lo_sq)
+    i_liftoff_q_rd = ((_x94*i_ba_b) if _x95 else (_x96))
+    i_liftoff_q_rd__tan = i_ba_b__tan*((_x94) if _x95 else (0.0)) + i_ba_omega0_hat__tan*((_x93*i_ba_b) if _x95 else (0.0)) + i_ba_s_lo__tan*((-i_ba_b*i_ba_omega0_hat*i_ba_s_lo*l0/_x92) if _x95 else (0.0)) + i_q_rd_lo_sq__tan*((0.0) if _x95 else ((0.5)/_x96))
+    # (internal helper: its callers check that their outputs are finite)
+    return (i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_omega0_hat__tan, i_ab_a__tan, i_ab_b__tan, i_ab_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_rd, i_bottom_q_th, i_bottom_q_th__tan, i_bottom_q_thd, i_bottom_q_thd__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_b, i_ba_b__tan, i_ba_a, i_ba_a__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_t_stance, i_t_stance__tan, i_liftoff_q_r, i_liftoff_q_th, i_liftoff_q_th__tan, i_liftoff_q_thd, i_liftoff_q_thd__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4():
     """branch gravity = 0 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
 
     Report equations: .
@@ -171,7 +436,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3():
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
     """branch gravity = 1 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
 
     Report equations: .
@@ -227,7 +492,7 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan):
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan):
     """branch gravity = 2 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
 
     Report equations: .
@@ -325,34 +590,45 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan):
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, gravity, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
     """loop body of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
 
     Report equations: .
 
     Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c_compression: value of the caller's variable
-        P_c_compression__tan: value of the caller's variable
-        P_c_decompression: value of the caller's variable
-        P_c_decompression__tan: value of the caller's variable
-        continuity: value of the caller's variable
         g_s: value of the caller's variable
         gravity: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
+        i_ab_a: value of the caller's variable
+        i_ab_a__tan: value of the caller's variable
+        i_ab_b: value of the caller's variable
+        i_ab_b__tan: value of the caller's variable
+        i_ab_omega0_hat: value of the caller's variable
+        i_ab_omega0_hat__tan: value of the caller's variable
+        i_ab_phase_td: value of the caller's variable
+        i_ab_phase_td__tan: value of the caller's variable
+        i_ba_a: value of the caller's variable
+        i_ba_a__tan: value of the caller's variable
+        i_ba_b: value of the caller's variable
+        i_ba_b__tan: value of the caller's variable
+        i_ba_omega0_hat: value of the caller's variable
+        i_ba_omega0_hat__tan: value of the caller's variable
+        i_ba_phase_lo: value of the caller's variable
+        i_ba_phase_lo__tan: value of the caller's variable
+        i_bottom_q_r: value of the caller's variable
+        i_bottom_q_r__tan: value of the caller's variable
+        i_bottom_q_th: value of the caller's variable
+        i_bottom_q_th__tan: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
         l0: value of the caller's variable
         m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
         q_r_lo: value of the caller's variable
         q_r_td: value of the caller's variable
         q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
         q_th_td: value of the caller's variable
         q_th_td__tan: value of the caller's variable
 
@@ -363,225 +639,35 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
         _next_P_c_decompression__tan: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 429
-    # the first half's mean momentum as a touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = (0.5)*P_c_compression + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    i_q_thd_eff = _x0*_x2
-    i_q_thd_eff__tan = (0.5)*P_c_compression__tan*_x2 - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k_c__tan)
-    if _c0[12] != STATUS_OK:
-        return _NAN4 + (_c0[12],)
-    (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, i_ab_omega__tan, i_ab_omega0_hat__tan, i_ab_a__tan, i_ab_b__tan, i_ab_phase_td__tan, i_ab_s_td__tan, _) = _c0
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x4 = (1.0/i_ab_omega0_hat)
-    _x30 = (1.0/l0)
-    _x5 = -i_ab_phase_td + (1.5)*math.pi
-    _x6 = _x4**2
-    _x7 = i_ab_a - i_ab_b
-    _x8 = _x7 + 1.0
-    _x29 = (1.0/_x8)
-    _x9 = i_ab_a__tan*l0 - i_ab_b__tan*l0
-    _x10 = (1.5)*math.pi
-    _x11 = _x4*i_ab_omega
-    _x12 = _x4*i_ab_phase_td
-    _x13 = 3.0*math.pi
-    _x14 = _x11*_x13
-    _x15 = _x12*i_ab_a
-    _x16 = math.sqrt(1.0 - i_ab_s_td**2)
-    _x17 = _x16*i_ab_b
-    _x18 = _x17*_x4
-    _x19 = 2.0*i_ab_omega
-    _x20 = 2.0*_x11
-    _x21 = _x13*i_ab_a
-    _x22 = _x6*i_ab_phase_td
-    _x23 = _x6*i_ab_omega
-    _x24 = P_c_compression + p_td
-    _x25 = P_c_compression__tan + p_td__tan
-    _x26 = (1.0/m)
-    _x27 = _x24*_x26
-    _x28 = _x29**2*_x30**2
-    i_t_bottom = _x4*_x5
-    i_t_bottom__tan = -_x4*i_ab_phase_td__tan - _x5*_x6*i_ab_omega0_hat__tan
-    i_bottom_q_r = _x8*l0
-    i_bottom_q_r__tan = _x9
-    i_bottom_q_rd = 0.0
-    i_bottom_q_th = _x10*_x11 - _x12*i_ab_omega - _x14*i_ab_a + _x19*(_x15 + _x18) + q_th_td
-    i_bottom_q_th__tan = _x16*_x20*i_ab_b__tan + i_ab_a__tan*(_x12*_x19 - _x14) + i_ab_omega0_hat__tan*(-_x10*_x23 + _x19*(-_x17*_x6 - _x22*i_ab_a) + _x21*_x23 + _x22*i_ab_omega) + i_ab_omega__tan*(_x10*_x4 - _x12 + 2.0*_x15 + 2.0*_x18 - _x21*_x4) + i_ab_phase_td__tan*(-_x11 + _x20*i_ab_a) + q_th_td__tan - _x20*i_ab_b*i_ab_s_td*i_ab_s_td__tan/_x16
-    i_p_b = _x24
-    i_p_b__tan = _x25
-    i_bottom_q_thd = _x27*_x28
-    i_bottom_q_thd__tan = _x25*_x26*_x28 - 2.0*_x27*_x29**3*_x30**3*_x9
-    i_rho_b = _x7
-    i_rho_b__tan = _x30*_x9
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x47 = (1.0/l0)
-    _x33 = (1.0/m)
-    _x31 = (0.5)*P_c_decompression + i_p_b
-    _x32 = _x47**2
-    _x34 = _x32*_x33
-    _x35 = (0.5)*P_c_decompression__tan*_x34 + _x34*i_p_b__tan
-    _x36 = (1.0/math.sqrt(m))
-    _x37 = _x31**2
-    _x38 = 3.0*_x33*_x37*_x47**4 + k_d
-    _x42 = (1.0/_x38)
-    _x39 = math.sqrt(_x38)
-    _x40 = _x36/_x39
-    _x41 = _x31*_x32
-    _x43 = _x47**3
-    _x44 = m*(_x33**2*_x37*_x43 - g_s)
-    _x45 = _x44*_x47
-    _x46 = _x42**2
-    i_ba_omega = _x31*_x34
-    i_ba_omega__tan = _x35
-    i_ba_omega0_hat = _x36*_x39
-    i_ba_omega0_hat__tan = 3.0*_x35*_x40*_x41 + (0.5)*_x40*k_d__tan
-    i_ba_a_free = _x42*_x45
-    i_ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((i_rho_b < i_ba_a_free)):
-        return _NAN4 + (STATUS_RECOMPRESSION,)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # branch continuity = 0
-        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c1[2] != STATUS_OK:
-            return _NAN4 + (_c1[2],)
-        i_eps_ba = _c1[0]
-        i_eps_ba__tan = _c1[1]
-    elif continuity == 1.0:
-        # branch continuity = 1
-        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c2[2] != STATUS_OK:
-            return _NAN4 + (_c2[2],)
-        i_eps_ba = _c2[0]
-        i_eps_ba__tan = _c2[1]
-    elif continuity == 2.0:
-        # branch continuity = 2
-        _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omega, i_ba_omega__tan, i_bottom_q_r, i_bottom_q_r__tan, i_rho_b, i_rho_b__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c3[2] != STATUS_OK:
-            return _NAN4 + (_c3[2],)
-        i_eps_ba = _c3[0]
-        i_eps_ba__tan = _c3[1]
-    else:
-        return _NAN4 + (STATUS_INVALID_INPUT,)
-    _x48 = i_ba_omega**2
-    _x49 = 3.0*_x48*m + k_d
-    _x60 = (1.0/_x49)
-    _x50 = _x60**2*m
-    _x51 = l0**2
-    _x52 = (1.0/_x51)
-    _x53 = -_x48*l0 + g_s
-    _x54 = 2.0*g_s - l0*(-_x48 + i_eps_ba)
-    _x55 = _x54*l0
-    _x56 = _x49*_x55 - _x53**2*m
-    _x57 = _x52*_x56
-    _x58 = _x60**3
-    _x59 = i_ba_omega*m
-    i_ba_b2 = -_x50*_x57
-    i_ba_b2__tan = _x60*i_eps_ba__tan*m + i_ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*i_ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*i_ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
-    # eq (104): real amplitude b_ba
-    if not ((i_ba_b2 > 0.0)):
-        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    # eq (104); eq (103), or (111) when constrained
-    _x61 = math.sqrt(i_ba_b2)
-    _x62 = (0.5)*i_ba_b2__tan/_x61
-    _x63 = (continuity == 1.0)
-    _x64 = ((1.0) if _x63 else (0.0))
-    i_ba_b = _x61
-    i_ba_b__tan = _x62
-    i_ba_a = ((_x61 + i_rho_b) if _x63 else (i_ba_a_free))
-    i_ba_a__tan = _x62*_x64 + _x64*i_rho_b__tan + i_ba_a_free__tan*((0.0) if _x63 else (1.0))
-    # eq (94): the liftoff phase of the second half
-    _c4 = geyer_liftoff_phase_jvp_a_b(i_ba_a, i_ba_b, l0, q_r_lo, i_ba_a__tan, i_ba_b__tan)
-    if _c4[4] != STATUS_OK:
-        return _NAN4 + (_c4[4],)
-    i_ba_phase_lo = _c4[0]
-    i_ba_s_lo = _c4[1]
-    i_ba_phase_lo__tan = _c4[2]
-    i_ba_s_lo__tan = _c4[3]
-    # eqs (90)-(94) at liftoff
-    _x65 = (1.0/i_ba_omega0_hat)
-    _x82 = (1.0/m)
-    _x66 = (1.5)*math.pi
-    _x67 = -_x66 + i_ba_phase_lo
-    _x68 = _x65**2
-    _x69 = _x65*i_ba_phase_lo
-    _x70 = _x65*i_ba_omega
-    _x71 = 3.0*math.pi
-    _x72 = _x69*i_ba_a
-    _x73 = math.sqrt(1.0 - i_ba_s_lo**2)
-    _x74 = _x65*_x73*i_ba_b
-    _x75 = 2.0*i_ba_omega
-    _x76 = -_x66*_x70 + _x69*i_ba_omega + _x70*_x71*i_ba_a - _x75*(_x72 - _x74) + i_bottom_q_th
-    _x77 = 2.0*_x70
-    _x78 = _x71*i_ba_a
-    _x79 = _x68*i_ba_phase_lo
-    _x80 = _x73*_x77*i_ba_b__tan + i_ba_a__tan*(3.0*math.pi*_x65*i_ba_omega - _x69*_x75) + i_ba_omega0_hat__tan*(-_x68*_x78*i_ba_omega + (1.5)*math.pi*_x68*i_ba_omega - _x75*(_x68*_x73*i_ba_b - _x79*i_ba_a) - _x79*i_ba_omega) + i_ba_omega__tan*(-_x65*_x66 + _x65*_x78 + _x69 - 2.0*_x72 + 2.0*_x74) + i_ba_phase_lo__tan*(_x65*i_ba_omega - _x77*i_ba_a) + i_bottom_q_th__tan - _x77*i_ba_b*i_ba_s_lo*i_ba_s_lo__tan/_x73
-    _x81 = P_c_decompression + i_p_b
-    _x83 = q_r_lo**2
-    _x84 = (1.0/_x83)
-    _x85 = _x82*_x84
-    _x86 = _x82*l0**2
-    _x87 = _x82*_x83
-    _x88 = _x82**2*_x84
-    _x89 = k_c - k_d
-    _x90 = (-i_bottom_q_r + l0)**2
-    _x91 = _x88*(2.0*P_c_decompression + 2.0*i_p_b)
-    i_t_stance = _x65*_x67 + i_t_bottom
-    i_t_stance__tan = _x65*i_ba_phase_lo__tan - _x67*_x68*i_ba_omega0_hat__tan + i_t_bottom__tan
-    i_liftoff_q_r = q_r_lo
-    i_liftoff_q_th = _x76
-    i_liftoff_q_th__tan = _x80
-    i_liftoff_q_thd = _x81*_x85
-    i_liftoff_q_thd__tan = P_c_decompression__tan*_x85 + _x85*i_p_b__tan
-    i_q_rd_lo_sq = -_x81**2*_x88 + 2.0*_x82*k_d*l0*q_r_lo + 2.0*_x82*(E_td - 0.5*_x89*_x90) - _x86*k_d - _x87*k_d - 2.0*g_s*q_r_lo*math.cos(_x76)
-    i_q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*i_p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
-    # the leg stays above horizontal
-    if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN4 + (STATUS_FALL,)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-        return _NAN4 + (STATUS_ENERGY_DEFICIT,)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    _x92 = math.sqrt(1.0 - i_ba_s_lo**2)
-    _x93 = _x92*l0
-    _x94 = _x93*i_ba_omega0_hat
-    _x95 = (gravity == 0.0)
-    _x96 = math.sqrt(i_q_rd_lo_sq)
-    i_liftoff_q_rd = ((_x94*i_ba_b) if _x95 else (_x96))
-    i_liftoff_q_rd__tan = i_ba_b__tan*((_x94) if _x95 else (0.0)) + i_ba_omega0_hat__tan*((_x93*i_ba_b) if _x95 else (0.0)) + i_ba_s_lo__tan*((-i_ba_b*i_ba_omega0_hat*i_ba_s_lo*l0/_x92) if _x95 else (0.0)) + i_q_rd_lo_sq__tan*((0.0) if _x95 else ((0.5)/_x96))
+    # Total ops: 0
     # the virtual gravity effect of each half
     if gravity == 0.0:
         # branch gravity = 0
-        _c5 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3()
-        if _c5[4] != STATUS_OK:
-            return _NAN4 + (_c5[4],)
-        i_P_new1 = _c5[0]
-        i_P_new2 = _c5[1]
-        i_P_new1__tan = _c5[2]
-        i_P_new2__tan = _c5[3]
+        _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4()
+        if _c0[4] != STATUS_OK:
+            return _NAN4 + (_c0[4],)
+        i_P_new1 = _c0[0]
+        i_P_new2 = _c0[1]
+        i_P_new1__tan = _c0[2]
+        i_P_new2__tan = _c0[3]
     elif gravity == 1.0:
         # branch gravity = 1
-        _c6 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
-        if _c6[4] != STATUS_OK:
-            return _NAN4 + (_c6[4],)
-        i_P_new1 = _c6[0]
-        i_P_new2 = _c6[1]
-        i_P_new1__tan = _c6[2]
-        i_P_new2__tan = _c6[3]
+        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
+        if _c1[4] != STATUS_OK:
+            return _NAN4 + (_c1[4],)
+        i_P_new1 = _c1[0]
+        i_P_new2 = _c1[1]
+        i_P_new1__tan = _c1[2]
+        i_P_new2__tan = _c1[3]
     elif gravity == 2.0:
         # branch gravity = 2
-        _c7 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
-        if _c7[4] != STATUS_OK:
-            return _NAN4 + (_c7[4],)
-        i_P_new1 = _c7[0]
-        i_P_new2 = _c7[1]
-        i_P_new1__tan = _c7[2]
-        i_P_new2__tan = _c7[3]
+        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
+        if _c2[4] != STATUS_OK:
+            return _NAN4 + (_c2[4],)
+        i_P_new1 = _c2[0]
+        i_P_new2 = _c2[1]
+        i_P_new1__tan = _c2[2]
+        i_P_new2__tan = _c2[3]
     else:
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # next values
@@ -594,150 +680,30 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__ta
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 0 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # eqs (97)-(99), E_ab the energy (27)
-    _x0 = k_c - k_d
-    _x1 = (-bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 1 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # as report
-    _x0 = k_c - k_d
-    _x1 = (-bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(ba_omega, ba_omega__tan, bottom_q_r, bottom_q_r__tan, g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, rho_b, rho_b__tan):
-    """branch continuity = 2 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        ba_omega: value of the caller's variable
-        ba_omega__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        rho_b: value of the caller's variable
-        rho_b__tan: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 53
-    # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-    _x1 = (1.0/l0)
-    _x0 = ba_omega**2
-    _x2 = 2.0*_x1*g_s
-    _x3 = 2.0*_x0
-    _x4 = rho_b**2
-    _x5 = (1.0/m)
-    _x6 = 3.0*_x0 + _x5*k_c
-    _x7 = k_c - k_d
-    _x8 = _x1**2*_x5
-    _x9 = _x8*(-bottom_q_r + l0)**2
-    eps_ba = _x0 + _x2 + _x4*_x6 - _x7*_x9 + rho_b*(2.0*_x1*g_s - _x3)
-    eps_ba__tan = -_x7*_x8*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) + _x9*k_d__tan + ba_omega__tan*(6.0*_x4*ba_omega - 4.0*ba_omega*rho_b + 2.0*ba_omega) + k_c__tan*(_x4*_x5 - _x9) + rho_b__tan*(_x2 - _x3 + 2.0*_x6*rho_b)
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan):
+def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_rd, i_bottom_q_th, i_bottom_q_th__tan, i_bottom_q_thd, i_bottom_q_thd__tan, i_liftoff_q_r, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_liftoff_q_thd, i_liftoff_q_thd__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan):
     """continuation of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
 
     Report equations: .
 
     Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c_compression: value of the caller's variable
-        P_c_compression__tan: value of the caller's variable
-        P_c_decompression: value of the caller's variable
-        P_c_decompression__tan: value of the caller's variable
-        continuity: value of the caller's variable
-        g_s: value of the caller's variable
-        gravity: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
+        i_bottom_q_r: value of the caller's variable
+        i_bottom_q_r__tan: value of the caller's variable
+        i_bottom_q_rd: value of the caller's variable
+        i_bottom_q_th: value of the caller's variable
+        i_bottom_q_th__tan: value of the caller's variable
+        i_bottom_q_thd: value of the caller's variable
+        i_bottom_q_thd__tan: value of the caller's variable
+        i_liftoff_q_r: value of the caller's variable
+        i_liftoff_q_rd: value of the caller's variable
+        i_liftoff_q_rd__tan: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_liftoff_q_thd: value of the caller's variable
+        i_liftoff_q_thd__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
 
     Returns a tuple:
         t_bottom: result for the caller
@@ -763,197 +729,26 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__t
         passes__tan: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 429
-    # the first half's mean momentum as a touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = (0.5)*P_c_compression + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    q_thd_eff = _x0*_x2
-    q_thd_eff__tan = (0.5)*P_c_compression__tan*_x2 - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, q_thd_eff__tan, k_c__tan)
-    if _c0[12] != STATUS_OK:
-        return _NAN21 + (_c0[12],)
-    (ab_omega, ab_omega0_hat, ab_a, ab_b, ab_phase_td, ab_s_td, ab_omega__tan, ab_omega0_hat__tan, ab_a__tan, ab_b__tan, ab_phase_td__tan, ab_s_td__tan, _) = _c0
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x4 = (1.0/ab_omega0_hat)
-    _x30 = (1.0/l0)
-    _x5 = -ab_phase_td + (1.5)*math.pi
-    _x6 = _x4**2
-    _x7 = ab_a - ab_b
-    _x8 = _x7 + 1.0
-    _x29 = (1.0/_x8)
-    _x9 = ab_a__tan*l0 - ab_b__tan*l0
-    _x10 = (1.5)*math.pi
-    _x11 = _x4*ab_omega
-    _x12 = _x4*ab_phase_td
-    _x13 = 3.0*math.pi
-    _x14 = _x11*_x13
-    _x15 = _x12*ab_a
-    _x16 = math.sqrt(1.0 - ab_s_td**2)
-    _x17 = _x16*ab_b
-    _x18 = _x17*_x4
-    _x19 = 2.0*ab_omega
-    _x20 = 2.0*_x11
-    _x21 = _x13*ab_a
-    _x22 = _x6*ab_phase_td
-    _x23 = _x6*ab_omega
-    _x24 = P_c_compression + p_td
-    _x25 = P_c_compression__tan + p_td__tan
-    _x26 = (1.0/m)
-    _x27 = _x24*_x26
-    _x28 = _x29**2*_x30**2
-    t_bottom = _x4*_x5
-    t_bottom__tan = -_x4*ab_phase_td__tan - _x5*_x6*ab_omega0_hat__tan
-    bottom_q_r = _x8*l0
-    bottom_q_r__tan = _x9
-    bottom_q_rd = 0.0
-    bottom_q_th = _x10*_x11 - _x12*ab_omega - _x14*ab_a + _x19*(_x15 + _x18) + q_th_td
-    bottom_q_th__tan = _x16*_x20*ab_b__tan + ab_a__tan*(_x12*_x19 - _x14) + ab_omega0_hat__tan*(-_x10*_x23 + _x19*(-_x17*_x6 - _x22*ab_a) + _x21*_x23 + _x22*ab_omega) + ab_omega__tan*(_x10*_x4 - _x12 + 2.0*_x15 + 2.0*_x18 - _x21*_x4) + ab_phase_td__tan*(-_x11 + _x20*ab_a) + q_th_td__tan - _x20*ab_b*ab_s_td*ab_s_td__tan/_x16
-    p_b = _x24
-    p_b__tan = _x25
-    bottom_q_thd = _x27*_x28
-    bottom_q_thd__tan = _x25*_x26*_x28 - 2.0*_x27*_x29**3*_x30**3*_x9
-    rho_b = _x7
-    rho_b__tan = _x30*_x9
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x47 = (1.0/l0)
-    _x33 = (1.0/m)
-    _x31 = (0.5)*P_c_decompression + p_b
-    _x32 = _x47**2
-    _x34 = _x32*_x33
-    _x35 = (0.5)*P_c_decompression__tan*_x34 + _x34*p_b__tan
-    _x36 = (1.0/math.sqrt(m))
-    _x37 = _x31**2
-    _x38 = 3.0*_x33*_x37*_x47**4 + k_d
-    _x42 = (1.0/_x38)
-    _x39 = math.sqrt(_x38)
-    _x40 = _x36/_x39
-    _x41 = _x31*_x32
-    _x43 = _x47**3
-    _x44 = m*(_x33**2*_x37*_x43 - g_s)
-    _x45 = _x44*_x47
-    _x46 = _x42**2
-    ba_omega = _x31*_x34
-    ba_omega__tan = _x35
-    ba_omega0_hat = _x36*_x39
-    ba_omega0_hat__tan = 3.0*_x35*_x40*_x41 + (0.5)*_x40*k_d__tan
-    ba_a_free = _x42*_x45
-    ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return _NAN21 + (STATUS_RECOMPRESSION,)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # branch continuity = 0
-        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c1[2] != STATUS_OK:
-            return _NAN21 + (_c1[2],)
-        eps_ba = _c1[0]
-        eps_ba__tan = _c1[1]
-    elif continuity == 1.0:
-        # branch continuity = 1
-        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c2[2] != STATUS_OK:
-            return _NAN21 + (_c2[2],)
-        eps_ba = _c2[0]
-        eps_ba__tan = _c2[1]
-    elif continuity == 2.0:
-        # branch continuity = 2
-        _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(ba_omega, ba_omega__tan, bottom_q_r, bottom_q_r__tan, g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, rho_b, rho_b__tan)
-        if _c3[2] != STATUS_OK:
-            return _NAN21 + (_c3[2],)
-        eps_ba = _c3[0]
-        eps_ba__tan = _c3[1]
-    else:
-        return _NAN21 + (STATUS_INVALID_INPUT,)
-    _x48 = ba_omega**2
-    _x49 = 3.0*_x48*m + k_d
-    _x60 = (1.0/_x49)
-    _x50 = _x60**2*m
-    _x51 = l0**2
-    _x52 = (1.0/_x51)
-    _x53 = -_x48*l0 + g_s
-    _x54 = 2.0*g_s - l0*(-_x48 + eps_ba)
-    _x55 = _x54*l0
-    _x56 = _x49*_x55 - _x53**2*m
-    _x57 = _x52*_x56
-    _x58 = _x60**3
-    _x59 = ba_omega*m
-    ba_b2 = -_x50*_x57
-    ba_b2__tan = _x60*eps_ba__tan*m + ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return _NAN21 + (STATUS_NO_REAL_SOLUTION,)
-    # eq (104); eq (103), or (111) when constrained
-    _x61 = math.sqrt(ba_b2)
-    _x62 = (0.5)*ba_b2__tan/_x61
-    _x63 = (continuity == 1.0)
-    _x64 = ((1.0) if _x63 else (0.0))
-    ba_b = _x61
-    ba_b__tan = _x62
-    ba_a = ((_x61 + rho_b) if _x63 else (ba_a_free))
-    ba_a__tan = _x62*_x64 + _x64*rho_b__tan + ba_a_free__tan*((0.0) if _x63 else (1.0))
-    # eq (94): the liftoff phase of the second half
-    _c4 = geyer_liftoff_phase_jvp_a_b(ba_a, ba_b, l0, q_r_lo, ba_a__tan, ba_b__tan)
-    if _c4[4] != STATUS_OK:
-        return _NAN21 + (_c4[4],)
-    ba_phase_lo = _c4[0]
-    ba_s_lo = _c4[1]
-    ba_phase_lo__tan = _c4[2]
-    ba_s_lo__tan = _c4[3]
-    # eqs (90)-(94) at liftoff
-    _x65 = (1.0/ba_omega0_hat)
-    _x82 = (1.0/m)
-    _x66 = (1.5)*math.pi
-    _x67 = -_x66 + ba_phase_lo
-    _x68 = _x65**2
-    _x69 = _x65*ba_phase_lo
-    _x70 = _x65*ba_omega
-    _x71 = 3.0*math.pi
-    _x72 = _x69*ba_a
-    _x73 = math.sqrt(1.0 - ba_s_lo**2)
-    _x74 = _x65*_x73*ba_b
-    _x75 = 2.0*ba_omega
-    _x76 = -_x66*_x70 + _x69*ba_omega + _x70*_x71*ba_a - _x75*(_x72 - _x74) + bottom_q_th
-    _x77 = 2.0*_x70
-    _x78 = _x71*ba_a
-    _x79 = _x68*ba_phase_lo
-    _x80 = _x73*_x77*ba_b__tan + ba_a__tan*(3.0*math.pi*_x65*ba_omega - _x69*_x75) + ba_omega0_hat__tan*(-_x68*_x78*ba_omega + (1.5)*math.pi*_x68*ba_omega - _x75*(_x68*_x73*ba_b - _x79*ba_a) - _x79*ba_omega) + ba_omega__tan*(-_x65*_x66 + _x65*_x78 + _x69 - 2.0*_x72 + 2.0*_x74) + ba_phase_lo__tan*(_x65*ba_omega - _x77*ba_a) + bottom_q_th__tan - _x77*ba_b*ba_s_lo*ba_s_lo__tan/_x73
-    _x81 = P_c_decompression + p_b
-    _x83 = q_r_lo**2
-    _x84 = (1.0/_x83)
-    _x85 = _x82*_x84
-    _x86 = _x82*l0**2
-    _x87 = _x82*_x83
-    _x88 = _x82**2*_x84
-    _x89 = k_c - k_d
-    _x90 = (-bottom_q_r + l0)**2
-    _x91 = _x88*(2.0*P_c_decompression + 2.0*p_b)
-    t_stance = _x65*_x67 + t_bottom
-    t_stance__tan = _x65*ba_phase_lo__tan - _x67*_x68*ba_omega0_hat__tan + t_bottom__tan
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x76
-    liftoff_q_th__tan = _x80
-    liftoff_q_thd = _x81*_x85
-    liftoff_q_thd__tan = P_c_decompression__tan*_x85 + _x85*p_b__tan
-    q_rd_lo_sq = -_x81**2*_x88 + 2.0*_x82*k_d*l0*q_r_lo + 2.0*_x82*(E_td - 0.5*_x89*_x90) - _x86*k_d - _x87*k_d - 2.0*g_s*q_r_lo*math.cos(_x76)
-    q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN21 + (STATUS_FALL,)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return _NAN21 + (STATUS_ENERGY_DEFICIT,)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    _x92 = math.sqrt(1.0 - ba_s_lo**2)
-    _x93 = _x92*l0
-    _x94 = _x93*ba_omega0_hat
-    _x95 = (gravity == 0.0)
-    _x96 = math.sqrt(q_rd_lo_sq)
-    liftoff_q_rd = ((_x94*ba_b) if _x95 else (_x96))
-    liftoff_q_rd__tan = ba_b__tan*((_x94) if _x95 else (0.0)) + ba_omega0_hat__tan*((_x93*ba_b) if _x95 else (0.0)) + ba_s_lo__tan*((-ba_b*ba_omega0_hat*ba_s_lo*l0/_x92) if _x95 else (0.0)) + q_rd_lo_sq__tan*((0.0) if _x95 else ((0.5)/_x96))
+    # Total ops: 0
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_bottom__tan = i_t_bottom__tan
+    t_stance = i_t_stance
+    t_stance__tan = i_t_stance__tan
+    bottom_q_r = i_bottom_q_r
+    bottom_q_r__tan = i_bottom_q_r__tan
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_th__tan = i_bottom_q_th__tan
+    bottom_q_thd = i_bottom_q_thd
+    bottom_q_thd__tan = i_bottom_q_thd__tan
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_rd__tan = i_liftoff_q_rd__tan
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_th__tan = i_liftoff_q_th__tan
+    liftoff_q_thd = i_liftoff_q_thd
+    liftoff_q_thd__tan = i_liftoff_q_thd__tan
     # derivatives that are identically zero
     bottom_q_rd__tan = 0.0
     liftoff_q_r__tan = 0.0
@@ -1047,15 +842,27 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
     P_c_decompression__tan = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN26 + (STATUS_NOT_CONVERGED,)
+        # evaluation of the iterate
+        _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
+        if _c0[34] != STATUS_OK:
+            return _NAN26 + (_c0[34],)
+        (i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_omega0_hat__tan, i_ab_a__tan, i_ab_b__tan, i_ab_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_rd, i_bottom_q_th, i_bottom_q_th__tan, i_bottom_q_thd, i_bottom_q_thd__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_b, i_ba_b__tan, i_ba_a, i_ba_a__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_t_stance, i_t_stance__tan, i_liftoff_q_r, i_liftoff_q_th, i_liftoff_q_th__tan, i_liftoff_q_thd, i_liftoff_q_thd__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         # loop body
-        _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
-        if _c0[4] != STATUS_OK:
-            return _NAN26 + (_c0[4],)
-        _next_P_c_compression = _c0[0]
-        _next_P_c_decompression = _c0[1]
-        _next_P_c_compression__tan = _c0[2]
-        _next_P_c_decompression__tan = _c0[3]
+        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, gravity, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
+        if _c1[4] != STATUS_OK:
+            return _NAN26 + (_c1[4],)
+        _next_P_c_compression = _c1[0]
+        _next_P_c_decompression = _c1[1]
+        _next_P_c_compression__tan = _c1[2]
+        _next_P_c_decompression__tan = _c1[3]
         _n0_0 = _next_P_c_compression
         _n0_1 = _next_P_c_decompression
         _n0_2 = _next_P_c_compression__tan
@@ -1068,15 +875,11 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         P_c_compression__tan = _n0_2
         P_c_decompression__tan = _n0_3
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN26 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
-    if _c1[21] != STATUS_OK:
-        return _NAN26 + (_c1[21],)
-    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c1
+    _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_rd, i_bottom_q_th, i_bottom_q_th__tan, i_bottom_q_thd, i_bottom_q_thd__tan, i_liftoff_q_r, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_liftoff_q_thd, i_liftoff_q_thd__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan)
+    if _c2[21] != STATUS_OK:
+        return _NAN26 + (_c2[21],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c2
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
 

@@ -66,7 +66,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 212
+    # Total ops: 153
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN12 + (STATUS_INVALID_INPUT,)
@@ -89,7 +89,12 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     P_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN12 + (STATUS_NOT_CONVERGED,)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
@@ -131,6 +136,8 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN12 + (STATUS_FALL,)
+        if _conv0 or _it0 == _last0:
+            break
         # eq (48) with 2 or 3 samples
         if samples == 2.0:
             _x13 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
@@ -146,67 +153,22 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN12 + (STATUS_NOT_CONVERGED,)
-    # effective touchdown rate
-    f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
-    if _c2[6] != STATUS_OK:
-        return _NAN12 + (_c2[6],)
-    f_omega = _c2[0]
-    f_omega0_hat = _c2[1]
-    f_a = _c2[2]
-    f_b = _c2[3]
-    f_phase_td = _c2[4]
-    f_s_td = _c2[5]
-    _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return _NAN12 + (_c3[2],)
-    f_phase_lo = _c3[0]
-    f_s_lo = _c3[1]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x15 = (1.0/f_omega0_hat)
-    _x16 = f_a + 1.0
-    _x17 = _x16 - f_b
-    _x18 = _x15*f_omega
-    _x19 = _x15*f_phase_td
-    _x20 = _x15*f_b
-    _x21 = 2.0*f_omega
-    _x22 = -_x19*f_omega + _x21*(_x19*f_a + _x20*math.sqrt(1.0 - f_s_td**2)) + q_th_td
-    _x23 = math.sqrt(1.0 - f_s_lo**2)
-    _x24 = _x15*f_phase_lo
-    f_t_bottom = _x15*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x15*(f_phase_lo - f_phase_td)
-    f_bottom_q_r = _x17*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = -3.0*math.pi*_x18*f_a + (1.5)*math.pi*_x18 + _x22
-    f_bottom_q_thd = f_omega/_x17**2
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x23*f_b*f_omega0_hat*l0
-    f_liftoff_q_th = -_x21*(-_x20*_x23 + _x24*f_a) + _x22 + _x24*f_omega
-    f_liftoff_q_thd = f_omega/(_x16 + f_b*f_s_lo)**2
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN12 + (STATUS_FALL,)
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
-    _x25 = (1.0/m)
-    t_bottom = f_t_bottom
-    t_stance = f_t_stance
-    bottom_q_r = f_bottom_q_r
+    _x15 = (1.0/m)
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
     bottom_q_rd = 0.0
-    bottom_q_th = f_bottom_q_th
-    bottom_q_thd = _x25*(P_c*(f_t_bottom*ramp/f_t_stance - ramp + 1.0) + p_td)/f_bottom_q_r**2
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = _x15*(P_c*(i_t_bottom*ramp/i_t_stance - ramp + 1.0) + p_td)/i_bottom_q_r**2
     liftoff_q_r = q_r_lo
-    liftoff_q_th = f_liftoff_q_th
-    liftoff_q_thd = _x25*(P_c + p_td)/q_r_lo**2
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = _x15*(P_c + p_td)/q_r_lo**2
     if reading == 0.0:
-        _x26 = (1.0/m)
-        _x27 = _x26*k
-        _x28 = q_r_lo**2
-        _q_rd_lo_sq = 2.0*E_td*_x26 - _x26**2*(P_c + p_td)**2/_x28 + 2.0*_x26*k*l0*q_r_lo - _x27*_x28 - _x27*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th)
+        _x16 = (1.0/m)
+        _x17 = _x16*k
+        _x18 = q_r_lo**2
+        _q_rd_lo_sq = 2.0*E_td*_x16 - _x16**2*(P_c + p_td)**2/_x18 + 2.0*_x16*k*l0*q_r_lo - _x17*_x18 - _x17*l0**2 - 2.0*g_s*q_r_lo*math.cos(i_liftoff_q_th)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return _NAN12 + (STATUS_ENERGY_DEFICIT,)
@@ -214,7 +176,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)
-        liftoff_q_rd = f_liftoff_q_rd
+        liftoff_q_rd = i_liftoff_q_rd
     else:
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
@@ -278,7 +240,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 181
+    # Total ops: 122
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
@@ -301,7 +263,12 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     P_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
@@ -343,6 +310,8 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN4 + (STATUS_FALL,)
+        if _conv0 or _it0 == _last0:
+            break
         # eq (48) with 2 or 3 samples
         if samples == 2.0:
             _x13 = g_s*m*((0.5)*i_bottom_q_r + (0.5)*l0)
@@ -358,58 +327,13 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN4 + (STATUS_NOT_CONVERGED,)
-    # effective touchdown rate
-    f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
-    if _c2[6] != STATUS_OK:
-        return _NAN4 + (_c2[6],)
-    f_omega = _c2[0]
-    f_omega0_hat = _c2[1]
-    f_a = _c2[2]
-    f_b = _c2[3]
-    f_phase_td = _c2[4]
-    f_s_td = _c2[5]
-    _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return _NAN4 + (_c3[2],)
-    f_phase_lo = _c3[0]
-    f_s_lo = _c3[1]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x15 = (1.0/f_omega0_hat)
-    _x16 = f_a + 1.0
-    _x17 = _x16 - f_b
-    _x18 = _x15*f_omega
-    _x19 = _x15*f_phase_td
-    _x20 = _x15*f_b
-    _x21 = 2.0*f_omega
-    _x22 = -_x19*f_omega + _x21*(_x19*f_a + _x20*math.sqrt(1.0 - f_s_td**2)) + q_th_td
-    _x23 = math.sqrt(1.0 - f_s_lo**2)
-    _x24 = _x15*f_phase_lo
-    f_t_bottom = _x15*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x15*(f_phase_lo - f_phase_td)
-    f_bottom_q_r = _x17*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = -3.0*math.pi*_x18*f_a + (1.5)*math.pi*_x18 + _x22
-    f_bottom_q_thd = f_omega/_x17**2
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x23*f_b*f_omega0_hat*l0
-    f_liftoff_q_th = -_x21*(-_x20*_x23 + _x24*f_a) + _x22 + _x24*f_omega
-    f_liftoff_q_thd = f_omega/(_x16 + f_b*f_s_lo)**2
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN4 + (STATUS_FALL,)
-    phase_t = f_omega0_hat*t + f_phase_td
-    _c4 = geyer_state(phase_t, f_phase_td, q_th_td, f_omega, f_omega0_hat, f_a, f_b, l0)
-    q_r = _c4[0]
-    q_rd = _c4[1]
-    q_th = _c4[2]
+    phase_t = i_omega0_hat*t + i_phase_td
+    _c2 = geyer_state(phase_t, i_phase_td, q_th_td, i_omega, i_omega0_hat, i_a, i_b, l0)
+    q_r = _c2[0]
+    q_rd = _c2[1]
+    q_th = _c2[2]
     # the momentum at t
-    q_thd = (P_c*(-ramp + 1.0 + ramp*t/f_t_stance) + p_td)/(m*q_r**2)
+    q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return _NAN4 + (STATUS_NUMERICAL_RANGE,)

@@ -23,6 +23,7 @@ from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERIC
 
 NAN = math.nan
 _NAN2 = (NAN,) * 2
+_NAN12 = (NAN,) * 12
 _NAN21 = (NAN,) * 21
 _NAN22 = (NAN,) * 22
 _NAN24 = (NAN,) * 24
@@ -71,94 +72,8 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1():
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
-    """branch interval = 0 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new: result for the caller
-        i_P_new__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 28
-    _x0 = g_s*m
-    _x1 = _x0*q_r_lo
-    _x2 = _x1*math.sin(i_liftoff_q_th)
-    _x3 = _x0*math.sin(q_th_td)
-    _x4 = _x3*q_r_td
-    _x5 = (0.5)*i_t_stance
-    i_P_new = _x5*(_x2 + _x4)
-    i_P_new__tan = _x0*_x5*q_r_td*q_th_td__tan*math.cos(q_th_td) + _x1*_x5*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x3*_x5*q_r_td__tan + i_t_stance__tan*((0.5)*_x2 + (0.5)*_x4)
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, i_P_new__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
-    """branch interval = 1 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_bottom_q_r: value of the caller's variable
-        i_bottom_q_r__tan: value of the caller's variable
-        i_bottom_q_th: value of the caller's variable
-        i_bottom_q_th__tan: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_bottom: value of the caller's variable
-        i_t_bottom__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new: result for the caller
-        i_P_new__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 57
-    _x0 = g_s*m
-    _x1 = _x0*math.sin(i_bottom_q_th)
-    _x2 = _x1*i_bottom_q_r
-    _x3 = math.sin(q_th_td)
-    _x4 = _x0*_x3
-    _x5 = (0.5)*i_t_bottom
-    _x6 = _x0*q_r_lo
-    _x7 = _x6*math.sin(i_liftoff_q_th)
-    _x8 = -0.5*i_t_bottom + (0.5)*i_t_stance
-    _x9 = _x0*_x5
-    _x10 = (0.5)*_x7
-    _x11 = i_bottom_q_r*math.cos(i_bottom_q_th)
-    i_P_new = _x5*(_x2 + _x4*q_r_td) + _x8*(_x2 + _x7)
-    i_P_new__tan = _x4*_x5*q_r_td__tan + _x6*_x8*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x9*q_r_td*q_th_td__tan*math.cos(q_th_td) + i_bottom_q_r__tan*(_x1*_x5 + _x1*_x8) + i_bottom_q_th__tan*(_x0*_x11*_x8 + _x11*_x9) + i_t_bottom__tan*(-_x10 + (0.5)*_x3*g_s*m*q_r_td) + i_t_stance__tan*(_x10 + (0.5)*_x2)
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, i_P_new__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, g_s, interval, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, share):
-    """loop body of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, share):
+    """evaluation of the iterate of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -166,7 +81,6 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, 
         P_c: value of the caller's variable
         P_c__tan: value of the caller's variable
         g_s: value of the caller's variable
-        interval: value of the caller's variable
         k: value of the caller's variable
         k__tan: value of the caller's variable
         l0: value of the caller's variable
@@ -183,8 +97,18 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, 
         share: value of the caller's variable
 
     Returns a tuple:
-        _next_P_c: result for the caller
-        _next_P_c__tan: result for the caller
+        i_t_bottom: result for the caller
+        i_t_bottom__tan: result for the caller
+        i_t_stance: result for the caller
+        i_t_stance__tan: result for the caller
+        i_bottom_q_r: result for the caller
+        i_bottom_q_r__tan: result for the caller
+        i_bottom_q_th: result for the caller
+        i_bottom_q_th__tan: result for the caller
+        i_liftoff_q_rd: result for the caller
+        i_liftoff_q_rd__tan: result for the caller
+        i_liftoff_q_th: result for the caller
+        i_liftoff_q_th__tan: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 194
@@ -198,11 +122,11 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, 
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k__tan)
     if _c0[12] != STATUS_OK:
-        return _NAN2 + (_c0[12],)
+        return _NAN12 + (_c0[12],)
     (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, i_omega__tan, i_omega0_hat__tan, i_a__tan, i_b__tan, i_phase_td__tan, i_s_td__tan, _) = _c0
     _c1 = geyer_liftoff_phase_jvp_a_b(i_a, i_b, l0, q_r_lo, i_a__tan, i_b__tan)
     if _c1[4] != STATUS_OK:
-        return _NAN2 + (_c1[4],)
+        return _NAN12 + (_c1[4],)
     i_phase_lo = _c1[0]
     i_s_lo = _c1[1]
     i_phase_lo__tan = _c1[2]
@@ -274,22 +198,144 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, 
     i_liftoff_q_thd__tan = _x46*i_omega__tan - _x47*i_a__tan - _x47*i_b*i_s_lo__tan - _x47*i_b__tan*i_s_lo
     # the leg stays above horizontal
     if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN2 + (STATUS_FALL,)
+        return _NAN12 + (STATUS_FALL,)
+    # (internal helper: its callers check that their outputs are finite)
+    return (i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
+    """branch interval = 0 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
+
+    Report equations: .
+
+    Arguments:
+        g_s: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
+        m: value of the caller's variable
+        q_r_lo: value of the caller's variable
+        q_r_td: value of the caller's variable
+        q_r_td__tan: value of the caller's variable
+        q_th_td: value of the caller's variable
+        q_th_td__tan: value of the caller's variable
+
+    Returns a tuple:
+        i_P_new: result for the caller
+        i_P_new__tan: result for the caller
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 28
+    _x0 = g_s*m
+    _x1 = _x0*q_r_lo
+    _x2 = _x1*math.sin(i_liftoff_q_th)
+    _x3 = _x0*math.sin(q_th_td)
+    _x4 = _x3*q_r_td
+    _x5 = (0.5)*i_t_stance
+    i_P_new = _x5*(_x2 + _x4)
+    i_P_new__tan = _x0*_x5*q_r_td*q_th_td__tan*math.cos(q_th_td) + _x1*_x5*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x3*_x5*q_r_td__tan + i_t_stance__tan*((0.5)*_x2 + (0.5)*_x4)
+    # (internal helper: its callers check that their outputs are finite)
+    return (i_P_new, i_P_new__tan, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
+    """branch interval = 1 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
+
+    Report equations: .
+
+    Arguments:
+        g_s: value of the caller's variable
+        i_bottom_q_r: value of the caller's variable
+        i_bottom_q_r__tan: value of the caller's variable
+        i_bottom_q_th: value of the caller's variable
+        i_bottom_q_th__tan: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
+        m: value of the caller's variable
+        q_r_lo: value of the caller's variable
+        q_r_td: value of the caller's variable
+        q_r_td__tan: value of the caller's variable
+        q_th_td: value of the caller's variable
+        q_th_td__tan: value of the caller's variable
+
+    Returns a tuple:
+        i_P_new: result for the caller
+        i_P_new__tan: result for the caller
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 57
+    _x0 = g_s*m
+    _x1 = _x0*math.sin(i_bottom_q_th)
+    _x2 = _x1*i_bottom_q_r
+    _x3 = math.sin(q_th_td)
+    _x4 = _x0*_x3
+    _x5 = (0.5)*i_t_bottom
+    _x6 = _x0*q_r_lo
+    _x7 = _x6*math.sin(i_liftoff_q_th)
+    _x8 = -0.5*i_t_bottom + (0.5)*i_t_stance
+    _x9 = _x0*_x5
+    _x10 = (0.5)*_x7
+    _x11 = i_bottom_q_r*math.cos(i_bottom_q_th)
+    i_P_new = _x5*(_x2 + _x4*q_r_td) + _x8*(_x2 + _x7)
+    i_P_new__tan = _x4*_x5*q_r_td__tan + _x6*_x8*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x9*q_r_td*q_th_td__tan*math.cos(q_th_td) + i_bottom_q_r__tan*(_x1*_x5 + _x1*_x8) + i_bottom_q_th__tan*(_x0*_x11*_x8 + _x11*_x9) + i_t_bottom__tan*(-_x10 + (0.5)*_x3*g_s*m*q_r_td) + i_t_stance__tan*(_x10 + (0.5)*_x2)
+    # (internal helper: its callers check that their outputs are finite)
+    return (i_P_new, i_P_new__tan, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, interval, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
+    """loop body of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
+
+    Report equations: .
+
+    Arguments:
+        g_s: value of the caller's variable
+        i_bottom_q_r: value of the caller's variable
+        i_bottom_q_r__tan: value of the caller's variable
+        i_bottom_q_th: value of the caller's variable
+        i_bottom_q_th__tan: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
+        interval: value of the caller's variable
+        m: value of the caller's variable
+        q_r_lo: value of the caller's variable
+        q_r_td: value of the caller's variable
+        q_r_td__tan: value of the caller's variable
+        q_th_td: value of the caller's variable
+        q_th_td__tan: value of the caller's variable
+
+    Returns a tuple:
+        _next_P_c: result for the caller
+        _next_P_c__tan: result for the caller
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
     # eq (65)
     if interval == 0.0:
         # branch interval = 0
-        _c2 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
-        if _c2[2] != STATUS_OK:
-            return _NAN2 + (_c2[2],)
-        i_P_new = _c2[0]
-        i_P_new__tan = _c2[1]
+        _c0 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
+        if _c0[2] != STATUS_OK:
+            return _NAN2 + (_c0[2],)
+        i_P_new = _c0[0]
+        i_P_new__tan = _c0[1]
     elif interval == 1.0:
         # branch interval = 1
-        _c3 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
-        if _c3[2] != STATUS_OK:
-            return _NAN2 + (_c3[2],)
-        i_P_new = _c3[0]
-        i_P_new__tan = _c3[1]
+        _c1 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
+        if _c1[2] != STATUS_OK:
+            return _NAN2 + (_c1[2],)
+        i_P_new = _c1[0]
+        i_P_new__tan = _c1[1]
     else:
         return _NAN2 + (STATUS_INVALID_INPUT,)
     # next values
@@ -300,7 +346,7 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, 
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan, P_c, P_c__tan, f_liftoff_q_th, f_liftoff_q_th__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo):
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(E_td, E_td__tan, P_c, P_c__tan, g_s, i_liftoff_q_th, i_liftoff_q_th__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo):
     """branch reading = 0 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
@@ -310,9 +356,9 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan
         E_td__tan: value of the caller's variable
         P_c: value of the caller's variable
         P_c__tan: value of the caller's variable
-        f_liftoff_q_th: value of the caller's variable
-        f_liftoff_q_th__tan: value of the caller's variable
         g_s: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
         k: value of the caller's variable
         k__tan: value of the caller's variable
         l0: value of the caller's variable
@@ -334,8 +380,8 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan
     _x4 = _x0*_x3
     _x5 = _x0**2/_x3
     _x6 = _x5*(2.0*P_c + 2.0*p_td)
-    _q_rd_lo_sq = 2.0*E_td*_x0 + 2.0*_x0*k*l0*q_r_lo - _x1*math.cos(f_liftoff_q_th) - _x2*k - _x4*k - _x5*(P_c + p_td)**2
-    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x0 - P_c__tan*_x6 + _x1*f_liftoff_q_th__tan*math.sin(f_liftoff_q_th) - _x6*p_td__tan + k__tan*(2.0*_x0*l0*q_r_lo - _x2 - _x4)
+    _q_rd_lo_sq = 2.0*E_td*_x0 + 2.0*_x0*k*l0*q_r_lo - _x1*math.cos(i_liftoff_q_th) - _x2*k - _x4*k - _x5*(P_c + p_td)**2
+    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x0 - P_c__tan*_x6 + _x1*i_liftoff_q_th__tan*math.sin(i_liftoff_q_th) - _x6*p_td__tan + k__tan*(2.0*_x0*l0*q_r_lo - _x2 - _x4)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN2 + (STATUS_ENERGY_DEFICIT,)
@@ -348,14 +394,14 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(f_liftoff_q_rd, f_liftoff_q_rd__tan):
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(i_liftoff_q_rd, i_liftoff_q_rd__tan):
     """branch reading = 1 of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
 
     Arguments:
-        f_liftoff_q_rd: value of the caller's variable
-        f_liftoff_q_rd__tan: value of the caller's variable
+        i_liftoff_q_rd: value of the caller's variable
+        i_liftoff_q_rd__tan: value of the caller's variable
 
     Returns a tuple:
         liftoff_q_rd: result for the caller
@@ -364,14 +410,14 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(f_liftoff_q_rd,
     """
     # Total ops: 0
     # from (11)
-    liftoff_q_rd = f_liftoff_q_rd
-    liftoff_q_rd__tan = f_liftoff_q_rd__tan
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_rd__tan = i_liftoff_q_rd__tan
     # (internal helper: its callers check that their outputs are finite)
     return (liftoff_q_rd, liftoff_q_rd__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan, P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, ramp, reading, share):
+def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_8(E_td, E_td__tan, P_c, P_c__tan, g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, ramp, reading):
     """continuation of gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
@@ -382,6 +428,18 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan
         P_c: value of the caller's variable
         P_c__tan: value of the caller's variable
         g_s: value of the caller's variable
+        i_bottom_q_r: value of the caller's variable
+        i_bottom_q_r__tan: value of the caller's variable
+        i_bottom_q_th: value of the caller's variable
+        i_bottom_q_th__tan: value of the caller's variable
+        i_liftoff_q_rd: value of the caller's variable
+        i_liftoff_q_rd__tan: value of the caller's variable
+        i_liftoff_q_th: value of the caller's variable
+        i_liftoff_q_th__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
         k: value of the caller's variable
         k__tan: value of the caller's variable
         l0: value of the caller's variable
@@ -389,15 +447,8 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan
         p_td: value of the caller's variable
         p_td__tan: value of the caller's variable
         q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
         ramp: value of the caller's variable
         reading: value of the caller's variable
-        share: value of the caller's variable
 
     Returns a tuple:
         t_bottom: result for the caller
@@ -423,134 +474,47 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan
         passes__tan: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 233
-    # effective touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = P_c*share + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    f_q_thd_eff = _x0*_x2
-    f_q_thd_eff__tan = P_c__tan*_x2*share - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, f_q_thd_eff__tan, k__tan)
-    if _c0[12] != STATUS_OK:
-        return _NAN21 + (_c0[12],)
-    (f_omega, f_omega0_hat, f_a, f_b, f_phase_td, f_s_td, f_omega__tan, f_omega0_hat__tan, f_a__tan, f_b__tan, f_phase_td__tan, f_s_td__tan, _) = _c0
-    _c1 = geyer_liftoff_phase_jvp_a_b(f_a, f_b, l0, q_r_lo, f_a__tan, f_b__tan)
-    if _c1[4] != STATUS_OK:
-        return _NAN21 + (_c1[4],)
-    f_phase_lo = _c1[0]
-    f_s_lo = _c1[1]
-    f_phase_lo__tan = _c1[2]
-    f_s_lo__tan = _c1[3]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x4 = (1.0/f_omega0_hat)
-    _x5 = -f_phase_td + (1.5)*math.pi
-    _x6 = _x4*f_phase_td__tan
-    _x7 = _x4**2
-    _x8 = _x7*f_omega0_hat__tan
-    _x9 = f_phase_lo - f_phase_td
-    _x10 = f_a + 1.0
-    _x11 = _x10 - f_b
-    _x48 = (1.0/_x11)
-    _x12 = f_b__tan*l0
-    _x13 = (1.5)*math.pi
-    _x14 = _x4*f_omega
-    _x15 = 3.0*math.pi
-    _x16 = _x14*_x15
-    _x17 = _x4*f_phase_td
-    _x18 = _x17*f_a
-    _x19 = math.sqrt(1.0 - f_s_td**2)
-    _x20 = _x19*f_b
-    _x21 = _x20*_x4
-    _x22 = 2.0*f_omega
-    _x23 = -_x17*f_omega + _x22*(_x18 + _x21) + q_th_td
-    _x24 = _x7*f_phase_td
-    _x25 = _x7*f_omega
-    _x26 = _x15*f_a
-    _x27 = -_x20*_x7 - _x24*f_a
-    _x28 = -_x17 + 2.0*_x18 + 2.0*_x21
-    _x29 = 2.0*_x14
-    _x30 = _x19*_x29
-    _x31 = -_x14 + _x29*f_a
-    _x32 = _x31*f_phase_td__tan + q_th_td__tan - _x29*f_b*f_s_td*f_s_td__tan/_x19
-    _x33 = _x48**2
-    _x34 = _x22*_x48**3
-    _x35 = math.sqrt(1.0 - f_s_lo**2)
-    _x36 = _x35*f_b
-    _x37 = _x36*l0
-    _x38 = f_b*f_s_lo
-    _x39 = _x38*f_s_lo__tan/_x35
-    _x40 = _x4*f_phase_lo
-    _x41 = _x40*f_a
-    _x42 = _x36*_x4
-    _x43 = _x14*f_phase_lo
-    _x44 = _x7*f_phase_lo
-    _x45 = _x10 + _x38
-    _x49 = (1.0/_x45)
-    _x46 = _x49**2
-    _x47 = _x22*_x49**3
-    f_t_bottom = _x4*_x5
-    f_t_bottom__tan = -_x5*_x8 - _x6
-    f_t_stance = _x4*_x9
-    f_t_stance__tan = _x4*f_phase_lo__tan - _x6 - _x8*_x9
-    f_bottom_q_r = _x11*l0
-    f_bottom_q_r__tan = -_x12 + f_a__tan*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = _x13*_x14 - _x16*f_a + _x23
-    f_bottom_q_th__tan = _x30*f_b__tan + _x32 + f_a__tan*(-_x16 + _x17*_x22) + f_omega0_hat__tan*(-_x13*_x25 + _x22*_x27 + _x24*f_omega + _x25*_x26) + f_omega__tan*(_x13*_x4 - _x26*_x4 + _x28)
-    f_bottom_q_thd = _x33*f_omega
-    f_bottom_q_thd__tan = _x33*f_omega__tan - _x34*f_a__tan + _x34*f_b__tan
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x37*f_omega0_hat
-    f_liftoff_q_rd__tan = _x12*_x35*f_omega0_hat + _x37*f_omega0_hat__tan - _x39*f_omega0_hat*l0
-    f_liftoff_q_th = -_x22*(_x41 - _x42) + _x23 + _x43
-    f_liftoff_q_th__tan = -_x29*_x39 - _x31*f_phase_lo__tan + _x32 + f_a__tan*(2.0*_x4*f_omega*f_phase_td - 2.0*_x43) + f_b__tan*(_x29*_x35 + _x30) + f_omega0_hat__tan*(-_x22*(_x35*_x7*f_b - _x44*f_a) + 2.0*_x27*f_omega - _x44*f_omega + _x7*f_omega*f_phase_td) + f_omega__tan*(_x28 + _x40 - 2.0*_x41 + 2.0*_x42)
-    f_liftoff_q_thd = _x46*f_omega
-    f_liftoff_q_thd__tan = _x46*f_omega__tan - _x47*f_a__tan - _x47*f_b*f_s_lo__tan - _x47*f_b__tan*f_s_lo
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN21 + (STATUS_FALL,)
+    # Total ops: 39
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
-    _x57 = (1.0/f_bottom_q_r)
-    _x58 = (1.0/f_t_stance)
-    _x50 = _x58*ramp
-    _x51 = _x50*f_t_bottom - ramp + 1.0
-    _x52 = P_c*_x51 + p_td
-    _x53 = (1.0/m)
-    _x54 = _x53*_x57**2
-    _x55 = P_c*_x54
-    _x56 = _x53/q_r_lo**2
-    t_bottom = f_t_bottom
-    t_bottom__tan = f_t_bottom__tan
-    t_stance = f_t_stance
-    t_stance__tan = f_t_stance__tan
-    bottom_q_r = f_bottom_q_r
-    bottom_q_r__tan = f_bottom_q_r__tan
+    _x7 = (1.0/i_bottom_q_r)
+    _x8 = (1.0/i_t_stance)
+    _x0 = _x8*ramp
+    _x1 = _x0*i_t_bottom - ramp + 1.0
+    _x2 = P_c*_x1 + p_td
+    _x3 = (1.0/m)
+    _x4 = _x3*_x7**2
+    _x5 = P_c*_x4
+    _x6 = _x3/q_r_lo**2
+    t_bottom = i_t_bottom
+    t_bottom__tan = i_t_bottom__tan
+    t_stance = i_t_stance
+    t_stance__tan = i_t_stance__tan
+    bottom_q_r = i_bottom_q_r
+    bottom_q_r__tan = i_bottom_q_r__tan
     bottom_q_rd = 0.0
-    bottom_q_th = f_bottom_q_th
-    bottom_q_th__tan = f_bottom_q_th__tan
-    bottom_q_thd = _x52*_x54
-    bottom_q_thd__tan = P_c__tan*_x51*_x54 + _x50*_x55*f_t_bottom__tan - 2.0*_x52*_x53*_x57**3*f_bottom_q_r__tan + _x54*p_td__tan - _x55*_x58**2*f_t_bottom*f_t_stance__tan*ramp
+    bottom_q_th = i_bottom_q_th
+    bottom_q_th__tan = i_bottom_q_th__tan
+    bottom_q_thd = _x2*_x4
+    bottom_q_thd__tan = P_c__tan*_x1*_x4 + _x0*_x5*i_t_bottom__tan - 2.0*_x2*_x3*_x7**3*i_bottom_q_r__tan + _x4*p_td__tan - _x5*_x8**2*i_t_bottom*i_t_stance__tan*ramp
     liftoff_q_r = q_r_lo
-    liftoff_q_th = f_liftoff_q_th
-    liftoff_q_th__tan = f_liftoff_q_th__tan
-    liftoff_q_thd = _x56*(P_c + p_td)
-    liftoff_q_thd__tan = P_c__tan*_x56 + _x56*p_td__tan
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_th__tan = i_liftoff_q_th__tan
+    liftoff_q_thd = _x6*(P_c + p_td)
+    liftoff_q_thd__tan = P_c__tan*_x6 + _x6*p_td__tan
     if reading == 0.0:
         # branch reading = 0
-        _c2 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan, P_c, P_c__tan, f_liftoff_q_th, f_liftoff_q_th__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo)
-        if _c2[2] != STATUS_OK:
-            return _NAN21 + (_c2[2],)
-        liftoff_q_rd = _c2[0]
-        liftoff_q_rd__tan = _c2[1]
+        _c0 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(E_td, E_td__tan, P_c, P_c__tan, g_s, i_liftoff_q_th, i_liftoff_q_th__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo)
+        if _c0[2] != STATUS_OK:
+            return _NAN21 + (_c0[2],)
+        liftoff_q_rd = _c0[0]
+        liftoff_q_rd__tan = _c0[1]
     elif reading == 1.0:
         # branch reading = 1
-        _c3 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(f_liftoff_q_rd, f_liftoff_q_rd__tan)
-        if _c3[2] != STATUS_OK:
-            return _NAN21 + (_c3[2],)
-        liftoff_q_rd = _c3[0]
-        liftoff_q_rd__tan = _c3[1]
+        _c1 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(i_liftoff_q_rd, i_liftoff_q_rd__tan)
+        if _c1[2] != STATUS_OK:
+            return _NAN21 + (_c1[2],)
+        liftoff_q_rd = _c1[0]
+        liftoff_q_rd__tan = _c1[1]
     else:
         return _NAN21 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero
@@ -657,13 +621,25 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
     P_c__tan = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN24 + (STATUS_NOT_CONVERGED,)
+        # evaluation of the iterate
+        _c2 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, share)
+        if _c2[12] != STATUS_OK:
+            return _NAN24 + (_c2[12],)
+        (i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, _) = _c2
+        if _conv0 or _it0 == _last0:
+            break
         # loop body
-        _c2 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, g_s, interval, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, share)
-        if _c2[2] != STATUS_OK:
-            return _NAN24 + (_c2[2],)
-        _next_P_c = _c2[0]
-        _next_P_c__tan = _c2[1]
+        _c3 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, interval, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
+        if _c3[2] != STATUS_OK:
+            return _NAN24 + (_c3[2],)
+        _next_P_c = _c3[0]
+        _next_P_c__tan = _c3[1]
         _n0_0 = _next_P_c
         _n0_1 = _next_P_c__tan
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -672,15 +648,11 @@ def gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         P_c = _n0_0
         P_c__tan = _n0_1
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN24 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c3 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan, P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, ramp, reading, share)
-    if _c3[21] != STATUS_OK:
-        return _NAN24 + (_c3[21],)
-    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c3
+    _c4 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_8(E_td, E_td__tan, P_c, P_c__tan, g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_rd, i_liftoff_q_rd__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, ramp, reading)
+    if _c4[21] != STATUS_OK:
+        return _NAN24 + (_c4[21],)
+    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, _) = _c4
     # (internal helper: its callers check that their outputs are finite)
     return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
 

@@ -191,7 +191,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 385
+    # Total ops: 238
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN12 + (STATUS_INVALID_INPUT,)
@@ -210,7 +210,12 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     r_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN12 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
@@ -263,6 +268,8 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
         i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = i_tau1
         _n0_1 = i_tau2
         _n0_2 = i_tau3
@@ -279,87 +286,31 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN12 + (STATUS_NOT_CONVERGED,)
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x20 = (1.0/T)
-    _x18 = math.sqrt(15.0)
-    _x19 = _x18*tau1
-    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
-    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
-    # T5.3: omega of the stance-mean momentum
-    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
-    # T5.4-T5.5: radial solution
-    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[5] != STATUS_OK:
-        return _NAN12 + (_c5[5],)
-    f_omega0_hat = _c5[0]
-    f_a = _c5[1]
-    f_b = _c5[2]
-    f_phase_td = _c5[3]
-    f_s_td = _c5[4]
-    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c6[2] != STATUS_OK:
-        return _NAN12 + (_c6[2],)
-    f_phase_lo = _c6[0]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x21 = (1.0/f_omega0_hat)
-    _x22 = r_c**4
-    _x23 = r_c**3
-    _x24 = r_c**2
-    _x25 = 4.0*r_c + 1.0
-    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
-    _x27 = 3.0*f_b**2
-    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
-    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x21*(f_phase_lo - f_phase_td)
-    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
-    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
-    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
-    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th1 = _c7
-    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th2 = _c8
-    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th3 = _c9
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x29 = (0.2)*math.sqrt(15.0)
-    _x30 = (0.5)*f_omega0_hat*f_t_stance
-    _x31 = f_a + 1.0
-    _x32 = g_s*l0*m
-    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
-    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
-    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
-    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
-    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
-    _c10 = type5_leg_angle(f_t_bottom, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    bottom_q_th = _c10
-    _c11 = type5_leg_angle(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    liftoff_q_th = _c11
+    _c5 = type5_leg_angle(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    bottom_q_th = _c5
+    _c6 = type5_leg_angle(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    liftoff_q_th = _c6
     # T5.7: bottom and liftoff states
-    _x33 = f_a - f_b + 1.0
-    _x34 = (1.0/m)
-    _x35 = (0.5)*f_c1
-    _x36 = (0.3333333333333333)*f_c2
-    _x37 = _x35*f_t_stance**2 + _x36*f_t_stance**3 + f_c0*f_t_stance
-    t_bottom = f_t_bottom
-    t_stance = f_t_stance
-    bottom_q_r = _x33*l0
+    _x18 = i_a - i_b + 1.0
+    _x19 = (1.0/m)
+    _x20 = (0.5)*i_c1
+    _x21 = (0.3333333333333333)*i_c2
+    _x22 = _x20*i_t_stance**2 + _x21*i_t_stance**3 + i_c0*i_t_stance
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = _x18*l0
     bottom_q_rd = 0.0
-    bottom_q_thd = _x34*(_x35*f_t_bottom**2 + _x36*f_t_bottom**3 + f_c0*f_t_bottom + p_td)/(_x33**2*l0**2)
+    bottom_q_thd = _x19*(_x20*i_t_bottom**2 + _x21*i_t_bottom**3 + i_c0*i_t_bottom + p_td)/(_x18**2*l0**2)
     liftoff_q_r = q_r_lo
-    P_c = _x37
-    liftoff_q_thd = _x34*(_x37 + p_td)/q_r_lo**2
+    P_c = _x22
+    liftoff_q_thd = _x19*(_x22 + p_td)/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN12 + (STATUS_FALL,)
-    _x38 = (1.0/m)
-    _x39 = _x38*k
-    _x40 = q_r_lo**2
-    _q_rd_lo_sq = 2.0*E_td*_x38 - _x38**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+    _x23 = (1.0/m)
+    _x24 = _x23*k
+    _x25 = q_r_lo**2
+    _q_rd_lo_sq = 2.0*E_td*_x23 - _x23**2*(i_c0*i_t_stance + (0.5)*i_c1*i_t_stance**2 + (0.3333333333333333)*i_c2*i_t_stance**3 + p_td)**2/_x25 + 2.0*_x23*k*l0*q_r_lo - _x24*_x25 - _x24*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN12 + (STATUS_ENERGY_DEFICIT,)
@@ -424,7 +375,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 344
+    # Total ops: 197
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
@@ -443,7 +394,12 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     r_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
@@ -496,6 +452,8 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
         i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = i_tau1
         _n0_1 = i_tau2
         _n0_2 = i_tau3
@@ -512,70 +470,14 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN4 + (STATUS_NOT_CONVERGED,)
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x20 = (1.0/T)
-    _x18 = math.sqrt(15.0)
-    _x19 = _x18*tau1
-    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
-    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
-    # T5.3: omega of the stance-mean momentum
-    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
-    # T5.4-T5.5: radial solution
-    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[5] != STATUS_OK:
-        return _NAN4 + (_c5[5],)
-    f_omega0_hat = _c5[0]
-    f_a = _c5[1]
-    f_b = _c5[2]
-    f_phase_td = _c5[3]
-    f_s_td = _c5[4]
-    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c6[2] != STATUS_OK:
-        return _NAN4 + (_c6[2],)
-    f_phase_lo = _c6[0]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x21 = (1.0/f_omega0_hat)
-    _x22 = r_c**4
-    _x23 = r_c**3
-    _x24 = r_c**2
-    _x25 = 4.0*r_c + 1.0
-    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
-    _x27 = 3.0*f_b**2
-    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
-    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x21*(f_phase_lo - f_phase_td)
-    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
-    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
-    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
-    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th1 = _c7
-    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th2 = _c8
-    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th3 = _c9
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x29 = (0.2)*math.sqrt(15.0)
-    _x30 = (0.5)*f_omega0_hat*f_t_stance
-    _x31 = f_a + 1.0
-    _x32 = g_s*l0*m
-    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
-    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
-    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
-    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
-    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
-    _c10 = type5_leg_angle(t, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    q_th = _c10
+    _c5 = type5_leg_angle(t, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    q_th = _c5
     # (11) with T5.5, T5.2
-    _x33 = f_omega0_hat*t + f_phase_td
-    _x34 = f_a + f_b*math.sin(_x33) + 1.0
-    q_r = _x34*l0
-    q_rd = f_b*f_omega0_hat*l0*math.cos(_x33)
-    q_thd = (f_c0*t + (0.5)*f_c1*t**2 + (0.3333333333333333)*f_c2*t**3 + p_td)/(_x34**2*l0**2*m)
+    _x18 = i_omega0_hat*t + i_phase_td
+    _x19 = i_a + i_b*math.sin(_x18) + 1.0
+    q_r = _x19*l0
+    q_rd = i_b*i_omega0_hat*l0*math.cos(_x18)
+    q_thd = (i_c0*t + (0.5)*i_c1*t**2 + (0.3333333333333333)*i_c2*t**3 + p_td)/(_x19**2*l0**2*m)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return _NAN4 + (STATUS_NUMERICAL_RANGE,)

@@ -23,10 +23,10 @@ from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRE
 
 NAN = math.nan
 _NAN10 = (NAN,) * 10
-_NAN12 = (NAN,) * 12
 _NAN22 = (NAN,) * 22
 _NAN23 = (NAN,) * 23
 _NAN24 = (NAN,) * 24
+_NAN36 = (NAN,) * 36
 _NAN55 = (NAN,) * 55
 _NAN72 = (NAN,) * 72
 
@@ -303,7 +303,7 @@ def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
 
 @njit(cache=True, error_model="numpy")
 def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan):
-    """loop body of gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
+    """evaluation and update of gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -336,6 +336,30 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_ef
         tau3__tan: value of the caller's variable
 
     Returns a tuple:
+        i_c0: result for the caller
+        i_c0__tan: result for the caller
+        i_c1: result for the caller
+        i_c1__tan: result for the caller
+        i_c2: result for the caller
+        i_c2__tan: result for the caller
+        i_omega0_hat: result for the caller
+        i_a: result for the caller
+        i_b: result for the caller
+        i_phase_td: result for the caller
+        i_omega0_hat__tan: result for the caller
+        i_a__tan: result for the caller
+        i_b__tan: result for the caller
+        i_phase_td__tan: result for the caller
+        i_t_bottom: result for the caller
+        i_t_bottom__tan: result for the caller
+        i_t_stance: result for the caller
+        i_t_stance__tan: result for the caller
+        i_k0: result for the caller
+        i_k0__tan: result for the caller
+        i_k1: result for the caller
+        i_k1__tan: result for the caller
+        i_k2: result for the caller
+        i_k2__tan: result for the caller
         _next_tau1: result for the caller
         _next_tau2: result for the caller
         _next_tau3: result for the caller
@@ -378,11 +402,11 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_ef
     # T5.4-T5.5: radial solution
     _c0 = type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k, q_r_td__tan, q_rd_td__tan, i_omega__tan, g_eff__tan, r_c__tan, k__tan)
     if _c0[10] != STATUS_OK:
-        return _NAN12 + (_c0[10],)
+        return _NAN36 + (_c0[10],)
     (i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, i_omega0_hat__tan, i_a__tan, i_b__tan, i_phase_td__tan, i_s_td__tan, _) = _c0
     _c1 = geyer_liftoff_phase_jvp_a_b(i_a, i_b, l0, q_r_lo, i_a__tan, i_b__tan)
     if _c1[4] != STATUS_OK:
-        return _NAN12 + (_c1[4],)
+        return _NAN36 + (_c1[4],)
     i_phase_lo = _c1[0]
     i_phase_lo__tan = _c1[2]
     # eqs (13)-(14) minus (12); T5.6: the rate factor
@@ -498,11 +522,11 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_ef
     _next_g_eff__tan = i_g_eff__tan
     _next_r_c__tan = i_r_c__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_tau1, _next_tau2, _next_tau3, _next_T, _next_g_eff, _next_r_c, _next_tau1__tan, _next_tau2__tan, _next_tau3__tan, _next_T__tan, _next_g_eff__tan, _next_r_c__tan, STATUS_OK)
+    return (i_c0, i_c0__tan, i_c1, i_c1__tan, i_c2, i_c2__tan, i_omega0_hat, i_a, i_b, i_phase_td, i_omega0_hat__tan, i_a__tan, i_b__tan, i_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, i_k0, i_k0__tan, i_k1, i_k1__tan, i_k2, i_k2__tan, _next_tau1, _next_tau2, _next_tau3, _next_T, _next_g_eff, _next_r_c, _next_tau1__tan, _next_tau2__tan, _next_tau3__tan, _next_T__tan, _next_g_eff__tan, _next_r_c__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan):
+def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, g_s, i_a, i_a__tan, i_b, i_b__tan, i_c0, i_c0__tan, i_c1, i_c1__tan, i_c2, i_c2__tan, i_k0, i_k0__tan, i_k1, i_k1__tan, i_k2, i_k2__tan, i_omega0_hat, i_omega0_hat__tan, i_phase_td, i_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_th_td, q_th_td__tan):
     """continuation of gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
 
     Report equations: .
@@ -510,11 +534,31 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan
     Arguments:
         E_td: value of the caller's variable
         E_td__tan: value of the caller's variable
-        T: value of the caller's variable
-        T__tan: value of the caller's variable
-        g_eff: value of the caller's variable
-        g_eff__tan: value of the caller's variable
         g_s: value of the caller's variable
+        i_a: value of the caller's variable
+        i_a__tan: value of the caller's variable
+        i_b: value of the caller's variable
+        i_b__tan: value of the caller's variable
+        i_c0: value of the caller's variable
+        i_c0__tan: value of the caller's variable
+        i_c1: value of the caller's variable
+        i_c1__tan: value of the caller's variable
+        i_c2: value of the caller's variable
+        i_c2__tan: value of the caller's variable
+        i_k0: value of the caller's variable
+        i_k0__tan: value of the caller's variable
+        i_k1: value of the caller's variable
+        i_k1__tan: value of the caller's variable
+        i_k2: value of the caller's variable
+        i_k2__tan: value of the caller's variable
+        i_omega0_hat: value of the caller's variable
+        i_omega0_hat__tan: value of the caller's variable
+        i_phase_td: value of the caller's variable
+        i_phase_td__tan: value of the caller's variable
+        i_t_bottom: value of the caller's variable
+        i_t_bottom__tan: value of the caller's variable
+        i_t_stance: value of the caller's variable
+        i_t_stance__tan: value of the caller's variable
         k: value of the caller's variable
         k__tan: value of the caller's variable
         l0: value of the caller's variable
@@ -522,20 +566,8 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan
         p_td: value of the caller's variable
         p_td__tan: value of the caller's variable
         q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
         q_th_td: value of the caller's variable
         q_th_td__tan: value of the caller's variable
-        r_c: value of the caller's variable
-        r_c__tan: value of the caller's variable
-        tau1: value of the caller's variable
-        tau1__tan: value of the caller's variable
-        tau2: value of the caller's variable
-        tau2__tan: value of the caller's variable
-        tau3: value of the caller's variable
-        tau3__tan: value of the caller's variable
 
     Returns a tuple:
         t_bottom: result for the caller
@@ -563,207 +595,74 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan
         passes__tan: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 532
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x2 = (1.0/T)
-    _x0 = math.sqrt(15.0)
-    _x1 = (0.16666666666666666)*_x0
-    _x3 = -0.3333333333333333*_x0*tau1 + (0.3333333333333333)*_x0*tau3 - 3.3333333333333335*tau1 + (6.666666666666667)*tau2 - 3.3333333333333335*tau3
-    _x4 = (6.666666666666667)*tau2__tan
-    _x5 = (0.3333333333333333)*_x2
-    _x6 = _x2**2
-    _x7 = tau1 - 2.0*tau2 + tau3
-    _x8 = (3.3333333333333335)*_x6
-    f_c0 = _x1*tau1 - _x1*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c0__tan = tau1__tan*(_x1 + 0.8333333333333334) - 0.6666666666666666*tau2__tan + tau3__tan*(0.8333333333333334 - _x1)
-    f_c1 = _x2*_x3
-    f_c1__tan = -T__tan*_x3*_x6 + _x2*_x4 + _x5*tau1__tan*(-_x0 - 10.0) + _x5*tau3__tan*(_x0 - 10.0)
-    f_c2 = _x7*_x8
-    f_c2__tan = -6.666666666666667*T__tan*_x2**3*_x7 - _x4*_x6 + _x8*tau1__tan + _x8*tau3__tan
-    # T5.3: omega of the stance-mean momentum
-    _x9 = (0.5)*f_c0
-    _x10 = T**2
-    _x11 = (0.16666666666666666)*_x10
-    _x12 = (0.08333333333333333)*T**3
-    _x13 = 1.0/(l0**2*m)
-    f_omega = _x13*(T*_x9 + _x11*f_c1 + _x12*f_c2 + p_td)
-    f_omega__tan = (0.5)*T*_x13*f_c0__tan + T__tan*_x13*((0.3333333333333333)*T*f_c1 + (0.25)*_x10*f_c2 + _x9) + _x11*_x13*f_c1__tan + _x12*_x13*f_c2__tan + _x13*p_td__tan
-    # T5.4-T5.5: radial solution
-    _c0 = type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k, q_r_td__tan, q_rd_td__tan, f_omega__tan, g_eff__tan, r_c__tan, k__tan)
-    if _c0[10] != STATUS_OK:
-        return _NAN23 + (_c0[10],)
-    (f_omega0_hat, f_a, f_b, f_phase_td, f_s_td, f_omega0_hat__tan, f_a__tan, f_b__tan, f_phase_td__tan, f_s_td__tan, _) = _c0
-    _c1 = geyer_liftoff_phase_jvp_a_b(f_a, f_b, l0, q_r_lo, f_a__tan, f_b__tan)
-    if _c1[4] != STATUS_OK:
-        return _NAN23 + (_c1[4],)
-    f_phase_lo = _c1[0]
-    f_phase_lo__tan = _c1[2]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x14 = (1.0/f_omega0_hat)
-    _x15 = -f_phase_td + (1.5)*math.pi
-    _x16 = _x14*f_phase_td__tan
-    _x17 = _x14**2*f_omega0_hat__tan
-    _x18 = f_phase_lo - f_phase_td
-    _x19 = 3.0*f_b**2
-    _x20 = 16.0*f_a
-    _x21 = r_c**2
-    _x22 = 12.0*_x21
-    _x23 = _x22 + 8.0*r_c + 2.0
-    _x24 = _x19 - _x20*r_c + _x23 + 6.0*f_a**2 - 4.0*f_a
-    _x25 = r_c**3
-    _x26 = 4.0*_x25
-    _x27 = r_c**4
-    _x28 = 4.0*r_c + 1.0
-    _x29 = 6.0*_x21 + _x26 + _x27 + _x28
-    _x30 = (1.0/_x29)
-    _x31 = (0.5)*_x30
-    _x32 = _x30*f_b
-    _x33 = 24.0*r_c + 8.0
-    _x34 = _x30**2*(-_x22 - _x26 - 12.0*r_c - 4.0)
-    _x35 = -2.0*_x28 + 6.0*f_a
-    _x36 = 8.0*_x25
-    _x37 = _x23 + 2.0*_x27 + _x36
-    _x38 = (1.0/_x37)
-    f_t_bottom = _x14*_x15
-    f_t_bottom__tan = -_x15*_x17 - _x16
-    f_t_stance = _x14*_x18
-    f_t_stance__tan = _x14*f_phase_lo__tan - _x16 - _x17*_x18
-    f_k0 = _x24*_x31
-    f_k0__tan = _x31*f_a__tan*(12.0*f_a - 16.0*r_c - 4.0) + 3.0*_x32*f_b__tan + r_c__tan*((0.5)*_x24*_x34 + _x31*(-_x20 + _x33))
-    f_k1 = _x32*_x35
-    f_k1__tan = _x30*_x35*f_b__tan + 6.0*_x32*f_a__tan + r_c__tan*(-8.0*_x32 + _x34*_x35*f_b)
-    f_k2 = -_x19*_x38
-    f_k2__tan = -_x19*_x38**2*r_c__tan*(-24.0*_x21 - _x33 - _x36) - 6.0*_x38*f_b*f_b__tan
-    _c2 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan*(0.5 - 0.1*math.sqrt(15.0)), q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th1 = _c2[0]
-    f_th1__tan = _c2[1]
-    _c3 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, (0.5)*f_t_stance__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th2 = _c3[0]
-    f_th2__tan = _c3[1]
-    _c4 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan*((0.1)*math.sqrt(15.0) + 0.5), q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th3 = _c4[0]
-    f_th3__tan = _c4[1]
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x39 = (0.2)*math.sqrt(15.0)
-    _x40 = 1.0 - _x39
-    _x41 = (0.5)*f_omega0_hat
-    _x42 = _x41*f_t_stance
-    _x43 = _x40*_x42 + f_phase_td
-    _x44 = math.sin(_x43)
-    _x45 = f_a + 1.0
-    _x46 = _x44*f_b + _x45
-    _x47 = math.sin(f_th1)
-    _x48 = l0*m
-    _x49 = _x48*g_s
-    _x50 = _x47*_x49
-    _x51 = f_b*f_phase_td__tan
-    _x52 = math.cos(_x43)
-    _x53 = _x50*_x52
-    _x54 = math.cos(f_th1)
-    _x55 = _x41*f_b*f_t_stance__tan
-    _x56 = (0.5)*g_s
-    _x57 = _x48*_x56*f_b*f_omega0_hat__tan*f_t_stance
-    _x58 = _x42 + f_phase_td
-    _x59 = math.sin(_x58)
-    _x60 = _x45 + _x59*f_b
-    _x61 = math.sin(f_th2)
-    _x62 = _x61*g_s
-    _x63 = _x48*_x62
-    _x64 = math.cos(_x58)
-    _x65 = _x63*_x64
-    _x66 = math.cos(f_th2)
-    _x67 = _x39 + 1.0
-    _x68 = _x42*_x67 + f_phase_td
-    _x69 = math.sin(_x68)
-    _x70 = _x45 + _x69*f_b
-    _x71 = math.sin(f_th3)
-    _x72 = _x49*_x71
-    _x73 = math.cos(_x68)
-    _x74 = _x72*_x73
-    _x75 = math.cos(f_th3)
-    _x76 = (0.2777777777777778)*g_s
-    _x77 = math.cos(f_phase_lo) - math.cos(f_phase_td)
-    _x78 = f_phase_lo - f_phase_td
-    _x79 = (1.0/_x78)
-    _x80 = _x79*f_b
-    _x81 = _x77*_x79**2*f_b
-    f_tau1 = _x46*_x50
-    f_tau1__tan = _x40*_x47*_x52*_x57 + _x40*_x53*_x55 + _x44*_x50*f_b__tan + _x46*_x49*_x54*f_th1__tan + _x50*f_a__tan + _x51*_x53
-    f_tau2 = _x60*_x63
-    f_tau2__tan = _x49*_x60*_x66*f_th2__tan + _x51*_x65 + _x55*_x65 + _x57*_x61*_x64 + _x59*_x63*f_b__tan + _x63*f_a__tan
-    f_tau3 = _x70*_x72
-    f_tau3__tan = _x49*_x70*_x75*f_th3__tan + _x51*_x74 + _x55*_x67*_x74 + _x57*_x67*_x71*_x73 + _x69*_x72*f_b__tan + _x72*f_a__tan
-    f_g_eff = _x56*((0.5555555555555556)*_x54 + (0.8888888888888888)*_x66 + (0.5555555555555556)*_x75)
-    f_g_eff__tan = -_x47*_x76*f_th1__tan - 0.4444444444444444*_x62*f_th2__tan - _x71*_x76*f_th3__tan
-    f_r_c = -_x77*_x80 + f_a
-    f_r_c__tan = -_x77*_x79*f_b__tan + f_a__tan + f_phase_lo__tan*(_x80*math.sin(f_phase_lo) + _x81) + f_phase_td__tan*(-_x80*math.sin(f_phase_td) - _x81)
-    _c5 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(f_t_bottom, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_bottom__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    bottom_q_th = _c5[0]
-    bottom_q_th__tan = _c5[1]
-    _c6 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    liftoff_q_th = _c6[0]
-    liftoff_q_th__tan = _c6[1]
+    # Total ops: 170
+    _c0 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, i_t_bottom__tan, q_th_td__tan, p_td__tan, i_c0__tan, i_c1__tan, i_c2__tan, i_k0__tan, i_k1__tan, i_k2__tan, i_omega0_hat__tan, i_phase_td__tan)
+    bottom_q_th = _c0[0]
+    bottom_q_th__tan = _c0[1]
+    _c1 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, i_t_stance__tan, q_th_td__tan, p_td__tan, i_c0__tan, i_c1__tan, i_c2__tan, i_k0__tan, i_k1__tan, i_k2__tan, i_omega0_hat__tan, i_phase_td__tan)
+    liftoff_q_th = _c1[0]
+    liftoff_q_th__tan = _c1[1]
     # T5.7: bottom and liftoff states
-    _x82 = f_a - f_b + 1.0
-    _x102 = (1.0/_x82)
-    _x83 = f_t_bottom**2
-    _x84 = (0.5)*f_c1
-    _x85 = f_t_bottom**3
-    _x86 = (0.3333333333333333)*f_c2
-    _x87 = _x83*_x84 + _x85*_x86 + f_c0*f_t_bottom + p_td
-    _x88 = (1.0/m)
-    _x89 = l0**-2
-    _x90 = _x102**2*_x88*_x89
-    _x91 = (0.5)*f_c1__tan
-    _x92 = (0.3333333333333333)*f_c2__tan
-    _x93 = 2.0*_x102**3*_x87*_x88*_x89
-    _x94 = f_t_stance**2
-    _x95 = f_t_stance**3
-    _x96 = _x84*_x94 + _x86*_x95 + f_c0*f_t_stance
-    _x97 = f_c0__tan*f_t_stance
-    _x98 = _x91*_x94
-    _x99 = _x92*_x95
-    _x100 = f_t_stance__tan*(_x94*f_c2 + f_c0 + f_c1*f_t_stance)
-    _x101 = _x88/q_r_lo**2
-    t_bottom = f_t_bottom
-    t_bottom__tan = f_t_bottom__tan
-    t_stance = f_t_stance
-    t_stance__tan = f_t_stance__tan
-    bottom_q_r = _x82*l0
-    bottom_q_r__tan = f_a__tan*l0 - f_b__tan*l0
+    _x0 = i_a - i_b + 1.0
+    _x20 = (1.0/_x0)
+    _x1 = i_t_bottom**2
+    _x2 = (0.5)*i_c1
+    _x3 = i_t_bottom**3
+    _x4 = (0.3333333333333333)*i_c2
+    _x5 = _x1*_x2 + _x3*_x4 + i_c0*i_t_bottom + p_td
+    _x6 = (1.0/m)
+    _x7 = l0**-2
+    _x8 = _x20**2*_x6*_x7
+    _x9 = (0.5)*i_c1__tan
+    _x10 = (0.3333333333333333)*i_c2__tan
+    _x11 = 2.0*_x20**3*_x5*_x6*_x7
+    _x12 = i_t_stance**2
+    _x13 = i_t_stance**3
+    _x14 = _x12*_x2 + _x13*_x4 + i_c0*i_t_stance
+    _x15 = i_c0__tan*i_t_stance
+    _x16 = _x12*_x9
+    _x17 = _x10*_x13
+    _x18 = i_t_stance__tan*(_x12*i_c2 + i_c0 + i_c1*i_t_stance)
+    _x19 = _x6/q_r_lo**2
+    t_bottom = i_t_bottom
+    t_bottom__tan = i_t_bottom__tan
+    t_stance = i_t_stance
+    t_stance__tan = i_t_stance__tan
+    bottom_q_r = _x0*l0
+    bottom_q_r__tan = i_a__tan*l0 - i_b__tan*l0
     bottom_q_rd = 0.0
-    bottom_q_thd = _x87*_x90
-    bottom_q_thd__tan = _x83*_x90*_x91 + _x85*_x90*_x92 + _x90*f_c0__tan*f_t_bottom + _x90*f_t_bottom__tan*(_x83*f_c2 + f_c0 + f_c1*f_t_bottom) + _x90*p_td__tan - _x93*f_a__tan + _x93*f_b__tan
+    bottom_q_thd = _x5*_x8
+    bottom_q_thd__tan = _x1*_x8*_x9 + _x10*_x3*_x8 - _x11*i_a__tan + _x11*i_b__tan + _x8*i_c0__tan*i_t_bottom + _x8*i_t_bottom__tan*(_x1*i_c2 + i_c0 + i_c1*i_t_bottom) + _x8*p_td__tan
     liftoff_q_r = q_r_lo
-    P_c = _x96
-    P_c__tan = _x100 + _x97 + _x98 + _x99
-    liftoff_q_thd = _x101*(_x96 + p_td)
-    liftoff_q_thd__tan = _x100*_x101 + _x101*_x97 + _x101*_x98 + _x101*_x99 + _x101*p_td__tan
+    P_c = _x14
+    P_c__tan = _x15 + _x16 + _x17 + _x18
+    liftoff_q_thd = _x19*(_x14 + p_td)
+    liftoff_q_thd__tan = _x15*_x19 + _x16*_x19 + _x17*_x19 + _x18*_x19 + _x19*p_td__tan
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN23 + (STATUS_FALL,)
-    _x103 = (1.0/m)
-    _x104 = _x103*l0**2
-    _x105 = q_r_lo**2
-    _x106 = _x103*_x105
-    _x107 = f_c0*f_t_stance
-    _x108 = f_t_stance**2
-    _x109 = _x108*f_c1
-    _x110 = f_t_stance**3
-    _x111 = _x110*f_c2
-    _x112 = _x107 + (0.5)*_x109 + (0.3333333333333333)*_x111 + p_td
-    _x113 = _x103**2/_x105
-    _x114 = 2.0*f_t_stance
-    _x115 = _x112*_x113
-    _q_rd_lo_sq = 2.0*E_td*_x103 + 2.0*_x103*k*l0*q_r_lo - _x104*k - _x106*k - _x112**2*_x113 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
-    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x103 - _x108*_x115*f_c1__tan - 0.6666666666666666*_x110*_x115*f_c2__tan - _x113*p_td__tan*(2.0*_x107 + _x109 + (0.6666666666666666)*_x111 + 2.0*p_td) - _x114*_x115*f_c0__tan - _x115*f_t_stance__tan*(2.0*_x108*f_c2 + _x114*f_c1 + 2.0*f_c0) + 2.0*g_s*liftoff_q_th__tan*q_r_lo*math.sin(liftoff_q_th) + k__tan*(2.0*_x103*l0*q_r_lo - _x104 - _x106)
+    _x21 = (1.0/m)
+    _x22 = _x21*l0**2
+    _x23 = q_r_lo**2
+    _x24 = _x21*_x23
+    _x25 = i_c0*i_t_stance
+    _x26 = i_t_stance**2
+    _x27 = _x26*i_c1
+    _x28 = i_t_stance**3
+    _x29 = _x28*i_c2
+    _x30 = _x25 + (0.5)*_x27 + (0.3333333333333333)*_x29 + p_td
+    _x31 = _x21**2/_x23
+    _x32 = 2.0*i_t_stance
+    _x33 = _x30*_x31
+    _q_rd_lo_sq = 2.0*E_td*_x21 + 2.0*_x21*k*l0*q_r_lo - _x22*k - _x24*k - _x30**2*_x31 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x21 - _x26*_x33*i_c1__tan - 0.6666666666666666*_x28*_x33*i_c2__tan - _x31*p_td__tan*(2.0*_x25 + _x27 + (0.6666666666666666)*_x29 + 2.0*p_td) - _x32*_x33*i_c0__tan - _x33*i_t_stance__tan*(2.0*_x26*i_c2 + _x32*i_c1 + 2.0*i_c0) + 2.0*g_s*liftoff_q_th__tan*q_r_lo*math.sin(liftoff_q_th) + k__tan*(2.0*_x21*l0*q_r_lo - _x22 - _x24)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN23 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
-    _x116 = math.sqrt(_q_rd_lo_sq)
-    liftoff_q_rd = _x116
-    liftoff_q_rd__tan = (0.5)*_q_rd_lo_sq__tan/_x116
+    _x34 = math.sqrt(_q_rd_lo_sq)
+    liftoff_q_rd = _x34
+    liftoff_q_rd__tan = (0.5)*_q_rd_lo_sq__tan/_x34
     # derivatives that are identically zero
     bottom_q_rd__tan = 0.0
     liftoff_q_r__tan = 0.0
@@ -859,12 +758,19 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
     r_c__tan = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN24 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan)
-        if _c0[12] != STATUS_OK:
-            return _NAN24 + (_c0[12],)
-        (_next_tau1, _next_tau2, _next_tau3, _next_T, _next_g_eff, _next_r_c, _next_tau1__tan, _next_tau2__tan, _next_tau3__tan, _next_T__tan, _next_g_eff__tan, _next_r_c__tan, _) = _c0
+        if _c0[36] != STATUS_OK:
+            return _NAN24 + (_c0[36],)
+        (i_c0, i_c0__tan, i_c1, i_c1__tan, i_c2, i_c2__tan, i_omega0_hat, i_a, i_b, i_phase_td, i_omega0_hat__tan, i_a__tan, i_b__tan, i_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, i_k0, i_k0__tan, i_k1, i_k1__tan, i_k2, i_k2__tan, _next_tau1, _next_tau2, _next_tau3, _next_T, _next_g_eff, _next_r_c, _next_tau1__tan, _next_tau2__tan, _next_tau3__tan, _next_T__tan, _next_g_eff__tan, _next_r_c__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_tau1
         _n0_1 = _next_tau2
         _n0_2 = _next_tau3
@@ -893,12 +799,8 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         g_eff__tan = _n0_10
         r_c__tan = _n0_11
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return _NAN24 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan)
+    _c1 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, g_s, i_a, i_a__tan, i_b, i_b__tan, i_c0, i_c0__tan, i_c1, i_c1__tan, i_c2, i_c2__tan, i_k0, i_k0__tan, i_k1, i_k1__tan, i_k2, i_k2__tan, i_omega0_hat, i_omega0_hat__tan, i_phase_td, i_phase_td__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_th_td, q_th_td__tan)
     if _c1[23] != STATUS_OK:
         return _NAN24 + (_c1[23],)
     (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, _) = _c1

@@ -6,14 +6,14 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:677d7d2464b0d738
-#   geyer_vs.py sha256:9cc9456ce6fb44c3
-#   gravity_type0.py sha256:45b075413f97ed18
-#   gravity_type1.py sha256:02ca50bea1ed5185
-#   gravity_type2.py sha256:e3a216dc9914ebb0
-#   gravity_type3.py sha256:536dce4dccb0bbb2
-#   gravity_type4.py sha256:fab9ba064bfcd486
-#   gravity_type5.py sha256:50b0f871920d6a5a
-#   iterative.py sha256:900e6b9cc2dda114
+#   geyer_vs.py sha256:af862cc8c4037cd6
+#   gravity_type0.py sha256:a36eaba77cd18d22
+#   gravity_type1.py sha256:f60cec1530f43c18
+#   gravity_type2.py sha256:6e2f02184974f094
+#   gravity_type3.py sha256:3effee96f7eb61ff
+#   gravity_type4.py sha256:aa678e60a941c5e6
+#   gravity_type5.py sha256:b4cfbd08dbc4fee1
+#   iterative.py sha256:0551c35900d44042
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 

@@ -7,13 +7,13 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:e58e885f76eb1aa8
 #   geyer_jacobian.py sha256:849e7410cc446e23
-#   geyer_vs_jacobian.py sha256:ed8004ee3dc8f349
-#   gravity_type0_jacobian.py sha256:9c8801e32205e472
-#   gravity_type1_jacobian.py sha256:4169ef80df01f145
-#   gravity_type2_jacobian.py sha256:e540f2eab7594ea0
-#   gravity_type3_jacobian.py sha256:71a238c113adc0f4
-#   gravity_type4_jacobian.py sha256:dcb77054308f58c3
-#   gravity_type5_jacobian.py sha256:0fe0cff033dbdcbe
+#   geyer_vs_jacobian.py sha256:6a8e7e05d561c341
+#   gravity_type0_jacobian.py sha256:5959673629a24379
+#   gravity_type1_jacobian.py sha256:2c3159e4ad28e094
+#   gravity_type2_jacobian.py sha256:4694f70f52b4fbd6
+#   gravity_type3_jacobian.py sha256:fa5175878e56336b
+#   gravity_type4_jacobian.py sha256:bd2cc6073042d6b1
+#   gravity_type5_jacobian.py sha256:afd4adbe4cbb883a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
@@ -36,24 +36,28 @@ from .gravity_type5_jacobian import gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_IMAGINARY_MOMENTUM
 
 NAN = math.nan
-_NAN6 = (NAN,) * 6
 _NAN10 = (NAN,) * 10
 _NAN12 = (NAN,) * 12
-_NAN14 = (NAN,) * 14
 _NAN18 = (NAN,) * 18
 _NAN20 = (NAN,) * 20
 _NAN22 = (NAN,) * 22
-_NAN24 = (NAN,) * 24
-_NAN26 = (NAN,) * 26
+_NAN28 = (NAN,) * 28
 _NAN29 = (NAN,) * 29
+_NAN30 = (NAN,) * 30
 _NAN31 = (NAN,) * 31
+_NAN38 = (NAN,) * 38
+_NAN42 = (NAN,) * 42
+_NAN48 = (NAN,) * 48
+_NAN54 = (NAN,) * 54
 _NAN60 = (NAN,) * 60
+_NAN68 = (NAN,) * 68
 _NAN77 = (NAN,) * 77
+_NAN78 = (NAN,) * 78
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -79,6 +83,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_P0: result for the caller
@@ -138,7 +154,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp0__tan = (0.5)*_D__tan*_x22*_x23*_x33 + _Q0__tan*_x26*_x32*_x4 + _x2*_x31 - _x24*_x33
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x35 = m*q_rd**2
     _x36 = -q_r
@@ -162,11 +178,11 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _next_Q0__tan = 0.5*_ifq0__tan + q_th__tan
     _next_P0__tan = 0.5*_ifp0__tan + _x44*q_thd__tan + _x49*m*q_r__tan*q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_1(_D, _D__tan, _ifp0, _ifp0__tan, _ifq0, _ifq0__tan, _ift0, _ift0__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -174,15 +190,13 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -192,18 +206,6 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -216,82 +218,31 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 152
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.75*_D - q_r
-    _x1 = -_x0
-    _x34 = (1.0/_x1)
-    _x2 = -0.75*_D__tan + q_r__tan
-    _x3 = k_c*l0
-    _x4 = math.cos(_Q0)
-    _x5 = g_s*m
-    _x6 = _x4*_x5
-    _x7 = _x1*k_c
-    _x8 = _x34**3
-    _x9 = (1.0/m)
-    _x10 = _P0**2*_x9
-    _x11 = _x10*_x8
-    _x12 = math.sin(_Q0)
-    _x13 = _Q0__tan*_x12*_x5
-    _x14 = k_c__tan*(_x0 + l0)
-    _x15 = 2.0*_P0*_x8
-    _x16 = _P0__tan*_x9
-    _x17 = _x2*(-3.0*_x10*_x34**4 - k_c)
-    _x18 = 0.5*_x11 + 0.5*_x3 - 0.5*_x6 - 0.5*_x7
-    _x19 = 1.0*_P0*_x16*_x8 + 0.5*_x13 + 0.5*_x14 + 0.5*_x17
-    _x20 = math.sqrt(_D)
-    _x21 = math.sqrt(m)
-    _x22 = (1.0/math.sqrt(_x18))
-    _x23 = (1.0/_x20)
-    _x24 = (0.5)*_x19*_x20/_x18**(1.5)
-    _x25 = (1.0/_x21)
-    _x26 = _x20*_x22
-    _x27 = _x25*_x26
-    _x28 = _x34**2
-    _x29 = _P0*_x28
-    _x30 = m**(1.5)
-    _x31 = _x12*_x26*_x30*g_s
-    _x32 = _x1*_x30*g_s
-    _x33 = _x12*_x32
-    _fsigma0 = _x1
-    _fsigma0__tan = _x2
-    _fF0 = _x11 + _x3 - _x6 - _x7
-    _fF0__tan = _x13 + _x14 + _x15*_x16 + _x17
-    _fPsi0 = _x18
-    _fPsi0__tan = _x19
-    _fft0 = _x20*_x21*_x22
-    _fft0__tan = (0.5)*_D__tan*_x21*_x22*_x23 - _x21*_x24
-    _ffq0 = _x27*_x29
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x22*_x23*_x25*_x28 + _P0__tan*_x20*_x22*_x25*_x28 - _x15*_x2*_x27 - _x24*_x25*_x29
-    _ffp0 = _x1*_x31
-    _ffp0__tan = (0.5)*_D__tan*_x22*_x23*_x33 + _Q0__tan*_x26*_x32*_x4 + _x2*_x31 - _x24*_x33
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
+    # Total ops: 34
     # bottom state
-    _x35 = -_D + q_r
-    _x42 = (1.0/_x35)
-    _x36 = -_D__tan + q_r__tan
-    _x37 = q_r**2
-    _x38 = 1.0*_ffp0 + _x37*m*q_thd
-    _x39 = (1.0/m)
-    _x40 = _x42**2
-    _x41 = _x39*_x40
-    t_half = 1.0*_fft0
-    t_half__tan = 1.0*_fft0__tan
-    end_q_th = 1.0*_ffq0 + q_th
-    end_q_th__tan = 1.0*_ffq0__tan + q_th__tan
-    end_q_r = _x35
-    end_q_r__tan = _x36
+    _x0 = -_D + q_r
+    _x7 = (1.0/_x0)
+    _x1 = -_D__tan + q_r__tan
+    _x2 = q_r**2
+    _x3 = 1.0*_ifp0 + _x2*m*q_thd
+    _x4 = (1.0/m)
+    _x5 = _x7**2
+    _x6 = _x4*_x5
+    t_half = 1.0*_ift0
+    t_half__tan = 1.0*_ift0__tan
+    end_q_th = 1.0*_ifq0 + q_th
+    end_q_th__tan = 1.0*_ifq0__tan + q_th__tan
+    end_q_r = _x0
+    end_q_r__tan = _x1
     end_q_rd = 0.0
-    end_q_thd = _x38*_x41
-    end_q_thd__tan = 1.0*_ffp0__tan*_x41 - 2.0*_x36*_x38*_x39*_x42**3 + _x37*_x40*q_thd__tan + 2.0*_x40*q_r*q_r__tan*q_thd
+    end_q_thd = _x3*_x6
+    end_q_thd__tan = 1.0*_ifp0__tan*_x6 - 2.0*_x1*_x3*_x4*_x7**3 + _x2*_x5*q_thd__tan + 2.0*_x5*q_r*q_r__tan*q_thd
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return _NAN22 + (STATUS_FALL,)
+        return _NAN10 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -331,18 +282,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -365,17 +316,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _P0__tan = 0.5*guess_q_r**2*guess_q_thd__tan*m + 1.0*guess_q_r*guess_q_r__tan*guess_q_thd*m + 0.5*m*q_r**2*q_thd__tan + 1.0*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN29 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[6] != STATUS_OK:
-            return _NAN29 + (_c0[6],)
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_P0 = _c0[2]
-        _next_D__tan = _c0[3]
-        _next_Q0__tan = _c0[4]
-        _next_P0__tan = _c0[5]
+        if _c0[18] != STATUS_OK:
+            return _NAN29 + (_c0[18],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_P0
@@ -392,22 +345,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan = _n0_4
         _P0__tan = _n0_5
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[22] != STATUS_OK:
-        return _NAN29 + (_c1[22],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_1(_D, _D__tan, _ifp0, _ifp0__tan, _ifq0, _ifq0__tan, _ift0, _ift0__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[10] != STATUS_OK:
+        return _NAN29 + (_c1[10],)
+    (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -437,6 +386,24 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -547,10 +514,10 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp1__tan = _Q1__tan*_x25*_x55*_x67 - _x23*_x32*_x59*_x63 + _x24*_x66 + _x32*_x58*_x67
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN28 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN28 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x70 = m*q_rd**2
     _x71 = -q_r
@@ -585,11 +552,11 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _next_P0__tan = 0.25*_ifp0__tan + 0.5386751345948129*_ifp1__tan + _x91
     _next_P1__tan = -0.03867513459481288*_ifp0__tan + 0.25*_ifp1__tan + _x91
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_4(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -597,19 +564,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -619,18 +586,6 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -643,133 +598,32 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 305
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = -q_r
-    _x1 = 0.9553418012614795*_D + _x0
-    _x2 = -_x1
-    _x68 = (1.0/_x2)
-    _x3 = -q_r__tan
-    _x4 = -0.9553418012614795*_D__tan - _x3
-    _x5 = k_c*l0
-    _x6 = math.cos(_Q0)
-    _x7 = g_s*m
-    _x8 = _x6*_x7
-    _x9 = _x2*k_c
-    _x10 = _x68**3
-    _x11 = _P0**2
-    _x12 = (1.0/m)
-    _x13 = _x11*_x12
-    _x14 = _x10*_x13
-    _x15 = math.sin(_Q0)
-    _x16 = _Q0__tan*_x15*_x7
-    _x17 = k_c__tan*(_x1 + l0)
-    _x18 = 2.0*_x12
-    _x19 = _P0*_x10
-    _x20 = _P0__tan*_x19
-    _x21 = _x4*(-3.0*_x13*_x68**4 - k_c)
-    _x22 = 0.37799153207185376*_D + _x0
-    _x23 = -_x22
-    _x69 = (1.0/_x23)
-    _x24 = -0.37799153207185376*_D__tan - _x3
-    _x25 = math.cos(_Q1)
-    _x26 = _x25*_x7
-    _x27 = _x23*k_c
-    _x28 = _x69**3
-    _x29 = _P1**2
-    _x30 = _x12*_x29
-    _x31 = _x28*_x30
-    _x32 = math.sin(_Q1)
-    _x33 = _Q1__tan*_x32*_x7
-    _x34 = k_c__tan*(_x22 + l0)
-    _x35 = _P1*_x28
-    _x36 = _P1__tan*_x35
-    _x37 = _x24*(-3.0*_x30*_x69**4 - k_c)
-    _x38 = 0.5610042339640731*_x14 + 0.06100423396407311*_x26 + 0.06100423396407311*_x27 - 0.06100423396407311*_x31 + 0.5*_x5 - 0.5610042339640731*_x8 - 0.5610042339640731*_x9
-    _x39 = _x12*_x20
-    _x40 = _x12*_x36
-    _x41 = 0.5610042339640731*_x16 + 0.5610042339640731*_x17 + 0.5610042339640731*_x21 - 0.06100423396407311*_x33 - 0.06100423396407311*_x34 - 0.06100423396407311*_x37 + 1.1220084679281461*_x39 - 0.12200846792814622*_x40
-    _x42 = (1.0/math.sqrt(_x38))
-    _x43 = math.sqrt(_D)
-    _x44 = math.sqrt(m)
-    _x45 = _x43*_x44
-    _x46 = (1.0/_x43)
-    _x47 = (0.5)*_x45
-    _x48 = _x41/_x38**(1.5)
-    _x49 = _x68**2
-    _x50 = (1.0/_x44)
-    _x51 = _x43*_x50
-    _x52 = _x42*_x51
-    _x53 = (0.5)*_x51
-    _x54 = g_s*m**(1.5)
-    _x55 = _x43*_x54
-    _x56 = _x15*_x42*_x55
-    _x57 = _x2*_x42
-    _x58 = (0.5)*_D__tan*_x46*_x54
-    _x59 = (0.5)*_x55
-    _x60 = 0.22767090063073978*_x10*_x11*_x12 + 0.27232909936926025*_x12*_x28*_x29 - 0.27232909936926025*_x26 - 0.27232909936926025*_x27 - 0.22767090063073978*_x8 - 0.22767090063073978*_x9 + 0.5*k_c*l0
-    _x61 = 0.22767090063073978*_x16 + 0.22767090063073978*_x17 + 0.22767090063073978*_x21 + 0.27232909936926025*_x33 + 0.27232909936926025*_x34 + 0.27232909936926025*_x37 + 0.45534180126147955*_x39 + 0.5446581987385205*_x40
-    _x62 = (1.0/math.sqrt(_x60))
-    _x63 = _x61/_x60**(1.5)
-    _x64 = _x69**2
-    _x65 = _x51*_x62
-    _x66 = _x32*_x55*_x62
-    _x67 = _x23*_x62
-    _fsigma0 = _x2
-    _fsigma0__tan = _x4
-    _fF0 = _x14 + _x5 - _x8 - _x9
-    _fF0__tan = _x16 + _x17 + _x18*_x20 + _x21
-    _fsigma1 = _x23
-    _fsigma1__tan = _x24
-    _fF1 = -_x26 - _x27 + _x31 + _x5
-    _fF1__tan = _x18*_x36 + _x33 + _x34 + _x37
-    _fPsi0 = _x38
-    _fPsi0__tan = _x41
-    _fft0 = _x42*_x45
-    _fft0__tan = (0.5)*_D__tan*_x42*_x44*_x46 - _x47*_x48
-    _ffq0 = _P0*_x49*_x52
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x42*_x46*_x49*_x50 - _P0*_x48*_x49*_x53 + _P0__tan*_x42*_x43*_x49*_x50 - 2.0*_x19*_x4*_x52
-    _ffp0 = _x2*_x56
-    _ffp0__tan = _Q0__tan*_x55*_x57*_x6 - _x15*_x2*_x48*_x59 + _x15*_x57*_x58 + _x4*_x56
-    _fPsi1 = _x60
-    _fPsi1__tan = _x61
-    _fft1 = _x45*_x62
-    _fft1__tan = (0.5)*_D__tan*_x44*_x46*_x62 - _x47*_x63
-    _ffq1 = _P1*_x64*_x65
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x46*_x50*_x62*_x64 - _P1*_x53*_x63*_x64 + _P1__tan*_x43*_x50*_x62*_x64 - 2.0*_x24*_x35*_x65
-    _ffp1 = _x23*_x66
-    _ffp1__tan = _Q1__tan*_x25*_x55*_x67 - _x23*_x32*_x59*_x63 + _x24*_x66 + _x32*_x58*_x67
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
+    # Total ops: 46
     # bottom state
-    _x70 = -_D + q_r
-    _x78 = (1.0/_x70)
-    _x71 = -_D__tan + q_r__tan
-    _x72 = q_r**2
-    _x73 = 0.5*_ffp0 + 0.5*_ffp1 + _x72*m*q_thd
-    _x74 = (1.0/m)
-    _x75 = _x78**2
-    _x76 = _x74*_x75
-    _x77 = 0.5*_x76
-    t_half = 0.5*_fft0 + 0.5*_fft1
-    t_half__tan = 0.5*_fft0__tan + 0.5*_fft1__tan
-    end_q_th = 0.5*_ffq0 + 0.5*_ffq1 + q_th
-    end_q_th__tan = 0.5*_ffq0__tan + 0.5*_ffq1__tan + q_th__tan
-    end_q_r = _x70
-    end_q_r__tan = _x71
+    _x0 = -_D + q_r
+    _x8 = (1.0/_x0)
+    _x1 = -_D__tan + q_r__tan
+    _x2 = q_r**2
+    _x3 = 0.5*_ifp0 + 0.5*_ifp1 + _x2*m*q_thd
+    _x4 = (1.0/m)
+    _x5 = _x8**2
+    _x6 = _x4*_x5
+    _x7 = 0.5*_x6
+    t_half = 0.5*_ift0 + 0.5*_ift1
+    t_half__tan = 0.5*_ift0__tan + 0.5*_ift1__tan
+    end_q_th = 0.5*_ifq0 + 0.5*_ifq1 + q_th
+    end_q_th__tan = 0.5*_ifq0__tan + 0.5*_ifq1__tan + q_th__tan
+    end_q_r = _x0
+    end_q_r__tan = _x1
     end_q_rd = 0.0
-    end_q_thd = _x73*_x76
-    end_q_thd__tan = _ffp0__tan*_x77 + _ffp1__tan*_x77 - 2.0*_x71*_x73*_x74*_x78**3 + _x72*_x75*q_thd__tan + 2.0*_x75*q_r*q_r__tan*q_thd
+    end_q_thd = _x3*_x6
+    end_q_thd__tan = _ifp0__tan*_x7 + _ifp1__tan*_x7 - 2.0*_x1*_x3*_x4*_x8**3 + _x2*_x5*q_thd__tan + 2.0*_x5*q_r*q_r__tan*q_thd
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return _NAN22 + (STATUS_FALL,)
+        return _NAN10 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -809,18 +663,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -847,12 +701,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _P1__tan = 0.2113248654051871*guess_q_r**2*guess_q_thd__tan*m + 0.4226497308103742*guess_q_r*guess_q_r__tan*guess_q_thd*m + 0.7886751345948129*m*q_r**2*q_thd__tan + 1.5773502691896257*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN29 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[10] != STATUS_OK:
-            return _NAN29 + (_c0[10],)
-        (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
+        if _c0[28] != STATUS_OK:
+            return _NAN29 + (_c0[28],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -877,22 +738,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _P0__tan = _n0_8
         _P1__tan = _n0_9
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[22] != STATUS_OK:
-        return _NAN29 + (_c1[22],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_4(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[10] != STATUS_OK:
+        return _NAN29 + (_c1[10],)
+    (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -926,6 +783,30 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -1078,13 +959,13 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp2__tan = _Q2__tan*_x41*_x72*_x92 - _x39*_x48*_x76*_x88 + _x40*_x91 + _x48*_x75*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN38 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN38 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN38 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x96 = m*q_rd**2
     _x97 = -q_r
@@ -1126,11 +1007,11 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _next_P1__tan = -0.022485417203086815*_ifp0__tan + 0.2222222222222222*_ifp1__tan + 0.30026319498086457*_ifp2__tan + _x120
     _next_P2__tan = 0.009789444015308325*_ifp0__tan - 0.0359766675249389*_ifp1__tan + 0.1388888888888889*_ifp2__tan + _x120
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_7(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -1138,23 +1019,25 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -1164,18 +1047,6 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -1188,174 +1059,32 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 477
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = -q_r
-    _x1 = 0.9872983346207417*_D + _x0
-    _x2 = -_x1
-    _x93 = (1.0/_x2)
-    _x3 = -q_r__tan
-    _x4 = -0.9872983346207417*_D__tan - _x3
-    _x5 = k_c*l0
-    _x6 = math.cos(_Q0)
-    _x7 = g_s*m
-    _x8 = _x6*_x7
-    _x9 = _x2*k_c
-    _x10 = _x93**3
-    _x11 = _P0**2
-    _x12 = (1.0/m)
-    _x13 = _x11*_x12
-    _x14 = _x10*_x13
-    _x15 = math.sin(_Q0)
-    _x16 = _Q0__tan*_x15*_x7
-    _x17 = k_c__tan*(_x1 + l0)
-    _x18 = 2.0*_x12
-    _x19 = _P0*_x10
-    _x20 = _P0__tan*_x19
-    _x21 = _x4*(-3.0*_x13*_x93**4 - k_c)
-    _x22 = 0.75*_D + _x0
-    _x23 = -_x22
-    _x94 = (1.0/_x23)
-    _x24 = -0.75*_D__tan - _x3
-    _x25 = math.cos(_Q1)
-    _x26 = _x25*_x7
-    _x27 = _x23*k_c
-    _x28 = _x94**3
-    _x29 = _P1**2
-    _x30 = _x12*_x29
-    _x31 = _x28*_x30
-    _x32 = math.sin(_Q1)
-    _x33 = _Q1__tan*_x32*_x7
-    _x34 = k_c__tan*(_x22 + l0)
-    _x35 = _P1*_x28
-    _x36 = _P1__tan*_x35
-    _x37 = _x24*(-3.0*_x30*_x94**4 - k_c)
-    _x38 = 0.2127016653792583*_D + _x0
-    _x39 = -_x38
-    _x95 = (1.0/_x39)
-    _x40 = -0.2127016653792583*_D__tan - _x3
-    _x41 = math.cos(_Q2)
-    _x42 = _x41*_x7
-    _x43 = _x39*k_c
-    _x44 = _x95**3
-    _x45 = _P2**2
-    _x46 = _x12*_x45
-    _x47 = _x44*_x46
-    _x48 = math.sin(_Q2)
-    _x49 = _Q2__tan*_x48*_x7
-    _x50 = k_c__tan*(_x38 + l0)
-    _x51 = _P2*_x44
-    _x52 = _P2__tan*_x51
-    _x53 = _x40*(-3.0*_x46*_x95**4 - k_c)
-    _x54 = 0.5762768525670787*_x14 + 0.1040546303448565*_x26 + 0.1040546303448565*_x27 - 0.1040546303448565*_x31 - 0.027777777777777776*_x42 - 0.027777777777777776*_x43 + 0.027777777777777776*_x47 + 0.5*_x5 - 0.5762768525670787*_x8 - 0.5762768525670787*_x9
-    _x55 = _x12*_x20
-    _x56 = _x12*_x36
-    _x57 = _x12*_x52
-    _x58 = 0.5762768525670787*_x16 + 0.5762768525670787*_x17 + 0.5762768525670787*_x21 - 0.1040546303448565*_x33 - 0.1040546303448565*_x34 - 0.1040546303448565*_x37 + 0.027777777777777776*_x49 + 0.027777777777777776*_x50 + 0.027777777777777776*_x53 + 1.1525537051341574*_x55 - 0.208109260689713*_x56 + 0.05555555555555555*_x57
-    _x59 = (1.0/math.sqrt(_x54))
-    _x60 = math.sqrt(_D)
-    _x61 = math.sqrt(m)
-    _x62 = _x60*_x61
-    _x63 = (1.0/_x60)
-    _x64 = (0.5)*_x62
-    _x65 = _x58/_x54**(1.5)
-    _x66 = _x93**2
-    _x67 = (1.0/_x61)
-    _x68 = _x60*_x67
-    _x69 = _x59*_x68
-    _x70 = (0.5)*_x68
-    _x71 = g_s*m**(1.5)
-    _x72 = _x60*_x71
-    _x73 = _x15*_x59*_x72
-    _x74 = _x2*_x59
-    _x75 = (0.5)*_D__tan*_x63*_x71
-    _x76 = (0.5)*_x72
-    _x77 = 0.17702731517242826*_x14 - 0.3611111111111111*_x26 - 0.3611111111111111*_x27 + 0.3611111111111111*_x31 + 0.038138426283539355*_x42 + 0.038138426283539355*_x43 - 0.038138426283539355*_x47 + 0.5*_x5 - 0.17702731517242826*_x8 - 0.17702731517242826*_x9
-    _x78 = 0.17702731517242826*_x16 + 0.17702731517242826*_x17 + 0.17702731517242826*_x21 + 0.3611111111111111*_x33 + 0.3611111111111111*_x34 + 0.3611111111111111*_x37 - 0.038138426283539355*_x49 - 0.038138426283539355*_x50 - 0.038138426283539355*_x53 + 0.3540546303448565*_x55 + 0.7222222222222222*_x56 - 0.07627685256707871*_x57
-    _x79 = (1.0/math.sqrt(_x77))
-    _x80 = _x78/_x77**(1.5)
-    _x81 = _x94**2
-    _x82 = _x68*_x79
-    _x83 = _x32*_x72*_x79
-    _x84 = _x23*_x79
-    _x85 = 0.027777777777777776*_x10*_x11*_x12 + 0.3262768525670787*_x12*_x28*_x29 + 0.14594536965514351*_x12*_x44*_x45 - 0.3262768525670787*_x26 - 0.3262768525670787*_x27 - 0.14594536965514351*_x42 - 0.14594536965514351*_x43 - 0.027777777777777776*_x8 - 0.027777777777777776*_x9 + 0.5*k_c*l0
-    _x86 = 0.027777777777777776*_x16 + 0.027777777777777776*_x17 + 0.027777777777777776*_x21 + 0.3262768525670787*_x33 + 0.3262768525670787*_x34 + 0.3262768525670787*_x37 + 0.14594536965514351*_x49 + 0.14594536965514351*_x50 + 0.14594536965514351*_x53 + 0.05555555555555555*_x55 + 0.6525537051341574*_x56 + 0.29189073931028703*_x57
-    _x87 = (1.0/math.sqrt(_x85))
-    _x88 = _x86/_x85**(1.5)
-    _x89 = _x95**2
-    _x90 = _x68*_x87
-    _x91 = _x48*_x72*_x87
-    _x92 = _x39*_x87
-    _fsigma0 = _x2
-    _fsigma0__tan = _x4
-    _fF0 = _x14 + _x5 - _x8 - _x9
-    _fF0__tan = _x16 + _x17 + _x18*_x20 + _x21
-    _fsigma1 = _x23
-    _fsigma1__tan = _x24
-    _fF1 = -_x26 - _x27 + _x31 + _x5
-    _fF1__tan = _x18*_x36 + _x33 + _x34 + _x37
-    _fsigma2 = _x39
-    _fsigma2__tan = _x40
-    _fF2 = -_x42 - _x43 + _x47 + _x5
-    _fF2__tan = _x18*_x52 + _x49 + _x50 + _x53
-    _fPsi0 = _x54
-    _fPsi0__tan = _x58
-    _fft0 = _x59*_x62
-    _fft0__tan = (0.5)*_D__tan*_x59*_x61*_x63 - _x64*_x65
-    _ffq0 = _P0*_x66*_x69
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x59*_x63*_x66*_x67 - _P0*_x65*_x66*_x70 + _P0__tan*_x59*_x60*_x66*_x67 - 2.0*_x19*_x4*_x69
-    _ffp0 = _x2*_x73
-    _ffp0__tan = _Q0__tan*_x6*_x72*_x74 - _x15*_x2*_x65*_x76 + _x15*_x74*_x75 + _x4*_x73
-    _fPsi1 = _x77
-    _fPsi1__tan = _x78
-    _fft1 = _x62*_x79
-    _fft1__tan = (0.5)*_D__tan*_x61*_x63*_x79 - _x64*_x80
-    _ffq1 = _P1*_x81*_x82
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x63*_x67*_x79*_x81 - _P1*_x70*_x80*_x81 + _P1__tan*_x60*_x67*_x79*_x81 - 2.0*_x24*_x35*_x82
-    _ffp1 = _x23*_x83
-    _ffp1__tan = _Q1__tan*_x25*_x72*_x84 - _x23*_x32*_x76*_x80 + _x24*_x83 + _x32*_x75*_x84
-    _fPsi2 = _x85
-    _fPsi2__tan = _x86
-    _fft2 = _x62*_x87
-    _fft2__tan = (0.5)*_D__tan*_x61*_x63*_x87 - _x64*_x88
-    _ffq2 = _P2*_x89*_x90
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x63*_x67*_x87*_x89 - _P2*_x70*_x88*_x89 + _P2__tan*_x60*_x67*_x87*_x89 - 2.0*_x40*_x51*_x90
-    _ffp2 = _x39*_x91
-    _ffp2__tan = _Q2__tan*_x41*_x72*_x92 - _x39*_x48*_x76*_x88 + _x40*_x91 + _x48*_x75*_x92
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
+    # Total ops: 59
     # bottom state
-    _x96 = -_D + q_r
-    _x104 = (1.0/_x96)
-    _x97 = -_D__tan + q_r__tan
-    _x98 = q_r**2
-    _x99 = 0.2777777777777778*_ffp0 + 0.4444444444444444*_ffp1 + 0.2777777777777778*_ffp2 + _x98*m*q_thd
-    _x100 = (1.0/m)
-    _x101 = _x104**2
-    _x102 = _x100*_x101
-    _x103 = 0.2777777777777778*_x102
-    t_half = 0.2777777777777778*_fft0 + 0.4444444444444444*_fft1 + 0.2777777777777778*_fft2
-    t_half__tan = 0.2777777777777778*_fft0__tan + 0.4444444444444444*_fft1__tan + 0.2777777777777778*_fft2__tan
-    end_q_th = 0.2777777777777778*_ffq0 + 0.4444444444444444*_ffq1 + 0.2777777777777778*_ffq2 + q_th
-    end_q_th__tan = 0.2777777777777778*_ffq0__tan + 0.4444444444444444*_ffq1__tan + 0.2777777777777778*_ffq2__tan + q_th__tan
-    end_q_r = _x96
-    end_q_r__tan = _x97
+    _x0 = -_D + q_r
+    _x8 = (1.0/_x0)
+    _x1 = -_D__tan + q_r__tan
+    _x2 = q_r**2
+    _x3 = 0.2777777777777778*_ifp0 + 0.4444444444444444*_ifp1 + 0.2777777777777778*_ifp2 + _x2*m*q_thd
+    _x4 = (1.0/m)
+    _x5 = _x8**2
+    _x6 = _x4*_x5
+    _x7 = 0.2777777777777778*_x6
+    t_half = 0.2777777777777778*_ift0 + 0.4444444444444444*_ift1 + 0.2777777777777778*_ift2
+    t_half__tan = 0.2777777777777778*_ift0__tan + 0.4444444444444444*_ift1__tan + 0.2777777777777778*_ift2__tan
+    end_q_th = 0.2777777777777778*_ifq0 + 0.4444444444444444*_ifq1 + 0.2777777777777778*_ifq2 + q_th
+    end_q_th__tan = 0.2777777777777778*_ifq0__tan + 0.4444444444444444*_ifq1__tan + 0.2777777777777778*_ifq2__tan + q_th__tan
+    end_q_r = _x0
+    end_q_r__tan = _x1
     end_q_rd = 0.0
-    end_q_thd = _x102*_x99
-    end_q_thd__tan = _ffp0__tan*_x103 + 0.4444444444444444*_ffp1__tan*_x102 + _ffp2__tan*_x103 - 2.0*_x100*_x104**3*_x97*_x99 + _x101*_x98*q_thd__tan + 2.0*_x101*q_r*q_r__tan*q_thd
+    end_q_thd = _x3*_x6
+    end_q_thd__tan = _ifp0__tan*_x7 + 0.4444444444444444*_ifp1__tan*_x6 + _ifp2__tan*_x7 - 2.0*_x1*_x3*_x4*_x8**3 + _x2*_x5*q_thd__tan + 2.0*_x5*q_r*q_r__tan*q_thd
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return _NAN22 + (STATUS_FALL,)
+        return _NAN10 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1395,18 +1124,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -1437,12 +1166,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _P2__tan = 0.11270166537925831*guess_q_r**2*guess_q_thd__tan*m + 0.22540333075851662*guess_q_r*guess_q_r__tan*guess_q_thd*m + 0.8872983346207417*m*q_r**2*q_thd__tan + 1.7745966692414834*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN29 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[14] != STATUS_OK:
-            return _NAN29 + (_c0[14],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
+        if _c0[38] != STATUS_OK:
+            return _NAN29 + (_c0[38],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -1475,22 +1211,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _P1__tan = _n0_12
         _P2__tan = _n0_13
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[22] != STATUS_OK:
-        return _NAN29 + (_c1[22],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_7(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[10] != STATUS_OK:
+        return _NAN29 + (_c1[10],)
+    (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -1528,6 +1260,36 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
+        _ift3: result for the caller
+        _ift3__tan: result for the caller
+        _ifq3: result for the caller
+        _ifq3__tan: result for the caller
+        _ifp3: result for the caller
+        _ifp3__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -1722,16 +1484,16 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp3__tan = _Q3__tan*_x117*_x57*_x89 - _x113*_x55*_x64*_x93 + _x116*_x56 + _x117*_x64*_x92
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN48 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN48 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN48 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN48 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x122 = m*q_rd**2
     _x123 = -q_r
@@ -1781,11 +1543,11 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _next_P2__tan = 0.006735500594538156*_ifp0__tan - 0.027880428602470895*_ifp1__tan + 0.16303628871563652*_ifp2__tan + 0.18811811749986806*_ifp3__tan + _x150
     _next_P3__tan = -0.0035551496857956833*_ifp0__tan + 0.012627462689404725*_ifp1__tan - 0.026604180084998794*_ifp2__tan + 0.08696371128436346*_ifp3__tan + _x150
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_10(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -1793,27 +1555,31 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _P3: value of the caller's variable
-        _P3__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
-        _Q3: value of the caller's variable
-        _Q3__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifp3: value of the caller's variable
+        _ifp3__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ifq3: value of the caller's variable
+        _ifq3__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
+        _ift3: value of the caller's variable
+        _ift3__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -1823,18 +1589,6 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -1847,216 +1601,33 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 696
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = -q_r
-    _x1 = 0.9951792190105739*_D + _x0
-    _x2 = -_x1
-    _x118 = (1.0/_x2)
-    _x3 = -q_r__tan
-    _x4 = -0.9951792190105739*_D__tan - _x3
-    _x5 = k_c*l0
-    _x6 = math.cos(_Q0)
-    _x7 = g_s*m
-    _x8 = _x6*_x7
-    _x9 = _x2*k_c
-    _x10 = _x118**3
-    _x11 = _P0**2
-    _x12 = (1.0/m)
-    _x13 = _x11*_x12
-    _x14 = _x10*_x13
-    _x15 = math.sin(_Q0)
-    _x16 = _Q0__tan*_x15*_x7
-    _x17 = k_c__tan*(_x1 + l0)
-    _x18 = 2.0*_x12
-    _x19 = _P0*_x10
-    _x20 = _P0__tan*_x19
-    _x21 = _x4*(-3.0*_x118**4*_x13 - k_c)
-    _x22 = 0.8910937442931661*_D + _x0
-    _x23 = -_x22
-    _x119 = (1.0/_x23)
-    _x24 = -0.8910937442931661*_D__tan - _x3
-    _x25 = math.cos(_Q1)
-    _x26 = _x25*_x7
-    _x27 = _x23*k_c
-    _x28 = _x119**3
-    _x29 = _P1**2
-    _x30 = _x12*_x29
-    _x31 = _x28*_x30
-    _x32 = math.sin(_Q1)
-    _x33 = _Q1__tan*_x32*_x7
-    _x34 = k_c__tan*(_x22 + l0)
-    _x35 = _P1*_x28
-    _x36 = _P1__tan*_x35
-    _x37 = _x24*(-3.0*_x119**4*_x30 - k_c)
-    _x38 = 0.5511127007083099*_D + _x0
-    _x39 = -_x38
-    _x120 = (1.0/_x39)
-    _x40 = -0.5511127007083099*_D__tan - _x3
-    _x41 = math.cos(_Q2)
-    _x42 = _x41*_x7
-    _x43 = _x39*k_c
-    _x44 = _x120**3
-    _x45 = _P2**2
-    _x46 = _x12*_x45
-    _x47 = _x44*_x46
-    _x48 = math.sin(_Q2)
-    _x49 = _Q2__tan*_x48*_x7
-    _x50 = k_c__tan*(_x38 + l0)
-    _x51 = _P2*_x44
-    _x52 = _P2__tan*_x51
-    _x53 = _x40*(-3.0*_x120**4*_x46 - k_c)
-    _x54 = 0.13404290741652142*_D + _x0
-    _x55 = -_x54
-    _x121 = (1.0/_x55)
-    _x56 = -0.13404290741652142*_D__tan - _x3
-    _x57 = math.cos(_Q3)
-    _x58 = _x57*_x7
-    _x59 = _x55*k_c
-    _x60 = _x121**3
-    _x61 = _P3**2
-    _x62 = _x12*_x61
-    _x63 = _x60*_x62
-    _x64 = math.sin(_Q3)
-    _x65 = _Q3__tan*_x64*_x7
-    _x66 = k_c__tan*(_x54 + l0)
-    _x67 = _P3*_x60
-    _x68 = _P3__tan*_x67
-    _x69 = _x56*(-3.0*_x121**4*_x62 - k_c)
-    _x70 = 0.582374038291501*_x14 + 0.12383458041329967*_x26 + 0.12383458041329967*_x27 - 0.12383458041329967*_x31 - 0.0575898635297681*_x42 - 0.0575898635297681*_x43 + 0.0575898635297681*_x47 + 0.5*_x5 + 0.016129321407969507*_x58 + 0.016129321407969507*_x59 - 0.016129321407969507*_x63 - 0.582374038291501*_x8 - 0.582374038291501*_x9
-    _x71 = _x12*_x20
-    _x72 = _x12*_x36
-    _x73 = _x12*_x52
-    _x74 = _x12*_x68
-    _x75 = 0.582374038291501*_x16 + 0.582374038291501*_x17 + 0.582374038291501*_x21 - 0.12383458041329967*_x33 - 0.12383458041329967*_x34 - 0.12383458041329967*_x37 + 0.0575898635297681*_x49 + 0.0575898635297681*_x50 + 0.0575898635297681*_x53 - 0.016129321407969507*_x65 - 0.016129321407969507*_x66 - 0.016129321407969507*_x69 + 1.164748076583002*_x71 - 0.24766916082659934*_x72 + 0.1151797270595362*_x73 - 0.032258642815939015*_x74
-    _x76 = (1.0/math.sqrt(_x70))
-    _x77 = math.sqrt(_D)
-    _x78 = math.sqrt(m)
-    _x79 = _x77*_x78
-    _x80 = (1.0/_x77)
-    _x81 = (0.5)*_x79
-    _x82 = _x75/_x70**(1.5)
-    _x83 = _x118**2
-    _x84 = (1.0/_x78)
-    _x85 = _x77*_x84
-    _x86 = _x76*_x85
-    _x87 = (0.5)*_x85
-    _x88 = g_s*m**(1.5)
-    _x89 = _x77*_x88
-    _x90 = _x15*_x76*_x89
-    _x91 = _x2*_x76
-    _x92 = (0.5)*_D__tan*_x80*_x88
-    _x93 = (0.5)*_x89
-    _x94 = 0.16000937841634696*_x10*_x11*_x12 + 0.39252437029865583*_x12*_x28*_x29 + 0.017475652789475504*_x12*_x60*_x61 - 0.39252437029865583*_x26 - 0.39252437029865583*_x27 + 0.0700094015044783*_x39*k_c + 0.0700094015044783*_x41*g_s*m - 0.0700094015044783*_x47 - 0.017475652789475504*_x58 - 0.017475652789475504*_x59 - 0.16000937841634696*_x8 - 0.16000937841634696*_x9 + 0.5*k_c*l0
-    _x95 = 0.16000937841634696*_x16 + 0.16000937841634696*_x17 + 0.16000937841634696*_x21 + 0.39252437029865583*_x33 + 0.39252437029865583*_x34 + 0.39252437029865583*_x37 - 0.0700094015044783*_x49 - 0.0700094015044783*_x50 - 0.0700094015044783*_x53 + 0.017475652789475504*_x65 + 0.017475652789475504*_x66 + 0.017475652789475504*_x69 + 0.32001875683269393*_x71 + 0.7850487405973117*_x72 - 0.1400188030089566*_x73 + 0.03495130557895101*_x74
-    _x96 = (1.0/math.sqrt(_x94))
-    _x97 = _x95/_x94**(1.5)
-    _x98 = _x119**2
-    _x99 = _x85*_x96
-    _x100 = _x32*_x89*_x96
-    _x101 = _x23*_x96
-    _x102 = 0.01613725546399532*_x10*_x11*_x12 + 0.2848443432415939*_x12*_x28*_x29 + 0.21871326539550162*_x12*_x44*_x45 - 0.2848443432415939*_x26 - 0.2848443432415939*_x27 - 0.21871326539550162*_x42 - 0.21871326539550162*_x43 + 0.019694864101090868*_x55*k_c + 0.019694864101090868*_x57*g_s*m - 0.019694864101090868*_x63 - 0.01613725546399532*_x8 - 0.01613725546399532*_x9 + 0.5*k_c*l0
-    _x103 = 0.01613725546399532*_x16 + 0.01613725546399532*_x17 + 0.01613725546399532*_x21 + 0.2848443432415939*_x33 + 0.2848443432415939*_x34 + 0.2848443432415939*_x37 + 0.21871326539550162*_x49 + 0.21871326539550162*_x50 + 0.21871326539550162*_x53 - 0.019694864101090868*_x65 - 0.019694864101090868*_x66 - 0.019694864101090868*_x69 + 0.03227451092799064*_x71 + 0.5696886864831878*_x72 + 0.43742653079100324*_x73 - 0.039389728202181735*_x74
-    _x104 = (1.0/math.sqrt(_x102))
-    _x105 = _x103/_x102**(1.5)
-    _x106 = _x120**2
-    _x107 = _x104*_x85
-    _x108 = _x104*_x48*_x89
-    _x109 = _x104*_x39
-    _x110 = 0.01796104633752054*_x10*_x11*_x12 + 0.11000222456933441*_x12*_x28*_x29 + 0.2823150697454702*_x12*_x44*_x45 + 0.08972165934767481*_x12*_x60*_x61 - 0.11000222456933441*_x26 - 0.11000222456933441*_x27 - 0.2823150697454702*_x42 - 0.2823150697454702*_x43 - 0.08972165934767481*_x58 - 0.08972165934767481*_x59 - 0.01796104633752054*_x8 - 0.01796104633752054*_x9 + 0.5*k_c*l0
-    _x111 = 0.01796104633752054*_x16 + 0.01796104633752054*_x17 + 0.01796104633752054*_x21 + 0.11000222456933441*_x33 + 0.11000222456933441*_x34 + 0.11000222456933441*_x37 + 0.2823150697454702*_x49 + 0.2823150697454702*_x50 + 0.2823150697454702*_x53 + 0.08972165934767481*_x65 + 0.08972165934767481*_x66 + 0.08972165934767481*_x69 + 0.03592209267504108*_x71 + 0.22000444913866882*_x72 + 0.5646301394909404*_x73 + 0.17944331869534963*_x74
-    _x112 = (1.0/math.sqrt(_x110))
-    _x113 = _x111/_x110**(1.5)
-    _x114 = _x121**2
-    _x115 = _x112*_x85
-    _x116 = _x112*_x64*_x89
-    _x117 = _x112*_x55
-    _fsigma0 = _x2
-    _fsigma0__tan = _x4
-    _fF0 = _x14 + _x5 - _x8 - _x9
-    _fF0__tan = _x16 + _x17 + _x18*_x20 + _x21
-    _fsigma1 = _x23
-    _fsigma1__tan = _x24
-    _fF1 = -_x26 - _x27 + _x31 + _x5
-    _fF1__tan = _x18*_x36 + _x33 + _x34 + _x37
-    _fsigma2 = _x39
-    _fsigma2__tan = _x40
-    _fF2 = -_x42 - _x43 + _x47 + _x5
-    _fF2__tan = _x18*_x52 + _x49 + _x50 + _x53
-    _fsigma3 = _x55
-    _fsigma3__tan = _x56
-    _fF3 = _x5 - _x58 - _x59 + _x63
-    _fF3__tan = _x18*_x68 + _x65 + _x66 + _x69
-    _fPsi0 = _x70
-    _fPsi0__tan = _x75
-    _fft0 = _x76*_x79
-    _fft0__tan = (0.5)*_D__tan*_x76*_x78*_x80 - _x81*_x82
-    _ffq0 = _P0*_x83*_x86
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x76*_x80*_x83*_x84 - _P0*_x82*_x83*_x87 + _P0__tan*_x76*_x77*_x83*_x84 - 2.0*_x19*_x4*_x86
-    _ffp0 = _x2*_x90
-    _ffp0__tan = _Q0__tan*_x6*_x89*_x91 - _x15*_x2*_x82*_x93 + _x15*_x91*_x92 + _x4*_x90
-    _fPsi1 = _x94
-    _fPsi1__tan = _x95
-    _fft1 = _x79*_x96
-    _fft1__tan = (0.5)*_D__tan*_x78*_x80*_x96 - _x81*_x97
-    _ffq1 = _P1*_x98*_x99
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x80*_x84*_x96*_x98 - _P1*_x87*_x97*_x98 + _P1__tan*_x77*_x84*_x96*_x98 - 2.0*_x24*_x35*_x99
-    _ffp1 = _x100*_x23
-    _ffp1__tan = _Q1__tan*_x101*_x25*_x89 + _x100*_x24 + _x101*_x32*_x92 - _x23*_x32*_x93*_x97
-    _fPsi2 = _x102
-    _fPsi2__tan = _x103
-    _fft2 = _x104*_x79
-    _fft2__tan = (0.5)*_D__tan*_x104*_x78*_x80 - _x105*_x81
-    _ffq2 = _P2*_x106*_x107
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x104*_x106*_x80*_x84 - _P2*_x105*_x106*_x87 + _P2__tan*_x104*_x106*_x77*_x84 - 2.0*_x107*_x40*_x51
-    _ffp2 = _x108*_x39
-    _ffp2__tan = _Q2__tan*_x109*_x41*_x89 - _x105*_x39*_x48*_x93 + _x108*_x40 + _x109*_x48*_x92
-    _fPsi3 = _x110
-    _fPsi3__tan = _x111
-    _fft3 = _x112*_x79
-    _fft3__tan = (0.5)*_D__tan*_x112*_x78*_x80 - _x113*_x81
-    _ffq3 = _P3*_x114*_x115
-    _ffq3__tan = (0.5)*_D__tan*_P3*_x112*_x114*_x80*_x84 - _P3*_x113*_x114*_x87 + _P3__tan*_x112*_x114*_x77*_x84 - 2.0*_x115*_x56*_x67
-    _ffp3 = _x116*_x55
-    _ffp3__tan = _Q3__tan*_x117*_x57*_x89 - _x113*_x55*_x64*_x93 + _x116*_x56 + _x117*_x64*_x92
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi3 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
+    # Total ops: 71
     # bottom state
-    _x122 = -_D + q_r
-    _x131 = (1.0/_x122)
-    _x123 = -_D__tan + q_r__tan
-    _x124 = q_r**2
-    _x125 = 0.17392742256872692*_ffp0 + 0.32607257743127305*_ffp1 + 0.32607257743127305*_ffp2 + 0.17392742256872692*_ffp3 + _x124*m*q_thd
-    _x126 = (1.0/m)
-    _x127 = _x131**2
-    _x128 = _x126*_x127
-    _x129 = 0.17392742256872692*_x128
-    _x130 = 0.32607257743127305*_x128
-    t_half = 0.17392742256872692*_fft0 + 0.32607257743127305*_fft1 + 0.32607257743127305*_fft2 + 0.17392742256872692*_fft3
-    t_half__tan = 0.17392742256872692*_fft0__tan + 0.32607257743127305*_fft1__tan + 0.32607257743127305*_fft2__tan + 0.17392742256872692*_fft3__tan
-    end_q_th = 0.17392742256872692*_ffq0 + 0.32607257743127305*_ffq1 + 0.32607257743127305*_ffq2 + 0.17392742256872692*_ffq3 + q_th
-    end_q_th__tan = 0.17392742256872692*_ffq0__tan + 0.32607257743127305*_ffq1__tan + 0.32607257743127305*_ffq2__tan + 0.17392742256872692*_ffq3__tan + q_th__tan
-    end_q_r = _x122
-    end_q_r__tan = _x123
+    _x0 = -_D + q_r
+    _x9 = (1.0/_x0)
+    _x1 = -_D__tan + q_r__tan
+    _x2 = q_r**2
+    _x3 = 0.17392742256872692*_ifp0 + 0.32607257743127305*_ifp1 + 0.32607257743127305*_ifp2 + 0.17392742256872692*_ifp3 + _x2*m*q_thd
+    _x4 = (1.0/m)
+    _x5 = _x9**2
+    _x6 = _x4*_x5
+    _x7 = 0.17392742256872692*_x6
+    _x8 = 0.32607257743127305*_x6
+    t_half = 0.17392742256872692*_ift0 + 0.32607257743127305*_ift1 + 0.32607257743127305*_ift2 + 0.17392742256872692*_ift3
+    t_half__tan = 0.17392742256872692*_ift0__tan + 0.32607257743127305*_ift1__tan + 0.32607257743127305*_ift2__tan + 0.17392742256872692*_ift3__tan
+    end_q_th = 0.17392742256872692*_ifq0 + 0.32607257743127305*_ifq1 + 0.32607257743127305*_ifq2 + 0.17392742256872692*_ifq3 + q_th
+    end_q_th__tan = 0.17392742256872692*_ifq0__tan + 0.32607257743127305*_ifq1__tan + 0.32607257743127305*_ifq2__tan + 0.17392742256872692*_ifq3__tan + q_th__tan
+    end_q_r = _x0
+    end_q_r__tan = _x1
     end_q_rd = 0.0
-    end_q_thd = _x125*_x128
-    end_q_thd__tan = _ffp0__tan*_x129 + _ffp1__tan*_x130 + _ffp2__tan*_x130 + _ffp3__tan*_x129 - 2.0*_x123*_x125*_x126*_x131**3 + _x124*_x127*q_thd__tan + 2.0*_x127*q_r*q_r__tan*q_thd
+    end_q_thd = _x3*_x6
+    end_q_thd__tan = _ifp0__tan*_x7 + _ifp1__tan*_x8 + _ifp2__tan*_x8 + _ifp3__tan*_x7 - 2.0*_x1*_x3*_x4*_x9**3 + _x2*_x5*q_thd__tan + 2.0*_x5*q_r*q_r__tan*q_thd
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return _NAN22 + (STATUS_FALL,)
+        return _NAN10 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2096,18 +1667,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -2142,12 +1713,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _P3__tan = 0.06943184420297371*guess_q_r**2*guess_q_thd__tan*m + 0.13886368840594743*guess_q_r*guess_q_r__tan*guess_q_thd*m + 0.9305681557970263*m*q_r**2*q_thd__tan + 1.8611363115940527*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN29 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[18] != STATUS_OK:
-            return _NAN29 + (_c0[18],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
+        if _c0[48] != STATUS_OK:
+            return _NAN29 + (_c0[48],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -2188,22 +1766,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _P2__tan = _n0_16
         _P3__tan = _n0_17
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[22] != STATUS_OK:
-        return _NAN29 + (_c1[22],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_10(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[10] != STATUS_OK:
+        return _NAN29 + (_c1[10],)
+    (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -2249,6 +1823,48 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
+        _ift3: result for the caller
+        _ift3__tan: result for the caller
+        _ifq3: result for the caller
+        _ifq3__tan: result for the caller
+        _ifp3: result for the caller
+        _ifp3__tan: result for the caller
+        _ift4: result for the caller
+        _ift4__tan: result for the caller
+        _ifq4: result for the caller
+        _ifq4__tan: result for the caller
+        _ifp4: result for the caller
+        _ifp4__tan: result for the caller
+        _ift5: result for the caller
+        _ift5__tan: result for the caller
+        _ifq5: result for the caller
+        _ifq5__tan: result for the caller
+        _ifp5: result for the caller
+        _ifp5__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -2529,22 +2145,22 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _ifp5__tan = _Q5__tan*_x123*_x169*_x89 + _x126*_x169*_x96 - _x127*_x165*_x87*_x96 + _x168*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi4 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi5 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN68 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x176 = m*q_rd**2
     _x177 = -q_r
@@ -2607,11 +2223,11 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _next_P4__tan = 0.0013555610554850618*_ifp0__tan - 0.004887192928037671*_ifp1__tan + 0.010363156240246424*_ifp2__tan - 0.020300102293239586*_ifp3__tan + 0.09019039326203465*_ifp4__tan + 0.09267349143037887*_ifp5__tan + _x209
     _next_P5__tan = -0.0008127801712647621*_ifp0__tan + 0.002854433315099335*_ifp1__tan - 0.005668858049483512*_ifp2__tan + 0.009325050706477751*_ifp3__tan - 0.014763725997197413*_ifp4__tan + 0.04283112309479259*_ifp5__tan + _x209
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _ift4, _ift4__tan, _ifq4, _ifq4__tan, _ifp4, _ifp4__tan, _ift5, _ift5__tan, _ifq5, _ifq5__tan, _ifp5, _ifp5__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_13(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifp4, _ifp4__tan, _ifp5, _ifp5__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ifq4, _ifq4__tan, _ifq5, _ifq5__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _ift4, _ift4__tan, _ift5, _ift5__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -2619,35 +2235,43 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _P3: value of the caller's variable
-        _P3__tan: value of the caller's variable
-        _P4: value of the caller's variable
-        _P4__tan: value of the caller's variable
-        _P5: value of the caller's variable
-        _P5__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
-        _Q3: value of the caller's variable
-        _Q3__tan: value of the caller's variable
-        _Q4: value of the caller's variable
-        _Q4__tan: value of the caller's variable
-        _Q5: value of the caller's variable
-        _Q5__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifp3: value of the caller's variable
+        _ifp3__tan: value of the caller's variable
+        _ifp4: value of the caller's variable
+        _ifp4__tan: value of the caller's variable
+        _ifp5: value of the caller's variable
+        _ifp5__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ifq3: value of the caller's variable
+        _ifq3__tan: value of the caller's variable
+        _ifq4: value of the caller's variable
+        _ifq4__tan: value of the caller's variable
+        _ifq5: value of the caller's variable
+        _ifq5__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
+        _ift3: value of the caller's variable
+        _ift3__tan: value of the caller's variable
+        _ift4: value of the caller's variable
+        _ift4__tan: value of the caller's variable
+        _ift5: value of the caller's variable
+        _ift5__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -2657,18 +2281,6 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -2681,301 +2293,34 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 1213
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = -q_r
-    _x1 = 0.9988599083720104*_D + _x0
-    _x2 = -_x1
-    _x170 = (1.0/_x2)
-    _x3 = -q_r__tan
-    _x4 = -0.9988599083720104*_D__tan - _x3
-    _x5 = k_c*l0
-    _x6 = math.cos(_Q0)
-    _x7 = g_s*m
-    _x8 = _x6*_x7
-    _x9 = _x2*k_c
-    _x10 = _x170**3
-    _x11 = _P0**2
-    _x12 = (1.0/m)
-    _x13 = _x11*_x12
-    _x14 = _x10*_x13
-    _x15 = math.sin(_Q0)
-    _x16 = _Q0__tan*_x15*_x7
-    _x17 = k_c__tan*(_x1 + l0)
-    _x18 = 2.0*_x12
-    _x19 = _P0*_x10
-    _x20 = _P0__tan*_x19
-    _x21 = _x4*(-3.0*_x13*_x170**4 - k_c)
-    _x22 = 0.9713052300453587*_D + _x0
-    _x23 = -_x22
-    _x171 = (1.0/_x23)
-    _x24 = -0.9713052300453587*_D__tan - _x3
-    _x25 = math.cos(_Q1)
-    _x26 = _x25*_x7
-    _x27 = _x23*k_c
-    _x28 = _x171**3
-    _x29 = _P1**2
-    _x30 = _x12*_x29
-    _x31 = _x28*_x30
-    _x32 = math.sin(_Q1)
-    _x33 = _Q1__tan*_x32*_x7
-    _x34 = k_c__tan*(_x22 + l0)
-    _x35 = _P1*_x28
-    _x36 = _P1__tan*_x35
-    _x37 = _x24*(-3.0*_x171**4*_x30 - k_c)
-    _x38 = 0.8550748140498466*_D + _x0
-    _x39 = -_x38
-    _x172 = (1.0/_x39)
-    _x40 = -0.8550748140498466*_D__tan - _x3
-    _x41 = math.cos(_Q2)
-    _x42 = _x41*_x7
-    _x43 = _x39*k_c
-    _x44 = _x172**3
-    _x45 = _P2**2
-    _x46 = _x12*_x45
-    _x47 = _x44*_x46
-    _x48 = math.sin(_Q2)
-    _x49 = _Q2__tan*_x48*_x7
-    _x50 = k_c__tan*(_x38 + l0)
-    _x51 = _P2*_x44
-    _x52 = _P2__tan*_x51
-    _x53 = _x40*(-3.0*_x172**4*_x46 - k_c)
-    _x54 = 0.6164556279666497*_D + _x0
-    _x55 = -_x54
-    _x173 = (1.0/_x55)
-    _x56 = -0.6164556279666497*_D__tan - _x3
-    _x57 = math.cos(_Q3)
-    _x58 = _x57*_x7
-    _x59 = _x55*k_c
-    _x60 = _x173**3
-    _x61 = _P3**2
-    _x62 = _x12*_x61
-    _x63 = _x60*_x62
-    _x64 = math.sin(_Q3)
-    _x65 = _Q3__tan*_x64*_x7
-    _x66 = k_c__tan*(_x54 + l0)
-    _x67 = _P3*_x60
-    _x68 = _P3__tan*_x67
-    _x69 = _x56*(-3.0*_x173**4*_x62 - k_c)
-    _x70 = 0.31009584357909425*_D + _x0
-    _x71 = -_x70
-    _x174 = (1.0/_x71)
-    _x72 = -0.31009584357909425*_D__tan - _x3
-    _x73 = math.cos(_Q4)
-    _x74 = _x7*_x73
-    _x75 = _x71*k_c
-    _x76 = _x174**3
-    _x77 = _P4**2
-    _x78 = _x12*_x77
-    _x79 = _x76*_x78
-    _x80 = math.sin(_Q4)
-    _x81 = _Q4__tan*_x7*_x80
-    _x82 = k_c__tan*(_x70 + l0)
-    _x83 = _P4*_x76
-    _x84 = _P4__tan*_x83
-    _x85 = _x72*(-3.0*_x174**4*_x78 - k_c)
-    _x86 = 0.0663903941688584*_D + _x0
-    _x87 = -_x86
-    _x175 = (1.0/_x87)
-    _x88 = -0.0663903941688584*_D__tan - _x3
-    _x89 = math.cos(_Q5)
-    _x90 = _x7*_x89
-    _x91 = _x87*k_c
-    _x92 = _x175**3
-    _x93 = _P5**2
-    _x94 = _x12*_x93
-    _x95 = _x92*_x94
-    _x96 = math.sin(_Q5)
-    _x97 = _Q5__tan*_x7*_x96
-    _x98 = k_c__tan*(_x86 + l0)
-    _x99 = _P5*_x92
-    _x100 = _P5__tan*_x99
-    _x101 = _x88*(-3.0*_x175**4*_x94 - k_c)
-    _x102 = 0.5871580340658094*_x14 + 0.140380692261653*_x26 + 0.140380692261653*_x27 - 0.140380692261653*_x31 - 0.08683151831711133*_x42 - 0.08683151831711133*_x43 + 0.08683151831711133*_x47 + 0.5*_x5 + 0.052466581536012566*_x58 + 0.052466581536012566*_x59 - 0.052466581536012566*_x63 - 0.026354606039126004*_x74 - 0.026354606039126004*_x75 + 0.026354606039126004*_x79 - 0.5871580340658094*_x8 - 0.5871580340658094*_x9 + 0.007496884624381081*_x90 + 0.007496884624381081*_x91 - 0.007496884624381081*_x95
-    _x103 = _x12*_x20
-    _x104 = _x12*_x36
-    _x105 = _x12*_x52
-    _x106 = _x12*_x68
-    _x107 = _x12*_x84
-    _x108 = _x100*_x12
-    _x109 = -0.007496884624381081*_x101 + 1.1743160681316187*_x103 - 0.280761384523306*_x104 + 0.17366303663422267*_x105 - 0.10493316307202513*_x106 + 0.05270921207825201*_x107 - 0.014993769248762162*_x108 + 0.5871580340658094*_x16 + 0.5871580340658094*_x17 + 0.5871580340658094*_x21 - 0.140380692261653*_x33 - 0.140380692261653*_x34 - 0.140380692261653*_x37 + 0.08683151831711133*_x49 + 0.08683151831711133*_x50 + 0.08683151831711133*_x53 - 0.052466581536012566*_x65 - 0.052466581536012566*_x66 - 0.052466581536012566*_x69 + 0.026354606039126004*_x81 + 0.026354606039126004*_x82 + 0.026354606039126004*_x85 - 0.007496884624381081*_x97 - 0.007496884624381081*_x98
-    _x110 = (1.0/math.sqrt(_x102))
-    _x111 = math.sqrt(_D)
-    _x112 = math.sqrt(m)
-    _x113 = _x111*_x112
-    _x114 = (1.0/_x111)
-    _x115 = (0.5)*_x113
-    _x116 = _x109/_x102**(1.5)
-    _x117 = _x170**2
-    _x118 = (1.0/_x112)
-    _x119 = _x111*_x118
-    _x120 = _x110*_x119
-    _x121 = (0.5)*_x119
-    _x122 = g_s*m**(1.5)
-    _x123 = _x111*_x122
-    _x124 = _x110*_x123*_x15
-    _x125 = _x110*_x2
-    _x126 = (0.5)*_D__tan*_x114*_x122
-    _x127 = (0.5)*_x123
-    _x128 = -0.5*k_c*l0
-    _x129 = 0.147790320897128*_x10*_x11*_x12 + 0.41567911405660357*_x12*_x28*_x29 + 0.05155355009455148*_x12*_x60*_x61 + 0.006904529857608445*_x12*_x92*_x93 - _x128 - 0.41567911405660357*_x26 - 0.41567911405660357*_x27 + 0.09720828549085844*_x39*k_c + 0.09720828549085844*_x41*g_s*m - 0.09720828549085844*_x47 - 0.05155355009455148*_x58 - 0.05155355009455148*_x59 + 0.024719229415033087*_x71*k_c + 0.024719229415033087*_x73*g_s*m - 0.024719229415033087*_x79 - 0.147790320897128*_x8 - 0.147790320897128*_x9 - 0.006904529857608445*_x90 - 0.006904529857608445*_x91
-    _x130 = 0.006904529857608445*_x101 + 0.295580641794256*_x103 + 0.8313582281132071*_x104 - 0.19441657098171689*_x105 + 0.10310710018910296*_x106 - 0.04943845883006617*_x107 + 0.01380905971521689*_x108 + 0.147790320897128*_x16 + 0.147790320897128*_x17 + 0.147790320897128*_x21 + 0.41567911405660357*_x33 + 0.41567911405660357*_x34 + 0.41567911405660357*_x37 - 0.09720828549085844*_x49 - 0.09720828549085844*_x50 - 0.09720828549085844*_x53 + 0.05155355009455148*_x65 + 0.05155355009455148*_x66 + 0.05155355009455148*_x69 - 0.024719229415033087*_x81 - 0.024719229415033087*_x82 - 0.024719229415033087*_x85 + 0.006904529857608445*_x97 + 0.006904529857608445*_x98
-    _x131 = (1.0/math.sqrt(_x129))
-    _x132 = _x130/_x129**(1.5)
-    _x133 = _x171**2
-    _x134 = _x119*_x131
-    _x135 = _x123*_x131*_x32
-    _x136 = _x131*_x23
-    _x137 = 0.010443786721981197*_x10*_x11*_x12 + 0.25540525119175433*_x12*_x28*_x29 + 0.2685463444140672*_x12*_x44*_x45 + 0.01951903325298492*_x12*_x76*_x77 - _x128 - 0.25540525119175433*_x26 - 0.25540525119175433*_x27 - 0.2685463444140672*_x42 - 0.2685463444140672*_x43 + 0.048794612428541204*_x55*k_c + 0.048794612428541204*_x57*g_s*m - 0.048794612428541204*_x63 - 0.01951903325298492*_x74 - 0.01951903325298492*_x75 - 0.010443786721981197*_x8 + 0.005119803152246505*_x87*k_c + 0.005119803152246505*_x89*g_s*m - 0.010443786721981197*_x9 - 0.005119803152246505*_x95
-    _x138 = -0.005119803152246505*_x101 + 0.020887573443962394*_x103 + 0.5108105023835087*_x104 + 0.5370926888281344*_x105 - 0.09758922485708241*_x106 + 0.03903806650596984*_x107 - 0.01023960630449301*_x108 + 0.010443786721981197*_x16 + 0.010443786721981197*_x17 + 0.010443786721981197*_x21 + 0.25540525119175433*_x33 + 0.25540525119175433*_x34 + 0.25540525119175433*_x37 + 0.2685463444140672*_x49 + 0.2685463444140672*_x50 + 0.2685463444140672*_x53 - 0.048794612428541204*_x65 - 0.048794612428541204*_x66 - 0.048794612428541204*_x69 + 0.01951903325298492*_x81 + 0.01951903325298492*_x82 + 0.01951903325298492*_x85 - 0.005119803152246505*_x97 - 0.005119803152246505*_x98
-    _x139 = (1.0/math.sqrt(_x137))
-    _x140 = _x138/_x137**(1.5)
-    _x141 = _x172**2
-    _x142 = _x119*_x139
-    _x143 = _x123*_x139*_x48
-    _x144 = _x139*_x39
-    _x145 = -0.5*k_c*l0
-    _x146 = 0.01101839635505667*_x10*_x11*_x12 + 0.0662099828438604*_x12*_x28*_x29 + 0.2671819482314443*_x12*_x44*_x45 + 0.1742495636223592*_x12*_x60*_x61 + 0.00530703852813994*_x12*_x92*_x93 - _x145 - 0.0662099828438604*_x26 - 0.0662099828438604*_x27 - 0.2671819482314443*_x42 - 0.2671819482314443*_x43 - 0.1742495636223592*_x58 - 0.1742495636223592*_x59 + 0.02396692958086051*_x71*k_c + 0.02396692958086051*_x73*g_s*m - 0.02396692958086051*_x79 - 0.01101839635505667*_x8 - 0.01101839635505667*_x9 - 0.00530703852813994*_x90 - 0.00530703852813994*_x91
-    _x147 = 0.00530703852813994*_x101 + 0.02203679271011334*_x103 + 0.1324199656877208*_x104 + 0.5343638964628886*_x105 + 0.3484991272447184*_x106 - 0.04793385916172102*_x107 + 0.01061407705627988*_x108 + 0.01101839635505667*_x16 + 0.01101839635505667*_x17 + 0.01101839635505667*_x21 + 0.0662099828438604*_x33 + 0.0662099828438604*_x34 + 0.0662099828438604*_x37 + 0.2671819482314443*_x49 + 0.2671819482314443*_x50 + 0.2671819482314443*_x53 + 0.1742495636223592*_x65 + 0.1742495636223592*_x66 + 0.1742495636223592*_x69 - 0.02396692958086051*_x81 - 0.02396692958086051*_x82 - 0.02396692958086051*_x85 + 0.00530703852813994*_x97 + 0.00530703852813994*_x98
-    _x148 = (1.0/math.sqrt(_x146))
-    _x149 = _x147/_x146**(1.5)
-    _x150 = _x173**2
-    _x151 = _x119*_x148
-    _x152 = _x123*_x148*_x64
-    _x153 = _x148*_x55
-    _x154 = 0.0025147977064533143*_x10*_x11*_x12 + 0.050345455482979015*_x12*_x28*_x29 + 0.11622097556712797*_x12*_x44*_x45 + 0.2353986790647292*_x12*_x60*_x61 + 0.10372825048336794*_x12*_x76*_x77 - _x128 - 0.050345455482979015*_x26 - 0.050345455482979015*_x27 - 0.11622097556712797*_x42 - 0.11622097556712797*_x43 - 0.2353986790647292*_x58 - 0.2353986790647292*_x59 - 0.10372825048336794*_x74 - 0.10372825048336794*_x75 - 0.0025147977064533143*_x8 + 0.008208158304657426*_x87*k_c + 0.008208158304657426*_x89*g_s*m - 0.0025147977064533143*_x9 - 0.008208158304657426*_x95
-    _x155 = -0.008208158304657426*_x101 + 0.005029595412906629*_x103 + 0.10069091096595803*_x104 + 0.23244195113425595*_x105 + 0.4707973581294584*_x106 + 0.20745650096673587*_x107 - 0.016416316609314852*_x108 + 0.0025147977064533143*_x16 + 0.0025147977064533143*_x17 + 0.0025147977064533143*_x21 + 0.050345455482979015*_x33 + 0.050345455482979015*_x34 + 0.050345455482979015*_x37 + 0.11622097556712797*_x49 + 0.11622097556712797*_x50 + 0.11622097556712797*_x53 + 0.2353986790647292*_x65 + 0.2353986790647292*_x66 + 0.2353986790647292*_x69 + 0.10372825048336794*_x81 + 0.10372825048336794*_x82 + 0.10372825048336794*_x85 - 0.008208158304657426*_x97 - 0.008208158304657426*_x98
-    _x156 = (1.0/math.sqrt(_x154))
-    _x157 = _x155/_x154**(1.5)
-    _x158 = _x174**2
-    _x159 = _x119*_x156
-    _x160 = _x123*_x156*_x80
-    _x161 = _x156*_x71
-    _x162 = 0.003959513229722528*_x10*_x11*_x12 + 0.029703284805013122*_x12*_x28*_x29 + 0.10140664131431479*_x12*_x44*_x45 + 0.14531313573962065*_x12*_x60*_x61 + 0.17612158869639333*_x12*_x76*_x77 + 0.04349583621493557*_x12*_x92*_x93 - _x145 - 0.029703284805013122*_x26 - 0.029703284805013122*_x27 - 0.10140664131431479*_x42 - 0.10140664131431479*_x43 - 0.14531313573962065*_x58 - 0.14531313573962065*_x59 - 0.17612158869639333*_x74 - 0.17612158869639333*_x75 - 0.003959513229722528*_x8 - 0.003959513229722528*_x9 - 0.04349583621493557*_x90 - 0.04349583621493557*_x91
-    _x163 = 0.04349583621493557*_x101 + 0.007919026459445056*_x103 + 0.059406569610026244*_x104 + 0.20281328262862958*_x105 + 0.2906262714792413*_x106 + 0.35224317739278665*_x107 + 0.08699167242987114*_x108 + 0.003959513229722528*_x16 + 0.003959513229722528*_x17 + 0.003959513229722528*_x21 + 0.029703284805013122*_x33 + 0.029703284805013122*_x34 + 0.029703284805013122*_x37 + 0.10140664131431479*_x49 + 0.10140664131431479*_x50 + 0.10140664131431479*_x53 + 0.14531313573962065*_x65 + 0.14531313573962065*_x66 + 0.14531313573962065*_x69 + 0.17612158869639333*_x81 + 0.17612158869639333*_x82 + 0.17612158869639333*_x85 + 0.04349583621493557*_x97 + 0.04349583621493557*_x98
-    _x164 = (1.0/math.sqrt(_x162))
-    _x165 = _x163/_x162**(1.5)
-    _x166 = _x175**2
-    _x167 = _x119*_x164
-    _x168 = _x123*_x164*_x96
-    _x169 = _x164*_x87
-    _fsigma0 = _x2
-    _fsigma0__tan = _x4
-    _fF0 = _x14 + _x5 - _x8 - _x9
-    _fF0__tan = _x16 + _x17 + _x18*_x20 + _x21
-    _fsigma1 = _x23
-    _fsigma1__tan = _x24
-    _fF1 = -_x26 - _x27 + _x31 + _x5
-    _fF1__tan = _x18*_x36 + _x33 + _x34 + _x37
-    _fsigma2 = _x39
-    _fsigma2__tan = _x40
-    _fF2 = -_x42 - _x43 + _x47 + _x5
-    _fF2__tan = _x18*_x52 + _x49 + _x50 + _x53
-    _fsigma3 = _x55
-    _fsigma3__tan = _x56
-    _fF3 = _x5 - _x58 - _x59 + _x63
-    _fF3__tan = _x18*_x68 + _x65 + _x66 + _x69
-    _fsigma4 = _x71
-    _fsigma4__tan = _x72
-    _fF4 = _x5 - _x74 - _x75 + _x79
-    _fF4__tan = _x18*_x84 + _x81 + _x82 + _x85
-    _fsigma5 = _x87
-    _fsigma5__tan = _x88
-    _fF5 = _x5 - _x90 - _x91 + _x95
-    _fF5__tan = _x100*_x18 + _x101 + _x97 + _x98
-    _fPsi0 = _x102
-    _fPsi0__tan = _x109
-    _fft0 = _x110*_x113
-    _fft0__tan = (0.5)*_D__tan*_x110*_x112*_x114 - _x115*_x116
-    _ffq0 = _P0*_x117*_x120
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x110*_x114*_x117*_x118 - _P0*_x116*_x117*_x121 + _P0__tan*_x110*_x111*_x117*_x118 - 2.0*_x120*_x19*_x4
-    _ffp0 = _x124*_x2
-    _ffp0__tan = _Q0__tan*_x123*_x125*_x6 - _x116*_x127*_x15*_x2 + _x124*_x4 + _x125*_x126*_x15
-    _fPsi1 = _x129
-    _fPsi1__tan = _x130
-    _fft1 = _x113*_x131
-    _fft1__tan = (0.5)*_D__tan*_x112*_x114*_x131 - _x115*_x132
-    _ffq1 = _P1*_x133*_x134
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x114*_x118*_x131*_x133 - _P1*_x121*_x132*_x133 + _P1__tan*_x111*_x118*_x131*_x133 - 2.0*_x134*_x24*_x35
-    _ffp1 = _x135*_x23
-    _ffp1__tan = _Q1__tan*_x123*_x136*_x25 + _x126*_x136*_x32 - _x127*_x132*_x23*_x32 + _x135*_x24
-    _fPsi2 = _x137
-    _fPsi2__tan = _x138
-    _fft2 = _x113*_x139
-    _fft2__tan = (0.5)*_D__tan*_x112*_x114*_x139 - _x115*_x140
-    _ffq2 = _P2*_x141*_x142
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x114*_x118*_x139*_x141 - _P2*_x121*_x140*_x141 + _P2__tan*_x111*_x118*_x139*_x141 - 2.0*_x142*_x40*_x51
-    _ffp2 = _x143*_x39
-    _ffp2__tan = _Q2__tan*_x123*_x144*_x41 + _x126*_x144*_x48 - _x127*_x140*_x39*_x48 + _x143*_x40
-    _fPsi3 = _x146
-    _fPsi3__tan = _x147
-    _fft3 = _x113*_x148
-    _fft3__tan = (0.5)*_D__tan*_x112*_x114*_x148 - _x115*_x149
-    _ffq3 = _P3*_x150*_x151
-    _ffq3__tan = (0.5)*_D__tan*_P3*_x114*_x118*_x148*_x150 - _P3*_x121*_x149*_x150 + _P3__tan*_x111*_x118*_x148*_x150 - 2.0*_x151*_x56*_x67
-    _ffp3 = _x152*_x55
-    _ffp3__tan = _Q3__tan*_x123*_x153*_x57 + _x126*_x153*_x64 - _x127*_x149*_x55*_x64 + _x152*_x56
-    _fPsi4 = _x154
-    _fPsi4__tan = _x155
-    _fft4 = _x113*_x156
-    _fft4__tan = (0.5)*_D__tan*_x112*_x114*_x156 - _x115*_x157
-    _ffq4 = _P4*_x158*_x159
-    _ffq4__tan = (0.5)*_D__tan*_P4*_x114*_x118*_x156*_x158 - _P4*_x121*_x157*_x158 + _P4__tan*_x111*_x118*_x156*_x158 - 2.0*_x159*_x72*_x83
-    _ffp4 = _x160*_x71
-    _ffp4__tan = _Q4__tan*_x123*_x161*_x73 + _x126*_x161*_x80 - _x127*_x157*_x71*_x80 + _x160*_x72
-    _fPsi5 = _x162
-    _fPsi5__tan = _x163
-    _fft5 = _x113*_x164
-    _fft5__tan = (0.5)*_D__tan*_x112*_x114*_x164 - _x115*_x165
-    _ffq5 = _P5*_x166*_x167
-    _ffq5__tan = (0.5)*_D__tan*_P5*_x114*_x118*_x164*_x166 - _P5*_x121*_x165*_x166 + _P5__tan*_x111*_x118*_x164*_x166 - 2.0*_x167*_x88*_x99
-    _ffp5 = _x168*_x87
-    _ffp5__tan = _Q5__tan*_x123*_x169*_x89 + _x126*_x169*_x96 - _x127*_x165*_x87*_x96 + _x168*_x88
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi3 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi4 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi5 > 0.0)):
-        return _NAN22 + (STATUS_IMAGINARY_MOMENTUM,)
+    # Total ops: 96
     # bottom state
-    _x176 = -_D + q_r
-    _x186 = (1.0/_x176)
-    _x177 = -_D__tan + q_r__tan
-    _x178 = q_r**2
-    _x179 = 0.08566224618958518*_ffp0 + 0.1803807865240693*_ffp1 + 0.23395696728634552*_ffp2 + 0.23395696728634552*_ffp3 + 0.1803807865240693*_ffp4 + 0.08566224618958518*_ffp5 + _x178*m*q_thd
-    _x180 = (1.0/m)
-    _x181 = _x186**2
-    _x182 = _x180*_x181
-    _x183 = 0.08566224618958518*_x182
-    _x184 = 0.1803807865240693*_x182
-    _x185 = 0.23395696728634552*_x182
-    t_half = 0.08566224618958518*_fft0 + 0.1803807865240693*_fft1 + 0.23395696728634552*_fft2 + 0.23395696728634552*_fft3 + 0.1803807865240693*_fft4 + 0.08566224618958518*_fft5
-    t_half__tan = 0.08566224618958518*_fft0__tan + 0.1803807865240693*_fft1__tan + 0.23395696728634552*_fft2__tan + 0.23395696728634552*_fft3__tan + 0.1803807865240693*_fft4__tan + 0.08566224618958518*_fft5__tan
-    end_q_th = 0.08566224618958518*_ffq0 + 0.1803807865240693*_ffq1 + 0.23395696728634552*_ffq2 + 0.23395696728634552*_ffq3 + 0.1803807865240693*_ffq4 + 0.08566224618958518*_ffq5 + q_th
-    end_q_th__tan = 0.08566224618958518*_ffq0__tan + 0.1803807865240693*_ffq1__tan + 0.23395696728634552*_ffq2__tan + 0.23395696728634552*_ffq3__tan + 0.1803807865240693*_ffq4__tan + 0.08566224618958518*_ffq5__tan + q_th__tan
-    end_q_r = _x176
-    end_q_r__tan = _x177
+    _x0 = -_D + q_r
+    _x10 = (1.0/_x0)
+    _x1 = -_D__tan + q_r__tan
+    _x2 = q_r**2
+    _x3 = 0.08566224618958518*_ifp0 + 0.1803807865240693*_ifp1 + 0.23395696728634552*_ifp2 + 0.23395696728634552*_ifp3 + 0.1803807865240693*_ifp4 + 0.08566224618958518*_ifp5 + _x2*m*q_thd
+    _x4 = (1.0/m)
+    _x5 = _x10**2
+    _x6 = _x4*_x5
+    _x7 = 0.08566224618958518*_x6
+    _x8 = 0.1803807865240693*_x6
+    _x9 = 0.23395696728634552*_x6
+    t_half = 0.08566224618958518*_ift0 + 0.1803807865240693*_ift1 + 0.23395696728634552*_ift2 + 0.23395696728634552*_ift3 + 0.1803807865240693*_ift4 + 0.08566224618958518*_ift5
+    t_half__tan = 0.08566224618958518*_ift0__tan + 0.1803807865240693*_ift1__tan + 0.23395696728634552*_ift2__tan + 0.23395696728634552*_ift3__tan + 0.1803807865240693*_ift4__tan + 0.08566224618958518*_ift5__tan
+    end_q_th = 0.08566224618958518*_ifq0 + 0.1803807865240693*_ifq1 + 0.23395696728634552*_ifq2 + 0.23395696728634552*_ifq3 + 0.1803807865240693*_ifq4 + 0.08566224618958518*_ifq5 + q_th
+    end_q_th__tan = 0.08566224618958518*_ifq0__tan + 0.1803807865240693*_ifq1__tan + 0.23395696728634552*_ifq2__tan + 0.23395696728634552*_ifq3__tan + 0.1803807865240693*_ifq4__tan + 0.08566224618958518*_ifq5__tan + q_th__tan
+    end_q_r = _x0
+    end_q_r__tan = _x1
     end_q_rd = 0.0
-    end_q_thd = _x179*_x182
-    end_q_thd__tan = _ffp0__tan*_x183 + _ffp1__tan*_x184 + _ffp2__tan*_x185 + _ffp3__tan*_x185 + _ffp4__tan*_x184 + _ffp5__tan*_x183 - 2.0*_x177*_x179*_x180*_x186**3 + _x178*_x181*q_thd__tan + 2.0*_x181*q_r*q_r__tan*q_thd
+    end_q_thd = _x3*_x6
+    end_q_thd__tan = _ifp0__tan*_x7 + _ifp1__tan*_x8 + _ifp2__tan*_x9 + _ifp3__tan*_x9 + _ifp4__tan*_x8 + _ifp5__tan*_x7 - 2.0*_x1*_x10**3*_x3*_x4 + _x2*_x5*q_thd__tan + 2.0*_x5*q_r*q_r__tan*q_thd
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
-        return _NAN22 + (STATUS_FALL,)
+        return _NAN10 + (STATUS_FALL,)
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3015,18 +2360,18 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         t_half: result for the caller
         t_half__tan: result for the caller
         end_q_th: result for the caller
@@ -3069,12 +2414,19 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
     _P5__tan = 0.03376524289842399*guess_q_r**2*guess_q_thd__tan*m + 0.06753048579684798*guess_q_r*guess_q_r__tan*guess_q_thd*m + 0.966234757101576*m*q_r**2*q_thd__tan + 1.932469514203152*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN29 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[26] != STATUS_OK:
-            return _NAN29 + (_c0[26],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
+        if _c0[68] != STATUS_OK:
+            return _NAN29 + (_c0[68],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _ift4, _ift4__tan, _ifq4, _ifq4__tan, _ifp4, _ifp4__tan, _ift5, _ift5__tan, _ifq5, _ifq5__tan, _ifp5, _ifp5__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -3131,17 +2483,13 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _P4__tan = _n0_24
         _P5__tan = _n0_25
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN29 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[22] != STATUS_OK:
-        return _NAN29 + (_c1[22],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_13(_D, _D__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifp4, _ifp4__tan, _ifp5, _ifp5__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ifq4, _ifq4__tan, _ifq5, _ifq5__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _ift4, _ift4__tan, _ift5, _ift5__tan, _passes, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[10] != STATUS_OK:
+        return _NAN29 + (_c1[10],)
+    (t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3205,31 +2553,31 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
         _c0 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_2(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c0[29] != STATUS_OK:
             return _NAN12 + (_c0[29],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c0
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_5(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c1[29] != STATUS_OK:
             return _NAN12 + (_c1[29],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_8(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c2[29] != STATUS_OK:
             return _NAN12 + (_c2[29],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c2
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_11(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c3[29] != STATUS_OK:
             return _NAN12 + (_c3[29],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c3
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q_thd_14(g_s, guess_q_r, guess_q_r__tan, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_c, k_c__tan, l0, m, q_r, q_r__tan, q_rd, q_rd__tan, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c4[29] != STATUS_OK:
             return _NAN12 + (_c4[29],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c4
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_r__tan, end_q_rd, end_q_thd, end_q_thd__tan, passes, _) = _c4
     else:
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero
@@ -3241,7 +2589,7 @@ def schwind_compression_jvp_q_r_q_rd_q_th_q_thd_k_c_guess_q_r_guess_q_th_guess_q
 
 @njit(cache=True, error_model="numpy")
 def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -3265,6 +2613,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_P0: result for the caller
@@ -3323,7 +2683,7 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_
     _ifp0__tan = (0.5)*_D__tan*_x21*_x22*_x32 + _Q0__tan*_x25*_x3*_x31 + _x1*_x30 - _x23*_x32
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x34 = m*q_r**2
     _next_D = _D
@@ -3333,11 +2693,11 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_
     _next_Q0__tan = 0.5*_ifq0__tan + q_th__tan
     _next_P0__tan = 0.5*_ifp0__tan + _x34*q_thd__tan + 2.0*m*q_r*q_r__tan*q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_D, _D__tan, _iF0, _iF0__tan, _ifp0, _ifp0__tan, _ifq0, _ifq0__tan, _ift0, _ift0__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -3345,15 +2705,15 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
+        _iF0: value of the caller's variable
+        _iF0__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -3364,18 +2724,6 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -3390,79 +2738,29 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 156
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.25*_D + q_r
-    _x33 = (1.0/_x0)
-    _x1 = 0.25*_D__tan + q_r__tan
-    _x2 = k_d*l0
-    _x3 = math.cos(_Q0)
-    _x4 = g_s*m
-    _x5 = _x3*_x4
-    _x6 = _x0*k_d
-    _x7 = _x33**3
-    _x8 = (1.0/m)
-    _x9 = _P0**2*_x8
-    _x10 = _x7*_x9
-    _x11 = math.sin(_Q0)
-    _x12 = _Q0__tan*_x11*_x4
-    _x13 = k_d__tan*(-_x0 + l0)
-    _x14 = 2.0*_P0*_x7
-    _x15 = _P0__tan*_x8
-    _x16 = _x1*(-3.0*_x33**4*_x9 - k_d)
-    _x17 = 0.5*_x10 + 0.5*_x2 - 0.5*_x5 - 0.5*_x6
-    _x18 = 1.0*_P0*_x15*_x7 + 0.5*_x12 + 0.5*_x13 + 0.5*_x16
-    _x19 = math.sqrt(_D)
-    _x20 = math.sqrt(m)
-    _x21 = (1.0/math.sqrt(_x17))
-    _x22 = (1.0/_x19)
-    _x23 = (0.5)*_x18*_x19/_x17**(1.5)
-    _x24 = (1.0/_x20)
-    _x25 = _x19*_x21
-    _x26 = _x24*_x25
-    _x27 = _x33**2
-    _x28 = _P0*_x27
-    _x29 = m**(1.5)
-    _x30 = _x11*_x25*_x29*g_s
-    _x31 = _x0*_x29*g_s
-    _x32 = _x11*_x31
-    _fsigma0 = _x0
-    _fsigma0__tan = _x1
-    _fF0 = _x10 + _x2 - _x5 - _x6
-    _fF0__tan = _x12 + _x13 + _x14*_x15 + _x16
-    _fPsi0 = _x17
-    _fPsi0__tan = _x18
-    _fft0 = _x19*_x20*_x21
-    _fft0__tan = (0.5)*_D__tan*_x20*_x21*_x22 - _x20*_x23
-    _ffq0 = _x26*_x28
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x21*_x22*_x24*_x27 + _P0__tan*_x19*_x21*_x24*_x27 - _x1*_x14*_x26 - _x23*_x24*_x28
-    _ffp0 = _x0*_x30
-    _ffp0__tan = (0.5)*_D__tan*_x21*_x22*_x32 + _Q0__tan*_x25*_x3*_x31 + _x1*_x30 - _x23*_x32
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    _work = 0.5*_fF0
-    _work__tan = 0.5*_fF0__tan
+    # Total ops: 39
+    _work = 0.5*_iF0
+    _work__tan = 0.5*_iF0__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return _NAN24 + (STATUS_NO_LIFTOFF,)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-    _x34 = math.sqrt(_D*_work)/math.sqrt(m)
-    _x35 = q_r**2
-    _x36 = q_r_lo**-2
-    _x37 = _x36/m
-    t_half = 1.0*_fft0
-    t_half__tan = 1.0*_fft0__tan
-    end_q_th = 1.0*_ffq0 + q_th
-    end_q_th__tan = 1.0*_ffq0__tan + q_th__tan
+    _x0 = math.sqrt(_D*_work)/math.sqrt(m)
+    _x1 = q_r**2
+    _x2 = q_r_lo**-2
+    _x3 = _x2/m
+    t_half = 1.0*_ift0
+    t_half__tan = 1.0*_ift0__tan
+    end_q_th = 1.0*_ifq0 + q_th
+    end_q_th__tan = 1.0*_ifq0__tan + q_th__tan
     end_q_r = q_r_lo
-    end_q_rd = 2.0*_x34
-    end_q_rd__tan = _work__tan*_x34/_work + _D__tan*_x34/_D
-    end_q_thd = _x37*(1.0*_ffp0 + _x35*m*q_thd)
-    end_q_thd__tan = 1.0*_ffp0__tan*_x37 + _x35*_x36*q_thd__tan + 2.0*_x36*q_r*q_r__tan*q_thd
+    end_q_rd = 2.0*_x0
+    end_q_rd__tan = _work__tan*_x0/_work + _D__tan*_x0/_D
+    end_q_thd = _x3*(1.0*_ifp0 + _x1*m*q_thd)
+    end_q_thd__tan = 1.0*_ifp0__tan*_x3 + _x1*_x2*q_thd__tan + 2.0*_x2*q_r*q_r__tan*q_thd
     passes = _passes
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3499,18 +2797,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -3535,17 +2833,19 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g
     _P0__tan = 0.5*guess_q_thd__tan*m*q_r_lo**2 + 0.5*m*q_r**2*q_thd__tan + 1.0*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN31 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[6] != STATUS_OK:
-            return _NAN31 + (_c0[6],)
-        _next_D = _c0[0]
-        _next_Q0 = _c0[1]
-        _next_P0 = _c0[2]
-        _next_D__tan = _c0[3]
-        _next_Q0__tan = _c0[4]
-        _next_P0__tan = _c0[5]
+        if _c0[18] != STATUS_OK:
+            return _NAN31 + (_c0[18],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _next_D, _next_Q0, _next_P0, _next_D__tan, _next_Q0__tan, _next_P0__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_P0
@@ -3562,22 +2862,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g
         _Q0__tan = _n0_4
         _P0__tan = _n0_5
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_D, _D__tan, _P0, _P0__tan, _Q0, _Q0__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[24] != STATUS_OK:
-        return _NAN31 + (_c1[24],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(_D, _D__tan, _iF0, _iF0__tan, _ifp0, _ifp0__tan, _ifq0, _ifq0__tan, _ift0, _ift0__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[12] != STATUS_OK:
+        return _NAN31 + (_c1[12],)
+    (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -3605,6 +2901,26 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iF1: result for the caller
+        _iF1__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -3712,10 +3028,10 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_
     _ifp1__tan = _Q1__tan*_x22*_x52*_x64 - _x20*_x29*_x56*_x60 + _x21*_x63 + _x29*_x55*_x64
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x67 = m*q_r**2
     _x68 = _x67*q_thd
@@ -3731,11 +3047,11 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_
     _next_P0__tan = 0.25*_ifp0__tan - 0.03867513459481288*_ifp1__tan + _x69
     _next_P1__tan = 0.5386751345948129*_ifp0__tan + 0.25*_ifp1__tan + _x69
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -3743,19 +3059,23 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
+        _iF0: value of the caller's variable
+        _iF0__tan: value of the caller's variable
+        _iF1: value of the caller's variable
+        _iF1__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -3766,18 +3086,6 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -3792,128 +3100,30 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 311
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.04465819873852045*_D + q_r
-    _x65 = (1.0/_x0)
-    _x1 = 0.04465819873852045*_D__tan + q_r__tan
-    _x2 = k_d*l0
-    _x3 = math.cos(_Q0)
-    _x4 = g_s*m
-    _x5 = _x3*_x4
-    _x6 = _x0*k_d
-    _x7 = _x65**3
-    _x8 = _P0**2
-    _x9 = (1.0/m)
-    _x10 = _x8*_x9
-    _x11 = _x10*_x7
-    _x12 = math.sin(_Q0)
-    _x13 = _Q0__tan*_x12*_x4
-    _x14 = -l0
-    _x15 = k_d__tan*(-_x0 - _x14)
-    _x16 = 2.0*_x9
-    _x17 = _P0*_x7
-    _x18 = _P0__tan*_x17
-    _x19 = _x1*(-3.0*_x10*_x65**4 - k_d)
-    _x20 = 0.6220084679281462*_D + q_r
-    _x66 = (1.0/_x20)
-    _x21 = 0.6220084679281462*_D__tan + q_r__tan
-    _x22 = math.cos(_Q1)
-    _x23 = _x22*_x4
-    _x24 = _x20*k_d
-    _x25 = _x66**3
-    _x26 = _P1**2
-    _x27 = _x26*_x9
-    _x28 = _x25*_x27
-    _x29 = math.sin(_Q1)
-    _x30 = _Q1__tan*_x29*_x4
-    _x31 = k_d__tan*(-_x14 - _x20)
-    _x32 = _P1*_x25
-    _x33 = _P1__tan*_x32
-    _x34 = _x21*(-3.0*_x27*_x66**4 - k_d)
-    _x35 = 0.5610042339640731*_x11 + 0.5*_x2 + 0.06100423396407311*_x23 + 0.06100423396407311*_x24 - 0.06100423396407311*_x28 - 0.5610042339640731*_x5 - 0.5610042339640731*_x6
-    _x36 = _x18*_x9
-    _x37 = _x33*_x9
-    _x38 = 0.5610042339640731*_x13 + 0.5610042339640731*_x15 + 0.5610042339640731*_x19 - 0.06100423396407311*_x30 - 0.06100423396407311*_x31 - 0.06100423396407311*_x34 + 1.1220084679281461*_x36 - 0.12200846792814622*_x37
-    _x39 = (1.0/math.sqrt(_x35))
-    _x40 = math.sqrt(_D)
-    _x41 = math.sqrt(m)
-    _x42 = _x40*_x41
-    _x43 = (1.0/_x40)
-    _x44 = (0.5)*_x42
-    _x45 = _x38/_x35**(1.5)
-    _x46 = _x65**2
-    _x47 = (1.0/_x41)
-    _x48 = _x40*_x47
-    _x49 = _x39*_x48
-    _x50 = (0.5)*_x48
-    _x51 = g_s*m**(1.5)
-    _x52 = _x40*_x51
-    _x53 = _x12*_x39*_x52
-    _x54 = _x0*_x39
-    _x55 = (0.5)*_D__tan*_x43*_x51
-    _x56 = (0.5)*_x52
-    _x57 = -0.27232909936926025*_x23 - 0.27232909936926025*_x24 + 0.27232909936926025*_x25*_x26*_x9 - 0.22767090063073978*_x5 - 0.22767090063073978*_x6 + 0.22767090063073978*_x7*_x8*_x9 + 0.5*k_d*l0
-    _x58 = 0.22767090063073978*_x13 + 0.22767090063073978*_x15 + 0.22767090063073978*_x19 + 0.27232909936926025*_x30 + 0.27232909936926025*_x31 + 0.27232909936926025*_x34 + 0.45534180126147955*_x36 + 0.5446581987385205*_x37
-    _x59 = (1.0/math.sqrt(_x57))
-    _x60 = _x58/_x57**(1.5)
-    _x61 = _x66**2
-    _x62 = _x48*_x59
-    _x63 = _x29*_x52*_x59
-    _x64 = _x20*_x59
-    _fsigma0 = _x0
-    _fsigma0__tan = _x1
-    _fF0 = _x11 + _x2 - _x5 - _x6
-    _fF0__tan = _x13 + _x15 + _x16*_x18 + _x19
-    _fsigma1 = _x20
-    _fsigma1__tan = _x21
-    _fF1 = _x2 - _x23 - _x24 + _x28
-    _fF1__tan = _x16*_x33 + _x30 + _x31 + _x34
-    _fPsi0 = _x35
-    _fPsi0__tan = _x38
-    _fft0 = _x39*_x42
-    _fft0__tan = (0.5)*_D__tan*_x39*_x41*_x43 - _x44*_x45
-    _ffq0 = _P0*_x46*_x49
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x39*_x43*_x46*_x47 - _P0*_x45*_x46*_x50 + _P0__tan*_x39*_x40*_x46*_x47 - 2.0*_x1*_x17*_x49
-    _ffp0 = _x0*_x53
-    _ffp0__tan = _Q0__tan*_x3*_x52*_x54 - _x0*_x12*_x45*_x56 + _x1*_x53 + _x12*_x54*_x55
-    _fPsi1 = _x57
-    _fPsi1__tan = _x58
-    _fft1 = _x42*_x59
-    _fft1__tan = (0.5)*_D__tan*_x41*_x43*_x59 - _x44*_x60
-    _ffq1 = _P1*_x61*_x62
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x43*_x47*_x59*_x61 - _P1*_x50*_x60*_x61 + _P1__tan*_x40*_x47*_x59*_x61 - 2.0*_x21*_x32*_x62
-    _ffp1 = _x20*_x63
-    _ffp1__tan = _Q1__tan*_x22*_x52*_x64 - _x20*_x29*_x56*_x60 + _x21*_x63 + _x29*_x55*_x64
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    _work = 0.10566243270259355*_fF0 + 0.39433756729740643*_fF1
-    _work__tan = 0.10566243270259355*_fF0__tan + 0.39433756729740643*_fF1__tan
+    # Total ops: 55
+    _work = 0.10566243270259355*_iF0 + 0.39433756729740643*_iF1
+    _work__tan = 0.10566243270259355*_iF0__tan + 0.39433756729740643*_iF1__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return _NAN24 + (STATUS_NO_LIFTOFF,)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-    _x67 = math.sqrt(_D*_work)/math.sqrt(m)
-    _x68 = q_r**2
-    _x69 = q_r_lo**-2
-    _x70 = _x69/m
-    _x71 = 0.5*_x70
-    t_half = 0.5*_fft0 + 0.5*_fft1
-    t_half__tan = 0.5*_fft0__tan + 0.5*_fft1__tan
-    end_q_th = 0.5*_ffq0 + 0.5*_ffq1 + q_th
-    end_q_th__tan = 0.5*_ffq0__tan + 0.5*_ffq1__tan + q_th__tan
+    _x0 = math.sqrt(_D*_work)/math.sqrt(m)
+    _x1 = q_r**2
+    _x2 = q_r_lo**-2
+    _x3 = _x2/m
+    _x4 = 0.5*_x3
+    t_half = 0.5*_ift0 + 0.5*_ift1
+    t_half__tan = 0.5*_ift0__tan + 0.5*_ift1__tan
+    end_q_th = 0.5*_ifq0 + 0.5*_ifq1 + q_th
+    end_q_th__tan = 0.5*_ifq0__tan + 0.5*_ifq1__tan + q_th__tan
     end_q_r = q_r_lo
-    end_q_rd = 2.0*_x67
-    end_q_rd__tan = _work__tan*_x67/_work + _D__tan*_x67/_D
-    end_q_thd = _x70*(0.5*_ffp0 + 0.5*_ffp1 + _x68*m*q_thd)
-    end_q_thd__tan = _ffp0__tan*_x71 + _ffp1__tan*_x71 + _x68*_x69*q_thd__tan + 2.0*_x69*q_r*q_r__tan*q_thd
+    end_q_rd = 2.0*_x0
+    end_q_rd__tan = _work__tan*_x0/_work + _D__tan*_x0/_D
+    end_q_thd = _x3*(0.5*_ifp0 + 0.5*_ifp1 + _x1*m*q_thd)
+    end_q_thd__tan = _ifp0__tan*_x4 + _ifp1__tan*_x4 + _x1*_x2*q_thd__tan + 2.0*_x2*q_r*q_r__tan*q_thd
     passes = _passes
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3950,18 +3160,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -3990,12 +3200,19 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g
     _P1__tan = 0.7886751345948129*guess_q_thd__tan*m*q_r_lo**2 + 0.2113248654051871*m*q_r**2*q_thd__tan + 0.4226497308103742*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN31 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[10] != STATUS_OK:
-            return _NAN31 + (_c0[10],)
-        (_next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
+        if _c0[30] != STATUS_OK:
+            return _NAN31 + (_c0[30],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _next_D, _next_Q0, _next_Q1, _next_P0, _next_P1, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_P0__tan, _next_P1__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -4020,22 +3237,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g
         _P0__tan = _n0_8
         _P1__tan = _n0_9
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[24] != STATUS_OK:
-        return _NAN31 + (_c1[24],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[12] != STATUS_OK:
+        return _NAN31 + (_c1[12],)
+    (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -4067,6 +3280,34 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iF1: result for the caller
+        _iF1__tan: result for the caller
+        _iF2: result for the caller
+        _iF2__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -4215,13 +3456,13 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_
     _ifp2__tan = _Q2__tan*_x37*_x68*_x88 - _x35*_x44*_x72*_x84 + _x36*_x87 + _x44*_x71*_x88
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN42 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN42 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN14 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN42 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x92 = m*q_r**2
     _x93 = _x92*q_thd
@@ -4241,11 +3482,11 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_
     _next_P1__tan = 0.30026319498086457*_ifp0__tan + 0.2222222222222222*_ifp1__tan - 0.022485417203086815*_ifp2__tan + _x94
     _next_P2__tan = 0.26798833376246944*_ifp0__tan + 0.48042111196938336*_ifp1__tan + 0.1388888888888889*_ifp2__tan + _x94
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -4253,23 +3494,31 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
+        _iF0: value of the caller's variable
+        _iF0__tan: value of the caller's variable
+        _iF1: value of the caller's variable
+        _iF1__tan: value of the caller's variable
+        _iF2: value of the caller's variable
+        _iF2__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -4280,18 +3529,6 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -4306,168 +3543,30 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 486
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.012701665379258311*_D + q_r
-    _x89 = (1.0/_x0)
-    _x1 = 0.012701665379258311*_D__tan + q_r__tan
-    _x2 = k_d*l0
-    _x3 = math.cos(_Q0)
-    _x4 = g_s*m
-    _x5 = _x3*_x4
-    _x6 = _x0*k_d
-    _x7 = _x89**3
-    _x8 = _P0**2
-    _x9 = (1.0/m)
-    _x10 = _x8*_x9
-    _x11 = _x10*_x7
-    _x12 = math.sin(_Q0)
-    _x13 = _Q0__tan*_x12*_x4
-    _x14 = -l0
-    _x15 = k_d__tan*(-_x0 - _x14)
-    _x16 = 2.0*_x9
-    _x17 = _P0*_x7
-    _x18 = _P0__tan*_x17
-    _x19 = _x1*(-3.0*_x10*_x89**4 - k_d)
-    _x20 = 0.25*_D + q_r
-    _x90 = (1.0/_x20)
-    _x21 = 0.25*_D__tan + q_r__tan
-    _x22 = math.cos(_Q1)
-    _x23 = _x22*_x4
-    _x24 = _x20*k_d
-    _x25 = _x90**3
-    _x26 = _P1**2
-    _x27 = _x26*_x9
-    _x28 = _x25*_x27
-    _x29 = math.sin(_Q1)
-    _x30 = _Q1__tan*_x29*_x4
-    _x31 = k_d__tan*(-_x14 - _x20)
-    _x32 = _P1*_x25
-    _x33 = _P1__tan*_x32
-    _x34 = _x21*(-3.0*_x27*_x90**4 - k_d)
-    _x35 = 0.7872983346207417*_D + q_r
-    _x91 = (1.0/_x35)
-    _x36 = 0.7872983346207417*_D__tan + q_r__tan
-    _x37 = math.cos(_Q2)
-    _x38 = _x37*_x4
-    _x39 = _x35*k_d
-    _x40 = _x91**3
-    _x41 = _P2**2
-    _x42 = _x41*_x9
-    _x43 = _x40*_x42
-    _x44 = math.sin(_Q2)
-    _x45 = _Q2__tan*_x4*_x44
-    _x46 = k_d__tan*(-_x14 - _x35)
-    _x47 = _P2*_x40
-    _x48 = _P2__tan*_x47
-    _x49 = _x36*(-3.0*_x42*_x91**4 - k_d)
-    _x50 = 0.5762768525670787*_x11 + 0.5*_x2 + 0.1040546303448565*_x23 + 0.1040546303448565*_x24 - 0.1040546303448565*_x28 - 0.027777777777777776*_x38 - 0.027777777777777776*_x39 + 0.027777777777777776*_x43 - 0.5762768525670787*_x5 - 0.5762768525670787*_x6
-    _x51 = _x18*_x9
-    _x52 = _x33*_x9
-    _x53 = _x48*_x9
-    _x54 = 0.5762768525670787*_x13 + 0.5762768525670787*_x15 + 0.5762768525670787*_x19 - 0.1040546303448565*_x30 - 0.1040546303448565*_x31 - 0.1040546303448565*_x34 + 0.027777777777777776*_x45 + 0.027777777777777776*_x46 + 0.027777777777777776*_x49 + 1.1525537051341574*_x51 - 0.208109260689713*_x52 + 0.05555555555555555*_x53
-    _x55 = (1.0/math.sqrt(_x50))
-    _x56 = math.sqrt(_D)
-    _x57 = math.sqrt(m)
-    _x58 = _x56*_x57
-    _x59 = (1.0/_x56)
-    _x60 = (0.5)*_x58
-    _x61 = _x54/_x50**(1.5)
-    _x62 = _x89**2
-    _x63 = (1.0/_x57)
-    _x64 = _x56*_x63
-    _x65 = _x55*_x64
-    _x66 = (0.5)*_x64
-    _x67 = g_s*m**(1.5)
-    _x68 = _x56*_x67
-    _x69 = _x12*_x55*_x68
-    _x70 = _x0*_x55
-    _x71 = (0.5)*_D__tan*_x59*_x67
-    _x72 = (0.5)*_x68
-    _x73 = 0.17702731517242826*_x11 + 0.5*_x2 - 0.3611111111111111*_x23 - 0.3611111111111111*_x24 + 0.3611111111111111*_x28 + 0.038138426283539355*_x38 + 0.038138426283539355*_x39 - 0.038138426283539355*_x43 - 0.17702731517242826*_x5 - 0.17702731517242826*_x6
-    _x74 = 0.17702731517242826*_x13 + 0.17702731517242826*_x15 + 0.17702731517242826*_x19 + 0.3611111111111111*_x30 + 0.3611111111111111*_x31 + 0.3611111111111111*_x34 - 0.038138426283539355*_x45 - 0.038138426283539355*_x46 - 0.038138426283539355*_x49 + 0.3540546303448565*_x51 + 0.7222222222222222*_x52 - 0.07627685256707871*_x53
-    _x75 = (1.0/math.sqrt(_x73))
-    _x76 = _x74/_x73**(1.5)
-    _x77 = _x90**2
-    _x78 = _x64*_x75
-    _x79 = _x29*_x68*_x75
-    _x80 = _x20*_x75
-    _x81 = -0.3262768525670787*_x23 - 0.3262768525670787*_x24 + 0.3262768525670787*_x25*_x26*_x9 - 0.14594536965514351*_x38 - 0.14594536965514351*_x39 + 0.14594536965514351*_x40*_x41*_x9 - 0.027777777777777776*_x5 - 0.027777777777777776*_x6 + 0.027777777777777776*_x7*_x8*_x9 + 0.5*k_d*l0
-    _x82 = 0.027777777777777776*_x13 + 0.027777777777777776*_x15 + 0.027777777777777776*_x19 + 0.3262768525670787*_x30 + 0.3262768525670787*_x31 + 0.3262768525670787*_x34 + 0.14594536965514351*_x45 + 0.14594536965514351*_x46 + 0.14594536965514351*_x49 + 0.05555555555555555*_x51 + 0.6525537051341574*_x52 + 0.29189073931028703*_x53
-    _x83 = (1.0/math.sqrt(_x81))
-    _x84 = _x82/_x81**(1.5)
-    _x85 = _x91**2
-    _x86 = _x64*_x83
-    _x87 = _x44*_x68*_x83
-    _x88 = _x35*_x83
-    _fsigma0 = _x0
-    _fsigma0__tan = _x1
-    _fF0 = _x11 + _x2 - _x5 - _x6
-    _fF0__tan = _x13 + _x15 + _x16*_x18 + _x19
-    _fsigma1 = _x20
-    _fsigma1__tan = _x21
-    _fF1 = _x2 - _x23 - _x24 + _x28
-    _fF1__tan = _x16*_x33 + _x30 + _x31 + _x34
-    _fsigma2 = _x35
-    _fsigma2__tan = _x36
-    _fF2 = _x2 - _x38 - _x39 + _x43
-    _fF2__tan = _x16*_x48 + _x45 + _x46 + _x49
-    _fPsi0 = _x50
-    _fPsi0__tan = _x54
-    _fft0 = _x55*_x58
-    _fft0__tan = (0.5)*_D__tan*_x55*_x57*_x59 - _x60*_x61
-    _ffq0 = _P0*_x62*_x65
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x55*_x59*_x62*_x63 - _P0*_x61*_x62*_x66 + _P0__tan*_x55*_x56*_x62*_x63 - 2.0*_x1*_x17*_x65
-    _ffp0 = _x0*_x69
-    _ffp0__tan = _Q0__tan*_x3*_x68*_x70 - _x0*_x12*_x61*_x72 + _x1*_x69 + _x12*_x70*_x71
-    _fPsi1 = _x73
-    _fPsi1__tan = _x74
-    _fft1 = _x58*_x75
-    _fft1__tan = (0.5)*_D__tan*_x57*_x59*_x75 - _x60*_x76
-    _ffq1 = _P1*_x77*_x78
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x59*_x63*_x75*_x77 - _P1*_x66*_x76*_x77 + _P1__tan*_x56*_x63*_x75*_x77 - 2.0*_x21*_x32*_x78
-    _ffp1 = _x20*_x79
-    _ffp1__tan = _Q1__tan*_x22*_x68*_x80 - _x20*_x29*_x72*_x76 + _x21*_x79 + _x29*_x71*_x80
-    _fPsi2 = _x81
-    _fPsi2__tan = _x82
-    _fft2 = _x58*_x83
-    _fft2__tan = (0.5)*_D__tan*_x57*_x59*_x83 - _x60*_x84
-    _ffq2 = _P2*_x85*_x86
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x59*_x63*_x83*_x85 - _P2*_x66*_x84*_x85 + _P2__tan*_x56*_x63*_x83*_x85 - 2.0*_x36*_x47*_x86
-    _ffp2 = _x35*_x87
-    _ffp2__tan = _Q2__tan*_x37*_x68*_x88 - _x35*_x44*_x72*_x84 + _x36*_x87 + _x44*_x71*_x88
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    _work = 0.031306018160905086*_fF0 + 0.2222222222222222*_fF1 + 0.2464717596168727*_fF2
-    _work__tan = 0.031306018160905086*_fF0__tan + 0.2222222222222222*_fF1__tan + 0.2464717596168727*_fF2__tan
+    # Total ops: 72
+    _work = 0.031306018160905086*_iF0 + 0.2222222222222222*_iF1 + 0.2464717596168727*_iF2
+    _work__tan = 0.031306018160905086*_iF0__tan + 0.2222222222222222*_iF1__tan + 0.2464717596168727*_iF2__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return _NAN24 + (STATUS_NO_LIFTOFF,)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-    _x92 = math.sqrt(_D*_work)/math.sqrt(m)
-    _x93 = q_r**2
-    _x94 = q_r_lo**-2
-    _x95 = _x94/m
-    _x96 = 0.2777777777777778*_x95
-    t_half = 0.2777777777777778*_fft0 + 0.4444444444444444*_fft1 + 0.2777777777777778*_fft2
-    t_half__tan = 0.2777777777777778*_fft0__tan + 0.4444444444444444*_fft1__tan + 0.2777777777777778*_fft2__tan
-    end_q_th = 0.2777777777777778*_ffq0 + 0.4444444444444444*_ffq1 + 0.2777777777777778*_ffq2 + q_th
-    end_q_th__tan = 0.2777777777777778*_ffq0__tan + 0.4444444444444444*_ffq1__tan + 0.2777777777777778*_ffq2__tan + q_th__tan
+    _x0 = math.sqrt(_D*_work)/math.sqrt(m)
+    _x1 = q_r**2
+    _x2 = q_r_lo**-2
+    _x3 = _x2/m
+    _x4 = 0.2777777777777778*_x3
+    t_half = 0.2777777777777778*_ift0 + 0.4444444444444444*_ift1 + 0.2777777777777778*_ift2
+    t_half__tan = 0.2777777777777778*_ift0__tan + 0.4444444444444444*_ift1__tan + 0.2777777777777778*_ift2__tan
+    end_q_th = 0.2777777777777778*_ifq0 + 0.4444444444444444*_ifq1 + 0.2777777777777778*_ifq2 + q_th
+    end_q_th__tan = 0.2777777777777778*_ifq0__tan + 0.4444444444444444*_ifq1__tan + 0.2777777777777778*_ifq2__tan + q_th__tan
     end_q_r = q_r_lo
-    end_q_rd = 2.0*_x92
-    end_q_rd__tan = _work__tan*_x92/_work + _D__tan*_x92/_D
-    end_q_thd = _x95*(0.2777777777777778*_ffp0 + 0.4444444444444444*_ffp1 + 0.2777777777777778*_ffp2 + _x93*m*q_thd)
-    end_q_thd__tan = _ffp0__tan*_x96 + 0.4444444444444444*_ffp1__tan*_x95 + _ffp2__tan*_x96 + _x93*_x94*q_thd__tan + 2.0*_x94*q_r*q_r__tan*q_thd
+    end_q_rd = 2.0*_x0
+    end_q_rd__tan = _work__tan*_x0/_work + _D__tan*_x0/_D
+    end_q_thd = _x3*(0.2777777777777778*_ifp0 + 0.4444444444444444*_ifp1 + 0.2777777777777778*_ifp2 + _x1*m*q_thd)
+    end_q_thd__tan = _ifp0__tan*_x4 + 0.4444444444444444*_ifp1__tan*_x3 + _ifp2__tan*_x4 + _x1*_x2*q_thd__tan + 2.0*_x2*q_r*q_r__tan*q_thd
     passes = _passes
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4504,18 +3603,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -4548,12 +3647,19 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g
     _P2__tan = 0.8872983346207417*guess_q_thd__tan*m*q_r_lo**2 + 0.11270166537925831*m*q_r**2*q_thd__tan + 0.22540333075851662*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN31 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_6(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[14] != STATUS_OK:
-            return _NAN31 + (_c0[14],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
+        if _c0[42] != STATUS_OK:
+            return _NAN31 + (_c0[42],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_P0, _next_P1, _next_P2, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -4586,22 +3692,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g
         _P1__tan = _n0_12
         _P2__tan = _n0_13
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[24] != STATUS_OK:
-        return _NAN31 + (_c1[24],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_7(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[12] != STATUS_OK:
+        return _NAN31 + (_c1[12],)
+    (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -4637,6 +3739,42 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iF1: result for the caller
+        _iF1__tan: result for the caller
+        _iF2: result for the caller
+        _iF2__tan: result for the caller
+        _iF3: result for the caller
+        _iF3__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
+        _ift3: result for the caller
+        _ift3__tan: result for the caller
+        _ifq3: result for the caller
+        _ifq3__tan: result for the caller
+        _ifp3: result for the caller
+        _ifp3__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -4826,16 +3964,16 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_
     _ifp3__tan = _Q3__tan*_x112*_x52*_x84 - _x108*_x50*_x59*_x88 + _x111*_x51 + _x112*_x59*_x87
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN54 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN54 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN54 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return _NAN18 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN54 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x117 = m*q_r**2
     _x118 = _x117*q_thd
@@ -4859,11 +3997,11 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_
     _next_P2__tan = 0.16719192197418878*_ifp0__tan + 0.35395300603374397*_ifp1__tan + 0.16303628871563652*_ifp2__tan - 0.014190694931141144*_ifp3__tan + _x119
     _next_P3__tan = 0.1774825722545226*_ifp0__tan + 0.31344511474186837*_ifp1__tan + 0.35267675751627187*_ifp2__tan + 0.08696371128436346*_ifp3__tan + _x119
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -4871,27 +4009,39 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _P3: value of the caller's variable
-        _P3__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
-        _Q3: value of the caller's variable
-        _Q3__tan: value of the caller's variable
+        _iF0: value of the caller's variable
+        _iF0__tan: value of the caller's variable
+        _iF1: value of the caller's variable
+        _iF1__tan: value of the caller's variable
+        _iF2: value of the caller's variable
+        _iF2__tan: value of the caller's variable
+        _iF3: value of the caller's variable
+        _iF3__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifp3: value of the caller's variable
+        _ifp3__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ifq3: value of the caller's variable
+        _ifq3__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
+        _ift3: value of the caller's variable
+        _ift3__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -4902,18 +4052,6 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -4928,209 +4066,31 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 708
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.004820780989426014*_D + q_r
-    _x113 = (1.0/_x0)
-    _x1 = 0.004820780989426014*_D__tan + q_r__tan
-    _x2 = k_d*l0
-    _x3 = math.cos(_Q0)
-    _x4 = g_s*m
-    _x5 = _x3*_x4
-    _x6 = _x0*k_d
-    _x7 = _x113**3
-    _x8 = _P0**2
-    _x9 = (1.0/m)
-    _x10 = _x8*_x9
-    _x11 = _x10*_x7
-    _x12 = math.sin(_Q0)
-    _x13 = _Q0__tan*_x12*_x4
-    _x14 = -l0
-    _x15 = k_d__tan*(-_x0 - _x14)
-    _x16 = 2.0*_x9
-    _x17 = _P0*_x7
-    _x18 = _P0__tan*_x17
-    _x19 = _x1*(-3.0*_x10*_x113**4 - k_d)
-    _x20 = 0.10890625570683385*_D + q_r
-    _x114 = (1.0/_x20)
-    _x21 = 0.10890625570683385*_D__tan + q_r__tan
-    _x22 = math.cos(_Q1)
-    _x23 = _x22*_x4
-    _x24 = _x20*k_d
-    _x25 = _x114**3
-    _x26 = _P1**2
-    _x27 = _x26*_x9
-    _x28 = _x25*_x27
-    _x29 = math.sin(_Q1)
-    _x30 = _Q1__tan*_x29*_x4
-    _x31 = k_d__tan*(-_x14 - _x20)
-    _x32 = _P1*_x25
-    _x33 = _P1__tan*_x32
-    _x34 = _x21*(-3.0*_x114**4*_x27 - k_d)
-    _x35 = 0.44888729929169013*_D + q_r
-    _x115 = (1.0/_x35)
-    _x36 = 0.44888729929169013*_D__tan + q_r__tan
-    _x37 = math.cos(_Q2)
-    _x38 = _x37*_x4
-    _x39 = _x35*k_d
-    _x40 = _x115**3
-    _x41 = _P2**2
-    _x42 = _x41*_x9
-    _x43 = _x40*_x42
-    _x44 = math.sin(_Q2)
-    _x45 = _Q2__tan*_x4*_x44
-    _x46 = k_d__tan*(-_x14 - _x35)
-    _x47 = _P2*_x40
-    _x48 = _P2__tan*_x47
-    _x49 = _x36*(-3.0*_x115**4*_x42 - k_d)
-    _x50 = 0.8659570925834786*_D + q_r
-    _x116 = (1.0/_x50)
-    _x51 = 0.8659570925834786*_D__tan + q_r__tan
-    _x52 = math.cos(_Q3)
-    _x53 = _x4*_x52
-    _x54 = _x50*k_d
-    _x55 = _x116**3
-    _x56 = _P3**2
-    _x57 = _x56*_x9
-    _x58 = _x55*_x57
-    _x59 = math.sin(_Q3)
-    _x60 = _Q3__tan*_x4*_x59
-    _x61 = k_d__tan*(-_x14 - _x50)
-    _x62 = _P3*_x55
-    _x63 = _P3__tan*_x62
-    _x64 = _x51*(-3.0*_x116**4*_x57 - k_d)
-    _x65 = 0.582374038291501*_x11 + 0.5*_x2 + 0.12383458041329967*_x23 + 0.12383458041329967*_x24 - 0.12383458041329967*_x28 - 0.0575898635297681*_x38 - 0.0575898635297681*_x39 + 0.0575898635297681*_x43 - 0.582374038291501*_x5 + 0.016129321407969507*_x53 + 0.016129321407969507*_x54 - 0.016129321407969507*_x58 - 0.582374038291501*_x6
-    _x66 = _x18*_x9
-    _x67 = _x33*_x9
-    _x68 = _x48*_x9
-    _x69 = _x63*_x9
-    _x70 = 0.582374038291501*_x13 + 0.582374038291501*_x15 + 0.582374038291501*_x19 - 0.12383458041329967*_x30 - 0.12383458041329967*_x31 - 0.12383458041329967*_x34 + 0.0575898635297681*_x45 + 0.0575898635297681*_x46 + 0.0575898635297681*_x49 - 0.016129321407969507*_x60 - 0.016129321407969507*_x61 - 0.016129321407969507*_x64 + 1.164748076583002*_x66 - 0.24766916082659934*_x67 + 0.1151797270595362*_x68 - 0.032258642815939015*_x69
-    _x71 = (1.0/math.sqrt(_x65))
-    _x72 = math.sqrt(_D)
-    _x73 = math.sqrt(m)
-    _x74 = _x72*_x73
-    _x75 = (1.0/_x72)
-    _x76 = (0.5)*_x74
-    _x77 = _x70/_x65**(1.5)
-    _x78 = _x113**2
-    _x79 = (1.0/_x73)
-    _x80 = _x72*_x79
-    _x81 = _x71*_x80
-    _x82 = (0.5)*_x80
-    _x83 = g_s*m**(1.5)
-    _x84 = _x72*_x83
-    _x85 = _x12*_x71*_x84
-    _x86 = _x0*_x71
-    _x87 = (0.5)*_D__tan*_x75*_x83
-    _x88 = (0.5)*_x84
-    _x89 = -0.39252437029865583*_x23 - 0.39252437029865583*_x24 + 0.39252437029865583*_x25*_x26*_x9 + 0.0700094015044783*_x35*k_d + 0.0700094015044783*_x37*g_s*m - 0.0700094015044783*_x43 - 0.16000937841634696*_x5 - 0.017475652789475504*_x53 - 0.017475652789475504*_x54 + 0.017475652789475504*_x55*_x56*_x9 - 0.16000937841634696*_x6 + 0.16000937841634696*_x7*_x8*_x9 + 0.5*k_d*l0
-    _x90 = 0.16000937841634696*_x13 + 0.16000937841634696*_x15 + 0.16000937841634696*_x19 + 0.39252437029865583*_x30 + 0.39252437029865583*_x31 + 0.39252437029865583*_x34 - 0.0700094015044783*_x45 - 0.0700094015044783*_x46 - 0.0700094015044783*_x49 + 0.017475652789475504*_x60 + 0.017475652789475504*_x61 + 0.017475652789475504*_x64 + 0.32001875683269393*_x66 + 0.7850487405973117*_x67 - 0.1400188030089566*_x68 + 0.03495130557895101*_x69
-    _x91 = (1.0/math.sqrt(_x89))
-    _x92 = _x90/_x89**(1.5)
-    _x93 = _x114**2
-    _x94 = _x80*_x91
-    _x95 = _x29*_x84*_x91
-    _x96 = _x20*_x91
-    _x97 = -0.2848443432415939*_x23 - 0.2848443432415939*_x24 + 0.2848443432415939*_x25*_x26*_x9 - 0.21871326539550162*_x38 - 0.21871326539550162*_x39 + 0.21871326539550162*_x40*_x41*_x9 - 0.01613725546399532*_x5 + 0.019694864101090868*_x50*k_d + 0.019694864101090868*_x52*g_s*m - 0.019694864101090868*_x58 - 0.01613725546399532*_x6 + 0.01613725546399532*_x7*_x8*_x9 + 0.5*k_d*l0
-    _x98 = 0.01613725546399532*_x13 + 0.01613725546399532*_x15 + 0.01613725546399532*_x19 + 0.2848443432415939*_x30 + 0.2848443432415939*_x31 + 0.2848443432415939*_x34 + 0.21871326539550162*_x45 + 0.21871326539550162*_x46 + 0.21871326539550162*_x49 - 0.019694864101090868*_x60 - 0.019694864101090868*_x61 - 0.019694864101090868*_x64 + 0.03227451092799064*_x66 + 0.5696886864831878*_x67 + 0.43742653079100324*_x68 - 0.039389728202181735*_x69
-    _x99 = (1.0/math.sqrt(_x97))
-    _x100 = _x98/_x97**(1.5)
-    _x101 = _x115**2
-    _x102 = _x80*_x99
-    _x103 = _x44*_x84*_x99
-    _x104 = _x35*_x99
-    _x105 = -0.11000222456933441*_x23 - 0.11000222456933441*_x24 + 0.11000222456933441*_x25*_x26*_x9 - 0.2823150697454702*_x38 - 0.2823150697454702*_x39 + 0.2823150697454702*_x40*_x41*_x9 - 0.01796104633752054*_x5 - 0.08972165934767481*_x53 - 0.08972165934767481*_x54 + 0.08972165934767481*_x55*_x56*_x9 - 0.01796104633752054*_x6 + 0.01796104633752054*_x7*_x8*_x9 + 0.5*k_d*l0
-    _x106 = 0.01796104633752054*_x13 + 0.01796104633752054*_x15 + 0.01796104633752054*_x19 + 0.11000222456933441*_x30 + 0.11000222456933441*_x31 + 0.11000222456933441*_x34 + 0.2823150697454702*_x45 + 0.2823150697454702*_x46 + 0.2823150697454702*_x49 + 0.08972165934767481*_x60 + 0.08972165934767481*_x61 + 0.08972165934767481*_x64 + 0.03592209267504108*_x66 + 0.22000444913866882*_x67 + 0.5646301394909404*_x68 + 0.17944331869534963*_x69
-    _x107 = (1.0/math.sqrt(_x105))
-    _x108 = _x106/_x105**(1.5)
-    _x109 = _x116**2
-    _x110 = _x107*_x80
-    _x111 = _x107*_x59*_x84
-    _x112 = _x107*_x50
-    _fsigma0 = _x0
-    _fsigma0__tan = _x1
-    _fF0 = _x11 + _x2 - _x5 - _x6
-    _fF0__tan = _x13 + _x15 + _x16*_x18 + _x19
-    _fsigma1 = _x20
-    _fsigma1__tan = _x21
-    _fF1 = _x2 - _x23 - _x24 + _x28
-    _fF1__tan = _x16*_x33 + _x30 + _x31 + _x34
-    _fsigma2 = _x35
-    _fsigma2__tan = _x36
-    _fF2 = _x2 - _x38 - _x39 + _x43
-    _fF2__tan = _x16*_x48 + _x45 + _x46 + _x49
-    _fsigma3 = _x50
-    _fsigma3__tan = _x51
-    _fF3 = _x2 - _x53 - _x54 + _x58
-    _fF3__tan = _x16*_x63 + _x60 + _x61 + _x64
-    _fPsi0 = _x65
-    _fPsi0__tan = _x70
-    _fft0 = _x71*_x74
-    _fft0__tan = (0.5)*_D__tan*_x71*_x73*_x75 - _x76*_x77
-    _ffq0 = _P0*_x78*_x81
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x71*_x75*_x78*_x79 - _P0*_x77*_x78*_x82 + _P0__tan*_x71*_x72*_x78*_x79 - 2.0*_x1*_x17*_x81
-    _ffp0 = _x0*_x85
-    _ffp0__tan = _Q0__tan*_x3*_x84*_x86 - _x0*_x12*_x77*_x88 + _x1*_x85 + _x12*_x86*_x87
-    _fPsi1 = _x89
-    _fPsi1__tan = _x90
-    _fft1 = _x74*_x91
-    _fft1__tan = (0.5)*_D__tan*_x73*_x75*_x91 - _x76*_x92
-    _ffq1 = _P1*_x93*_x94
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x75*_x79*_x91*_x93 - _P1*_x82*_x92*_x93 + _P1__tan*_x72*_x79*_x91*_x93 - 2.0*_x21*_x32*_x94
-    _ffp1 = _x20*_x95
-    _ffp1__tan = _Q1__tan*_x22*_x84*_x96 - _x20*_x29*_x88*_x92 + _x21*_x95 + _x29*_x87*_x96
-    _fPsi2 = _x97
-    _fPsi2__tan = _x98
-    _fft2 = _x74*_x99
-    _fft2__tan = (0.5)*_D__tan*_x73*_x75*_x99 - _x100*_x76
-    _ffq2 = _P2*_x101*_x102
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x101*_x75*_x79*_x99 - _P2*_x100*_x101*_x82 + _P2__tan*_x101*_x72*_x79*_x99 - 2.0*_x102*_x36*_x47
-    _ffp2 = _x103*_x35
-    _ffp2__tan = _Q2__tan*_x104*_x37*_x84 - _x100*_x35*_x44*_x88 + _x103*_x36 + _x104*_x44*_x87
-    _fPsi3 = _x105
-    _fPsi3__tan = _x106
-    _fft3 = _x107*_x74
-    _fft3__tan = (0.5)*_D__tan*_x107*_x73*_x75 - _x108*_x76
-    _ffq3 = _P3*_x109*_x110
-    _ffq3__tan = (0.5)*_D__tan*_P3*_x107*_x109*_x75*_x79 - _P3*_x108*_x109*_x82 + _P3__tan*_x107*_x109*_x72*_x79 - 2.0*_x110*_x51*_x62
-    _ffp3 = _x111*_x50
-    _ffp3__tan = _Q3__tan*_x112*_x52*_x84 - _x108*_x50*_x59*_x88 + _x111*_x51 + _x112*_x59*_x87
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi3 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    _work = 0.012076101706416622*_fF0 + 0.1076070411358925*_fF1 + 0.21846553629538057*_fF2 + 0.1618513208623103*_fF3
-    _work__tan = 0.012076101706416622*_fF0__tan + 0.1076070411358925*_fF1__tan + 0.21846553629538057*_fF2__tan + 0.1618513208623103*_fF3__tan
+    # Total ops: 88
+    _work = 0.012076101706416622*_iF0 + 0.1076070411358925*_iF1 + 0.21846553629538057*_iF2 + 0.1618513208623103*_iF3
+    _work__tan = 0.012076101706416622*_iF0__tan + 0.1076070411358925*_iF1__tan + 0.21846553629538057*_iF2__tan + 0.1618513208623103*_iF3__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return _NAN24 + (STATUS_NO_LIFTOFF,)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-    _x117 = math.sqrt(_D*_work)/math.sqrt(m)
-    _x118 = q_r**2
-    _x119 = q_r_lo**-2
-    _x120 = _x119/m
-    _x121 = 0.17392742256872692*_x120
-    _x122 = 0.32607257743127305*_x120
-    t_half = 0.17392742256872692*_fft0 + 0.32607257743127305*_fft1 + 0.32607257743127305*_fft2 + 0.17392742256872692*_fft3
-    t_half__tan = 0.17392742256872692*_fft0__tan + 0.32607257743127305*_fft1__tan + 0.32607257743127305*_fft2__tan + 0.17392742256872692*_fft3__tan
-    end_q_th = 0.17392742256872692*_ffq0 + 0.32607257743127305*_ffq1 + 0.32607257743127305*_ffq2 + 0.17392742256872692*_ffq3 + q_th
-    end_q_th__tan = 0.17392742256872692*_ffq0__tan + 0.32607257743127305*_ffq1__tan + 0.32607257743127305*_ffq2__tan + 0.17392742256872692*_ffq3__tan + q_th__tan
+    _x0 = math.sqrt(_D*_work)/math.sqrt(m)
+    _x1 = q_r**2
+    _x2 = q_r_lo**-2
+    _x3 = _x2/m
+    _x4 = 0.17392742256872692*_x3
+    _x5 = 0.32607257743127305*_x3
+    t_half = 0.17392742256872692*_ift0 + 0.32607257743127305*_ift1 + 0.32607257743127305*_ift2 + 0.17392742256872692*_ift3
+    t_half__tan = 0.17392742256872692*_ift0__tan + 0.32607257743127305*_ift1__tan + 0.32607257743127305*_ift2__tan + 0.17392742256872692*_ift3__tan
+    end_q_th = 0.17392742256872692*_ifq0 + 0.32607257743127305*_ifq1 + 0.32607257743127305*_ifq2 + 0.17392742256872692*_ifq3 + q_th
+    end_q_th__tan = 0.17392742256872692*_ifq0__tan + 0.32607257743127305*_ifq1__tan + 0.32607257743127305*_ifq2__tan + 0.17392742256872692*_ifq3__tan + q_th__tan
     end_q_r = q_r_lo
-    end_q_rd = 2.0*_x117
-    end_q_rd__tan = _work__tan*_x117/_work + _D__tan*_x117/_D
-    end_q_thd = _x120*(0.17392742256872692*_ffp0 + 0.32607257743127305*_ffp1 + 0.32607257743127305*_ffp2 + 0.17392742256872692*_ffp3 + _x118*m*q_thd)
-    end_q_thd__tan = _ffp0__tan*_x121 + _ffp1__tan*_x122 + _ffp2__tan*_x122 + _ffp3__tan*_x121 + _x118*_x119*q_thd__tan + 2.0*_x119*q_r*q_r__tan*q_thd
+    end_q_rd = 2.0*_x0
+    end_q_rd__tan = _work__tan*_x0/_work + _D__tan*_x0/_D
+    end_q_thd = _x3*(0.17392742256872692*_ifp0 + 0.32607257743127305*_ifp1 + 0.32607257743127305*_ifp2 + 0.17392742256872692*_ifp3 + _x1*m*q_thd)
+    end_q_thd__tan = _ifp0__tan*_x4 + _ifp1__tan*_x5 + _ifp2__tan*_x5 + _ifp3__tan*_x4 + _x1*_x2*q_thd__tan + 2.0*_x2*q_r*q_r__tan*q_thd
     passes = _passes
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5167,18 +4127,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -5215,12 +4175,19 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(
     _P3__tan = 0.9305681557970263*guess_q_thd__tan*m*q_r_lo**2 + 0.06943184420297371*m*q_r**2*q_thd__tan + 0.13886368840594743*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN31 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_9(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[18] != STATUS_OK:
-            return _NAN31 + (_c0[18],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
+        if _c0[54] != STATUS_OK:
+            return _NAN31 + (_c0[54],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_P0, _next_P1, _next_P2, _next_P3, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -5261,22 +4228,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(
         _P2__tan = _n0_16
         _P3__tan = _n0_17
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[24] != STATUS_OK:
-        return _NAN31 + (_c1[24],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_10(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[12] != STATUS_OK:
+        return _NAN31 + (_c1[12],)
+    (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan):
-    """loop body of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
+    """evaluation and update of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
 
@@ -5320,6 +4283,58 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iF1: result for the caller
+        _iF1__tan: result for the caller
+        _iF2: result for the caller
+        _iF2__tan: result for the caller
+        _iF3: result for the caller
+        _iF3__tan: result for the caller
+        _iF4: result for the caller
+        _iF4__tan: result for the caller
+        _iF5: result for the caller
+        _iF5__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
+        _ift1: result for the caller
+        _ift1__tan: result for the caller
+        _ifq1: result for the caller
+        _ifq1__tan: result for the caller
+        _ifp1: result for the caller
+        _ifp1__tan: result for the caller
+        _ift2: result for the caller
+        _ift2__tan: result for the caller
+        _ifq2: result for the caller
+        _ifq2__tan: result for the caller
+        _ifp2: result for the caller
+        _ifp2__tan: result for the caller
+        _ift3: result for the caller
+        _ift3__tan: result for the caller
+        _ifq3: result for the caller
+        _ifq3__tan: result for the caller
+        _ifp3: result for the caller
+        _ifp3__tan: result for the caller
+        _ift4: result for the caller
+        _ift4__tan: result for the caller
+        _ifq4: result for the caller
+        _ifq4__tan: result for the caller
+        _ifp4: result for the caller
+        _ifp4__tan: result for the caller
+        _ift5: result for the caller
+        _ift5__tan: result for the caller
+        _ifq5: result for the caller
+        _ifq5__tan: result for the caller
+        _ifp5: result for the caller
+        _ifp5__tan: result for the caller
         _next_D: result for the caller
         _next_Q0: result for the caller
         _next_Q1: result for the caller
@@ -5593,22 +4608,22 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(
     _ifp5__tan = _Q5__tan*_x116*_x162*_x82 + _x119*_x162*_x89 - _x120*_x158*_x80*_x89 + _x161*_x81
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi0 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi1 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi2 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi3 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi4 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # p_r^2 = 2 m int F_r > 0 at every node
     if not ((_iPsi5 > 0.0)):
-        return _NAN26 + (STATUS_IMAGINARY_MOMENTUM,)
+        return _NAN78 + (STATUS_IMAGINARY_MOMENTUM,)
     # next values
     _x169 = m*q_r**2
     _x170 = _x169*q_thd
@@ -5640,11 +4655,11 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(
     _next_P4__tan = 0.08430668513410011*_ifp0__tan + 0.18526797945210696*_ifp1__tan + 0.2235938110460991*_ifp2__tan + 0.2542570695795851*_ifp3__tan + 0.09019039326203465*_ifp4__tan - 0.007011245240793691*_ifp5__tan + _x171
     _next_P5__tan = 0.08647502636084993*_ifp0__tan + 0.17752635320896998*_ifp1__tan + 0.23962582533582905*_ifp2__tan + 0.22463191657986778*_ifp3__tan + 0.19514451252126672*_ifp4__tan + 0.04283112309479259*_ifp5__tan + _x171
     # (internal helper: its callers check that their outputs are finite)
-    return (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, STATUS_OK)
+    return (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iF4, _iF4__tan, _iF5, _iF5__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _ift4, _ift4__tan, _ifq4, _ifq4__tan, _ifp4, _ifp4__tan, _ift5, _ift5__tan, _ifq5, _ifq5__tan, _ifp5, _ifp5__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
+def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iF4, _iF4__tan, _iF5, _iF5__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifp4, _ifp4__tan, _ifp5, _ifp5__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ifq4, _ifq4__tan, _ifq5, _ifq5__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _ift4, _ift4__tan, _ift5, _ift5__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan):
     """continuation of schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd (outlined: derive/outline.py).
 
     Report equations: .
@@ -5652,35 +4667,55 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(
     Arguments:
         _D: value of the caller's variable
         _D__tan: value of the caller's variable
-        _P0: value of the caller's variable
-        _P0__tan: value of the caller's variable
-        _P1: value of the caller's variable
-        _P1__tan: value of the caller's variable
-        _P2: value of the caller's variable
-        _P2__tan: value of the caller's variable
-        _P3: value of the caller's variable
-        _P3__tan: value of the caller's variable
-        _P4: value of the caller's variable
-        _P4__tan: value of the caller's variable
-        _P5: value of the caller's variable
-        _P5__tan: value of the caller's variable
-        _Q0: value of the caller's variable
-        _Q0__tan: value of the caller's variable
-        _Q1: value of the caller's variable
-        _Q1__tan: value of the caller's variable
-        _Q2: value of the caller's variable
-        _Q2__tan: value of the caller's variable
-        _Q3: value of the caller's variable
-        _Q3__tan: value of the caller's variable
-        _Q4: value of the caller's variable
-        _Q4__tan: value of the caller's variable
-        _Q5: value of the caller's variable
-        _Q5__tan: value of the caller's variable
+        _iF0: value of the caller's variable
+        _iF0__tan: value of the caller's variable
+        _iF1: value of the caller's variable
+        _iF1__tan: value of the caller's variable
+        _iF2: value of the caller's variable
+        _iF2__tan: value of the caller's variable
+        _iF3: value of the caller's variable
+        _iF3__tan: value of the caller's variable
+        _iF4: value of the caller's variable
+        _iF4__tan: value of the caller's variable
+        _iF5: value of the caller's variable
+        _iF5__tan: value of the caller's variable
+        _ifp0: value of the caller's variable
+        _ifp0__tan: value of the caller's variable
+        _ifp1: value of the caller's variable
+        _ifp1__tan: value of the caller's variable
+        _ifp2: value of the caller's variable
+        _ifp2__tan: value of the caller's variable
+        _ifp3: value of the caller's variable
+        _ifp3__tan: value of the caller's variable
+        _ifp4: value of the caller's variable
+        _ifp4__tan: value of the caller's variable
+        _ifp5: value of the caller's variable
+        _ifp5__tan: value of the caller's variable
+        _ifq0: value of the caller's variable
+        _ifq0__tan: value of the caller's variable
+        _ifq1: value of the caller's variable
+        _ifq1__tan: value of the caller's variable
+        _ifq2: value of the caller's variable
+        _ifq2__tan: value of the caller's variable
+        _ifq3: value of the caller's variable
+        _ifq3__tan: value of the caller's variable
+        _ifq4: value of the caller's variable
+        _ifq4__tan: value of the caller's variable
+        _ifq5: value of the caller's variable
+        _ifq5__tan: value of the caller's variable
+        _ift0: value of the caller's variable
+        _ift0__tan: value of the caller's variable
+        _ift1: value of the caller's variable
+        _ift1__tan: value of the caller's variable
+        _ift2: value of the caller's variable
+        _ift2__tan: value of the caller's variable
+        _ift3: value of the caller's variable
+        _ift3__tan: value of the caller's variable
+        _ift4: value of the caller's variable
+        _ift4__tan: value of the caller's variable
+        _ift5: value of the caller's variable
+        _ift5__tan: value of the caller's variable
         _passes: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
         m: value of the caller's variable
         q_r: value of the caller's variable
         q_r__tan: value of the caller's variable
@@ -5691,18 +4726,6 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(
         q_thd__tan: value of the caller's variable
 
     Returns a tuple:
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -5717,292 +4740,32 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(
         passes: result for the caller
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 1231
-    # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-    _x0 = 0.0011400916279895713*_D + q_r
-    _x163 = (1.0/_x0)
-    _x1 = 0.0011400916279895713*_D__tan + q_r__tan
-    _x2 = k_d*l0
-    _x3 = math.cos(_Q0)
-    _x4 = g_s*m
-    _x5 = _x3*_x4
-    _x6 = _x0*k_d
-    _x7 = _x163**3
-    _x8 = _P0**2
-    _x9 = (1.0/m)
-    _x10 = _x8*_x9
-    _x11 = _x10*_x7
-    _x12 = math.sin(_Q0)
-    _x13 = _Q0__tan*_x12*_x4
-    _x14 = -l0
-    _x15 = k_d__tan*(-_x0 - _x14)
-    _x16 = 2.0*_x9
-    _x17 = _P0*_x7
-    _x18 = _P0__tan*_x17
-    _x19 = _x1*(-3.0*_x10*_x163**4 - k_d)
-    _x20 = 0.02869476995464123*_D + q_r
-    _x164 = (1.0/_x20)
-    _x21 = 0.02869476995464123*_D__tan + q_r__tan
-    _x22 = math.cos(_Q1)
-    _x23 = _x22*_x4
-    _x24 = _x20*k_d
-    _x25 = _x164**3
-    _x26 = _P1**2
-    _x27 = _x26*_x9
-    _x28 = _x25*_x27
-    _x29 = math.sin(_Q1)
-    _x30 = _Q1__tan*_x29*_x4
-    _x31 = k_d__tan*(-_x14 - _x20)
-    _x32 = _P1*_x25
-    _x33 = _P1__tan*_x32
-    _x34 = _x21*(-3.0*_x164**4*_x27 - k_d)
-    _x35 = 0.14492518595015338*_D + q_r
-    _x165 = (1.0/_x35)
-    _x36 = 0.14492518595015338*_D__tan + q_r__tan
-    _x37 = math.cos(_Q2)
-    _x38 = _x37*_x4
-    _x39 = _x35*k_d
-    _x40 = _x165**3
-    _x41 = _P2**2
-    _x42 = _x41*_x9
-    _x43 = _x40*_x42
-    _x44 = math.sin(_Q2)
-    _x45 = _Q2__tan*_x4*_x44
-    _x46 = k_d__tan*(-_x14 - _x35)
-    _x47 = _P2*_x40
-    _x48 = _P2__tan*_x47
-    _x49 = _x36*(-3.0*_x165**4*_x42 - k_d)
-    _x50 = 0.3835443720333503*_D + q_r
-    _x166 = (1.0/_x50)
-    _x51 = 0.3835443720333503*_D__tan + q_r__tan
-    _x52 = math.cos(_Q3)
-    _x53 = _x4*_x52
-    _x54 = _x50*k_d
-    _x55 = _x166**3
-    _x56 = _P3**2
-    _x57 = _x56*_x9
-    _x58 = _x55*_x57
-    _x59 = math.sin(_Q3)
-    _x60 = _Q3__tan*_x4*_x59
-    _x61 = k_d__tan*(-_x14 - _x50)
-    _x62 = _P3*_x55
-    _x63 = _P3__tan*_x62
-    _x64 = _x51*(-3.0*_x166**4*_x57 - k_d)
-    _x65 = 0.6899041564209057*_D + q_r
-    _x167 = (1.0/_x65)
-    _x66 = 0.6899041564209057*_D__tan + q_r__tan
-    _x67 = math.cos(_Q4)
-    _x68 = _x4*_x67
-    _x69 = _x65*k_d
-    _x70 = _x167**3
-    _x71 = _P4**2
-    _x72 = _x71*_x9
-    _x73 = _x70*_x72
-    _x74 = math.sin(_Q4)
-    _x75 = _Q4__tan*_x4*_x74
-    _x76 = k_d__tan*(-_x14 - _x65)
-    _x77 = _P4*_x70
-    _x78 = _P4__tan*_x77
-    _x79 = _x66*(-3.0*_x167**4*_x72 - k_d)
-    _x80 = 0.9336096058311416*_D + q_r
-    _x168 = (1.0/_x80)
-    _x81 = 0.9336096058311416*_D__tan + q_r__tan
-    _x82 = math.cos(_Q5)
-    _x83 = _x4*_x82
-    _x84 = _x80*k_d
-    _x85 = _x168**3
-    _x86 = _P5**2
-    _x87 = _x86*_x9
-    _x88 = _x85*_x87
-    _x89 = math.sin(_Q5)
-    _x90 = _Q5__tan*_x4*_x89
-    _x91 = k_d__tan*(-_x14 - _x80)
-    _x92 = _P5*_x85
-    _x93 = _P5__tan*_x92
-    _x94 = _x81*(-3.0*_x168**4*_x87 - k_d)
-    _x95 = 0.5871580340658094*_x11 + 0.5*_x2 + 0.140380692261653*_x23 + 0.140380692261653*_x24 - 0.140380692261653*_x28 - 0.08683151831711133*_x38 - 0.08683151831711133*_x39 + 0.08683151831711133*_x43 - 0.5871580340658094*_x5 + 0.052466581536012566*_x53 + 0.052466581536012566*_x54 - 0.052466581536012566*_x58 - 0.5871580340658094*_x6 - 0.026354606039126004*_x68 - 0.026354606039126004*_x69 + 0.026354606039126004*_x73 + 0.007496884624381081*_x83 + 0.007496884624381081*_x84 - 0.007496884624381081*_x88
-    _x96 = _x18*_x9
-    _x97 = _x33*_x9
-    _x98 = _x48*_x9
-    _x99 = _x63*_x9
-    _x100 = _x78*_x9
-    _x101 = _x9*_x93
-    _x102 = 0.05270921207825201*_x100 - 0.014993769248762162*_x101 + 0.5871580340658094*_x13 + 0.5871580340658094*_x15 + 0.5871580340658094*_x19 - 0.140380692261653*_x30 - 0.140380692261653*_x31 - 0.140380692261653*_x34 + 0.08683151831711133*_x45 + 0.08683151831711133*_x46 + 0.08683151831711133*_x49 - 0.052466581536012566*_x60 - 0.052466581536012566*_x61 - 0.052466581536012566*_x64 + 0.026354606039126004*_x75 + 0.026354606039126004*_x76 + 0.026354606039126004*_x79 - 0.007496884624381081*_x90 - 0.007496884624381081*_x91 - 0.007496884624381081*_x94 + 1.1743160681316187*_x96 - 0.280761384523306*_x97 + 0.17366303663422267*_x98 - 0.10493316307202513*_x99
-    _x103 = (1.0/math.sqrt(_x95))
-    _x104 = math.sqrt(_D)
-    _x105 = math.sqrt(m)
-    _x106 = _x104*_x105
-    _x107 = (1.0/_x104)
-    _x108 = (0.5)*_x106
-    _x109 = _x102/_x95**(1.5)
-    _x110 = _x163**2
-    _x111 = (1.0/_x105)
-    _x112 = _x104*_x111
-    _x113 = _x103*_x112
-    _x114 = (0.5)*_x112
-    _x115 = g_s*m**(1.5)
-    _x116 = _x104*_x115
-    _x117 = _x103*_x116*_x12
-    _x118 = _x0*_x103
-    _x119 = (0.5)*_D__tan*_x107*_x115
-    _x120 = (0.5)*_x116
-    _x121 = -0.5*k_d*l0
-    _x122 = -_x121 - 0.41567911405660357*_x23 - 0.41567911405660357*_x24 + 0.41567911405660357*_x25*_x26*_x9 + 0.09720828549085844*_x35*k_d + 0.09720828549085844*_x37*g_s*m - 0.09720828549085844*_x43 - 0.147790320897128*_x5 - 0.05155355009455148*_x53 - 0.05155355009455148*_x54 + 0.05155355009455148*_x55*_x56*_x9 - 0.147790320897128*_x6 + 0.024719229415033087*_x65*k_d + 0.024719229415033087*_x67*g_s*m + 0.147790320897128*_x7*_x8*_x9 - 0.024719229415033087*_x73 - 0.006904529857608445*_x83 - 0.006904529857608445*_x84 + 0.006904529857608445*_x85*_x86*_x9
-    _x123 = -0.04943845883006617*_x100 + 0.01380905971521689*_x101 + 0.147790320897128*_x13 + 0.147790320897128*_x15 + 0.147790320897128*_x19 + 0.41567911405660357*_x30 + 0.41567911405660357*_x31 + 0.41567911405660357*_x34 - 0.09720828549085844*_x45 - 0.09720828549085844*_x46 - 0.09720828549085844*_x49 + 0.05155355009455148*_x60 + 0.05155355009455148*_x61 + 0.05155355009455148*_x64 - 0.024719229415033087*_x75 - 0.024719229415033087*_x76 - 0.024719229415033087*_x79 + 0.006904529857608445*_x90 + 0.006904529857608445*_x91 + 0.006904529857608445*_x94 + 0.295580641794256*_x96 + 0.8313582281132071*_x97 - 0.19441657098171689*_x98 + 0.10310710018910296*_x99
-    _x124 = (1.0/math.sqrt(_x122))
-    _x125 = _x123/_x122**(1.5)
-    _x126 = _x164**2
-    _x127 = _x112*_x124
-    _x128 = _x116*_x124*_x29
-    _x129 = _x124*_x20
-    _x130 = -_x121 - 0.25540525119175433*_x23 - 0.25540525119175433*_x24 + 0.25540525119175433*_x25*_x26*_x9 - 0.2685463444140672*_x38 - 0.2685463444140672*_x39 + 0.2685463444140672*_x40*_x41*_x9 - 0.010443786721981197*_x5 + 0.048794612428541204*_x50*k_d + 0.048794612428541204*_x52*g_s*m - 0.048794612428541204*_x58 - 0.010443786721981197*_x6 - 0.01951903325298492*_x68 - 0.01951903325298492*_x69 + 0.010443786721981197*_x7*_x8*_x9 + 0.01951903325298492*_x70*_x71*_x9 + 0.005119803152246505*_x80*k_d + 0.005119803152246505*_x82*g_s*m - 0.005119803152246505*_x88
-    _x131 = 0.03903806650596984*_x100 - 0.01023960630449301*_x101 + 0.010443786721981197*_x13 + 0.010443786721981197*_x15 + 0.010443786721981197*_x19 + 0.25540525119175433*_x30 + 0.25540525119175433*_x31 + 0.25540525119175433*_x34 + 0.2685463444140672*_x45 + 0.2685463444140672*_x46 + 0.2685463444140672*_x49 - 0.048794612428541204*_x60 - 0.048794612428541204*_x61 - 0.048794612428541204*_x64 + 0.01951903325298492*_x75 + 0.01951903325298492*_x76 + 0.01951903325298492*_x79 - 0.005119803152246505*_x90 - 0.005119803152246505*_x91 - 0.005119803152246505*_x94 + 0.020887573443962394*_x96 + 0.5108105023835087*_x97 + 0.5370926888281344*_x98 - 0.09758922485708241*_x99
-    _x132 = (1.0/math.sqrt(_x130))
-    _x133 = _x131/_x130**(1.5)
-    _x134 = _x165**2
-    _x135 = _x112*_x132
-    _x136 = _x116*_x132*_x44
-    _x137 = _x132*_x35
-    _x138 = -0.5*k_d*l0
-    _x139 = -_x138 - 0.0662099828438604*_x23 - 0.0662099828438604*_x24 + 0.0662099828438604*_x25*_x26*_x9 - 0.2671819482314443*_x38 - 0.2671819482314443*_x39 + 0.2671819482314443*_x40*_x41*_x9 - 0.01101839635505667*_x5 - 0.1742495636223592*_x53 - 0.1742495636223592*_x54 + 0.1742495636223592*_x55*_x56*_x9 - 0.01101839635505667*_x6 + 0.02396692958086051*_x65*k_d + 0.02396692958086051*_x67*g_s*m + 0.01101839635505667*_x7*_x8*_x9 - 0.02396692958086051*_x73 - 0.00530703852813994*_x83 - 0.00530703852813994*_x84 + 0.00530703852813994*_x85*_x86*_x9
-    _x140 = -0.04793385916172102*_x100 + 0.01061407705627988*_x101 + 0.01101839635505667*_x13 + 0.01101839635505667*_x15 + 0.01101839635505667*_x19 + 0.0662099828438604*_x30 + 0.0662099828438604*_x31 + 0.0662099828438604*_x34 + 0.2671819482314443*_x45 + 0.2671819482314443*_x46 + 0.2671819482314443*_x49 + 0.1742495636223592*_x60 + 0.1742495636223592*_x61 + 0.1742495636223592*_x64 - 0.02396692958086051*_x75 - 0.02396692958086051*_x76 - 0.02396692958086051*_x79 + 0.00530703852813994*_x90 + 0.00530703852813994*_x91 + 0.00530703852813994*_x94 + 0.02203679271011334*_x96 + 0.1324199656877208*_x97 + 0.5343638964628886*_x98 + 0.3484991272447184*_x99
-    _x141 = (1.0/math.sqrt(_x139))
-    _x142 = _x140/_x139**(1.5)
-    _x143 = _x166**2
-    _x144 = _x112*_x141
-    _x145 = _x116*_x141*_x59
-    _x146 = _x141*_x50
-    _x147 = -_x121 - 0.050345455482979015*_x23 - 0.050345455482979015*_x24 + 0.050345455482979015*_x25*_x26*_x9 - 0.11622097556712797*_x38 - 0.11622097556712797*_x39 + 0.11622097556712797*_x40*_x41*_x9 - 0.0025147977064533143*_x5 - 0.2353986790647292*_x53 - 0.2353986790647292*_x54 + 0.2353986790647292*_x55*_x56*_x9 - 0.0025147977064533143*_x6 - 0.10372825048336794*_x68 - 0.10372825048336794*_x69 + 0.0025147977064533143*_x7*_x8*_x9 + 0.10372825048336794*_x70*_x71*_x9 + 0.008208158304657426*_x80*k_d + 0.008208158304657426*_x82*g_s*m - 0.008208158304657426*_x88
-    _x148 = 0.20745650096673587*_x100 - 0.016416316609314852*_x101 + 0.0025147977064533143*_x13 + 0.0025147977064533143*_x15 + 0.0025147977064533143*_x19 + 0.050345455482979015*_x30 + 0.050345455482979015*_x31 + 0.050345455482979015*_x34 + 0.11622097556712797*_x45 + 0.11622097556712797*_x46 + 0.11622097556712797*_x49 + 0.2353986790647292*_x60 + 0.2353986790647292*_x61 + 0.2353986790647292*_x64 + 0.10372825048336794*_x75 + 0.10372825048336794*_x76 + 0.10372825048336794*_x79 - 0.008208158304657426*_x90 - 0.008208158304657426*_x91 - 0.008208158304657426*_x94 + 0.005029595412906629*_x96 + 0.10069091096595803*_x97 + 0.23244195113425595*_x98 + 0.4707973581294584*_x99
-    _x149 = (1.0/math.sqrt(_x147))
-    _x150 = _x148/_x147**(1.5)
-    _x151 = _x167**2
-    _x152 = _x112*_x149
-    _x153 = _x116*_x149*_x74
-    _x154 = _x149*_x65
-    _x155 = -_x138 - 0.029703284805013122*_x23 - 0.029703284805013122*_x24 + 0.029703284805013122*_x25*_x26*_x9 - 0.10140664131431479*_x38 - 0.10140664131431479*_x39 + 0.10140664131431479*_x40*_x41*_x9 - 0.003959513229722528*_x5 - 0.14531313573962065*_x53 - 0.14531313573962065*_x54 + 0.14531313573962065*_x55*_x56*_x9 - 0.003959513229722528*_x6 - 0.17612158869639333*_x68 - 0.17612158869639333*_x69 + 0.003959513229722528*_x7*_x8*_x9 + 0.17612158869639333*_x70*_x71*_x9 - 0.04349583621493557*_x83 - 0.04349583621493557*_x84 + 0.04349583621493557*_x85*_x86*_x9
-    _x156 = 0.35224317739278665*_x100 + 0.08699167242987114*_x101 + 0.003959513229722528*_x13 + 0.003959513229722528*_x15 + 0.003959513229722528*_x19 + 0.029703284805013122*_x30 + 0.029703284805013122*_x31 + 0.029703284805013122*_x34 + 0.10140664131431479*_x45 + 0.10140664131431479*_x46 + 0.10140664131431479*_x49 + 0.14531313573962065*_x60 + 0.14531313573962065*_x61 + 0.14531313573962065*_x64 + 0.17612158869639333*_x75 + 0.17612158869639333*_x76 + 0.17612158869639333*_x79 + 0.04349583621493557*_x90 + 0.04349583621493557*_x91 + 0.04349583621493557*_x94 + 0.007919026459445056*_x96 + 0.059406569610026244*_x97 + 0.20281328262862958*_x98 + 0.2906262714792413*_x99
-    _x157 = (1.0/math.sqrt(_x155))
-    _x158 = _x156/_x155**(1.5)
-    _x159 = _x168**2
-    _x160 = _x112*_x157
-    _x161 = _x116*_x157*_x89
-    _x162 = _x157*_x80
-    _fsigma0 = _x0
-    _fsigma0__tan = _x1
-    _fF0 = _x11 + _x2 - _x5 - _x6
-    _fF0__tan = _x13 + _x15 + _x16*_x18 + _x19
-    _fsigma1 = _x20
-    _fsigma1__tan = _x21
-    _fF1 = _x2 - _x23 - _x24 + _x28
-    _fF1__tan = _x16*_x33 + _x30 + _x31 + _x34
-    _fsigma2 = _x35
-    _fsigma2__tan = _x36
-    _fF2 = _x2 - _x38 - _x39 + _x43
-    _fF2__tan = _x16*_x48 + _x45 + _x46 + _x49
-    _fsigma3 = _x50
-    _fsigma3__tan = _x51
-    _fF3 = _x2 - _x53 - _x54 + _x58
-    _fF3__tan = _x16*_x63 + _x60 + _x61 + _x64
-    _fsigma4 = _x65
-    _fsigma4__tan = _x66
-    _fF4 = _x2 - _x68 - _x69 + _x73
-    _fF4__tan = _x16*_x78 + _x75 + _x76 + _x79
-    _fsigma5 = _x80
-    _fsigma5__tan = _x81
-    _fF5 = _x2 - _x83 - _x84 + _x88
-    _fF5__tan = _x16*_x93 + _x90 + _x91 + _x94
-    _fPsi0 = _x95
-    _fPsi0__tan = _x102
-    _fft0 = _x103*_x106
-    _fft0__tan = (0.5)*_D__tan*_x103*_x105*_x107 - _x108*_x109
-    _ffq0 = _P0*_x110*_x113
-    _ffq0__tan = (0.5)*_D__tan*_P0*_x103*_x107*_x110*_x111 - _P0*_x109*_x110*_x114 + _P0__tan*_x103*_x104*_x110*_x111 - 2.0*_x1*_x113*_x17
-    _ffp0 = _x0*_x117
-    _ffp0__tan = _Q0__tan*_x116*_x118*_x3 - _x0*_x109*_x12*_x120 + _x1*_x117 + _x118*_x119*_x12
-    _fPsi1 = _x122
-    _fPsi1__tan = _x123
-    _fft1 = _x106*_x124
-    _fft1__tan = (0.5)*_D__tan*_x105*_x107*_x124 - _x108*_x125
-    _ffq1 = _P1*_x126*_x127
-    _ffq1__tan = (0.5)*_D__tan*_P1*_x107*_x111*_x124*_x126 - _P1*_x114*_x125*_x126 + _P1__tan*_x104*_x111*_x124*_x126 - 2.0*_x127*_x21*_x32
-    _ffp1 = _x128*_x20
-    _ffp1__tan = _Q1__tan*_x116*_x129*_x22 + _x119*_x129*_x29 - _x120*_x125*_x20*_x29 + _x128*_x21
-    _fPsi2 = _x130
-    _fPsi2__tan = _x131
-    _fft2 = _x106*_x132
-    _fft2__tan = (0.5)*_D__tan*_x105*_x107*_x132 - _x108*_x133
-    _ffq2 = _P2*_x134*_x135
-    _ffq2__tan = (0.5)*_D__tan*_P2*_x107*_x111*_x132*_x134 - _P2*_x114*_x133*_x134 + _P2__tan*_x104*_x111*_x132*_x134 - 2.0*_x135*_x36*_x47
-    _ffp2 = _x136*_x35
-    _ffp2__tan = _Q2__tan*_x116*_x137*_x37 + _x119*_x137*_x44 - _x120*_x133*_x35*_x44 + _x136*_x36
-    _fPsi3 = _x139
-    _fPsi3__tan = _x140
-    _fft3 = _x106*_x141
-    _fft3__tan = (0.5)*_D__tan*_x105*_x107*_x141 - _x108*_x142
-    _ffq3 = _P3*_x143*_x144
-    _ffq3__tan = (0.5)*_D__tan*_P3*_x107*_x111*_x141*_x143 - _P3*_x114*_x142*_x143 + _P3__tan*_x104*_x111*_x141*_x143 - 2.0*_x144*_x51*_x62
-    _ffp3 = _x145*_x50
-    _ffp3__tan = _Q3__tan*_x116*_x146*_x52 + _x119*_x146*_x59 - _x120*_x142*_x50*_x59 + _x145*_x51
-    _fPsi4 = _x147
-    _fPsi4__tan = _x148
-    _fft4 = _x106*_x149
-    _fft4__tan = (0.5)*_D__tan*_x105*_x107*_x149 - _x108*_x150
-    _ffq4 = _P4*_x151*_x152
-    _ffq4__tan = (0.5)*_D__tan*_P4*_x107*_x111*_x149*_x151 - _P4*_x114*_x150*_x151 + _P4__tan*_x104*_x111*_x149*_x151 - 2.0*_x152*_x66*_x77
-    _ffp4 = _x153*_x65
-    _ffp4__tan = _Q4__tan*_x116*_x154*_x67 + _x119*_x154*_x74 - _x120*_x150*_x65*_x74 + _x153*_x66
-    _fPsi5 = _x155
-    _fPsi5__tan = _x156
-    _fft5 = _x106*_x157
-    _fft5__tan = (0.5)*_D__tan*_x105*_x107*_x157 - _x108*_x158
-    _ffq5 = _P5*_x159*_x160
-    _ffq5__tan = (0.5)*_D__tan*_P5*_x107*_x111*_x157*_x159 - _P5*_x114*_x158*_x159 + _P5__tan*_x104*_x111*_x157*_x159 - 2.0*_x160*_x81*_x92
-    _ffp5 = _x161*_x80
-    _ffp5__tan = _Q5__tan*_x116*_x162*_x82 + _x119*_x162*_x89 - _x120*_x158*_x80*_x89 + _x161*_x81
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi0 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi1 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi2 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi3 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi4 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    # p_r^2 = 2 m int F_r > 0 at every node
-    if not ((_fPsi5 > 0.0)):
-        return _NAN24 + (STATUS_IMAGINARY_MOMENTUM,)
-    _work = 0.0028924065498159377*_fF0 + 0.030555658668093604*_fF1 + 0.08906517308699231*_fF2 + 0.14489179419935322*_fF3 + 0.1498251278559757*_fF4 + 0.08276983963976924*_fF5
-    _work__tan = 0.0028924065498159377*_fF0__tan + 0.030555658668093604*_fF1__tan + 0.08906517308699231*_fF2__tan + 0.14489179419935322*_fF3__tan + 0.1498251278559757*_fF4__tan + 0.08276983963976924*_fF5__tan
+    # Total ops: 121
+    _work = 0.0028924065498159377*_iF0 + 0.030555658668093604*_iF1 + 0.08906517308699231*_iF2 + 0.14489179419935322*_iF3 + 0.1498251278559757*_iF4 + 0.08276983963976924*_iF5
+    _work__tan = 0.0028924065498159377*_iF0__tan + 0.030555658668093604*_iF1__tan + 0.08906517308699231*_iF2__tan + 0.14489179419935322*_iF3__tan + 0.1498251278559757*_iF4__tan + 0.08276983963976924*_iF5__tan
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
-        return _NAN24 + (STATUS_NO_LIFTOFF,)
+        return _NAN12 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-    _x169 = math.sqrt(_D*_work)/math.sqrt(m)
-    _x170 = q_r**2
-    _x171 = q_r_lo**-2
-    _x172 = _x171/m
-    _x173 = 0.08566224618958518*_x172
-    _x174 = 0.1803807865240693*_x172
-    _x175 = 0.23395696728634552*_x172
-    t_half = 0.08566224618958518*_fft0 + 0.1803807865240693*_fft1 + 0.23395696728634552*_fft2 + 0.23395696728634552*_fft3 + 0.1803807865240693*_fft4 + 0.08566224618958518*_fft5
-    t_half__tan = 0.08566224618958518*_fft0__tan + 0.1803807865240693*_fft1__tan + 0.23395696728634552*_fft2__tan + 0.23395696728634552*_fft3__tan + 0.1803807865240693*_fft4__tan + 0.08566224618958518*_fft5__tan
-    end_q_th = 0.08566224618958518*_ffq0 + 0.1803807865240693*_ffq1 + 0.23395696728634552*_ffq2 + 0.23395696728634552*_ffq3 + 0.1803807865240693*_ffq4 + 0.08566224618958518*_ffq5 + q_th
-    end_q_th__tan = 0.08566224618958518*_ffq0__tan + 0.1803807865240693*_ffq1__tan + 0.23395696728634552*_ffq2__tan + 0.23395696728634552*_ffq3__tan + 0.1803807865240693*_ffq4__tan + 0.08566224618958518*_ffq5__tan + q_th__tan
+    _x0 = math.sqrt(_D*_work)/math.sqrt(m)
+    _x1 = q_r**2
+    _x2 = q_r_lo**-2
+    _x3 = _x2/m
+    _x4 = 0.08566224618958518*_x3
+    _x5 = 0.1803807865240693*_x3
+    _x6 = 0.23395696728634552*_x3
+    t_half = 0.08566224618958518*_ift0 + 0.1803807865240693*_ift1 + 0.23395696728634552*_ift2 + 0.23395696728634552*_ift3 + 0.1803807865240693*_ift4 + 0.08566224618958518*_ift5
+    t_half__tan = 0.08566224618958518*_ift0__tan + 0.1803807865240693*_ift1__tan + 0.23395696728634552*_ift2__tan + 0.23395696728634552*_ift3__tan + 0.1803807865240693*_ift4__tan + 0.08566224618958518*_ift5__tan
+    end_q_th = 0.08566224618958518*_ifq0 + 0.1803807865240693*_ifq1 + 0.23395696728634552*_ifq2 + 0.23395696728634552*_ifq3 + 0.1803807865240693*_ifq4 + 0.08566224618958518*_ifq5 + q_th
+    end_q_th__tan = 0.08566224618958518*_ifq0__tan + 0.1803807865240693*_ifq1__tan + 0.23395696728634552*_ifq2__tan + 0.23395696728634552*_ifq3__tan + 0.1803807865240693*_ifq4__tan + 0.08566224618958518*_ifq5__tan + q_th__tan
     end_q_r = q_r_lo
-    end_q_rd = 2.0*_x169
-    end_q_rd__tan = _work__tan*_x169/_work + _D__tan*_x169/_D
-    end_q_thd = _x172*(0.08566224618958518*_ffp0 + 0.1803807865240693*_ffp1 + 0.23395696728634552*_ffp2 + 0.23395696728634552*_ffp3 + 0.1803807865240693*_ffp4 + 0.08566224618958518*_ffp5 + _x170*m*q_thd)
-    end_q_thd__tan = _ffp0__tan*_x173 + _ffp1__tan*_x174 + _ffp2__tan*_x175 + _ffp3__tan*_x175 + _ffp4__tan*_x174 + _ffp5__tan*_x173 + _x170*_x171*q_thd__tan + 2.0*_x171*q_r*q_r__tan*q_thd
+    end_q_rd = 2.0*_x0
+    end_q_rd__tan = _work__tan*_x0/_work + _D__tan*_x0/_D
+    end_q_thd = _x3*(0.08566224618958518*_ifp0 + 0.1803807865240693*_ifp1 + 0.23395696728634552*_ifp2 + 0.23395696728634552*_ifp3 + 0.1803807865240693*_ifp4 + 0.08566224618958518*_ifp5 + _x1*m*q_thd)
+    end_q_thd__tan = _ifp0__tan*_x4 + _ifp1__tan*_x5 + _ifp2__tan*_x6 + _ifp3__tan*_x6 + _ifp4__tan*_x5 + _ifp5__tan*_x4 + _x1*_x2*q_thd__tan + 2.0*_x2*q_r*q_r__tan*q_thd
     passes = _passes
     # (internal helper: its callers check that their outputs are finite)
-    return (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6039,18 +4802,18 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(
         _Q0__tan: result for the caller
         _P0__tan: result for the caller
         _passes: result for the caller
-        _fsigma0: result for the caller
-        _fsigma0__tan: result for the caller
-        _fF0: result for the caller
-        _fF0__tan: result for the caller
-        _fPsi0: result for the caller
-        _fPsi0__tan: result for the caller
-        _fft0: result for the caller
-        _fft0__tan: result for the caller
-        _ffq0: result for the caller
-        _ffq0__tan: result for the caller
-        _ffp0: result for the caller
-        _ffp0__tan: result for the caller
+        _isigma0: result for the caller
+        _isigma0__tan: result for the caller
+        _iF0: result for the caller
+        _iF0__tan: result for the caller
+        _iPsi0: result for the caller
+        _iPsi0__tan: result for the caller
+        _ift0: result for the caller
+        _ift0__tan: result for the caller
+        _ifq0: result for the caller
+        _ifq0__tan: result for the caller
+        _ifp0: result for the caller
+        _ifp0__tan: result for the caller
         _work: result for the caller
         _work__tan: result for the caller
         t_half: result for the caller
@@ -6095,12 +4858,19 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(
     _P5__tan = 0.966234757101576*guess_q_thd__tan*m*q_r_lo**2 + 0.03376524289842399*m*q_r**2*q_thd__tan + 0.06753048579684798*m*q_r*q_r__tan*q_thd
     _passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
+            return _NAN31 + (STATUS_NOT_CONVERGED,)
+        # evaluation and update
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_12(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_th, q_th__tan, q_thd, q_thd__tan)
-        if _c0[26] != STATUS_OK:
-            return _NAN31 + (_c0[26],)
-        (_next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
+        if _c0[78] != STATUS_OK:
+            return _NAN31 + (_c0[78],)
+        (_isigma0, _isigma0__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iF4, _iF4__tan, _iF5, _iF5__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _ift1, _ift1__tan, _ifq1, _ifq1__tan, _ifp1, _ifp1__tan, _ift2, _ift2__tan, _ifq2, _ifq2__tan, _ifp2, _ifp2__tan, _ift3, _ift3__tan, _ifq3, _ifq3__tan, _ifp3, _ifp3__tan, _ift4, _ift4__tan, _ifq4, _ifq4__tan, _ifp4, _ifp4__tan, _ift5, _ift5__tan, _ifq5, _ifq5__tan, _ifp5, _ifp5__tan, _next_D, _next_Q0, _next_Q1, _next_Q2, _next_Q3, _next_Q4, _next_Q5, _next_P0, _next_P1, _next_P2, _next_P3, _next_P4, _next_P5, _next_D__tan, _next_Q0__tan, _next_Q1__tan, _next_Q2__tan, _next_Q3__tan, _next_Q4__tan, _next_Q5__tan, _next_P0__tan, _next_P1__tan, _next_P2__tan, _next_P3__tan, _next_P4__tan, _next_P5__tan, _) = _c0
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = _next_D
         _n0_1 = _next_Q0
         _n0_2 = _next_Q1
@@ -6157,17 +4927,13 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(
         _P4__tan = _n0_24
         _P5__tan = _n0_25
         _passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and _passes > 0.0:
-        return _NAN31 + (STATUS_NOT_CONVERGED,)
     # continuation
-    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(_D, _D__tan, _P0, _P0__tan, _P1, _P1__tan, _P2, _P2__tan, _P3, _P3__tan, _P4, _P4__tan, _P5, _P5__tan, _Q0, _Q0__tan, _Q1, _Q1__tan, _Q2, _Q2__tan, _Q3, _Q3__tan, _Q4, _Q4__tan, _Q5, _Q5__tan, _passes, g_s, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
-    if _c1[24] != STATUS_OK:
-        return _NAN31 + (_c1[24],)
-    (_fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+    _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_13(_D, _D__tan, _iF0, _iF0__tan, _iF1, _iF1__tan, _iF2, _iF2__tan, _iF3, _iF3__tan, _iF4, _iF4__tan, _iF5, _iF5__tan, _ifp0, _ifp0__tan, _ifp1, _ifp1__tan, _ifp2, _ifp2__tan, _ifp3, _ifp3__tan, _ifp4, _ifp4__tan, _ifp5, _ifp5__tan, _ifq0, _ifq0__tan, _ifq1, _ifq1__tan, _ifq2, _ifq2__tan, _ifq3, _ifq3__tan, _ifq4, _ifq4__tan, _ifq5, _ifq5__tan, _ift0, _ift0__tan, _ift1, _ift1__tan, _ift2, _ift2__tan, _ift3, _ift3__tan, _ift4, _ift4__tan, _ift5, _ift5__tan, _passes, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan)
+    if _c1[12] != STATUS_OK:
+        return _NAN31 + (_c1[12],)
+    (_work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     # (internal helper: its callers check that their outputs are finite)
-    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
+    return (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6233,31 +4999,31 @@ def schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r
         _c0 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c0[31] != STATUS_OK:
             return _NAN12 + (_c0[31],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c0
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_5(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c1[31] != STATUS_OK:
             return _NAN12 + (_c1[31],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_8(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c2[31] != STATUS_OK:
             return _NAN12 + (_c2[31],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c2
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_11(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c3[31] != STATUS_OK:
             return _NAN12 + (_c3[31],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c3
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = schwind_decompression_jvp_q_r_q_rd_q_th_q_thd_k_d_guess_q_th_guess_q_thd_14(g_s, guess_q_th, guess_q_th__tan, guess_q_thd, guess_q_thd__tan, iterations, k_d, k_d__tan, l0, m, q_r, q_r__tan, q_r_lo, q_th, q_th__tan, q_thd, q_thd__tan, tol)
         if _c4[31] != STATUS_OK:
             return _NAN12 + (_c4[31],)
-        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _fsigma0, _fsigma0__tan, _fF0, _fF0__tan, _fPsi0, _fPsi0__tan, _fft0, _fft0__tan, _ffq0, _ffq0__tan, _ffp0, _ffp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c4
+        (_D, _Q0, _P0, _D__tan, _Q0__tan, _P0__tan, _passes, _isigma0, _isigma0__tan, _iF0, _iF0__tan, _iPsi0, _iPsi0__tan, _ift0, _ift0__tan, _ifq0, _ifq0__tan, _ifp0, _ifp0__tan, _work, _work__tan, t_half, t_half__tan, end_q_th, end_q_th__tan, end_q_r, end_q_rd, end_q_rd__tan, end_q_thd, end_q_thd__tan, passes, _) = _c4
     else:
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # derivatives that are identically zero

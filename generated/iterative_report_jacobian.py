@@ -7,13 +7,13 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:e58e885f76eb1aa8
 #   geyer_jacobian.py sha256:849e7410cc446e23
-#   geyer_vs_jacobian.py sha256:ed8004ee3dc8f349
-#   gravity_type0_jacobian.py sha256:9c8801e32205e472
-#   gravity_type1_jacobian.py sha256:4169ef80df01f145
-#   gravity_type2_jacobian.py sha256:e540f2eab7594ea0
-#   gravity_type3_jacobian.py sha256:71a238c113adc0f4
-#   gravity_type4_jacobian.py sha256:dcb77054308f58c3
-#   gravity_type5_jacobian.py sha256:0fe0cff033dbdcbe
+#   geyer_vs_jacobian.py sha256:6a8e7e05d561c341
+#   gravity_type0_jacobian.py sha256:5959673629a24379
+#   gravity_type1_jacobian.py sha256:2c3159e4ad28e094
+#   gravity_type2_jacobian.py sha256:4694f70f52b4fbd6
+#   gravity_type3_jacobian.py sha256:fa5175878e56336b
+#   gravity_type4_jacobian.py sha256:bd2cc6073042d6b1
+#   gravity_type5_jacobian.py sha256:afd4adbe4cbb883a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
 
