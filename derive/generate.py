@@ -77,6 +77,11 @@ def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]
     diff = Differentiator()
     for spec in all_maps():
         spec.jacobian_kernels(diff, flights)
+    diff.build()
+    # the flights' one-direction JVPs, which runtime/exact_step_jacobian.py composes with the exact
+    # stance's variational equations
+    diff.jvp(flights["apex_to_touchdown"], ("b_y_apex", "b_xd_apex", "q_th_td"))
+    diff.jvp(flights["liftoff_to_apex"], ("q_r", "q_rd", "q_th", "q_thd"))
     by_module: dict[str, list] = {}
     for kernel in diff.kernels.values():
         by_module.setdefault(kernel.module, []).append(kernel)

@@ -128,11 +128,17 @@ class Guard:
 
 @dataclass(frozen=True)
 class Stage:
-    """Named assignments (in order; a later one may use an earlier one), then guards."""
+    """Named assignments (in order; a later one may use an earlier one), then guards.
+
+    The stage's one CSE sees an assignment that uses an earlier one of the stage with that one
+    inlined, except for the ``opaque`` names, which later assignments read as variables (a
+    derivative stage's tangents: inlining them would expand the chain rule's products).
+    """
 
     assignments: tuple[tuple[sp.Symbol, sp.Basic], ...]
     guards: tuple[Guard, ...] = ()
     comment: str = ""
+    opaque: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -234,6 +240,16 @@ class Kernel:
     #: Inline into every caller at numba's IR level (``njit(inline="always")``): a map's stance kernel
     #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
     inline: bool = False
+    #: Arguments and outputs the finiteness checks leave out: a derivative kernel's directions and
+    #: derivatives (a non-finite derivative is NUMERICAL_RANGE for the public API, runtime/jacobian.py,
+    #: when the Jacobian returns it; one of an output nothing uses must not fail a caller).
+    unchecked: tuple[str, ...] = ()
+    #: The docstring's account of the arguments, when one line per argument says less (an outlined
+    #: kernel's are the caller's variables of the same names).
+    doc_args: str = ""
+    #: The docstring's Returns list, (name, doc) pairs, when one line per output says less (a
+    #: Jacobian's derivative block in one entry).
+    doc_returns: tuple[tuple[str, str], ...] = ()
 
     @property
     def arg_names(self) -> tuple[str, ...]:

@@ -1,12 +1,26 @@
-"""Outlining: a loop body or a switch branch of a kernel becomes a kernel of its own, called in place.
+"""Outlining: a switch branch that holds a loop becomes a kernel of its own, called in place; and
+pruning: the assignments nothing uses are dropped. Used for the derivative kernels (:mod:`.tangent`);
+the maps' own kernels are left as declared.
 
-Why: numba's SSA reconstruction costs about (variables assigned more than once) x (statements of
-the function). A loop's state and a branch's results are assigned more than once, so a large
-function with loops and branches compiles in time quadratic in its size: the Jacobian kernel of
-the compression half of Schwind and Koditschek's iteration (five node-count branches, each a loop
-carrying 13 values and their 8 tangents) took 300 s. Outlined, every function is either small or
-free of reassigned variables. Used for the Jacobian kernels (:mod:`.tangent`); the maps' own
-kernels are left as declared.
+Why: numba's SSA reconstruction rewrites the whole function once per variable that is assigned
+more than once or used where its one assignment does not dominate (a loop's variables, what a
+branch defines): a cost of (such variables) x (statements of the function). A derivative kernel's
+loops carry a tangent per state variable and direction (the compression half of Schwind and
+Koditschek's iteration: 13 values x 7), and its branches define a tangent per output and direction,
+so one function holding the five node-count branches, each a loop, compiled in 300 s. Now:
+
+- a loop with carried variables (the tangents) keeps them in one tuple, unpacked at the top of every
+  pass (derive/lower.py, the packed loop), and its body is not outlined: a loop body outlined into
+  a kernel of its own passed all its values and tangents through the call's arguments and result
+  tuple every pass (about 200 for the six-node half), and every outlined level makes LLVM optimize
+  and compile the kernels below it once more;
+- a switch whose branches hold a loop is outlined (each branch a kernel returning the names used
+  after the switch), so the variables its branches define and use after their loops stay in small
+  functions.
+
+Measured (iterative_jacobian.py, first call of the iterative apex-return Jacobian): with the loop
+bodies outlined as well, the six-node compression branch's loop function and its body kernel took
+4.4 + 3.7 s; packed and inline, 7.6 s for the one function (2026-12-01, shared 2-core machine).
 
 A step sequence's inputs are the names it uses and does not define; its outputs are the names a
 caller needs afterwards. Names are assigned once per scope (checked by :mod:`.lower`), so "used
@@ -16,7 +30,7 @@ and not defined inside" is exactly "defined outside".
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -88,9 +102,74 @@ def visible(steps) -> list[str]:
     return out
 
 
+def prune(steps, live: set[str]) -> tuple:
+    """The steps without the assignments and bindings nothing uses: ``live`` holds the names used
+    after them (a derivative kernel's outputs). A call that can fail stays, and so does every guard;
+    a name every branch of a switch defines is kept in all of them or in none."""
+    out: list = []
+    live = set(live)
+    for step in reversed(tuple(steps)):
+        if isinstance(step, Stage):
+            keep = []
+            for s, e in reversed(step.assignments):
+                if s.name in live:
+                    keep.append((s, e))
+                    live |= _symbols(e)
+            for g in step.guards:
+                live |= _symbols(g.condition)
+            if keep or step.guards:
+                names = {s.name for s, _ in keep}
+                opaque = tuple(n for n in step.opaque if n in names)
+                out.append(replace(step, assignments=tuple(reversed(keep)), opaque=opaque))
+        elif isinstance(step, Call):
+            bind = {o: n for o, n in step.bind.items() if n in live}
+            if bind or step.kernel.status:
+                out.append(replace(step, bind=bind))
+                for e in step.args.values():
+                    live |= _symbols(e)
+        elif isinstance(step, Iterate):
+            inner = {s.name for s, _ in step.state} | {c[0].name for c in step.carry}
+            exprs = list(step.update) + [c[2] for c in step.carry] + list(step.scales)
+            need = set(live) | inner | set().union(*map(_symbols, exprs + [step.tol, step.max_iter]))
+            while True:  # the body reads what the evaluation defines, the evaluation the state
+                body = prune(step.body, need)
+                evaluate = prune(step.evaluate, need | used(body))
+                grown = need | used(body) | used(evaluate)
+                if grown == need:
+                    break
+                need = grown
+            step = replace(step, evaluate=evaluate, body=body)
+            out.append(step)
+            live = (live - defined((step,))) | used((step,))
+        elif isinstance(step, Switch):
+            want = set(live)
+            while True:
+                cases = [(v, prune(b, want)) for v, b in step.cases]
+                publics = [{n for n in defined(b) if not n.startswith("_")} for _, b in cases]
+                both = set.union(*publics) - set.intersection(*publics)
+                if not both - want:
+                    break
+                want |= both
+            step = Switch(step.selector, tuple(cases), step.comment)
+            out.append(step)
+            live = (live - defined((step,))) | used((step,))
+        else:
+            out.append(step)
+    return tuple(reversed(out))
+
+
+def _has_loop(steps) -> bool:
+    for step in steps:
+        if isinstance(step, Iterate):
+            return True
+        if isinstance(step, Switch) and any(_has_loop(b) for _, b in step.cases):
+            return True
+    return False
+
+
 @dataclass
 class Outliner:
-    """Outlines the loop bodies and switch branches of one kernel's steps into kernels named
+    """Outlines the switch branches of one kernel's steps that hold a loop into kernels named
     ``<base>_<n>``, collected by ``emit`` (the caller places them in a module)."""
 
     base: str
@@ -103,7 +182,7 @@ class Outliner:
         self.count += 1
         return Kernel(
             name=name,
-            summary=f"{what} of {self.base} (outlined: derive/outline.py).",
+            summary=f"{what[0].upper()}{what[1:]} of {self.base} (outlined: derive/outline.py).",
             equations=(),
             args=tuple(Arg(sym(n), "value of the caller's variable") for n in inputs),
             steps=steps,
@@ -111,6 +190,8 @@ class Outliner:
             module=self.module,
             check_inputs=False,
             check_outputs=False,
+            doc_args="the caller's variables of the same names.",
+            doc_returns=(("the names every branch defines", "in the order the caller binds them"),),
         )
 
     def _call(self, steps: tuple, outputs: list[str], what: str) -> Call:
@@ -119,72 +200,40 @@ class Outliner:
         self.emit(kernel)
         return Call(kernel, {n: sym(n) for n in inputs}, {n: n for n in outputs}, comment=what)
 
-    def steps(self, steps, needed: list[str]) -> tuple:
-        """Outline the loops and branches of ``steps``; after a loop, the remaining steps become a
-        kernel of their own too (the continuation), returning the ``needed`` names they define, so
-        the function holding a loop holds little else."""
+    def steps(self, steps, needed: set[str]) -> tuple:
+        """The steps with every switch whose branches hold a loop outlined (at any depth);
+        ``needed``: the names used after the steps."""
         out = []
         steps = tuple(steps)
         for i, step in enumerate(steps):
-            if isinstance(step, Iterate):
-                tail = steps[i + 1 :]
-                out.append(self.iterate(step, used(tail) | set(needed)))
-                if tail:
-                    after = set(visible(tail))
-                    outputs = [n for n in needed if n in after]
-                    out.append(self._call(self.steps(tail, outputs), outputs, "continuation"))
-                return tuple(out)
-            out.append(self.switch(step, needed) if isinstance(step, Switch) else step)
+            after = used(steps[i + 1 :]) | set(needed)
+            if isinstance(step, Switch) and any(_has_loop(b) for _, b in step.cases):
+                out.append(self.switch(step, after))
+            elif isinstance(step, Iterate):
+                inner = after | used((step,))
+                evaluate, body = self.steps(step.evaluate, inner), self.steps(step.body, inner)
+                out.append(replace(step, evaluate=evaluate, body=body))
+            else:
+                out.append(step)
         return tuple(out)
 
-    def iterate(self, it: Iterate, after: set[str]) -> Iterate:
-        """The body and the updates become one kernel returning the next values (``_next_<name>``);
-        what the loop evaluates at every iterate another, returning what the body, the updates and
-        the steps ``after`` the loop read of it. Without a body, one kernel evaluates the iterate and
-        returns the next values too (computed once more than needed, at the final iterate)."""
-        names = [s.name for s, _ in it.state] + [c[0].name for c in it.carry]
-        updates = list(it.update) + [c[2] for c in it.carry]
-        nxt = [f"_next{n}" if n.startswith("_") else f"_next_{n}" for n in names]
-        final = Stage(tuple((sym(n), u) for n, u in zip(nxt, updates, strict=True)), comment="next values")
-        evaluate: tuple = ()
-        if it.evaluate and not it.body:
-            outputs = [n for n in visible(it.evaluate) if n in after] + nxt
-            call = self._call(self.steps(it.evaluate + (final,), outputs), outputs, "evaluation and update")
-            evaluate, body = (call,), ()
-        else:
-            if it.evaluate:
-                wanted = used(it.body) | set().union(*map(_symbols, updates)) | after
-                read = [n for n in visible(it.evaluate) if n in wanted]
-                evaluate = (self._call(self.steps(it.evaluate, read), read, "evaluation of the iterate"),)
-            body = (self._call(self.steps(it.body + (final,), nxt), nxt, "loop body"),)
-        k = len(it.state)
-        return Iterate(
-            state=it.state,
-            evaluate=evaluate,
-            body=body,
-            update=tuple(sym(n) for n in nxt[:k]),
-            max_iter=it.max_iter,
-            tol=it.tol,
-            scales=it.scales,
-            count=it.count,
-            fail_status=it.fail_status,
-            comment=it.comment,
-            carry=tuple((c[0], c[1], sym(n)) for c, n in zip(it.carry, nxt[k:], strict=True)),
-        )
-
-    def switch(self, sw: Switch, needed: list[str]) -> Switch:
-        """Each branch becomes a kernel returning every name all branches define (``needed`` is
-        passed on to the branches' own continuations)."""
-        common = set.intersection(*(set(visible(b)) for _, b in sw.cases)) if sw.cases else set()
-        exported = [n for n in visible(sw.cases[0][1]) if n in common] if sw.cases else []
+    def switch(self, sw: Switch, after: set[str]) -> Switch:
+        """Each branch becomes a kernel returning the names all branches define that are used
+        ``after`` the switch."""
+        common = set.intersection(*(set(visible(b)) for _, b in sw.cases))
+        exported = [n for n in visible(sw.cases[0][1]) if n in common and n in after]
         cases = tuple(
             (
                 value,
-                (self._call(self.steps(steps, exported), exported, f"branch {sw.selector.name} = {value}"),),
+                (
+                    self._call(
+                        self.steps(steps, set(exported)), exported, f"branch {sw.selector.name} = {value}"
+                    ),
+                ),
             )
             for value, steps in sw.cases
         )
         return Switch(sw.selector, cases, sw.comment)
 
 
-__all__ = ["Outliner", "defined", "used", "visible"]
+__all__ = ["Outliner", "defined", "prune", "used", "visible"]
