@@ -4,6 +4,7 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
 
@@ -14,7 +15,8 @@ from numba import njit, prange
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD, STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
+    STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE)
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
@@ -44,7 +46,9 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     """
     # Total ops: 24
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
@@ -63,7 +67,8 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
     touchdown_q_thd = (_x0*_x2*_x3*_x4 - _x1*b_xd_apex)/q_r_td
     t_flight = _x5/_x2
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight)):
+    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
+            and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight)):
         return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, STATUS_OK)
 
@@ -90,7 +95,8 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     """
     # Total ops: 19
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -115,6 +121,7 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f):
     t_flight = _x5
     dx_flight = _x5*b_xd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight)):
+    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight)
+            and math.isfinite(dx_flight)):
         return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, STATUS_OK)

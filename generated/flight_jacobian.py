@@ -4,8 +4,10 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
+its stance and apex-return Jacobians."""
 
 import math
 
@@ -14,7 +16,8 @@ from numba import njit, prange
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD, STATUS_LIFTOFF_BACKWARD
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
+    STATUS_LIFTOFF_BACKWARD)
 
 NAN = math.nan
 _NAN8 = (NAN,) * 8
@@ -25,7 +28,8 @@ _NAN20 = (NAN,) * 20
 
 @njit(cache=True, error_model="numpy")
 def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives of its outputs with respect to b_y_apex, b_xd_apex, q_th_td.
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives
+    of its outputs with respect to b_y_apex, b_xd_apex, q_th_td.
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
@@ -45,12 +49,15 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
         touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
         touchdown_q_thd: leg angle rate [rad/s]
         t_flight: time from the apex to touchdown [s]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 47
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return _NAN20 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     d_drop__q_th_td = q_r_td*math.sin(q_th_td)
@@ -96,12 +103,18 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     d_t_flight__b_y_apex = _pd__2
     d_t_flight__b_xd_apex = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, d_touchdown_q_r__b_y_apex, d_touchdown_q_r__b_xd_apex, d_touchdown_q_r__q_th_td, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td, d_touchdown_q_th__b_y_apex, d_touchdown_q_th__b_xd_apex, d_touchdown_q_th__q_th_td, d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td, d_t_flight__b_y_apex, d_t_flight__b_xd_apex, d_t_flight__q_th_td, STATUS_OK)
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight,
+        d_touchdown_q_r__b_y_apex, d_touchdown_q_r__b_xd_apex, d_touchdown_q_r__q_th_td,
+        d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td,
+        d_touchdown_q_th__b_y_apex, d_touchdown_q_th__b_xd_apex, d_touchdown_q_th__q_th_td,
+        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
+        d_t_flight__b_y_apex, d_t_flight__b_xd_apex, d_t_flight__q_th_td, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f):
-    """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with respect to q_rd, q_th, q_thd.
+    """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with
+    respect to q_rd, q_th, q_thd.
 
     Report equations: sec2.1-apex, sec2.2.2.
 
@@ -120,12 +133,14 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f):
         apex_b_xd: next apex horizontal speed [m/s]
         t_flight: time from liftoff to the apex [s]
         dx_flight: horizontal distance travelled from liftoff to the apex [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_rd, q_th, q_thd (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_rd, q_th, q_thd
+            (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 39
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
         return _NAN16 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -176,12 +191,16 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f):
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd, d_t_flight__q_th, d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, STATUS_OK)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd,
+        d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd, d_t_flight__q_th,
+        d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan).
+def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, b_y_apex__tan,
+        b_xd_apex__tan, q_th_td__tan):
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative
+    of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan).
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
@@ -209,7 +228,9 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     """
     # Total ops: 48
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - q_r_td*math.cos(q_th_td)
     drop__tan = b_y_apex__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
@@ -241,12 +262,15 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_t
     touchdown_q_r__tan = 0.0
     touchdown_q_th__tan = q_th_td__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, STATUS_OK)
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, touchdown_q_r__tan,
+        touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__tan, q_rd__tan, q_th__tan, q_thd__tan):
-    """Ballistic ascent from a polar liftoff state to the next apex, with the derivative of every output along the direction (q_r__tan, q_rd__tan, q_th__tan, q_thd__tan).
+def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__tan, q_rd__tan, q_th__tan,
+        q_thd__tan):
+    """Ballistic ascent from a polar liftoff state to the next apex, with the derivative of every output along
+    the direction (q_r__tan, q_rd__tan, q_th__tan, q_thd__tan).
 
     Report equations: sec2.1-apex, sec2.2.2.
 
@@ -274,7 +298,8 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     """
     # Total ops: 44
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and ((q_r > 0.0)) and ((g_f > 0.0))):
         return _NAN8 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -309,4 +334,5 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, q_r__ta
     # derivatives of the outputs
     apex_b_xd__tan = b_xd__tan
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, STATUS_OK)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_y__tan, apex_b_xd__tan, t_flight__tan,
+        dx_flight__tan, STATUS_OK)

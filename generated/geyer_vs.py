@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:a291c3b0eaea5af3
-#   geyer.py sha256:677d7d2464b0d738
+#   flight.py sha256:e1c99c5d9ccf115a
+#   geyer.py sha256:56141b7b10ce8833
 # ----------------------------------------------------------------------------------------------
-"""Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels."""
+"""Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -19,7 +21,8 @@ from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL,
+    STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN1 = (NAN,) * 1
@@ -48,7 +51,9 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
+    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((g_s > 0.0))):
         return _NAN1 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
     _x0 = g_s*m
@@ -62,7 +67,8 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     _x8 = math.sqrt(2.0)*abs(p)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x2 + _x4*k_c*l0 - 0.5*_x5 - _x6))
     q_start = -0.5*_x1 - 0.5*_x7 + (0.25)*_x8 + (0.5)*l0 + (0.5)*abs(_x3 + _x7 + (0.5)*_x8)
     # E_ab above the minimum of the potential
-    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
+            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
         return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # Newton's method on V - E: monotone from the left
     qb = q_start
@@ -73,7 +79,8 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         # V decreasing left of the root
         if not ((slope < 0.0)):
             return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
-        _n0_0 = qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2 + (0.5)*p**2/(m*qb**2))/slope
+        _n0_0 = (qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2
+            + (0.5)*p**2/(m*qb**2))/slope)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
@@ -94,10 +101,12 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity,
+        iterations, tol):
     """Simple variable-stiffness map (Geyer et al. per half): touchdown state -> bottom and liftoff states.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Section 5.1: apex to bottom (78)-(89) with k_c, bottom to apex (90)-(105) with k_d and E_ba
     = E_ab + (k_d - k_c)(l0 - q_r_b)^2/2; option continuity chooses (103)-(104) with the
@@ -115,10 +124,14 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         k_d: leg stiffness after the bottom k_d [N/m]
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -138,14 +151,24 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     """
     # Total ops: 297
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k_c
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)
     P_c_compression = 0.0
     P_c_decompression = 0.0
@@ -179,7 +202,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_t_bottom = _x3*(-i_ab_phase_td + (1.5)*math.pi)
         i_bottom_q_r = _x5*l0
         i_bottom_q_rd = 0.0
-        i_bottom_q_th = -3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td
+        i_bottom_q_th = (-3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega
+            + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td)
         i_p_b = _x8
         i_bottom_q_thd = _x8/(_x5**2*l0**2*m)
         i_rho_b = _x4
@@ -208,7 +232,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             _x14 = i_ba_omega**2
             _x15 = 2.0*_x17*g_s
             _x16 = (1.0/m)
-            i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
+            i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
+                + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
             return _NAN13 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
@@ -233,7 +258,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         _x22 = (1.5)*math.pi
         _x23 = _x21*i_ba_phase_lo
         _x24 = _x21*i_ba_omega
-        _x25 = -_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th
+        _x25 = (-_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a
+            - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th)
         _x27 = q_r_lo**2
         _x28 = (1.0/_x27)
         _x29 = P_c_decompression + i_p_b
@@ -242,7 +268,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_liftoff_q_r = q_r_lo
         i_liftoff_q_th = _x25
         i_liftoff_q_thd = _x26*_x28*_x29
-        i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
+        i_q_rd_lo_sq = (-_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r
+            + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN13 + (STATUS_FALL,)
@@ -250,7 +277,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
             return _NAN13 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
-        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
+            else (math.sqrt(i_q_rd_lo_sq)))
         if _conv0 or _it0 == _last0:
             break
         # the virtual gravity effect of each half
@@ -268,10 +296,12 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             _x33 = (1.0/i_ab_omega0_hat)
             _x34 = i_ab_a + 1.0
             _x35 = (1.5)*math.pi
-            _x36 = _x33*l0*(_x34*_x35 - _x34*i_ab_phase_td + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33)
+            _x36 = (_x33*l0*(_x34*_x35 - _x34*i_ab_phase_td
+                + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33))
             _x37 = (1.0/i_ba_omega0_hat)
             _x38 = i_ba_a + 1.0
-            _x39 = _x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37 + _x37*i_ba_phase_lo)
+            _x39 = (_x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37
+                + _x37*i_ba_phase_lo))
             _x40 = math.sin(i_bottom_q_th)
             _x41 = g_s*m
             _x42 = _x36*_x41
@@ -286,7 +316,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
@@ -302,22 +333,30 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
+            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
         return _NAN13 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo,
+            continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -335,10 +374,12 @@ def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol):
     """Simple variable-stiffness map (Geyer et al. per half): the polar state a time t after touchdown.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -352,10 +393,14 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         k_d: leg stiffness after the bottom k_d [N/m]
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -366,14 +411,24 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     """
     # Total ops: 349
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k_c
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)
     P_c_compression = 0.0
     P_c_decompression = 0.0
@@ -407,7 +462,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_t_bottom = _x3*(-i_ab_phase_td + (1.5)*math.pi)
         i_bottom_q_r = _x5*l0
         i_bottom_q_rd = 0.0
-        i_bottom_q_th = -3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td
+        i_bottom_q_th = (-3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega
+            + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td)
         i_p_b = _x8
         i_bottom_q_thd = _x8/(_x5**2*l0**2*m)
         i_rho_b = _x4
@@ -436,7 +492,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             _x14 = i_ba_omega**2
             _x15 = 2.0*_x17*g_s
             _x16 = (1.0/m)
-            i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
+            i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
+                + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
             return _NAN4 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
@@ -461,7 +518,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         _x22 = (1.5)*math.pi
         _x23 = _x21*i_ba_phase_lo
         _x24 = _x21*i_ba_omega
-        _x25 = -_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th
+        _x25 = (-_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a
+            - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th)
         _x27 = q_r_lo**2
         _x28 = (1.0/_x27)
         _x29 = P_c_decompression + i_p_b
@@ -470,7 +528,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_liftoff_q_r = q_r_lo
         i_liftoff_q_th = _x25
         i_liftoff_q_thd = _x26*_x28*_x29
-        i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
+        i_q_rd_lo_sq = (-_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r
+            + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN4 + (STATUS_FALL,)
@@ -478,7 +537,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
             return _NAN4 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
-        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
+            else (math.sqrt(i_q_rd_lo_sq)))
         if _conv0 or _it0 == _last0:
             break
         # the virtual gravity effect of each half
@@ -496,10 +556,12 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             _x33 = (1.0/i_ab_omega0_hat)
             _x34 = i_ab_a + 1.0
             _x35 = (1.5)*math.pi
-            _x36 = _x33*l0*(_x34*_x35 - _x34*i_ab_phase_td + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33)
+            _x36 = (_x33*l0*(_x34*_x35 - _x34*i_ab_phase_td
+                + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33))
             _x37 = (1.0/i_ba_omega0_hat)
             _x38 = i_ba_a + 1.0
-            _x39 = _x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37 + _x37*i_ba_phase_lo)
+            _x39 = (_x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37
+                + _x37*i_ba_phase_lo))
             _x40 = math.sin(i_bottom_q_th)
             _x41 = g_s*m
             _x42 = _x36*_x41
@@ -514,7 +576,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
@@ -530,12 +593,14 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
     # eqs (78)-(79): the first half
-    _c2 = geyer_state(i_ab_omega0_hat*t + i_ab_phase_td, i_ab_phase_td, q_th_td, i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, l0)
+    _c2 = (geyer_state(i_ab_omega0_hat*t + i_ab_phase_td, i_ab_phase_td, q_th_td, i_ab_omega, i_ab_omega0_hat,
+        i_ab_a, i_ab_b, l0))
     c_q_r = _c2[0]
     c_q_rd = _c2[1]
     c_q_th = _c2[2]
     c_q_thd = _c2[3]
-    # the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, (90)-(92) after; the rates with the momentum at t
+    # the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, (90)-(92) after; the rates
+    # with the momentum at t
     _x44 = (i_t_bottom >= t)
     _x45 = -i_t_bottom + t
     _x46 = _x45*i_ba_omega0_hat
@@ -548,8 +613,10 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     _x53 = (1.0/m)
     q_r = ((c_q_r) if _x44 else (_x47*l0))
     q_rd = ((c_q_rd) if _x44 else (_x48*i_ba_omega0_hat*l0))
-    q_th = ((c_q_th) if _x44 else (-_x49*_x51 + 3.0*math.pi*_x51*i_ba_a + _x52*i_ba_omega - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
-    q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44 else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
+    q_th = ((c_q_th) if _x44 else (-_x49*_x51 + 3.0*math.pi*_x51*i_ba_a + _x52*i_ba_omega
+        - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
+    q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44
+        else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
         return _NAN4 + (STATUS_NUMERICAL_RANGE,)
@@ -557,16 +624,19 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+    continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+            continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -575,10 +645,12 @@ def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity,
+        gravity, iterations, tol):
     """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half).
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Arguments:
         b_y_apex: apex height of the body above the ground [m], >= 0
@@ -592,10 +664,14 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -614,7 +690,16 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
+            == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
@@ -626,10 +711,12 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
     td_q_thd = _c0[3]
     t_descent = _c0[4]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+    _c1 = (geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol))
     if _c1[13] != STATUS_OK:
         return _NAN12 + (_c1[13],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
+        P_c_decompression, passes, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[4] != STATUS_OK:
@@ -638,22 +725,31 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
+            and math.isfinite(passes)):
         return _NAN12 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td,
+            q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,22 +4,26 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:4974722c824d3634
-#   geyer_jacobian.py sha256:be9d1f8206af083d
+#   flight_jacobian.py sha256:5e86edc951466ed7
+#   geyer_jacobian.py sha256:71e01de102ad80c3
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
+its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jac_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL, STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL,
+    STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
@@ -28,10 +32,13 @@ _NAN91 = (NAN,) * 91
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
-    """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol):
+    """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -47,10 +54,14 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         k_d: leg stiffness after the bottom k_d [N/m]
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -66,12 +77,22 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 1472
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
@@ -102,7 +123,11 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
     _conv0 = False
     _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
     for _it0 in range(_last0 + 1):
-        (P_c_compression, P_c_decompression, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, ) = _pk0
+        (P_c_compression, P_c_decompression, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td,
+            d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c,
+            d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
+            d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
+            d_P_c_decompression__k_d, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
             return _NAN91 + (STATUS_NOT_CONVERGED,)
         # the first half's mean momentum as a touchdown rate
@@ -113,7 +138,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         i_q_thd_eff = _x10*_x12
         _pd__0 = (0.5)*_x12
         _pd__1 = _x12
-        d_i_q_thd_eff__q_r_td = _pd__0*d_P_c_compression__q_r_td + _pd__1*d_p_td__q_r_td - 2.0*_x10*_x11*_x13**3
+        d_i_q_thd_eff__q_r_td = (_pd__0*d_P_c_compression__q_r_td + _pd__1*d_p_td__q_r_td
+            - 2.0*_x10*_x11*_x13**3)
         d_i_q_thd_eff__q_rd_td = _pd__0*d_P_c_compression__q_rd_td
         d_i_q_thd_eff__q_th_td = _pd__0*d_P_c_compression__q_th_td
         d_i_q_thd_eff__q_thd_td = _pd__0*d_P_c_compression__q_thd_td + _pd__1*d_p_td__q_thd_td
@@ -123,7 +149,12 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[30] != STATUS_OK:
             return _NAN91 + (_c0[30],)
-        (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, _j_i_ab_omega__q_r_td, _, _j_i_ab_omega__q_thd_td, _, _j_i_ab_omega0_hat__q_r_td, _, _j_i_ab_omega0_hat__q_thd_td, _j_i_ab_omega0_hat__k, _j_i_ab_a__q_r_td, _, _j_i_ab_a__q_thd_td, _j_i_ab_a__k, _j_i_ab_b__q_r_td, _j_i_ab_b__q_rd_td, _j_i_ab_b__q_thd_td, _j_i_ab_b__k, _j_i_ab_phase_td__q_r_td, _j_i_ab_phase_td__q_rd_td, _j_i_ab_phase_td__q_thd_td, _j_i_ab_phase_td__k, _j_i_ab_s_td__q_r_td, _j_i_ab_s_td__q_rd_td, _j_i_ab_s_td__q_thd_td, _j_i_ab_s_td__k, _) = _c0
+        (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, _j_i_ab_omega__q_r_td, _,
+            _j_i_ab_omega__q_thd_td, _, _j_i_ab_omega0_hat__q_r_td, _, _j_i_ab_omega0_hat__q_thd_td,
+            _j_i_ab_omega0_hat__k, _j_i_ab_a__q_r_td, _, _j_i_ab_a__q_thd_td, _j_i_ab_a__k, _j_i_ab_b__q_r_td,
+            _j_i_ab_b__q_rd_td, _j_i_ab_b__q_thd_td, _j_i_ab_b__k, _j_i_ab_phase_td__q_r_td,
+            _j_i_ab_phase_td__q_rd_td, _j_i_ab_phase_td__q_thd_td, _j_i_ab_phase_td__k, _j_i_ab_s_td__q_r_td,
+            _j_i_ab_s_td__q_rd_td, _j_i_ab_s_td__q_thd_td, _j_i_ab_s_td__k, _) = _c0
         # chain rule through geyer_solution
         d_i_ab_omega__q_r_td = _j_i_ab_omega__q_r_td + _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_r_td
         d_i_ab_omega__q_rd_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
@@ -131,7 +162,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_i_ab_omega__q_thd_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_thd_td
         d_i_ab_omega__k_c = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__k_c
         d_i_ab_omega__k_d = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__k_d
-        d_i_ab_omega0_hat__q_r_td = _j_i_ab_omega0_hat__q_r_td + _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_omega0_hat__q_r_td = (_j_i_ab_omega0_hat__q_r_td
+            + _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_r_td)
         d_i_ab_omega0_hat__q_rd_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_rd_td
         d_i_ab_omega0_hat__q_th_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_th_td
         d_i_ab_omega0_hat__q_thd_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_thd_td
@@ -150,7 +182,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_i_ab_b__k_c = _j_i_ab_b__k + _j_i_ab_b__q_thd_td*d_i_q_thd_eff__k_c
         d_i_ab_b__k_d = _j_i_ab_b__q_thd_td*d_i_q_thd_eff__k_d
         d_i_ab_phase_td__q_r_td = _j_i_ab_phase_td__q_r_td + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_r_td
-        d_i_ab_phase_td__q_rd_td = _j_i_ab_phase_td__q_rd_td + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_phase_td__q_rd_td = (_j_i_ab_phase_td__q_rd_td
+            + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_rd_td)
         d_i_ab_phase_td__q_th_td = _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_th_td
         d_i_ab_phase_td__q_thd_td = _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_thd_td
         d_i_ab_phase_td__k_c = _j_i_ab_phase_td__k + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__k_c
@@ -205,12 +238,22 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _pd__7 = -_x19*_x32 + _x28*(-_x16*_x26 - _x31*i_ab_a) + _x30*_x32 + _x31*i_ab_omega
         _pd__8 = -_x20 + _x29*i_ab_a
         _pd__9 = -_x29*i_ab_b*i_ab_s_td/_x25
-        d_i_bottom_q_th__q_r_td = _pd__4*d_i_ab_a__q_r_td + _pd__5*d_i_ab_b__q_r_td + _pd__6*d_i_ab_omega__q_r_td + _pd__7*d_i_ab_omega0_hat__q_r_td + _pd__8*d_i_ab_phase_td__q_r_td + _pd__9*d_i_ab_s_td__q_r_td
-        d_i_bottom_q_th__q_rd_td = _pd__4*d_i_ab_a__q_rd_td + _pd__5*d_i_ab_b__q_rd_td + _pd__6*d_i_ab_omega__q_rd_td + _pd__7*d_i_ab_omega0_hat__q_rd_td + _pd__8*d_i_ab_phase_td__q_rd_td + _pd__9*d_i_ab_s_td__q_rd_td
-        d_i_bottom_q_th__q_th_td = _pd__4*d_i_ab_a__q_th_td + _pd__5*d_i_ab_b__q_th_td + _pd__6*d_i_ab_omega__q_th_td + _pd__7*d_i_ab_omega0_hat__q_th_td + _pd__8*d_i_ab_phase_td__q_th_td + _pd__9*d_i_ab_s_td__q_th_td + 1.0
-        d_i_bottom_q_th__q_thd_td = _pd__4*d_i_ab_a__q_thd_td + _pd__5*d_i_ab_b__q_thd_td + _pd__6*d_i_ab_omega__q_thd_td + _pd__7*d_i_ab_omega0_hat__q_thd_td + _pd__8*d_i_ab_phase_td__q_thd_td + _pd__9*d_i_ab_s_td__q_thd_td
-        d_i_bottom_q_th__k_c = _pd__4*d_i_ab_a__k_c + _pd__5*d_i_ab_b__k_c + _pd__6*d_i_ab_omega__k_c + _pd__7*d_i_ab_omega0_hat__k_c + _pd__8*d_i_ab_phase_td__k_c + _pd__9*d_i_ab_s_td__k_c
-        d_i_bottom_q_th__k_d = _pd__4*d_i_ab_a__k_d + _pd__5*d_i_ab_b__k_d + _pd__6*d_i_ab_omega__k_d + _pd__7*d_i_ab_omega0_hat__k_d + _pd__8*d_i_ab_phase_td__k_d + _pd__9*d_i_ab_s_td__k_d
+        d_i_bottom_q_th__q_r_td = (_pd__4*d_i_ab_a__q_r_td + _pd__5*d_i_ab_b__q_r_td
+            + _pd__6*d_i_ab_omega__q_r_td + _pd__7*d_i_ab_omega0_hat__q_r_td + _pd__8*d_i_ab_phase_td__q_r_td
+            + _pd__9*d_i_ab_s_td__q_r_td)
+        d_i_bottom_q_th__q_rd_td = (_pd__4*d_i_ab_a__q_rd_td + _pd__5*d_i_ab_b__q_rd_td
+            + _pd__6*d_i_ab_omega__q_rd_td + _pd__7*d_i_ab_omega0_hat__q_rd_td
+            + _pd__8*d_i_ab_phase_td__q_rd_td + _pd__9*d_i_ab_s_td__q_rd_td)
+        d_i_bottom_q_th__q_th_td = (_pd__4*d_i_ab_a__q_th_td + _pd__5*d_i_ab_b__q_th_td
+            + _pd__6*d_i_ab_omega__q_th_td + _pd__7*d_i_ab_omega0_hat__q_th_td
+            + _pd__8*d_i_ab_phase_td__q_th_td + _pd__9*d_i_ab_s_td__q_th_td + 1.0)
+        d_i_bottom_q_th__q_thd_td = (_pd__4*d_i_ab_a__q_thd_td + _pd__5*d_i_ab_b__q_thd_td
+            + _pd__6*d_i_ab_omega__q_thd_td + _pd__7*d_i_ab_omega0_hat__q_thd_td
+            + _pd__8*d_i_ab_phase_td__q_thd_td + _pd__9*d_i_ab_s_td__q_thd_td)
+        d_i_bottom_q_th__k_c = (_pd__4*d_i_ab_a__k_c + _pd__5*d_i_ab_b__k_c + _pd__6*d_i_ab_omega__k_c
+            + _pd__7*d_i_ab_omega0_hat__k_c + _pd__8*d_i_ab_phase_td__k_c + _pd__9*d_i_ab_s_td__k_c)
+        d_i_bottom_q_th__k_d = (_pd__4*d_i_ab_a__k_d + _pd__5*d_i_ab_b__k_d + _pd__6*d_i_ab_omega__k_d
+            + _pd__7*d_i_ab_omega0_hat__k_d + _pd__8*d_i_ab_phase_td__k_d + _pd__9*d_i_ab_s_td__k_d)
         _x33 = P_c_compression + p_td
         i_p_b = _x33
         d_i_p_b__q_r_td = d_P_c_compression__q_r_td + d_p_td__q_r_td
@@ -328,12 +371,18 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _pd__21 = 6.0*_x65*i_ba_omega - 4.0*i_ba_omega*i_rho_b + 2.0*i_ba_omega
             _pd__22 = -_x68*_x69*(2.0*i_bottom_q_r - 2.0*l0)
             _pd__23 = _x64 + 2.0*_x67*i_rho_b
-            d_i_eps_ba__q_r_td = _pd__21*d_i_ba_omega__q_r_td + _pd__22*d_i_bottom_q_r__q_r_td + _pd__23*d_i_rho_b__q_r_td
-            d_i_eps_ba__q_rd_td = _pd__21*d_i_ba_omega__q_rd_td + _pd__22*d_i_bottom_q_r__q_rd_td + _pd__23*d_i_rho_b__q_rd_td
-            d_i_eps_ba__q_th_td = _pd__21*d_i_ba_omega__q_th_td + _pd__22*d_i_bottom_q_r__q_th_td + _pd__23*d_i_rho_b__q_th_td
-            d_i_eps_ba__q_thd_td = _pd__21*d_i_ba_omega__q_thd_td + _pd__22*d_i_bottom_q_r__q_thd_td + _pd__23*d_i_rho_b__q_thd_td
-            d_i_eps_ba__k_c = _pd__21*d_i_ba_omega__k_c + _pd__22*d_i_bottom_q_r__k_c + _pd__23*d_i_rho_b__k_c + _x65*_x66 - _x70
-            d_i_eps_ba__k_d = _pd__21*d_i_ba_omega__k_d + _pd__22*d_i_bottom_q_r__k_d + _pd__23*d_i_rho_b__k_d + _x70
+            d_i_eps_ba__q_r_td = (_pd__21*d_i_ba_omega__q_r_td + _pd__22*d_i_bottom_q_r__q_r_td
+                + _pd__23*d_i_rho_b__q_r_td)
+            d_i_eps_ba__q_rd_td = (_pd__21*d_i_ba_omega__q_rd_td + _pd__22*d_i_bottom_q_r__q_rd_td
+                + _pd__23*d_i_rho_b__q_rd_td)
+            d_i_eps_ba__q_th_td = (_pd__21*d_i_ba_omega__q_th_td + _pd__22*d_i_bottom_q_r__q_th_td
+                + _pd__23*d_i_rho_b__q_th_td)
+            d_i_eps_ba__q_thd_td = (_pd__21*d_i_ba_omega__q_thd_td + _pd__22*d_i_bottom_q_r__q_thd_td
+                + _pd__23*d_i_rho_b__q_thd_td)
+            d_i_eps_ba__k_c = (_pd__21*d_i_ba_omega__k_c + _pd__22*d_i_bottom_q_r__k_c
+                + _pd__23*d_i_rho_b__k_c + _x65*_x66 - _x70)
+            d_i_eps_ba__k_d = (_pd__21*d_i_ba_omega__k_d + _pd__22*d_i_bottom_q_r__k_d
+                + _pd__23*d_i_rho_b__k_d + _x70)
         else:
             return _NAN91 + (STATUS_INVALID_INPUT,)
         _x72 = i_ba_omega**2
@@ -349,7 +398,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         i_ba_b2 = -_x74*_x80
         _x81 = _x80*_x83**3
         _x82 = i_ba_omega*m
-        _pd__24 = -_x74*_x76*(2.0*_x73*_x75*i_ba_omega + 4.0*_x77*_x82*l0 + 6.0*_x79*_x82) + 12.0*_x81*i_ba_omega*m**2
+        _pd__24 = (-_x74*_x76*(2.0*_x73*_x75*i_ba_omega + 4.0*_x77*_x82*l0 + 6.0*_x79*_x82)
+            + 12.0*_x81*i_ba_omega*m**2)
         _pd__25 = _x83*m
         d_i_ba_b2__q_r_td = _pd__24*d_i_ba_omega__q_r_td + _pd__25*d_i_eps_ba__q_r_td
         d_i_ba_b2__q_rd_td = _pd__24*d_i_ba_omega__q_rd_td + _pd__25*d_i_eps_ba__q_rd_td
@@ -376,10 +426,14 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _x86 = ((1.0) if _x85 else (0.0))
         _pd__28 = _x86
         _pd__29 = _x86
-        d_i_ba_a__q_r_td = _pd__27*d_i_ba_a_free__q_r_td + _pd__28*d_i_ba_b__q_r_td + _pd__29*d_i_rho_b__q_r_td
-        d_i_ba_a__q_rd_td = _pd__27*d_i_ba_a_free__q_rd_td + _pd__28*d_i_ba_b__q_rd_td + _pd__29*d_i_rho_b__q_rd_td
-        d_i_ba_a__q_th_td = _pd__27*d_i_ba_a_free__q_th_td + _pd__28*d_i_ba_b__q_th_td + _pd__29*d_i_rho_b__q_th_td
-        d_i_ba_a__q_thd_td = _pd__27*d_i_ba_a_free__q_thd_td + _pd__28*d_i_ba_b__q_thd_td + _pd__29*d_i_rho_b__q_thd_td
+        d_i_ba_a__q_r_td = (_pd__27*d_i_ba_a_free__q_r_td + _pd__28*d_i_ba_b__q_r_td
+            + _pd__29*d_i_rho_b__q_r_td)
+        d_i_ba_a__q_rd_td = (_pd__27*d_i_ba_a_free__q_rd_td + _pd__28*d_i_ba_b__q_rd_td
+            + _pd__29*d_i_rho_b__q_rd_td)
+        d_i_ba_a__q_th_td = (_pd__27*d_i_ba_a_free__q_th_td + _pd__28*d_i_ba_b__q_th_td
+            + _pd__29*d_i_rho_b__q_th_td)
+        d_i_ba_a__q_thd_td = (_pd__27*d_i_ba_a_free__q_thd_td + _pd__28*d_i_ba_b__q_thd_td
+            + _pd__29*d_i_rho_b__q_thd_td)
         d_i_ba_a__k_c = _pd__27*d_i_ba_a_free__k_c + _pd__28*d_i_ba_b__k_c + _pd__29*d_i_rho_b__k_c
         d_i_ba_a__k_d = _pd__27*d_i_ba_a_free__k_d + _pd__28*d_i_ba_b__k_d + _pd__29*d_i_rho_b__k_d
         # eq (94): the liftoff phase of the second half
@@ -394,9 +448,12 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _j_i_ba_s_lo__b = _c1[5]
         # chain rule through geyer_liftoff_phase
         d_i_ba_phase_lo__q_r_td = _j_i_ba_phase_lo__a*d_i_ba_a__q_r_td + _j_i_ba_phase_lo__b*d_i_ba_b__q_r_td
-        d_i_ba_phase_lo__q_rd_td = _j_i_ba_phase_lo__a*d_i_ba_a__q_rd_td + _j_i_ba_phase_lo__b*d_i_ba_b__q_rd_td
-        d_i_ba_phase_lo__q_th_td = _j_i_ba_phase_lo__a*d_i_ba_a__q_th_td + _j_i_ba_phase_lo__b*d_i_ba_b__q_th_td
-        d_i_ba_phase_lo__q_thd_td = _j_i_ba_phase_lo__a*d_i_ba_a__q_thd_td + _j_i_ba_phase_lo__b*d_i_ba_b__q_thd_td
+        d_i_ba_phase_lo__q_rd_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_rd_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_rd_td)
+        d_i_ba_phase_lo__q_th_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_th_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_th_td)
+        d_i_ba_phase_lo__q_thd_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_thd_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_thd_td)
         d_i_ba_phase_lo__k_c = _j_i_ba_phase_lo__a*d_i_ba_a__k_c + _j_i_ba_phase_lo__b*d_i_ba_b__k_c
         d_i_ba_phase_lo__k_d = _j_i_ba_phase_lo__a*d_i_ba_a__k_d + _j_i_ba_phase_lo__b*d_i_ba_b__k_d
         d_i_ba_s_lo__q_r_td = _j_i_ba_s_lo__a*d_i_ba_a__q_r_td + _j_i_ba_s_lo__b*d_i_ba_b__q_r_td
@@ -413,10 +470,14 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _x90 = _x87**2
         _pd__30 = -_x89*_x90
         _pd__31 = _x87
-        d_i_t_stance__q_r_td = _pd__30*d_i_ba_omega0_hat__q_r_td + _pd__31*d_i_ba_phase_lo__q_r_td + d_i_t_bottom__q_r_td
-        d_i_t_stance__q_rd_td = _pd__30*d_i_ba_omega0_hat__q_rd_td + _pd__31*d_i_ba_phase_lo__q_rd_td + d_i_t_bottom__q_rd_td
-        d_i_t_stance__q_th_td = _pd__30*d_i_ba_omega0_hat__q_th_td + _pd__31*d_i_ba_phase_lo__q_th_td + d_i_t_bottom__q_th_td
-        d_i_t_stance__q_thd_td = _pd__30*d_i_ba_omega0_hat__q_thd_td + _pd__31*d_i_ba_phase_lo__q_thd_td + d_i_t_bottom__q_thd_td
+        d_i_t_stance__q_r_td = (_pd__30*d_i_ba_omega0_hat__q_r_td + _pd__31*d_i_ba_phase_lo__q_r_td
+            + d_i_t_bottom__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__30*d_i_ba_omega0_hat__q_rd_td + _pd__31*d_i_ba_phase_lo__q_rd_td
+            + d_i_t_bottom__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__30*d_i_ba_omega0_hat__q_th_td + _pd__31*d_i_ba_phase_lo__q_th_td
+            + d_i_t_bottom__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__30*d_i_ba_omega0_hat__q_thd_td + _pd__31*d_i_ba_phase_lo__q_thd_td
+            + d_i_t_bottom__q_thd_td)
         d_i_t_stance__k_c = _pd__30*d_i_ba_omega0_hat__k_c + _pd__31*d_i_ba_phase_lo__k_c + d_i_t_bottom__k_c
         d_i_t_stance__k_d = _pd__30*d_i_ba_omega0_hat__k_d + _pd__31*d_i_ba_phase_lo__k_d + d_i_t_bottom__k_d
         i_liftoff_q_r = q_r_lo
@@ -435,15 +496,28 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _x100 = _x93*i_ba_a
         _pd__34 = _x100*_x87 - _x87*_x88 + _x91 - 2.0*_x94 + 2.0*_x96
         _x101 = _x90*i_ba_phase_lo
-        _pd__35 = -_x100*_x90*i_ba_omega - _x101*i_ba_omega + (1.5)*math.pi*_x90*i_ba_omega - _x97*(-_x101*i_ba_a + _x90*_x95*i_ba_b)
+        _pd__35 = (-_x100*_x90*i_ba_omega - _x101*i_ba_omega + (1.5)*math.pi*_x90*i_ba_omega
+            - _x97*(-_x101*i_ba_a + _x90*_x95*i_ba_b))
         _pd__36 = _x87*i_ba_omega - _x99*i_ba_a
         _pd__37 = -_x99*i_ba_b*i_ba_s_lo/_x95
-        d_i_liftoff_q_th__q_r_td = _pd__32*d_i_ba_a__q_r_td + _pd__33*d_i_ba_b__q_r_td + _pd__34*d_i_ba_omega__q_r_td + _pd__35*d_i_ba_omega0_hat__q_r_td + _pd__36*d_i_ba_phase_lo__q_r_td + _pd__37*d_i_ba_s_lo__q_r_td + d_i_bottom_q_th__q_r_td
-        d_i_liftoff_q_th__q_rd_td = _pd__32*d_i_ba_a__q_rd_td + _pd__33*d_i_ba_b__q_rd_td + _pd__34*d_i_ba_omega__q_rd_td + _pd__35*d_i_ba_omega0_hat__q_rd_td + _pd__36*d_i_ba_phase_lo__q_rd_td + _pd__37*d_i_ba_s_lo__q_rd_td + d_i_bottom_q_th__q_rd_td
-        d_i_liftoff_q_th__q_th_td = _pd__32*d_i_ba_a__q_th_td + _pd__33*d_i_ba_b__q_th_td + _pd__34*d_i_ba_omega__q_th_td + _pd__35*d_i_ba_omega0_hat__q_th_td + _pd__36*d_i_ba_phase_lo__q_th_td + _pd__37*d_i_ba_s_lo__q_th_td + d_i_bottom_q_th__q_th_td
-        d_i_liftoff_q_th__q_thd_td = _pd__32*d_i_ba_a__q_thd_td + _pd__33*d_i_ba_b__q_thd_td + _pd__34*d_i_ba_omega__q_thd_td + _pd__35*d_i_ba_omega0_hat__q_thd_td + _pd__36*d_i_ba_phase_lo__q_thd_td + _pd__37*d_i_ba_s_lo__q_thd_td + d_i_bottom_q_th__q_thd_td
-        d_i_liftoff_q_th__k_c = _pd__32*d_i_ba_a__k_c + _pd__33*d_i_ba_b__k_c + _pd__34*d_i_ba_omega__k_c + _pd__35*d_i_ba_omega0_hat__k_c + _pd__36*d_i_ba_phase_lo__k_c + _pd__37*d_i_ba_s_lo__k_c + d_i_bottom_q_th__k_c
-        d_i_liftoff_q_th__k_d = _pd__32*d_i_ba_a__k_d + _pd__33*d_i_ba_b__k_d + _pd__34*d_i_ba_omega__k_d + _pd__35*d_i_ba_omega0_hat__k_d + _pd__36*d_i_ba_phase_lo__k_d + _pd__37*d_i_ba_s_lo__k_d + d_i_bottom_q_th__k_d
+        d_i_liftoff_q_th__q_r_td = (_pd__32*d_i_ba_a__q_r_td + _pd__33*d_i_ba_b__q_r_td
+            + _pd__34*d_i_ba_omega__q_r_td + _pd__35*d_i_ba_omega0_hat__q_r_td
+            + _pd__36*d_i_ba_phase_lo__q_r_td + _pd__37*d_i_ba_s_lo__q_r_td + d_i_bottom_q_th__q_r_td)
+        d_i_liftoff_q_th__q_rd_td = (_pd__32*d_i_ba_a__q_rd_td + _pd__33*d_i_ba_b__q_rd_td
+            + _pd__34*d_i_ba_omega__q_rd_td + _pd__35*d_i_ba_omega0_hat__q_rd_td
+            + _pd__36*d_i_ba_phase_lo__q_rd_td + _pd__37*d_i_ba_s_lo__q_rd_td + d_i_bottom_q_th__q_rd_td)
+        d_i_liftoff_q_th__q_th_td = (_pd__32*d_i_ba_a__q_th_td + _pd__33*d_i_ba_b__q_th_td
+            + _pd__34*d_i_ba_omega__q_th_td + _pd__35*d_i_ba_omega0_hat__q_th_td
+            + _pd__36*d_i_ba_phase_lo__q_th_td + _pd__37*d_i_ba_s_lo__q_th_td + d_i_bottom_q_th__q_th_td)
+        d_i_liftoff_q_th__q_thd_td = (_pd__32*d_i_ba_a__q_thd_td + _pd__33*d_i_ba_b__q_thd_td
+            + _pd__34*d_i_ba_omega__q_thd_td + _pd__35*d_i_ba_omega0_hat__q_thd_td
+            + _pd__36*d_i_ba_phase_lo__q_thd_td + _pd__37*d_i_ba_s_lo__q_thd_td + d_i_bottom_q_th__q_thd_td)
+        d_i_liftoff_q_th__k_c = (_pd__32*d_i_ba_a__k_c + _pd__33*d_i_ba_b__k_c + _pd__34*d_i_ba_omega__k_c
+            + _pd__35*d_i_ba_omega0_hat__k_c + _pd__36*d_i_ba_phase_lo__k_c + _pd__37*d_i_ba_s_lo__k_c
+            + d_i_bottom_q_th__k_c)
+        d_i_liftoff_q_th__k_d = (_pd__32*d_i_ba_a__k_d + _pd__33*d_i_ba_b__k_d + _pd__34*d_i_ba_omega__k_d
+            + _pd__35*d_i_ba_omega0_hat__k_d + _pd__36*d_i_ba_phase_lo__k_d + _pd__37*d_i_ba_s_lo__k_d
+            + d_i_bottom_q_th__k_d)
         _x102 = P_c_decompression + i_p_b
         _x103 = (1.0/m)
         _x104 = q_r_lo**2
@@ -464,7 +538,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _x110 = k_c - k_d
         _x111 = (-i_bottom_q_r + l0)**2
         _x112 = 2.0*g_s*q_r_lo
-        i_q_rd_lo_sq = -_x102**2*_x109 + 2.0*_x103*k_d*l0*q_r_lo + 2.0*_x103*(E_td - 0.5*_x110*_x111) - _x107*k_d - _x108*k_d - _x112*math.cos(_x98)
+        i_q_rd_lo_sq = (-_x102**2*_x109 + 2.0*_x103*k_d*l0*q_r_lo + 2.0*_x103*(E_td - 0.5*_x110*_x111)
+            - _x107*k_d - _x108*k_d - _x112*math.cos(_x98))
         _x113 = 2.0*_x103
         _pd__40 = _x113
         _x114 = -_x109*(2.0*P_c_decompression + 2.0*i_p_b)
@@ -472,13 +547,24 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _pd__42 = -_x103*_x110*(2.0*i_bottom_q_r - 2.0*l0)
         _pd__43 = _x112*math.sin(_x98)
         _pd__44 = _x114
-        d_i_q_rd_lo_sq__q_r_td = _pd__40*d_E_td__q_r_td + _pd__41*d_P_c_decompression__q_r_td + _pd__42*d_i_bottom_q_r__q_r_td + _pd__43*d_i_liftoff_q_th__q_r_td + _pd__44*d_i_p_b__q_r_td
-        d_i_q_rd_lo_sq__q_rd_td = _pd__40*d_E_td__q_rd_td + _pd__41*d_P_c_decompression__q_rd_td + _pd__42*d_i_bottom_q_r__q_rd_td + _pd__43*d_i_liftoff_q_th__q_rd_td + _pd__44*d_P_c_compression__q_rd_td
-        d_i_q_rd_lo_sq__q_th_td = _pd__40*d_E_td__q_th_td + _pd__41*d_P_c_decompression__q_th_td + _pd__42*d_i_bottom_q_r__q_th_td + _pd__43*d_i_liftoff_q_th__q_th_td + _pd__44*d_P_c_compression__q_th_td
-        d_i_q_rd_lo_sq__q_thd_td = _pd__40*d_E_td__q_thd_td + _pd__41*d_P_c_decompression__q_thd_td + _pd__42*d_i_bottom_q_r__q_thd_td + _pd__43*d_i_liftoff_q_th__q_thd_td + _pd__44*d_i_p_b__q_thd_td
+        d_i_q_rd_lo_sq__q_r_td = (_pd__40*d_E_td__q_r_td + _pd__41*d_P_c_decompression__q_r_td
+            + _pd__42*d_i_bottom_q_r__q_r_td + _pd__43*d_i_liftoff_q_th__q_r_td + _pd__44*d_i_p_b__q_r_td)
+        d_i_q_rd_lo_sq__q_rd_td = (_pd__40*d_E_td__q_rd_td + _pd__41*d_P_c_decompression__q_rd_td
+            + _pd__42*d_i_bottom_q_r__q_rd_td + _pd__43*d_i_liftoff_q_th__q_rd_td
+            + _pd__44*d_P_c_compression__q_rd_td)
+        d_i_q_rd_lo_sq__q_th_td = (_pd__40*d_E_td__q_th_td + _pd__41*d_P_c_decompression__q_th_td
+            + _pd__42*d_i_bottom_q_r__q_th_td + _pd__43*d_i_liftoff_q_th__q_th_td
+            + _pd__44*d_P_c_compression__q_th_td)
+        d_i_q_rd_lo_sq__q_thd_td = (_pd__40*d_E_td__q_thd_td + _pd__41*d_P_c_decompression__q_thd_td
+            + _pd__42*d_i_bottom_q_r__q_thd_td + _pd__43*d_i_liftoff_q_th__q_thd_td
+            + _pd__44*d_i_p_b__q_thd_td)
         _x115 = _x103*_x111
-        d_i_q_rd_lo_sq__k_c = _pd__40*d_E_td__k_c + _pd__41*d_P_c_decompression__k_c + _pd__42*d_i_bottom_q_r__k_c + _pd__43*d_i_liftoff_q_th__k_c + _pd__44*d_P_c_compression__k_c - _x115
-        d_i_q_rd_lo_sq__k_d = _pd__41*d_P_c_decompression__k_d + _pd__42*d_i_bottom_q_r__k_d + _pd__43*d_i_liftoff_q_th__k_d + _pd__44*d_P_c_compression__k_d - _x107 - _x108 + _x113*l0*q_r_lo + _x115
+        d_i_q_rd_lo_sq__k_c = (_pd__40*d_E_td__k_c + _pd__41*d_P_c_decompression__k_c
+            + _pd__42*d_i_bottom_q_r__k_c + _pd__43*d_i_liftoff_q_th__k_c + _pd__44*d_P_c_compression__k_c
+            - _x115)
+        d_i_q_rd_lo_sq__k_d = (_pd__41*d_P_c_decompression__k_d + _pd__42*d_i_bottom_q_r__k_d
+            + _pd__43*d_i_liftoff_q_th__k_d + _pd__44*d_P_c_compression__k_d - _x107 - _x108 + _x113*l0*q_r_lo
+            + _x115)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN91 + (STATUS_FALL,)
@@ -496,12 +582,18 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         _pd__46 = ((_x117*i_ba_b) if _x119 else (0.0))
         _pd__47 = ((-i_ba_b*i_ba_omega0_hat*i_ba_s_lo*l0/_x116) if _x119 else (0.0))
         _pd__48 = ((0.0) if _x119 else ((0.5)/_x120))
-        d_i_liftoff_q_rd__q_r_td = _pd__45*d_i_ba_b__q_r_td + _pd__46*d_i_ba_omega0_hat__q_r_td + _pd__47*d_i_ba_s_lo__q_r_td + _pd__48*d_i_q_rd_lo_sq__q_r_td
-        d_i_liftoff_q_rd__q_rd_td = _pd__45*d_i_ba_b__q_rd_td + _pd__46*d_i_ba_omega0_hat__q_rd_td + _pd__47*d_i_ba_s_lo__q_rd_td + _pd__48*d_i_q_rd_lo_sq__q_rd_td
-        d_i_liftoff_q_rd__q_th_td = _pd__45*d_i_ba_b__q_th_td + _pd__46*d_i_ba_omega0_hat__q_th_td + _pd__47*d_i_ba_s_lo__q_th_td + _pd__48*d_i_q_rd_lo_sq__q_th_td
-        d_i_liftoff_q_rd__q_thd_td = _pd__45*d_i_ba_b__q_thd_td + _pd__46*d_i_ba_omega0_hat__q_thd_td + _pd__47*d_i_ba_s_lo__q_thd_td + _pd__48*d_i_q_rd_lo_sq__q_thd_td
-        d_i_liftoff_q_rd__k_c = _pd__45*d_i_ba_b__k_c + _pd__46*d_i_ba_omega0_hat__k_c + _pd__47*d_i_ba_s_lo__k_c + _pd__48*d_i_q_rd_lo_sq__k_c
-        d_i_liftoff_q_rd__k_d = _pd__45*d_i_ba_b__k_d + _pd__46*d_i_ba_omega0_hat__k_d + _pd__47*d_i_ba_s_lo__k_d + _pd__48*d_i_q_rd_lo_sq__k_d
+        d_i_liftoff_q_rd__q_r_td = (_pd__45*d_i_ba_b__q_r_td + _pd__46*d_i_ba_omega0_hat__q_r_td
+            + _pd__47*d_i_ba_s_lo__q_r_td + _pd__48*d_i_q_rd_lo_sq__q_r_td)
+        d_i_liftoff_q_rd__q_rd_td = (_pd__45*d_i_ba_b__q_rd_td + _pd__46*d_i_ba_omega0_hat__q_rd_td
+            + _pd__47*d_i_ba_s_lo__q_rd_td + _pd__48*d_i_q_rd_lo_sq__q_rd_td)
+        d_i_liftoff_q_rd__q_th_td = (_pd__45*d_i_ba_b__q_th_td + _pd__46*d_i_ba_omega0_hat__q_th_td
+            + _pd__47*d_i_ba_s_lo__q_th_td + _pd__48*d_i_q_rd_lo_sq__q_th_td)
+        d_i_liftoff_q_rd__q_thd_td = (_pd__45*d_i_ba_b__q_thd_td + _pd__46*d_i_ba_omega0_hat__q_thd_td
+            + _pd__47*d_i_ba_s_lo__q_thd_td + _pd__48*d_i_q_rd_lo_sq__q_thd_td)
+        d_i_liftoff_q_rd__k_c = (_pd__45*d_i_ba_b__k_c + _pd__46*d_i_ba_omega0_hat__k_c
+            + _pd__47*d_i_ba_s_lo__k_c + _pd__48*d_i_q_rd_lo_sq__k_c)
+        d_i_liftoff_q_rd__k_d = (_pd__45*d_i_ba_b__k_d + _pd__46*d_i_ba_omega0_hat__k_d
+            + _pd__47*d_i_ba_s_lo__k_d + _pd__48*d_i_q_rd_lo_sq__k_d)
         if _conv0 or _it0 == _last0:
             break
         # the virtual gravity effect of each half
@@ -536,12 +628,18 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _pd__50 = _x127*_x128
             _x129 = (0.5)*_x123
             _pd__51 = (0.5)*_x125 + _x129
-            d_i_P_new1__q_r_td = _pd__49*d_i_bottom_q_r__q_r_td + _pd__50*d_i_bottom_q_th__q_r_td + _pd__51*d_i_t_bottom__q_r_td + _x124*_x126
-            d_i_P_new1__q_rd_td = _pd__49*d_i_bottom_q_r__q_rd_td + _pd__50*d_i_bottom_q_th__q_rd_td + _pd__51*d_i_t_bottom__q_rd_td
-            d_i_P_new1__q_th_td = _pd__49*d_i_bottom_q_r__q_th_td + _pd__50*d_i_bottom_q_th__q_th_td + _pd__51*d_i_t_bottom__q_th_td + _x127*q_r_td*math.cos(q_th_td)
-            d_i_P_new1__q_thd_td = _pd__49*d_i_bottom_q_r__q_thd_td + _pd__50*d_i_bottom_q_th__q_thd_td + _pd__51*d_i_t_bottom__q_thd_td
-            d_i_P_new1__k_c = _pd__49*d_i_bottom_q_r__k_c + _pd__50*d_i_bottom_q_th__k_c + _pd__51*d_i_t_bottom__k_c
-            d_i_P_new1__k_d = _pd__49*d_i_bottom_q_r__k_d + _pd__50*d_i_bottom_q_th__k_d + _pd__51*d_i_t_bottom__k_d
+            d_i_P_new1__q_r_td = (_pd__49*d_i_bottom_q_r__q_r_td + _pd__50*d_i_bottom_q_th__q_r_td
+                + _pd__51*d_i_t_bottom__q_r_td + _x124*_x126)
+            d_i_P_new1__q_rd_td = (_pd__49*d_i_bottom_q_r__q_rd_td + _pd__50*d_i_bottom_q_th__q_rd_td
+                + _pd__51*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_pd__49*d_i_bottom_q_r__q_th_td + _pd__50*d_i_bottom_q_th__q_th_td
+                + _pd__51*d_i_t_bottom__q_th_td + _x127*q_r_td*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_pd__49*d_i_bottom_q_r__q_thd_td + _pd__50*d_i_bottom_q_th__q_thd_td
+                + _pd__51*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = (_pd__49*d_i_bottom_q_r__k_c + _pd__50*d_i_bottom_q_th__k_c
+                + _pd__51*d_i_t_bottom__k_c)
+            d_i_P_new1__k_d = (_pd__49*d_i_bottom_q_r__k_d + _pd__50*d_i_bottom_q_th__k_d
+                + _pd__51*d_i_t_bottom__k_d)
             _x130 = _x121*q_r_lo
             _x131 = _x130*math.sin(i_liftoff_q_th)
             _x132 = -0.5*i_t_bottom + (0.5)*i_t_stance
@@ -552,12 +650,22 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _x133 = _x129 + (0.5)*_x131
             _pd__55 = -_x133
             _pd__56 = _x133
-            d_i_P_new2__q_r_td = _pd__52*d_i_bottom_q_r__q_r_td + _pd__53*d_i_bottom_q_th__q_r_td + _pd__54*d_i_liftoff_q_th__q_r_td + _pd__55*d_i_t_bottom__q_r_td + _pd__56*d_i_t_stance__q_r_td
-            d_i_P_new2__q_rd_td = _pd__52*d_i_bottom_q_r__q_rd_td + _pd__53*d_i_bottom_q_th__q_rd_td + _pd__54*d_i_liftoff_q_th__q_rd_td + _pd__55*d_i_t_bottom__q_rd_td + _pd__56*d_i_t_stance__q_rd_td
-            d_i_P_new2__q_th_td = _pd__52*d_i_bottom_q_r__q_th_td + _pd__53*d_i_bottom_q_th__q_th_td + _pd__54*d_i_liftoff_q_th__q_th_td + _pd__55*d_i_t_bottom__q_th_td + _pd__56*d_i_t_stance__q_th_td
-            d_i_P_new2__q_thd_td = _pd__52*d_i_bottom_q_r__q_thd_td + _pd__53*d_i_bottom_q_th__q_thd_td + _pd__54*d_i_liftoff_q_th__q_thd_td + _pd__55*d_i_t_bottom__q_thd_td + _pd__56*d_i_t_stance__q_thd_td
-            d_i_P_new2__k_c = _pd__52*d_i_bottom_q_r__k_c + _pd__53*d_i_bottom_q_th__k_c + _pd__54*d_i_liftoff_q_th__k_c + _pd__55*d_i_t_bottom__k_c + _pd__56*d_i_t_stance__k_c
-            d_i_P_new2__k_d = _pd__52*d_i_bottom_q_r__k_d + _pd__53*d_i_bottom_q_th__k_d + _pd__54*d_i_liftoff_q_th__k_d + _pd__55*d_i_t_bottom__k_d + _pd__56*d_i_t_stance__k_d
+            d_i_P_new2__q_r_td = (_pd__52*d_i_bottom_q_r__q_r_td + _pd__53*d_i_bottom_q_th__q_r_td
+                + _pd__54*d_i_liftoff_q_th__q_r_td + _pd__55*d_i_t_bottom__q_r_td
+                + _pd__56*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_pd__52*d_i_bottom_q_r__q_rd_td + _pd__53*d_i_bottom_q_th__q_rd_td
+                + _pd__54*d_i_liftoff_q_th__q_rd_td + _pd__55*d_i_t_bottom__q_rd_td
+                + _pd__56*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_pd__52*d_i_bottom_q_r__q_th_td + _pd__53*d_i_bottom_q_th__q_th_td
+                + _pd__54*d_i_liftoff_q_th__q_th_td + _pd__55*d_i_t_bottom__q_th_td
+                + _pd__56*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_pd__52*d_i_bottom_q_r__q_thd_td + _pd__53*d_i_bottom_q_th__q_thd_td
+                + _pd__54*d_i_liftoff_q_th__q_thd_td + _pd__55*d_i_t_bottom__q_thd_td
+                + _pd__56*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_pd__52*d_i_bottom_q_r__k_c + _pd__53*d_i_bottom_q_th__k_c
+                + _pd__54*d_i_liftoff_q_th__k_c + _pd__55*d_i_t_bottom__k_c + _pd__56*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_pd__52*d_i_bottom_q_r__k_d + _pd__53*d_i_bottom_q_th__k_d
+                + _pd__54*d_i_liftoff_q_th__k_d + _pd__55*d_i_t_bottom__k_d + _pd__56*d_i_t_stance__k_d)
         elif gravity == 2.0:
             # eq (76) on each half, the average leg length of (11) on it
             _x134 = math.cos(i_ab_phase_td)
@@ -579,12 +687,18 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _x147 = _x140**2
             _pd__59 = _x137*_x138*_x147*(-_x145*i_ab_phase_td + (1.5)*math.pi*_x145) - _x140*_x146
             _pd__60 = _x144*(-_x135 - i_ab_b*math.sin(i_ab_phase_td)) + _x146*_x147
-            _d_i_L1__q_r_td = _pd__57*d_i_ab_a__q_r_td + _pd__58*d_i_ab_b__q_r_td + _pd__59*d_i_ab_omega0_hat__q_r_td + _pd__60*d_i_ab_phase_td__q_r_td
-            _d_i_L1__q_rd_td = _pd__57*d_i_ab_a__q_rd_td + _pd__58*d_i_ab_b__q_rd_td + _pd__59*d_i_ab_omega0_hat__q_rd_td + _pd__60*d_i_ab_phase_td__q_rd_td
-            _d_i_L1__q_th_td = _pd__57*d_i_ab_a__q_th_td + _pd__58*d_i_ab_b__q_th_td + _pd__59*d_i_ab_omega0_hat__q_th_td + _pd__60*d_i_ab_phase_td__q_th_td
-            _d_i_L1__q_thd_td = _pd__57*d_i_ab_a__q_thd_td + _pd__58*d_i_ab_b__q_thd_td + _pd__59*d_i_ab_omega0_hat__q_thd_td + _pd__60*d_i_ab_phase_td__q_thd_td
-            _d_i_L1__k_c = _pd__57*d_i_ab_a__k_c + _pd__58*d_i_ab_b__k_c + _pd__59*d_i_ab_omega0_hat__k_c + _pd__60*d_i_ab_phase_td__k_c
-            _d_i_L1__k_d = _pd__57*d_i_ab_a__k_d + _pd__58*d_i_ab_b__k_d + _pd__59*d_i_ab_omega0_hat__k_d + _pd__60*d_i_ab_phase_td__k_d
+            _d_i_L1__q_r_td = (_pd__57*d_i_ab_a__q_r_td + _pd__58*d_i_ab_b__q_r_td
+                + _pd__59*d_i_ab_omega0_hat__q_r_td + _pd__60*d_i_ab_phase_td__q_r_td)
+            _d_i_L1__q_rd_td = (_pd__57*d_i_ab_a__q_rd_td + _pd__58*d_i_ab_b__q_rd_td
+                + _pd__59*d_i_ab_omega0_hat__q_rd_td + _pd__60*d_i_ab_phase_td__q_rd_td)
+            _d_i_L1__q_th_td = (_pd__57*d_i_ab_a__q_th_td + _pd__58*d_i_ab_b__q_th_td
+                + _pd__59*d_i_ab_omega0_hat__q_th_td + _pd__60*d_i_ab_phase_td__q_th_td)
+            _d_i_L1__q_thd_td = (_pd__57*d_i_ab_a__q_thd_td + _pd__58*d_i_ab_b__q_thd_td
+                + _pd__59*d_i_ab_omega0_hat__q_thd_td + _pd__60*d_i_ab_phase_td__q_thd_td)
+            _d_i_L1__k_c = (_pd__57*d_i_ab_a__k_c + _pd__58*d_i_ab_b__k_c + _pd__59*d_i_ab_omega0_hat__k_c
+                + _pd__60*d_i_ab_phase_td__k_c)
+            _d_i_L1__k_d = (_pd__57*d_i_ab_a__k_d + _pd__58*d_i_ab_b__k_d + _pd__59*d_i_ab_omega0_hat__k_d
+                + _pd__60*d_i_ab_phase_td__k_d)
             _x148 = math.cos(i_ba_phase_lo)
             _x149 = i_ba_a + 1.0
             _x150 = l0*(-_x136*_x149 - _x148*i_ba_b + _x149*i_ba_phase_lo)
@@ -602,12 +716,18 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _x159 = _x153**2
             _pd__63 = _x150*_x151*_x159*(-_x136*_x157 + _x157*i_ba_phase_lo) - _x153*_x158
             _pd__64 = _x156*(_x149 + i_ba_b*math.sin(i_ba_phase_lo)) - _x158*_x159
-            _d_i_L2__q_r_td = _pd__61*d_i_ba_a__q_r_td + _pd__62*d_i_ba_b__q_r_td + _pd__63*d_i_ba_omega0_hat__q_r_td + _pd__64*d_i_ba_phase_lo__q_r_td
-            _d_i_L2__q_rd_td = _pd__61*d_i_ba_a__q_rd_td + _pd__62*d_i_ba_b__q_rd_td + _pd__63*d_i_ba_omega0_hat__q_rd_td + _pd__64*d_i_ba_phase_lo__q_rd_td
-            _d_i_L2__q_th_td = _pd__61*d_i_ba_a__q_th_td + _pd__62*d_i_ba_b__q_th_td + _pd__63*d_i_ba_omega0_hat__q_th_td + _pd__64*d_i_ba_phase_lo__q_th_td
-            _d_i_L2__q_thd_td = _pd__61*d_i_ba_a__q_thd_td + _pd__62*d_i_ba_b__q_thd_td + _pd__63*d_i_ba_omega0_hat__q_thd_td + _pd__64*d_i_ba_phase_lo__q_thd_td
-            _d_i_L2__k_c = _pd__61*d_i_ba_a__k_c + _pd__62*d_i_ba_b__k_c + _pd__63*d_i_ba_omega0_hat__k_c + _pd__64*d_i_ba_phase_lo__k_c
-            _d_i_L2__k_d = _pd__61*d_i_ba_a__k_d + _pd__62*d_i_ba_b__k_d + _pd__63*d_i_ba_omega0_hat__k_d + _pd__64*d_i_ba_phase_lo__k_d
+            _d_i_L2__q_r_td = (_pd__61*d_i_ba_a__q_r_td + _pd__62*d_i_ba_b__q_r_td
+                + _pd__63*d_i_ba_omega0_hat__q_r_td + _pd__64*d_i_ba_phase_lo__q_r_td)
+            _d_i_L2__q_rd_td = (_pd__61*d_i_ba_a__q_rd_td + _pd__62*d_i_ba_b__q_rd_td
+                + _pd__63*d_i_ba_omega0_hat__q_rd_td + _pd__64*d_i_ba_phase_lo__q_rd_td)
+            _d_i_L2__q_th_td = (_pd__61*d_i_ba_a__q_th_td + _pd__62*d_i_ba_b__q_th_td
+                + _pd__63*d_i_ba_omega0_hat__q_th_td + _pd__64*d_i_ba_phase_lo__q_th_td)
+            _d_i_L2__q_thd_td = (_pd__61*d_i_ba_a__q_thd_td + _pd__62*d_i_ba_b__q_thd_td
+                + _pd__63*d_i_ba_omega0_hat__q_thd_td + _pd__64*d_i_ba_phase_lo__q_thd_td)
+            _d_i_L2__k_c = (_pd__61*d_i_ba_a__k_c + _pd__62*d_i_ba_b__k_c + _pd__63*d_i_ba_omega0_hat__k_c
+                + _pd__64*d_i_ba_phase_lo__k_c)
+            _d_i_L2__k_d = (_pd__61*d_i_ba_a__k_d + _pd__62*d_i_ba_b__k_d + _pd__63*d_i_ba_omega0_hat__k_d
+                + _pd__64*d_i_ba_phase_lo__k_d)
             _x160 = g_s*m
             _x161 = _x160*math.sin(i_bottom_q_th)
             _x162 = _x142*_x161
@@ -620,10 +740,14 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _x167 = _x142*_x165
             _pd__66 = _x166*_x167
             _pd__67 = (0.5)*_x162 + (0.5)*_x164
-            d_i_P_new1__q_r_td = _d_i_L1__q_r_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_r_td + _pd__67*d_i_t_bottom__q_r_td
-            d_i_P_new1__q_rd_td = _d_i_L1__q_rd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_rd_td + _pd__67*d_i_t_bottom__q_rd_td
-            d_i_P_new1__q_th_td = _d_i_L1__q_th_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_th_td + _pd__67*d_i_t_bottom__q_th_td + _x160*_x167*math.cos(q_th_td)
-            d_i_P_new1__q_thd_td = _d_i_L1__q_thd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_thd_td + _pd__67*d_i_t_bottom__q_thd_td
+            d_i_P_new1__q_r_td = (_d_i_L1__q_r_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_r_td
+                + _pd__67*d_i_t_bottom__q_r_td)
+            d_i_P_new1__q_rd_td = (_d_i_L1__q_rd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_rd_td
+                + _pd__67*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_d_i_L1__q_th_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_th_td
+                + _pd__67*d_i_t_bottom__q_th_td + _x160*_x167*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_d_i_L1__q_thd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_thd_td
+                + _pd__67*d_i_t_bottom__q_thd_td)
             d_i_P_new1__k_c = _d_i_L1__k_c*_pd__65 + _pd__66*d_i_bottom_q_th__k_c + _pd__67*d_i_t_bottom__k_c
             d_i_P_new1__k_d = _d_i_L1__k_d*_pd__65 + _pd__66*d_i_bottom_q_th__k_d + _pd__67*d_i_t_bottom__k_d
             _x168 = _x155*_x161
@@ -638,12 +762,22 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             _x173 = (0.5)*_x168 + (0.5)*_x170
             _pd__71 = -_x173
             _pd__72 = _x173
-            d_i_P_new2__q_r_td = _d_i_L2__q_r_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_r_td + _pd__70*d_i_liftoff_q_th__q_r_td + _pd__71*d_i_t_bottom__q_r_td + _pd__72*d_i_t_stance__q_r_td
-            d_i_P_new2__q_rd_td = _d_i_L2__q_rd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_rd_td + _pd__70*d_i_liftoff_q_th__q_rd_td + _pd__71*d_i_t_bottom__q_rd_td + _pd__72*d_i_t_stance__q_rd_td
-            d_i_P_new2__q_th_td = _d_i_L2__q_th_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_th_td + _pd__70*d_i_liftoff_q_th__q_th_td + _pd__71*d_i_t_bottom__q_th_td + _pd__72*d_i_t_stance__q_th_td
-            d_i_P_new2__q_thd_td = _d_i_L2__q_thd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_thd_td + _pd__70*d_i_liftoff_q_th__q_thd_td + _pd__71*d_i_t_bottom__q_thd_td + _pd__72*d_i_t_stance__q_thd_td
-            d_i_P_new2__k_c = _d_i_L2__k_c*_pd__68 + _pd__69*d_i_bottom_q_th__k_c + _pd__70*d_i_liftoff_q_th__k_c + _pd__71*d_i_t_bottom__k_c + _pd__72*d_i_t_stance__k_c
-            d_i_P_new2__k_d = _d_i_L2__k_d*_pd__68 + _pd__69*d_i_bottom_q_th__k_d + _pd__70*d_i_liftoff_q_th__k_d + _pd__71*d_i_t_bottom__k_d + _pd__72*d_i_t_stance__k_d
+            d_i_P_new2__q_r_td = (_d_i_L2__q_r_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_r_td
+                + _pd__70*d_i_liftoff_q_th__q_r_td + _pd__71*d_i_t_bottom__q_r_td
+                + _pd__72*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_d_i_L2__q_rd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_rd_td
+                + _pd__70*d_i_liftoff_q_th__q_rd_td + _pd__71*d_i_t_bottom__q_rd_td
+                + _pd__72*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_d_i_L2__q_th_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_th_td
+                + _pd__70*d_i_liftoff_q_th__q_th_td + _pd__71*d_i_t_bottom__q_th_td
+                + _pd__72*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_d_i_L2__q_thd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_thd_td
+                + _pd__70*d_i_liftoff_q_th__q_thd_td + _pd__71*d_i_t_bottom__q_thd_td
+                + _pd__72*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_d_i_L2__k_c*_pd__68 + _pd__69*d_i_bottom_q_th__k_c
+                + _pd__70*d_i_liftoff_q_th__k_c + _pd__71*d_i_t_bottom__k_c + _pd__72*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_d_i_L2__k_d*_pd__68 + _pd__69*d_i_bottom_q_th__k_d
+                + _pd__70*d_i_liftoff_q_th__k_d + _pd__71*d_i_t_bottom__k_d + _pd__72*d_i_t_stance__k_d)
         else:
             return _NAN91 + (STATUS_INVALID_INPUT,)
         # next values
@@ -651,8 +785,13 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         P_c_decompression__next = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(P_c_compression__next - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(P_c_decompression__next - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-        _pkn0 = (P_c_compression__next, P_c_decompression__next, d_i_P_new1__q_r_td, d_i_P_new1__q_rd_td, d_i_P_new1__q_th_td, d_i_P_new1__q_thd_td, d_i_P_new1__k_c, d_i_P_new1__k_d, d_i_P_new2__q_r_td, d_i_P_new2__q_rd_td, d_i_P_new2__q_th_td, d_i_P_new2__q_thd_td, d_i_P_new2__k_c, d_i_P_new2__k_d, )
+        _conv0 = (tol > 0.0 and (abs(P_c_compression__next - P_c_compression)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(P_c_decompression__next
+            - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
+        _pkn0 = (P_c_compression__next, P_c_decompression__next, d_i_P_new1__q_r_td, d_i_P_new1__q_rd_td,
+            d_i_P_new1__q_th_td, d_i_P_new1__q_thd_td, d_i_P_new1__k_c, d_i_P_new1__k_d, d_i_P_new2__q_r_td,
+            d_i_P_new2__q_rd_td, d_i_P_new2__q_th_td, d_i_P_new2__q_thd_td, d_i_P_new2__k_c, d_i_P_new2__k_d,
+            )
         _pk0 = _pkn0
         passes += 1.0
     # the stance outputs: the pass at the final iterate
@@ -735,22 +874,69 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
     d_passes__k_d = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
+            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
         return _NAN91 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td,
+        d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d,
+        d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c,
+        d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
+        d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
+        d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+        d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td,
+        d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c,
+        d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td,
+        d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c,
+        d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+        d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td,
+        d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c,
+        d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td,
+        d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c,
+        d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
+        d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
+        d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 91)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,
+    d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c,
+    d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td,
+    d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
+    d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
+    d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
+    d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td,
+    d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c,
+    d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td,
+    d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td,
+    d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c,
+    d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td,
+    d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c,
+    d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td,
+    d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td,
+    d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td,
+    d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td,
+    d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s,
+            q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -847,7 +1033,8 @@ def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_
 
 @njit(cache=True, error_model="numpy")
 def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
-    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the derivatives of its outputs with respect to p, E_ab, k_c.
+    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the
+    derivatives of its outputs with respect to p, E_ab, k_c.
 
     Report equations: 153.
 
@@ -864,12 +1051,15 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
 
     Returns a tuple:
         q_r_b: bottom leg length of (153) [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c
+            (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 309
     # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
+    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((g_s > 0.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
     _x0 = (0.5)*l0
@@ -938,7 +1128,8 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x60 = (0.25)*_x21*_x36*_x41/_x42**(1.5)
     _x61 = _x39*_x60
     _x62 = _x47*_x60
-    d_q_start__E_ab = (0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55 - 0.125*_x56
+    d_q_start__E_ab = ((0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55
+        - 0.125*_x56)
     _x63 = _x73**2
     _x64 = _x1*_x63
     _x65 = k_c**(-1.5)
@@ -949,9 +1140,13 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x70 = _x2*_x5
     _x71 = _x10 + _x28 + 2.0*_x31 + 2.0*_x66 - 2.0*_x67 - 2.0*_x70
     _x72 = (0.5)*_x28 + _x31 + _x68 - _x70
-    d_q_start__k_c = (0.25)*_x14*_x65 + _x53*(_x46*(_x27*_x54*_x58*_x71 - _x27*_x69 + _x61*_x72) + _x49*((0.5)*_x34*_x4*_x48*_x57*_x71 - _x48*_x69 - _x62*_x72 - _x64)) - _x55*(-_x2*_x6 + _x6*l0 - _x68 - 0.5*_x7) + (0.25)*_x56*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x66 + (0.25)*_x7) + (0.5)*_x64
+    d_q_start__k_c = ((0.25)*_x14*_x65 + _x53*(_x46*(_x27*_x54*_x58*_x71 - _x27*_x69 + _x61*_x72)
+        + _x49*((0.5)*_x34*_x4*_x48*_x57*_x71 - _x48*_x69 - _x62*_x72 - _x64)) - _x55*(-_x2*_x6 + _x6*l0
+        - _x68 - 0.5*_x7) + (0.25)*_x56*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x66 + (0.25)*_x7)
+        + (0.5)*_x64)
     # E_ab above the minimum of the potential
-    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
+            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
     # Newton's method on V - E: monotone from the left
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
@@ -1015,10 +1210,13 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
-    """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        continuity, gravity, iterations, tol):
+    """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1035,10 +1233,14 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
         g_f: gravitational acceleration in flight g_f [m/s^2], positive
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -1053,63 +1255,123 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td, k_c, k_d (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 141
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
+            == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN72 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[20] != STATUS_OK:
         return _NAN72 + (_c0[20],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
     # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = geyer_vs_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+    _c1 = (geyer_vs_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        continuity, gravity, iterations, tol))
     if _c1[91] != STATUS_OK:
         return _NAN72 + (_c1[91],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, _, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _, _j_P_c_compression__q_rd_td, _j_P_c_compression__q_th_td, _j_P_c_compression__q_thd_td, _j_P_c_compression__k_c, _j_P_c_compression__k_d, _, _j_P_c_decompression__q_rd_td, _j_P_c_decompression__q_th_td, _j_P_c_decompression__q_thd_td, _j_P_c_decompression__k_c, _j_P_c_decompression__k_d, _, _, _, _, _, _, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
+        P_c_decompression, passes, _, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td,
+        _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
+        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _,
+        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _, _j_P_c_compression__q_rd_td,
+        _j_P_c_compression__q_th_td, _j_P_c_compression__q_thd_td, _j_P_c_compression__k_c,
+        _j_P_c_compression__k_d, _, _j_P_c_decompression__q_rd_td, _j_P_c_decompression__q_th_td,
+        _j_P_c_decompression__q_thd_td, _j_P_c_decompression__k_c, _j_P_c_decompression__k_d, _, _, _, _, _,
+        _, _) = _c1
     # chain rule through geyer_vs_stance
-    d_t_stance__b_y_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex
-    d_t_stance__b_xd_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_t_stance__q_th_td = _j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_rd__b_y_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_rd__b_xd_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_rd__q_th_td = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_th__b_y_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_th__b_xd_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_th__q_th_td = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_thd__b_y_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_thd__b_xd_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_thd__q_th_td = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td
-    d_P_c_compression__b_y_apex = _j_P_c_compression__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_y_apex
-    d_P_c_compression__b_xd_apex = _j_P_c_compression__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_P_c_compression__q_th_td = _j_P_c_compression__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c_compression__q_th_td*_j_td_q_th__q_th_td + _j_P_c_compression__q_thd_td*_j_td_q_thd__q_th_td
-    d_P_c_decompression__b_y_apex = _j_P_c_decompression__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_y_apex
-    d_P_c_decompression__b_xd_apex = _j_P_c_decompression__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_P_c_decompression__q_th_td = _j_P_c_decompression__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c_decompression__q_th_td*_j_td_q_th__q_th_td + _j_P_c_decompression__q_thd_td*_j_td_q_thd__q_th_td
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c_compression__b_y_apex = (_j_P_c_compression__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_P_c_compression__b_xd_apex = (_j_P_c_compression__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_P_c_compression__q_th_td = (_j_P_c_compression__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_P_c_compression__q_th_td*_j_td_q_th__q_th_td + _j_P_c_compression__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c_decompression__b_y_apex = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_P_c_decompression__b_xd_apex = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_P_c_decompression__q_th_td = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_P_c_decompression__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__q_th_td)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[16] != STATUS_OK:
         return _NAN72 + (_c2[16],)
-    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _) = _c2
+    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _, _, _, _) = _c2
     # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_height__b_xd_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_height__q_th_td = _j_apex_height__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_height__k_c = _j_apex_height__q_rd*_j_liftoff_q_rd__k_c + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c
-    d_apex_height__k_d = _j_apex_height__q_rd*_j_liftoff_q_rd__k_d + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d
-    d_apex_speed__b_y_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_speed__b_xd_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_speed__q_th_td = _j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_speed__k_c = _j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c
-    d_apex_speed__k_d = _j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d
-    d_t_ascent__b_y_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex
-    d_t_ascent__b_xd_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_t_ascent__q_th_td = _j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td
-    d_t_ascent__k_c = _j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd
-    d_t_ascent__k_d = _j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
+    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__b_xd_apex = 0.0
@@ -1140,22 +1402,61 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d,
     d_passes__k_d = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
+            and math.isfinite(passes)):
         return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex,
+        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c,
+        d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
+        d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex,
+        d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d,
+        d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td,
+        d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c, d_passes__k_d.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,
+    d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c,
+    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+    d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
+    d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+    d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+    d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+    d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
+    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c,
+    d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+    d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex,
+    d_P_c_compression__q_th_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex,
+    d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__k_c,
+    d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k_c,
+    d_passes__k_d.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f,
+            q_r_td, q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,22 +4,26 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:4974722c824d3634
-#   geyer_jacobian.py sha256:be9d1f8206af083d
+#   flight_jacobian.py sha256:5e86edc951466ed7
+#   geyer_jacobian.py sha256:71e01de102ad80c3
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for
+a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jac_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN55 = (NAN,) * 55
@@ -27,8 +31,10 @@ _NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol):
-    """Gravity correction type 1 (leg length (l0 + q_r_b)/2): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+        iterations, tol):
+    """Gravity correction type 1 (leg length (l0 + q_r_b)/2): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
@@ -46,9 +52,11 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -63,12 +71,21 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td, q_th_td, q_thd_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 748
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td
+            <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0)
+            or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples
+            <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN72 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
@@ -128,7 +145,11 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[30] != STATUS_OK:
             return _NAN72 + (_c0[30],)
-        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _, _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _, _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k, _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k, _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
+        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _,
+            _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _,
+            _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k,
+            _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k,
+            _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
         # chain rule through geyer_solution
         d_i_omega__q_r_td = _j_i_omega__q_r_td + _j_i_omega__q_thd_td*d_i_q_thd_eff__q_r_td
         d_i_omega__q_rd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
@@ -198,10 +219,14 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__4 = -_x16*_x18
         _pd__5 = _x14
         _pd__6 = _x17
-        d_i_t_stance__q_r_td = _pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td + _pd__6*d_i_phase_td__q_r_td
-        d_i_t_stance__q_rd_td = _pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td + _pd__6*d_i_phase_td__q_rd_td
-        d_i_t_stance__q_th_td = _pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td + _pd__6*d_i_phase_td__q_th_td
-        d_i_t_stance__q_thd_td = _pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td + _pd__6*d_i_phase_td__q_thd_td
+        d_i_t_stance__q_r_td = (_pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td
+            + _pd__6*d_i_phase_td__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td
+            + _pd__6*d_i_phase_td__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td
+            + _pd__6*d_i_phase_td__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td
+            + _pd__6*d_i_phase_td__q_thd_td)
         d_i_t_stance__k = _pd__4*d_i_omega0_hat__k + _pd__5*d_i_phase_lo__k + _pd__6*d_i_phase_td__k
         i_bottom_q_r = l0*(i_a - i_b + 1.0)
         d_i_bottom_q_r__q_r_td = d_i_a__q_r_td*l0 - d_i_b__q_r_td*l0
@@ -236,11 +261,20 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__11 = _x37
         _x38 = -_x30*i_b*i_s_td/_x25
         _pd__12 = _x38
-        d_i_bottom_q_th__q_r_td = _pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td + _pd__9*d_i_omega__q_r_td
-        d_i_bottom_q_th__q_rd_td = _pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td + _pd__9*d_i_omega__q_rd_td
-        d_i_bottom_q_th__q_th_td = _pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td + _pd__9*d_i_omega__q_th_td + 1.0
-        d_i_bottom_q_th__q_thd_td = _pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td + _pd__9*d_i_omega__q_thd_td
-        d_i_bottom_q_th__k = _pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k
+        d_i_bottom_q_th__q_r_td = (_pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td
+            + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td
+            + _pd__9*d_i_omega__q_r_td)
+        d_i_bottom_q_th__q_rd_td = (_pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td
+            + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td
+            + _pd__9*d_i_omega__q_rd_td)
+        d_i_bottom_q_th__q_th_td = (_pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td
+            + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td
+            + _pd__9*d_i_omega__q_th_td + 1.0)
+        d_i_bottom_q_th__q_thd_td = (_pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td
+            + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td
+            + _pd__9*d_i_omega__q_thd_td)
+        d_i_bottom_q_th__k = (_pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k
+            + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k)
         _x39 = math.sqrt(1.0 - i_s_lo**2)
         _x40 = _x39*l0
         _x41 = _x40*i_omega0_hat
@@ -249,10 +283,14 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__17 = _x40*i_b
         _x42 = i_b*i_s_lo/_x39
         _pd__18 = -_x42*i_omega0_hat*l0
-        d_i_liftoff_q_rd__q_r_td = _pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td + _pd__18*d_i_s_lo__q_r_td
-        d_i_liftoff_q_rd__q_rd_td = _pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td + _pd__18*d_i_s_lo__q_rd_td
-        d_i_liftoff_q_rd__q_th_td = _pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td + _pd__18*d_i_s_lo__q_th_td
-        d_i_liftoff_q_rd__q_thd_td = _pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td + _pd__18*d_i_s_lo__q_thd_td
+        d_i_liftoff_q_rd__q_r_td = (_pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td
+            + _pd__18*d_i_s_lo__q_r_td)
+        d_i_liftoff_q_rd__q_rd_td = (_pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td
+            + _pd__18*d_i_s_lo__q_rd_td)
+        d_i_liftoff_q_rd__q_th_td = (_pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td
+            + _pd__18*d_i_s_lo__q_th_td)
+        d_i_liftoff_q_rd__q_thd_td = (_pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td
+            + _pd__18*d_i_s_lo__q_thd_td)
         d_i_liftoff_q_rd__k = _pd__16*d_i_b__k + _pd__17*d_i_omega0_hat__k + _pd__18*d_i_s_lo__k
         _x43 = _x14*i_phase_lo
         _x44 = _x43*i_a
@@ -268,11 +306,21 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__24 = _x37
         _pd__25 = -_x30*_x42
         _pd__26 = _x38
-        d_i_liftoff_q_th__q_r_td = _pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td
-        d_i_liftoff_q_th__q_rd_td = _pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td
-        d_i_liftoff_q_th__q_th_td = _pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0
-        d_i_liftoff_q_th__q_thd_td = _pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td
-        d_i_liftoff_q_th__k = _pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k
+        d_i_liftoff_q_th__q_r_td = (_pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td
+            + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td
+            + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td)
+        d_i_liftoff_q_th__q_rd_td = (_pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td
+            + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td
+            + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td)
+        d_i_liftoff_q_th__q_th_td = (_pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td
+            + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td
+            + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0)
+        d_i_liftoff_q_th__q_thd_td = (_pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td
+            + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td
+            + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td)
+        d_i_liftoff_q_th__k = (_pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k
+            + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k
+            + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN72 + (STATUS_FALL,)
@@ -293,10 +341,14 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             _x56 = _x50*_x54
             _pd__32 = _x56*math.cos(i_liftoff_q_th)
             _pd__33 = (0.5)*_x51 + (0.5)*_x53
-            d_i_P_new__q_r_td = _pd__31*d_i_bottom_q_r__q_r_td + _pd__32*d_i_liftoff_q_th__q_r_td + _pd__33*d_i_t_stance__q_r_td
-            d_i_P_new__q_rd_td = _pd__31*d_i_bottom_q_r__q_rd_td + _pd__32*d_i_liftoff_q_th__q_rd_td + _pd__33*d_i_t_stance__q_rd_td
-            d_i_P_new__q_th_td = _pd__31*d_i_bottom_q_r__q_th_td + _pd__32*d_i_liftoff_q_th__q_th_td + _pd__33*d_i_t_stance__q_th_td + _x56*math.cos(q_th_td)
-            d_i_P_new__q_thd_td = _pd__31*d_i_bottom_q_r__q_thd_td + _pd__32*d_i_liftoff_q_th__q_thd_td + _pd__33*d_i_t_stance__q_thd_td
+            d_i_P_new__q_r_td = (_pd__31*d_i_bottom_q_r__q_r_td + _pd__32*d_i_liftoff_q_th__q_r_td
+                + _pd__33*d_i_t_stance__q_r_td)
+            d_i_P_new__q_rd_td = (_pd__31*d_i_bottom_q_r__q_rd_td + _pd__32*d_i_liftoff_q_th__q_rd_td
+                + _pd__33*d_i_t_stance__q_rd_td)
+            d_i_P_new__q_th_td = (_pd__31*d_i_bottom_q_r__q_th_td + _pd__32*d_i_liftoff_q_th__q_th_td
+                + _pd__33*d_i_t_stance__q_th_td + _x56*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = (_pd__31*d_i_bottom_q_r__q_thd_td + _pd__32*d_i_liftoff_q_th__q_thd_td
+                + _pd__33*d_i_t_stance__q_thd_td)
             d_i_P_new__k = _pd__31*d_i_bottom_q_r__k + _pd__32*d_i_liftoff_q_th__k + _pd__33*d_i_t_stance__k
         elif samples == 3.0:
             _x57 = math.sin(i_bottom_q_th)
@@ -315,11 +367,16 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             _pd__35 = _x67*math.cos(i_bottom_q_th)
             _pd__36 = _x67*math.cos(i_liftoff_q_th)
             _pd__37 = (0.3333333333333333)*_x60 + (0.3333333333333333)*_x62 + (0.3333333333333333)*_x64
-            d_i_P_new__q_r_td = _pd__34*d_i_bottom_q_r__q_r_td + _pd__35*d_i_bottom_q_th__q_r_td + _pd__36*d_i_liftoff_q_th__q_r_td + _pd__37*d_i_t_stance__q_r_td
-            d_i_P_new__q_rd_td = _pd__34*d_i_bottom_q_r__q_rd_td + _pd__35*d_i_bottom_q_th__q_rd_td + _pd__36*d_i_liftoff_q_th__q_rd_td + _pd__37*d_i_t_stance__q_rd_td
-            d_i_P_new__q_th_td = _pd__34*d_i_bottom_q_r__q_th_td + _pd__35*d_i_bottom_q_th__q_th_td + _pd__36*d_i_liftoff_q_th__q_th_td + _pd__37*d_i_t_stance__q_th_td + _x67*math.cos(q_th_td)
-            d_i_P_new__q_thd_td = _pd__34*d_i_bottom_q_r__q_thd_td + _pd__35*d_i_bottom_q_th__q_thd_td + _pd__36*d_i_liftoff_q_th__q_thd_td + _pd__37*d_i_t_stance__q_thd_td
-            d_i_P_new__k = _pd__34*d_i_bottom_q_r__k + _pd__35*d_i_bottom_q_th__k + _pd__36*d_i_liftoff_q_th__k + _pd__37*d_i_t_stance__k
+            d_i_P_new__q_r_td = (_pd__34*d_i_bottom_q_r__q_r_td + _pd__35*d_i_bottom_q_th__q_r_td
+                + _pd__36*d_i_liftoff_q_th__q_r_td + _pd__37*d_i_t_stance__q_r_td)
+            d_i_P_new__q_rd_td = (_pd__34*d_i_bottom_q_r__q_rd_td + _pd__35*d_i_bottom_q_th__q_rd_td
+                + _pd__36*d_i_liftoff_q_th__q_rd_td + _pd__37*d_i_t_stance__q_rd_td)
+            d_i_P_new__q_th_td = (_pd__34*d_i_bottom_q_r__q_th_td + _pd__35*d_i_bottom_q_th__q_th_td
+                + _pd__36*d_i_liftoff_q_th__q_th_td + _pd__37*d_i_t_stance__q_th_td + _x67*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = (_pd__34*d_i_bottom_q_r__q_thd_td + _pd__35*d_i_bottom_q_th__q_thd_td
+                + _pd__36*d_i_liftoff_q_th__q_thd_td + _pd__37*d_i_t_stance__q_thd_td)
+            d_i_P_new__k = (_pd__34*d_i_bottom_q_r__k + _pd__35*d_i_bottom_q_th__k
+                + _pd__36*d_i_liftoff_q_th__k + _pd__37*d_i_t_stance__k)
         else:
             return _NAN72 + (STATUS_INVALID_INPUT,)
         # next values
@@ -327,7 +384,8 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td, d_i_P_new__k, )
+        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td,
+            d_i_P_new__k, )
         _pk0 = _pkn0
         passes += 1.0
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
@@ -350,11 +408,16 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__40 = _x68*_x73
     _pd__41 = -_x73*_x76**2*i_t_bottom*ramp
     _pd__42 = _x72
-    d_bottom_q_thd__q_r_td = _pd__38*d_P_c__q_r_td + _pd__39*d_i_bottom_q_r__q_r_td + _pd__40*d_i_t_bottom__q_r_td + _pd__41*d_i_t_stance__q_r_td + _pd__42*d_p_td__q_r_td
-    d_bottom_q_thd__q_rd_td = _pd__38*d_P_c__q_rd_td + _pd__39*d_i_bottom_q_r__q_rd_td + _pd__40*d_i_t_bottom__q_rd_td + _pd__41*d_i_t_stance__q_rd_td
-    d_bottom_q_thd__q_th_td = _pd__38*d_P_c__q_th_td + _pd__39*d_i_bottom_q_r__q_th_td + _pd__40*d_i_t_bottom__q_th_td + _pd__41*d_i_t_stance__q_th_td
-    d_bottom_q_thd__q_thd_td = _pd__38*d_P_c__q_thd_td + _pd__39*d_i_bottom_q_r__q_thd_td + _pd__40*d_i_t_bottom__q_thd_td + _pd__41*d_i_t_stance__q_thd_td + _pd__42*d_p_td__q_thd_td
-    d_bottom_q_thd__k = _pd__38*d_P_c__k + _pd__39*d_i_bottom_q_r__k + _pd__40*d_i_t_bottom__k + _pd__41*d_i_t_stance__k
+    d_bottom_q_thd__q_r_td = (_pd__38*d_P_c__q_r_td + _pd__39*d_i_bottom_q_r__q_r_td
+        + _pd__40*d_i_t_bottom__q_r_td + _pd__41*d_i_t_stance__q_r_td + _pd__42*d_p_td__q_r_td)
+    d_bottom_q_thd__q_rd_td = (_pd__38*d_P_c__q_rd_td + _pd__39*d_i_bottom_q_r__q_rd_td
+        + _pd__40*d_i_t_bottom__q_rd_td + _pd__41*d_i_t_stance__q_rd_td)
+    d_bottom_q_thd__q_th_td = (_pd__38*d_P_c__q_th_td + _pd__39*d_i_bottom_q_r__q_th_td
+        + _pd__40*d_i_t_bottom__q_th_td + _pd__41*d_i_t_stance__q_th_td)
+    d_bottom_q_thd__q_thd_td = (_pd__38*d_P_c__q_thd_td + _pd__39*d_i_bottom_q_r__q_thd_td
+        + _pd__40*d_i_t_bottom__q_thd_td + _pd__41*d_i_t_stance__q_thd_td + _pd__42*d_p_td__q_thd_td)
+    d_bottom_q_thd__k = (_pd__38*d_P_c__k + _pd__39*d_i_bottom_q_r__k + _pd__40*d_i_t_bottom__k
+        + _pd__41*d_i_t_stance__k)
     liftoff_q_r = q_r_lo
     liftoff_q_th = i_liftoff_q_th
     _x74 = _x71/q_r_lo**2
@@ -373,18 +436,24 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _x80 = q_r_lo**2
         _x81 = _x77*_x80
         _x82 = _x77**2/_x80
-        _q_rd_lo_sq = 2.0*E_td*_x77 + 2.0*_x77*k*l0*q_r_lo - _x78*math.cos(i_liftoff_q_th) - _x79*k - _x81*k - _x82*(P_c + p_td)**2
+        _q_rd_lo_sq = (2.0*E_td*_x77 + 2.0*_x77*k*l0*q_r_lo - _x78*math.cos(i_liftoff_q_th) - _x79*k - _x81*k
+            - _x82*(P_c + p_td)**2)
         _x83 = 2.0*_x77
         _pd__45 = _x83
         _x84 = -_x82*(2.0*P_c + 2.0*p_td)
         _pd__46 = _x84
         _pd__47 = _x78*math.sin(i_liftoff_q_th)
         _pd__48 = _x84
-        _d_q_rd_lo_sq__q_r_td = _pd__45*d_E_td__q_r_td + _pd__46*d_P_c__q_r_td + _pd__47*d_i_liftoff_q_th__q_r_td + _pd__48*d_p_td__q_r_td
-        _d_q_rd_lo_sq__q_rd_td = _pd__45*d_E_td__q_rd_td + _pd__46*d_P_c__q_rd_td + _pd__47*d_i_liftoff_q_th__q_rd_td
-        _d_q_rd_lo_sq__q_th_td = _pd__45*d_E_td__q_th_td + _pd__46*d_P_c__q_th_td + _pd__47*d_i_liftoff_q_th__q_th_td
-        _d_q_rd_lo_sq__q_thd_td = _pd__45*d_E_td__q_thd_td + _pd__46*d_P_c__q_thd_td + _pd__47*d_i_liftoff_q_th__q_thd_td + _pd__48*d_p_td__q_thd_td
-        _d_q_rd_lo_sq__k = _pd__45*d_E_td__k + _pd__46*d_P_c__k + _pd__47*d_i_liftoff_q_th__k - _x79 - _x81 + _x83*l0*q_r_lo
+        _d_q_rd_lo_sq__q_r_td = (_pd__45*d_E_td__q_r_td + _pd__46*d_P_c__q_r_td
+            + _pd__47*d_i_liftoff_q_th__q_r_td + _pd__48*d_p_td__q_r_td)
+        _d_q_rd_lo_sq__q_rd_td = (_pd__45*d_E_td__q_rd_td + _pd__46*d_P_c__q_rd_td
+            + _pd__47*d_i_liftoff_q_th__q_rd_td)
+        _d_q_rd_lo_sq__q_th_td = (_pd__45*d_E_td__q_th_td + _pd__46*d_P_c__q_th_td
+            + _pd__47*d_i_liftoff_q_th__q_th_td)
+        _d_q_rd_lo_sq__q_thd_td = (_pd__45*d_E_td__q_thd_td + _pd__46*d_P_c__q_thd_td
+            + _pd__47*d_i_liftoff_q_th__q_thd_td + _pd__48*d_p_td__q_thd_td)
+        _d_q_rd_lo_sq__k = (_pd__45*d_E_td__k + _pd__46*d_P_c__k + _pd__47*d_i_liftoff_q_th__k - _x79 - _x81
+            + _x83*l0*q_r_lo)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return _NAN72 + (STATUS_ENERGY_DEFICIT,)
@@ -451,22 +520,57 @@ def gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type1_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, out, status):
+def gravity_type1_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        samples, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type1_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
+    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
+    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
+    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
+    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
+    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
+    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
+    d_passes__q_thd_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type1_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol)
+        res = (gravity_type1_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
+            q_r_lo, reading, samples, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -543,8 +647,10 @@ def gravity_type1_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type1_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol):
-    """Apex-return map by Gravity correction type 1 (leg length (l0 + q_r_b)/2), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def gravity_type1_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, samples, iterations, tol):
+    """Apex-return map by Gravity correction type 1 (leg length (l0 + q_r_b)/2), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 46, 47, 48, 50, 52, 53, 54.
 
@@ -563,9 +669,11 @@ def gravity_type1_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -579,57 +687,103 @@ def gravity_type1_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 115
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples
+            >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN55 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[20] != STATUS_OK:
         return _NAN55 + (_c0[20],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _c1 = gravity_type1_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol)
+    _c1 = (gravity_type1_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading,
+        samples, iterations, tol))
     if _c1[72] != STATUS_OK:
         return _NAN55 + (_c1[72],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td, _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
+        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
     # chain rule through gravity_type1_stance
-    d_t_stance__b_y_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex
-    d_t_stance__b_xd_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_t_stance__q_th_td = _j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_rd__b_y_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_rd__b_xd_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_rd__q_th_td = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_th__b_y_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_th__b_xd_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_th__q_th_td = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_thd__b_y_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_thd__b_xd_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_thd__q_th_td = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
     d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_P_c__q_th_td = _j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td
+    d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[16] != STATUS_OK:
         return _NAN55 + (_c2[16],)
-    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _) = _c2
+    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _, _, _, _) = _c2
     # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_height__b_xd_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_height__q_th_td = _j_apex_height__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_height__k = _j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k + _j_apex_height__q_thd*_j_liftoff_q_thd__k
-    d_apex_speed__b_y_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_speed__b_xd_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_speed__q_th_td = _j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_speed__k = _j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k + _j_apex_speed__q_thd*_j_liftoff_q_thd__k
-    d_t_ascent__b_y_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex
-    d_t_ascent__b_xd_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_t_ascent__q_th_td = _j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td
-    d_t_ascent__k = _j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th + _j_liftoff_q_thd__k*_j_t_ascent__q_thd
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__b_xd_apex = 0.0
@@ -650,22 +804,50 @@ def gravity_type1_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN55 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex,
+        d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex,
+        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type1_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, out, status):
+def gravity_type1_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, samples, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type1_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations,
+    tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 55)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+    d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+    d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+    d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k,
+    d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k,
+    d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k,
+    d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+    d_passes__q_th_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type1_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol)
+        res = (gravity_type1_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, reading, samples, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

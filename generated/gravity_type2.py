@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:a291c3b0eaea5af3
-#   geyer.py sha256:677d7d2464b0d738
+#   flight.py sha256:e1c99c5d9ccf115a
+#   geyer.py sha256:56141b7b10ce8833
 # ----------------------------------------------------------------------------------------------
-"""Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return kernels."""
+"""Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return
+kernels."""
 
 import math
 
@@ -19,7 +21,8 @@ from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
@@ -28,7 +31,8 @@ _NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol):
+def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+        leg_length, iterations, tol):
     """Gravity correction type 2 (average leg length): touchdown state -> bottom and liftoff states.
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
@@ -47,10 +51,13 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
-        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
+        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
+            eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -69,7 +76,16 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     """
     # Total ops: 210
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0)
+            or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -79,7 +95,8 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5
@@ -147,18 +164,22 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             _x13 = (1.0/i_omega0_hat)
             _x14 = i_a + 1.0
             _x15 = i_omega0_hat*(_x13*i_phase_td + i_t_stance)
-            i_L = _x13*l0*(_x14*_x15 - _x14*i_phase_td - i_b*math.cos(_x15) + i_b*math.cos(i_phase_td))/i_t_stance
+            i_L = (_x13*l0*(_x14*_x15 - _x14*i_phase_td - i_b*math.cos(_x15)
+                + i_b*math.cos(i_phase_td))/i_t_stance)
         elif leg_length == 1.0:
             _x16 = i_omega0_hat*i_t_stance
             _x17 = i_b**2
             _x18 = math.sqrt((_x17 - i_a**2)/_x17)
-            i_L = l0*(_x18*i_b*math.cos(_x16) - _x18*i_b - i_a*math.sin(_x16) + i_omega0_hat*(i_a*i_t_stance + i_t_stance))/(i_omega0_hat*i_t_stance)
+            i_L = (l0*(_x18*i_b*math.cos(_x16) - _x18*i_b - i_a*math.sin(_x16) + i_omega0_hat*(i_a*i_t_stance
+                + i_t_stance))/(i_omega0_hat*i_t_stance))
         elif leg_length == 2.0:
             _x19 = i_omega0_hat*i_t_stance
             _x20 = math.sin(_x19)
             _x21 = i_q_thd_eff**2
             _x22 = i_t_stance*l0
-            i_L = (-_x20*_x21*l0 + _x20*g_s + i_omega0_hat*q_rd_td - i_omega0_hat*(-_x21*_x22 - _x22*i_omega0_hat**2 + g_s*i_t_stance + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance)
+            i_L = ((-_x20*_x21*l0 + _x20*g_s + i_omega0_hat*q_rd_td - i_omega0_hat*(-_x21*_x22
+                - _x22*i_omega0_hat**2 + g_s*i_t_stance
+                + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance))
         else:
             return _NAN12 + (STATUS_INVALID_INPUT,)
         # eq (48) with 2 or 3 samples
@@ -167,7 +188,8 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             i_P_new = (0.5)*i_t_stance*(_x23*math.sin(i_liftoff_q_th) + _x23*math.sin(q_th_td))
         elif samples == 3.0:
             _x24 = g_s*i_L*m
-            i_P_new = (0.3333333333333333)*i_t_stance*(_x24*math.sin(i_bottom_q_th) + _x24*math.sin(i_liftoff_q_th) + _x24*math.sin(q_th_td))
+            i_P_new = ((0.3333333333333333)*i_t_stance*(_x24*math.sin(i_bottom_q_th)
+                + _x24*math.sin(i_liftoff_q_th) + _x24*math.sin(q_th_td)))
         else:
             return _NAN12 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
@@ -191,7 +213,8 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _x26 = (1.0/m)
         _x27 = _x26*k
         _x28 = q_r_lo**2
-        _q_rd_lo_sq = 2.0*E_td*_x26 - _x26**2*(P_c + p_td)**2/_x28 + 2.0*_x26*k*l0*q_r_lo - _x27*_x28 - _x27*l0**2 - 2.0*g_s*q_r_lo*math.cos(i_liftoff_q_th)
+        _q_rd_lo_sq = (2.0*E_td*_x26 - _x26**2*(P_c + p_td)**2/_x28 + 2.0*_x26*k*l0*q_r_lo - _x27*_x28
+            - _x27*l0**2 - 2.0*g_s*q_r_lo*math.cos(i_liftoff_q_th))
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return _NAN12 + (STATUS_ENERGY_DEFICIT,)
@@ -203,22 +226,30 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     else:
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN12 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type2_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, out, status):
+def gravity_type2_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+        leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type2_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations,
+    tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type2_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol)
+        res = (gravity_type2_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
+            reading, samples, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -235,7 +266,8 @@ def gravity_type2_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol):
+def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+        leg_length, iterations, tol):
     """Gravity correction type 2 (average leg length): the polar state a time t after touchdown.
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
@@ -252,10 +284,13 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
-        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
+        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
+            eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -266,7 +301,16 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     """
     # Total ops: 179
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0)
+            or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -276,7 +320,8 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5
@@ -344,18 +389,22 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
             _x13 = (1.0/i_omega0_hat)
             _x14 = i_a + 1.0
             _x15 = i_omega0_hat*(_x13*i_phase_td + i_t_stance)
-            i_L = _x13*l0*(_x14*_x15 - _x14*i_phase_td - i_b*math.cos(_x15) + i_b*math.cos(i_phase_td))/i_t_stance
+            i_L = (_x13*l0*(_x14*_x15 - _x14*i_phase_td - i_b*math.cos(_x15)
+                + i_b*math.cos(i_phase_td))/i_t_stance)
         elif leg_length == 1.0:
             _x16 = i_omega0_hat*i_t_stance
             _x17 = i_b**2
             _x18 = math.sqrt((_x17 - i_a**2)/_x17)
-            i_L = l0*(_x18*i_b*math.cos(_x16) - _x18*i_b - i_a*math.sin(_x16) + i_omega0_hat*(i_a*i_t_stance + i_t_stance))/(i_omega0_hat*i_t_stance)
+            i_L = (l0*(_x18*i_b*math.cos(_x16) - _x18*i_b - i_a*math.sin(_x16) + i_omega0_hat*(i_a*i_t_stance
+                + i_t_stance))/(i_omega0_hat*i_t_stance))
         elif leg_length == 2.0:
             _x19 = i_omega0_hat*i_t_stance
             _x20 = math.sin(_x19)
             _x21 = i_q_thd_eff**2
             _x22 = i_t_stance*l0
-            i_L = (-_x20*_x21*l0 + _x20*g_s + i_omega0_hat*q_rd_td - i_omega0_hat*(-_x21*_x22 - _x22*i_omega0_hat**2 + g_s*i_t_stance + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance)
+            i_L = ((-_x20*_x21*l0 + _x20*g_s + i_omega0_hat*q_rd_td - i_omega0_hat*(-_x21*_x22
+                - _x22*i_omega0_hat**2 + g_s*i_t_stance
+                + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance))
         else:
             return _NAN4 + (STATUS_INVALID_INPUT,)
         # eq (48) with 2 or 3 samples
@@ -364,7 +413,8 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
             i_P_new = (0.5)*i_t_stance*(_x23*math.sin(i_liftoff_q_th) + _x23*math.sin(q_th_td))
         elif samples == 3.0:
             _x24 = g_s*i_L*m
-            i_P_new = (0.3333333333333333)*i_t_stance*(_x24*math.sin(i_bottom_q_th) + _x24*math.sin(i_liftoff_q_th) + _x24*math.sin(q_th_td))
+            i_P_new = ((0.3333333333333333)*i_t_stance*(_x24*math.sin(i_bottom_q_th)
+                + _x24*math.sin(i_liftoff_q_th) + _x24*math.sin(q_th_td)))
         else:
             return _NAN4 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
@@ -387,16 +437,19 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type2_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol, out, status):
+def gravity_type2_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        samples, leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type2_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+    samples, leg_length, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type2_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol)
+        res = (gravity_type2_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+            reading, samples, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -405,7 +458,8 @@ def gravity_type2_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol):
+def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading,
+        samples, leg_length, iterations, tol):
     """Apex-return map: exact flights, stance by Gravity correction type 2 (average leg length).
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
@@ -422,10 +476,13 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
-        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
+        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
+            eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -443,7 +500,17 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
+            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0)
+            or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
@@ -455,7 +522,8 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     td_q_thd = _c0[3]
     t_descent = _c0[4]
     # stance: Gravity correction type 2 (average leg length)
-    _c1 = gravity_type2_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples, leg_length, iterations, tol)
+    _c1 = (gravity_type2_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples,
+        leg_length, iterations, tol))
     if _c1[12] != STATUS_OK:
         return _NAN11 + (_c1[12],)
     t_stance = _c1[1]
@@ -473,22 +541,30 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN11 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type2_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol, out, status):
+def gravity_type2_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading,
+        samples, leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type2_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type2_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol)
+        res = (gravity_type2_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td,
+            q_r_lo, reading, samples, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

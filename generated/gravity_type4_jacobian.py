@@ -4,22 +4,26 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:4974722c824d3634
-#   geyer_jacobian.py sha256:be9d1f8206af083d
+#   flight_jacobian.py sha256:5e86edc951466ed7
+#   geyer_jacobian.py sha256:71e01de102ad80c3
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type4: JVP kernels, and for
+a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jac_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN55 = (NAN,) * 55
@@ -27,8 +31,10 @@ _NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol):
-    """Gravity correction type 4 (average leg length on [t_i, t_f]): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        interval, leg_length, iterations, tol):
+    """Gravity correction type 4 (average leg length on [t_i, t_f]): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
@@ -47,9 +53,11 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
-        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
+        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
+            eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -64,12 +72,22 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td, q_th_td, q_thd_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 1793
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0)
+            or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN72 + (STATUS_INVALID_INPUT,)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
@@ -132,7 +150,11 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[30] != STATUS_OK:
             return _NAN72 + (_c0[30],)
-        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _, _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _, _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k, _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k, _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
+        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _,
+            _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _,
+            _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k,
+            _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k,
+            _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
         # chain rule through geyer_solution
         d_i_omega__q_r_td = _j_i_omega__q_r_td + _j_i_omega__q_thd_td*d_i_q_thd_eff__q_r_td
         d_i_omega__q_rd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
@@ -202,10 +224,14 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__4 = -_x16*_x18
         _pd__5 = _x14
         _pd__6 = _x17
-        d_i_t_stance__q_r_td = _pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td + _pd__6*d_i_phase_td__q_r_td
-        d_i_t_stance__q_rd_td = _pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td + _pd__6*d_i_phase_td__q_rd_td
-        d_i_t_stance__q_th_td = _pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td + _pd__6*d_i_phase_td__q_th_td
-        d_i_t_stance__q_thd_td = _pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td + _pd__6*d_i_phase_td__q_thd_td
+        d_i_t_stance__q_r_td = (_pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td
+            + _pd__6*d_i_phase_td__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td
+            + _pd__6*d_i_phase_td__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td
+            + _pd__6*d_i_phase_td__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td
+            + _pd__6*d_i_phase_td__q_thd_td)
         d_i_t_stance__k = _pd__4*d_i_omega0_hat__k + _pd__5*d_i_phase_lo__k + _pd__6*d_i_phase_td__k
         i_bottom_q_r = l0*(i_a - i_b + 1.0)
         d_i_bottom_q_r__q_r_td = d_i_a__q_r_td*l0 - d_i_b__q_r_td*l0
@@ -240,11 +266,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__11 = _x37
         _x38 = -_x30*i_b*i_s_td/_x25
         _pd__12 = _x38
-        d_i_bottom_q_th__q_r_td = _pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td + _pd__9*d_i_omega__q_r_td
-        d_i_bottom_q_th__q_rd_td = _pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td + _pd__9*d_i_omega__q_rd_td
-        d_i_bottom_q_th__q_th_td = _pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td + _pd__9*d_i_omega__q_th_td + 1.0
-        d_i_bottom_q_th__q_thd_td = _pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td + _pd__9*d_i_omega__q_thd_td
-        d_i_bottom_q_th__k = _pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k
+        d_i_bottom_q_th__q_r_td = (_pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td
+            + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td
+            + _pd__9*d_i_omega__q_r_td)
+        d_i_bottom_q_th__q_rd_td = (_pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td
+            + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td
+            + _pd__9*d_i_omega__q_rd_td)
+        d_i_bottom_q_th__q_th_td = (_pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td
+            + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td
+            + _pd__9*d_i_omega__q_th_td + 1.0)
+        d_i_bottom_q_th__q_thd_td = (_pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td
+            + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td
+            + _pd__9*d_i_omega__q_thd_td)
+        d_i_bottom_q_th__k = (_pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k
+            + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k)
         _x39 = math.sqrt(1.0 - i_s_lo**2)
         _x40 = _x39*l0
         _x41 = _x40*i_omega0_hat
@@ -253,10 +288,14 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__17 = _x40*i_b
         _x42 = i_b*i_s_lo/_x39
         _pd__18 = -_x42*i_omega0_hat*l0
-        d_i_liftoff_q_rd__q_r_td = _pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td + _pd__18*d_i_s_lo__q_r_td
-        d_i_liftoff_q_rd__q_rd_td = _pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td + _pd__18*d_i_s_lo__q_rd_td
-        d_i_liftoff_q_rd__q_th_td = _pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td + _pd__18*d_i_s_lo__q_th_td
-        d_i_liftoff_q_rd__q_thd_td = _pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td + _pd__18*d_i_s_lo__q_thd_td
+        d_i_liftoff_q_rd__q_r_td = (_pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td
+            + _pd__18*d_i_s_lo__q_r_td)
+        d_i_liftoff_q_rd__q_rd_td = (_pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td
+            + _pd__18*d_i_s_lo__q_rd_td)
+        d_i_liftoff_q_rd__q_th_td = (_pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td
+            + _pd__18*d_i_s_lo__q_th_td)
+        d_i_liftoff_q_rd__q_thd_td = (_pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td
+            + _pd__18*d_i_s_lo__q_thd_td)
         d_i_liftoff_q_rd__k = _pd__16*d_i_b__k + _pd__17*d_i_omega0_hat__k + _pd__18*d_i_s_lo__k
         _x43 = _x14*i_phase_lo
         _x44 = _x43*i_a
@@ -272,11 +311,21 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__24 = _x37
         _pd__25 = -_x30*_x42
         _pd__26 = _x38
-        d_i_liftoff_q_th__q_r_td = _pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td
-        d_i_liftoff_q_th__q_rd_td = _pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td
-        d_i_liftoff_q_th__q_th_td = _pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0
-        d_i_liftoff_q_th__q_thd_td = _pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td
-        d_i_liftoff_q_th__k = _pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k
+        d_i_liftoff_q_th__q_r_td = (_pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td
+            + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td
+            + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td)
+        d_i_liftoff_q_th__q_rd_td = (_pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td
+            + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td
+            + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td)
+        d_i_liftoff_q_th__q_th_td = (_pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td
+            + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td
+            + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0)
+        d_i_liftoff_q_th__q_thd_td = (_pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td
+            + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td
+            + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td)
+        d_i_liftoff_q_th__k = (_pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k
+            + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k
+            + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
             return _NAN72 + (STATUS_FALL,)
@@ -305,11 +354,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _pd__33 = -_x50**2*_x56*_x60 + _x57*(-_x49*_x51 + _x49*_x52 + _x59*i_t_stance)
                 _pd__34 = _x57*(_x58*i_b - i_b*math.sin(i_phase_td))
                 _pd__35 = -_x50*_x56**2*_x60 + _x57*(_x49*i_omega0_hat + _x59*i_omega0_hat)
-                _d_i_L__q_r_td = _pd__31*d_i_a__q_r_td + _pd__32*d_i_b__q_r_td + _pd__33*d_i_omega0_hat__q_r_td + _pd__34*d_i_phase_td__q_r_td + _pd__35*d_i_t_stance__q_r_td
-                _d_i_L__q_rd_td = _pd__31*d_i_a__q_rd_td + _pd__32*d_i_b__q_rd_td + _pd__33*d_i_omega0_hat__q_rd_td + _pd__34*d_i_phase_td__q_rd_td + _pd__35*d_i_t_stance__q_rd_td
-                _d_i_L__q_th_td = _pd__31*d_i_a__q_th_td + _pd__32*d_i_b__q_th_td + _pd__33*d_i_omega0_hat__q_th_td + _pd__34*d_i_phase_td__q_th_td + _pd__35*d_i_t_stance__q_th_td
-                _d_i_L__q_thd_td = _pd__31*d_i_a__q_thd_td + _pd__32*d_i_b__q_thd_td + _pd__33*d_i_omega0_hat__q_thd_td + _pd__34*d_i_phase_td__q_thd_td + _pd__35*d_i_t_stance__q_thd_td
-                _d_i_L__k = _pd__31*d_i_a__k + _pd__32*d_i_b__k + _pd__33*d_i_omega0_hat__k + _pd__34*d_i_phase_td__k + _pd__35*d_i_t_stance__k
+                _d_i_L__q_r_td = (_pd__31*d_i_a__q_r_td + _pd__32*d_i_b__q_r_td
+                    + _pd__33*d_i_omega0_hat__q_r_td + _pd__34*d_i_phase_td__q_r_td
+                    + _pd__35*d_i_t_stance__q_r_td)
+                _d_i_L__q_rd_td = (_pd__31*d_i_a__q_rd_td + _pd__32*d_i_b__q_rd_td
+                    + _pd__33*d_i_omega0_hat__q_rd_td + _pd__34*d_i_phase_td__q_rd_td
+                    + _pd__35*d_i_t_stance__q_rd_td)
+                _d_i_L__q_th_td = (_pd__31*d_i_a__q_th_td + _pd__32*d_i_b__q_th_td
+                    + _pd__33*d_i_omega0_hat__q_th_td + _pd__34*d_i_phase_td__q_th_td
+                    + _pd__35*d_i_t_stance__q_th_td)
+                _d_i_L__q_thd_td = (_pd__31*d_i_a__q_thd_td + _pd__32*d_i_b__q_thd_td
+                    + _pd__33*d_i_omega0_hat__q_thd_td + _pd__34*d_i_phase_td__q_thd_td
+                    + _pd__35*d_i_t_stance__q_thd_td)
+                _d_i_L__k = (_pd__31*d_i_a__k + _pd__32*d_i_b__k + _pd__33*d_i_omega0_hat__k
+                    + _pd__34*d_i_phase_td__k + _pd__35*d_i_t_stance__k)
             elif leg_length == 1.0:
                 _x61 = i_omega0_hat*i_t_stance
                 _x62 = math.sin(_x61)
@@ -332,13 +390,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _pd__37 = _x72*(-_x66*_x76 - _x66 + _x74*_x76 + _x74)
                 _x77 = _x62*_x67
                 _x78 = _x69*l0
-                _pd__38 = -_x70**2*_x71*_x78 + _x72*(-_x63*_x68 - _x77*i_t_stance + i_a*i_t_stance + i_t_stance)
-                _pd__39 = -_x70*_x71**2*_x78 + _x72*(-_x68*i_a*i_omega0_hat - _x77*i_omega0_hat + i_omega0_hat*(i_a + 1.0))
-                _d_i_L__q_r_td = _pd__36*d_i_a__q_r_td + _pd__37*d_i_b__q_r_td + _pd__38*d_i_omega0_hat__q_r_td + _pd__39*d_i_t_stance__q_r_td
-                _d_i_L__q_rd_td = _pd__36*d_i_a__q_rd_td + _pd__37*d_i_b__q_rd_td + _pd__38*d_i_omega0_hat__q_rd_td + _pd__39*d_i_t_stance__q_rd_td
-                _d_i_L__q_th_td = _pd__36*d_i_a__q_th_td + _pd__37*d_i_b__q_th_td + _pd__38*d_i_omega0_hat__q_th_td + _pd__39*d_i_t_stance__q_th_td
-                _d_i_L__q_thd_td = _pd__36*d_i_a__q_thd_td + _pd__37*d_i_b__q_thd_td + _pd__38*d_i_omega0_hat__q_thd_td + _pd__39*d_i_t_stance__q_thd_td
-                _d_i_L__k = _pd__36*d_i_a__k + _pd__37*d_i_b__k + _pd__38*d_i_omega0_hat__k + _pd__39*d_i_t_stance__k
+                _pd__38 = (-_x70**2*_x71*_x78 + _x72*(-_x63*_x68 - _x77*i_t_stance + i_a*i_t_stance
+                    + i_t_stance))
+                _pd__39 = (-_x70*_x71**2*_x78 + _x72*(-_x68*i_a*i_omega0_hat - _x77*i_omega0_hat
+                    + i_omega0_hat*(i_a + 1.0)))
+                _d_i_L__q_r_td = (_pd__36*d_i_a__q_r_td + _pd__37*d_i_b__q_r_td
+                    + _pd__38*d_i_omega0_hat__q_r_td + _pd__39*d_i_t_stance__q_r_td)
+                _d_i_L__q_rd_td = (_pd__36*d_i_a__q_rd_td + _pd__37*d_i_b__q_rd_td
+                    + _pd__38*d_i_omega0_hat__q_rd_td + _pd__39*d_i_t_stance__q_rd_td)
+                _d_i_L__q_th_td = (_pd__36*d_i_a__q_th_td + _pd__37*d_i_b__q_th_td
+                    + _pd__38*d_i_omega0_hat__q_th_td + _pd__39*d_i_t_stance__q_th_td)
+                _d_i_L__q_thd_td = (_pd__36*d_i_a__q_thd_td + _pd__37*d_i_b__q_thd_td
+                    + _pd__38*d_i_omega0_hat__q_thd_td + _pd__39*d_i_t_stance__q_thd_td)
+                _d_i_L__k = (_pd__36*d_i_a__k + _pd__37*d_i_b__k + _pd__38*d_i_omega0_hat__k
+                    + _pd__39*d_i_t_stance__k)
             elif leg_length == 2.0:
                 _x79 = i_omega0_hat*q_rd_td
                 _x80 = i_omega0_hat*i_t_stance
@@ -358,14 +423,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _i_L = _x89*_x92
                 _x93 = 2.0*l0
                 _x94 = _x80*_x93
-                _pd__40 = -3.0*_x89*_x91*_x96**4 + _x92*(_x83*_x84 - _x83 - _x84*_x88 - _x85 + _x87 + _x88 - i_omega0_hat*(-_x81*i_t_stance*q_rd_td - _x94) + q_rd_td)
+                _pd__40 = (-3.0*_x89*_x91*_x96**4 + _x92*(_x83*_x84 - _x83 - _x84*_x88 - _x85 + _x87 + _x88
+                    - i_omega0_hat*(-_x81*i_t_stance*q_rd_td - _x94) + q_rd_td))
                 _pd__41 = _x92*(-_x81*_x93*i_q_thd_eff + _x94*i_q_thd_eff)
                 _x95 = _x84*i_omega0_hat
-                _pd__42 = -_x89*_x90*_x91**2 + _x92*(-_x82*_x95 + _x84*g_s*i_omega0_hat - i_omega0_hat*(-_x79*_x81 - _x82 - _x86 + g_s))
-                _d_i_L__q_r_td = _pd__40*d_i_omega0_hat__q_r_td + _pd__41*d_i_q_thd_eff__q_r_td + _pd__42*d_i_t_stance__q_r_td
-                _d_i_L__q_rd_td = _pd__40*d_i_omega0_hat__q_rd_td + _pd__41*d_i_q_thd_eff__q_rd_td + _pd__42*d_i_t_stance__q_rd_td + _x92*(-_x95 + i_omega0_hat)
-                _d_i_L__q_th_td = _pd__40*d_i_omega0_hat__q_th_td + _pd__41*d_i_q_thd_eff__q_th_td + _pd__42*d_i_t_stance__q_th_td
-                _d_i_L__q_thd_td = _pd__40*d_i_omega0_hat__q_thd_td + _pd__41*d_i_q_thd_eff__q_thd_td + _pd__42*d_i_t_stance__q_thd_td
+                _pd__42 = (-_x89*_x90*_x91**2 + _x92*(-_x82*_x95 + _x84*g_s*i_omega0_hat
+                    - i_omega0_hat*(-_x79*_x81 - _x82 - _x86 + g_s)))
+                _d_i_L__q_r_td = (_pd__40*d_i_omega0_hat__q_r_td + _pd__41*d_i_q_thd_eff__q_r_td
+                    + _pd__42*d_i_t_stance__q_r_td)
+                _d_i_L__q_rd_td = (_pd__40*d_i_omega0_hat__q_rd_td + _pd__41*d_i_q_thd_eff__q_rd_td
+                    + _pd__42*d_i_t_stance__q_rd_td + _x92*(-_x95 + i_omega0_hat))
+                _d_i_L__q_th_td = (_pd__40*d_i_omega0_hat__q_th_td + _pd__41*d_i_q_thd_eff__q_th_td
+                    + _pd__42*d_i_t_stance__q_th_td)
+                _d_i_L__q_thd_td = (_pd__40*d_i_omega0_hat__q_thd_td + _pd__41*d_i_q_thd_eff__q_thd_td
+                    + _pd__42*d_i_t_stance__q_thd_td)
                 _d_i_L__k = _pd__40*d_i_omega0_hat__k + _pd__41*d_i_q_thd_eff__k + _pd__42*d_i_t_stance__k
             else:
                 return _NAN72 + (STATUS_INVALID_INPUT,)
@@ -380,10 +451,14 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             _x103 = _i_L*_x102*_x97
             _pd__44 = _x103*math.cos(i_liftoff_q_th)
             _pd__45 = (0.5)*_x101 + (0.5)*_x99
-            d_i_P_new__q_r_td = _d_i_L__q_r_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_r_td + _pd__45*d_i_t_stance__q_r_td
-            d_i_P_new__q_rd_td = _d_i_L__q_rd_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_rd_td + _pd__45*d_i_t_stance__q_rd_td
-            d_i_P_new__q_th_td = _d_i_L__q_th_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_th_td + _pd__45*d_i_t_stance__q_th_td + _x103*math.cos(q_th_td)
-            d_i_P_new__q_thd_td = _d_i_L__q_thd_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_thd_td + _pd__45*d_i_t_stance__q_thd_td
+            d_i_P_new__q_r_td = (_d_i_L__q_r_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_r_td
+                + _pd__45*d_i_t_stance__q_r_td)
+            d_i_P_new__q_rd_td = (_d_i_L__q_rd_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_rd_td
+                + _pd__45*d_i_t_stance__q_rd_td)
+            d_i_P_new__q_th_td = (_d_i_L__q_th_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_th_td
+                + _pd__45*d_i_t_stance__q_th_td + _x103*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = (_d_i_L__q_thd_td*_pd__43 + _pd__44*d_i_liftoff_q_th__q_thd_td
+                + _pd__45*d_i_t_stance__q_thd_td)
             d_i_P_new__k = _d_i_L__k*_pd__43 + _pd__44*d_i_liftoff_q_th__k + _pd__45*d_i_t_stance__k
         elif interval == 1.0:
             # average leg length, eqs (55)-(61) / (67)-(75)
@@ -407,11 +482,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _pd__48 = -_x106**2*_x112*_x116 + _x113*(-_x105*_x107 + _x105*_x108 + _x115*i_t_bottom)
                 _pd__49 = _x113*(_x114*i_b - i_b*math.sin(i_phase_td))
                 _pd__50 = -_x106*_x112**2*_x116 + _x113*(_x105*i_omega0_hat + _x115*i_omega0_hat)
-                _d_i_L1__q_r_td = _pd__46*d_i_a__q_r_td + _pd__47*d_i_b__q_r_td + _pd__48*d_i_omega0_hat__q_r_td + _pd__49*d_i_phase_td__q_r_td + _pd__50*d_i_t_bottom__q_r_td
-                _d_i_L1__q_rd_td = _pd__46*d_i_a__q_rd_td + _pd__47*d_i_b__q_rd_td + _pd__48*d_i_omega0_hat__q_rd_td + _pd__49*d_i_phase_td__q_rd_td + _pd__50*d_i_t_bottom__q_rd_td
-                _d_i_L1__q_th_td = _pd__46*d_i_a__q_th_td + _pd__47*d_i_b__q_th_td + _pd__48*d_i_omega0_hat__q_th_td + _pd__49*d_i_phase_td__q_th_td + _pd__50*d_i_t_bottom__q_th_td
-                _d_i_L1__q_thd_td = _pd__46*d_i_a__q_thd_td + _pd__47*d_i_b__q_thd_td + _pd__48*d_i_omega0_hat__q_thd_td + _pd__49*d_i_phase_td__q_thd_td + _pd__50*d_i_t_bottom__q_thd_td
-                _d_i_L1__k = _pd__46*d_i_a__k + _pd__47*d_i_b__k + _pd__48*d_i_omega0_hat__k + _pd__49*d_i_phase_td__k + _pd__50*d_i_t_bottom__k
+                _d_i_L1__q_r_td = (_pd__46*d_i_a__q_r_td + _pd__47*d_i_b__q_r_td
+                    + _pd__48*d_i_omega0_hat__q_r_td + _pd__49*d_i_phase_td__q_r_td
+                    + _pd__50*d_i_t_bottom__q_r_td)
+                _d_i_L1__q_rd_td = (_pd__46*d_i_a__q_rd_td + _pd__47*d_i_b__q_rd_td
+                    + _pd__48*d_i_omega0_hat__q_rd_td + _pd__49*d_i_phase_td__q_rd_td
+                    + _pd__50*d_i_t_bottom__q_rd_td)
+                _d_i_L1__q_th_td = (_pd__46*d_i_a__q_th_td + _pd__47*d_i_b__q_th_td
+                    + _pd__48*d_i_omega0_hat__q_th_td + _pd__49*d_i_phase_td__q_th_td
+                    + _pd__50*d_i_t_bottom__q_th_td)
+                _d_i_L1__q_thd_td = (_pd__46*d_i_a__q_thd_td + _pd__47*d_i_b__q_thd_td
+                    + _pd__48*d_i_omega0_hat__q_thd_td + _pd__49*d_i_phase_td__q_thd_td
+                    + _pd__50*d_i_t_bottom__q_thd_td)
+                _d_i_L1__k = (_pd__46*d_i_a__k + _pd__47*d_i_b__k + _pd__48*d_i_omega0_hat__k
+                    + _pd__49*d_i_phase_td__k + _pd__50*d_i_t_bottom__k)
             elif leg_length == 1.0:
                 _x117 = i_omega0_hat*i_t_bottom
                 _x118 = math.sin(_x117)
@@ -427,20 +511,28 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _x128 = _x126*_x127*l0
                 _i_L1 = _x125*_x128
                 _x129 = (1.0/_x121)
-                _pd__51 = _x128*(-_x118 + _x122*_x129*i_a*i_b - _x123*_x124*_x129*i_a + i_omega0_hat*i_t_bottom)
+                _pd__51 = (_x128*(-_x118 + _x122*_x129*i_a*i_b - _x123*_x124*_x129*i_a
+                    + i_omega0_hat*i_t_bottom))
                 _x130 = _x122*_x124
                 _x131 = i_b**3
                 _x132 = _x129*_x131*(-_x121/_x131 + (1.0/i_b))
                 _pd__52 = _x128*(-_x122*_x132 - _x122 + _x130*_x132 + _x130)
                 _x133 = _x118*_x123
                 _x134 = _x125*l0
-                _pd__53 = -_x126**2*_x127*_x134 + _x128*(-_x119*_x124 - _x133*i_t_bottom + i_a*i_t_bottom + i_t_bottom)
-                _pd__54 = -_x126*_x127**2*_x134 + _x128*(-_x124*i_a*i_omega0_hat - _x133*i_omega0_hat + i_omega0_hat*(i_a + 1.0))
-                _d_i_L1__q_r_td = _pd__51*d_i_a__q_r_td + _pd__52*d_i_b__q_r_td + _pd__53*d_i_omega0_hat__q_r_td + _pd__54*d_i_t_bottom__q_r_td
-                _d_i_L1__q_rd_td = _pd__51*d_i_a__q_rd_td + _pd__52*d_i_b__q_rd_td + _pd__53*d_i_omega0_hat__q_rd_td + _pd__54*d_i_t_bottom__q_rd_td
-                _d_i_L1__q_th_td = _pd__51*d_i_a__q_th_td + _pd__52*d_i_b__q_th_td + _pd__53*d_i_omega0_hat__q_th_td + _pd__54*d_i_t_bottom__q_th_td
-                _d_i_L1__q_thd_td = _pd__51*d_i_a__q_thd_td + _pd__52*d_i_b__q_thd_td + _pd__53*d_i_omega0_hat__q_thd_td + _pd__54*d_i_t_bottom__q_thd_td
-                _d_i_L1__k = _pd__51*d_i_a__k + _pd__52*d_i_b__k + _pd__53*d_i_omega0_hat__k + _pd__54*d_i_t_bottom__k
+                _pd__53 = (-_x126**2*_x127*_x134 + _x128*(-_x119*_x124 - _x133*i_t_bottom + i_a*i_t_bottom
+                    + i_t_bottom))
+                _pd__54 = (-_x126*_x127**2*_x134 + _x128*(-_x124*i_a*i_omega0_hat - _x133*i_omega0_hat
+                    + i_omega0_hat*(i_a + 1.0)))
+                _d_i_L1__q_r_td = (_pd__51*d_i_a__q_r_td + _pd__52*d_i_b__q_r_td
+                    + _pd__53*d_i_omega0_hat__q_r_td + _pd__54*d_i_t_bottom__q_r_td)
+                _d_i_L1__q_rd_td = (_pd__51*d_i_a__q_rd_td + _pd__52*d_i_b__q_rd_td
+                    + _pd__53*d_i_omega0_hat__q_rd_td + _pd__54*d_i_t_bottom__q_rd_td)
+                _d_i_L1__q_th_td = (_pd__51*d_i_a__q_th_td + _pd__52*d_i_b__q_th_td
+                    + _pd__53*d_i_omega0_hat__q_th_td + _pd__54*d_i_t_bottom__q_th_td)
+                _d_i_L1__q_thd_td = (_pd__51*d_i_a__q_thd_td + _pd__52*d_i_b__q_thd_td
+                    + _pd__53*d_i_omega0_hat__q_thd_td + _pd__54*d_i_t_bottom__q_thd_td)
+                _d_i_L1__k = (_pd__51*d_i_a__k + _pd__52*d_i_b__k + _pd__53*d_i_omega0_hat__k
+                    + _pd__54*d_i_t_bottom__k)
             elif leg_length == 2.0:
                 _x135 = i_omega0_hat*q_rd_td
                 _x136 = i_omega0_hat*i_t_bottom
@@ -460,14 +552,20 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _i_L1 = _x145*_x148
                 _x149 = 2.0*l0
                 _x150 = _x136*_x149
-                _pd__55 = -3.0*_x145*_x147*_x152**4 + _x148*(_x139*_x140 - _x139 - _x140*_x144 - _x141 + _x143 + _x144 - i_omega0_hat*(-_x137*i_t_bottom*q_rd_td - _x150) + q_rd_td)
+                _pd__55 = (-3.0*_x145*_x147*_x152**4 + _x148*(_x139*_x140 - _x139 - _x140*_x144 - _x141
+                    + _x143 + _x144 - i_omega0_hat*(-_x137*i_t_bottom*q_rd_td - _x150) + q_rd_td))
                 _pd__56 = _x148*(-_x137*_x149*i_q_thd_eff + _x150*i_q_thd_eff)
                 _x151 = _x140*i_omega0_hat
-                _pd__57 = -_x145*_x146*_x147**2 + _x148*(-_x138*_x151 + _x140*g_s*i_omega0_hat - i_omega0_hat*(-_x135*_x137 - _x138 - _x142 + g_s))
-                _d_i_L1__q_r_td = _pd__55*d_i_omega0_hat__q_r_td + _pd__56*d_i_q_thd_eff__q_r_td + _pd__57*d_i_t_bottom__q_r_td
-                _d_i_L1__q_rd_td = _pd__55*d_i_omega0_hat__q_rd_td + _pd__56*d_i_q_thd_eff__q_rd_td + _pd__57*d_i_t_bottom__q_rd_td + _x148*(-_x151 + i_omega0_hat)
-                _d_i_L1__q_th_td = _pd__55*d_i_omega0_hat__q_th_td + _pd__56*d_i_q_thd_eff__q_th_td + _pd__57*d_i_t_bottom__q_th_td
-                _d_i_L1__q_thd_td = _pd__55*d_i_omega0_hat__q_thd_td + _pd__56*d_i_q_thd_eff__q_thd_td + _pd__57*d_i_t_bottom__q_thd_td
+                _pd__57 = (-_x145*_x146*_x147**2 + _x148*(-_x138*_x151 + _x140*g_s*i_omega0_hat
+                    - i_omega0_hat*(-_x135*_x137 - _x138 - _x142 + g_s)))
+                _d_i_L1__q_r_td = (_pd__55*d_i_omega0_hat__q_r_td + _pd__56*d_i_q_thd_eff__q_r_td
+                    + _pd__57*d_i_t_bottom__q_r_td)
+                _d_i_L1__q_rd_td = (_pd__55*d_i_omega0_hat__q_rd_td + _pd__56*d_i_q_thd_eff__q_rd_td
+                    + _pd__57*d_i_t_bottom__q_rd_td + _x148*(-_x151 + i_omega0_hat))
+                _d_i_L1__q_th_td = (_pd__55*d_i_omega0_hat__q_th_td + _pd__56*d_i_q_thd_eff__q_th_td
+                    + _pd__57*d_i_t_bottom__q_th_td)
+                _d_i_L1__q_thd_td = (_pd__55*d_i_omega0_hat__q_thd_td + _pd__56*d_i_q_thd_eff__q_thd_td
+                    + _pd__57*d_i_t_bottom__q_thd_td)
                 _d_i_L1__k = _pd__55*d_i_omega0_hat__k + _pd__56*d_i_q_thd_eff__k + _pd__57*d_i_t_bottom__k
             else:
                 return _NAN72 + (STATUS_INVALID_INPUT,)
@@ -492,17 +590,27 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _x166 = i_b*math.sin(_x156)
                 _x167 = math.sin(_x160)
                 _x168 = _x162*l0
-                _pd__60 = -_x153**2*_x164*_x168 + _x165*(-_x155*_x158 + _x158*_x159 - _x166*i_t_bottom + _x167*i_b*i_t_stance)
+                _pd__60 = (-_x153**2*_x164*_x168 + _x165*(-_x155*_x158 + _x158*_x159 - _x166*i_t_bottom
+                    + _x167*i_b*i_t_stance))
                 _pd__61 = _x165*(-_x166 + _x167*i_b)
                 _x169 = _x158*i_omega0_hat
                 _x170 = _x153*_x164**2*_x168
                 _pd__62 = _x165*(-_x166*i_omega0_hat - _x169) + _x170
                 _pd__63 = _x165*(_x167*i_b*i_omega0_hat + _x169) - _x170
-                _d_i_L2__q_r_td = _pd__58*d_i_a__q_r_td + _pd__59*d_i_b__q_r_td + _pd__60*d_i_omega0_hat__q_r_td + _pd__61*d_i_phase_td__q_r_td + _pd__62*d_i_t_bottom__q_r_td + _pd__63*d_i_t_stance__q_r_td
-                _d_i_L2__q_rd_td = _pd__58*d_i_a__q_rd_td + _pd__59*d_i_b__q_rd_td + _pd__60*d_i_omega0_hat__q_rd_td + _pd__61*d_i_phase_td__q_rd_td + _pd__62*d_i_t_bottom__q_rd_td + _pd__63*d_i_t_stance__q_rd_td
-                _d_i_L2__q_th_td = _pd__58*d_i_a__q_th_td + _pd__59*d_i_b__q_th_td + _pd__60*d_i_omega0_hat__q_th_td + _pd__61*d_i_phase_td__q_th_td + _pd__62*d_i_t_bottom__q_th_td + _pd__63*d_i_t_stance__q_th_td
-                _d_i_L2__q_thd_td = _pd__58*d_i_a__q_thd_td + _pd__59*d_i_b__q_thd_td + _pd__60*d_i_omega0_hat__q_thd_td + _pd__61*d_i_phase_td__q_thd_td + _pd__62*d_i_t_bottom__q_thd_td + _pd__63*d_i_t_stance__q_thd_td
-                _d_i_L2__k = _pd__58*d_i_a__k + _pd__59*d_i_b__k + _pd__60*d_i_omega0_hat__k + _pd__61*d_i_phase_td__k + _pd__62*d_i_t_bottom__k + _pd__63*d_i_t_stance__k
+                _d_i_L2__q_r_td = (_pd__58*d_i_a__q_r_td + _pd__59*d_i_b__q_r_td
+                    + _pd__60*d_i_omega0_hat__q_r_td + _pd__61*d_i_phase_td__q_r_td
+                    + _pd__62*d_i_t_bottom__q_r_td + _pd__63*d_i_t_stance__q_r_td)
+                _d_i_L2__q_rd_td = (_pd__58*d_i_a__q_rd_td + _pd__59*d_i_b__q_rd_td
+                    + _pd__60*d_i_omega0_hat__q_rd_td + _pd__61*d_i_phase_td__q_rd_td
+                    + _pd__62*d_i_t_bottom__q_rd_td + _pd__63*d_i_t_stance__q_rd_td)
+                _d_i_L2__q_th_td = (_pd__58*d_i_a__q_th_td + _pd__59*d_i_b__q_th_td
+                    + _pd__60*d_i_omega0_hat__q_th_td + _pd__61*d_i_phase_td__q_th_td
+                    + _pd__62*d_i_t_bottom__q_th_td + _pd__63*d_i_t_stance__q_th_td)
+                _d_i_L2__q_thd_td = (_pd__58*d_i_a__q_thd_td + _pd__59*d_i_b__q_thd_td
+                    + _pd__60*d_i_omega0_hat__q_thd_td + _pd__61*d_i_phase_td__q_thd_td
+                    + _pd__62*d_i_t_bottom__q_thd_td + _pd__63*d_i_t_stance__q_thd_td)
+                _d_i_L2__k = (_pd__58*d_i_a__k + _pd__59*d_i_b__k + _pd__60*d_i_omega0_hat__k
+                    + _pd__61*d_i_phase_td__k + _pd__62*d_i_t_bottom__k + _pd__63*d_i_t_stance__k)
             elif leg_length == 1.0:
                 _x171 = i_omega0_hat*i_t_bottom
                 _x172 = math.sin(_x171)
@@ -529,23 +637,34 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _pd__64 = _x189*(_x172 - _x174 - _x181*_x191 + _x184*_x191 + _x187*i_omega0_hat)
                 _x192 = i_b**3
                 _x193 = -_x179/_x192 + (1.0/i_b)
-                _pd__65 = _x189*(_x177*_x180*_x190*_x192*_x193 + _x177*_x180 - _x183*_x190*_x192*_x193 - _x183)
+                _pd__65 = (_x189*(_x177*_x180*_x190*_x192*_x193 + _x177*_x180 - _x183*_x190*_x192*_x193
+                    - _x183))
                 _x194 = _x185*l0
                 _x195 = i_a*i_t_stance
                 _x196 = _x180*i_b
                 _x197 = _x172*_x196
                 _x198 = _x174*_x196
-                _pd__66 = -_x186**2*_x188*_x194 + _x189*(_x175*_x182 - _x175 - _x177*_x195 + _x195 + _x197*i_t_bottom - _x198*i_t_stance - i_t_bottom + i_t_stance)
+                _pd__66 = (-_x186**2*_x188*_x194 + _x189*(_x175*_x182 - _x175 - _x177*_x195 + _x195
+                    + _x197*i_t_bottom - _x198*i_t_stance - i_t_bottom + i_t_stance))
                 _x199 = i_a + 1.0
                 _x200 = i_a*i_omega0_hat
                 _x201 = _x186*_x188**2*_x194
                 _pd__67 = _x189*(_x182*_x200 + _x197*i_omega0_hat - _x199*i_omega0_hat) + _x201
                 _pd__68 = _x189*(-_x177*_x200 - _x198*i_omega0_hat + _x199*i_omega0_hat) - _x201
-                _d_i_L2__q_r_td = _pd__64*d_i_a__q_r_td + _pd__65*d_i_b__q_r_td + _pd__66*d_i_omega0_hat__q_r_td + _pd__67*d_i_t_bottom__q_r_td + _pd__68*d_i_t_stance__q_r_td
-                _d_i_L2__q_rd_td = _pd__64*d_i_a__q_rd_td + _pd__65*d_i_b__q_rd_td + _pd__66*d_i_omega0_hat__q_rd_td + _pd__67*d_i_t_bottom__q_rd_td + _pd__68*d_i_t_stance__q_rd_td
-                _d_i_L2__q_th_td = _pd__64*d_i_a__q_th_td + _pd__65*d_i_b__q_th_td + _pd__66*d_i_omega0_hat__q_th_td + _pd__67*d_i_t_bottom__q_th_td + _pd__68*d_i_t_stance__q_th_td
-                _d_i_L2__q_thd_td = _pd__64*d_i_a__q_thd_td + _pd__65*d_i_b__q_thd_td + _pd__66*d_i_omega0_hat__q_thd_td + _pd__67*d_i_t_bottom__q_thd_td + _pd__68*d_i_t_stance__q_thd_td
-                _d_i_L2__k = _pd__64*d_i_a__k + _pd__65*d_i_b__k + _pd__66*d_i_omega0_hat__k + _pd__67*d_i_t_bottom__k + _pd__68*d_i_t_stance__k
+                _d_i_L2__q_r_td = (_pd__64*d_i_a__q_r_td + _pd__65*d_i_b__q_r_td
+                    + _pd__66*d_i_omega0_hat__q_r_td + _pd__67*d_i_t_bottom__q_r_td
+                    + _pd__68*d_i_t_stance__q_r_td)
+                _d_i_L2__q_rd_td = (_pd__64*d_i_a__q_rd_td + _pd__65*d_i_b__q_rd_td
+                    + _pd__66*d_i_omega0_hat__q_rd_td + _pd__67*d_i_t_bottom__q_rd_td
+                    + _pd__68*d_i_t_stance__q_rd_td)
+                _d_i_L2__q_th_td = (_pd__64*d_i_a__q_th_td + _pd__65*d_i_b__q_th_td
+                    + _pd__66*d_i_omega0_hat__q_th_td + _pd__67*d_i_t_bottom__q_th_td
+                    + _pd__68*d_i_t_stance__q_th_td)
+                _d_i_L2__q_thd_td = (_pd__64*d_i_a__q_thd_td + _pd__65*d_i_b__q_thd_td
+                    + _pd__66*d_i_omega0_hat__q_thd_td + _pd__67*d_i_t_bottom__q_thd_td
+                    + _pd__68*d_i_t_stance__q_thd_td)
+                _d_i_L2__k = (_pd__64*d_i_a__k + _pd__65*d_i_b__k + _pd__66*d_i_omega0_hat__k
+                    + _pd__67*d_i_t_bottom__k + _pd__68*d_i_t_stance__k)
             elif leg_length == 2.0:
                 _x202 = i_omega0_hat*i_t_bottom
                 _x203 = math.sin(_x202)
@@ -561,7 +680,8 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _x213 = math.cos(_x202)
                 _x214 = _x209*i_t_bottom
                 _x215 = _x207*i_t_bottom
-                _x216 = _x203*_x206*l0 - _x203*g_s - _x205*_x207 + _x205*g_s - _x211*i_omega0_hat + i_omega0_hat*(_x212 + _x213*q_rd_td - _x214 - _x215)
+                _x216 = (_x203*_x206*l0 - _x203*g_s - _x205*_x207 + _x205*g_s - _x211*i_omega0_hat
+                    + i_omega0_hat*(_x212 + _x213*q_rd_td - _x214 - _x215))
                 _x229 = (1.0/i_omega0_hat)
                 _x217 = _x229**3
                 _x218 = -i_t_bottom + i_t_stance
@@ -572,19 +692,29 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 _x222 = _x205*q_rd_td
                 _x223 = _x202*_x221
                 _x224 = _x203*q_rd_td
-                _pd__69 = -3.0*_x216*_x219*_x229**4 + _x220*(_x206*_x213*i_t_bottom*l0 - _x208*_x210 + _x208*g_s*i_t_stance - _x211 - _x212*_x213 + _x213*q_rd_td - _x214 - _x215 + g_s*i_t_bottom + i_omega0_hat*(-_x223 - _x224*i_t_bottom) - i_omega0_hat*(-_x204*_x221 - _x222*i_t_stance))
-                _pd__70 = _x220*(2.0*_x203*i_q_thd_eff*l0 - _x205*_x221*i_q_thd_eff - _x223*i_q_thd_eff + 2.0*i_omega0_hat*i_q_thd_eff*i_t_stance*l0)
+                _pd__69 = (-3.0*_x216*_x219*_x229**4 + _x220*(_x206*_x213*i_t_bottom*l0 - _x208*_x210
+                    + _x208*g_s*i_t_stance - _x211 - _x212*_x213 + _x213*q_rd_td - _x214 - _x215
+                    + g_s*i_t_bottom + i_omega0_hat*(-_x223 - _x224*i_t_bottom) - i_omega0_hat*(-_x204*_x221
+                    - _x222*i_t_stance)))
+                _pd__70 = (_x220*(2.0*_x203*i_q_thd_eff*l0 - _x205*_x221*i_q_thd_eff - _x223*i_q_thd_eff
+                    + 2.0*i_omega0_hat*i_q_thd_eff*i_t_stance*l0))
                 _x225 = _x213*i_omega0_hat
                 _x226 = _x207 + _x209 - g_s
                 _x227 = _x216*_x217*_x219**2
                 _pd__71 = _x220*(_x207*_x225 - _x225*g_s + i_omega0_hat*(-_x224*i_omega0_hat - _x226)) + _x227
                 _x228 = _x208*i_omega0_hat
-                _pd__72 = _x220*(-_x207*_x228 + _x208*g_s*i_omega0_hat - i_omega0_hat*(-_x222*i_omega0_hat - _x226)) - _x227
-                _d_i_L2__q_r_td = _pd__69*d_i_omega0_hat__q_r_td + _pd__70*d_i_q_thd_eff__q_r_td + _pd__71*d_i_t_bottom__q_r_td + _pd__72*d_i_t_stance__q_r_td
-                _d_i_L2__q_rd_td = _pd__69*d_i_omega0_hat__q_rd_td + _pd__70*d_i_q_thd_eff__q_rd_td + _pd__71*d_i_t_bottom__q_rd_td + _pd__72*d_i_t_stance__q_rd_td + _x220*(_x225 - _x228)
-                _d_i_L2__q_th_td = _pd__69*d_i_omega0_hat__q_th_td + _pd__70*d_i_q_thd_eff__q_th_td + _pd__71*d_i_t_bottom__q_th_td + _pd__72*d_i_t_stance__q_th_td
-                _d_i_L2__q_thd_td = _pd__69*d_i_omega0_hat__q_thd_td + _pd__70*d_i_q_thd_eff__q_thd_td + _pd__71*d_i_t_bottom__q_thd_td + _pd__72*d_i_t_stance__q_thd_td
-                _d_i_L2__k = _pd__69*d_i_omega0_hat__k + _pd__70*d_i_q_thd_eff__k + _pd__71*d_i_t_bottom__k + _pd__72*d_i_t_stance__k
+                _pd__72 = (_x220*(-_x207*_x228 + _x208*g_s*i_omega0_hat - i_omega0_hat*(-_x222*i_omega0_hat
+                    - _x226)) - _x227)
+                _d_i_L2__q_r_td = (_pd__69*d_i_omega0_hat__q_r_td + _pd__70*d_i_q_thd_eff__q_r_td
+                    + _pd__71*d_i_t_bottom__q_r_td + _pd__72*d_i_t_stance__q_r_td)
+                _d_i_L2__q_rd_td = (_pd__69*d_i_omega0_hat__q_rd_td + _pd__70*d_i_q_thd_eff__q_rd_td
+                    + _pd__71*d_i_t_bottom__q_rd_td + _pd__72*d_i_t_stance__q_rd_td + _x220*(_x225 - _x228))
+                _d_i_L2__q_th_td = (_pd__69*d_i_omega0_hat__q_th_td + _pd__70*d_i_q_thd_eff__q_th_td
+                    + _pd__71*d_i_t_bottom__q_th_td + _pd__72*d_i_t_stance__q_th_td)
+                _d_i_L2__q_thd_td = (_pd__69*d_i_omega0_hat__q_thd_td + _pd__70*d_i_q_thd_eff__q_thd_td
+                    + _pd__71*d_i_t_bottom__q_thd_td + _pd__72*d_i_t_stance__q_thd_td)
+                _d_i_L2__k = (_pd__69*d_i_omega0_hat__k + _pd__70*d_i_q_thd_eff__k + _pd__71*d_i_t_bottom__k
+                    + _pd__72*d_i_t_stance__k)
             else:
                 return _NAN72 + (STATUS_INVALID_INPUT,)
             _x230 = g_s*m
@@ -609,11 +739,21 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             _x244 = (0.5)*_x238
             _pd__77 = (0.5)*_x232 + (0.5)*_x234 - _x243 - _x244
             _pd__78 = _x243 + _x244
-            d_i_P_new__q_r_td = _d_i_L1__q_r_td*_pd__73 + _d_i_L2__q_r_td*_pd__74 + _pd__75*d_i_bottom_q_th__q_r_td + _pd__76*d_i_liftoff_q_th__q_r_td + _pd__77*d_i_t_bottom__q_r_td + _pd__78*d_i_t_stance__q_r_td
-            d_i_P_new__q_rd_td = _d_i_L1__q_rd_td*_pd__73 + _d_i_L2__q_rd_td*_pd__74 + _pd__75*d_i_bottom_q_th__q_rd_td + _pd__76*d_i_liftoff_q_th__q_rd_td + _pd__77*d_i_t_bottom__q_rd_td + _pd__78*d_i_t_stance__q_rd_td
-            d_i_P_new__q_th_td = _d_i_L1__q_th_td*_pd__73 + _d_i_L2__q_th_td*_pd__74 + _pd__75*d_i_bottom_q_th__q_th_td + _pd__76*d_i_liftoff_q_th__q_th_td + _pd__77*d_i_t_bottom__q_th_td + _pd__78*d_i_t_stance__q_th_td + _x230*_x241*math.cos(q_th_td)
-            d_i_P_new__q_thd_td = _d_i_L1__q_thd_td*_pd__73 + _d_i_L2__q_thd_td*_pd__74 + _pd__75*d_i_bottom_q_th__q_thd_td + _pd__76*d_i_liftoff_q_th__q_thd_td + _pd__77*d_i_t_bottom__q_thd_td + _pd__78*d_i_t_stance__q_thd_td
-            d_i_P_new__k = _d_i_L1__k*_pd__73 + _d_i_L2__k*_pd__74 + _pd__75*d_i_bottom_q_th__k + _pd__76*d_i_liftoff_q_th__k + _pd__77*d_i_t_bottom__k + _pd__78*d_i_t_stance__k
+            d_i_P_new__q_r_td = (_d_i_L1__q_r_td*_pd__73 + _d_i_L2__q_r_td*_pd__74
+                + _pd__75*d_i_bottom_q_th__q_r_td + _pd__76*d_i_liftoff_q_th__q_r_td
+                + _pd__77*d_i_t_bottom__q_r_td + _pd__78*d_i_t_stance__q_r_td)
+            d_i_P_new__q_rd_td = (_d_i_L1__q_rd_td*_pd__73 + _d_i_L2__q_rd_td*_pd__74
+                + _pd__75*d_i_bottom_q_th__q_rd_td + _pd__76*d_i_liftoff_q_th__q_rd_td
+                + _pd__77*d_i_t_bottom__q_rd_td + _pd__78*d_i_t_stance__q_rd_td)
+            d_i_P_new__q_th_td = (_d_i_L1__q_th_td*_pd__73 + _d_i_L2__q_th_td*_pd__74
+                + _pd__75*d_i_bottom_q_th__q_th_td + _pd__76*d_i_liftoff_q_th__q_th_td
+                + _pd__77*d_i_t_bottom__q_th_td + _pd__78*d_i_t_stance__q_th_td
+                + _x230*_x241*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = (_d_i_L1__q_thd_td*_pd__73 + _d_i_L2__q_thd_td*_pd__74
+                + _pd__75*d_i_bottom_q_th__q_thd_td + _pd__76*d_i_liftoff_q_th__q_thd_td
+                + _pd__77*d_i_t_bottom__q_thd_td + _pd__78*d_i_t_stance__q_thd_td)
+            d_i_P_new__k = (_d_i_L1__k*_pd__73 + _d_i_L2__k*_pd__74 + _pd__75*d_i_bottom_q_th__k
+                + _pd__76*d_i_liftoff_q_th__k + _pd__77*d_i_t_bottom__k + _pd__78*d_i_t_stance__k)
         else:
             return _NAN72 + (STATUS_INVALID_INPUT,)
         # next values
@@ -621,7 +761,8 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td, d_i_P_new__k, )
+        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td,
+            d_i_P_new__k, )
         _pk0 = _pkn0
         passes += 1.0
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
@@ -644,11 +785,16 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__81 = _x245*_x250
     _pd__82 = -_x250*_x253**2*i_t_bottom*ramp
     _pd__83 = _x249
-    d_bottom_q_thd__q_r_td = _pd__79*d_P_c__q_r_td + _pd__80*d_i_bottom_q_r__q_r_td + _pd__81*d_i_t_bottom__q_r_td + _pd__82*d_i_t_stance__q_r_td + _pd__83*d_p_td__q_r_td
-    d_bottom_q_thd__q_rd_td = _pd__79*d_P_c__q_rd_td + _pd__80*d_i_bottom_q_r__q_rd_td + _pd__81*d_i_t_bottom__q_rd_td + _pd__82*d_i_t_stance__q_rd_td
-    d_bottom_q_thd__q_th_td = _pd__79*d_P_c__q_th_td + _pd__80*d_i_bottom_q_r__q_th_td + _pd__81*d_i_t_bottom__q_th_td + _pd__82*d_i_t_stance__q_th_td
-    d_bottom_q_thd__q_thd_td = _pd__79*d_P_c__q_thd_td + _pd__80*d_i_bottom_q_r__q_thd_td + _pd__81*d_i_t_bottom__q_thd_td + _pd__82*d_i_t_stance__q_thd_td + _pd__83*d_p_td__q_thd_td
-    d_bottom_q_thd__k = _pd__79*d_P_c__k + _pd__80*d_i_bottom_q_r__k + _pd__81*d_i_t_bottom__k + _pd__82*d_i_t_stance__k
+    d_bottom_q_thd__q_r_td = (_pd__79*d_P_c__q_r_td + _pd__80*d_i_bottom_q_r__q_r_td
+        + _pd__81*d_i_t_bottom__q_r_td + _pd__82*d_i_t_stance__q_r_td + _pd__83*d_p_td__q_r_td)
+    d_bottom_q_thd__q_rd_td = (_pd__79*d_P_c__q_rd_td + _pd__80*d_i_bottom_q_r__q_rd_td
+        + _pd__81*d_i_t_bottom__q_rd_td + _pd__82*d_i_t_stance__q_rd_td)
+    d_bottom_q_thd__q_th_td = (_pd__79*d_P_c__q_th_td + _pd__80*d_i_bottom_q_r__q_th_td
+        + _pd__81*d_i_t_bottom__q_th_td + _pd__82*d_i_t_stance__q_th_td)
+    d_bottom_q_thd__q_thd_td = (_pd__79*d_P_c__q_thd_td + _pd__80*d_i_bottom_q_r__q_thd_td
+        + _pd__81*d_i_t_bottom__q_thd_td + _pd__82*d_i_t_stance__q_thd_td + _pd__83*d_p_td__q_thd_td)
+    d_bottom_q_thd__k = (_pd__79*d_P_c__k + _pd__80*d_i_bottom_q_r__k + _pd__81*d_i_t_bottom__k
+        + _pd__82*d_i_t_stance__k)
     liftoff_q_r = q_r_lo
     liftoff_q_th = i_liftoff_q_th
     _x251 = _x248/q_r_lo**2
@@ -667,18 +813,24 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _x257 = q_r_lo**2
         _x258 = _x254*_x257
         _x259 = _x254**2/_x257
-        _q_rd_lo_sq = 2.0*E_td*_x254 + 2.0*_x254*k*l0*q_r_lo - _x255*math.cos(i_liftoff_q_th) - _x256*k - _x258*k - _x259*(P_c + p_td)**2
+        _q_rd_lo_sq = (2.0*E_td*_x254 + 2.0*_x254*k*l0*q_r_lo - _x255*math.cos(i_liftoff_q_th) - _x256*k
+            - _x258*k - _x259*(P_c + p_td)**2)
         _x260 = 2.0*_x254
         _pd__86 = _x260
         _x261 = -_x259*(2.0*P_c + 2.0*p_td)
         _pd__87 = _x261
         _pd__88 = _x255*math.sin(i_liftoff_q_th)
         _pd__89 = _x261
-        _d_q_rd_lo_sq__q_r_td = _pd__86*d_E_td__q_r_td + _pd__87*d_P_c__q_r_td + _pd__88*d_i_liftoff_q_th__q_r_td + _pd__89*d_p_td__q_r_td
-        _d_q_rd_lo_sq__q_rd_td = _pd__86*d_E_td__q_rd_td + _pd__87*d_P_c__q_rd_td + _pd__88*d_i_liftoff_q_th__q_rd_td
-        _d_q_rd_lo_sq__q_th_td = _pd__86*d_E_td__q_th_td + _pd__87*d_P_c__q_th_td + _pd__88*d_i_liftoff_q_th__q_th_td
-        _d_q_rd_lo_sq__q_thd_td = _pd__86*d_E_td__q_thd_td + _pd__87*d_P_c__q_thd_td + _pd__88*d_i_liftoff_q_th__q_thd_td + _pd__89*d_p_td__q_thd_td
-        _d_q_rd_lo_sq__k = _pd__86*d_E_td__k + _pd__87*d_P_c__k + _pd__88*d_i_liftoff_q_th__k - _x256 - _x258 + _x260*l0*q_r_lo
+        _d_q_rd_lo_sq__q_r_td = (_pd__86*d_E_td__q_r_td + _pd__87*d_P_c__q_r_td
+            + _pd__88*d_i_liftoff_q_th__q_r_td + _pd__89*d_p_td__q_r_td)
+        _d_q_rd_lo_sq__q_rd_td = (_pd__86*d_E_td__q_rd_td + _pd__87*d_P_c__q_rd_td
+            + _pd__88*d_i_liftoff_q_th__q_rd_td)
+        _d_q_rd_lo_sq__q_th_td = (_pd__86*d_E_td__q_th_td + _pd__87*d_P_c__q_th_td
+            + _pd__88*d_i_liftoff_q_th__q_th_td)
+        _d_q_rd_lo_sq__q_thd_td = (_pd__86*d_E_td__q_thd_td + _pd__87*d_P_c__q_thd_td
+            + _pd__88*d_i_liftoff_q_th__q_thd_td + _pd__89*d_p_td__q_thd_td)
+        _d_q_rd_lo_sq__k = (_pd__86*d_E_td__k + _pd__87*d_P_c__k + _pd__88*d_i_liftoff_q_th__k - _x256 - _x258
+            + _x260*l0*q_r_lo)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
             return _NAN72 + (STATUS_ENERGY_DEFICIT,)
@@ -745,22 +897,58 @@ def gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type4_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol, out, status):
+def gravity_type4_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        interval, leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type4_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations,
+    tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
+    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
+    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
+    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
+    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
+    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
+    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
+    d_passes__q_thd_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type4_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol)
+        res = (gravity_type4_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
+            q_r_lo, reading, interval, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -837,8 +1025,10 @@ def gravity_type4_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type4_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol):
-    """Apex-return map by Gravity correction type 4 (average leg length on [t_i, t_f]), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def gravity_type4_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, interval, leg_length, iterations, tol):
+    """Apex-return map by Gravity correction type 4 (average leg length on [t_i, t_f]), and its derivatives
+    with respect to the apex, the touchdown angle and the stiffness.
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
 
@@ -858,9 +1048,11 @@ def gravity_type4_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
-        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 = eq21, 2 = eq23
+        leg_length: option leg_length: the stance solution the average leg length is taken from: 0 = eq11, 1 =
+            eq21, 2 = eq23
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -874,57 +1066,104 @@ def gravity_type4_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 115
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(leg_length) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(leg_length)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval
+            == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
         return _NAN55 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[20] != STATUS_OK:
         return _NAN55 + (_c0[20],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _c1 = gravity_type4_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol)
+    _c1 = (gravity_type4_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading,
+        interval, leg_length, iterations, tol))
     if _c1[72] != STATUS_OK:
         return _NAN55 + (_c1[72],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td, _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
+        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
     # chain rule through gravity_type4_stance
-    d_t_stance__b_y_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex
-    d_t_stance__b_xd_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_t_stance__q_th_td = _j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_rd__b_y_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_rd__b_xd_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_rd__q_th_td = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_th__b_y_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_th__b_xd_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_th__q_th_td = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_thd__b_y_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_thd__b_xd_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_thd__q_th_td = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
     d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_P_c__q_th_td = _j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td
+    d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[16] != STATUS_OK:
         return _NAN55 + (_c2[16],)
-    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _) = _c2
+    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _, _, _, _) = _c2
     # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_height__b_xd_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_height__q_th_td = _j_apex_height__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_height__k = _j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k + _j_apex_height__q_thd*_j_liftoff_q_thd__k
-    d_apex_speed__b_y_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_speed__b_xd_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_speed__q_th_td = _j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_speed__k = _j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k + _j_apex_speed__q_thd*_j_liftoff_q_thd__k
-    d_t_ascent__b_y_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex
-    d_t_ascent__b_xd_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_t_ascent__q_th_td = _j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td
-    d_t_ascent__k = _j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th + _j_liftoff_q_thd__k*_j_t_ascent__q_thd
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__b_xd_apex = 0.0
@@ -945,22 +1184,50 @@ def gravity_type4_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN55 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex,
+        d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex,
+        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type4_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol, out, status):
+def gravity_type4_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, interval, leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type4_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 55)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+    d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+    d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+    d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k,
+    d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k,
+    d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k,
+    d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+    d_passes__q_th_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type4_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol)
+        res = (gravity_type4_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

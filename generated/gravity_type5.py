@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:a291c3b0eaea5af3
-#   geyer.py sha256:677d7d2464b0d738
+#   flight.py sha256:e1c99c5d9ccf115a
+#   geyer.py sha256:56141b7b10ce8833
 # ----------------------------------------------------------------------------------------------
-"""Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
+"""Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -19,7 +21,9 @@ from .geyer import geyer_liftoff_phase
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
@@ -151,7 +155,12 @@ def type5_leg_angle(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_
     _x29 = (0.5)*c1
     _x30 = _x22*_x9
     _x31 = (0.3333333333333333)*c2
-    q_th = q_th_td + (_x1*c0*k0 + (0.125)*_x10*_x16 - _x10*_x3 + (0.125)*_x12*_x14*k2 + 2.0*_x12*_x7*k1 - 0.25*_x14*_x15*_x6 + _x15*(_x23*_x28 + (0.25)*_x27) - 0.5*_x16*_x5 + (0.16666666666666666)*_x2*c1*k0 - _x20*k1*p_td + _x24*k2*p_td + _x29*k1*(-_x0*_x20 + 2.0*_x19*_x9 + 2.0*_x25*_x6*t) + _x29*k2*(_x1*_x23 + _x27*_x28 - 0.25*_x30) + _x3*_x5 + _x31*k1*(3.0*_x0*_x25*_x6 - 6.0*_x11*_x25 + 6.0*_x19*_x9*t - _x2*_x20) + _x31*k2*((0.75)*_x0*_x27 - 0.375*_x11*_x26 + _x2*_x24 - 0.75*_x30*t) - _x6*_x7*_x8 + _x8*(-_x20*t + _x25*_x6) + (0.08333333333333333)*c2*k0*t**4 + k0*p_td*t)/(l0**2*m)
+    q_th = (q_th_td + (_x1*c0*k0 + (0.125)*_x10*_x16 - _x10*_x3 + (0.125)*_x12*_x14*k2 + 2.0*_x12*_x7*k1
+        - 0.25*_x14*_x15*_x6 + _x15*(_x23*_x28 + (0.25)*_x27) - 0.5*_x16*_x5 + (0.16666666666666666)*_x2*c1*k0
+        - _x20*k1*p_td + _x24*k2*p_td + _x29*k1*(-_x0*_x20 + 2.0*_x19*_x9 + 2.0*_x25*_x6*t)
+        + _x29*k2*(_x1*_x23 + _x27*_x28 - 0.25*_x30) + _x3*_x5 + _x31*k1*(3.0*_x0*_x25*_x6 - 6.0*_x11*_x25
+        + 6.0*_x19*_x9*t - _x2*_x20) + _x31*k2*((0.75)*_x0*_x27 - 0.375*_x11*_x26 + _x2*_x24 - 0.75*_x30*t)
+        - _x6*_x7*_x8 + _x8*(-_x20*t + _x25*_x6) + (0.08333333333333333)*c2*k0*t**4 + k0*p_td*t)/(l0**2*m))
     return q_th
 
 
@@ -174,7 +183,8 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -193,14 +203,21 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     """
     # Total ops: 238
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -220,11 +237,13 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
         _x4 = _x3*tau1
-        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c0 = (-0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1
+            - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3)
         i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
         i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
         # T5.3: omega of the stance-mean momentum
-        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        i_omega = (((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0
+            + p_td)/(l0**2*m))
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
@@ -252,11 +271,14 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
         i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
         i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
-        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c2 = (type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2,
+            i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th1 = _c2
-        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c3 = (type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+            i_omega0_hat, i_phase_td, m, l0))
         i_th2 = _c3
-        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c4 = (type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1,
+            i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th3 = _c4
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x14 = (0.2)*math.sqrt(15.0)
@@ -266,7 +288,8 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
         i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
-        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_g_eff = ((0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2)
+            + (0.5555555555555556)*math.cos(i_th3)))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
         if _conv0 or _it0 == _last0:
             break
@@ -278,7 +301,10 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _n0_5 = i_r_c
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
         tau1 = _n0_0
         tau2 = _n0_1
         tau3 = _n0_2
@@ -286,9 +312,11 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-    _c5 = type5_leg_angle(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    _c5 = (type5_leg_angle(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+        i_phase_td, m, l0))
     bottom_q_th = _c5
-    _c6 = type5_leg_angle(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    _c6 = (type5_leg_angle(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+        i_phase_td, m, l0))
     liftoff_q_th = _c6
     # T5.7: bottom and liftoff states
     _x18 = i_a - i_b + 1.0
@@ -310,29 +338,38 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     _x23 = (1.0/m)
     _x24 = _x23*k
     _x25 = q_r_lo**2
-    _q_rd_lo_sq = 2.0*E_td*_x23 - _x23**2*(i_c0*i_t_stance + (0.5)*i_c1*i_t_stance**2 + (0.3333333333333333)*i_c2*i_t_stance**3 + p_td)**2/_x25 + 2.0*_x23*k*l0*q_r_lo - _x24*_x25 - _x24*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+    _q_rd_lo_sq = (2.0*E_td*_x23 - _x23**2*(i_c0*i_t_stance + (0.5)*i_c1*i_t_stance**2
+        + (0.3333333333333333)*i_c2*i_t_stance**3 + p_td)**2/_x25 + 2.0*_x23*k*l0*q_r_lo - _x24*_x25
+        - _x24*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th))
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN12 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
     liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN12 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol,
+        out, status):
     """Parallel batch form of :func:`gravity_type5_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
+            iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -366,7 +403,8 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -377,14 +415,21 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     """
     # Total ops: 197
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -404,11 +449,13 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
         _x4 = _x3*tau1
-        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c0 = (-0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1
+            - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3)
         i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
         i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
         # T5.3: omega of the stance-mean momentum
-        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        i_omega = (((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0
+            + p_td)/(l0**2*m))
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
@@ -436,11 +483,14 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
         i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
         i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
-        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c2 = (type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2,
+            i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th1 = _c2
-        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c3 = (type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+            i_omega0_hat, i_phase_td, m, l0))
         i_th2 = _c3
-        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c4 = (type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1,
+            i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th3 = _c4
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x14 = (0.2)*math.sqrt(15.0)
@@ -450,7 +500,8 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
         i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
-        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_g_eff = ((0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2)
+            + (0.5555555555555556)*math.cos(i_th3)))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
         if _conv0 or _it0 == _last0:
             break
@@ -462,7 +513,10 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         _n0_5 = i_r_c
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
         tau1 = _n0_0
         tau2 = _n0_1
         tau3 = _n0_2
@@ -470,7 +524,8 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-    _c5 = type5_leg_angle(t, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+    _c5 = (type5_leg_angle(t, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m,
+        l0))
     q_th = _c5
     # (11) with T5.5, T5.2
     _x18 = i_omega0_hat*t + i_phase_td
@@ -485,16 +540,19 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations,
+        tol, out, status):
     """Parallel batch form of :func:`gravity_type5_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+            iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -503,7 +561,8 @@ def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol):
+def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations,
+        tol):
     """Apex-return map: exact flights, stance by Gravity correction type 5 (time-varying momentum).
 
     Report equations: 46, 47, 48.
@@ -520,7 +579,8 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -538,7 +598,14 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
@@ -568,22 +635,29 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     apex_speed = _c2[1]
     t_ascent = _c2[2]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN11 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
+def gravity_type5_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type5_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol)
+        res = (gravity_type5_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td,
+            q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

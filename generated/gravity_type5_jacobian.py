@@ -4,22 +4,27 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:4974722c824d3634
-#   geyer_jacobian.py sha256:be9d1f8206af083d
+#   flight_jacobian.py sha256:5e86edc951466ed7
+#   geyer_jacobian.py sha256:71e01de102ad80c3
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
+a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jac_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
 _NAN30 = (NAN,) * 30
@@ -28,8 +33,12 @@ _NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_omega__0, d_g_eff__0, d_r_c__0, d_omega__1, d_g_eff__1, d_r_c__1, d_omega__2, d_g_eff__2, d_r_c__2, d_omega__3, d_g_eff__3, d_r_c__3, d_omega__4, d_g_eff__4, d_r_c__4):
-    """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, and the derivatives of its outputs along 5 directions (d_<argument>__<j>: direction j's component along an argument; the arguments not listed have a fixed component, 0 or 1).
+def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_omega__0, d_g_eff__0, d_r_c__0,
+        d_omega__1, d_g_eff__1, d_r_c__1, d_omega__2, d_g_eff__2, d_r_c__2, d_omega__3, d_g_eff__3, d_r_c__3,
+        d_omega__4, d_g_eff__4, d_r_c__4):
+    """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, and the derivatives of
+    its outputs along 5 directions (d_<argument>__<j>: direction j's component along an argument; the
+    arguments not listed have a fixed component, 0 or 1).
 
     Report equations: 9, 10, 11, 12.
 
@@ -67,7 +76,8 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
         b: amplitude of rho(t)
         phase_td: touchdown phase [rad]
         s_td: sin(phase_td)
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4 (row-major)
+        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
+            (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 281
@@ -200,12 +210,22 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
     d_phase_td__3 = _pd__16*d_s_td__3
     d_phase_td__4 = _pd__16*d_s_td__4
     # (internal helper: its callers check that their outputs are finite)
-    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__0, d_omega0_hat__1, d_omega0_hat__2, d_omega0_hat__3, d_omega0_hat__4, d_a__0, d_a__1, d_a__2, d_a__3, d_a__4, d_b__0, d_b__1, d_b__2, d_b__3, d_b__4, d_phase_td__0, d_phase_td__1, d_phase_td__2, d_phase_td__3, d_phase_td__4, d_s_td__0, d_s_td__1, d_s_td__2, d_s_td__3, d_s_td__4, STATUS_OK)
+    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__0, d_omega0_hat__1, d_omega0_hat__2,
+        d_omega0_hat__3, d_omega0_hat__4, d_a__0, d_a__1, d_a__2, d_a__3, d_a__4, d_b__0, d_b__1, d_b__2,
+        d_b__3, d_b__4, d_phase_td__0, d_phase_td__1, d_phase_td__2, d_phase_td__3, d_phase_td__4, d_s_td__0,
+        d_s_td__1, d_s_td__2, d_s_td__3, d_s_td__4, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0, d_t__0, d_p_td__0, d_c0__0, d_c1__0, d_c2__0, d_k0__0, d_k1__0, d_k2__0, d_omega0_hat__0, d_phase_td__0, d_t__1, d_c0__1, d_c1__1, d_c2__1, d_k0__1, d_k1__1, d_k2__1, d_omega0_hat__1, d_phase_td__1, d_t__2, d_c0__2, d_c1__2, d_c2__2, d_k0__2, d_k1__2, d_k2__2, d_omega0_hat__2, d_phase_td__2, d_t__3, d_p_td__3, d_c0__3, d_c1__3, d_c2__3, d_k0__3, d_k1__3, d_k2__3, d_omega0_hat__3, d_phase_td__3, d_t__4, d_c0__4, d_c1__4, d_c2__4, d_k0__4, d_k1__4, d_k2__4, d_omega0_hat__4, d_phase_td__4):
-    """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2), and the derivatives of its outputs along 5 directions (d_<argument>__<j>: direction j's component along an argument; the arguments not listed have a fixed component, 0 or 1).
+def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0, d_t__0,
+        d_p_td__0, d_c0__0, d_c1__0, d_c2__0, d_k0__0, d_k1__0, d_k2__0, d_omega0_hat__0, d_phase_td__0,
+        d_t__1, d_c0__1, d_c1__1, d_c2__1, d_k0__1, d_k1__1, d_k2__1, d_omega0_hat__1, d_phase_td__1, d_t__2,
+        d_c0__2, d_c1__2, d_c2__2, d_k0__2, d_k1__2, d_k2__2, d_omega0_hat__2, d_phase_td__2, d_t__3,
+        d_p_td__3, d_c0__3, d_c1__3, d_c2__3, d_k0__3, d_k1__3, d_k2__3, d_omega0_hat__3, d_phase_td__3,
+        d_t__4, d_c0__4, d_c1__4, d_c2__4, d_k0__4, d_k1__4, d_k2__4, d_omega0_hat__4, d_phase_td__4):
+    """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2), and the
+    derivatives of its outputs along 5 directions (d_<argument>__<j>: direction j's component along an
+    argument; the arguments not listed have a fixed component, 0 or 1).
 
     Report equations: 17, 18, 19.
 
@@ -276,7 +296,8 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
 
     Returns a tuple:
         q_th: leg angle [rad]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4 (row-major)
+        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
+            (row-major)
     """
     # Total ops: 514
     _x0 = p_td*t
@@ -351,7 +372,9 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
     _x69 = (0.25)*_x1*_x53 + (0.3333333333333333)*_x47*_x68 - 0.3333333333333333*_x52*_x67 - 0.25*_x61*t
     _x70 = _x69*k2
     _x71 = 1.0/(l0**2*m)
-    q_th = _x71*(_x0*k0 + _x13*k1 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x33*c1 + _x36*c2 - _x37*_x39 + _x38*_x48 - _x44*k1 + _x51*c0 + _x56*c0 + _x6*c1 + _x60*c1 + _x63*c1 + _x66*c2 + _x70*c2 + _x9*c2) + q_th_td
+    q_th = (_x71*(_x0*k0 + _x13*k1 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x33*c1 + _x36*c2
+        - _x37*_x39 + _x38*_x48 - _x44*k1 + _x51*c0 + _x56*c0 + _x6*c1 + _x60*c1 + _x63*c1 + _x66*c2 + _x70*c2
+        + _x9*c2) + q_th_td)
     _pd__0 = _x71*(-_x17 - _x28*_x34 + _x3 + _x51 + _x56)
     _pd__1 = _x71*(-_x20 + _x33 + _x6 + _x60 + _x63)
     _pd__2 = _x71*(_x24 + _x36 + _x66 + _x70 + _x9)
@@ -359,7 +382,8 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
     _x72 = _x23*c2
     _pd__4 = _x71*(_x13 + _x15*_x72 - _x16*c0 - _x19*c1 - _x44 + _x50*c0 + _x59*c1 + _x65*c2)
     _x73 = _x10*p_td
-    _pd__5 = _x71*(_x27*_x35*c2 - _x29*c0 + _x30*_x32*c1 - _x37*_x73 + _x47*_x73 + _x55*c0 + _x62*c1 + _x69*c2)
+    _pd__5 = (_x71*(_x27*_x35*c2 - _x29*c0 + _x30*_x32*c1 - _x37*_x73 + _x47*_x73 + _x55*c0 + _x62*c1
+        + _x69*c2))
     _x74 = c0*k1
     _x75 = _x11*k1
     _x76 = _x10**5
@@ -387,26 +411,39 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
     _x98 = (0.3333333333333333)*c2
     _x99 = _x98*k1
     _x100 = _x98*k2
-    _pd__6 = _x71*(_x100*(-2.0*_x4*_x84 + (1.5)*_x52*_x76 + _x52*_x97 - _x88*_x92 + 3.0*_x94*t) + _x15*_x57*_x74 + (0.5)*_x18*_x25*_x27 - 8.0*_x21*_x77 + 3.0*_x22*_x75*c1 + _x25*_x89 - _x31*_x67*c1 - 0.5*_x34*_x77 + _x38*_x80 - _x38*_x85 + _x74*_x87 - _x78*_x79 + _x78*_x81 + _x82*_x83 + _x82*_x86 + _x90*_x93 + _x95*_x96 + _x99*(-12.0*_x1*_x18*_x49 - 24.0*_x22*_x42*t + 4.0*_x4*_x81 + 24.0*_x49*_x76 + _x49*_x97))
+    _pd__6 = (_x71*(_x100*(-2.0*_x4*_x84 + (1.5)*_x52*_x76 + _x52*_x97 - _x88*_x92 + 3.0*_x94*t)
+        + _x15*_x57*_x74 + (0.5)*_x18*_x25*_x27 - 8.0*_x21*_x77 + 3.0*_x22*_x75*c1 + _x25*_x89 - _x31*_x67*c1
+        - 0.5*_x34*_x77 + _x38*_x80 - _x38*_x85 + _x74*_x87 - _x78*_x79 + _x78*_x81 + _x82*_x83 + _x82*_x86
+        + _x90*_x93 + _x95*_x96 + _x99*(-12.0*_x1*_x18*_x49 - 24.0*_x22*_x42*t + 4.0*_x4*_x81 + 24.0*_x49*_x76
+        + _x49*_x97)))
     _x101 = k0*t
     _pd__7 = _x71*(-0.5*_x10*_x31 + _x101 + _x12*k1 - _x43*k1 + _x48*k2)
     _x102 = _x18*c1
     _x103 = _x49*_x78
     _x104 = _x38*_x52
-    _pd__8 = _x71*(_x10*_x103 + _x10*_x104 - _x10*_x15*_x78 + _x100*_x95 + _x102*_x21 + (0.25)*_x102*_x34 - 0.25*_x22*_x31*c2 + _x25*_x80 + _x25*(_x52*_x54 - _x85) - _x27*_x39 + _x72*_x75 - _x74*_x79 + _x74*(_x49*_x54 + _x81) + _x87*_x90*k1 + _x89*_x96 + _x93*_x98)
+    _pd__8 = (_x71*(_x10*_x103 + _x10*_x104 - _x10*_x15*_x78 + _x100*_x95 + _x102*_x21 + (0.25)*_x102*_x34
+        - 0.25*_x22*_x31*c2 + _x25*_x80 + _x25*(_x52*_x54 - _x85) - _x27*_x39 + _x72*_x75 - _x74*_x79
+        + _x74*(_x49*_x54 + _x81) + _x87*_x90*k1 + _x89*_x96 + _x93*_x98))
     _x105 = _x2*c1
-    _pd__9 = _x71*(_x100*_x4*_x52 + _x101*c0 + _x103 + _x104 + _x105*_x83 + _x105*_x86 + _x25*_x52*t + _x3*c1 + _x4*_x49*_x99 + _x4*_x98*k0 + _x74*_x91 + k0*p_td)
-    d_q_th__0 = _pd__0*d_c0__0 + _pd__1*d_c1__0 + _pd__2*d_c2__0 + _pd__3*d_k0__0 + _pd__4*d_k1__0 + _pd__5*d_k2__0 + _pd__6*d_omega0_hat__0 + _pd__7*d_p_td__0 + _pd__8*d_phase_td__0 + _pd__9*d_t__0
-    d_q_th__1 = _pd__0*d_c0__1 + _pd__1*d_c1__1 + _pd__2*d_c2__1 + _pd__3*d_k0__1 + _pd__4*d_k1__1 + _pd__5*d_k2__1 + _pd__6*d_omega0_hat__1 + _pd__8*d_phase_td__1 + _pd__9*d_t__1
-    d_q_th__2 = _pd__0*d_c0__2 + _pd__1*d_c1__2 + _pd__2*d_c2__2 + _pd__3*d_k0__2 + _pd__4*d_k1__2 + _pd__5*d_k2__2 + _pd__6*d_omega0_hat__2 + _pd__8*d_phase_td__2 + _pd__9*d_t__2 + 1.0
-    d_q_th__3 = _pd__0*d_c0__3 + _pd__1*d_c1__3 + _pd__2*d_c2__3 + _pd__3*d_k0__3 + _pd__4*d_k1__3 + _pd__5*d_k2__3 + _pd__6*d_omega0_hat__3 + _pd__7*d_p_td__3 + _pd__8*d_phase_td__3 + _pd__9*d_t__3
-    d_q_th__4 = _pd__0*d_c0__4 + _pd__1*d_c1__4 + _pd__2*d_c2__4 + _pd__3*d_k0__4 + _pd__4*d_k1__4 + _pd__5*d_k2__4 + _pd__6*d_omega0_hat__4 + _pd__8*d_phase_td__4 + _pd__9*d_t__4
+    _pd__9 = (_x71*(_x100*_x4*_x52 + _x101*c0 + _x103 + _x104 + _x105*_x83 + _x105*_x86 + _x25*_x52*t + _x3*c1
+        + _x4*_x49*_x99 + _x4*_x98*k0 + _x74*_x91 + k0*p_td))
+    d_q_th__0 = (_pd__0*d_c0__0 + _pd__1*d_c1__0 + _pd__2*d_c2__0 + _pd__3*d_k0__0 + _pd__4*d_k1__0
+        + _pd__5*d_k2__0 + _pd__6*d_omega0_hat__0 + _pd__7*d_p_td__0 + _pd__8*d_phase_td__0 + _pd__9*d_t__0)
+    d_q_th__1 = (_pd__0*d_c0__1 + _pd__1*d_c1__1 + _pd__2*d_c2__1 + _pd__3*d_k0__1 + _pd__4*d_k1__1
+        + _pd__5*d_k2__1 + _pd__6*d_omega0_hat__1 + _pd__8*d_phase_td__1 + _pd__9*d_t__1)
+    d_q_th__2 = (_pd__0*d_c0__2 + _pd__1*d_c1__2 + _pd__2*d_c2__2 + _pd__3*d_k0__2 + _pd__4*d_k1__2
+        + _pd__5*d_k2__2 + _pd__6*d_omega0_hat__2 + _pd__8*d_phase_td__2 + _pd__9*d_t__2 + 1.0)
+    d_q_th__3 = (_pd__0*d_c0__3 + _pd__1*d_c1__3 + _pd__2*d_c2__3 + _pd__3*d_k0__3 + _pd__4*d_k1__3
+        + _pd__5*d_k2__3 + _pd__6*d_omega0_hat__3 + _pd__7*d_p_td__3 + _pd__8*d_phase_td__3 + _pd__9*d_t__3)
+    d_q_th__4 = (_pd__0*d_c0__4 + _pd__1*d_c1__4 + _pd__2*d_c2__4 + _pd__3*d_k0__4 + _pd__4*d_k1__4
+        + _pd__5*d_k2__4 + _pd__6*d_omega0_hat__4 + _pd__8*d_phase_td__4 + _pd__9*d_t__4)
     return (q_th, d_q_th__0, d_q_th__1, d_q_th__2, d_q_th__3, d_q_th__4)
 
 
 @njit(cache=True, error_model="numpy")
 def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
-    """Gravity correction type 5 (time-varying momentum): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+    """Gravity correction type 5 (time-varying momentum): stance outputs and their derivatives with respect to
+    the touchdown state and the stiffness.
 
     Report equations: 46, 47, 48.
 
@@ -424,7 +461,8 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -439,12 +477,19 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td, q_th_td, q_thd_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 1146
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN72 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
@@ -469,28 +514,37 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (0.0, 0.0, 0.0, 1.0, g_s, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
+    _pki0 = (0.0, 0.0, 0.0, 1.0, g_s, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
     _pk0 = _pki0
     passes = 0.0
     _conv0 = False
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
-        (tau1, tau2, tau3, T, g_eff, r_c, d_tau1__q_r_td, d_tau1__q_rd_td, d_tau1__q_th_td, d_tau1__q_thd_td, d_tau1__k, d_tau2__q_r_td, d_tau2__q_rd_td, d_tau2__q_th_td, d_tau2__q_thd_td, d_tau2__k, d_tau3__q_r_td, d_tau3__q_rd_td, d_tau3__q_th_td, d_tau3__q_thd_td, d_tau3__k, d_T__q_r_td, d_T__q_rd_td, d_T__q_th_td, d_T__q_thd_td, d_T__k, d_g_eff__q_r_td, d_g_eff__q_rd_td, d_g_eff__q_th_td, d_g_eff__q_thd_td, d_g_eff__k, d_r_c__q_r_td, d_r_c__q_rd_td, d_r_c__q_th_td, d_r_c__q_thd_td, d_r_c__k, ) = _pk0
+        (tau1, tau2, tau3, T, g_eff, r_c, d_tau1__q_r_td, d_tau1__q_rd_td, d_tau1__q_th_td, d_tau1__q_thd_td,
+            d_tau1__k, d_tau2__q_r_td, d_tau2__q_rd_td, d_tau2__q_th_td, d_tau2__q_thd_td, d_tau2__k,
+            d_tau3__q_r_td, d_tau3__q_rd_td, d_tau3__q_th_td, d_tau3__q_thd_td, d_tau3__k, d_T__q_r_td,
+            d_T__q_rd_td, d_T__q_th_td, d_T__q_thd_td, d_T__k, d_g_eff__q_r_td, d_g_eff__q_rd_td,
+            d_g_eff__q_th_td, d_g_eff__q_thd_td, d_g_eff__k, d_r_c__q_r_td, d_r_c__q_rd_td, d_r_c__q_th_td,
+            d_r_c__q_thd_td, d_r_c__k, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
             return _NAN72 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x10 = math.sqrt(15.0)
         _x11 = (0.16666666666666666)*_x10
-        i_c0 = _x11*tau1 - _x11*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c0 = (_x11*tau1 - _x11*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2
+            + (0.8333333333333334)*tau3)
         _pd__0 = _x11 + 0.8333333333333334
         _pd__1 = 0.8333333333333334 - _x11
         d_i_c0__q_r_td = _pd__0*d_tau1__q_r_td + _pd__1*d_tau3__q_r_td - 0.6666666666666666*d_tau2__q_r_td
         d_i_c0__q_rd_td = _pd__0*d_tau1__q_rd_td + _pd__1*d_tau3__q_rd_td - 0.6666666666666666*d_tau2__q_rd_td
         d_i_c0__q_th_td = _pd__0*d_tau1__q_th_td + _pd__1*d_tau3__q_th_td - 0.6666666666666666*d_tau2__q_th_td
-        d_i_c0__q_thd_td = _pd__0*d_tau1__q_thd_td + _pd__1*d_tau3__q_thd_td - 0.6666666666666666*d_tau2__q_thd_td
+        d_i_c0__q_thd_td = (_pd__0*d_tau1__q_thd_td + _pd__1*d_tau3__q_thd_td
+            - 0.6666666666666666*d_tau2__q_thd_td)
         d_i_c0__k = _pd__0*d_tau1__k + _pd__1*d_tau3__k - 0.6666666666666666*d_tau2__k
         _x12 = (1.0/T)
-        _x13 = -0.3333333333333333*_x10*tau1 + (0.3333333333333333)*_x10*tau3 - 3.3333333333333335*tau1 + (6.666666666666667)*tau2 - 3.3333333333333335*tau3
+        _x13 = (-0.3333333333333333*_x10*tau1 + (0.3333333333333333)*_x10*tau3 - 3.3333333333333335*tau1
+            + (6.666666666666667)*tau2 - 3.3333333333333335*tau3)
         i_c1 = _x12*_x13
         _x14 = _x12**2
         _pd__2 = -_x13*_x14
@@ -498,10 +552,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__3 = _x15*(-_x10 - 10.0)
         _pd__4 = (6.666666666666667)*_x12
         _pd__5 = _x15*(_x10 - 10.0)
-        d_i_c1__q_r_td = _pd__2*d_T__q_r_td + _pd__3*d_tau1__q_r_td + _pd__4*d_tau2__q_r_td + _pd__5*d_tau3__q_r_td
-        d_i_c1__q_rd_td = _pd__2*d_T__q_rd_td + _pd__3*d_tau1__q_rd_td + _pd__4*d_tau2__q_rd_td + _pd__5*d_tau3__q_rd_td
-        d_i_c1__q_th_td = _pd__2*d_T__q_th_td + _pd__3*d_tau1__q_th_td + _pd__4*d_tau2__q_th_td + _pd__5*d_tau3__q_th_td
-        d_i_c1__q_thd_td = _pd__2*d_T__q_thd_td + _pd__3*d_tau1__q_thd_td + _pd__4*d_tau2__q_thd_td + _pd__5*d_tau3__q_thd_td
+        d_i_c1__q_r_td = (_pd__2*d_T__q_r_td + _pd__3*d_tau1__q_r_td + _pd__4*d_tau2__q_r_td
+            + _pd__5*d_tau3__q_r_td)
+        d_i_c1__q_rd_td = (_pd__2*d_T__q_rd_td + _pd__3*d_tau1__q_rd_td + _pd__4*d_tau2__q_rd_td
+            + _pd__5*d_tau3__q_rd_td)
+        d_i_c1__q_th_td = (_pd__2*d_T__q_th_td + _pd__3*d_tau1__q_th_td + _pd__4*d_tau2__q_th_td
+            + _pd__5*d_tau3__q_th_td)
+        d_i_c1__q_thd_td = (_pd__2*d_T__q_thd_td + _pd__3*d_tau1__q_thd_td + _pd__4*d_tau2__q_thd_td
+            + _pd__5*d_tau3__q_thd_td)
         d_i_c1__k = _pd__2*d_T__k + _pd__3*d_tau1__k + _pd__4*d_tau2__k + _pd__5*d_tau3__k
         _x16 = tau1 - 2.0*tau2 + tau3
         _x17 = (3.3333333333333335)*_x14
@@ -510,10 +568,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__7 = _x17
         _pd__8 = -6.666666666666667*_x14
         _pd__9 = _x17
-        d_i_c2__q_r_td = _pd__6*d_T__q_r_td + _pd__7*d_tau1__q_r_td + _pd__8*d_tau2__q_r_td + _pd__9*d_tau3__q_r_td
-        d_i_c2__q_rd_td = _pd__6*d_T__q_rd_td + _pd__7*d_tau1__q_rd_td + _pd__8*d_tau2__q_rd_td + _pd__9*d_tau3__q_rd_td
-        d_i_c2__q_th_td = _pd__6*d_T__q_th_td + _pd__7*d_tau1__q_th_td + _pd__8*d_tau2__q_th_td + _pd__9*d_tau3__q_th_td
-        d_i_c2__q_thd_td = _pd__6*d_T__q_thd_td + _pd__7*d_tau1__q_thd_td + _pd__8*d_tau2__q_thd_td + _pd__9*d_tau3__q_thd_td
+        d_i_c2__q_r_td = (_pd__6*d_T__q_r_td + _pd__7*d_tau1__q_r_td + _pd__8*d_tau2__q_r_td
+            + _pd__9*d_tau3__q_r_td)
+        d_i_c2__q_rd_td = (_pd__6*d_T__q_rd_td + _pd__7*d_tau1__q_rd_td + _pd__8*d_tau2__q_rd_td
+            + _pd__9*d_tau3__q_rd_td)
+        d_i_c2__q_th_td = (_pd__6*d_T__q_th_td + _pd__7*d_tau1__q_th_td + _pd__8*d_tau2__q_th_td
+            + _pd__9*d_tau3__q_th_td)
+        d_i_c2__q_thd_td = (_pd__6*d_T__q_thd_td + _pd__7*d_tau1__q_thd_td + _pd__8*d_tau2__q_thd_td
+            + _pd__9*d_tau3__q_thd_td)
         d_i_c2__k = _pd__6*d_T__k + _pd__7*d_tau1__k + _pd__8*d_tau2__k + _pd__9*d_tau3__k
         # T5.3: omega of the stance-mean momentum
         _x18 = (0.5)*i_c0
@@ -527,16 +589,27 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__12 = _x20*_x22
         _pd__13 = _x21*_x22
         _pd__14 = _x22
-        d_i_omega__q_r_td = _pd__10*d_T__q_r_td + _pd__11*d_i_c0__q_r_td + _pd__12*d_i_c1__q_r_td + _pd__13*d_i_c2__q_r_td + _pd__14*d_p_td__q_r_td
-        d_i_omega__q_rd_td = _pd__10*d_T__q_rd_td + _pd__11*d_i_c0__q_rd_td + _pd__12*d_i_c1__q_rd_td + _pd__13*d_i_c2__q_rd_td
-        d_i_omega__q_th_td = _pd__10*d_T__q_th_td + _pd__11*d_i_c0__q_th_td + _pd__12*d_i_c1__q_th_td + _pd__13*d_i_c2__q_th_td
-        d_i_omega__q_thd_td = _pd__10*d_T__q_thd_td + _pd__11*d_i_c0__q_thd_td + _pd__12*d_i_c1__q_thd_td + _pd__13*d_i_c2__q_thd_td + _pd__14*d_p_td__q_thd_td
+        d_i_omega__q_r_td = (_pd__10*d_T__q_r_td + _pd__11*d_i_c0__q_r_td + _pd__12*d_i_c1__q_r_td
+            + _pd__13*d_i_c2__q_r_td + _pd__14*d_p_td__q_r_td)
+        d_i_omega__q_rd_td = (_pd__10*d_T__q_rd_td + _pd__11*d_i_c0__q_rd_td + _pd__12*d_i_c1__q_rd_td
+            + _pd__13*d_i_c2__q_rd_td)
+        d_i_omega__q_th_td = (_pd__10*d_T__q_th_td + _pd__11*d_i_c0__q_th_td + _pd__12*d_i_c1__q_th_td
+            + _pd__13*d_i_c2__q_th_td)
+        d_i_omega__q_thd_td = (_pd__10*d_T__q_thd_td + _pd__11*d_i_c0__q_thd_td + _pd__12*d_i_c1__q_thd_td
+            + _pd__13*d_i_c2__q_thd_td + _pd__14*d_p_td__q_thd_td)
         d_i_omega__k = _pd__10*d_T__k + _pd__11*d_i_c0__k + _pd__12*d_i_c1__k + _pd__13*d_i_c2__k
         # T5.4-T5.5: radial solution
-        _c0 = type5_solution_jvp5_7107c1(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k, d_i_omega__q_r_td, d_g_eff__q_r_td, d_r_c__q_r_td, d_i_omega__q_rd_td, d_g_eff__q_rd_td, d_r_c__q_rd_td, d_i_omega__q_th_td, d_g_eff__q_th_td, d_r_c__q_th_td, d_i_omega__q_thd_td, d_g_eff__q_thd_td, d_r_c__q_thd_td, d_i_omega__k, d_g_eff__k, d_r_c__k)
+        _c0 = (type5_solution_jvp5_7107c1(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k, d_i_omega__q_r_td,
+            d_g_eff__q_r_td, d_r_c__q_r_td, d_i_omega__q_rd_td, d_g_eff__q_rd_td, d_r_c__q_rd_td,
+            d_i_omega__q_th_td, d_g_eff__q_th_td, d_r_c__q_th_td, d_i_omega__q_thd_td, d_g_eff__q_thd_td,
+            d_r_c__q_thd_td, d_i_omega__k, d_g_eff__k, d_r_c__k))
         if _c0[30] != STATUS_OK:
             return _NAN72 + (_c0[30],)
-        (i_omega0_hat, i_a, i_b, i_phase_td, _, d_i_omega0_hat__q_r_td, d_i_omega0_hat__q_rd_td, d_i_omega0_hat__q_th_td, d_i_omega0_hat__q_thd_td, d_i_omega0_hat__k, d_i_a__q_r_td, d_i_a__q_rd_td, d_i_a__q_th_td, d_i_a__q_thd_td, d_i_a__k, d_i_b__q_r_td, d_i_b__q_rd_td, d_i_b__q_th_td, d_i_b__q_thd_td, d_i_b__k, d_i_phase_td__q_r_td, d_i_phase_td__q_rd_td, d_i_phase_td__q_th_td, d_i_phase_td__q_thd_td, d_i_phase_td__k, _, _, _, _, _, _) = _c0
+        (i_omega0_hat, i_a, i_b, i_phase_td, _, d_i_omega0_hat__q_r_td, d_i_omega0_hat__q_rd_td,
+            d_i_omega0_hat__q_th_td, d_i_omega0_hat__q_thd_td, d_i_omega0_hat__k, d_i_a__q_r_td,
+            d_i_a__q_rd_td, d_i_a__q_th_td, d_i_a__q_thd_td, d_i_a__k, d_i_b__q_r_td, d_i_b__q_rd_td,
+            d_i_b__q_th_td, d_i_b__q_thd_td, d_i_b__k, d_i_phase_td__q_r_td, d_i_phase_td__q_rd_td,
+            d_i_phase_td__q_th_td, d_i_phase_td__q_thd_td, d_i_phase_td__k, _, _, _, _, _, _) = _c0
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
             return _NAN72 + (_c1[6],)
@@ -567,10 +640,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__17 = -_x25*_x27
         _pd__18 = _x23
         _pd__19 = _x26
-        d_i_t_stance__q_r_td = _pd__17*d_i_omega0_hat__q_r_td + _pd__18*d_i_phase_lo__q_r_td + _pd__19*d_i_phase_td__q_r_td
-        d_i_t_stance__q_rd_td = _pd__17*d_i_omega0_hat__q_rd_td + _pd__18*d_i_phase_lo__q_rd_td + _pd__19*d_i_phase_td__q_rd_td
-        d_i_t_stance__q_th_td = _pd__17*d_i_omega0_hat__q_th_td + _pd__18*d_i_phase_lo__q_th_td + _pd__19*d_i_phase_td__q_th_td
-        d_i_t_stance__q_thd_td = _pd__17*d_i_omega0_hat__q_thd_td + _pd__18*d_i_phase_lo__q_thd_td + _pd__19*d_i_phase_td__q_thd_td
+        d_i_t_stance__q_r_td = (_pd__17*d_i_omega0_hat__q_r_td + _pd__18*d_i_phase_lo__q_r_td
+            + _pd__19*d_i_phase_td__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__17*d_i_omega0_hat__q_rd_td + _pd__18*d_i_phase_lo__q_rd_td
+            + _pd__19*d_i_phase_td__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__17*d_i_omega0_hat__q_th_td + _pd__18*d_i_phase_lo__q_th_td
+            + _pd__19*d_i_phase_td__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__17*d_i_omega0_hat__q_thd_td + _pd__18*d_i_phase_lo__q_thd_td
+            + _pd__19*d_i_phase_td__q_thd_td)
         d_i_t_stance__k = _pd__17*d_i_omega0_hat__k + _pd__18*d_i_phase_lo__k + _pd__19*d_i_phase_td__k
         _x28 = 3.0*i_b**2
         _x29 = 16.0*r_c
@@ -618,21 +695,57 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_i_k2__q_th_td = _pd__26*d_i_b__q_th_td + _pd__27*d_r_c__q_th_td
         d_i_k2__q_thd_td = _pd__26*d_i_b__q_thd_td + _pd__27*d_r_c__q_thd_td
         d_i_k2__k = _pd__26*d_i_b__k + _pd__27*d_r_c__k
-        _c2 = type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td*(0.5 - 0.1*math.sqrt(15.0)), d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, d_i_t_stance__q_th_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*(0.5 - 0.1*math.sqrt(15.0)), d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, d_i_t_stance__k*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k)
+        _c2 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0,
+            i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td*(0.5
+            - 0.1*math.sqrt(15.0)), d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td,
+            d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td,
+            d_i_t_stance__q_rd_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_rd_td, d_i_c1__q_rd_td,
+            d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td,
+            d_i_phase_td__q_rd_td, d_i_t_stance__q_th_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_th_td,
+            d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td,
+            d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*(0.5
+            - 0.1*math.sqrt(15.0)), d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
+            d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
+            d_i_phase_td__q_thd_td, d_i_t_stance__k*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__k, d_i_c1__k,
+            d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
         i_th1 = _c2[0]
         d_i_th1__q_r_td = _c2[1]
         d_i_th1__q_rd_td = _c2[2]
         d_i_th1__q_th_td = _c2[3]
         d_i_th1__q_thd_td = _c2[4]
         d_i_th1__k = _c2[5]
-        _c3 = type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, (0.5)*d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, (0.5)*d_i_t_stance__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, (0.5)*d_i_t_stance__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, (0.5)*d_i_t_stance__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, (0.5)*d_i_t_stance__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k)
+        _c3 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1,
+            i_k2, i_omega0_hat, i_phase_td, m, l0, (0.5)*d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td,
+            d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td,
+            d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, (0.5)*d_i_t_stance__q_rd_td, d_i_c0__q_rd_td,
+            d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td,
+            d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, (0.5)*d_i_t_stance__q_th_td, d_i_c0__q_th_td,
+            d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td,
+            d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, (0.5)*d_i_t_stance__q_thd_td, d_p_td__q_thd_td,
+            d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td,
+            d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, (0.5)*d_i_t_stance__k,
+            d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k,
+            d_i_phase_td__k))
         i_th2 = _c3[0]
         d_i_th2__q_r_td = _c3[1]
         d_i_th2__q_rd_td = _c3[2]
         d_i_th2__q_th_td = _c3[3]
         d_i_th2__q_thd_td = _c3[4]
         d_i_th2__k = _c3[5]
-        _c4 = type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, d_i_t_stance__q_th_td*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, d_i_t_stance__k*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k)
+        _c4 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td,
+            i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0,
+            d_i_t_stance__q_r_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_r_td, d_i_c0__q_r_td,
+            d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td,
+            d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td*((0.1)*math.sqrt(15.0) + 0.5),
+            d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td,
+            d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
+            d_i_t_stance__q_th_td*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__q_th_td, d_i_c1__q_th_td,
+            d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td,
+            d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_thd_td,
+            d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td,
+            d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td,
+            d_i_t_stance__k*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k,
+            d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
         i_th3 = _c4[0]
         d_i_th3__q_r_td = _c4[1]
         d_i_th3__q_rd_td = _c4[2]
@@ -664,11 +777,17 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__32 = _x49*_x56*_x60*_x63
         _x64 = math.cos(i_th1)
         _pd__33 = _x55*_x58*_x64
-        d_i_tau1__q_r_td = _pd__28*d_i_a__q_r_td + _pd__29*d_i_b__q_r_td + _pd__30*d_i_omega0_hat__q_r_td + _pd__31*d_i_phase_td__q_r_td + _pd__32*d_i_t_stance__q_r_td + _pd__33*d_i_th1__q_r_td
-        d_i_tau1__q_rd_td = _pd__28*d_i_a__q_rd_td + _pd__29*d_i_b__q_rd_td + _pd__30*d_i_omega0_hat__q_rd_td + _pd__31*d_i_phase_td__q_rd_td + _pd__32*d_i_t_stance__q_rd_td + _pd__33*d_i_th1__q_rd_td
-        d_i_tau1__q_th_td = _pd__28*d_i_a__q_th_td + _pd__29*d_i_b__q_th_td + _pd__30*d_i_omega0_hat__q_th_td + _pd__31*d_i_phase_td__q_th_td + _pd__32*d_i_t_stance__q_th_td + _pd__33*d_i_th1__q_th_td
-        d_i_tau1__q_thd_td = _pd__28*d_i_a__q_thd_td + _pd__29*d_i_b__q_thd_td + _pd__30*d_i_omega0_hat__q_thd_td + _pd__31*d_i_phase_td__q_thd_td + _pd__32*d_i_t_stance__q_thd_td + _pd__33*d_i_th1__q_thd_td
-        d_i_tau1__k = _pd__28*d_i_a__k + _pd__29*d_i_b__k + _pd__30*d_i_omega0_hat__k + _pd__31*d_i_phase_td__k + _pd__32*d_i_t_stance__k + _pd__33*d_i_th1__k
+        d_i_tau1__q_r_td = (_pd__28*d_i_a__q_r_td + _pd__29*d_i_b__q_r_td + _pd__30*d_i_omega0_hat__q_r_td
+            + _pd__31*d_i_phase_td__q_r_td + _pd__32*d_i_t_stance__q_r_td + _pd__33*d_i_th1__q_r_td)
+        d_i_tau1__q_rd_td = (_pd__28*d_i_a__q_rd_td + _pd__29*d_i_b__q_rd_td + _pd__30*d_i_omega0_hat__q_rd_td
+            + _pd__31*d_i_phase_td__q_rd_td + _pd__32*d_i_t_stance__q_rd_td + _pd__33*d_i_th1__q_rd_td)
+        d_i_tau1__q_th_td = (_pd__28*d_i_a__q_th_td + _pd__29*d_i_b__q_th_td + _pd__30*d_i_omega0_hat__q_th_td
+            + _pd__31*d_i_phase_td__q_th_td + _pd__32*d_i_t_stance__q_th_td + _pd__33*d_i_th1__q_th_td)
+        d_i_tau1__q_thd_td = (_pd__28*d_i_a__q_thd_td + _pd__29*d_i_b__q_thd_td
+            + _pd__30*d_i_omega0_hat__q_thd_td + _pd__31*d_i_phase_td__q_thd_td
+            + _pd__32*d_i_t_stance__q_thd_td + _pd__33*d_i_th1__q_thd_td)
+        d_i_tau1__k = (_pd__28*d_i_a__k + _pd__29*d_i_b__k + _pd__30*d_i_omega0_hat__k
+            + _pd__31*d_i_phase_td__k + _pd__32*d_i_t_stance__k + _pd__33*d_i_th1__k)
         _x65 = _x51 + i_phase_td
         _x66 = math.sin(_x65)
         _x67 = _x54 + _x66*i_b
@@ -685,11 +804,17 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__38 = _x63*_x68*_x71
         _x73 = math.cos(i_th2)
         _pd__39 = _x58*_x67*_x73
-        d_i_tau2__q_r_td = _pd__34*d_i_a__q_r_td + _pd__35*d_i_b__q_r_td + _pd__36*d_i_omega0_hat__q_r_td + _pd__37*d_i_phase_td__q_r_td + _pd__38*d_i_t_stance__q_r_td + _pd__39*d_i_th2__q_r_td
-        d_i_tau2__q_rd_td = _pd__34*d_i_a__q_rd_td + _pd__35*d_i_b__q_rd_td + _pd__36*d_i_omega0_hat__q_rd_td + _pd__37*d_i_phase_td__q_rd_td + _pd__38*d_i_t_stance__q_rd_td + _pd__39*d_i_th2__q_rd_td
-        d_i_tau2__q_th_td = _pd__34*d_i_a__q_th_td + _pd__35*d_i_b__q_th_td + _pd__36*d_i_omega0_hat__q_th_td + _pd__37*d_i_phase_td__q_th_td + _pd__38*d_i_t_stance__q_th_td + _pd__39*d_i_th2__q_th_td
-        d_i_tau2__q_thd_td = _pd__34*d_i_a__q_thd_td + _pd__35*d_i_b__q_thd_td + _pd__36*d_i_omega0_hat__q_thd_td + _pd__37*d_i_phase_td__q_thd_td + _pd__38*d_i_t_stance__q_thd_td + _pd__39*d_i_th2__q_thd_td
-        d_i_tau2__k = _pd__34*d_i_a__k + _pd__35*d_i_b__k + _pd__36*d_i_omega0_hat__k + _pd__37*d_i_phase_td__k + _pd__38*d_i_t_stance__k + _pd__39*d_i_th2__k
+        d_i_tau2__q_r_td = (_pd__34*d_i_a__q_r_td + _pd__35*d_i_b__q_r_td + _pd__36*d_i_omega0_hat__q_r_td
+            + _pd__37*d_i_phase_td__q_r_td + _pd__38*d_i_t_stance__q_r_td + _pd__39*d_i_th2__q_r_td)
+        d_i_tau2__q_rd_td = (_pd__34*d_i_a__q_rd_td + _pd__35*d_i_b__q_rd_td + _pd__36*d_i_omega0_hat__q_rd_td
+            + _pd__37*d_i_phase_td__q_rd_td + _pd__38*d_i_t_stance__q_rd_td + _pd__39*d_i_th2__q_rd_td)
+        d_i_tau2__q_th_td = (_pd__34*d_i_a__q_th_td + _pd__35*d_i_b__q_th_td + _pd__36*d_i_omega0_hat__q_th_td
+            + _pd__37*d_i_phase_td__q_th_td + _pd__38*d_i_t_stance__q_th_td + _pd__39*d_i_th2__q_th_td)
+        d_i_tau2__q_thd_td = (_pd__34*d_i_a__q_thd_td + _pd__35*d_i_b__q_thd_td
+            + _pd__36*d_i_omega0_hat__q_thd_td + _pd__37*d_i_phase_td__q_thd_td
+            + _pd__38*d_i_t_stance__q_thd_td + _pd__39*d_i_th2__q_thd_td)
+        d_i_tau2__k = (_pd__34*d_i_a__k + _pd__35*d_i_b__k + _pd__36*d_i_omega0_hat__k
+            + _pd__37*d_i_phase_td__k + _pd__38*d_i_t_stance__k + _pd__39*d_i_th2__k)
         _x74 = _x48 + 1.0
         _x75 = _x51*_x74 + i_phase_td
         _x76 = math.sin(_x75)
@@ -706,11 +831,17 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__44 = _x63*_x74*_x78*_x80
         _x82 = math.cos(i_th3)
         _pd__45 = _x58*_x77*_x82
-        d_i_tau3__q_r_td = _pd__40*d_i_a__q_r_td + _pd__41*d_i_b__q_r_td + _pd__42*d_i_omega0_hat__q_r_td + _pd__43*d_i_phase_td__q_r_td + _pd__44*d_i_t_stance__q_r_td + _pd__45*d_i_th3__q_r_td
-        d_i_tau3__q_rd_td = _pd__40*d_i_a__q_rd_td + _pd__41*d_i_b__q_rd_td + _pd__42*d_i_omega0_hat__q_rd_td + _pd__43*d_i_phase_td__q_rd_td + _pd__44*d_i_t_stance__q_rd_td + _pd__45*d_i_th3__q_rd_td
-        d_i_tau3__q_th_td = _pd__40*d_i_a__q_th_td + _pd__41*d_i_b__q_th_td + _pd__42*d_i_omega0_hat__q_th_td + _pd__43*d_i_phase_td__q_th_td + _pd__44*d_i_t_stance__q_th_td + _pd__45*d_i_th3__q_th_td
-        d_i_tau3__q_thd_td = _pd__40*d_i_a__q_thd_td + _pd__41*d_i_b__q_thd_td + _pd__42*d_i_omega0_hat__q_thd_td + _pd__43*d_i_phase_td__q_thd_td + _pd__44*d_i_t_stance__q_thd_td + _pd__45*d_i_th3__q_thd_td
-        d_i_tau3__k = _pd__40*d_i_a__k + _pd__41*d_i_b__k + _pd__42*d_i_omega0_hat__k + _pd__43*d_i_phase_td__k + _pd__44*d_i_t_stance__k + _pd__45*d_i_th3__k
+        d_i_tau3__q_r_td = (_pd__40*d_i_a__q_r_td + _pd__41*d_i_b__q_r_td + _pd__42*d_i_omega0_hat__q_r_td
+            + _pd__43*d_i_phase_td__q_r_td + _pd__44*d_i_t_stance__q_r_td + _pd__45*d_i_th3__q_r_td)
+        d_i_tau3__q_rd_td = (_pd__40*d_i_a__q_rd_td + _pd__41*d_i_b__q_rd_td + _pd__42*d_i_omega0_hat__q_rd_td
+            + _pd__43*d_i_phase_td__q_rd_td + _pd__44*d_i_t_stance__q_rd_td + _pd__45*d_i_th3__q_rd_td)
+        d_i_tau3__q_th_td = (_pd__40*d_i_a__q_th_td + _pd__41*d_i_b__q_th_td + _pd__42*d_i_omega0_hat__q_th_td
+            + _pd__43*d_i_phase_td__q_th_td + _pd__44*d_i_t_stance__q_th_td + _pd__45*d_i_th3__q_th_td)
+        d_i_tau3__q_thd_td = (_pd__40*d_i_a__q_thd_td + _pd__41*d_i_b__q_thd_td
+            + _pd__42*d_i_omega0_hat__q_thd_td + _pd__43*d_i_phase_td__q_thd_td
+            + _pd__44*d_i_t_stance__q_thd_td + _pd__45*d_i_th3__q_thd_td)
+        d_i_tau3__k = (_pd__40*d_i_a__k + _pd__41*d_i_b__k + _pd__42*d_i_omega0_hat__k
+            + _pd__43*d_i_phase_td__k + _pd__44*d_i_t_stance__k + _pd__45*d_i_th3__k)
         i_g_eff = _x62*((0.5555555555555556)*_x64 + (0.8888888888888888)*_x73 + (0.5555555555555556)*_x82)
         _x83 = (0.2777777777777778)*g_s
         _pd__46 = -_x56*_x83
@@ -719,7 +850,8 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_i_g_eff__q_r_td = _pd__46*d_i_th1__q_r_td + _pd__47*d_i_th2__q_r_td + _pd__48*d_i_th3__q_r_td
         d_i_g_eff__q_rd_td = _pd__46*d_i_th1__q_rd_td + _pd__47*d_i_th2__q_rd_td + _pd__48*d_i_th3__q_rd_td
         d_i_g_eff__q_th_td = _pd__46*d_i_th1__q_th_td + _pd__47*d_i_th2__q_th_td + _pd__48*d_i_th3__q_th_td
-        d_i_g_eff__q_thd_td = _pd__46*d_i_th1__q_thd_td + _pd__47*d_i_th2__q_thd_td + _pd__48*d_i_th3__q_thd_td
+        d_i_g_eff__q_thd_td = (_pd__46*d_i_th1__q_thd_td + _pd__47*d_i_th2__q_thd_td
+            + _pd__48*d_i_th3__q_thd_td)
         d_i_g_eff__k = _pd__46*d_i_th1__k + _pd__47*d_i_th2__k + _pd__48*d_i_th3__k
         _x84 = i_phase_lo - i_phase_td
         _x85 = (1.0/_x84)
@@ -731,10 +863,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _x89 = _x85**2*_x86*i_b
         _pd__50 = _x88*math.sin(i_phase_lo) + _x89
         _pd__51 = -_x88*math.sin(i_phase_td) - _x89
-        d_i_r_c__q_r_td = _pd__49*d_i_b__q_r_td + _pd__50*d_i_phase_lo__q_r_td + _pd__51*d_i_phase_td__q_r_td + d_i_a__q_r_td
-        d_i_r_c__q_rd_td = _pd__49*d_i_b__q_rd_td + _pd__50*d_i_phase_lo__q_rd_td + _pd__51*d_i_phase_td__q_rd_td + d_i_a__q_rd_td
-        d_i_r_c__q_th_td = _pd__49*d_i_b__q_th_td + _pd__50*d_i_phase_lo__q_th_td + _pd__51*d_i_phase_td__q_th_td + d_i_a__q_th_td
-        d_i_r_c__q_thd_td = _pd__49*d_i_b__q_thd_td + _pd__50*d_i_phase_lo__q_thd_td + _pd__51*d_i_phase_td__q_thd_td + d_i_a__q_thd_td
+        d_i_r_c__q_r_td = (_pd__49*d_i_b__q_r_td + _pd__50*d_i_phase_lo__q_r_td + _pd__51*d_i_phase_td__q_r_td
+            + d_i_a__q_r_td)
+        d_i_r_c__q_rd_td = (_pd__49*d_i_b__q_rd_td + _pd__50*d_i_phase_lo__q_rd_td
+            + _pd__51*d_i_phase_td__q_rd_td + d_i_a__q_rd_td)
+        d_i_r_c__q_th_td = (_pd__49*d_i_b__q_th_td + _pd__50*d_i_phase_lo__q_th_td
+            + _pd__51*d_i_phase_td__q_th_td + d_i_a__q_th_td)
+        d_i_r_c__q_thd_td = (_pd__49*d_i_b__q_thd_td + _pd__50*d_i_phase_lo__q_thd_td
+            + _pd__51*d_i_phase_td__q_thd_td + d_i_a__q_thd_td)
         d_i_r_c__k = _pd__49*d_i_b__k + _pd__50*d_i_phase_lo__k + _pd__51*d_i_phase_td__k + d_i_a__k
         if _conv0 or _it0 == _last0:
             break
@@ -747,18 +883,47 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         r_c__next = i_r_c
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(tau1__next - tau1) <= tol*(g_s*l0*m)) and (abs(tau2__next - tau2) <= tol*(g_s*l0*m)) and (abs(tau3__next - tau3) <= tol*(g_s*l0*m)) and (abs(T__next - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(g_eff__next - g_eff) <= tol*(g_s)) and (abs(r_c__next - r_c) <= tol*(1.0))
-        _pkn0 = (tau1__next, tau2__next, tau3__next, T__next, g_eff__next, r_c__next, d_i_tau1__q_r_td, d_i_tau1__q_rd_td, d_i_tau1__q_th_td, d_i_tau1__q_thd_td, d_i_tau1__k, d_i_tau2__q_r_td, d_i_tau2__q_rd_td, d_i_tau2__q_th_td, d_i_tau2__q_thd_td, d_i_tau2__k, d_i_tau3__q_r_td, d_i_tau3__q_rd_td, d_i_tau3__q_th_td, d_i_tau3__q_thd_td, d_i_tau3__k, d_i_t_stance__q_r_td, d_i_t_stance__q_rd_td, d_i_t_stance__q_th_td, d_i_t_stance__q_thd_td, d_i_t_stance__k, d_i_g_eff__q_r_td, d_i_g_eff__q_rd_td, d_i_g_eff__q_th_td, d_i_g_eff__q_thd_td, d_i_g_eff__k, d_i_r_c__q_r_td, d_i_r_c__q_rd_td, d_i_r_c__q_th_td, d_i_r_c__q_thd_td, d_i_r_c__k, )
+        _conv0 = (tol > 0.0 and (abs(tau1__next - tau1) <= tol*(g_s*l0*m)) and (abs(tau2__next - tau2)
+            <= tol*(g_s*l0*m)) and (abs(tau3__next - tau3) <= tol*(g_s*l0*m)) and (abs(T__next - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(g_eff__next - g_eff) <= tol*(g_s)) and (abs(r_c__next
+            - r_c) <= tol*(1.0)))
+        _pkn0 = (tau1__next, tau2__next, tau3__next, T__next, g_eff__next, r_c__next, d_i_tau1__q_r_td,
+            d_i_tau1__q_rd_td, d_i_tau1__q_th_td, d_i_tau1__q_thd_td, d_i_tau1__k, d_i_tau2__q_r_td,
+            d_i_tau2__q_rd_td, d_i_tau2__q_th_td, d_i_tau2__q_thd_td, d_i_tau2__k, d_i_tau3__q_r_td,
+            d_i_tau3__q_rd_td, d_i_tau3__q_th_td, d_i_tau3__q_thd_td, d_i_tau3__k, d_i_t_stance__q_r_td,
+            d_i_t_stance__q_rd_td, d_i_t_stance__q_th_td, d_i_t_stance__q_thd_td, d_i_t_stance__k,
+            d_i_g_eff__q_r_td, d_i_g_eff__q_rd_td, d_i_g_eff__q_th_td, d_i_g_eff__q_thd_td, d_i_g_eff__k,
+            d_i_r_c__q_r_td, d_i_r_c__q_rd_td, d_i_r_c__q_th_td, d_i_r_c__q_thd_td, d_i_r_c__k, )
         _pk0 = _pkn0
         passes += 1.0
-    _c5 = type5_leg_angle_jvp5_b6d403(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_bottom__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_bottom__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, d_i_t_bottom__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_bottom__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, d_i_t_bottom__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k)
+    _c5 = (type5_leg_angle_jvp5_b6d403(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+        i_omega0_hat, i_phase_td, m, l0, d_i_t_bottom__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td,
+        d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td,
+        d_i_phase_td__q_r_td, d_i_t_bottom__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td,
+        d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
+        d_i_t_bottom__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td,
+        d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td,
+        d_i_t_bottom__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
+        d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
+        d_i_phase_td__q_thd_td, d_i_t_bottom__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k,
+        d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
     bottom_q_th = _c5[0]
     d_bottom_q_th__q_r_td = _c5[1]
     d_bottom_q_th__q_rd_td = _c5[2]
     d_bottom_q_th__q_th_td = _c5[3]
     d_bottom_q_th__q_thd_td = _c5[4]
     d_bottom_q_th__k = _c5[5]
-    _c6 = type5_leg_angle_jvp5_b6d403(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, d_i_t_stance__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, d_i_t_stance__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k)
+    _c6 = (type5_leg_angle_jvp5_b6d403(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+        i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td,
+        d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td,
+        d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td,
+        d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
+        d_i_t_stance__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td,
+        d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td,
+        d_i_t_stance__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
+        d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
+        d_i_phase_td__q_thd_td, d_i_t_stance__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k,
+        d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
     liftoff_q_th = _c6[0]
     d_liftoff_q_th__q_r_td = _c6[1]
     d_liftoff_q_th__q_rd_td = _c6[2]
@@ -793,11 +958,18 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__56 = _x93*_x97
     _pd__57 = _x97*(_x91*i_c2 + i_c0 + i_c1*i_t_bottom)
     _pd__58 = _x97
-    d_bottom_q_thd__q_r_td = _pd__52*d_i_a__q_r_td + _pd__53*d_i_b__q_r_td + _pd__54*d_i_c0__q_r_td + _pd__55*d_i_c1__q_r_td + _pd__56*d_i_c2__q_r_td + _pd__57*d_i_t_bottom__q_r_td + _pd__58*d_p_td__q_r_td
-    d_bottom_q_thd__q_rd_td = _pd__52*d_i_a__q_rd_td + _pd__53*d_i_b__q_rd_td + _pd__54*d_i_c0__q_rd_td + _pd__55*d_i_c1__q_rd_td + _pd__56*d_i_c2__q_rd_td + _pd__57*d_i_t_bottom__q_rd_td
-    d_bottom_q_thd__q_th_td = _pd__52*d_i_a__q_th_td + _pd__53*d_i_b__q_th_td + _pd__54*d_i_c0__q_th_td + _pd__55*d_i_c1__q_th_td + _pd__56*d_i_c2__q_th_td + _pd__57*d_i_t_bottom__q_th_td
-    d_bottom_q_thd__q_thd_td = _pd__52*d_i_a__q_thd_td + _pd__53*d_i_b__q_thd_td + _pd__54*d_i_c0__q_thd_td + _pd__55*d_i_c1__q_thd_td + _pd__56*d_i_c2__q_thd_td + _pd__57*d_i_t_bottom__q_thd_td + _pd__58*d_p_td__q_thd_td
-    d_bottom_q_thd__k = _pd__52*d_i_a__k + _pd__53*d_i_b__k + _pd__54*d_i_c0__k + _pd__55*d_i_c1__k + _pd__56*d_i_c2__k + _pd__57*d_i_t_bottom__k
+    d_bottom_q_thd__q_r_td = (_pd__52*d_i_a__q_r_td + _pd__53*d_i_b__q_r_td + _pd__54*d_i_c0__q_r_td
+        + _pd__55*d_i_c1__q_r_td + _pd__56*d_i_c2__q_r_td + _pd__57*d_i_t_bottom__q_r_td
+        + _pd__58*d_p_td__q_r_td)
+    d_bottom_q_thd__q_rd_td = (_pd__52*d_i_a__q_rd_td + _pd__53*d_i_b__q_rd_td + _pd__54*d_i_c0__q_rd_td
+        + _pd__55*d_i_c1__q_rd_td + _pd__56*d_i_c2__q_rd_td + _pd__57*d_i_t_bottom__q_rd_td)
+    d_bottom_q_thd__q_th_td = (_pd__52*d_i_a__q_th_td + _pd__53*d_i_b__q_th_td + _pd__54*d_i_c0__q_th_td
+        + _pd__55*d_i_c1__q_th_td + _pd__56*d_i_c2__q_th_td + _pd__57*d_i_t_bottom__q_th_td)
+    d_bottom_q_thd__q_thd_td = (_pd__52*d_i_a__q_thd_td + _pd__53*d_i_b__q_thd_td + _pd__54*d_i_c0__q_thd_td
+        + _pd__55*d_i_c1__q_thd_td + _pd__56*d_i_c2__q_thd_td + _pd__57*d_i_t_bottom__q_thd_td
+        + _pd__58*d_p_td__q_thd_td)
+    d_bottom_q_thd__k = (_pd__52*d_i_a__k + _pd__53*d_i_b__k + _pd__54*d_i_c0__k + _pd__55*d_i_c1__k
+        + _pd__56*d_i_c2__k + _pd__57*d_i_t_bottom__k)
     liftoff_q_r = q_r_lo
     _x99 = i_t_stance**2
     _x100 = (0.5)*_x99
@@ -808,10 +980,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__60 = _x101
     _x103 = _x99*i_c2 + i_c0 + i_c1*i_t_stance
     _pd__61 = _x103
-    d_P_c__q_r_td = _pd__59*d_i_c1__q_r_td + _pd__60*d_i_c2__q_r_td + _pd__61*d_i_t_stance__q_r_td + d_i_c0__q_r_td*i_t_stance
-    d_P_c__q_rd_td = _pd__59*d_i_c1__q_rd_td + _pd__60*d_i_c2__q_rd_td + _pd__61*d_i_t_stance__q_rd_td + d_i_c0__q_rd_td*i_t_stance
-    d_P_c__q_th_td = _pd__59*d_i_c1__q_th_td + _pd__60*d_i_c2__q_th_td + _pd__61*d_i_t_stance__q_th_td + d_i_c0__q_th_td*i_t_stance
-    d_P_c__q_thd_td = _pd__59*d_i_c1__q_thd_td + _pd__60*d_i_c2__q_thd_td + _pd__61*d_i_t_stance__q_thd_td + d_i_c0__q_thd_td*i_t_stance
+    d_P_c__q_r_td = (_pd__59*d_i_c1__q_r_td + _pd__60*d_i_c2__q_r_td + _pd__61*d_i_t_stance__q_r_td
+        + d_i_c0__q_r_td*i_t_stance)
+    d_P_c__q_rd_td = (_pd__59*d_i_c1__q_rd_td + _pd__60*d_i_c2__q_rd_td + _pd__61*d_i_t_stance__q_rd_td
+        + d_i_c0__q_rd_td*i_t_stance)
+    d_P_c__q_th_td = (_pd__59*d_i_c1__q_th_td + _pd__60*d_i_c2__q_th_td + _pd__61*d_i_t_stance__q_th_td
+        + d_i_c0__q_th_td*i_t_stance)
+    d_P_c__q_thd_td = (_pd__59*d_i_c1__q_thd_td + _pd__60*d_i_c2__q_thd_td + _pd__61*d_i_t_stance__q_thd_td
+        + d_i_c0__q_thd_td*i_t_stance)
     d_P_c__k = _pd__59*d_i_c1__k + _pd__60*d_i_c2__k + _pd__61*d_i_t_stance__k + d_i_c0__k*i_t_stance
     _x104 = _x95/q_r_lo**2
     liftoff_q_thd = _x104*(_x102 + p_td)
@@ -820,10 +996,14 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__64 = _x101*_x104
     _pd__65 = _x103*_x104
     _pd__66 = _x104
-    d_liftoff_q_thd__q_r_td = _pd__62*d_i_c0__q_r_td + _pd__63*d_i_c1__q_r_td + _pd__64*d_i_c2__q_r_td + _pd__65*d_i_t_stance__q_r_td + _pd__66*d_p_td__q_r_td
-    d_liftoff_q_thd__q_rd_td = _pd__62*d_i_c0__q_rd_td + _pd__63*d_i_c1__q_rd_td + _pd__64*d_i_c2__q_rd_td + _pd__65*d_i_t_stance__q_rd_td
-    d_liftoff_q_thd__q_th_td = _pd__62*d_i_c0__q_th_td + _pd__63*d_i_c1__q_th_td + _pd__64*d_i_c2__q_th_td + _pd__65*d_i_t_stance__q_th_td
-    d_liftoff_q_thd__q_thd_td = _pd__62*d_i_c0__q_thd_td + _pd__63*d_i_c1__q_thd_td + _pd__64*d_i_c2__q_thd_td + _pd__65*d_i_t_stance__q_thd_td + _pd__66*d_p_td__q_thd_td
+    d_liftoff_q_thd__q_r_td = (_pd__62*d_i_c0__q_r_td + _pd__63*d_i_c1__q_r_td + _pd__64*d_i_c2__q_r_td
+        + _pd__65*d_i_t_stance__q_r_td + _pd__66*d_p_td__q_r_td)
+    d_liftoff_q_thd__q_rd_td = (_pd__62*d_i_c0__q_rd_td + _pd__63*d_i_c1__q_rd_td + _pd__64*d_i_c2__q_rd_td
+        + _pd__65*d_i_t_stance__q_rd_td)
+    d_liftoff_q_thd__q_th_td = (_pd__62*d_i_c0__q_th_td + _pd__63*d_i_c1__q_th_td + _pd__64*d_i_c2__q_th_td
+        + _pd__65*d_i_t_stance__q_th_td)
+    d_liftoff_q_thd__q_thd_td = (_pd__62*d_i_c0__q_thd_td + _pd__63*d_i_c1__q_thd_td
+        + _pd__64*d_i_c2__q_thd_td + _pd__65*d_i_t_stance__q_thd_td + _pd__66*d_p_td__q_thd_td)
     d_liftoff_q_thd__k = _pd__62*d_i_c0__k + _pd__63*d_i_c1__k + _pd__64*d_i_c2__k + _pd__65*d_i_t_stance__k
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
@@ -840,7 +1020,8 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _x115 = _x114*i_c2
     _x116 = _x111 + (0.5)*_x113 + (0.3333333333333333)*_x115 + p_td
     _x117 = _x106**2/_x109
-    _q_rd_lo_sq = 2.0*E_td*_x106 + 2.0*_x106*k*l0*q_r_lo - _x107*math.cos(liftoff_q_th) - _x108*k - _x110*k - _x116**2*_x117
+    _q_rd_lo_sq = (2.0*E_td*_x106 + 2.0*_x106*k*l0*q_r_lo - _x107*math.cos(liftoff_q_th) - _x108*k - _x110*k
+        - _x116**2*_x117)
     _x118 = 2.0*_x106
     _pd__67 = _x118
     _x119 = 2.0*i_t_stance
@@ -851,11 +1032,18 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__71 = -_x120*(2.0*_x112*i_c2 + _x119*i_c1 + 2.0*i_c0)
     _pd__72 = _x107*math.sin(liftoff_q_th)
     _pd__73 = -_x117*(2.0*_x111 + _x113 + (0.6666666666666666)*_x115 + 2.0*p_td)
-    _d_q_rd_lo_sq__q_r_td = _pd__67*d_E_td__q_r_td + _pd__68*d_i_c0__q_r_td + _pd__69*d_i_c1__q_r_td + _pd__70*d_i_c2__q_r_td + _pd__71*d_i_t_stance__q_r_td + _pd__72*d_liftoff_q_th__q_r_td + _pd__73*d_p_td__q_r_td
-    _d_q_rd_lo_sq__q_rd_td = _pd__67*d_E_td__q_rd_td + _pd__68*d_i_c0__q_rd_td + _pd__69*d_i_c1__q_rd_td + _pd__70*d_i_c2__q_rd_td + _pd__71*d_i_t_stance__q_rd_td + _pd__72*d_liftoff_q_th__q_rd_td
-    _d_q_rd_lo_sq__q_th_td = _pd__67*d_E_td__q_th_td + _pd__68*d_i_c0__q_th_td + _pd__69*d_i_c1__q_th_td + _pd__70*d_i_c2__q_th_td + _pd__71*d_i_t_stance__q_th_td + _pd__72*d_liftoff_q_th__q_th_td
-    _d_q_rd_lo_sq__q_thd_td = _pd__67*d_E_td__q_thd_td + _pd__68*d_i_c0__q_thd_td + _pd__69*d_i_c1__q_thd_td + _pd__70*d_i_c2__q_thd_td + _pd__71*d_i_t_stance__q_thd_td + _pd__72*d_liftoff_q_th__q_thd_td + _pd__73*d_p_td__q_thd_td
-    _d_q_rd_lo_sq__k = _pd__67*d_E_td__k + _pd__68*d_i_c0__k + _pd__69*d_i_c1__k + _pd__70*d_i_c2__k + _pd__71*d_i_t_stance__k + _pd__72*d_liftoff_q_th__k - _x108 - _x110 + _x118*l0*q_r_lo
+    _d_q_rd_lo_sq__q_r_td = (_pd__67*d_E_td__q_r_td + _pd__68*d_i_c0__q_r_td + _pd__69*d_i_c1__q_r_td
+        + _pd__70*d_i_c2__q_r_td + _pd__71*d_i_t_stance__q_r_td + _pd__72*d_liftoff_q_th__q_r_td
+        + _pd__73*d_p_td__q_r_td)
+    _d_q_rd_lo_sq__q_rd_td = (_pd__67*d_E_td__q_rd_td + _pd__68*d_i_c0__q_rd_td + _pd__69*d_i_c1__q_rd_td
+        + _pd__70*d_i_c2__q_rd_td + _pd__71*d_i_t_stance__q_rd_td + _pd__72*d_liftoff_q_th__q_rd_td)
+    _d_q_rd_lo_sq__q_th_td = (_pd__67*d_E_td__q_th_td + _pd__68*d_i_c0__q_th_td + _pd__69*d_i_c1__q_th_td
+        + _pd__70*d_i_c2__q_th_td + _pd__71*d_i_t_stance__q_th_td + _pd__72*d_liftoff_q_th__q_th_td)
+    _d_q_rd_lo_sq__q_thd_td = (_pd__67*d_E_td__q_thd_td + _pd__68*d_i_c0__q_thd_td + _pd__69*d_i_c1__q_thd_td
+        + _pd__70*d_i_c2__q_thd_td + _pd__71*d_i_t_stance__q_thd_td + _pd__72*d_liftoff_q_th__q_thd_td
+        + _pd__73*d_p_td__q_thd_td)
+    _d_q_rd_lo_sq__k = (_pd__67*d_E_td__k + _pd__68*d_i_c0__k + _pd__69*d_i_c1__k + _pd__70*d_i_c2__k
+        + _pd__71*d_i_t_stance__k + _pd__72*d_liftoff_q_th__k - _x108 - _x110 + _x118*l0*q_r_lo)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN72 + (STATUS_ENERGY_DEFICIT,)
@@ -896,22 +1084,57 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations,
+        tol, out, status):
     """Parallel batch form of :func:`gravity_type5_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
+    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
+    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
+    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
+    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
+    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
+    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
+    d_passes__q_thd_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
+            q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -988,8 +1211,10 @@ def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol):
-    """Apex-return map by Gravity correction type 5 (time-varying momentum), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol):
+    """Apex-return map by Gravity correction type 5 (time-varying momentum), and its derivatives with respect
+    to the apex, the touchdown angle and the stiffness.
 
     Report equations: 46, 47, 48.
 
@@ -1008,7 +1233,8 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -1022,57 +1248,101 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
         passes: fixed-point passes run
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td, k (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 115
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
+            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex
+            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN55 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[20] != STATUS_OK:
         return _NAN55 + (_c0[20],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
     # stance: Gravity correction type 5 (time-varying momentum)
-    _c1 = gravity_type5_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, iterations, tol)
+    _c1 = (gravity_type5_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo,
+        iterations, tol))
     if _c1[72] != STATUS_OK:
         return _NAN55 + (_c1[72],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td, _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
+        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
     # chain rule through gravity_type5_stance
-    d_t_stance__b_y_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex
-    d_t_stance__b_xd_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_t_stance__q_th_td = _j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_rd__b_y_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_rd__b_xd_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_rd__q_th_td = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_th__b_y_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_th__b_xd_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_th__q_th_td = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_thd__b_y_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_thd__b_xd_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_thd__q_th_td = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
     d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_P_c__q_th_td = _j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td
+    d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[16] != STATUS_OK:
         return _NAN55 + (_c2[16],)
-    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _) = _c2
+    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _, _, _, _) = _c2
     # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_height__b_xd_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_height__q_th_td = _j_apex_height__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_height__k = _j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k + _j_apex_height__q_thd*_j_liftoff_q_thd__k
-    d_apex_speed__b_y_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_speed__b_xd_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_speed__q_th_td = _j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_speed__k = _j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k + _j_apex_speed__q_thd*_j_liftoff_q_thd__k
-    d_t_ascent__b_y_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex
-    d_t_ascent__b_xd_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_t_ascent__q_th_td = _j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td
-    d_t_ascent__k = _j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th + _j_liftoff_q_thd__k*_j_t_ascent__q_thd
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__b_xd_apex = 0.0
@@ -1093,22 +1363,49 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g
     d_passes__k = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(P_c) and math.isfinite(passes)):
         return _NAN55 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex,
+        d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex,
+        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
+def gravity_type5_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type5_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 55)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+    d_apex_height__q_th_td, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+    d_apex_speed__q_th_td, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+    d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k,
+    d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k,
+    d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k,
+    d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+    d_passes__q_th_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol)
+        res = (gravity_type5_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,18 +4,20 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:677d7d2464b0d738
-#   geyer_vs.py sha256:af862cc8c4037cd6
-#   gravity_type0.py sha256:a36eaba77cd18d22
-#   gravity_type1.py sha256:f60cec1530f43c18
-#   gravity_type2.py sha256:6e2f02184974f094
-#   gravity_type3.py sha256:3effee96f7eb61ff
-#   gravity_type4.py sha256:aa678e60a941c5e6
-#   gravity_type5.py sha256:b4cfbd08dbc4fee1
-#   iterative.py sha256:0551c35900d44042
+#   geyer.py sha256:56141b7b10ce8833
+#   geyer_vs.py sha256:1911c03cc28dae7e
+#   gravity_type0.py sha256:df2c2f22d8ab5893
+#   gravity_type1.py sha256:07372a3473961a61
+#   gravity_type2.py sha256:ec7faca9c4a8859a
+#   gravity_type3.py sha256:580dc33ab469086f
+#   gravity_type4.py sha256:af8a365d68c74c6e
+#   gravity_type5.py sha256:bd691a41dfefc3ea
+#   iterative.py sha256:a9c442a7ac29842a
 # ----------------------------------------------------------------------------------------------
-"""Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
+"""Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
+bottom."""
 
 import math
 
@@ -40,8 +42,10 @@ _NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth):
-    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom state.
+def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
+        zeroth):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
@@ -54,10 +58,15 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         l0: rest leg length l0 [m]
         k_c: leg stiffness while compressing k_c [N/m]
         g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -70,7 +79,16 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s
+            > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes
+            == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth
+            == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth
+            == 7.0) or (zeroth == 8.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate
     if zeroth == 1.0:
@@ -79,7 +97,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         _x1 = g_s*m*math.cos(q_th_td)
         _x2 = q_thd_td**2
         _x3 = m*q_rd_td**2
-        _x4 = -_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td + k_c*l0)**2)) + q_r_td
+        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+            + k_c*l0)**2)) + q_r_td)
         z_b_q_r = _x4
         z_b_q_th = q_th_td
         z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
@@ -97,7 +116,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c0[9]
     elif zeroth == 2.0:
         # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0, 0.0)
+        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            1.0, 0.0))
         if _c1[12] != STATUS_OK:
             return _NAN6 + (_c1[12],)
         z_b_q_r = _c1[2]
@@ -107,7 +127,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c1[9]
     elif zeroth == 3.0:
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0, 1e-12)
+        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            100.0, 1e-12))
         if _c2[12] != STATUS_OK:
             return _NAN6 + (_c2[12],)
         z_b_q_r = _c2[2]
@@ -117,7 +138,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c2[9]
     elif zeroth == 4.0:
         # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            0.0, 100.0, 1e-12))
         if _c3[12] != STATUS_OK:
             return _NAN6 + (_c3[12],)
         z_b_q_r = _c3[2]
@@ -127,7 +149,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c3[9]
     elif zeroth == 5.0:
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0, 1e-12)
+        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
+            100.0, 1e-12))
         if _c4[12] != STATUS_OK:
             return _NAN6 + (_c4[12],)
         z_b_q_r = _c4[2]
@@ -137,7 +160,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c4[9]
     elif zeroth == 6.0:
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
+            0.0, 100.0, 1e-12))
         if _c5[12] != STATUS_OK:
             return _NAN6 + (_c5[12],)
         z_b_q_r = _c5[2]
@@ -157,7 +181,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c6[9]
     elif zeroth == 8.0:
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
+        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0,
+            100.0, 1e-12))
         if _c7[13] != STATUS_OK:
             return _NAN6 + (_c7[13],)
         z_b_q_r = _c7[2]
@@ -168,7 +193,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     else:
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # compression half, k_c (report 5.2.1)
-    _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    _c8 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
     if _c8[6] != STATUS_OK:
         return _NAN6 + (_c8[6],)
     t_half = _c8[0]
@@ -178,13 +204,15 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     end_q_thd = _c8[4]
     passes = _c8[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth, out, status):
+def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
+        zeroth, out, status):
     """Parallel batch form of :func:`iterative_compression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
@@ -193,7 +221,8 @@ def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, 
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
     """
     for i in prange(out.shape[0]):
-        res = iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes, iterations, tol, zeroth)
+        res = (iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes,
+            iterations, tol, zeroth))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,24 +4,27 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:4974722c824d3634
-#   geyer_jacobian.py sha256:be9d1f8206af083d
-#   geyer_vs_jacobian.py sha256:5a31ec495e5f0eed
-#   gravity_type0_jacobian.py sha256:1e5c0bf48f24eb1d
-#   gravity_type1_jacobian.py sha256:730f779adde3c27d
-#   gravity_type2_jacobian.py sha256:5d910fae3e3ff23c
-#   gravity_type3_jacobian.py sha256:03b31334182815b6
-#   gravity_type4_jacobian.py sha256:daa305483ddc7d13
-#   gravity_type5_jacobian.py sha256:e94887eea85e9322
+#   flight_jacobian.py sha256:5e86edc951466ed7
+#   geyer_jacobian.py sha256:71e01de102ad80c3
+#   geyer_vs_jacobian.py sha256:da043c6f2c55db7e
+#   gravity_type0_jacobian.py sha256:398a3a66fde67744
+#   gravity_type1_jacobian.py sha256:66fa45d9056d598f
+#   gravity_type2_jacobian.py sha256:3f778c1f7c92dffa
+#   gravity_type3_jacobian.py sha256:d97a8bb64898cff5
+#   gravity_type4_jacobian.py sha256:dd980cac01ca0fb2
+#   gravity_type5_jacobian.py sha256:bd04a2eb4419898d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
+for a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td, liftoff_to_apex_jac_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
 from .geyer_vs_jacobian import bottom_quartic_jac_p_E_ab_k_c, geyer_vs_stance_jacobian
 from .gravity_type0_jacobian import gravity_type0_stance_jacobian
@@ -33,7 +36,8 @@ from .gravity_type5_jacobian import gravity_type5_stance_jacobian
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF,
+    STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM)
 
 NAN = math.nan
 _NAN54 = (NAN,) * 54
@@ -41,10 +45,14 @@ _NAN70 = (NAN,) * 70
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length):
-    """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length):
+    """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -62,8 +70,12 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -76,12 +88,23 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td, q_th_td, q_thd_td, k_c, k_d (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 1782
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length)
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -156,7 +179,13 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _c0 = geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
         if _c0[60] != STATUS_OK:
             return _NAN70 + (_c0[60],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _) = _c0
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _,
+            _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _,
+            _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td,
+            _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _, _j_z_b_q_thd__q_thd_td,
+            _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td,
+            _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td,
+            _j_z_lo_q_thd__q_rd_td, _, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _) = _c0
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -190,10 +219,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 2.0:
         # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0)
+        _c1 = (gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 1.0, 0.0))
         if _c1[72] != STATUS_OK:
             return _NAN70 + (_c1[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c1
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c1
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -227,10 +264,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 3.0:
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12)
+        _c2 = (gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 100.0, 1e-12))
         if _c2[72] != STATUS_OK:
             return _NAN70 + (_c2[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c2
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c2
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -264,10 +309,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 4.0:
         # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = gravity_type2_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        _c3 = (gravity_type2_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 0.0, 100.0, 1e-12))
         if _c3[72] != STATUS_OK:
             return _NAN70 + (_c3[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c3
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c3
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -301,10 +354,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 5.0:
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = gravity_type3_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12)
+        _c4 = (gravity_type3_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            1.0, 100.0, 1e-12))
         if _c4[72] != STATUS_OK:
             return _NAN70 + (_c4[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c4
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c4
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -338,10 +399,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 6.0:
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        _c5 = (gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            1.0, 0.0, 100.0, 1e-12))
         if _c5[72] != STATUS_OK:
             return _NAN70 + (_c5[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c5
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c5
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -375,10 +444,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 7.0:
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-        _c6 = gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
+        _c6 = (gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo,
+            100.0, 1e-12))
         if _c6[72] != STATUS_OK:
             return _NAN70 + (_c6[72],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c6
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c6
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -412,10 +489,20 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 8.0:
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
+        _c7 = (geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0,
+            0.0, 100.0, 1e-12))
         if _c7[91] != STATUS_OK:
             return _NAN70 + (_c7[91],)
-        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k_c, _j_z_b_q_r__k_d, _, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k_c, _j_z_b_q_th__k_d, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k_c, _j_z_b_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k_c, _j_z_lo_q_th__k_d, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k_c, _j_z_lo_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _) = _c7
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k_c, _j_z_b_q_r__k_d, _, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td,
+            _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k_c, _j_z_b_q_th__k_d,
+            _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td,
+            _j_z_b_q_thd__k_c, _j_z_b_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td,
+            _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k_c,
+            _j_z_lo_q_th__k_d, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k_c, _j_z_lo_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _,
+            _, _, _, _, _, _, _, _) = _c7
         # tangents as every branch names them
         d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
         d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
@@ -560,12 +647,23 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _pd__6 = -_x74*(2.0*_x45*m - 2.0*_x46*_x49)
     _x76 = (0.25)*_pd__3
     _x77 = 2.0*m
-    d_c_rad_z__q_r_td = _pd__2*d_bottom_q_r__q_r_td + _pd__4*d_z_b_q_r__q_r_td + _pd__5*d_z_b_q_th__q_r_td + _pd__6*d_z_b_q_thd__q_r_td + _x40*(-_x52*(-_x48*_x66 + _x49*_x71*q_r_td*q_thd_td) - _x64 - _x72) + _x67 + _x76*d_c_e_n__q_r_td + _x77*d_E_ab__q_r_td
-    d_c_rad_z__q_rd_td = _pd__2*d_bottom_q_r__q_rd_td + _pd__4*d_z_b_q_r__q_rd_td + _pd__5*d_z_b_q_th__q_rd_td + _pd__6*d_z_b_q_thd__q_rd_td + _x76*d_c_e_n__q_rd_td + _x77*d_E_ab__q_rd_td
-    d_c_rad_z__q_th_td = _pd__2*d_bottom_q_r__q_th_td + _pd__4*d_z_b_q_r__q_th_td + _pd__5*d_z_b_q_th__q_th_td + _pd__6*d_z_b_q_thd__q_th_td + _x49*_x75 + _x76*d_c_e_n__q_th_td + _x77*d_E_ab__q_th_td
-    d_c_rad_z__q_thd_td = _pd__2*d_bottom_q_r__q_thd_td + _pd__4*d_z_b_q_r__q_thd_td + _pd__5*d_z_b_q_th__q_thd_td + _pd__6*d_z_b_q_thd__q_thd_td - 2.0*_x49*_x50*_x74 + _x76*d_c_e_n__q_thd_td + _x77*d_E_ab__q_thd_td
-    d_c_rad_z__k_c = _pd__2*d_bottom_q_r__k_c + _pd__4*d_z_b_q_r__k_c + _pd__5*d_z_b_q_th__k_c + _pd__6*d_z_b_q_thd__k_c + _x40*(-_x41 + 2.0*_x42*l0*m - _x44) + _x76*d_c_e_n__k_c + _x77*d_E_ab__k_c
-    d_c_rad_z__k_d = _pd__2*d_bottom_q_r__k_d + _pd__4*d_z_b_q_r__k_d + _pd__5*d_z_b_q_th__k_d + _pd__6*d_z_b_q_thd__k_d + _x76*d_c_e_n__k_d
+    d_c_rad_z__q_r_td = (_pd__2*d_bottom_q_r__q_r_td + _pd__4*d_z_b_q_r__q_r_td + _pd__5*d_z_b_q_th__q_r_td
+        + _pd__6*d_z_b_q_thd__q_r_td + _x40*(-_x52*(-_x48*_x66 + _x49*_x71*q_r_td*q_thd_td) - _x64 - _x72)
+        + _x67 + _x76*d_c_e_n__q_r_td + _x77*d_E_ab__q_r_td)
+    d_c_rad_z__q_rd_td = (_pd__2*d_bottom_q_r__q_rd_td + _pd__4*d_z_b_q_r__q_rd_td
+        + _pd__5*d_z_b_q_th__q_rd_td + _pd__6*d_z_b_q_thd__q_rd_td + _x76*d_c_e_n__q_rd_td
+        + _x77*d_E_ab__q_rd_td)
+    d_c_rad_z__q_th_td = (_pd__2*d_bottom_q_r__q_th_td + _pd__4*d_z_b_q_r__q_th_td
+        + _pd__5*d_z_b_q_th__q_th_td + _pd__6*d_z_b_q_thd__q_th_td + _x49*_x75 + _x76*d_c_e_n__q_th_td
+        + _x77*d_E_ab__q_th_td)
+    d_c_rad_z__q_thd_td = (_pd__2*d_bottom_q_r__q_thd_td + _pd__4*d_z_b_q_r__q_thd_td
+        + _pd__5*d_z_b_q_th__q_thd_td + _pd__6*d_z_b_q_thd__q_thd_td - 2.0*_x49*_x50*_x74
+        + _x76*d_c_e_n__q_thd_td + _x77*d_E_ab__q_thd_td)
+    d_c_rad_z__k_c = (_pd__2*d_bottom_q_r__k_c + _pd__4*d_z_b_q_r__k_c + _pd__5*d_z_b_q_th__k_c
+        + _pd__6*d_z_b_q_thd__k_c + _x40*(-_x41 + 2.0*_x42*l0*m - _x44) + _x76*d_c_e_n__k_c
+        + _x77*d_E_ab__k_c)
+    d_c_rad_z__k_d = (_pd__2*d_bottom_q_r__k_d + _pd__4*d_z_b_q_r__k_d + _pd__5*d_z_b_q_th__k_d
+        + _pd__6*d_z_b_q_thd__k_d + _x76*d_c_e_n__k_d)
     _x78 = math.sqrt(_x36 + 1.0)
     c_Q0 = _x54*_x78 + z_b_q_th
     _x79 = (0.5)/_x78
@@ -576,7 +674,8 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _pd__9 = 1.0 - _x78
     d_c_Q0__q_r_td = _pd__7*d_bottom_q_r__q_r_td + _pd__8*d_c_e_n__q_r_td + _pd__9*d_z_b_q_th__q_r_td - _x81
     d_c_Q0__q_rd_td = _pd__7*d_bottom_q_r__q_rd_td + _pd__8*d_c_e_n__q_rd_td + _pd__9*d_z_b_q_th__q_rd_td
-    d_c_Q0__q_th_td = _pd__7*d_bottom_q_r__q_th_td + _pd__8*d_c_e_n__q_th_td + _pd__9*d_z_b_q_th__q_th_td + _x78
+    d_c_Q0__q_th_td = (_pd__7*d_bottom_q_r__q_th_td + _pd__8*d_c_e_n__q_th_td + _pd__9*d_z_b_q_th__q_th_td
+        + _x78)
     d_c_Q0__q_thd_td = _pd__7*d_bottom_q_r__q_thd_td + _pd__8*d_c_e_n__q_thd_td + _pd__9*d_z_b_q_th__q_thd_td
     d_c_Q0__k_c = _pd__7*d_bottom_q_r__k_c + _pd__8*d_c_e_n__k_c + _pd__9*d_z_b_q_th__k_c
     d_c_Q0__k_d = _pd__7*d_bottom_q_r__k_d + _pd__8*d_c_e_n__k_d + _pd__9*d_z_b_q_th__k_d
@@ -587,12 +686,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _pd__11 = -_x82
     _pd__12 = -_x73*_x77*_x78 + 2.0*m*z_b_q_r*z_b_q_thd
     _pd__13 = _x45*m - _x46*_x78
-    d_c_P0__q_r_td = _pd__10*d_bottom_q_r__q_r_td + _pd__11*d_c_e_n__q_r_td + _pd__12*d_z_b_q_r__q_r_td + _pd__13*d_z_b_q_thd__q_r_td + _x68*_x78*m*q_thd_td - _x83
-    d_c_P0__q_rd_td = _pd__10*d_bottom_q_r__q_rd_td + _pd__11*d_c_e_n__q_rd_td + _pd__12*d_z_b_q_r__q_rd_td + _pd__13*d_z_b_q_thd__q_rd_td
-    d_c_P0__q_th_td = _pd__10*d_bottom_q_r__q_th_td + _pd__11*d_c_e_n__q_th_td + _pd__12*d_z_b_q_r__q_th_td + _pd__13*d_z_b_q_thd__q_th_td
-    d_c_P0__q_thd_td = _pd__10*d_bottom_q_r__q_thd_td + _pd__11*d_c_e_n__q_thd_td + _pd__12*d_z_b_q_r__q_thd_td + _pd__13*d_z_b_q_thd__q_thd_td + _x50*_x78
-    d_c_P0__k_c = _pd__10*d_bottom_q_r__k_c + _pd__11*d_c_e_n__k_c + _pd__12*d_z_b_q_r__k_c + _pd__13*d_z_b_q_thd__k_c
-    d_c_P0__k_d = _pd__10*d_bottom_q_r__k_d + _pd__11*d_c_e_n__k_d + _pd__12*d_z_b_q_r__k_d + _pd__13*d_z_b_q_thd__k_d
+    d_c_P0__q_r_td = (_pd__10*d_bottom_q_r__q_r_td + _pd__11*d_c_e_n__q_r_td + _pd__12*d_z_b_q_r__q_r_td
+        + _pd__13*d_z_b_q_thd__q_r_td + _x68*_x78*m*q_thd_td - _x83)
+    d_c_P0__q_rd_td = (_pd__10*d_bottom_q_r__q_rd_td + _pd__11*d_c_e_n__q_rd_td + _pd__12*d_z_b_q_r__q_rd_td
+        + _pd__13*d_z_b_q_thd__q_rd_td)
+    d_c_P0__q_th_td = (_pd__10*d_bottom_q_r__q_th_td + _pd__11*d_c_e_n__q_th_td + _pd__12*d_z_b_q_r__q_th_td
+        + _pd__13*d_z_b_q_thd__q_th_td)
+    d_c_P0__q_thd_td = (_pd__10*d_bottom_q_r__q_thd_td + _pd__11*d_c_e_n__q_thd_td
+        + _pd__12*d_z_b_q_r__q_thd_td + _pd__13*d_z_b_q_thd__q_thd_td + _x50*_x78)
+    d_c_P0__k_c = (_pd__10*d_bottom_q_r__k_c + _pd__11*d_c_e_n__k_c + _pd__12*d_z_b_q_r__k_c
+        + _pd__13*d_z_b_q_thd__k_c)
+    d_c_P0__k_d = (_pd__10*d_bottom_q_r__k_d + _pd__11*d_c_e_n__k_d + _pd__12*d_z_b_q_r__k_d
+        + _pd__13*d_z_b_q_thd__k_d)
     _x84 = m/math.sqrt(_x58)
     _x85 = (_x58 > 0.0)
     c_T0 = ((-_x35*_x84) if _x85 else (0.0))
@@ -610,13 +715,21 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (c_e_n, c_Q0, c_P0, c_T0, d_c_e_n__q_r_td, d_c_e_n__q_rd_td, d_c_e_n__q_th_td, d_c_e_n__q_thd_td, d_c_e_n__k_c, d_c_e_n__k_d, d_c_Q0__q_r_td, d_c_Q0__q_rd_td, d_c_Q0__q_th_td, d_c_Q0__q_thd_td, d_c_Q0__k_c, d_c_Q0__k_d, d_c_P0__q_r_td, d_c_P0__q_rd_td, d_c_P0__q_th_td, d_c_P0__q_thd_td, d_c_P0__k_c, d_c_P0__k_d, d_c_T0__q_r_td, d_c_T0__q_rd_td, d_c_T0__q_th_td, d_c_T0__q_thd_td, d_c_T0__k_c, d_c_T0__k_d, )
+    _pki0 = (c_e_n, c_Q0, c_P0, c_T0, d_c_e_n__q_r_td, d_c_e_n__q_rd_td, d_c_e_n__q_th_td, d_c_e_n__q_thd_td,
+        d_c_e_n__k_c, d_c_e_n__k_d, d_c_Q0__q_r_td, d_c_Q0__q_rd_td, d_c_Q0__q_th_td, d_c_Q0__q_thd_td,
+        d_c_Q0__k_c, d_c_Q0__k_d, d_c_P0__q_r_td, d_c_P0__q_rd_td, d_c_P0__q_th_td, d_c_P0__q_thd_td,
+        d_c_P0__k_c, d_c_P0__k_d, d_c_T0__q_r_td, d_c_T0__q_rd_td, d_c_T0__q_th_td, d_c_T0__q_thd_td,
+        d_c_T0__k_c, d_c_T0__k_d, )
     _pk0 = _pki0
     c_steps = 0.0
     _conv0 = False
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
-        (c_e, c_Q, c_P, c_T, d_c_e__q_r_td, d_c_e__q_rd_td, d_c_e__q_th_td, d_c_e__q_thd_td, d_c_e__k_c, d_c_e__k_d, d_c_Q__q_r_td, d_c_Q__q_rd_td, d_c_Q__q_th_td, d_c_Q__q_thd_td, d_c_Q__k_c, d_c_Q__k_d, d_c_P__q_r_td, d_c_P__q_rd_td, d_c_P__q_th_td, d_c_P__q_thd_td, d_c_P__k_c, d_c_P__k_d, d_c_T__q_r_td, d_c_T__q_rd_td, d_c_T__q_th_td, d_c_T__q_thd_td, d_c_T__k_c, d_c_T__k_d, ) = _pk0
+        (c_e, c_Q, c_P, c_T, d_c_e__q_r_td, d_c_e__q_rd_td, d_c_e__q_th_td, d_c_e__q_thd_td, d_c_e__k_c,
+            d_c_e__k_d, d_c_Q__q_r_td, d_c_Q__q_rd_td, d_c_Q__q_th_td, d_c_Q__q_thd_td, d_c_Q__k_c,
+            d_c_Q__k_d, d_c_P__q_r_td, d_c_P__q_rd_td, d_c_P__q_th_td, d_c_P__q_thd_td, d_c_P__k_c,
+            d_c_P__k_d, d_c_T__q_r_td, d_c_T__q_rd_td, d_c_T__q_th_td, d_c_T__q_thd_td, d_c_T__k_c,
+            d_c_T__k_d, ) = _pk0
         if _conv0 or _it0 == _last0:
             break
         _x86 = c_e + q_r_td
@@ -636,12 +749,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _pd__16 = -2.0*_x88*c_P
         _pd__17 = _x86*_x95*math.sin(c_Q)
         _x97 = 2.0*m
-        _pd__18 = _x88*(4.0*E_ab*_x86*m - _x86*_x91*_x97*k_c - 6.0*_x87*_x93*_x94*g_s + 6.0*_x87*k_c*l0*m - 4.0*_x90*k_c*m) - 2.0*_x96/_x90
-        d_c_rad__q_r_td = _pd__16*d_c_P__q_r_td + _pd__17*d_c_Q__q_r_td + _pd__18*d_c_x__q_r_td + _x97*d_E_ab__q_r_td
-        d_c_rad__q_rd_td = _pd__16*d_c_P__q_rd_td + _pd__17*d_c_Q__q_rd_td + _pd__18*d_c_e__q_rd_td + _x97*d_E_ab__q_rd_td
-        d_c_rad__q_th_td = _pd__16*d_c_P__q_th_td + _pd__17*d_c_Q__q_th_td + _pd__18*d_c_e__q_th_td + _x97*d_E_ab__q_th_td
-        d_c_rad__q_thd_td = _pd__16*d_c_P__q_thd_td + _pd__17*d_c_Q__q_thd_td + _pd__18*d_c_e__q_thd_td + _x97*d_E_ab__q_thd_td
-        d_c_rad__k_c = _pd__16*d_c_P__k_c + _pd__17*d_c_Q__k_c + _pd__18*d_c_e__k_c + _x88*(-_x89 + 2.0*_x90*l0*m - _x92) + _x97*d_E_ab__k_c
+        _pd__18 = (_x88*(4.0*E_ab*_x86*m - _x86*_x91*_x97*k_c - 6.0*_x87*_x93*_x94*g_s + 6.0*_x87*k_c*l0*m
+            - 4.0*_x90*k_c*m) - 2.0*_x96/_x90)
+        d_c_rad__q_r_td = (_pd__16*d_c_P__q_r_td + _pd__17*d_c_Q__q_r_td + _pd__18*d_c_x__q_r_td
+            + _x97*d_E_ab__q_r_td)
+        d_c_rad__q_rd_td = (_pd__16*d_c_P__q_rd_td + _pd__17*d_c_Q__q_rd_td + _pd__18*d_c_e__q_rd_td
+            + _x97*d_E_ab__q_rd_td)
+        d_c_rad__q_th_td = (_pd__16*d_c_P__q_th_td + _pd__17*d_c_Q__q_th_td + _pd__18*d_c_e__q_th_td
+            + _x97*d_E_ab__q_th_td)
+        d_c_rad__q_thd_td = (_pd__16*d_c_P__q_thd_td + _pd__17*d_c_Q__q_thd_td + _pd__18*d_c_e__q_thd_td
+            + _x97*d_E_ab__q_thd_td)
+        d_c_rad__k_c = (_pd__16*d_c_P__k_c + _pd__17*d_c_Q__k_c + _pd__18*d_c_e__k_c + _x88*(-_x89
+            + 2.0*_x90*l0*m - _x92) + _x97*d_E_ab__k_c)
         d_c_rad__k_d = _pd__16*d_c_P__k_d + _pd__17*d_c_Q__k_d + _pd__18*d_c_e__k_d
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((c_rad > 0.0)):
@@ -727,10 +846,12 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _pd__27 = -_x115*c_wp*math.cos(c_Q)
         _pd__28 = _x111*_x113*_x114*c_wp*g_s
         _pd__29 = -_x116
-        d_c_P__next__q_r_td = _pd__27*d_c_Q__q_r_td + _pd__28*d_c_h__q_r_td + _pd__29*d_c_wp__q_r_td + 2.0*m*q_r_td*q_thd_td
+        d_c_P__next__q_r_td = (_pd__27*d_c_Q__q_r_td + _pd__28*d_c_h__q_r_td + _pd__29*d_c_wp__q_r_td
+            + 2.0*m*q_r_td*q_thd_td)
         d_c_P__next__q_rd_td = _pd__27*d_c_Q__q_rd_td + _pd__28*d_c_h__q_rd_td + _pd__29*d_c_wp__q_rd_td
         d_c_P__next__q_th_td = _pd__27*d_c_Q__q_th_td + _pd__28*d_c_h__q_th_td + _pd__29*d_c_wp__q_th_td
-        d_c_P__next__q_thd_td = _pd__27*d_c_Q__q_thd_td + _pd__28*d_c_h__q_thd_td + _pd__29*d_c_wp__q_thd_td + _x112
+        d_c_P__next__q_thd_td = (_pd__27*d_c_Q__q_thd_td + _pd__28*d_c_h__q_thd_td + _pd__29*d_c_wp__q_thd_td
+            + _x112)
         d_c_P__next__k_c = _pd__27*d_c_Q__k_c + _pd__28*d_c_h__k_c + _pd__29*d_c_wp__k_c
         d_c_P__next__k_d = _pd__27*d_c_Q__k_d + _pd__28*d_c_h__k_d + _pd__29*d_c_wp__k_d
         _x117 = _x109*m
@@ -752,8 +873,15 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _n0_9 = 4.0*d_c_e__k_d
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0)) and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
-        _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9, d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td, d_c_Q__next__k_c, d_c_Q__next__k_d, d_c_P__next__q_r_td, d_c_P__next__q_rd_td, d_c_P__next__q_th_td, d_c_P__next__q_thd_td, d_c_P__next__k_c, d_c_P__next__k_d, d_c_T__next__q_r_td, d_c_T__next__q_rd_td, d_c_T__next__q_th_td, d_c_T__next__q_thd_td, d_c_T__next__k_c, d_c_T__next__k_d, )
+        _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
+            d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
+            d_c_Q__next__k_c, d_c_Q__next__k_d, d_c_P__next__q_r_td, d_c_P__next__q_rd_td,
+            d_c_P__next__q_th_td, d_c_P__next__q_thd_td, d_c_P__next__k_c, d_c_P__next__k_d,
+            d_c_T__next__q_r_td, d_c_T__next__q_rd_td, d_c_T__next__q_th_td, d_c_T__next__q_thd_td,
+            d_c_T__next__k_c, d_c_T__next__k_d, )
         _pk0 = _pkn0
         c_steps += 1.0
     # bottom state (p_r = 0)
@@ -802,10 +930,14 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _pd__37 = ((2.0*_x127*bottom_q_r*bottom_q_thd) if _x125 else (0.0))
     _pd__38 = ((_x128) if _x125 else (0.0))
     _pd__39 = _x126
-    d_g_lo_q_thd__q_r_td = _pd__37*d_bottom_q_r__q_r_td + _pd__38*d_bottom_q_thd__q_r_td + _pd__39*d_z_lo_q_thd__q_r_td
-    d_g_lo_q_thd__q_rd_td = _pd__37*d_bottom_q_r__q_rd_td + _pd__38*d_bottom_q_thd__q_rd_td + _pd__39*d_z_lo_q_thd__q_rd_td
-    d_g_lo_q_thd__q_th_td = _pd__37*d_bottom_q_r__q_th_td + _pd__38*d_bottom_q_thd__q_th_td + _pd__39*d_z_lo_q_thd__q_th_td
-    d_g_lo_q_thd__q_thd_td = _pd__37*d_bottom_q_r__q_thd_td + _pd__38*d_bottom_q_thd__q_thd_td + _pd__39*d_z_lo_q_thd__q_thd_td
+    d_g_lo_q_thd__q_r_td = (_pd__37*d_bottom_q_r__q_r_td + _pd__38*d_bottom_q_thd__q_r_td
+        + _pd__39*d_z_lo_q_thd__q_r_td)
+    d_g_lo_q_thd__q_rd_td = (_pd__37*d_bottom_q_r__q_rd_td + _pd__38*d_bottom_q_thd__q_rd_td
+        + _pd__39*d_z_lo_q_thd__q_rd_td)
+    d_g_lo_q_thd__q_th_td = (_pd__37*d_bottom_q_r__q_th_td + _pd__38*d_bottom_q_thd__q_th_td
+        + _pd__39*d_z_lo_q_thd__q_th_td)
+    d_g_lo_q_thd__q_thd_td = (_pd__37*d_bottom_q_r__q_thd_td + _pd__38*d_bottom_q_thd__q_thd_td
+        + _pd__39*d_z_lo_q_thd__q_thd_td)
     d_g_lo_q_thd__k_c = _pd__37*d_bottom_q_r__k_c + _pd__38*d_bottom_q_thd__k_c + _pd__39*d_z_lo_q_thd__k_c
     d_g_lo_q_thd__k_d = _pd__37*d_bottom_q_r__k_d + _pd__38*d_bottom_q_thd__k_d + _pd__39*d_z_lo_q_thd__k_d
     # bottom below q_r_lo
@@ -860,7 +992,8 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _x164 = (0.5)*_x131
     _x165 = _x160 + _x164
     _x166 = -2.0*E_ba*_x165*m + 6.0*_x134*_x154 - 6.0*_x134*k_d*l0*m + _x137*_x158*k_d + _x138*_x165*k_d
-    _pd__41 = _x135*((0.5)*_x137*_x145*_x149*_x152*_x159*_x163*g_s - _x148*(_x158*bottom_q_r*bottom_q_thd + _x162) - _x166) + _x157
+    _pd__41 = (_x135*((0.5)*_x137*_x145*_x149*_x152*_x159*_x163*g_s - _x148*(_x158*bottom_q_r*bottom_q_thd
+        + _x162) - _x166) + _x157)
     _x167 = _x133*_x153*_x163
     _pd__42 = 2.0*_x167*(1.0 - _x146)
     _x168 = -_x140*_x145
@@ -873,35 +1006,58 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _pd__46 = -_x169*_x171
     _x172 = (0.25)*_pd__44
     _x173 = 2.0*m
-    d_d_rad_z__q_r_td = _pd__41*d_bottom_q_r__q_r_td + _pd__42*d_c_Q__q_r_td + _pd__43*d_bottom_q_thd__q_r_td + _pd__45*d_g_lo_q_th__q_r_td + _pd__46*d_g_lo_q_thd__q_r_td + _x172*d_d_e_n__q_r_td + _x173*d_E_ba__q_r_td
-    d_d_rad_z__q_rd_td = _pd__41*d_bottom_q_r__q_rd_td + _pd__42*d_c_Q__q_rd_td + _pd__43*d_bottom_q_thd__q_rd_td + _pd__45*d_g_lo_q_th__q_rd_td + _pd__46*d_g_lo_q_thd__q_rd_td + _x172*d_d_e_n__q_rd_td + _x173*d_E_ba__q_rd_td
-    d_d_rad_z__q_th_td = _pd__41*d_bottom_q_r__q_th_td + _pd__42*d_c_Q__q_th_td + _pd__43*d_bottom_q_thd__q_th_td + _pd__45*d_g_lo_q_th__q_th_td + _pd__46*d_g_lo_q_thd__q_th_td + _x172*d_d_e_n__q_th_td + _x173*d_E_ba__q_th_td
-    d_d_rad_z__q_thd_td = _pd__41*d_bottom_q_r__q_thd_td + _pd__42*d_c_Q__q_thd_td + _pd__43*d_bottom_q_thd__q_thd_td + _pd__45*d_g_lo_q_th__q_thd_td + _pd__46*d_g_lo_q_thd__q_thd_td + _x172*d_d_e_n__q_thd_td + _x173*d_E_ba__q_thd_td
-    d_d_rad_z__k_c = _pd__41*d_bottom_q_r__k_c + _pd__42*d_c_Q__k_c + _pd__43*d_bottom_q_thd__k_c + _pd__45*d_g_lo_q_th__k_c + _pd__46*d_g_lo_q_thd__k_c + _x172*d_d_e_n__k_c + _x173*d_E_ba__k_c
-    d_d_rad_z__k_d = _pd__41*d_bottom_q_r__k_d + _pd__42*d_c_Q__k_d + _pd__43*d_bottom_q_thd__k_d + _pd__45*d_g_lo_q_th__k_d + _pd__46*d_g_lo_q_thd__k_d + _x135*(-_x136 + 2.0*_x137*l0*m - _x139) + _x172*d_d_e_n__k_d + _x173*d_E_ba__k_d
+    d_d_rad_z__q_r_td = (_pd__41*d_bottom_q_r__q_r_td + _pd__42*d_c_Q__q_r_td + _pd__43*d_bottom_q_thd__q_r_td
+        + _pd__45*d_g_lo_q_th__q_r_td + _pd__46*d_g_lo_q_thd__q_r_td + _x172*d_d_e_n__q_r_td
+        + _x173*d_E_ba__q_r_td)
+    d_d_rad_z__q_rd_td = (_pd__41*d_bottom_q_r__q_rd_td + _pd__42*d_c_Q__q_rd_td
+        + _pd__43*d_bottom_q_thd__q_rd_td + _pd__45*d_g_lo_q_th__q_rd_td + _pd__46*d_g_lo_q_thd__q_rd_td
+        + _x172*d_d_e_n__q_rd_td + _x173*d_E_ba__q_rd_td)
+    d_d_rad_z__q_th_td = (_pd__41*d_bottom_q_r__q_th_td + _pd__42*d_c_Q__q_th_td
+        + _pd__43*d_bottom_q_thd__q_th_td + _pd__45*d_g_lo_q_th__q_th_td + _pd__46*d_g_lo_q_thd__q_th_td
+        + _x172*d_d_e_n__q_th_td + _x173*d_E_ba__q_th_td)
+    d_d_rad_z__q_thd_td = (_pd__41*d_bottom_q_r__q_thd_td + _pd__42*d_c_Q__q_thd_td
+        + _pd__43*d_bottom_q_thd__q_thd_td + _pd__45*d_g_lo_q_th__q_thd_td + _pd__46*d_g_lo_q_thd__q_thd_td
+        + _x172*d_d_e_n__q_thd_td + _x173*d_E_ba__q_thd_td)
+    d_d_rad_z__k_c = (_pd__41*d_bottom_q_r__k_c + _pd__42*d_c_Q__k_c + _pd__43*d_bottom_q_thd__k_c
+        + _pd__45*d_g_lo_q_th__k_c + _pd__46*d_g_lo_q_thd__k_c + _x172*d_d_e_n__k_c + _x173*d_E_ba__k_c)
+    d_d_rad_z__k_d = (_pd__41*d_bottom_q_r__k_d + _pd__42*d_c_Q__k_d + _pd__43*d_bottom_q_thd__k_d
+        + _pd__45*d_g_lo_q_th__k_d + _pd__46*d_g_lo_q_thd__k_d + _x135*(-_x136 + 2.0*_x137*l0*m - _x139)
+        + _x172*d_d_e_n__k_d + _x173*d_E_ba__k_d)
     d_Q0 = _x145*_x149 + bottom_q_th
     _pd__47 = _x150*_x159
     _pd__48 = 1.0 - _x145
     _x174 = (0.5)*_x170
     _pd__49 = _x149*_x174
     _pd__50 = _x145
-    d_d_Q0__q_r_td = _pd__47*d_bottom_q_r__q_r_td + _pd__48*d_c_Q__q_r_td + _pd__49*d_d_e_n__q_r_td + _pd__50*d_g_lo_q_th__q_r_td
-    d_d_Q0__q_rd_td = _pd__47*d_bottom_q_r__q_rd_td + _pd__48*d_c_Q__q_rd_td + _pd__49*d_d_e_n__q_rd_td + _pd__50*d_g_lo_q_th__q_rd_td
-    d_d_Q0__q_th_td = _pd__47*d_bottom_q_r__q_th_td + _pd__48*d_c_Q__q_th_td + _pd__49*d_d_e_n__q_th_td + _pd__50*d_g_lo_q_th__q_th_td
-    d_d_Q0__q_thd_td = _pd__47*d_bottom_q_r__q_thd_td + _pd__48*d_c_Q__q_thd_td + _pd__49*d_d_e_n__q_thd_td + _pd__50*d_g_lo_q_th__q_thd_td
-    d_d_Q0__k_c = _pd__47*d_bottom_q_r__k_c + _pd__48*d_c_Q__k_c + _pd__49*d_d_e_n__k_c + _pd__50*d_g_lo_q_th__k_c
-    d_d_Q0__k_d = _pd__47*d_bottom_q_r__k_d + _pd__48*d_c_Q__k_d + _pd__49*d_d_e_n__k_d + _pd__50*d_g_lo_q_th__k_d
+    d_d_Q0__q_r_td = (_pd__47*d_bottom_q_r__q_r_td + _pd__48*d_c_Q__q_r_td + _pd__49*d_d_e_n__q_r_td
+        + _pd__50*d_g_lo_q_th__q_r_td)
+    d_d_Q0__q_rd_td = (_pd__47*d_bottom_q_r__q_rd_td + _pd__48*d_c_Q__q_rd_td + _pd__49*d_d_e_n__q_rd_td
+        + _pd__50*d_g_lo_q_th__q_rd_td)
+    d_d_Q0__q_th_td = (_pd__47*d_bottom_q_r__q_th_td + _pd__48*d_c_Q__q_th_td + _pd__49*d_d_e_n__q_th_td
+        + _pd__50*d_g_lo_q_th__q_th_td)
+    d_d_Q0__q_thd_td = (_pd__47*d_bottom_q_r__q_thd_td + _pd__48*d_c_Q__q_thd_td + _pd__49*d_d_e_n__q_thd_td
+        + _pd__50*d_g_lo_q_th__q_thd_td)
+    d_d_Q0__k_c = (_pd__47*d_bottom_q_r__k_c + _pd__48*d_c_Q__k_c + _pd__49*d_d_e_n__k_c
+        + _pd__50*d_g_lo_q_th__k_c)
+    d_d_Q0__k_d = (_pd__47*d_bottom_q_r__k_d + _pd__48*d_c_Q__k_d + _pd__49*d_d_e_n__k_d
+        + _pd__50*d_g_lo_q_th__k_d)
     d_P0 = _x141 + _x143*_x145
     _pd__51 = _x161 + _x162
     _pd__52 = _x140 + _x168
     _pd__53 = _x143*_x174
     _pd__54 = _x171
-    d_d_P0__q_r_td = _pd__51*d_bottom_q_r__q_r_td + _pd__52*d_bottom_q_thd__q_r_td + _pd__53*d_d_e_n__q_r_td + _pd__54*d_g_lo_q_thd__q_r_td
-    d_d_P0__q_rd_td = _pd__51*d_bottom_q_r__q_rd_td + _pd__52*d_bottom_q_thd__q_rd_td + _pd__53*d_d_e_n__q_rd_td + _pd__54*d_g_lo_q_thd__q_rd_td
-    d_d_P0__q_th_td = _pd__51*d_bottom_q_r__q_th_td + _pd__52*d_bottom_q_thd__q_th_td + _pd__53*d_d_e_n__q_th_td + _pd__54*d_g_lo_q_thd__q_th_td
-    d_d_P0__q_thd_td = _pd__51*d_bottom_q_r__q_thd_td + _pd__52*d_bottom_q_thd__q_thd_td + _pd__53*d_d_e_n__q_thd_td + _pd__54*d_g_lo_q_thd__q_thd_td
-    d_d_P0__k_c = _pd__51*d_bottom_q_r__k_c + _pd__52*d_bottom_q_thd__k_c + _pd__53*d_d_e_n__k_c + _pd__54*d_g_lo_q_thd__k_c
-    d_d_P0__k_d = _pd__51*d_bottom_q_r__k_d + _pd__52*d_bottom_q_thd__k_d + _pd__53*d_d_e_n__k_d + _pd__54*d_g_lo_q_thd__k_d
+    d_d_P0__q_r_td = (_pd__51*d_bottom_q_r__q_r_td + _pd__52*d_bottom_q_thd__q_r_td + _pd__53*d_d_e_n__q_r_td
+        + _pd__54*d_g_lo_q_thd__q_r_td)
+    d_d_P0__q_rd_td = (_pd__51*d_bottom_q_r__q_rd_td + _pd__52*d_bottom_q_thd__q_rd_td
+        + _pd__53*d_d_e_n__q_rd_td + _pd__54*d_g_lo_q_thd__q_rd_td)
+    d_d_P0__q_th_td = (_pd__51*d_bottom_q_r__q_th_td + _pd__52*d_bottom_q_thd__q_th_td
+        + _pd__53*d_d_e_n__q_th_td + _pd__54*d_g_lo_q_thd__q_th_td)
+    d_d_P0__q_thd_td = (_pd__51*d_bottom_q_r__q_thd_td + _pd__52*d_bottom_q_thd__q_thd_td
+        + _pd__53*d_d_e_n__q_thd_td + _pd__54*d_g_lo_q_thd__q_thd_td)
+    d_d_P0__k_c = (_pd__51*d_bottom_q_r__k_c + _pd__52*d_bottom_q_thd__k_c + _pd__53*d_d_e_n__k_c
+        + _pd__54*d_g_lo_q_thd__k_c)
+    d_d_P0__k_d = (_pd__51*d_bottom_q_r__k_d + _pd__52*d_bottom_q_thd__k_d + _pd__53*d_d_e_n__k_d
+        + _pd__54*d_g_lo_q_thd__k_d)
     _x175 = m/math.sqrt(_x156)
     _x176 = (_x156 > 0.0)
     d_T0 = ((_x131*_x175 + t_bottom) if _x176 else (t_bottom))
@@ -919,13 +1075,21 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki1 = (d_e_n, d_Q0, d_P0, d_T0, d_d_e_n__q_r_td, d_d_e_n__q_rd_td, d_d_e_n__q_th_td, d_d_e_n__q_thd_td, d_d_e_n__k_c, d_d_e_n__k_d, d_d_Q0__q_r_td, d_d_Q0__q_rd_td, d_d_Q0__q_th_td, d_d_Q0__q_thd_td, d_d_Q0__k_c, d_d_Q0__k_d, d_d_P0__q_r_td, d_d_P0__q_rd_td, d_d_P0__q_th_td, d_d_P0__q_thd_td, d_d_P0__k_c, d_d_P0__k_d, d_d_T0__q_r_td, d_d_T0__q_rd_td, d_d_T0__q_th_td, d_d_T0__q_thd_td, d_d_T0__k_c, d_d_T0__k_d, )
+    _pki1 = (d_e_n, d_Q0, d_P0, d_T0, d_d_e_n__q_r_td, d_d_e_n__q_rd_td, d_d_e_n__q_th_td, d_d_e_n__q_thd_td,
+        d_d_e_n__k_c, d_d_e_n__k_d, d_d_Q0__q_r_td, d_d_Q0__q_rd_td, d_d_Q0__q_th_td, d_d_Q0__q_thd_td,
+        d_d_Q0__k_c, d_d_Q0__k_d, d_d_P0__q_r_td, d_d_P0__q_rd_td, d_d_P0__q_th_td, d_d_P0__q_thd_td,
+        d_d_P0__k_c, d_d_P0__k_d, d_d_T0__q_r_td, d_d_T0__q_rd_td, d_d_T0__q_th_td, d_d_T0__q_thd_td,
+        d_d_T0__k_c, d_d_T0__k_d, )
     _pk1 = _pki1
     d_steps = 0.0
     _conv1 = False
     _last1 = max(int(iterations), 0)
     for _it1 in range(_last1 + 1):
-        (d_e, d_Q, d_P, d_T, d_d_e__q_r_td, d_d_e__q_rd_td, d_d_e__q_th_td, d_d_e__q_thd_td, d_d_e__k_c, d_d_e__k_d, d_d_Q__q_r_td, d_d_Q__q_rd_td, d_d_Q__q_th_td, d_d_Q__q_thd_td, d_d_Q__k_c, d_d_Q__k_d, d_d_P__q_r_td, d_d_P__q_rd_td, d_d_P__q_th_td, d_d_P__q_thd_td, d_d_P__k_c, d_d_P__k_d, d_d_T__q_r_td, d_d_T__q_rd_td, d_d_T__q_th_td, d_d_T__q_thd_td, d_d_T__k_c, d_d_T__k_d, ) = _pk1
+        (d_e, d_Q, d_P, d_T, d_d_e__q_r_td, d_d_e__q_rd_td, d_d_e__q_th_td, d_d_e__q_thd_td, d_d_e__k_c,
+            d_d_e__k_d, d_d_Q__q_r_td, d_d_Q__q_rd_td, d_d_Q__q_th_td, d_d_Q__q_thd_td, d_d_Q__k_c,
+            d_d_Q__k_d, d_d_P__q_r_td, d_d_P__q_rd_td, d_d_P__q_th_td, d_d_P__q_thd_td, d_d_P__k_c,
+            d_d_P__k_d, d_d_T__q_r_td, d_d_T__q_rd_td, d_d_T__q_th_td, d_d_T__q_thd_td, d_d_T__k_c,
+            d_d_T__k_d, ) = _pk1
         if _conv1 or _it1 == _last1:
             break
         _x177 = bottom_q_r + d_e
@@ -950,13 +1114,19 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _pd__57 = -2.0*_x179*d_P
         _pd__58 = _x177*_x186*math.sin(d_Q)
         _x188 = 2.0*m
-        _pd__59 = _x179*(4.0*E_ba*_x177*m - _x177*_x182*_x188*k_d - 6.0*_x178*_x184*_x185*g_s + 6.0*_x178*k_d*l0*m - 4.0*_x181*k_d*m) - 2.0*_x187/_x181
-        d_d_rad__q_r_td = _pd__57*d_d_P__q_r_td + _pd__58*d_d_Q__q_r_td + _pd__59*d_d_x__q_r_td + _x188*d_E_ba__q_r_td
-        d_d_rad__q_rd_td = _pd__57*d_d_P__q_rd_td + _pd__58*d_d_Q__q_rd_td + _pd__59*d_d_x__q_rd_td + _x188*d_E_ba__q_rd_td
-        d_d_rad__q_th_td = _pd__57*d_d_P__q_th_td + _pd__58*d_d_Q__q_th_td + _pd__59*d_d_x__q_th_td + _x188*d_E_ba__q_th_td
-        d_d_rad__q_thd_td = _pd__57*d_d_P__q_thd_td + _pd__58*d_d_Q__q_thd_td + _pd__59*d_d_x__q_thd_td + _x188*d_E_ba__q_thd_td
+        _pd__59 = (_x179*(4.0*E_ba*_x177*m - _x177*_x182*_x188*k_d - 6.0*_x178*_x184*_x185*g_s
+            + 6.0*_x178*k_d*l0*m - 4.0*_x181*k_d*m) - 2.0*_x187/_x181)
+        d_d_rad__q_r_td = (_pd__57*d_d_P__q_r_td + _pd__58*d_d_Q__q_r_td + _pd__59*d_d_x__q_r_td
+            + _x188*d_E_ba__q_r_td)
+        d_d_rad__q_rd_td = (_pd__57*d_d_P__q_rd_td + _pd__58*d_d_Q__q_rd_td + _pd__59*d_d_x__q_rd_td
+            + _x188*d_E_ba__q_rd_td)
+        d_d_rad__q_th_td = (_pd__57*d_d_P__q_th_td + _pd__58*d_d_Q__q_th_td + _pd__59*d_d_x__q_th_td
+            + _x188*d_E_ba__q_th_td)
+        d_d_rad__q_thd_td = (_pd__57*d_d_P__q_thd_td + _pd__58*d_d_Q__q_thd_td + _pd__59*d_d_x__q_thd_td
+            + _x188*d_E_ba__q_thd_td)
         d_d_rad__k_c = _pd__57*d_d_P__k_c + _pd__58*d_d_Q__k_c + _pd__59*d_d_x__k_c + _x188*d_E_ba__k_c
-        d_d_rad__k_d = _pd__57*d_d_P__k_d + _pd__58*d_d_Q__k_d + _pd__59*d_d_x__k_d + _x179*(-_x180 + 2.0*_x181*l0*m - _x183) + _x188*d_E_ba__k_d
+        d_d_rad__k_d = (_pd__57*d_d_P__k_d + _pd__58*d_d_Q__k_d + _pd__59*d_d_x__k_d + _x179*(-_x180
+            + 2.0*_x181*l0*m - _x183) + _x188*d_E_ba__k_d)
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
             return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -1027,10 +1197,14 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _x202 = _x200**2
         _pd__67 = -_x202*d_P*d_wq
         _pd__68 = _x200*d_P
-        d_d_Q__next__q_r_td = _pd__66*d_d_P__q_r_td + _pd__67*d_d_h__q_r_td + _pd__68*d_d_wq__q_r_td + d_c_Q__q_r_td
-        d_d_Q__next__q_rd_td = _pd__66*d_d_P__q_rd_td + _pd__67*d_d_h__q_rd_td + _pd__68*d_d_wq__q_rd_td + d_c_Q__q_rd_td
-        d_d_Q__next__q_th_td = _pd__66*d_d_P__q_th_td + _pd__67*d_d_h__q_th_td + _pd__68*d_d_wq__q_th_td + d_c_Q__q_th_td
-        d_d_Q__next__q_thd_td = _pd__66*d_d_P__q_thd_td + _pd__67*d_d_h__q_thd_td + _pd__68*d_d_wq__q_thd_td + d_c_Q__q_thd_td
+        d_d_Q__next__q_r_td = (_pd__66*d_d_P__q_r_td + _pd__67*d_d_h__q_r_td + _pd__68*d_d_wq__q_r_td
+            + d_c_Q__q_r_td)
+        d_d_Q__next__q_rd_td = (_pd__66*d_d_P__q_rd_td + _pd__67*d_d_h__q_rd_td + _pd__68*d_d_wq__q_rd_td
+            + d_c_Q__q_rd_td)
+        d_d_Q__next__q_th_td = (_pd__66*d_d_P__q_th_td + _pd__67*d_d_h__q_th_td + _pd__68*d_d_wq__q_th_td
+            + d_c_Q__q_th_td)
+        d_d_Q__next__q_thd_td = (_pd__66*d_d_P__q_thd_td + _pd__67*d_d_h__q_thd_td + _pd__68*d_d_wq__q_thd_td
+            + d_c_Q__q_thd_td)
         d_d_Q__next__k_c = _pd__66*d_d_P__k_c + _pd__67*d_d_h__k_c + _pd__68*d_d_wq__k_c + d_c_Q__k_c
         d_d_Q__next__k_d = _pd__66*d_d_P__k_d + _pd__67*d_d_h__k_d + _pd__68*d_d_wq__k_d + d_c_Q__k_d
         _x203 = bottom_q_r**2*m
@@ -1044,12 +1218,18 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _pd__71 = _x206*d_wp*math.cos(d_Q)
         _pd__72 = -_x202*_x204*_x205*d_wp*g_s
         _pd__73 = _x207
-        d_d_P__next__q_r_td = _pd__69*d_bottom_q_r__q_r_td + _pd__70*d_bottom_q_thd__q_r_td + _pd__71*d_d_Q__q_r_td + _pd__72*d_d_h__q_r_td + _pd__73*d_d_wp__q_r_td
-        d_d_P__next__q_rd_td = _pd__69*d_bottom_q_r__q_rd_td + _pd__70*d_bottom_q_thd__q_rd_td + _pd__71*d_d_Q__q_rd_td + _pd__72*d_d_h__q_rd_td + _pd__73*d_d_wp__q_rd_td
-        d_d_P__next__q_th_td = _pd__69*d_bottom_q_r__q_th_td + _pd__70*d_bottom_q_thd__q_th_td + _pd__71*d_d_Q__q_th_td + _pd__72*d_d_h__q_th_td + _pd__73*d_d_wp__q_th_td
-        d_d_P__next__q_thd_td = _pd__69*d_bottom_q_r__q_thd_td + _pd__70*d_bottom_q_thd__q_thd_td + _pd__71*d_d_Q__q_thd_td + _pd__72*d_d_h__q_thd_td + _pd__73*d_d_wp__q_thd_td
-        d_d_P__next__k_c = _pd__69*d_bottom_q_r__k_c + _pd__70*d_bottom_q_thd__k_c + _pd__71*d_d_Q__k_c + _pd__72*d_d_h__k_c + _pd__73*d_d_wp__k_c
-        d_d_P__next__k_d = _pd__69*d_bottom_q_r__k_d + _pd__70*d_bottom_q_thd__k_d + _pd__71*d_d_Q__k_d + _pd__72*d_d_h__k_d + _pd__73*d_d_wp__k_d
+        d_d_P__next__q_r_td = (_pd__69*d_bottom_q_r__q_r_td + _pd__70*d_bottom_q_thd__q_r_td
+            + _pd__71*d_d_Q__q_r_td + _pd__72*d_d_h__q_r_td + _pd__73*d_d_wp__q_r_td)
+        d_d_P__next__q_rd_td = (_pd__69*d_bottom_q_r__q_rd_td + _pd__70*d_bottom_q_thd__q_rd_td
+            + _pd__71*d_d_Q__q_rd_td + _pd__72*d_d_h__q_rd_td + _pd__73*d_d_wp__q_rd_td)
+        d_d_P__next__q_th_td = (_pd__69*d_bottom_q_r__q_th_td + _pd__70*d_bottom_q_thd__q_th_td
+            + _pd__71*d_d_Q__q_th_td + _pd__72*d_d_h__q_th_td + _pd__73*d_d_wp__q_th_td)
+        d_d_P__next__q_thd_td = (_pd__69*d_bottom_q_r__q_thd_td + _pd__70*d_bottom_q_thd__q_thd_td
+            + _pd__71*d_d_Q__q_thd_td + _pd__72*d_d_h__q_thd_td + _pd__73*d_d_wp__q_thd_td)
+        d_d_P__next__k_c = (_pd__69*d_bottom_q_r__k_c + _pd__70*d_bottom_q_thd__k_c + _pd__71*d_d_Q__k_c
+            + _pd__72*d_d_h__k_c + _pd__73*d_d_wp__k_c)
+        d_d_P__next__k_d = (_pd__69*d_bottom_q_r__k_d + _pd__70*d_bottom_q_thd__k_d + _pd__71*d_d_Q__k_d
+            + _pd__72*d_d_h__k_d + _pd__73*d_d_wp__k_d)
         _x208 = _x200*m
         d_T__next = _x208*d_e_next + t_bottom
         _pd__74 = _x208
@@ -1069,8 +1249,15 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
         _n1_9 = 4.0*d_d_e__k_d
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv1 = 0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0)) and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
-        _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9, d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td, d_d_Q__next__k_c, d_d_Q__next__k_d, d_d_P__next__q_r_td, d_d_P__next__q_rd_td, d_d_P__next__q_th_td, d_d_P__next__q_thd_td, d_d_P__next__k_c, d_d_P__next__k_d, d_d_T__next__q_r_td, d_d_T__next__q_rd_td, d_d_T__next__q_th_td, d_d_T__next__q_thd_td, d_d_T__next__k_c, d_d_T__next__k_d, )
+        _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
+            d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
+            d_d_Q__next__k_c, d_d_Q__next__k_d, d_d_P__next__q_r_td, d_d_P__next__q_rd_td,
+            d_d_P__next__q_th_td, d_d_P__next__q_thd_td, d_d_P__next__k_c, d_d_P__next__k_d,
+            d_d_T__next__q_r_td, d_d_T__next__q_rd_td, d_d_T__next__q_th_td, d_d_T__next__q_thd_td,
+            d_d_T__next__k_c, d_d_T__next__k_d, )
         _pk1 = _pkn1
         d_steps += 1.0
     # (45) corrected: p_r of the iterate at q_r_lo
@@ -1080,7 +1267,8 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     _x213 = q_r_lo**3
     _x214 = _x210*l0**2*m
     _x215 = 2.0*g_s*m**2
-    rad_lo = _x211*(2.0*E_ba*_x210*m - _x212*k_d - _x213*_x215*math.cos(d_Q) + 2.0*_x213*k_d*l0*m - _x214*k_d - d_P**2)
+    rad_lo = (_x211*(2.0*E_ba*_x210*m - _x212*k_d - _x213*_x215*math.cos(d_Q) + 2.0*_x213*k_d*l0*m - _x214*k_d
+        - d_P**2))
     _pd__76 = -2.0*_x211*d_P
     _pd__77 = _x215*q_r_lo*math.sin(d_Q)
     _x216 = 2.0*m
@@ -1089,7 +1277,8 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     d_rad_lo__q_th_td = _pd__76*d_d_P__q_th_td + _pd__77*d_d_Q__q_th_td + _x216*d_E_ba__q_th_td
     d_rad_lo__q_thd_td = _pd__76*d_d_P__q_thd_td + _pd__77*d_d_Q__q_thd_td + _x216*d_E_ba__q_thd_td
     d_rad_lo__k_c = _pd__76*d_d_P__k_c + _pd__77*d_d_Q__k_c + _x216*d_E_ba__k_c
-    d_rad_lo__k_d = _pd__76*d_d_P__k_d + _pd__77*d_d_Q__k_d + _x211*(-_x212 + 2.0*_x213*l0*m - _x214) + _x216*d_E_ba__k_d
+    d_rad_lo__k_d = (_pd__76*d_d_P__k_d + _pd__77*d_d_Q__k_d + _x211*(-_x212 + 2.0*_x213*l0*m - _x214)
+        + _x216*d_E_ba__k_d)
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
         return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -1158,22 +1347,58 @@ def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, 
     d_liftoff_q_th__k_d = d_d_Q__k_d
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
         return _NAN70 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td,
+        d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td,
+        d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c,
+        d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td,
+        d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td,
+        d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c,
+        d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td,
+        d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c,
+        d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td,
+        d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth,
+    bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
+    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
+    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
+    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
+    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
+    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
+    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c,
+            k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1248,10 +1473,14 @@ def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
-    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, variant, iterations, zeroth, bottom_length):
+    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
@@ -1270,8 +1499,12 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         apex_height: next apex height above the ground [m]
@@ -1283,57 +1516,108 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex, q_th_td, k_c, k_d (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 119
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
         return _NAN54 + (STATUS_INVALID_INPUT,)
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
     if _c0[20] != STATUS_OK:
         return _NAN54 + (_c0[20],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, _, _, _, _j_td_q_rd__b_y_apex, _j_td_q_rd__b_xd_apex,
+        _j_td_q_rd__q_th_td, _, _, _j_td_q_th__q_th_td, _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex,
+        _j_td_q_thd__q_th_td, _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _) = _c0
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _c1 = iterative_report_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
+    _c1 = (iterative_report_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length))
     if _c1[70] != STATUS_OK:
         return _NAN54 + (_c1[70],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _) = _c1
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _,
+        _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c,
+        _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
+        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
+        _) = _c1
     # chain rule through iterative_report_stance
-    d_t_stance__b_y_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex
-    d_t_stance__b_xd_apex = _j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_t_stance__q_th_td = _j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_rd__b_y_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_rd__b_xd_apex = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_rd__q_th_td = _j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_th__b_y_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_th__b_xd_apex = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_th__q_th_td = _j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td
-    d_liftoff_q_thd__b_y_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex
-    d_liftoff_q_thd__b_xd_apex = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex
-    d_liftoff_q_thd__q_th_td = _j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
     if _c2[16] != STATUS_OK:
         return _NAN54 + (_c2[16],)
-    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _) = _c2
+    (apex_height, apex_speed, t_ascent, _, _j_apex_height__q_rd, _j_apex_height__q_th, _j_apex_height__q_thd,
+        _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_rd, _j_t_ascent__q_th,
+        _j_t_ascent__q_thd, _, _, _, _) = _c2
     # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_height__b_xd_apex = _j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_height__q_th_td = _j_apex_height__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_height__k_c = _j_apex_height__q_rd*_j_liftoff_q_rd__k_c + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c
-    d_apex_height__k_d = _j_apex_height__q_rd*_j_liftoff_q_rd__k_d + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d
-    d_apex_speed__b_y_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex
-    d_apex_speed__b_xd_apex = _j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_apex_speed__q_th_td = _j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td
-    d_apex_speed__k_c = _j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c
-    d_apex_speed__k_d = _j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d
-    d_t_ascent__b_y_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex
-    d_t_ascent__b_xd_apex = _j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex
-    d_t_ascent__q_th_td = _j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td
-    d_t_ascent__k_c = _j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd
-    d_t_ascent__k_d = _j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
+    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
     d_t_descent__b_xd_apex = 0.0
@@ -1355,22 +1639,50 @@ def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, m, l0, k
     d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by their users: runtime/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
         return _NAN54 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+        d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+        d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex,
+        d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d,
+        d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d,
+        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d,
+        d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c,
+        d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex,
+        d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
+        STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
+    zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 54)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+    d_apex_height__q_th_td, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex,
+    d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__k_c, d_apex_speed__k_d,
+    d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__k_c, d_t_descent__k_d,
+    d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__k_c, d_t_stance__k_d,
+    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__k_c, d_t_ascent__k_d,
+    d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__k_c,
+    d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+    d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex,
+    d_liftoff_q_th__q_th_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
+    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d,
+            g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

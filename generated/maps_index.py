@@ -4,6 +4,7 @@
 # Template:  derive/templates/maps_index.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """The index of every declared map and of the names the kernels share (plain data, no numba).
 

@@ -4,6 +4,7 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2)."""
 
@@ -112,7 +113,10 @@ def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     d_q_rdd_d_k = _x0*l0 - _x0*q_r
     d_q_thd_d_k = 0.0
     d_q_thdd_d_k = 0.0
-    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd, d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd, d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k, d_q_thd_d_k, d_q_thdd_d_k)
+    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd,
+        d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd,
+        d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k,
+        d_q_thd_d_k, d_q_thdd_d_k)
 
 
 @njit(cache=True, error_model="numpy")

@@ -303,6 +303,63 @@ def test_pinned_tool_versions_used():
     assert generate.VERSIONS["sympy"] == sp.__version__
 
 
+def test_no_generated_line_is_longer_than_the_limit(built):
+    """The limit the templates state (derive/wrap.py, the project's line length): every generated
+    Python line, code, comments and docstrings, is at most 110 characters."""
+    from slipmaps.derive.wrap import LIMIT
+
+    assert LIMIT == 110
+    for rel, text in built.items():
+        if rel.endswith(".py"):
+            long = [(i + 1, len(ln)) for i, ln in enumerate(text.splitlines()) if len(ln) > LIMIT]
+            assert not long, (rel, long[:5])
+
+
+def _without_docstrings(source: str) -> str:
+    import ast
+
+    tree = ast.parse(source)
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if isinstance(body, list) and body and isinstance(body[0], ast.Expr):
+            if isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str):
+                body[0].value.value = ""
+    return ast.dump(tree)
+
+
+def test_line_breaking_keeps_the_code():
+    """derive/wrap.py breaks lines between tokens inside brackets (or puts a right-hand side in
+    parentheses): the statements' syntax trees are unchanged, the result is its own fixed point."""
+    from slipmaps.derive.wrap import wrap
+
+    terms = " + ".join(f"{i}.5*_x{i}*math.sqrt(q_r_td)" for i in range(40))
+    source = "\n".join(
+        [
+            "from .status import " + ", ".join(f"STATUS_NAME_{i}" for i in range(20)),
+            "",
+            "",
+            "def f(" + ", ".join(f"argument_{i}" for i in range(30)) + "):",
+            '    """' + " ".join(["word"] * 60) + "',",
+            "",
+            "    Returns a tuple:",
+            "        name: " + " ".join(["text"] * 50),
+            '    """',
+            "    # " + " ".join(["comment"] * 30),
+            f"    y = {terms}",
+            f"    if not (math.isfinite(y) and {terms} > 0.0):",
+            "        return _NAN3 + (STATUS_FALL,)",
+            "    (" + ", ".join(f"a{i}" for i in range(40)) + ", _) = _c0",
+            "    return (" + ", ".join(f"a{i}" for i in range(40)) + ", STATUS_OK)",
+            "",
+        ]
+    )
+    out = wrap(source)
+    assert max(map(len, out.splitlines())) <= 110
+    assert _without_docstrings(out) == _without_docstrings(source)
+    assert wrap(out) == out
+    assert len(out.splitlines()) < 2 * len(source) / 110 + len(source.splitlines())
+
+
 def test_docs_table_header(built):
     for rel in ("docs/equations.md", "docs/maps.md"):
         first = built[rel].splitlines()[0]
