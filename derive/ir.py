@@ -208,7 +208,38 @@ class Switch:
     comment: str = ""
 
 
-Step = Stage | Call | Iterate | Switch
+@dataclass(frozen=True)
+class Store:
+    """Tangents into the kernel's direction array ``_T`` (derive/tangent.py): ``_T[row, j] =
+    values[j]`` for every direction ``j``."""
+
+    row: int
+    values: tuple[sp.Basic, ...]
+
+
+@dataclass(frozen=True)
+class Load:
+    """Tangents out of the kernel's direction array: ``names[j] = _T[row, j]`` for every direction."""
+
+    row: int
+    names: tuple[sp.Symbol, ...]
+
+
+@dataclass(frozen=True)
+class Directions:
+    """Steps run once per direction ``j`` of a derivative kernel (its tangent code inside a loop,
+    written once instead of once per direction): each read binds a name to ``_T[row, j]``, the
+    stages compute, each write stores an expression in ``_T[row, j]``. Names defined inside are not
+    visible after."""
+
+    n: int
+    reads: tuple[tuple[sp.Symbol, int], ...]
+    steps: tuple[Stage, ...]
+    writes: tuple[tuple[sp.Basic, int], ...]
+    comment: str = ""
+
+
+Step = Stage | Call | Iterate | Switch | Store | Load | Directions
 
 
 @dataclass(frozen=True)

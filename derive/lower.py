@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .ir import Call, Guard, Iterate, Kernel, Stage, Switch
+from .ir import Call, Directions, Guard, Iterate, Kernel, Load, Stage, Store, Switch
 from .printer import to_code
 
 #: A call binding at least this many outputs binds them by one tuple unpacking.
@@ -46,7 +46,9 @@ def _names(expr) -> set[str]:
 
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
-_GENERATED_NAME = re.compile(r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+)|STATUS_\w+")
+_GENERATED_NAME = re.compile(
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+)|STATUS_\w+"
+)
 _TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
 
 
@@ -85,6 +87,10 @@ class _Ctx:
     callees: set[tuple[str, str]] = field(default_factory=set)
     #: the status codes the kernel's code names (imported from generated/status.py)
     statuses: set[str] = field(default_factory=set)
+    #: the direction array ``_T``: its rows (the largest used + 1) and directions (columns)
+    rows: int = 0
+    directions: int = 0
+    n_dir_loops: int = 0
 
     def push(self) -> None:
         self.scope.frames.append(set())
@@ -356,6 +362,80 @@ def _lower_switch(ctx: _Ctx, sw: Switch, idx: str) -> list[dict]:
     return nodes
 
 
+def _directions(ctx: _Ctx, n: int, row: int, where: str) -> None:
+    if ctx.directions and ctx.directions != n:
+        raise LoweringError(ctx.where(f"{where}: {n} directions, the kernel has {ctx.directions}"))
+    ctx.directions = n
+    ctx.rows = max(ctx.rows, row + 1)
+
+
+def _lower_store(ctx: _Ctx, st: Store, idx: str) -> list[dict]:
+    where = f"step {idx} (store in row {st.row})"
+    _directions(ctx, len(st.values), st.row, where)
+    for e in st.values:
+        ctx.require(e, where)
+    return [{"kind": "store", "row": st.row, "codes": [to_code(e) for e in st.values]}]
+
+
+def _lower_load(ctx: _Ctx, ld: Load, idx: str) -> list[dict]:
+    where = f"step {idx} (load of row {ld.row})"
+    _directions(ctx, len(ld.names), ld.row, where)
+    for s in ld.names:
+        ctx.scope.define(s.name, ctx.where(where))
+    return [{"kind": "load", "row": ld.row, "names": [s.name for s in ld.names]}]
+
+
+def _lower_directions(ctx: _Ctx, d: Directions, idx: str) -> list[dict]:
+    where = f"step {idx} (per direction)"
+    for _, row in (*d.reads, *d.writes):
+        _directions(ctx, d.n, row, where)
+    ctx.push()
+    for s, _ in d.reads:
+        ctx.scope.define(s.name, ctx.where(where))
+    body = _lower_steps(ctx, d.steps, f"{idx}.")
+    for e, row in d.writes:
+        ctx.require(e, f"{where}, write of row {row}")
+    ctx.pop()
+    j = f"_j{ctx.n_dir_loops}"
+    ctx.n_dir_loops += 1
+    nodes = [{"kind": "comment", "text": d.comment}] if d.comment else []
+    nodes.append(
+        {
+            "kind": "directions",
+            "j": j,
+            "n": d.n,
+            "reads": [{"name": s.name, "row": row} for s, row in d.reads],
+            "body": body,
+            "writes": [{"code": to_code(e), "row": row} for e, row in d.writes],
+        }
+    )
+    return nodes
+
+
+def _compact_rows(nodes: list[dict]) -> int:
+    """Renumber the direction array's rows the kernel uses 0, 1, ... in order of first use (a
+    derivative kernel's rows are numbered across the kernels outlined from it); their number."""
+    order: dict[int, int] = {}
+
+    def walk(ns) -> None:
+        for n in ns:
+            if n["kind"] in ("store", "load"):
+                n["row"] = order.setdefault(n["row"], len(order))
+            elif n["kind"] == "directions":
+                for rw in n["reads"] + n["writes"]:
+                    rw["row"] = order.setdefault(rw["row"], len(order))
+                walk(n["body"])
+            elif n["kind"] == "loop":
+                walk(n["evaluate"])
+                walk(n["body"])
+            elif n["kind"] == "switch":
+                for c in n["cases"]:
+                    walk(c["body"])
+
+    walk(nodes)
+    return len(order)
+
+
 def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
     nodes: list[dict] = []
     for i, step in enumerate(steps):
@@ -368,6 +448,12 @@ def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
             nodes += _lower_iterate(ctx, step, idx)
         elif isinstance(step, Switch):
             nodes += _lower_switch(ctx, step, idx)
+        elif isinstance(step, Store):
+            nodes += _lower_store(ctx, step, idx)
+        elif isinstance(step, Load):
+            nodes += _lower_load(ctx, step, idx)
+        elif isinstance(step, Directions):
+            nodes += _lower_directions(ctx, step, idx)
         else:
             raise LoweringError(ctx.where(f"step {idx}: unknown step type {type(step).__name__}"))
     return nodes
@@ -394,6 +480,8 @@ def lower(kernel: Kernel) -> dict:
         input_guard = " and ".join(conds)
         ctx.statuses.add("INVALID_INPUT")
     body = _lower_steps(ctx, kernel.steps)
+    if ctx.rows:
+        ctx.rows = _compact_rows(body)
     outputs = kernel.outputs.fields()
     missing = [f.name for f in outputs if not ctx.scope.defined(f.name)]
     if missing:
@@ -441,4 +529,6 @@ def lower(kernel: Kernel) -> dict:
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),
         "statuses": sorted(ctx.statuses),
+        "rows": ctx.rows,
+        "directions": ctx.directions,
     }

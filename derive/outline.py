@@ -1,6 +1,6 @@
 """Outlining: a switch branch that holds a loop becomes a kernel of its own, called in place; and
-pruning: the assignments nothing uses are dropped. Used for the derivative kernels (:mod:`.tangent`);
-the maps' own kernels are left as declared.
+pruning: the assignments, and the rows of the direction array, nothing uses are dropped. Used for
+the derivative kernels (:mod:`.tangent`); the maps' own kernels are left as declared.
 
 Why: numba's SSA reconstruction rewrites the whole function once per variable that is assigned
 more than once or used where its one assignment does not dominate (a loop's variables, what a
@@ -9,9 +9,10 @@ loops carry a tangent per state variable and direction (the compression half of 
 Koditschek's iteration: 13 values x 7), and its branches define a tangent per output and direction,
 so one function holding the five node-count branches, each a loop, compiled in 300 s. Now:
 
-- a loop with carried variables (the tangents) keeps them in one tuple, unpacked at the top of every
-  pass (derive/lower.py, the packed loop), and its body is not outlined: a loop body outlined into
-  a kernel of its own passed all its values and tangents through the call's arguments and result
+- a loop's tangents are rows of the direction array (the loops whose steps are stages and calls,
+  derive/tangent.py) or, carried variables, one tuple unpacked at the top of every pass
+  (derive/lower.py, the packed loop), and its body is not outlined: a loop body outlined into a
+  kernel of its own passed all its values and tangents through the call's arguments and result
   tuple every pass (about 200 for the six-node half), and every outlined level makes LLVM optimize
   and compile the kernels below it once more;
 - a switch whose branches hold a loop is outlined (each branch a kernel returning the names used
@@ -34,7 +35,7 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from .ir import Arg, Call, Field, Group, Iterate, Kernel, Stage, Switch, sym
+from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
 
 
 def _symbols(expr) -> set[str]:
@@ -55,6 +56,10 @@ def defined(steps) -> set[str]:
         elif isinstance(step, Switch):
             for _, branch in step.cases:
                 out |= defined(branch)
+        elif isinstance(step, Load):
+            out |= {s.name for s in step.names}
+        elif isinstance(step, Directions):
+            out |= {s.name for s, _ in step.reads} | defined(step.steps)
     return out
 
 
@@ -80,6 +85,12 @@ def used(steps) -> set[str]:
             out.add(step.selector.name)
             for _, branch in step.cases:
                 out |= used(branch)
+        elif isinstance(step, Store):
+            for e in step.values:
+                out |= _symbols(e)
+        elif isinstance(step, Directions):
+            inner = used(step.steps).union(*(_symbols(e) for e, _ in step.writes))
+            out |= inner - {s.name for s, _ in step.reads} - defined(step.steps)
     return out
 
 
@@ -99,6 +110,8 @@ def visible(steps) -> list[str]:
             branches = [visible(b) for _, b in step.cases]
             common = set.intersection(*(set(b) for b in branches)) if branches else set()
             out += [n for n in branches[0] if n in common] if branches else []
+        elif isinstance(step, Load):
+            out += [s.name for s in step.names]
     return out
 
 
@@ -141,6 +154,17 @@ def prune(steps, live: set[str]) -> tuple:
             step = replace(step, evaluate=evaluate, body=body)
             out.append(step)
             live = (live - defined((step,))) | used((step,))
+        elif isinstance(step, Load):
+            if any(s.name in live for s in step.names):
+                out.append(step)
+        elif isinstance(step, Directions):
+            inner = set().union(*(_symbols(e) for e, _ in step.writes))
+            step = replace(step, steps=prune(step.steps, inner))
+            out.append(step)
+            live |= used((step,))
+        elif isinstance(step, Store):
+            out.append(step)
+            live |= used((step,))
         elif isinstance(step, Switch):
             want = set(live)
             while True:
@@ -156,6 +180,73 @@ def prune(steps, live: set[str]) -> tuple:
         else:
             out.append(step)
     return tuple(reversed(out))
+
+
+def prune_rows(steps) -> tuple:
+    """The steps without the rows of the direction array nothing reads: a :class:`~.ir.Directions`
+    block reads only the rows its code uses, and a store or write to a row no block reads and no
+    load loads is dropped (repeated until nothing changes)."""
+    steps = tuple(steps)
+    while True:
+        steps = _trim_reads(steps)
+        read = _rows_read(steps)
+        trimmed = _trim_writes(steps, read)
+        if trimmed == steps:
+            return steps
+        steps = trimmed
+
+
+def _walk(steps, fn):
+    out = []
+    for step in steps:
+        if isinstance(step, Iterate):
+            step = replace(step, evaluate=_walk(step.evaluate, fn), body=_walk(step.body, fn))
+        elif isinstance(step, Switch):
+            step = Switch(step.selector, tuple((v, _walk(b, fn)) for v, b in step.cases), step.comment)
+        step = fn(step)
+        if step is not None:
+            out.append(step)
+    return tuple(out)
+
+
+def _trim_reads(steps) -> tuple:
+    def fn(step):
+        if isinstance(step, Directions):
+            inner = used(step.steps).union(*(_symbols(e) for e, _ in step.writes))
+            return replace(step, reads=tuple((s, r) for s, r in step.reads if s.name in inner))
+        return step
+
+    return _walk(steps, fn)
+
+
+def _rows_read(steps) -> set[int]:
+    rows: set[int] = set()
+
+    def fn(step):
+        if isinstance(step, Directions):
+            rows.update(r for _, r in step.reads)
+        elif isinstance(step, Load):
+            rows.add(step.row)
+        return step
+
+    _walk(steps, fn)
+    return rows
+
+
+def _trim_writes(steps, read: set[int]) -> tuple:
+    def fn(step):
+        if isinstance(step, Store):
+            return step if step.row in read else None
+        if isinstance(step, Directions):
+            writes = tuple((e, r) for e, r in step.writes if r in read)
+            if not writes:
+                return None
+            return replace(
+                step, writes=writes, steps=prune(step.steps, set().union(*(_symbols(e) for e, _ in writes)))
+            )
+        return step
+
+    return _walk(steps, fn)
 
 
 def _has_loop(steps) -> bool:
@@ -236,4 +327,4 @@ class Outliner:
         return Switch(sw.selector, cases, sw.comment)
 
 
-__all__ = ["Outliner", "defined", "prune", "used", "visible"]
+__all__ = ["Outliner", "defined", "prune", "prune_rows", "used", "visible"]

@@ -26,11 +26,16 @@ direction). Symbolic forward mode over the declaration, step by step:
     has directions reaching it.
 
   Both are generated once per callee and set of active arguments (pattern of directions).
-- :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass
-  (:attr:`~.ir.Iterate.carry`, outside the convergence test): the derivative of the iterate the
-  loop stops at, which is what the map returns (derivatives through the iterations). What the
-  loop evaluates at every iterate (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it.
-  A direction that reaches neither the initial values nor anything the loop reads is zero in it.
+- :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass,
+  outside the convergence test: the derivative of the iterate the loop stops at, which is what the
+  map returns (derivatives through the iterations). What the loop evaluates at every iterate
+  (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it. Where the loop's steps are stages
+  and calls (the iterations of Schwind and Koditschek's halves), each pass computes its values and
+  partial derivatives once and then runs its tangent code, written once, per direction
+  (:class:`~.ir.Directions`, on the rows of a direction array ``_T[row, direction]``), and so do the
+  stages and calls right after the loop; otherwise every tangent has a variable per direction,
+  carried through the passes (:attr:`~.ir.Iterate.carry`). A direction that reaches neither the
+  initial values nor anything the loop reads is zero in it.
 - :class:`~.ir.Switch`: each branch is differentiated; a tangent one branch defines is zero in the
   others.
 
@@ -38,13 +43,13 @@ What no output needs is then pruned, and the switch branches that hold a loop ar
 kernels of their own (:mod:`.outline`; the loops keep their tangents in one tuple, derive/lower.py),
 which keeps numba's compile time near linear in the code size.
 
-Cost (measured 2026-12-01 on the shared 2-core machine, tests/test_jacobian.py's human runner, one
-batch run of benchmarks/bench_maps.py (e)): every map's apex-return Jacobian costs 1.5-4x its
-apex-return map (was 5-13x with one JVP call per direction). The directions are unrolled: every
-tangent a line of its own per direction, so a kernel's code grows with its number of directions
-(iterative_jacobian.py 52,627 bytecode instructions against 33,644 for the one-direction JVP with
-the same lowering); numba's compile time is about proportional to that (about 0.4 ms per
-instruction on this machine).
+Cost: see benchmarks/bench_maps.py (e)-(g). Outside loops the directions are unrolled (every tangent
+a line of its own per direction), so that code grows with the number of directions, and numba's
+compile time is about proportional to the bytecode it compiles (about 0.4 ms per instruction on
+the shared 2-core machine; the per-direction loops' array accesses cost more per instruction, so
+they save lines and run time rather than compile time). Measured 2026-12-01, bytecode
+instructions of iterative_jacobian.py: one-direction JVP called per direction, same lowering,
+33,644; unrolled vector mode 52,627; with the loops' tangent code per direction 38,937.
 
 Almost-everywhere derivatives: ``sign``, ``floor`` and ``ceiling`` differentiate to 0 (SymPy's
 ``DiracDelta`` / unevaluated ``Derivative``); ``Abs`` to ``sign``; ``Max``/``Min`` to a Heaviside
@@ -63,8 +68,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .ir import Arg, Call, Field, Group, Iterate, Kernel, Stage, Switch, sym
-from .outline import Outliner, prune, used, visible
+from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
+from .outline import Outliner, defined, prune, prune_rows, used, visible
 
 #: A tangent per direction: direction name -> expression (0 when the value does not depend on it).
 _Tangent = dict
@@ -344,7 +349,8 @@ class Differentiator:
         fields = derivative_fields(kernel.outputs, dirs)
         module = f"{kernel.module}_jacobian"
         needed = set(kernel.outputs.names()) | {f.name for f in fields}
-        steps = Outliner(name, module, self._add).steps(prune(steps, needed), needed)
+        steps = prune(prune_rows(prune(steps, needed)), needed)
+        steps = Outliner(name, module, self._add).steps(steps, needed)
         values = tuple((f.name, f.doc + (f" [{f.unit}]" if f.unit else "")) for f in kernel.outputs.fields())
         if dirs == (None,):
             block = ("<output>__tan", "the derivative of each output above along the direction, in order")
@@ -390,50 +396,97 @@ class Differentiator:
         return "jvp", None
 
 
+#: The generic direction of the tangent code a loop runs once per direction (:meth:`_Ctx.looped`).
+_J = "j"
+
+
 @dataclass
 class _Ctx:
     diff: Differentiator
     frame: _Frame
-    #: partial derivatives given variables of their own so far (``_pd__<n>``)
-    n_partials: int = 0
+    #: counters shared by the contexts of one derivative kernel: partial derivatives given variables
+    #: of their own (``_pd__<n>``) and rows of the direction array ``_T``
+    counters: dict = field(default_factory=lambda: {"pd": 0, "row": 0})
+    #: differentiating along the one generic direction of a loop's per-direction tangent code
+    generic: bool = False
+
+    def row(self) -> int:
+        self.counters["row"] += 1
+        return self.counters["row"] - 1
 
     def steps(self, steps) -> tuple:
         out: list = []
-        for step in steps:
+        steps = tuple(steps)
+        i = 0
+        while i < len(steps):
+            step = steps[i]
+            i += 1
             if isinstance(step, Stage):
                 out.append(self.stage(step))
             elif isinstance(step, Call):
                 out.extend(self.call(step))
             elif isinstance(step, Iterate):
-                out.append(self.iterate(step))
+                # the stages and calls right after a loop: per direction too, with the loop's
+                tail = []
+                while i < len(steps) and isinstance(steps[i], (Stage, Call)):
+                    tail.append(steps[i])
+                    i += 1
+                out.extend(self.iterate(step, tuple(tail)))
             elif isinstance(step, Switch):
                 out.append(self.switch(step))
             else:
                 raise TypeError(f"cannot differentiate a {type(step).__name__}")
         return tuple(out)
 
-    def stage(self, st: Stage) -> Stage:
-        """Each assignment, then its tangents: sum over x of (d f / d x) times the tangent of x, a
-        partial derivative used in two or more directions computed once (``_pd__<n>``)."""
-        assigns: list[tuple[sp.Symbol, sp.Basic]] = []
-        opaque: list[str] = []
+    def parts(self, st: Stage) -> list[tuple[list, list]]:
+        """For each assignment: its value and the partial derivatives used in two or more directions
+        (in the generic direction: every one that is not a number or a variable) as variables of
+        their own (``_pd__<n>``); its tangents, sum over x of (d f / d x) times the tangent of x."""
+        out = []
         for s, expr in st.assignments:
-            assigns.append((s, expr))
+            values = [(s, expr)]
             partials = []
             for d, t in self.frame.partials(expr):
-                if not _direct(d) and sum(1 for v in t.values() if v != 0) > 1:
-                    p = sym(f"_pd__{self.n_partials}")
-                    self.n_partials += 1
-                    assigns.append((p, d))
-                    opaque.append(p.name)
+                if not _direct(d) and (self.generic or sum(1 for v in t.values() if v != 0) > 1):
+                    p = sym(f"_pd__{self.counters['pd']}")
+                    self.counters["pd"] += 1
+                    values.append((p, d))
                     d = p
                 partials.append((d, t))
-            new = self.frame.bind(s.name, self.frame.combine(partials))
-            assigns.extend(new)
-            opaque += [t.name for t, _ in new]
-        # the partial derivatives and the tangents stay variables for the later assignments (the
-        # chain rule's products, not expanded)
+            out.append((values, self.frame.bind(s.name, self.frame.combine(partials))))
+        return out
+
+    def stage(self, st: Stage) -> Stage:
+        """Each assignment, its partial derivatives, then its tangents (:meth:`parts`); the partial
+        derivatives and the tangents stay variables for the later assignments (the chain rule's
+        products, not expanded)."""
+        assigns, opaque = [], []
+        for values, tangents in self.parts(st):
+            assigns += values + tangents
+            opaque += [p.name for p, _ in values[1:]] + [t.name for t, _ in tangents]
         return Stage(tuple(assigns), st.guards, st.comment, opaque=tuple(opaque))
+
+    def split(self, steps) -> tuple[list, list]:
+        """Generic direction: the steps' values (stages with their partial derivatives, calls of the
+        callees' Jacobians) and their tangent code (stages), apart."""
+        values, tangents = [], []
+        for step in steps:
+            if isinstance(step, Stage):
+                groups = self.parts(step)
+                vals = [a for v, _ in groups for a in v]
+                partial_names = tuple(p.name for v, _ in groups for p, _ in v[1:])
+                values.append(Stage(tuple(vals), step.guards, step.comment, opaque=partial_names))
+                assigns = tuple(a for _, t in groups for a in t)
+                if assigns:
+                    tangents.append(
+                        Stage(assigns, comment=step.comment, opaque=tuple(s.name for s, _ in assigns))
+                    )
+            elif isinstance(step, Call):
+                for part in self.call(step):
+                    (values if isinstance(part, Call) else tangents).append(part)
+            else:
+                raise TypeError(f"no per-direction tangent code for a {type(step).__name__}")
+        return values, tangents
 
     def call(self, c: Call) -> list:
         """The chain rule through a derivative of the callee (module docstring)."""
@@ -446,7 +499,8 @@ class _Ctx:
             for local in c.bind.values():
                 self.frame.bind(local, {w: sp.S.Zero for w in wrt})
             return [c]
-        how, by = self.diff._for_call(callee, active, dirs)
+        # (in the generic direction always the callee's Jacobian: its tangents are values there)
+        how, by = self.diff._for_call(callee, active, active if self.generic else dirs)
         if how == "jacobian":
             return self._through_jacobian(c, arg_t, active, by)
         return self._through_jvp(c, arg_t, dirs)
@@ -494,18 +548,151 @@ class _Ctx:
             self.frame.tangents[local] = tangent
         return [Call(derived.kernel, args, bind, comment=c.comment)]
 
-    def iterate(self, it: Iterate) -> Iterate:
+    def iterate(self, it: Iterate, tail: tuple = ()) -> list:
+        """The loop (and the stages and calls of its ``tail``) with its tangents: written once and
+        run per direction where the loop's steps are stages and calls and there are several
+        directions (:meth:`looped`), else one variable per tangent and direction, carried through
+        the passes (:attr:`~.ir.Iterate.carry`)."""
+        loopable = all(isinstance(s, (Stage, Call)) for s in it.evaluate + it.body)
+        if loopable and not self.generic and len(self.frame.wrt) > 1:
+            return self.looped(it, tail)
+        return [self.unrolled(it), *self.steps(tail)]
+
+    def _reach(self, it: Iterate) -> tuple[set[str], tuple]:
+        """The names from before the loop it reads, and the directions that reach it through them."""
+        names = [s for s, _ in it.state] + [c[0] for c in it.carry]
+        inner = {s.name for s in names} | {it.count.name}
+        reads = used(it.evaluate + it.body) - inner
+        exprs = [e for _, e in it.state] + list(it.update) + [e for c in it.carry for e in (c[1], c[2])]
+        for e in (*exprs, it.max_iter, it.tol, *it.scales):
+            reads |= {s.name for s in sp.sympify(e).free_symbols} - inner
+        outer = self.frame
+        reach = tuple(w for w in outer.wrt if any(outer.tangents.get(n, {}).get(w, 0) != 0 for n in reads))
+        return reads, reach
+
+    def looped(self, it: Iterate, tail: tuple = ()) -> list:
+        """Values once, tangent code once: each pass computes the values and partial derivatives,
+        then runs its tangent code once per direction (:class:`~.ir.Directions`) on the state's
+        tangents in the rows of the direction array ``_T``; the next state's tangents overwrite
+        them (a direction reads its column before it writes it). Before the loop the tangents of
+        what it reads and of its initial values are stored in rows; after it the state's and the
+        evaluated names' tangents are loaded into a variable per direction."""
+        outer = self.frame
+        wrt = outer.wrt
+        reads, reach = self._reach(it)
+        if not reach:
+            return [self.unrolled(it), *self.steps(tail)]
+        names = [s for s, _ in it.state] + [c[0] for c in it.carry]
+        inits = [init for _, init in it.state] + [c[1] for c in it.carry]
+        updates = list(it.update) + [c[2] for c in it.carry]
+        gen = _Frame((_J,), {})
+        pre: list = []
+        rows: list[tuple[sp.Symbol, int]] = []
+        # what the loop and its tail read from before them (the tail: besides what the loop defines)
+        inner = {s.name for s in names} | {it.count.name} | set(visible(it.evaluate))
+        reads = reads | (used(tail) - inner - defined(tail))
+        for x in sorted(reads):
+            t = outer.tangents.get(x)
+            if t is not None and any(v != 0 for v in t.values()):
+                row = self.row()
+                pre.append(Store(row, tuple(t[w] for w in wrt)))
+                gen.tangents[x] = {_J: sym(tangent_name(x, _J))}
+                rows.append((gen.tangents[x][_J], row))
+        state_rows = {}
+        for s, init in zip(names, inits, strict=True):
+            t0 = outer.of(init)
+            state_rows[s.name] = self.row()
+            pre.append(Store(state_rows[s.name], tuple(t0[w] for w in wrt)))
+            gen.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+            rows.append((gen.tangents[s.name][_J], state_rows[s.name]))
+        gen.tangents[it.count.name] = {_J: sp.S.Zero}
+        sub = _Ctx(self.diff, gen, self.counters, generic=True)
+        ev_values, ev_tangents = sub.split(it.evaluate)
+        evaluated = [e for e in visible(it.evaluate) if gen.tangents[e][_J] != 0]
+        ev_rows = {e: self.row() for e in evaluated}
+        n = len(wrt)
+        evaluate = tuple(ev_values) + (
+            Directions(
+                n,
+                tuple(rows),
+                tuple(ev_tangents),
+                tuple((gen.tangents[e][_J], ev_rows[e]) for e in evaluated),
+                comment="the evaluation's tangents, once per direction",
+            ),
+        )
+        read_evaluated = tuple((sym(tangent_name(e, _J)), ev_rows[e]) for e in evaluated)
+        for e in evaluated:  # the body reads them from their rows
+            gen.tangents[e] = {_J: sym(tangent_name(e, _J))}
+        nxt = [sym(f"{s.name}__next") for s in names]
+        body_values, body_tangents = sub.split(
+            it.body + (Stage(tuple(zip(nxt, updates, strict=True)), comment="next values"),)
+        )
+        body = tuple(body_values) + (
+            Directions(
+                n,
+                tuple(rows) + read_evaluated,
+                tuple(body_tangents),
+                tuple(
+                    (gen.tangents[x.name][_J], state_rows[s.name]) for s, x in zip(names, nxt, strict=True)
+                ),
+                comment="the next state's tangents, once per direction",
+            ),
+        )
+        k = len(it.state)
+        loop = Iterate(
+            state=it.state,
+            body=body,
+            update=tuple(nxt[:k]),
+            max_iter=it.max_iter,
+            tol=it.tol,
+            scales=it.scales,
+            count=it.count,
+            fail_status=it.fail_status,
+            comment=it.comment,
+            carry=tuple((c[0], c[1], x) for c, x in zip(it.carry, nxt[k:], strict=True)),
+            evaluate=evaluate,
+        )
+        # the steps after the loop: values, then their tangents per direction too
+        after: list = []
+        tail_rows = {}
+        if tail:
+            for s in names:  # the state's tangents are in its rows, as the evaluation's
+                gen.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+            tail_values, tail_tangents = sub.split(tail)
+            defined_after = [x for x in visible(tail) if gen.tangents[x][_J] != 0]
+            tail_rows = {x: self.row() for x in defined_after}
+            after = tail_values + [
+                Directions(
+                    n,
+                    tuple(rows) + read_evaluated,
+                    tuple(tail_tangents),
+                    tuple((gen.tangents[x][_J], tail_rows[x]) for x in defined_after),
+                    comment="their tangents, once per direction",
+                )
+            ]
+        # then a variable per direction for the tangents of what the loop and its tail define
+        self.frame = outer.copy()
+        post = []
+        loaded_rows = [(s.name, state_rows[s.name]) for s in names] + list(ev_rows.items())
+        for name, row in loaded_rows + list(tail_rows.items()):
+            loaded = tuple(sym(tangent_name(name, w)) for w in wrt)
+            post.append(Load(row, loaded))
+            self.frame.tangents[name] = dict(zip(wrt, loaded, strict=True))
+        zero = {w: sp.S.Zero for w in wrt}
+        for e in visible(it.evaluate) + visible(tail):
+            if e not in ev_rows and e not in tail_rows:
+                self.frame.tangents[e] = dict(zero)
+        self.frame.tangents[it.count.name] = dict(zero)
+        return pre + [loop] + after + post
+
+    def unrolled(self, it: Iterate) -> Iterate:
         outer = self.frame
         wrt = outer.wrt
         names = [s for s, _ in it.state] + [c[0] for c in it.carry]
         inits = [init for _, init in it.state] + [c[1] for c in it.carry]
         updates = list(it.update) + [c[2] for c in it.carry]
         # the directions that reach the loop: through what it reads from before it
-        inner = {s.name for s in names} | {it.count.name}
-        reads = used(it.evaluate + it.body) - inner
-        for e in (*inits, *updates, it.max_iter, it.tol, *it.scales):
-            reads |= {s.name for s in sp.sympify(e).free_symbols} - inner
-        reach = tuple(w for w in wrt if any(outer.tangents.get(n, {}).get(w, 0) != 0 for n in reads))
+        _, reach = self._reach(it)
         init_t = [outer.of(e) for e in inits]
         self.frame = outer.copy()
         for s in names:

@@ -27,18 +27,15 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
     STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-_NAN30 = (NAN,) * 30
+_NAN35 = (NAN,) * 35
 _NAN55 = (NAN,) * 55
 _NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_omega__0, d_g_eff__0, d_r_c__0,
-        d_omega__1, d_g_eff__1, d_r_c__1, d_omega__2, d_g_eff__2, d_r_c__2, d_omega__3, d_g_eff__3, d_r_c__3,
-        d_omega__4, d_g_eff__4, d_r_c__4):
+def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, and the derivatives of
-    its outputs along 5 directions (d_<argument>__<j>: direction j's component along an argument; the
-    arguments not listed have a fixed component, 0 or 1).
+    its outputs with respect to q_r_td, q_rd_td, omega, g_eff, r_c, k.
 
     Report equations: 9, 10, 11, 12.
 
@@ -54,21 +51,6 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
         m: body mass m [kg]
         l0: rest leg length l0 [m]
         k: leg stiffness k [N/m] (constant: k_c = k_d)
-        d_omega__0: direction 0: its component along omega
-        d_g_eff__0: direction 0: its component along g_eff
-        d_r_c__0: direction 0: its component along r_c
-        d_omega__1: direction 1: its component along omega
-        d_g_eff__1: direction 1: its component along g_eff
-        d_r_c__1: direction 1: its component along r_c
-        d_omega__2: direction 2: its component along omega
-        d_g_eff__2: direction 2: its component along g_eff
-        d_r_c__2: direction 2: its component along r_c
-        d_omega__3: direction 3: its component along omega
-        d_g_eff__3: direction 3: its component along g_eff
-        d_r_c__3: direction 3: its component along r_c
-        d_omega__4: direction 4: its component along omega
-        d_g_eff__4: direction 4: its component along g_eff
-        d_r_c__4: direction 4: its component along r_c
 
     Returns a tuple:
         omega0_hat: frequency [rad/s]
@@ -76,16 +58,16 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
         b: amplitude of rho(t)
         phase_td: touchdown phase [rad]
         s_td: sin(phase_td)
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            omega, g_eff, r_c, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 281
+    # Total ops: 218
     _x0 = (1.0/m)
     omega0_sq = _x0*k
-    d_omega0_sq__4 = _x0
+    d_omega0_sq__k = _x0
     if not ((q_rd_td < 0.0)):
-        return _NAN30 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return _NAN35 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # T5.4: the quadratic about r_c with g_eff
     _x1 = r_c + 1.0
     _x23 = (1.0/_x1)
@@ -99,34 +81,25 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
     _x9 = _x3*_x8
     _x10 = _x3*r_c + 3.0*_x4 + _x5*omega0_sq + _x7*omega0_sq + _x9 + omega0_sq
     lam = -_x10*_x2
-    _pd__0 = -6.0*_x2*omega
+    d_lam__omega = -6.0*_x2*omega
     _x11 = 12.0*omega0_sq
     _x12 = _x23**5
-    _pd__1 = 4.0*_x10*_x12 - _x2*(_x11*_x6 + _x11*r_c + _x3 + _x9)
-    d_lam__0 = _pd__0*d_omega__0 + _pd__1*d_r_c__0
-    d_lam__1 = _pd__0*d_omega__1 + _pd__1*d_r_c__1
-    d_lam__2 = _pd__0*d_omega__2 + _pd__1*d_r_c__2
-    d_lam__3 = _pd__0*d_omega__3 + _pd__1*d_r_c__3
+    d_lam__r_c = 4.0*_x10*_x12 - _x2*(_x11*_x6 + _x11*r_c + _x3 + _x9)
     _x13 = 4.0*r_c
     _x14 = 4.0*_x8
     _x15 = _x13 + _x14 + _x5 + _x7 + 1.0
-    d_lam__4 = _pd__0*d_omega__4 + _pd__1*d_r_c__4 - _x15*_x2*d_omega0_sq__4
+    d_lam__k = -_x15*_x2*d_omega0_sq__k
     _x16 = (1.0/l0)
     _x17 = _x14*g_eff
     _x18 = _x16*(-_x13*g_eff - _x17 + 4.0*_x4*l0*r_c + _x4*l0 - _x5*g_eff - _x7*g_eff - g_eff)
     _x19 = 2.0*_x2
     mu = _x18*_x19
-    _x20 = _x16*_x19
-    _pd__2 = -_x15*_x20
-    _x21 = l0*omega
-    _pd__3 = _x20*(8.0*_x21*r_c + 2.0*_x21)
+    _x20 = l0*omega
+    _x21 = _x16*_x19
+    d_mu__omega = _x21*(8.0*_x20*r_c + 2.0*_x20)
+    d_mu__g_eff = -_x15*_x21
     _x22 = 12.0*g_eff
-    _pd__4 = -8.0*_x12*_x18 + _x20*(-_x17 - _x22*_x6 - _x22*r_c + 4.0*_x4*l0 - 4.0*g_eff)
-    d_mu__0 = _pd__2*d_g_eff__0 + _pd__3*d_omega__0 + _pd__4*d_r_c__0
-    d_mu__1 = _pd__2*d_g_eff__1 + _pd__3*d_omega__1 + _pd__4*d_r_c__1
-    d_mu__2 = _pd__2*d_g_eff__2 + _pd__3*d_omega__2 + _pd__4*d_r_c__2
-    d_mu__3 = _pd__2*d_g_eff__3 + _pd__3*d_omega__3 + _pd__4*d_r_c__3
-    d_mu__4 = _pd__2*d_g_eff__4 + _pd__3*d_omega__4 + _pd__4*d_r_c__4
+    d_mu__r_c = -8.0*_x12*_x18 + _x21*(-_x17 - _x22*_x6 - _x22*r_c + 4.0*_x4*l0 - 4.0*g_eff)
     # T5.5: through the touchdown point
     _x25 = (1.0/l0)
     _x24 = _x25**2
@@ -134,98 +107,103 @@ def type5_solution_jvp5_7107c1(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, d_o
     _x27 = -_x26
     _x28 = _x27**2
     nu = _x24*q_rd_td**2 - _x27*mu - _x28*lam
-    _pd__5 = -_x28
-    _pd__6 = _x26
-    d_nu__0 = _pd__5*d_lam__0 + _pd__6*d_mu__0 - 2.0*_x25*_x27*lam - _x25*mu
-    d_nu__1 = _pd__5*d_lam__1 + _pd__6*d_mu__1 + 2.0*_x24*q_rd_td
-    d_nu__2 = _pd__5*d_lam__2 + _pd__6*d_mu__2
-    d_nu__3 = _pd__5*d_lam__3 + _pd__6*d_mu__3
-    d_nu__4 = _pd__5*d_lam__4 + _pd__6*d_mu__4
+    _pd__0 = -_x28
+    _pd__1 = _x26
+    d_nu__q_r_td = -2.0*_x25*_x27*lam - _x25*mu
+    d_nu__q_rd_td = 2.0*_x24*q_rd_td
+    d_nu__omega = _pd__0*d_lam__omega + _pd__1*d_mu__omega
+    d_nu__g_eff = _pd__1*d_mu__g_eff
+    d_nu__r_c = _pd__0*d_lam__r_c + _pd__1*d_mu__r_c
+    d_nu__k = _pd__0*d_lam__k
     # eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)
     _x29 = math.sqrt(-lam)
     omega0_hat = _x29
     _x30 = (1.0/lam)
     _x31 = (0.5)*_x30
-    _pd__7 = _x29*_x31
-    d_omega0_hat__0 = _pd__7*d_lam__0
-    d_omega0_hat__1 = _pd__7*d_lam__1
-    d_omega0_hat__2 = _pd__7*d_lam__2
-    d_omega0_hat__3 = _pd__7*d_lam__3
-    d_omega0_hat__4 = _pd__7*d_lam__4
+    _pd__2 = _x29*_x31
+    d_omega0_hat__omega = _pd__2*d_lam__omega
+    d_omega0_hat__r_c = _pd__2*d_lam__r_c
+    d_omega0_hat__k = _pd__2*d_lam__k
     a = -_x31*mu
     _x32 = _x30**2
     _x33 = (0.5)*_x32*mu
-    _pd__8 = _x33
-    _pd__9 = -_x31
-    d_a__0 = _pd__8*d_lam__0 + _pd__9*d_mu__0
-    d_a__1 = _pd__8*d_lam__1 + _pd__9*d_mu__1
-    d_a__2 = _pd__8*d_lam__2 + _pd__9*d_mu__2
-    d_a__3 = _pd__8*d_lam__3 + _pd__9*d_mu__3
-    d_a__4 = _pd__8*d_lam__4 + _pd__9*d_mu__4
+    _pd__3 = _x33
+    _pd__4 = -_x31
+    d_a__omega = _pd__3*d_lam__omega + _pd__4*d_mu__omega
+    d_a__g_eff = _pd__4*d_mu__g_eff
+    d_a__r_c = _pd__3*d_lam__r_c + _pd__4*d_mu__r_c
+    d_a__k = _pd__3*d_lam__k
     _x34 = -4.0*lam*nu + mu**2
     b2 = (0.25)*_x32*_x34
-    _pd__10 = -0.5*_x30**3*_x34 - _x32*nu
-    _pd__11 = _x33
-    _pd__12 = -_x30
-    d_b2__0 = _pd__10*d_lam__0 + _pd__11*d_mu__0 + _pd__12*d_nu__0
-    d_b2__1 = _pd__10*d_lam__1 + _pd__11*d_mu__1 + _pd__12*d_nu__1
-    d_b2__2 = _pd__10*d_lam__2 + _pd__11*d_mu__2 + _pd__12*d_nu__2
-    d_b2__3 = _pd__10*d_lam__3 + _pd__11*d_mu__3 + _pd__12*d_nu__3
-    d_b2__4 = _pd__10*d_lam__4 + _pd__11*d_mu__4 + _pd__12*d_nu__4
+    _pd__5 = -0.5*_x30**3*_x34 - _x32*nu
+    _pd__6 = _x33
+    _pd__7 = -_x30
+    d_b2__q_r_td = _pd__7*d_nu__q_r_td
+    d_b2__q_rd_td = _pd__7*d_nu__q_rd_td
+    d_b2__omega = _pd__5*d_lam__omega + _pd__6*d_mu__omega + _pd__7*d_nu__omega
+    d_b2__g_eff = _pd__6*d_mu__g_eff + _pd__7*d_nu__g_eff
+    d_b2__r_c = _pd__5*d_lam__r_c + _pd__6*d_mu__r_c + _pd__7*d_nu__r_c
+    d_b2__k = _pd__5*d_lam__k + _pd__7*d_nu__k
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return _NAN30 + (STATUS_NO_REAL_SOLUTION,)
+        return _NAN35 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x35 = math.sqrt(b2)
     b = _x35
     _x36 = (1.0/_x35)
-    _pd__13 = (0.5)*_x36
-    d_b__0 = _pd__13*d_b2__0
-    d_b__1 = _pd__13*d_b2__1
-    d_b__2 = _pd__13*d_b2__2
-    d_b__3 = _pd__13*d_b2__3
-    d_b__4 = _pd__13*d_b2__4
+    _pd__8 = (0.5)*_x36
+    d_b__q_r_td = _pd__8*d_b2__q_r_td
+    d_b__q_rd_td = _pd__8*d_b2__q_rd_td
+    d_b__omega = _pd__8*d_b2__omega
+    d_b__g_eff = _pd__8*d_b2__g_eff
+    d_b__r_c = _pd__8*d_b2__r_c
+    d_b__k = _pd__8*d_b2__k
     _x37 = (1.0/l0)
     _x38 = _x37*q_r_td - a - 1.0
     s_td = _x36*_x38
-    _pd__14 = -_x36
-    _pd__15 = -_x38/b2
-    d_s_td__0 = _pd__14*d_a__0 + _pd__15*d_b__0 + _x36*_x37
-    d_s_td__1 = _pd__14*d_a__1 + _pd__15*d_b__1
-    d_s_td__2 = _pd__14*d_a__2 + _pd__15*d_b__2
-    d_s_td__3 = _pd__14*d_a__3 + _pd__15*d_b__3
-    d_s_td__4 = _pd__14*d_a__4 + _pd__15*d_b__4
+    _pd__9 = -_x36
+    _pd__10 = -_x38/b2
+    d_s_td__q_r_td = _pd__10*d_b__q_r_td + _x36*_x37
+    d_s_td__q_rd_td = _pd__10*d_b__q_rd_td
+    d_s_td__omega = _pd__10*d_b__omega + _pd__9*d_a__omega
+    d_s_td__g_eff = _pd__10*d_b__g_eff + _pd__9*d_a__g_eff
+    d_s_td__r_c = _pd__10*d_b__r_c + _pd__9*d_a__r_c
+    d_s_td__k = _pd__10*d_b__k + _pd__9*d_a__k
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return _NAN30 + (STATUS_FALL,)
+        return _NAN35 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return _NAN30 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
+        return _NAN35 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
-    _pd__16 = -1.0/math.sqrt(1.0 - s_td**2)
-    d_phase_td__0 = _pd__16*d_s_td__0
-    d_phase_td__1 = _pd__16*d_s_td__1
-    d_phase_td__2 = _pd__16*d_s_td__2
-    d_phase_td__3 = _pd__16*d_s_td__3
-    d_phase_td__4 = _pd__16*d_s_td__4
+    _pd__11 = -1.0/math.sqrt(1.0 - s_td**2)
+    d_phase_td__q_r_td = _pd__11*d_s_td__q_r_td
+    d_phase_td__q_rd_td = _pd__11*d_s_td__q_rd_td
+    d_phase_td__omega = _pd__11*d_s_td__omega
+    d_phase_td__g_eff = _pd__11*d_s_td__g_eff
+    d_phase_td__r_c = _pd__11*d_s_td__r_c
+    d_phase_td__k = _pd__11*d_s_td__k
+    # derivatives of the outputs
+    d_omega0_hat__q_r_td = 0.0
+    d_omega0_hat__q_rd_td = 0.0
+    d_omega0_hat__g_eff = 0.0
+    d_a__q_r_td = 0.0
+    d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__0, d_omega0_hat__1, d_omega0_hat__2,
-        d_omega0_hat__3, d_omega0_hat__4, d_a__0, d_a__1, d_a__2, d_a__3, d_a__4, d_b__0, d_b__1, d_b__2,
-        d_b__3, d_b__4, d_phase_td__0, d_phase_td__1, d_phase_td__2, d_phase_td__3, d_phase_td__4, d_s_td__0,
-        d_s_td__1, d_s_td__2, d_s_td__3, d_s_td__4, STATUS_OK)
+    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td,
+        d_omega0_hat__omega, d_omega0_hat__g_eff, d_omega0_hat__r_c, d_omega0_hat__k, d_a__q_r_td,
+        d_a__q_rd_td, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__omega,
+        d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
+        d_phase_td__g_eff, d_phase_td__r_c, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__omega,
+        d_s_td__g_eff, d_s_td__r_c, d_s_td__k, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0, d_t__0,
-        d_p_td__0, d_c0__0, d_c1__0, d_c2__0, d_k0__0, d_k1__0, d_k2__0, d_omega0_hat__0, d_phase_td__0,
-        d_t__1, d_c0__1, d_c1__1, d_c2__1, d_k0__1, d_k1__1, d_k2__1, d_omega0_hat__1, d_phase_td__1, d_t__2,
-        d_c0__2, d_c1__2, d_c2__2, d_k0__2, d_k1__2, d_k2__2, d_omega0_hat__2, d_phase_td__2, d_t__3,
-        d_p_td__3, d_c0__3, d_c1__3, d_c2__3, d_k0__3, d_k1__3, d_k2__3, d_omega0_hat__3, d_phase_td__3,
-        d_t__4, d_c0__4, d_c1__4, d_c2__4, d_k0__4, d_k1__4, d_k2__4, d_omega0_hat__4, d_phase_td__4):
+def type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, q_th_td, p_td, c0, c1, c2, k0,
+        k1, k2, omega0_hat, phase_td, m, l0):
     """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2), and the
-    derivatives of its outputs along 5 directions (d_<argument>__<j>: direction j's component along an
-    argument; the arguments not listed have a fixed component, 0 or 1).
+    derivatives of its outputs with respect to t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td.
 
     Report equations: 17, 18, 19.
 
@@ -246,61 +224,14 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
         phase_td: touchdown phase [rad]
         m: body mass m [kg]
         l0: rest leg length l0 [m]
-        d_t__0: direction 0: its component along t
-        d_p_td__0: direction 0: its component along p_td
-        d_c0__0: direction 0: its component along c0
-        d_c1__0: direction 0: its component along c1
-        d_c2__0: direction 0: its component along c2
-        d_k0__0: direction 0: its component along k0
-        d_k1__0: direction 0: its component along k1
-        d_k2__0: direction 0: its component along k2
-        d_omega0_hat__0: direction 0: its component along omega0_hat
-        d_phase_td__0: direction 0: its component along phase_td
-        d_t__1: direction 1: its component along t
-        d_c0__1: direction 1: its component along c0
-        d_c1__1: direction 1: its component along c1
-        d_c2__1: direction 1: its component along c2
-        d_k0__1: direction 1: its component along k0
-        d_k1__1: direction 1: its component along k1
-        d_k2__1: direction 1: its component along k2
-        d_omega0_hat__1: direction 1: its component along omega0_hat
-        d_phase_td__1: direction 1: its component along phase_td
-        d_t__2: direction 2: its component along t
-        d_c0__2: direction 2: its component along c0
-        d_c1__2: direction 2: its component along c1
-        d_c2__2: direction 2: its component along c2
-        d_k0__2: direction 2: its component along k0
-        d_k1__2: direction 2: its component along k1
-        d_k2__2: direction 2: its component along k2
-        d_omega0_hat__2: direction 2: its component along omega0_hat
-        d_phase_td__2: direction 2: its component along phase_td
-        d_t__3: direction 3: its component along t
-        d_p_td__3: direction 3: its component along p_td
-        d_c0__3: direction 3: its component along c0
-        d_c1__3: direction 3: its component along c1
-        d_c2__3: direction 3: its component along c2
-        d_k0__3: direction 3: its component along k0
-        d_k1__3: direction 3: its component along k1
-        d_k2__3: direction 3: its component along k2
-        d_omega0_hat__3: direction 3: its component along omega0_hat
-        d_phase_td__3: direction 3: its component along phase_td
-        d_t__4: direction 4: its component along t
-        d_c0__4: direction 4: its component along c0
-        d_c1__4: direction 4: its component along c1
-        d_c2__4: direction 4: its component along c2
-        d_k0__4: direction 4: its component along k0
-        d_k1__4: direction 4: its component along k1
-        d_k2__4: direction 4: its component along k2
-        d_omega0_hat__4: direction 4: its component along omega0_hat
-        d_phase_td__4: direction 4: its component along phase_td
 
     Returns a tuple:
         q_th: leg angle [rad]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
+        d_<output>__<argument>: d output / d argument for each output above and argument t, q_th_td, p_td, c0,
+            c1, c2, k0, k1, k2, omega0_hat, phase_td (row-major)
     """
-    # Total ops: 514
-    _x0 = p_td*t
+    # Total ops: 421
+    _x0 = k0*p_td
     _x1 = t**2
     _x2 = (0.5)*_x1
     _x3 = _x2*k0
@@ -310,19 +241,19 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
     _x7 = t**4
     _x8 = (0.08333333333333333)*_x7
     _x9 = _x8*k0
-    _x10 = (1.0/omega0_hat)
-    _x11 = math.cos(phase_td)
-    _x12 = _x10*_x11
-    _x13 = _x12*p_td
-    _x14 = _x10**2
+    _x10 = k1*p_td
+    _x11 = (1.0/omega0_hat)
+    _x12 = math.cos(phase_td)
+    _x13 = _x11*_x12
+    _x14 = _x11**2
     _x15 = math.sin(phase_td)
     _x16 = _x14*_x15
     _x17 = _x16*k1
-    _x18 = _x10**3
-    _x19 = _x11*_x18
-    _x20 = _x19*k1
+    _x18 = _x11**3
+    _x19 = _x12*k1
+    _x20 = _x18*_x19
     _x21 = _x15*k1
-    _x22 = _x10**4
+    _x22 = _x11**4
     _x23 = 2.0*_x22
     _x24 = _x21*_x23
     _x25 = c0*k2
@@ -330,114 +261,105 @@ def type5_leg_angle_jvp5_b6d403(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0
     _x27 = math.cos(_x26)
     _x28 = (0.25)*_x14
     _x29 = _x27*_x28
-    _x30 = math.sin(_x26)
-    _x31 = _x30*k2
-    _x32 = (0.125)*_x18
-    _x33 = _x31*_x32
+    _x30 = _x18*c1
+    _x31 = math.sin(_x26)
+    _x32 = (0.125)*_x31
+    _x33 = _x32*k2
     _x34 = _x27*k2
     _x35 = (0.125)*_x22
     _x36 = _x34*_x35
-    _x37 = (0.5)*_x30
-    _x38 = k2*p_td
-    _x39 = _x10*_x38
+    _x37 = _x11*k2
+    _x38 = (0.5)*_x31
+    _x39 = _x37*_x38
     _x40 = omega0_hat*t
     _x41 = _x40 + phase_td
     _x42 = math.cos(_x41)
-    _x43 = _x10*_x42
-    _x44 = _x43*p_td
-    _x45 = _x26 + 2.0*_x40
-    _x46 = math.sin(_x45)
-    _x47 = (0.5)*_x46
-    _x48 = _x10*_x47
-    _x49 = math.sin(_x41)
-    _x50 = _x14*_x49 - _x43*t
-    _x51 = _x50*k1
-    _x52 = math.cos(_x45)
-    _x53 = _x14*_x52
-    _x54 = _x10*t
-    _x55 = _x47*_x54 + (0.25)*_x53
-    _x56 = _x55*k2
-    _x57 = 2.0*_x18
-    _x58 = 2.0*t
-    _x59 = -0.5*_x1*_x43 + (0.5)*_x14*_x49*_x58 + (0.5)*_x42*_x57
-    _x60 = _x59*k1
-    _x61 = _x18*_x46
-    _x62 = (0.5)*_x10*_x2*_x46 + (0.25)*_x53*t - 0.125*_x61
-    _x63 = _x62*k2
-    _x64 = 6.0*_x22
-    _x65 = _x1*_x14*_x49 + 2.0*_x18*_x42*t - 0.3333333333333333*_x4*_x43 - 0.3333333333333333*_x49*_x64
-    _x66 = _x65*k1
-    _x67 = (0.375)*_x22
-    _x68 = _x10*_x4
-    _x69 = (0.25)*_x1*_x53 + (0.3333333333333333)*_x47*_x68 - 0.3333333333333333*_x52*_x67 - 0.25*_x61*t
-    _x70 = _x69*k2
-    _x71 = 1.0/(l0**2*m)
-    q_th = (_x71*(_x0*k0 + _x13*k1 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x33*c1 + _x36*c2
-        - _x37*_x39 + _x38*_x48 - _x44*k1 + _x51*c0 + _x56*c0 + _x6*c1 + _x60*c1 + _x63*c1 + _x66*c2 + _x70*c2
+    _x43 = _x11*_x42
+    _x44 = _x26 + 2.0*_x40
+    _x45 = math.sin(_x44)
+    _x46 = (0.5)*_x45
+    _x47 = _x37*_x46
+    _x48 = math.sin(_x41)
+    _x49 = _x14*_x48 - _x43*t
+    _x50 = _x49*k1
+    _x51 = math.cos(_x44)
+    _x52 = _x14*_x51
+    _x53 = _x11*t
+    _x54 = _x46*_x53 + (0.25)*_x52
+    _x55 = _x54*k2
+    _x56 = 2.0*_x18
+    _x57 = 2.0*t
+    _x58 = -0.5*_x1*_x43 + (0.5)*_x14*_x48*_x57 + (0.5)*_x42*_x56
+    _x59 = _x58*k1
+    _x60 = _x18*_x45
+    _x61 = (0.5)*_x11*_x2*_x45 + (0.25)*_x52*t - 0.125*_x60
+    _x62 = _x61*k2
+    _x63 = 6.0*_x22
+    _x64 = _x1*_x14*_x48 + 2.0*_x18*_x42*t - 0.3333333333333333*_x4*_x43 - 0.3333333333333333*_x48*_x63
+    _x65 = _x64*k1
+    _x66 = (0.375)*_x22
+    _x67 = _x11*_x4
+    _x68 = (0.25)*_x1*_x52 + (0.3333333333333333)*_x46*_x67 - 0.3333333333333333*_x51*_x66 - 0.25*_x60*t
+    _x69 = _x68*k2
+    _x70 = 1.0/(l0**2*m)
+    q_th = (_x70*(_x0*t + _x10*_x13 - _x10*_x43 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x30*_x33
+        + _x36*c2 - _x39*p_td + _x47*p_td + _x50*c0 + _x55*c0 + _x59*c1 + _x6*c1 + _x62*c1 + _x65*c2 + _x69*c2
         + _x9*c2) + q_th_td)
-    _pd__0 = _x71*(-_x17 - _x28*_x34 + _x3 + _x51 + _x56)
-    _pd__1 = _x71*(-_x20 + _x33 + _x6 + _x60 + _x63)
-    _pd__2 = _x71*(_x24 + _x36 + _x66 + _x70 + _x9)
-    _pd__3 = _x71*(_x0 + _x2*c0 + _x5*c1 + _x8*c2)
-    _x72 = _x23*c2
-    _pd__4 = _x71*(_x13 + _x15*_x72 - _x16*c0 - _x19*c1 - _x44 + _x50*c0 + _x59*c1 + _x65*c2)
-    _x73 = _x10*p_td
-    _pd__5 = (_x71*(_x27*_x35*c2 - _x29*c0 + _x30*_x32*c1 - _x37*_x73 + _x47*_x73 + _x55*c0 + _x62*c1
-        + _x69*c2))
-    _x74 = c0*k1
-    _x75 = _x11*k1
-    _x76 = _x10**5
-    _x77 = _x76*c2
-    _x78 = k1*p_td
-    _x79 = _x11*_x14
-    _x80 = _x14*_x37
-    _x81 = _x14*_x42
-    _x82 = _x0*_x10
-    _x83 = _x49*k1
-    _x84 = _x14*_x46
-    _x85 = (0.5)*_x84
-    _x86 = _x52*k2
-    _x87 = _x1*_x10*_x49 - _x49*_x57 + _x58*_x81
-    _x88 = _x18*_x52
-    _x89 = _x1*_x10*_x52 - _x84*t - 0.5*_x88
-    _x90 = (0.5)*c1
-    _x92 = 3.0*_x1
-    _x91 = _x49*t
-    _x93 = k1*(-6.0*_x18*_x91 - _x42*_x64 + _x49*_x68 + _x81*_x92)
-    _x94 = _x22*_x46
-    _x95 = -1.5*_x1*_x84 + _x52*_x68 - 1.5*_x88*t + (0.75)*_x94
-    _x96 = _x90*k2
-    _x97 = _x10*_x7
-    _x98 = (0.3333333333333333)*c2
-    _x99 = _x98*k1
-    _x100 = _x98*k2
-    _pd__6 = (_x71*(_x100*(-2.0*_x4*_x84 + (1.5)*_x52*_x76 + _x52*_x97 - _x88*_x92 + 3.0*_x94*t)
-        + _x15*_x57*_x74 + (0.5)*_x18*_x25*_x27 - 8.0*_x21*_x77 + 3.0*_x22*_x75*c1 + _x25*_x89 - _x31*_x67*c1
-        - 0.5*_x34*_x77 + _x38*_x80 - _x38*_x85 + _x74*_x87 - _x78*_x79 + _x78*_x81 + _x82*_x83 + _x82*_x86
-        + _x90*_x93 + _x95*_x96 + _x99*(-12.0*_x1*_x18*_x49 - 24.0*_x22*_x42*t + 4.0*_x4*_x81 + 24.0*_x49*_x76
-        + _x49*_x97)))
-    _x101 = k0*t
-    _pd__7 = _x71*(-0.5*_x10*_x31 + _x101 + _x12*k1 - _x43*k1 + _x48*k2)
-    _x102 = _x18*c1
-    _x103 = _x49*_x78
-    _x104 = _x38*_x52
-    _pd__8 = (_x71*(_x10*_x103 + _x10*_x104 - _x10*_x15*_x78 + _x100*_x95 + _x102*_x21 + (0.25)*_x102*_x34
-        - 0.25*_x22*_x31*c2 + _x25*_x80 + _x25*(_x52*_x54 - _x85) - _x27*_x39 + _x72*_x75 - _x74*_x79
-        + _x74*(_x49*_x54 + _x81) + _x87*_x90*k1 + _x89*_x96 + _x93*_x98))
-    _x105 = _x2*c1
-    _pd__9 = (_x71*(_x100*_x4*_x52 + _x101*c0 + _x103 + _x104 + _x105*_x83 + _x105*_x86 + _x25*_x52*t + _x3*c1
-        + _x4*_x49*_x99 + _x4*_x98*k0 + _x74*_x91 + k0*p_td))
-    d_q_th__0 = (_pd__0*d_c0__0 + _pd__1*d_c1__0 + _pd__2*d_c2__0 + _pd__3*d_k0__0 + _pd__4*d_k1__0
-        + _pd__5*d_k2__0 + _pd__6*d_omega0_hat__0 + _pd__7*d_p_td__0 + _pd__8*d_phase_td__0 + _pd__9*d_t__0)
-    d_q_th__1 = (_pd__0*d_c0__1 + _pd__1*d_c1__1 + _pd__2*d_c2__1 + _pd__3*d_k0__1 + _pd__4*d_k1__1
-        + _pd__5*d_k2__1 + _pd__6*d_omega0_hat__1 + _pd__8*d_phase_td__1 + _pd__9*d_t__1)
-    d_q_th__2 = (_pd__0*d_c0__2 + _pd__1*d_c1__2 + _pd__2*d_c2__2 + _pd__3*d_k0__2 + _pd__4*d_k1__2
-        + _pd__5*d_k2__2 + _pd__6*d_omega0_hat__2 + _pd__8*d_phase_td__2 + _pd__9*d_t__2 + 1.0)
-    d_q_th__3 = (_pd__0*d_c0__3 + _pd__1*d_c1__3 + _pd__2*d_c2__3 + _pd__3*d_k0__3 + _pd__4*d_k1__3
-        + _pd__5*d_k2__3 + _pd__6*d_omega0_hat__3 + _pd__7*d_p_td__3 + _pd__8*d_phase_td__3 + _pd__9*d_t__3)
-    d_q_th__4 = (_pd__0*d_c0__4 + _pd__1*d_c1__4 + _pd__2*d_c2__4 + _pd__3*d_k0__4 + _pd__4*d_k1__4
-        + _pd__5*d_k2__4 + _pd__6*d_omega0_hat__4 + _pd__8*d_phase_td__4 + _pd__9*d_t__4)
-    return (q_th, d_q_th__0, d_q_th__1, d_q_th__2, d_q_th__3, d_q_th__4)
+    _x71 = k0*t
+    _x72 = (0.3333333333333333)*c2
+    _x73 = _x4*_x72
+    _x74 = _x10*_x48
+    _x75 = c0*k1
+    _x76 = _x48*t
+    _x77 = _x51*k2
+    _x78 = _x77*p_td
+    _x79 = _x2*c1
+    _x80 = _x48*k1
+    d_q_th__t = (_x70*(_x0 + _x3*c1 + _x71*c0 + _x73*_x77 + _x73*_x80 + _x73*k0 + _x74 + _x75*_x76 + _x77*_x79
+        + _x77*c0*t + _x78 + _x79*_x80))
+    d_q_th__p_td = _x70*(_x11*_x19 - _x39 - _x43*k1 + _x47 + _x71)
+    d_q_th__c0 = _x70*(-_x17 - _x28*_x34 + _x3 + _x50 + _x55)
+    d_q_th__c1 = _x70*(_x18*_x33 - _x20 + _x59 + _x6 + _x62)
+    d_q_th__c2 = _x70*(_x24 + _x36 + _x65 + _x69 + _x9)
+    _x81 = p_td*t
+    d_q_th__k0 = _x70*(_x2*c0 + _x5*c1 + _x8*c2 + _x81)
+    _x82 = _x23*c2
+    d_q_th__k1 = _x70*(-_x12*_x30 + _x13*p_td + _x15*_x82 - _x16*c0 - _x43*p_td + _x49*c0 + _x58*c1 + _x64*c2)
+    _x83 = _x11*p_td
+    d_q_th__k2 = (_x70*(_x27*_x35*c2 - _x29*c0 + _x30*_x32 - _x38*_x83 + _x46*_x83 + _x54*c0 + _x61*c1
+        + _x68*c2))
+    _x84 = _x11**5
+    _x85 = _x84*c2
+    _x86 = _x31*k2
+    _x87 = k2*p_td
+    _x88 = _x14*_x38
+    _x89 = _x14*_x42
+    _x90 = _x11*_x81
+    _x91 = _x14*_x45
+    _x92 = (0.5)*_x91
+    _x93 = _x1*_x11*_x48 - _x48*_x56 + _x57*_x89
+    _x94 = _x18*_x51
+    _x95 = _x1*_x11*_x51 - _x91*t - 0.5*_x94
+    _x96 = (0.5)*c1
+    _x97 = 3.0*_x1
+    _x98 = k1*(-6.0*_x18*_x76 - _x42*_x63 + _x48*_x67 + _x89*_x97)
+    _x99 = _x22*_x45
+    _x100 = -1.5*_x1*_x91 + _x51*_x67 - 1.5*_x94*t + (0.75)*_x99
+    _x101 = _x96*k2
+    _x102 = _x11*_x7
+    _x103 = _x72*k2
+    d_q_th__omega0_hat = (_x70*(-_x10*_x12*_x14 + _x10*_x89 + _x100*_x101 + _x103*(_x102*_x51 - 2.0*_x4*_x91
+        + (1.5)*_x51*_x84 - _x94*_x97 + 3.0*_x99*t) + _x15*_x56*_x75 + (0.5)*_x18*_x25*_x27 + 3.0*_x19*_x22*c1
+        - 8.0*_x21*_x85 + _x25*_x95 - 0.5*_x34*_x85 - _x66*_x86*c1 + _x72*k1*(-12.0*_x1*_x18*_x48 + _x102*_x48
+        - 24.0*_x22*_x42*t + 4.0*_x4*_x89 + 24.0*_x48*_x84) + _x75*_x93 + _x77*_x90 + _x80*_x90 + _x87*_x88
+        - _x87*_x92 + _x96*_x98))
+    d_q_th__phase_td = (_x70*(-_x10*_x11*_x15 + _x100*_x103 + _x101*_x95 + _x11*_x74 + _x11*_x78
+        - _x14*_x19*c0 + _x19*_x82 + _x21*_x30 - 0.25*_x22*_x86*c2 + _x25*_x88 + _x25*(_x51*_x53 - _x92)
+        - _x27*_x37*p_td + (0.25)*_x30*_x34 + _x72*_x98 + _x75*(_x48*_x53 + _x89) + _x93*_x96*k1))
+    # derivatives of the outputs
+    d_q_th__q_th_td = 1.0
+    return (q_th, d_q_th__t, d_q_th__q_th_td, d_q_th__p_td, d_q_th__c0, d_q_th__c1, d_q_th__c2, d_q_th__k0,
+        d_q_th__k1, d_q_th__k2, d_q_th__omega0_hat, d_q_th__phase_td)
 
 
 @njit(cache=True, error_model="numpy")
@@ -481,7 +403,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 1146
+    # Total ops: 752
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -491,6 +413,8 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
             and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN72 + (STATUS_INVALID_INPUT,)
+    # the tangents the loops compute once per direction: _T[row, direction]
+    _T = np.empty((38, 5))
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -511,22 +435,79 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_E_td__q_th_td = -_x7*q_r_td*math.sin(q_th_td)
     d_E_td__q_thd_td = _x2
     d_E_td__k = _x5 + _x6 - l0*q_r_td
+    _T[0, 0] = d_E_td__q_r_td
+    _T[0, 1] = d_E_td__q_rd_td
+    _T[0, 2] = d_E_td__q_th_td
+    _T[0, 3] = d_E_td__q_thd_td
+    _T[0, 4] = d_E_td__k
+    _T[1, 0] = 0.0
+    _T[1, 1] = 0.0
+    _T[1, 2] = 0.0
+    _T[1, 3] = 0.0
+    _T[1, 4] = 1.0
+    _T[2, 0] = d_p_td__q_r_td
+    _T[2, 1] = 0.0
+    _T[2, 2] = 0.0
+    _T[2, 3] = d_p_td__q_thd_td
+    _T[2, 4] = 0.0
+    _T[3, 0] = 1.0
+    _T[3, 1] = 0.0
+    _T[3, 2] = 0.0
+    _T[3, 3] = 0.0
+    _T[3, 4] = 0.0
+    _T[4, 0] = 0.0
+    _T[4, 1] = 1.0
+    _T[4, 2] = 0.0
+    _T[4, 3] = 0.0
+    _T[4, 4] = 0.0
+    _T[5, 0] = 0.0
+    _T[5, 1] = 0.0
+    _T[5, 2] = 1.0
+    _T[5, 3] = 0.0
+    _T[5, 4] = 0.0
+    _T[6, 0] = 0.0
+    _T[6, 1] = 0.0
+    _T[6, 2] = 0.0
+    _T[6, 3] = 0.0
+    _T[6, 4] = 0.0
+    _T[7, 0] = 0.0
+    _T[7, 1] = 0.0
+    _T[7, 2] = 0.0
+    _T[7, 3] = 0.0
+    _T[7, 4] = 0.0
+    _T[8, 0] = 0.0
+    _T[8, 1] = 0.0
+    _T[8, 2] = 0.0
+    _T[8, 3] = 0.0
+    _T[8, 4] = 0.0
+    _T[9, 0] = 0.0
+    _T[9, 1] = 0.0
+    _T[9, 2] = 0.0
+    _T[9, 3] = 0.0
+    _T[9, 4] = 0.0
+    _T[10, 0] = 0.0
+    _T[10, 1] = 0.0
+    _T[10, 2] = 0.0
+    _T[10, 3] = 0.0
+    _T[10, 4] = 0.0
+    _T[11, 0] = 0.0
+    _T[11, 1] = 0.0
+    _T[11, 2] = 0.0
+    _T[11, 3] = 0.0
+    _T[11, 4] = 0.0
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
-    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
-    # included (its values are visible after the loop)
-    _pki0 = (0.0, 0.0, 0.0, 1.0, g_s, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    _pk0 = _pki0
+    tau1 = 0.0
+    tau2 = 0.0
+    tau3 = 0.0
+    T = 1.0
+    g_eff = g_s
+    r_c = 0.0
     passes = 0.0
     _conv0 = False
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
-        (tau1, tau2, tau3, T, g_eff, r_c, d_tau1__q_r_td, d_tau1__q_rd_td, d_tau1__q_th_td, d_tau1__q_thd_td,
-            d_tau1__k, d_tau2__q_r_td, d_tau2__q_rd_td, d_tau2__q_th_td, d_tau2__q_thd_td, d_tau2__k,
-            d_tau3__q_r_td, d_tau3__q_rd_td, d_tau3__q_th_td, d_tau3__q_thd_td, d_tau3__k, d_T__q_r_td,
-            d_T__q_rd_td, d_T__q_th_td, d_T__q_thd_td, d_T__k, d_g_eff__q_r_td, d_g_eff__q_rd_td,
-            d_g_eff__q_th_td, d_g_eff__q_thd_td, d_g_eff__k, d_r_c__q_r_td, d_r_c__q_rd_td, d_r_c__q_th_td,
-            d_r_c__q_thd_td, d_r_c__k, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
             return _NAN72 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
@@ -536,12 +517,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             + (0.8333333333333334)*tau3)
         _pd__0 = _x11 + 0.8333333333333334
         _pd__1 = 0.8333333333333334 - _x11
-        d_i_c0__q_r_td = _pd__0*d_tau1__q_r_td + _pd__1*d_tau3__q_r_td - 0.6666666666666666*d_tau2__q_r_td
-        d_i_c0__q_rd_td = _pd__0*d_tau1__q_rd_td + _pd__1*d_tau3__q_rd_td - 0.6666666666666666*d_tau2__q_rd_td
-        d_i_c0__q_th_td = _pd__0*d_tau1__q_th_td + _pd__1*d_tau3__q_th_td - 0.6666666666666666*d_tau2__q_th_td
-        d_i_c0__q_thd_td = (_pd__0*d_tau1__q_thd_td + _pd__1*d_tau3__q_thd_td
-            - 0.6666666666666666*d_tau2__q_thd_td)
-        d_i_c0__k = _pd__0*d_tau1__k + _pd__1*d_tau3__k - 0.6666666666666666*d_tau2__k
         _x12 = (1.0/T)
         _x13 = (-0.3333333333333333*_x10*tau1 + (0.3333333333333333)*_x10*tau3 - 3.3333333333333335*tau1
             + (6.666666666666667)*tau2 - 3.3333333333333335*tau3)
@@ -552,15 +527,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__3 = _x15*(-_x10 - 10.0)
         _pd__4 = (6.666666666666667)*_x12
         _pd__5 = _x15*(_x10 - 10.0)
-        d_i_c1__q_r_td = (_pd__2*d_T__q_r_td + _pd__3*d_tau1__q_r_td + _pd__4*d_tau2__q_r_td
-            + _pd__5*d_tau3__q_r_td)
-        d_i_c1__q_rd_td = (_pd__2*d_T__q_rd_td + _pd__3*d_tau1__q_rd_td + _pd__4*d_tau2__q_rd_td
-            + _pd__5*d_tau3__q_rd_td)
-        d_i_c1__q_th_td = (_pd__2*d_T__q_th_td + _pd__3*d_tau1__q_th_td + _pd__4*d_tau2__q_th_td
-            + _pd__5*d_tau3__q_th_td)
-        d_i_c1__q_thd_td = (_pd__2*d_T__q_thd_td + _pd__3*d_tau1__q_thd_td + _pd__4*d_tau2__q_thd_td
-            + _pd__5*d_tau3__q_thd_td)
-        d_i_c1__k = _pd__2*d_T__k + _pd__3*d_tau1__k + _pd__4*d_tau2__k + _pd__5*d_tau3__k
         _x16 = tau1 - 2.0*tau2 + tau3
         _x17 = (3.3333333333333335)*_x14
         i_c2 = _x16*_x17
@@ -568,15 +534,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__7 = _x17
         _pd__8 = -6.666666666666667*_x14
         _pd__9 = _x17
-        d_i_c2__q_r_td = (_pd__6*d_T__q_r_td + _pd__7*d_tau1__q_r_td + _pd__8*d_tau2__q_r_td
-            + _pd__9*d_tau3__q_r_td)
-        d_i_c2__q_rd_td = (_pd__6*d_T__q_rd_td + _pd__7*d_tau1__q_rd_td + _pd__8*d_tau2__q_rd_td
-            + _pd__9*d_tau3__q_rd_td)
-        d_i_c2__q_th_td = (_pd__6*d_T__q_th_td + _pd__7*d_tau1__q_th_td + _pd__8*d_tau2__q_th_td
-            + _pd__9*d_tau3__q_th_td)
-        d_i_c2__q_thd_td = (_pd__6*d_T__q_thd_td + _pd__7*d_tau1__q_thd_td + _pd__8*d_tau2__q_thd_td
-            + _pd__9*d_tau3__q_thd_td)
-        d_i_c2__k = _pd__6*d_T__k + _pd__7*d_tau1__k + _pd__8*d_tau2__k + _pd__9*d_tau3__k
         # T5.3: omega of the stance-mean momentum
         _x18 = (0.5)*i_c0
         _x19 = T**2
@@ -589,39 +546,22 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__12 = _x20*_x22
         _pd__13 = _x21*_x22
         _pd__14 = _x22
-        d_i_omega__q_r_td = (_pd__10*d_T__q_r_td + _pd__11*d_i_c0__q_r_td + _pd__12*d_i_c1__q_r_td
-            + _pd__13*d_i_c2__q_r_td + _pd__14*d_p_td__q_r_td)
-        d_i_omega__q_rd_td = (_pd__10*d_T__q_rd_td + _pd__11*d_i_c0__q_rd_td + _pd__12*d_i_c1__q_rd_td
-            + _pd__13*d_i_c2__q_rd_td)
-        d_i_omega__q_th_td = (_pd__10*d_T__q_th_td + _pd__11*d_i_c0__q_th_td + _pd__12*d_i_c1__q_th_td
-            + _pd__13*d_i_c2__q_th_td)
-        d_i_omega__q_thd_td = (_pd__10*d_T__q_thd_td + _pd__11*d_i_c0__q_thd_td + _pd__12*d_i_c1__q_thd_td
-            + _pd__13*d_i_c2__q_thd_td + _pd__14*d_p_td__q_thd_td)
-        d_i_omega__k = _pd__10*d_T__k + _pd__11*d_i_c0__k + _pd__12*d_i_c1__k + _pd__13*d_i_c2__k
         # T5.4-T5.5: radial solution
-        _c0 = (type5_solution_jvp5_7107c1(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k, d_i_omega__q_r_td,
-            d_g_eff__q_r_td, d_r_c__q_r_td, d_i_omega__q_rd_td, d_g_eff__q_rd_td, d_r_c__q_rd_td,
-            d_i_omega__q_th_td, d_g_eff__q_th_td, d_r_c__q_th_td, d_i_omega__q_thd_td, d_g_eff__q_thd_td,
-            d_r_c__q_thd_td, d_i_omega__k, d_g_eff__k, d_r_c__k))
-        if _c0[30] != STATUS_OK:
-            return _NAN72 + (_c0[30],)
-        (i_omega0_hat, i_a, i_b, i_phase_td, _, d_i_omega0_hat__q_r_td, d_i_omega0_hat__q_rd_td,
-            d_i_omega0_hat__q_th_td, d_i_omega0_hat__q_thd_td, d_i_omega0_hat__k, d_i_a__q_r_td,
-            d_i_a__q_rd_td, d_i_a__q_th_td, d_i_a__q_thd_td, d_i_a__k, d_i_b__q_r_td, d_i_b__q_rd_td,
-            d_i_b__q_th_td, d_i_b__q_thd_td, d_i_b__k, d_i_phase_td__q_r_td, d_i_phase_td__q_rd_td,
-            d_i_phase_td__q_th_td, d_i_phase_td__q_thd_td, d_i_phase_td__k, _, _, _, _, _, _) = _c0
+        _c0 = (type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, i_omega, g_eff, r_c, m,
+            l0, k))
+        if _c0[35] != STATUS_OK:
+            return _NAN72 + (_c0[35],)
+        (i_omega0_hat, i_a, i_b, i_phase_td, _, _, _, _j_i_omega0_hat__omega, _, _j_i_omega0_hat__r_c,
+            _j_i_omega0_hat__k, _, _, _j_i_a__omega, _j_i_a__g_eff, _j_i_a__r_c, _j_i_a__k, _j_i_b__q_r_td,
+            _j_i_b__q_rd_td, _j_i_b__omega, _j_i_b__g_eff, _j_i_b__r_c, _j_i_b__k, _j_i_phase_td__q_r_td,
+            _j_i_phase_td__q_rd_td, _j_i_phase_td__omega, _j_i_phase_td__g_eff, _j_i_phase_td__r_c,
+            _j_i_phase_td__k, _, _, _, _, _, _, _) = _c0
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
             return _NAN72 + (_c1[6],)
         i_phase_lo = _c1[0]
         _j_i_phase_lo__a = _c1[2]
         _j_i_phase_lo__b = _c1[3]
-        # chain rule through geyer_liftoff_phase
-        d_i_phase_lo__q_r_td = _j_i_phase_lo__a*d_i_a__q_r_td + _j_i_phase_lo__b*d_i_b__q_r_td
-        d_i_phase_lo__q_rd_td = _j_i_phase_lo__a*d_i_a__q_rd_td + _j_i_phase_lo__b*d_i_b__q_rd_td
-        d_i_phase_lo__q_th_td = _j_i_phase_lo__a*d_i_a__q_th_td + _j_i_phase_lo__b*d_i_b__q_th_td
-        d_i_phase_lo__q_thd_td = _j_i_phase_lo__a*d_i_a__q_thd_td + _j_i_phase_lo__b*d_i_b__q_thd_td
-        d_i_phase_lo__k = _j_i_phase_lo__a*d_i_a__k + _j_i_phase_lo__b*d_i_b__k
         # eqs (13)-(14) minus (12); T5.6: the rate factor
         _x23 = (1.0/i_omega0_hat)
         _x24 = -i_phase_td + (1.5)*math.pi
@@ -630,25 +570,11 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__15 = -_x24*_x25
         _x26 = -_x23
         _pd__16 = _x26
-        d_i_t_bottom__q_r_td = _pd__15*d_i_omega0_hat__q_r_td + _pd__16*d_i_phase_td__q_r_td
-        d_i_t_bottom__q_rd_td = _pd__15*d_i_omega0_hat__q_rd_td + _pd__16*d_i_phase_td__q_rd_td
-        d_i_t_bottom__q_th_td = _pd__15*d_i_omega0_hat__q_th_td + _pd__16*d_i_phase_td__q_th_td
-        d_i_t_bottom__q_thd_td = _pd__15*d_i_omega0_hat__q_thd_td + _pd__16*d_i_phase_td__q_thd_td
-        d_i_t_bottom__k = _pd__15*d_i_omega0_hat__k + _pd__16*d_i_phase_td__k
         _x27 = i_phase_lo - i_phase_td
         i_t_stance = _x23*_x27
         _pd__17 = -_x25*_x27
         _pd__18 = _x23
         _pd__19 = _x26
-        d_i_t_stance__q_r_td = (_pd__17*d_i_omega0_hat__q_r_td + _pd__18*d_i_phase_lo__q_r_td
-            + _pd__19*d_i_phase_td__q_r_td)
-        d_i_t_stance__q_rd_td = (_pd__17*d_i_omega0_hat__q_rd_td + _pd__18*d_i_phase_lo__q_rd_td
-            + _pd__19*d_i_phase_td__q_rd_td)
-        d_i_t_stance__q_th_td = (_pd__17*d_i_omega0_hat__q_th_td + _pd__18*d_i_phase_lo__q_th_td
-            + _pd__19*d_i_phase_td__q_th_td)
-        d_i_t_stance__q_thd_td = (_pd__17*d_i_omega0_hat__q_thd_td + _pd__18*d_i_phase_lo__q_thd_td
-            + _pd__19*d_i_phase_td__q_thd_td)
-        d_i_t_stance__k = _pd__17*d_i_omega0_hat__k + _pd__18*d_i_phase_lo__k + _pd__19*d_i_phase_td__k
         _x28 = 3.0*i_b**2
         _x29 = 16.0*r_c
         _x30 = r_c**2
@@ -669,89 +595,31 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _x42 = 24.0*r_c + 8.0
         _x43 = _x39**2*(-_x31 - _x35 - 12.0*r_c - 4.0)
         _pd__22 = (0.5)*_x33*_x43 + _x40*(_x42 - 16.0*i_a)
-        d_i_k0__q_r_td = _pd__20*d_i_a__q_r_td + _pd__21*d_i_b__q_r_td + _pd__22*d_r_c__q_r_td
-        d_i_k0__q_rd_td = _pd__20*d_i_a__q_rd_td + _pd__21*d_i_b__q_rd_td + _pd__22*d_r_c__q_rd_td
-        d_i_k0__q_th_td = _pd__20*d_i_a__q_th_td + _pd__21*d_i_b__q_th_td + _pd__22*d_r_c__q_th_td
-        d_i_k0__q_thd_td = _pd__20*d_i_a__q_thd_td + _pd__21*d_i_b__q_thd_td + _pd__22*d_r_c__q_thd_td
-        d_i_k0__k = _pd__20*d_i_a__k + _pd__21*d_i_b__k + _pd__22*d_r_c__k
         _x44 = -2.0*_x37 + 6.0*i_a
         i_k1 = _x41*_x44
         _pd__23 = 6.0*_x41
         _pd__24 = _x39*_x44
         _pd__25 = -8.0*_x41 + _x43*_x44*i_b
-        d_i_k1__q_r_td = _pd__23*d_i_a__q_r_td + _pd__24*d_i_b__q_r_td + _pd__25*d_r_c__q_r_td
-        d_i_k1__q_rd_td = _pd__23*d_i_a__q_rd_td + _pd__24*d_i_b__q_rd_td + _pd__25*d_r_c__q_rd_td
-        d_i_k1__q_th_td = _pd__23*d_i_a__q_th_td + _pd__24*d_i_b__q_th_td + _pd__25*d_r_c__q_th_td
-        d_i_k1__q_thd_td = _pd__23*d_i_a__q_thd_td + _pd__24*d_i_b__q_thd_td + _pd__25*d_r_c__q_thd_td
-        d_i_k1__k = _pd__23*d_i_a__k + _pd__24*d_i_b__k + _pd__25*d_r_c__k
         _x45 = 8.0*_x34
         _x46 = _x32 + 2.0*_x36 + _x45
         _x47 = (1.0/_x46)
         i_k2 = -_x28*_x47
         _pd__26 = -6.0*_x47*i_b
         _pd__27 = -_x28*_x47**2*(-24.0*_x30 - _x42 - _x45)
-        d_i_k2__q_r_td = _pd__26*d_i_b__q_r_td + _pd__27*d_r_c__q_r_td
-        d_i_k2__q_rd_td = _pd__26*d_i_b__q_rd_td + _pd__27*d_r_c__q_rd_td
-        d_i_k2__q_th_td = _pd__26*d_i_b__q_th_td + _pd__27*d_r_c__q_th_td
-        d_i_k2__q_thd_td = _pd__26*d_i_b__q_thd_td + _pd__27*d_r_c__q_thd_td
-        d_i_k2__k = _pd__26*d_i_b__k + _pd__27*d_r_c__k
-        _c2 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0,
-            i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td*(0.5
-            - 0.1*math.sqrt(15.0)), d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td, d_i_c2__q_r_td,
-            d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td,
-            d_i_t_stance__q_rd_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_rd_td, d_i_c1__q_rd_td,
-            d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td,
-            d_i_phase_td__q_rd_td, d_i_t_stance__q_th_td*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__q_th_td,
-            d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td,
-            d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*(0.5
-            - 0.1*math.sqrt(15.0)), d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
-            d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
-            d_i_phase_td__q_thd_td, d_i_t_stance__k*(0.5 - 0.1*math.sqrt(15.0)), d_i_c0__k, d_i_c1__k,
-            d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
-        i_th1 = _c2[0]
-        d_i_th1__q_r_td = _c2[1]
-        d_i_th1__q_rd_td = _c2[2]
-        d_i_th1__q_th_td = _c2[3]
-        d_i_th1__q_thd_td = _c2[4]
-        d_i_th1__k = _c2[5]
-        _c3 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1,
-            i_k2, i_omega0_hat, i_phase_td, m, l0, (0.5)*d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td,
-            d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td,
-            d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, (0.5)*d_i_t_stance__q_rd_td, d_i_c0__q_rd_td,
-            d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td,
-            d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td, (0.5)*d_i_t_stance__q_th_td, d_i_c0__q_th_td,
-            d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td,
-            d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td, (0.5)*d_i_t_stance__q_thd_td, d_p_td__q_thd_td,
-            d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td,
-            d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td, (0.5)*d_i_t_stance__k,
-            d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k,
-            d_i_phase_td__k))
-        i_th2 = _c3[0]
-        d_i_th2__q_r_td = _c3[1]
-        d_i_th2__q_rd_td = _c3[2]
-        d_i_th2__q_th_td = _c3[3]
-        d_i_th2__q_thd_td = _c3[4]
-        d_i_th2__k = _c3[5]
-        _c4 = (type5_leg_angle_jvp5_b6d403((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td,
-            i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0,
-            d_i_t_stance__q_r_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_r_td, d_i_c0__q_r_td,
-            d_i_c1__q_r_td, d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td,
-            d_i_omega0_hat__q_r_td, d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td*((0.1)*math.sqrt(15.0) + 0.5),
-            d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td, d_i_k0__q_rd_td, d_i_k1__q_rd_td,
-            d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
-            d_i_t_stance__q_th_td*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__q_th_td, d_i_c1__q_th_td,
-            d_i_c2__q_th_td, d_i_k0__q_th_td, d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td,
-            d_i_phase_td__q_th_td, d_i_t_stance__q_thd_td*((0.1)*math.sqrt(15.0) + 0.5), d_p_td__q_thd_td,
-            d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td, d_i_k0__q_thd_td, d_i_k1__q_thd_td,
-            d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td, d_i_phase_td__q_thd_td,
-            d_i_t_stance__k*((0.1)*math.sqrt(15.0) + 0.5), d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k,
-            d_i_k1__k, d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
-        i_th3 = _c4[0]
-        d_i_th3__q_r_td = _c4[1]
-        d_i_th3__q_rd_td = _c4[2]
-        d_i_th3__q_th_td = _c4[3]
-        d_i_th3__q_thd_td = _c4[4]
-        d_i_th3__k = _c4[5]
+        _c2 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*(1.0
+            - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+            i_phase_td, m, l0))
+        (i_th1, _j_i_th1__t, _j_i_th1__q_th_td, _j_i_th1__p_td, _j_i_th1__c0, _j_i_th1__c1, _j_i_th1__c2,
+            _j_i_th1__k0, _j_i_th1__k1, _j_i_th1__k2, _j_i_th1__omega0_hat, _j_i_th1__phase_td) = _c2
+        _c3 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance,
+            q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+        (i_th2, _j_i_th2__t, _j_i_th2__q_th_td, _j_i_th2__p_td, _j_i_th2__c0, _j_i_th2__c1, _j_i_th2__c2,
+            _j_i_th2__k0, _j_i_th2__k1, _j_i_th2__k2, _j_i_th2__omega0_hat, _j_i_th2__phase_td) = _c3
+        _c4 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*((0.2
+            )*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+            i_phase_td, m, l0))
+        (i_th3, _j_i_th3__t, _j_i_th3__q_th_td, _j_i_th3__p_td, _j_i_th3__c0, _j_i_th3__c1, _j_i_th3__c2,
+            _j_i_th3__k0, _j_i_th3__k1, _j_i_th3__k2, _j_i_th3__omega0_hat, _j_i_th3__phase_td) = _c4
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x48 = (0.2)*math.sqrt(15.0)
         _x49 = 1.0 - _x48
@@ -777,17 +645,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__32 = _x49*_x56*_x60*_x63
         _x64 = math.cos(i_th1)
         _pd__33 = _x55*_x58*_x64
-        d_i_tau1__q_r_td = (_pd__28*d_i_a__q_r_td + _pd__29*d_i_b__q_r_td + _pd__30*d_i_omega0_hat__q_r_td
-            + _pd__31*d_i_phase_td__q_r_td + _pd__32*d_i_t_stance__q_r_td + _pd__33*d_i_th1__q_r_td)
-        d_i_tau1__q_rd_td = (_pd__28*d_i_a__q_rd_td + _pd__29*d_i_b__q_rd_td + _pd__30*d_i_omega0_hat__q_rd_td
-            + _pd__31*d_i_phase_td__q_rd_td + _pd__32*d_i_t_stance__q_rd_td + _pd__33*d_i_th1__q_rd_td)
-        d_i_tau1__q_th_td = (_pd__28*d_i_a__q_th_td + _pd__29*d_i_b__q_th_td + _pd__30*d_i_omega0_hat__q_th_td
-            + _pd__31*d_i_phase_td__q_th_td + _pd__32*d_i_t_stance__q_th_td + _pd__33*d_i_th1__q_th_td)
-        d_i_tau1__q_thd_td = (_pd__28*d_i_a__q_thd_td + _pd__29*d_i_b__q_thd_td
-            + _pd__30*d_i_omega0_hat__q_thd_td + _pd__31*d_i_phase_td__q_thd_td
-            + _pd__32*d_i_t_stance__q_thd_td + _pd__33*d_i_th1__q_thd_td)
-        d_i_tau1__k = (_pd__28*d_i_a__k + _pd__29*d_i_b__k + _pd__30*d_i_omega0_hat__k
-            + _pd__31*d_i_phase_td__k + _pd__32*d_i_t_stance__k + _pd__33*d_i_th1__k)
         _x65 = _x51 + i_phase_td
         _x66 = math.sin(_x65)
         _x67 = _x54 + _x66*i_b
@@ -804,17 +661,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__38 = _x63*_x68*_x71
         _x73 = math.cos(i_th2)
         _pd__39 = _x58*_x67*_x73
-        d_i_tau2__q_r_td = (_pd__34*d_i_a__q_r_td + _pd__35*d_i_b__q_r_td + _pd__36*d_i_omega0_hat__q_r_td
-            + _pd__37*d_i_phase_td__q_r_td + _pd__38*d_i_t_stance__q_r_td + _pd__39*d_i_th2__q_r_td)
-        d_i_tau2__q_rd_td = (_pd__34*d_i_a__q_rd_td + _pd__35*d_i_b__q_rd_td + _pd__36*d_i_omega0_hat__q_rd_td
-            + _pd__37*d_i_phase_td__q_rd_td + _pd__38*d_i_t_stance__q_rd_td + _pd__39*d_i_th2__q_rd_td)
-        d_i_tau2__q_th_td = (_pd__34*d_i_a__q_th_td + _pd__35*d_i_b__q_th_td + _pd__36*d_i_omega0_hat__q_th_td
-            + _pd__37*d_i_phase_td__q_th_td + _pd__38*d_i_t_stance__q_th_td + _pd__39*d_i_th2__q_th_td)
-        d_i_tau2__q_thd_td = (_pd__34*d_i_a__q_thd_td + _pd__35*d_i_b__q_thd_td
-            + _pd__36*d_i_omega0_hat__q_thd_td + _pd__37*d_i_phase_td__q_thd_td
-            + _pd__38*d_i_t_stance__q_thd_td + _pd__39*d_i_th2__q_thd_td)
-        d_i_tau2__k = (_pd__34*d_i_a__k + _pd__35*d_i_b__k + _pd__36*d_i_omega0_hat__k
-            + _pd__37*d_i_phase_td__k + _pd__38*d_i_t_stance__k + _pd__39*d_i_th2__k)
         _x74 = _x48 + 1.0
         _x75 = _x51*_x74 + i_phase_td
         _x76 = math.sin(_x75)
@@ -831,28 +677,11 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__44 = _x63*_x74*_x78*_x80
         _x82 = math.cos(i_th3)
         _pd__45 = _x58*_x77*_x82
-        d_i_tau3__q_r_td = (_pd__40*d_i_a__q_r_td + _pd__41*d_i_b__q_r_td + _pd__42*d_i_omega0_hat__q_r_td
-            + _pd__43*d_i_phase_td__q_r_td + _pd__44*d_i_t_stance__q_r_td + _pd__45*d_i_th3__q_r_td)
-        d_i_tau3__q_rd_td = (_pd__40*d_i_a__q_rd_td + _pd__41*d_i_b__q_rd_td + _pd__42*d_i_omega0_hat__q_rd_td
-            + _pd__43*d_i_phase_td__q_rd_td + _pd__44*d_i_t_stance__q_rd_td + _pd__45*d_i_th3__q_rd_td)
-        d_i_tau3__q_th_td = (_pd__40*d_i_a__q_th_td + _pd__41*d_i_b__q_th_td + _pd__42*d_i_omega0_hat__q_th_td
-            + _pd__43*d_i_phase_td__q_th_td + _pd__44*d_i_t_stance__q_th_td + _pd__45*d_i_th3__q_th_td)
-        d_i_tau3__q_thd_td = (_pd__40*d_i_a__q_thd_td + _pd__41*d_i_b__q_thd_td
-            + _pd__42*d_i_omega0_hat__q_thd_td + _pd__43*d_i_phase_td__q_thd_td
-            + _pd__44*d_i_t_stance__q_thd_td + _pd__45*d_i_th3__q_thd_td)
-        d_i_tau3__k = (_pd__40*d_i_a__k + _pd__41*d_i_b__k + _pd__42*d_i_omega0_hat__k
-            + _pd__43*d_i_phase_td__k + _pd__44*d_i_t_stance__k + _pd__45*d_i_th3__k)
         i_g_eff = _x62*((0.5555555555555556)*_x64 + (0.8888888888888888)*_x73 + (0.5555555555555556)*_x82)
         _x83 = (0.2777777777777778)*g_s
         _pd__46 = -_x56*_x83
         _pd__47 = -0.4444444444444444*_x69
         _pd__48 = -_x78*_x83
-        d_i_g_eff__q_r_td = _pd__46*d_i_th1__q_r_td + _pd__47*d_i_th2__q_r_td + _pd__48*d_i_th3__q_r_td
-        d_i_g_eff__q_rd_td = _pd__46*d_i_th1__q_rd_td + _pd__47*d_i_th2__q_rd_td + _pd__48*d_i_th3__q_rd_td
-        d_i_g_eff__q_th_td = _pd__46*d_i_th1__q_th_td + _pd__47*d_i_th2__q_th_td + _pd__48*d_i_th3__q_th_td
-        d_i_g_eff__q_thd_td = (_pd__46*d_i_th1__q_thd_td + _pd__47*d_i_th2__q_thd_td
-            + _pd__48*d_i_th3__q_thd_td)
-        d_i_g_eff__k = _pd__46*d_i_th1__k + _pd__47*d_i_th2__k + _pd__48*d_i_th3__k
         _x84 = i_phase_lo - i_phase_td
         _x85 = (1.0/_x84)
         _x86 = math.cos(i_phase_lo) - math.cos(i_phase_td)
@@ -863,15 +692,88 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _x89 = _x85**2*_x86*i_b
         _pd__50 = _x88*math.sin(i_phase_lo) + _x89
         _pd__51 = -_x88*math.sin(i_phase_td) - _x89
-        d_i_r_c__q_r_td = (_pd__49*d_i_b__q_r_td + _pd__50*d_i_phase_lo__q_r_td + _pd__51*d_i_phase_td__q_r_td
-            + d_i_a__q_r_td)
-        d_i_r_c__q_rd_td = (_pd__49*d_i_b__q_rd_td + _pd__50*d_i_phase_lo__q_rd_td
-            + _pd__51*d_i_phase_td__q_rd_td + d_i_a__q_rd_td)
-        d_i_r_c__q_th_td = (_pd__49*d_i_b__q_th_td + _pd__50*d_i_phase_lo__q_th_td
-            + _pd__51*d_i_phase_td__q_th_td + d_i_a__q_th_td)
-        d_i_r_c__q_thd_td = (_pd__49*d_i_b__q_thd_td + _pd__50*d_i_phase_lo__q_thd_td
-            + _pd__51*d_i_phase_td__q_thd_td + d_i_a__q_thd_td)
-        d_i_r_c__k = _pd__49*d_i_b__k + _pd__50*d_i_phase_lo__k + _pd__51*d_i_phase_td__k + d_i_a__k
+        # the evaluation's tangents, once per direction
+        for _j0 in range(5):
+            d_k__j = _T[1, _j0]
+            d_p_td__j = _T[2, _j0]
+            d_q_r_td__j = _T[3, _j0]
+            d_q_rd_td__j = _T[4, _j0]
+            d_q_th_td__j = _T[5, _j0]
+            d_tau1__j = _T[6, _j0]
+            d_tau2__j = _T[7, _j0]
+            d_tau3__j = _T[8, _j0]
+            d_T__j = _T[9, _j0]
+            d_g_eff__j = _T[10, _j0]
+            d_r_c__j = _T[11, _j0]
+            # T5.1: the torque quadratic through the nodal torques of the previous pass
+            d_i_c0__j = _pd__0*d_tau1__j + _pd__1*d_tau3__j - 0.6666666666666666*d_tau2__j
+            d_i_c1__j = _pd__2*d_T__j + _pd__3*d_tau1__j + _pd__4*d_tau2__j + _pd__5*d_tau3__j
+            d_i_c2__j = _pd__6*d_T__j + _pd__7*d_tau1__j + _pd__8*d_tau2__j + _pd__9*d_tau3__j
+            # T5.3: omega of the stance-mean momentum
+            d_i_omega__j = (_pd__10*d_T__j + _pd__11*d_i_c0__j + _pd__12*d_i_c1__j + _pd__13*d_i_c2__j
+                + _pd__14*d_p_td__j)
+            # chain rule through type5_solution
+            d_i_omega0_hat__j = (_j_i_omega0_hat__k*d_k__j + _j_i_omega0_hat__omega*d_i_omega__j
+                + _j_i_omega0_hat__r_c*d_r_c__j)
+            d_i_a__j = (_j_i_a__g_eff*d_g_eff__j + _j_i_a__k*d_k__j + _j_i_a__omega*d_i_omega__j
+                + _j_i_a__r_c*d_r_c__j)
+            d_i_b__j = (_j_i_b__g_eff*d_g_eff__j + _j_i_b__k*d_k__j + _j_i_b__omega*d_i_omega__j
+                + _j_i_b__q_r_td*d_q_r_td__j + _j_i_b__q_rd_td*d_q_rd_td__j + _j_i_b__r_c*d_r_c__j)
+            d_i_phase_td__j = (_j_i_phase_td__g_eff*d_g_eff__j + _j_i_phase_td__k*d_k__j
+                + _j_i_phase_td__omega*d_i_omega__j + _j_i_phase_td__q_r_td*d_q_r_td__j
+                + _j_i_phase_td__q_rd_td*d_q_rd_td__j + _j_i_phase_td__r_c*d_r_c__j)
+            # chain rule through geyer_liftoff_phase
+            d_i_phase_lo__j = _j_i_phase_lo__a*d_i_a__j + _j_i_phase_lo__b*d_i_b__j
+            # eqs (13)-(14) minus (12); T5.6: the rate factor
+            d_i_t_bottom__j = _pd__15*d_i_omega0_hat__j + _pd__16*d_i_phase_td__j
+            d_i_t_stance__j = _pd__17*d_i_omega0_hat__j + _pd__18*d_i_phase_lo__j + _pd__19*d_i_phase_td__j
+            d_i_k0__j = _pd__20*d_i_a__j + _pd__21*d_i_b__j + _pd__22*d_r_c__j
+            d_i_k1__j = _pd__23*d_i_a__j + _pd__24*d_i_b__j + _pd__25*d_r_c__j
+            d_i_k2__j = _pd__26*d_i_b__j + _pd__27*d_r_c__j
+            # chain rule through type5_leg_angle
+            d_i_th1__j = (_j_i_th1__c0*d_i_c0__j + _j_i_th1__c1*d_i_c1__j + _j_i_th1__c2*d_i_c2__j
+                + _j_i_th1__k0*d_i_k0__j + _j_i_th1__k1*d_i_k1__j + _j_i_th1__k2*d_i_k2__j
+                + _j_i_th1__omega0_hat*d_i_omega0_hat__j + _j_i_th1__p_td*d_p_td__j
+                + _j_i_th1__phase_td*d_i_phase_td__j + _j_i_th1__q_th_td*d_q_th_td__j
+                + _j_i_th1__t*d_i_t_stance__j*(0.5 - 0.1*math.sqrt(15.0)))
+            # chain rule through type5_leg_angle
+            d_i_th2__j = (_j_i_th2__c0*d_i_c0__j + _j_i_th2__c1*d_i_c1__j + _j_i_th2__c2*d_i_c2__j
+                + _j_i_th2__k0*d_i_k0__j + _j_i_th2__k1*d_i_k1__j + _j_i_th2__k2*d_i_k2__j
+                + _j_i_th2__omega0_hat*d_i_omega0_hat__j + _j_i_th2__p_td*d_p_td__j
+                + _j_i_th2__phase_td*d_i_phase_td__j + _j_i_th2__q_th_td*d_q_th_td__j
+                + (0.5)*_j_i_th2__t*d_i_t_stance__j)
+            # chain rule through type5_leg_angle
+            d_i_th3__j = (_j_i_th3__c0*d_i_c0__j + _j_i_th3__c1*d_i_c1__j + _j_i_th3__c2*d_i_c2__j
+                + _j_i_th3__k0*d_i_k0__j + _j_i_th3__k1*d_i_k1__j + _j_i_th3__k2*d_i_k2__j
+                + _j_i_th3__omega0_hat*d_i_omega0_hat__j + _j_i_th3__p_td*d_p_td__j
+                + _j_i_th3__phase_td*d_i_phase_td__j + _j_i_th3__q_th_td*d_q_th_td__j
+                + _j_i_th3__t*d_i_t_stance__j*((0.1)*math.sqrt(15.0) + 0.5))
+            # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+            d_i_tau1__j = (_pd__28*d_i_a__j + _pd__29*d_i_b__j + _pd__30*d_i_omega0_hat__j
+                + _pd__31*d_i_phase_td__j + _pd__32*d_i_t_stance__j + _pd__33*d_i_th1__j)
+            d_i_tau2__j = (_pd__34*d_i_a__j + _pd__35*d_i_b__j + _pd__36*d_i_omega0_hat__j
+                + _pd__37*d_i_phase_td__j + _pd__38*d_i_t_stance__j + _pd__39*d_i_th2__j)
+            d_i_tau3__j = (_pd__40*d_i_a__j + _pd__41*d_i_b__j + _pd__42*d_i_omega0_hat__j
+                + _pd__43*d_i_phase_td__j + _pd__44*d_i_t_stance__j + _pd__45*d_i_th3__j)
+            d_i_g_eff__j = _pd__46*d_i_th1__j + _pd__47*d_i_th2__j + _pd__48*d_i_th3__j
+            d_i_r_c__j = _pd__49*d_i_b__j + _pd__50*d_i_phase_lo__j + _pd__51*d_i_phase_td__j + d_i_a__j
+            _T[12, _j0] = d_i_c0__j
+            _T[13, _j0] = d_i_c1__j
+            _T[14, _j0] = d_i_c2__j
+            _T[15, _j0] = d_i_omega0_hat__j
+            _T[16, _j0] = d_i_a__j
+            _T[17, _j0] = d_i_b__j
+            _T[18, _j0] = d_i_phase_td__j
+            _T[19, _j0] = d_i_t_bottom__j
+            _T[20, _j0] = d_i_t_stance__j
+            _T[21, _j0] = d_i_k0__j
+            _T[22, _j0] = d_i_k1__j
+            _T[23, _j0] = d_i_k2__j
+            _T[24, _j0] = d_i_tau1__j
+            _T[25, _j0] = d_i_tau2__j
+            _T[26, _j0] = d_i_tau3__j
+            _T[27, _j0] = d_i_g_eff__j
+            _T[28, _j0] = d_i_r_c__j
         if _conv0 or _it0 == _last0:
             break
         # next values
@@ -881,65 +783,54 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         T__next = i_t_stance
         g_eff__next = i_g_eff
         r_c__next = i_r_c
+        # the next state's tangents, once per direction
+        for _j1 in range(5):
+            d_i_t_stance__j = _T[20, _j1]
+            d_i_tau1__j = _T[24, _j1]
+            d_i_tau2__j = _T[25, _j1]
+            d_i_tau3__j = _T[26, _j1]
+            d_i_g_eff__j = _T[27, _j1]
+            d_i_r_c__j = _T[28, _j1]
+            _T[6, _j1] = d_i_tau1__j
+            _T[7, _j1] = d_i_tau2__j
+            _T[8, _j1] = d_i_tau3__j
+            _T[9, _j1] = d_i_t_stance__j
+            _T[10, _j1] = d_i_g_eff__j
+            _T[11, _j1] = d_i_r_c__j
+        _n0_0 = tau1__next
+        _n0_1 = tau2__next
+        _n0_2 = tau3__next
+        _n0_3 = T__next
+        _n0_4 = g_eff__next
+        _n0_5 = r_c__next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(tau1__next - tau1) <= tol*(g_s*l0*m)) and (abs(tau2__next - tau2)
-            <= tol*(g_s*l0*m)) and (abs(tau3__next - tau3) <= tol*(g_s*l0*m)) and (abs(T__next - T)
-            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(g_eff__next - g_eff) <= tol*(g_s)) and (abs(r_c__next
-            - r_c) <= tol*(1.0)))
-        _pkn0 = (tau1__next, tau2__next, tau3__next, T__next, g_eff__next, r_c__next, d_i_tau1__q_r_td,
-            d_i_tau1__q_rd_td, d_i_tau1__q_th_td, d_i_tau1__q_thd_td, d_i_tau1__k, d_i_tau2__q_r_td,
-            d_i_tau2__q_rd_td, d_i_tau2__q_th_td, d_i_tau2__q_thd_td, d_i_tau2__k, d_i_tau3__q_r_td,
-            d_i_tau3__q_rd_td, d_i_tau3__q_th_td, d_i_tau3__q_thd_td, d_i_tau3__k, d_i_t_stance__q_r_td,
-            d_i_t_stance__q_rd_td, d_i_t_stance__q_th_td, d_i_t_stance__q_thd_td, d_i_t_stance__k,
-            d_i_g_eff__q_r_td, d_i_g_eff__q_rd_td, d_i_g_eff__q_th_td, d_i_g_eff__q_thd_td, d_i_g_eff__k,
-            d_i_r_c__q_r_td, d_i_r_c__q_rd_td, d_i_r_c__q_th_td, d_i_r_c__q_thd_td, d_i_r_c__k, )
-        _pk0 = _pkn0
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
+        tau1 = _n0_0
+        tau2 = _n0_1
+        tau3 = _n0_2
+        T = _n0_3
+        g_eff = _n0_4
+        r_c = _n0_5
         passes += 1.0
-    _c5 = (type5_leg_angle_jvp5_b6d403(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
-        i_omega0_hat, i_phase_td, m, l0, d_i_t_bottom__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td,
-        d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td,
-        d_i_phase_td__q_r_td, d_i_t_bottom__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td,
-        d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
-        d_i_t_bottom__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td,
-        d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td,
-        d_i_t_bottom__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
-        d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
-        d_i_phase_td__q_thd_td, d_i_t_bottom__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k,
-        d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
-    bottom_q_th = _c5[0]
-    d_bottom_q_th__q_r_td = _c5[1]
-    d_bottom_q_th__q_rd_td = _c5[2]
-    d_bottom_q_th__q_th_td = _c5[3]
-    d_bottom_q_th__q_thd_td = _c5[4]
-    d_bottom_q_th__k = _c5[5]
-    _c6 = (type5_leg_angle_jvp5_b6d403(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
-        i_omega0_hat, i_phase_td, m, l0, d_i_t_stance__q_r_td, d_p_td__q_r_td, d_i_c0__q_r_td, d_i_c1__q_r_td,
-        d_i_c2__q_r_td, d_i_k0__q_r_td, d_i_k1__q_r_td, d_i_k2__q_r_td, d_i_omega0_hat__q_r_td,
-        d_i_phase_td__q_r_td, d_i_t_stance__q_rd_td, d_i_c0__q_rd_td, d_i_c1__q_rd_td, d_i_c2__q_rd_td,
-        d_i_k0__q_rd_td, d_i_k1__q_rd_td, d_i_k2__q_rd_td, d_i_omega0_hat__q_rd_td, d_i_phase_td__q_rd_td,
-        d_i_t_stance__q_th_td, d_i_c0__q_th_td, d_i_c1__q_th_td, d_i_c2__q_th_td, d_i_k0__q_th_td,
-        d_i_k1__q_th_td, d_i_k2__q_th_td, d_i_omega0_hat__q_th_td, d_i_phase_td__q_th_td,
-        d_i_t_stance__q_thd_td, d_p_td__q_thd_td, d_i_c0__q_thd_td, d_i_c1__q_thd_td, d_i_c2__q_thd_td,
-        d_i_k0__q_thd_td, d_i_k1__q_thd_td, d_i_k2__q_thd_td, d_i_omega0_hat__q_thd_td,
-        d_i_phase_td__q_thd_td, d_i_t_stance__k, d_i_c0__k, d_i_c1__k, d_i_c2__k, d_i_k0__k, d_i_k1__k,
-        d_i_k2__k, d_i_omega0_hat__k, d_i_phase_td__k))
-    liftoff_q_th = _c6[0]
-    d_liftoff_q_th__q_r_td = _c6[1]
-    d_liftoff_q_th__q_rd_td = _c6[2]
-    d_liftoff_q_th__q_th_td = _c6[3]
-    d_liftoff_q_th__q_thd_td = _c6[4]
-    d_liftoff_q_th__k = _c6[5]
+    _c5 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_bottom, q_th_td, p_td,
+        i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+    (bottom_q_th, _j_bottom_q_th__t, _j_bottom_q_th__q_th_td, _j_bottom_q_th__p_td, _j_bottom_q_th__c0,
+        _j_bottom_q_th__c1, _j_bottom_q_th__c2, _j_bottom_q_th__k0, _j_bottom_q_th__k1, _j_bottom_q_th__k2,
+        _j_bottom_q_th__omega0_hat, _j_bottom_q_th__phase_td) = _c5
+    _c6 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_stance, q_th_td, p_td,
+        i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+    (liftoff_q_th, _j_liftoff_q_th__t, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__p_td, _j_liftoff_q_th__c0,
+        _j_liftoff_q_th__c1, _j_liftoff_q_th__c2, _j_liftoff_q_th__k0, _j_liftoff_q_th__k1,
+        _j_liftoff_q_th__k2, _j_liftoff_q_th__omega0_hat, _j_liftoff_q_th__phase_td) = _c6
     # T5.7: bottom and liftoff states
     t_bottom = i_t_bottom
     t_stance = i_t_stance
     _x90 = i_a - i_b + 1.0
     bottom_q_r = _x90*l0
-    d_bottom_q_r__q_r_td = d_i_a__q_r_td*l0 - d_i_b__q_r_td*l0
-    d_bottom_q_r__q_rd_td = d_i_a__q_rd_td*l0 - d_i_b__q_rd_td*l0
-    d_bottom_q_r__q_th_td = d_i_a__q_th_td*l0 - d_i_b__q_th_td*l0
-    d_bottom_q_r__q_thd_td = d_i_a__q_thd_td*l0 - d_i_b__q_thd_td*l0
-    d_bottom_q_r__k = d_i_a__k*l0 - d_i_b__k*l0
     bottom_q_rd = 0.0
     _x91 = i_t_bottom**2
     _x92 = (0.5)*_x91
@@ -958,18 +849,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__56 = _x93*_x97
     _pd__57 = _x97*(_x91*i_c2 + i_c0 + i_c1*i_t_bottom)
     _pd__58 = _x97
-    d_bottom_q_thd__q_r_td = (_pd__52*d_i_a__q_r_td + _pd__53*d_i_b__q_r_td + _pd__54*d_i_c0__q_r_td
-        + _pd__55*d_i_c1__q_r_td + _pd__56*d_i_c2__q_r_td + _pd__57*d_i_t_bottom__q_r_td
-        + _pd__58*d_p_td__q_r_td)
-    d_bottom_q_thd__q_rd_td = (_pd__52*d_i_a__q_rd_td + _pd__53*d_i_b__q_rd_td + _pd__54*d_i_c0__q_rd_td
-        + _pd__55*d_i_c1__q_rd_td + _pd__56*d_i_c2__q_rd_td + _pd__57*d_i_t_bottom__q_rd_td)
-    d_bottom_q_thd__q_th_td = (_pd__52*d_i_a__q_th_td + _pd__53*d_i_b__q_th_td + _pd__54*d_i_c0__q_th_td
-        + _pd__55*d_i_c1__q_th_td + _pd__56*d_i_c2__q_th_td + _pd__57*d_i_t_bottom__q_th_td)
-    d_bottom_q_thd__q_thd_td = (_pd__52*d_i_a__q_thd_td + _pd__53*d_i_b__q_thd_td + _pd__54*d_i_c0__q_thd_td
-        + _pd__55*d_i_c1__q_thd_td + _pd__56*d_i_c2__q_thd_td + _pd__57*d_i_t_bottom__q_thd_td
-        + _pd__58*d_p_td__q_thd_td)
-    d_bottom_q_thd__k = (_pd__52*d_i_a__k + _pd__53*d_i_b__k + _pd__54*d_i_c0__k + _pd__55*d_i_c1__k
-        + _pd__56*d_i_c2__k + _pd__57*d_i_t_bottom__k)
     liftoff_q_r = q_r_lo
     _x99 = i_t_stance**2
     _x100 = (0.5)*_x99
@@ -980,15 +859,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__60 = _x101
     _x103 = _x99*i_c2 + i_c0 + i_c1*i_t_stance
     _pd__61 = _x103
-    d_P_c__q_r_td = (_pd__59*d_i_c1__q_r_td + _pd__60*d_i_c2__q_r_td + _pd__61*d_i_t_stance__q_r_td
-        + d_i_c0__q_r_td*i_t_stance)
-    d_P_c__q_rd_td = (_pd__59*d_i_c1__q_rd_td + _pd__60*d_i_c2__q_rd_td + _pd__61*d_i_t_stance__q_rd_td
-        + d_i_c0__q_rd_td*i_t_stance)
-    d_P_c__q_th_td = (_pd__59*d_i_c1__q_th_td + _pd__60*d_i_c2__q_th_td + _pd__61*d_i_t_stance__q_th_td
-        + d_i_c0__q_th_td*i_t_stance)
-    d_P_c__q_thd_td = (_pd__59*d_i_c1__q_thd_td + _pd__60*d_i_c2__q_thd_td + _pd__61*d_i_t_stance__q_thd_td
-        + d_i_c0__q_thd_td*i_t_stance)
-    d_P_c__k = _pd__59*d_i_c1__k + _pd__60*d_i_c2__k + _pd__61*d_i_t_stance__k + d_i_c0__k*i_t_stance
     _x104 = _x95/q_r_lo**2
     liftoff_q_thd = _x104*(_x102 + p_td)
     _pd__62 = _x104*i_t_stance
@@ -996,15 +866,6 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__64 = _x101*_x104
     _pd__65 = _x103*_x104
     _pd__66 = _x104
-    d_liftoff_q_thd__q_r_td = (_pd__62*d_i_c0__q_r_td + _pd__63*d_i_c1__q_r_td + _pd__64*d_i_c2__q_r_td
-        + _pd__65*d_i_t_stance__q_r_td + _pd__66*d_p_td__q_r_td)
-    d_liftoff_q_thd__q_rd_td = (_pd__62*d_i_c0__q_rd_td + _pd__63*d_i_c1__q_rd_td + _pd__64*d_i_c2__q_rd_td
-        + _pd__65*d_i_t_stance__q_rd_td)
-    d_liftoff_q_thd__q_th_td = (_pd__62*d_i_c0__q_th_td + _pd__63*d_i_c1__q_th_td + _pd__64*d_i_c2__q_th_td
-        + _pd__65*d_i_t_stance__q_th_td)
-    d_liftoff_q_thd__q_thd_td = (_pd__62*d_i_c0__q_thd_td + _pd__63*d_i_c1__q_thd_td
-        + _pd__64*d_i_c2__q_thd_td + _pd__65*d_i_t_stance__q_thd_td + _pd__66*d_p_td__q_thd_td)
-    d_liftoff_q_thd__k = _pd__62*d_i_c0__k + _pd__63*d_i_c1__k + _pd__64*d_i_c2__k + _pd__65*d_i_t_stance__k
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return _NAN72 + (STATUS_FALL,)
@@ -1022,51 +883,92 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _x117 = _x106**2/_x109
     _q_rd_lo_sq = (2.0*E_td*_x106 + 2.0*_x106*k*l0*q_r_lo - _x107*math.cos(liftoff_q_th) - _x108*k - _x110*k
         - _x116**2*_x117)
-    _x118 = 2.0*_x106
-    _pd__67 = _x118
-    _x119 = 2.0*i_t_stance
-    _x120 = _x116*_x117
-    _pd__68 = -_x119*_x120
-    _pd__69 = -_x112*_x120
-    _pd__70 = -0.6666666666666666*_x114*_x120
-    _pd__71 = -_x120*(2.0*_x112*i_c2 + _x119*i_c1 + 2.0*i_c0)
-    _pd__72 = _x107*math.sin(liftoff_q_th)
-    _pd__73 = -_x117*(2.0*_x111 + _x113 + (0.6666666666666666)*_x115 + 2.0*p_td)
-    _d_q_rd_lo_sq__q_r_td = (_pd__67*d_E_td__q_r_td + _pd__68*d_i_c0__q_r_td + _pd__69*d_i_c1__q_r_td
-        + _pd__70*d_i_c2__q_r_td + _pd__71*d_i_t_stance__q_r_td + _pd__72*d_liftoff_q_th__q_r_td
-        + _pd__73*d_p_td__q_r_td)
-    _d_q_rd_lo_sq__q_rd_td = (_pd__67*d_E_td__q_rd_td + _pd__68*d_i_c0__q_rd_td + _pd__69*d_i_c1__q_rd_td
-        + _pd__70*d_i_c2__q_rd_td + _pd__71*d_i_t_stance__q_rd_td + _pd__72*d_liftoff_q_th__q_rd_td)
-    _d_q_rd_lo_sq__q_th_td = (_pd__67*d_E_td__q_th_td + _pd__68*d_i_c0__q_th_td + _pd__69*d_i_c1__q_th_td
-        + _pd__70*d_i_c2__q_th_td + _pd__71*d_i_t_stance__q_th_td + _pd__72*d_liftoff_q_th__q_th_td)
-    _d_q_rd_lo_sq__q_thd_td = (_pd__67*d_E_td__q_thd_td + _pd__68*d_i_c0__q_thd_td + _pd__69*d_i_c1__q_thd_td
-        + _pd__70*d_i_c2__q_thd_td + _pd__71*d_i_t_stance__q_thd_td + _pd__72*d_liftoff_q_th__q_thd_td
-        + _pd__73*d_p_td__q_thd_td)
-    _d_q_rd_lo_sq__k = (_pd__67*d_E_td__k + _pd__68*d_i_c0__k + _pd__69*d_i_c1__k + _pd__70*d_i_c2__k
-        + _pd__71*d_i_t_stance__k + _pd__72*d_liftoff_q_th__k - _x108 - _x110 + _x118*l0*q_r_lo)
+    _pd__67 = 2.0*_x106
+    _x118 = 2.0*i_t_stance
+    _x119 = _x116*_x117
+    _pd__68 = -_x118*_x119
+    _pd__69 = -_x112*_x119
+    _pd__70 = -0.6666666666666666*_x114*_x119
+    _pd__71 = -_x119*(2.0*_x112*i_c2 + _x118*i_c1 + 2.0*i_c0)
+    _pd__72 = 2.0*_x106*l0*q_r_lo - _x108 - _x110
+    _pd__73 = _x107*math.sin(liftoff_q_th)
+    _pd__74 = -_x117*(2.0*_x111 + _x113 + (0.6666666666666666)*_x115 + 2.0*p_td)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
         return _NAN72 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
-    _x121 = math.sqrt(_q_rd_lo_sq)
-    liftoff_q_rd = _x121
-    _pd__74 = (0.5)/_x121
-    d_liftoff_q_rd__q_r_td = _d_q_rd_lo_sq__q_r_td*_pd__74
-    d_liftoff_q_rd__q_rd_td = _d_q_rd_lo_sq__q_rd_td*_pd__74
-    d_liftoff_q_rd__q_th_td = _d_q_rd_lo_sq__q_th_td*_pd__74
-    d_liftoff_q_rd__q_thd_td = _d_q_rd_lo_sq__q_thd_td*_pd__74
-    d_liftoff_q_rd__k = _d_q_rd_lo_sq__k*_pd__74
+    _x120 = math.sqrt(_q_rd_lo_sq)
+    liftoff_q_rd = _x120
+    _pd__75 = (0.5)/_x120
+    # their tangents, once per direction
+    for _j2 in range(5):
+        d_E_td__j = _T[0, _j2]
+        d_k__j = _T[1, _j2]
+        d_p_td__j = _T[2, _j2]
+        d_q_th_td__j = _T[5, _j2]
+        d_i_c0__j = _T[12, _j2]
+        d_i_c1__j = _T[13, _j2]
+        d_i_c2__j = _T[14, _j2]
+        d_i_omega0_hat__j = _T[15, _j2]
+        d_i_a__j = _T[16, _j2]
+        d_i_b__j = _T[17, _j2]
+        d_i_phase_td__j = _T[18, _j2]
+        d_i_t_bottom__j = _T[19, _j2]
+        d_i_t_stance__j = _T[20, _j2]
+        d_i_k0__j = _T[21, _j2]
+        d_i_k1__j = _T[22, _j2]
+        d_i_k2__j = _T[23, _j2]
+        # chain rule through type5_leg_angle
+        d_bottom_q_th__j = (_j_bottom_q_th__c0*d_i_c0__j + _j_bottom_q_th__c1*d_i_c1__j
+            + _j_bottom_q_th__c2*d_i_c2__j + _j_bottom_q_th__k0*d_i_k0__j + _j_bottom_q_th__k1*d_i_k1__j
+            + _j_bottom_q_th__k2*d_i_k2__j + _j_bottom_q_th__omega0_hat*d_i_omega0_hat__j
+            + _j_bottom_q_th__p_td*d_p_td__j + _j_bottom_q_th__phase_td*d_i_phase_td__j
+            + _j_bottom_q_th__q_th_td*d_q_th_td__j + _j_bottom_q_th__t*d_i_t_bottom__j)
+        # chain rule through type5_leg_angle
+        d_liftoff_q_th__j = (_j_liftoff_q_th__c0*d_i_c0__j + _j_liftoff_q_th__c1*d_i_c1__j
+            + _j_liftoff_q_th__c2*d_i_c2__j + _j_liftoff_q_th__k0*d_i_k0__j + _j_liftoff_q_th__k1*d_i_k1__j
+            + _j_liftoff_q_th__k2*d_i_k2__j + _j_liftoff_q_th__omega0_hat*d_i_omega0_hat__j
+            + _j_liftoff_q_th__p_td*d_p_td__j + _j_liftoff_q_th__phase_td*d_i_phase_td__j
+            + _j_liftoff_q_th__q_th_td*d_q_th_td__j + _j_liftoff_q_th__t*d_i_t_stance__j)
+        # T5.7: bottom and liftoff states
+        d_bottom_q_r__j = d_i_a__j*l0 - d_i_b__j*l0
+        d_bottom_q_thd__j = (_pd__52*d_i_a__j + _pd__53*d_i_b__j + _pd__54*d_i_c0__j + _pd__55*d_i_c1__j
+            + _pd__56*d_i_c2__j + _pd__57*d_i_t_bottom__j + _pd__58*d_p_td__j)
+        d_P_c__j = _pd__59*d_i_c1__j + _pd__60*d_i_c2__j + _pd__61*d_i_t_stance__j + d_i_c0__j*i_t_stance
+        d_liftoff_q_thd__j = (_pd__62*d_i_c0__j + _pd__63*d_i_c1__j + _pd__64*d_i_c2__j
+            + _pd__65*d_i_t_stance__j + _pd__66*d_p_td__j)
+        _d_q_rd_lo_sq__j = (_pd__67*d_E_td__j + _pd__68*d_i_c0__j + _pd__69*d_i_c1__j + _pd__70*d_i_c2__j
+            + _pd__71*d_i_t_stance__j + _pd__72*d_k__j + _pd__73*d_liftoff_q_th__j + _pd__74*d_p_td__j)
+        # q_rd_lo from the energy
+        d_liftoff_q_rd__j = _d_q_rd_lo_sq__j*_pd__75
+        _T[29, _j2] = d_bottom_q_th__j
+        _T[30, _j2] = d_liftoff_q_th__j
+        _T[31, _j2] = d_i_t_bottom__j
+        _T[32, _j2] = d_i_t_stance__j
+        _T[33, _j2] = d_bottom_q_r__j
+        _T[34, _j2] = d_bottom_q_thd__j
+        _T[35, _j2] = d_P_c__j
+        _T[36, _j2] = d_liftoff_q_thd__j
+        _T[37, _j2] = d_liftoff_q_rd__j
+    (d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, ) = (_T[29, 0], _T[29, 1], _T[29, 2], _T[29, 3], _T[29, 4], )
+    (d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, ) = (_T[30, 0], _T[30, 1], _T[30, 2], _T[30, 3], _T[30, 4], )
+    (d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k,
+        ) = (_T[31, 0], _T[31, 1], _T[31, 2], _T[31, 3], _T[31, 4], )
+    (d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k,
+        ) = (_T[32, 0], _T[32, 1], _T[32, 2], _T[32, 3], _T[32, 4], )
+    (d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+        d_bottom_q_r__k, ) = (_T[33, 0], _T[33, 1], _T[33, 2], _T[33, 3], _T[33, 4], )
+    (d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td,
+        d_bottom_q_thd__k, ) = (_T[34, 0], _T[34, 1], _T[34, 2], _T[34, 3], _T[34, 4], )
+    (d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = (_T[35, 0], _T[35, 1],
+        _T[35, 2], _T[35, 3], _T[35, 4], )
+    (d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td,
+        d_liftoff_q_thd__k, ) = (_T[36, 0], _T[36, 1], _T[36, 2], _T[36, 3], _T[36, 4], )
+    (d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+        d_liftoff_q_rd__k, ) = (_T[37, 0], _T[37, 1], _T[37, 2], _T[37, 3], _T[37, 4], )
     # derivatives of the outputs
-    d_t_bottom__q_r_td = d_i_t_bottom__q_r_td
-    d_t_bottom__q_rd_td = d_i_t_bottom__q_rd_td
-    d_t_bottom__q_th_td = d_i_t_bottom__q_th_td
-    d_t_bottom__q_thd_td = d_i_t_bottom__q_thd_td
-    d_t_bottom__k = d_i_t_bottom__k
-    d_t_stance__q_r_td = d_i_t_stance__q_r_td
-    d_t_stance__q_rd_td = d_i_t_stance__q_rd_td
-    d_t_stance__q_th_td = d_i_t_stance__q_th_td
-    d_t_stance__q_thd_td = d_i_t_stance__q_thd_td
-    d_t_stance__k = d_i_t_stance__k
     d_bottom_q_rd__q_r_td = 0.0
     d_bottom_q_rd__q_rd_td = 0.0
     d_bottom_q_rd__q_th_td = 0.0

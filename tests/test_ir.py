@@ -1034,6 +1034,16 @@ def _d_picard():
     return _kernel("d_picard", _args(a_, b_, n_it), (step, Stage(((r, w + u),))), _out("u", "v", "w", "r"))
 
 
+def _d_tail():
+    """A loop that reads only a, then a tail (stages right after it, differentiated per direction
+    with the loop) that reads b too."""
+    step = Iterate(
+        ((u, a_),), (), (sp.cos(u) / 2 + a_ / 3,), n_it, sp.S.Zero, (sp.S.One,), passes, fail_status=None
+    )
+    tail = (Stage(((v, u * b_ + b_**2),)), Stage(((w, sp.exp(v) * a_),)))
+    return _kernel("d_tail", _args(a_, b_, n_it), (step, *tail), _out("u", "v", "w"))
+
+
 def _d_switch():
     """Branches defining the same outputs differently, one of them through a call and a loop."""
     s_, count = sym("_s"), sym("_count")
@@ -1103,6 +1113,7 @@ D_CASES = {
         [(2.0, 1.0, 30.0, 1e-14), (2.0, 1.0, 0.0, 1e-14), (1.5, 3.0, 2.0, 0.0)],
     ),
     "d_picard": (_d_picard, ("a", "b"), [(0.6, 0.9, 7.0), (0.6, 0.9, 0.0), (1.2, -0.3, 1.0)]),
+    "d_tail": (_d_tail, ("a", "b"), [(0.6, 0.9, 5.0), (0.6, 0.9, 0.0)]),
     "d_switch": (
         _d_switch,
         ("a", "b"),
@@ -1117,10 +1128,9 @@ def _d_kernel(name):
     return make(name == "d_loop_evaluate") if make is _d_loop else make()
 
 
-@pytest.fixture(scope="module")
-def dgen(tmp_path_factory):
-    """Every synthetic kernel, its Jacobian (one kernel, every direction in one pass) and the kernels
-    the differentiation generates, in one module."""
+def dgen_kernels():
+    """Every synthetic kernel and its Jacobian (one kernel, every direction in one pass) with the
+    kernels the differentiation generates: (primal and callee kernels, derivative kernels by name)."""
     from slipmaps.derive.tangent import Differentiator
 
     diff = Differentiator()
@@ -1130,9 +1140,15 @@ def dgen(tmp_path_factory):
         primal[name] = kern
         diff.jacobian(kern, wrt, name=f"{name}_jacobian", summary=f"Jacobian of {name}.")
     diff.build()
-    callees = [_d_inner(), _d_small()]
-    kernels = list(primal.values()) + callees + list(diff.kernels.values())
-    return load_module(tmp_path_factory.mktemp("ir_jacobians"), "ir_jacobians", kernels), diff
+    return list(primal.values()) + [_d_inner(), _d_small()], diff
+
+
+@pytest.fixture(scope="module")
+def dgen(tmp_path_factory):
+    """The module of :func:`dgen_kernels` and its Differentiator."""
+    kernels, diff = dgen_kernels()
+    directory = tmp_path_factory.mktemp("ir_jacobians")
+    return load_module(directory, "ir_jacobians", kernels + list(diff.kernels.values())), diff
 
 
 def _central(fn, point, j, h):
@@ -1179,6 +1195,20 @@ def test_jacobian_kernels_share_callee_derivatives(dgen):
     assert "d_small_jac_p_q" in names
     assert any(nm.startswith("d_switch_jacobian_") for nm in names)  # the branches (one holds a loop)
     assert not any(nm.startswith(("d_loop", "d_picard", "d_nested")) and nm[-1].isdigit() for nm in names)
+
+
+def test_loop_tangents_are_computed_once_per_direction_in_a_loop():
+    """A loop whose steps are stages (and calls) computes its values once per pass and runs its
+    tangent code, written once, per direction on the direction array; a loop holding another loop
+    carries a variable per tangent and direction."""
+    _, diff = dgen_kernels()
+    derived = diff.kernels
+    src = render_module(list(derived.values()))
+    picard = src.split("def d_picard_jacobian(", 1)[1].split("\ndef ", 1)[0]
+    assert "for _j0 in range(2):" in picard and "_T = np.empty((" in picard
+    assert "d_u__j" in picard and "d_u__a" in picard  # per direction in the loop, loaded after it
+    nested = lower(derived["d_nested_jacobian"])
+    assert any(n["kind"] == "loop" and n["packed"] for n in nested["body"])
 
 
 def test_jacobian_of_zero_iterations_is_the_start_values(dgen):
