@@ -598,19 +598,38 @@ class _Ctx:
                 pre.append(Store(row, tuple(t[w] for w in wrt)))
                 gen.tangents[x] = {_J: sym(tangent_name(x, _J))}
                 rows.append((gen.tangents[x][_J], row))
-        state_rows = {}
-        for s, init in zip(names, inits, strict=True):
-            t0 = outer.of(init)
-            state_rows[s.name] = self.row()
-            pre.append(Store(state_rows[s.name], tuple(t0[w] for w in wrt)))
+        n = len(wrt)
+        sub = _Ctx(self.diff, gen, self.counters, generic=True)
+        # the initial values' tangents, per direction too, into the state's rows
+        starts = [sym(f"{s.name}__start") for s in names]
+        init_values, init_tangents = sub.split(
+            (Stage(tuple(zip(starts, inits, strict=True)), comment="the initial values"),)
+        )
+        state_rows = {s.name: self.row() for s in names}
+        pre += init_values
+        pre.append(
+            Directions(
+                n,
+                tuple(rows),
+                tuple(init_tangents),
+                tuple(
+                    (gen.tangents[x.name][_J], state_rows[s.name])
+                    for s, x in zip(names, starts, strict=True)
+                    if gen.tangents[x.name][_J] != 0
+                ),
+                comment="the initial values' tangents, once per direction",
+            )
+        )
+        zero_starts = [s for s, x in zip(names, starts, strict=True) if gen.tangents[x.name][_J] == 0]
+        if zero_starts:
+            pre.append(Directions(n, (), (), tuple((sp.S.Zero, state_rows[s.name]) for s in zero_starts)))
+        for s in names:
             gen.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
             rows.append((gen.tangents[s.name][_J], state_rows[s.name]))
         gen.tangents[it.count.name] = {_J: sp.S.Zero}
-        sub = _Ctx(self.diff, gen, self.counters, generic=True)
         ev_values, ev_tangents = sub.split(it.evaluate)
         evaluated = [e for e in visible(it.evaluate) if gen.tangents[e][_J] != 0]
         ev_rows = {e: self.row() for e in evaluated}
-        n = len(wrt)
         evaluate = tuple(ev_values) + (
             Directions(
                 n,

@@ -1062,7 +1062,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
             and ((g_s > 0.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((5, 3))
+    _T = np.empty((6, 3))
     # a start left of the root: V >= E there
     _x0 = (0.5)*l0
     _x1 = g_s*m
@@ -1150,18 +1150,14 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
             + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    _T[0, 0] = 0.0
-    _T[0, 1] = 1.0
-    _T[0, 2] = 0.0
-    _T[1, 0] = 0.0
-    _T[1, 1] = 0.0
-    _T[1, 2] = 1.0
-    _T[2, 0] = 1.0
-    _T[2, 1] = 0.0
-    _T[2, 2] = 0.0
-    _T[3, 0] = d_q_start__p
-    _T[3, 1] = d_q_start__E_ab
-    _T[3, 2] = d_q_start__k_c
+    (_T[0, 0], _T[0, 1], _T[0, 2], ) = (0.0, 1.0, 0.0, )
+    (_T[1, 0], _T[1, 1], _T[1, 2], ) = (0.0, 0.0, 1.0, )
+    (_T[2, 0], _T[2, 1], _T[2, 2], ) = (1.0, 0.0, 0.0, )
+    (_T[3, 0], _T[3, 1], _T[3, 2], ) = (d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
+    # the initial values' tangents, once per direction
+    for _j0 in range(3):
+        d_q_start__j = _T[3, _j0]
+        _T[4, _j0] = d_q_start__j
     # Newton's method on V - E: monotone from the left
     qb = q_start
     passes = 0.0
@@ -1196,16 +1192,16 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
         _pd__6 = -_x78*(_x79 - _x86/qb**3 - k_c*l0 + k_c*qb) + 1.0
         _pd__7 = _x78**2*_x87
         # the next state's tangents, once per direction
-        for _j0 in range(3):
-            d_E_ab__j = _T[0, _j0]
-            d_k_c__j = _T[1, _j0]
-            d_p__j = _T[2, _j0]
-            d_qb__j = _T[3, _j0]
+        for _j1 in range(3):
+            d_E_ab__j = _T[0, _j1]
+            d_k_c__j = _T[1, _j1]
+            d_p__j = _T[2, _j1]
+            d_qb__j = _T[4, _j1]
             d_slope__j = _pd__0*d_k_c__j + _pd__1*d_p__j + _pd__2*d_qb__j
             # next values
             d_qb__next__j = (_pd__3*d_E_ab__j + _pd__4*d_k_c__j + _pd__5*d_p__j + _pd__6*d_qb__j
                 + _pd__7*d_slope__j)
-            _T[3, _j0] = d_qb__next__j
+            _T[4, _j1] = d_qb__next__j
         _n0_0 = qb__next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -1221,10 +1217,10 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     if not ((qb <= l0)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
     # their tangents, once per direction
-    for _j1 in range(3):
-        d_qb__j = _T[3, _j1]
-        _T[4, _j1] = d_qb__j
-    (d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, ) = (_T[4, 0], _T[4, 1], _T[4, 2], )
+    for _j2 in range(3):
+        d_qb__j = _T[4, _j2]
+        _T[5, _j2] = d_qb__j
+    (d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, ) = (_T[5, 0], _T[5, 1], _T[5, 2], )
     # (internal helper: its callers check that their outputs are finite)
     return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
 

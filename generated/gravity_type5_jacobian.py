@@ -435,66 +435,20 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_E_td__q_th_td = -_x7*q_r_td*math.sin(q_th_td)
     d_E_td__q_thd_td = _x2
     d_E_td__k = _x5 + _x6 - l0*q_r_td
-    _T[0, 0] = d_E_td__q_r_td
-    _T[0, 1] = d_E_td__q_rd_td
-    _T[0, 2] = d_E_td__q_th_td
-    _T[0, 3] = d_E_td__q_thd_td
-    _T[0, 4] = d_E_td__k
-    _T[1, 0] = 0.0
-    _T[1, 1] = 0.0
-    _T[1, 2] = 0.0
-    _T[1, 3] = 0.0
-    _T[1, 4] = 1.0
-    _T[2, 0] = d_p_td__q_r_td
-    _T[2, 1] = 0.0
-    _T[2, 2] = 0.0
-    _T[2, 3] = d_p_td__q_thd_td
-    _T[2, 4] = 0.0
-    _T[3, 0] = 1.0
-    _T[3, 1] = 0.0
-    _T[3, 2] = 0.0
-    _T[3, 3] = 0.0
-    _T[3, 4] = 0.0
-    _T[4, 0] = 0.0
-    _T[4, 1] = 1.0
-    _T[4, 2] = 0.0
-    _T[4, 3] = 0.0
-    _T[4, 4] = 0.0
-    _T[5, 0] = 0.0
-    _T[5, 1] = 0.0
-    _T[5, 2] = 1.0
-    _T[5, 3] = 0.0
-    _T[5, 4] = 0.0
-    _T[6, 0] = 0.0
-    _T[6, 1] = 0.0
-    _T[6, 2] = 0.0
-    _T[6, 3] = 0.0
-    _T[6, 4] = 0.0
-    _T[7, 0] = 0.0
-    _T[7, 1] = 0.0
-    _T[7, 2] = 0.0
-    _T[7, 3] = 0.0
-    _T[7, 4] = 0.0
-    _T[8, 0] = 0.0
-    _T[8, 1] = 0.0
-    _T[8, 2] = 0.0
-    _T[8, 3] = 0.0
-    _T[8, 4] = 0.0
-    _T[9, 0] = 0.0
-    _T[9, 1] = 0.0
-    _T[9, 2] = 0.0
-    _T[9, 3] = 0.0
-    _T[9, 4] = 0.0
-    _T[10, 0] = 0.0
-    _T[10, 1] = 0.0
-    _T[10, 2] = 0.0
-    _T[10, 3] = 0.0
-    _T[10, 4] = 0.0
-    _T[11, 0] = 0.0
-    _T[11, 1] = 0.0
-    _T[11, 2] = 0.0
-    _T[11, 3] = 0.0
-    _T[11, 4] = 0.0
+    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], ) = (d_E_td__q_r_td, d_E_td__q_rd_td, d_E_td__q_th_td,
+        d_E_td__q_thd_td, d_E_td__k, )
+    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], ) = (0.0, 0.0, 0.0, 0.0, 1.0, )
+    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], ) = (d_p_td__q_r_td, 0.0, 0.0, d_p_td__q_thd_td, 0.0, )
+    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], ) = (1.0, 0.0, 0.0, 0.0, 0.0, )
+    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], ) = (0.0, 1.0, 0.0, 0.0, 0.0, )
+    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], ) = (0.0, 0.0, 1.0, 0.0, 0.0, )
+    for _j0 in range(5):
+        _T[6, _j0] = 0.0
+        _T[7, _j0] = 0.0
+        _T[8, _j0] = 0.0
+        _T[9, _j0] = 0.0
+        _T[10, _j0] = 0.0
+        _T[11, _j0] = 0.0
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -693,18 +647,18 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__50 = _x88*math.sin(i_phase_lo) + _x89
         _pd__51 = -_x88*math.sin(i_phase_td) - _x89
         # the evaluation's tangents, once per direction
-        for _j0 in range(5):
-            d_k__j = _T[1, _j0]
-            d_p_td__j = _T[2, _j0]
-            d_q_r_td__j = _T[3, _j0]
-            d_q_rd_td__j = _T[4, _j0]
-            d_q_th_td__j = _T[5, _j0]
-            d_tau1__j = _T[6, _j0]
-            d_tau2__j = _T[7, _j0]
-            d_tau3__j = _T[8, _j0]
-            d_T__j = _T[9, _j0]
-            d_g_eff__j = _T[10, _j0]
-            d_r_c__j = _T[11, _j0]
+        for _j1 in range(5):
+            d_k__j = _T[1, _j1]
+            d_p_td__j = _T[2, _j1]
+            d_q_r_td__j = _T[3, _j1]
+            d_q_rd_td__j = _T[4, _j1]
+            d_q_th_td__j = _T[5, _j1]
+            d_tau1__j = _T[6, _j1]
+            d_tau2__j = _T[7, _j1]
+            d_tau3__j = _T[8, _j1]
+            d_T__j = _T[9, _j1]
+            d_g_eff__j = _T[10, _j1]
+            d_r_c__j = _T[11, _j1]
             # T5.1: the torque quadratic through the nodal torques of the previous pass
             d_i_c0__j = _pd__0*d_tau1__j + _pd__1*d_tau3__j - 0.6666666666666666*d_tau2__j
             d_i_c1__j = _pd__2*d_T__j + _pd__3*d_tau1__j + _pd__4*d_tau2__j + _pd__5*d_tau3__j
@@ -757,23 +711,23 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 + _pd__43*d_i_phase_td__j + _pd__44*d_i_t_stance__j + _pd__45*d_i_th3__j)
             d_i_g_eff__j = _pd__46*d_i_th1__j + _pd__47*d_i_th2__j + _pd__48*d_i_th3__j
             d_i_r_c__j = _pd__49*d_i_b__j + _pd__50*d_i_phase_lo__j + _pd__51*d_i_phase_td__j + d_i_a__j
-            _T[12, _j0] = d_i_c0__j
-            _T[13, _j0] = d_i_c1__j
-            _T[14, _j0] = d_i_c2__j
-            _T[15, _j0] = d_i_omega0_hat__j
-            _T[16, _j0] = d_i_a__j
-            _T[17, _j0] = d_i_b__j
-            _T[18, _j0] = d_i_phase_td__j
-            _T[19, _j0] = d_i_t_bottom__j
-            _T[20, _j0] = d_i_t_stance__j
-            _T[21, _j0] = d_i_k0__j
-            _T[22, _j0] = d_i_k1__j
-            _T[23, _j0] = d_i_k2__j
-            _T[24, _j0] = d_i_tau1__j
-            _T[25, _j0] = d_i_tau2__j
-            _T[26, _j0] = d_i_tau3__j
-            _T[27, _j0] = d_i_g_eff__j
-            _T[28, _j0] = d_i_r_c__j
+            _T[12, _j1] = d_i_c0__j
+            _T[13, _j1] = d_i_c1__j
+            _T[14, _j1] = d_i_c2__j
+            _T[15, _j1] = d_i_omega0_hat__j
+            _T[16, _j1] = d_i_a__j
+            _T[17, _j1] = d_i_b__j
+            _T[18, _j1] = d_i_phase_td__j
+            _T[19, _j1] = d_i_t_bottom__j
+            _T[20, _j1] = d_i_t_stance__j
+            _T[21, _j1] = d_i_k0__j
+            _T[22, _j1] = d_i_k1__j
+            _T[23, _j1] = d_i_k2__j
+            _T[24, _j1] = d_i_tau1__j
+            _T[25, _j1] = d_i_tau2__j
+            _T[26, _j1] = d_i_tau3__j
+            _T[27, _j1] = d_i_g_eff__j
+            _T[28, _j1] = d_i_r_c__j
         if _conv0 or _it0 == _last0:
             break
         # next values
@@ -784,19 +738,19 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         g_eff__next = i_g_eff
         r_c__next = i_r_c
         # the next state's tangents, once per direction
-        for _j1 in range(5):
-            d_i_t_stance__j = _T[20, _j1]
-            d_i_tau1__j = _T[24, _j1]
-            d_i_tau2__j = _T[25, _j1]
-            d_i_tau3__j = _T[26, _j1]
-            d_i_g_eff__j = _T[27, _j1]
-            d_i_r_c__j = _T[28, _j1]
-            _T[6, _j1] = d_i_tau1__j
-            _T[7, _j1] = d_i_tau2__j
-            _T[8, _j1] = d_i_tau3__j
-            _T[9, _j1] = d_i_t_stance__j
-            _T[10, _j1] = d_i_g_eff__j
-            _T[11, _j1] = d_i_r_c__j
+        for _j2 in range(5):
+            d_i_t_stance__j = _T[20, _j2]
+            d_i_tau1__j = _T[24, _j2]
+            d_i_tau2__j = _T[25, _j2]
+            d_i_tau3__j = _T[26, _j2]
+            d_i_g_eff__j = _T[27, _j2]
+            d_i_r_c__j = _T[28, _j2]
+            _T[6, _j2] = d_i_tau1__j
+            _T[7, _j2] = d_i_tau2__j
+            _T[8, _j2] = d_i_tau3__j
+            _T[9, _j2] = d_i_t_stance__j
+            _T[10, _j2] = d_i_g_eff__j
+            _T[11, _j2] = d_i_r_c__j
         _n0_0 = tau1__next
         _n0_1 = tau2__next
         _n0_2 = tau3__next
@@ -901,23 +855,23 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     liftoff_q_rd = _x120
     _pd__75 = (0.5)/_x120
     # their tangents, once per direction
-    for _j2 in range(5):
-        d_E_td__j = _T[0, _j2]
-        d_k__j = _T[1, _j2]
-        d_p_td__j = _T[2, _j2]
-        d_q_th_td__j = _T[5, _j2]
-        d_i_c0__j = _T[12, _j2]
-        d_i_c1__j = _T[13, _j2]
-        d_i_c2__j = _T[14, _j2]
-        d_i_omega0_hat__j = _T[15, _j2]
-        d_i_a__j = _T[16, _j2]
-        d_i_b__j = _T[17, _j2]
-        d_i_phase_td__j = _T[18, _j2]
-        d_i_t_bottom__j = _T[19, _j2]
-        d_i_t_stance__j = _T[20, _j2]
-        d_i_k0__j = _T[21, _j2]
-        d_i_k1__j = _T[22, _j2]
-        d_i_k2__j = _T[23, _j2]
+    for _j3 in range(5):
+        d_E_td__j = _T[0, _j3]
+        d_k__j = _T[1, _j3]
+        d_p_td__j = _T[2, _j3]
+        d_q_th_td__j = _T[5, _j3]
+        d_i_c0__j = _T[12, _j3]
+        d_i_c1__j = _T[13, _j3]
+        d_i_c2__j = _T[14, _j3]
+        d_i_omega0_hat__j = _T[15, _j3]
+        d_i_a__j = _T[16, _j3]
+        d_i_b__j = _T[17, _j3]
+        d_i_phase_td__j = _T[18, _j3]
+        d_i_t_bottom__j = _T[19, _j3]
+        d_i_t_stance__j = _T[20, _j3]
+        d_i_k0__j = _T[21, _j3]
+        d_i_k1__j = _T[22, _j3]
+        d_i_k2__j = _T[23, _j3]
         # chain rule through type5_leg_angle
         d_bottom_q_th__j = (_j_bottom_q_th__c0*d_i_c0__j + _j_bottom_q_th__c1*d_i_c1__j
             + _j_bottom_q_th__c2*d_i_c2__j + _j_bottom_q_th__k0*d_i_k0__j + _j_bottom_q_th__k1*d_i_k1__j
@@ -941,15 +895,15 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             + _pd__71*d_i_t_stance__j + _pd__72*d_k__j + _pd__73*d_liftoff_q_th__j + _pd__74*d_p_td__j)
         # q_rd_lo from the energy
         d_liftoff_q_rd__j = _d_q_rd_lo_sq__j*_pd__75
-        _T[29, _j2] = d_bottom_q_th__j
-        _T[30, _j2] = d_liftoff_q_th__j
-        _T[31, _j2] = d_i_t_bottom__j
-        _T[32, _j2] = d_i_t_stance__j
-        _T[33, _j2] = d_bottom_q_r__j
-        _T[34, _j2] = d_bottom_q_thd__j
-        _T[35, _j2] = d_P_c__j
-        _T[36, _j2] = d_liftoff_q_thd__j
-        _T[37, _j2] = d_liftoff_q_rd__j
+        _T[29, _j3] = d_bottom_q_th__j
+        _T[30, _j3] = d_liftoff_q_th__j
+        _T[31, _j3] = d_i_t_bottom__j
+        _T[32, _j3] = d_i_t_stance__j
+        _T[33, _j3] = d_bottom_q_r__j
+        _T[34, _j3] = d_bottom_q_thd__j
+        _T[35, _j3] = d_P_c__j
+        _T[36, _j3] = d_liftoff_q_thd__j
+        _T[37, _j3] = d_liftoff_q_rd__j
     (d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
         d_bottom_q_th__k, ) = (_T[29, 0], _T[29, 1], _T[29, 2], _T[29, 3], _T[29, 4], )
     (d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,

@@ -8,13 +8,13 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:5e86edc951466ed7
 #   geyer_jacobian.py sha256:71e01de102ad80c3
-#   geyer_vs_jacobian.py sha256:c5074fd92cda4b80
+#   geyer_vs_jacobian.py sha256:d205133c2808a1c3
 #   gravity_type0_jacobian.py sha256:398a3a66fde67744
 #   gravity_type1_jacobian.py sha256:66fa45d9056d598f
 #   gravity_type2_jacobian.py sha256:3f778c1f7c92dffa
 #   gravity_type3_jacobian.py sha256:d97a8bb64898cff5
 #   gravity_type4_jacobian.py sha256:dd980cac01ca0fb2
-#   gravity_type5_jacobian.py sha256:a3c8e01c4c5fb72e
+#   gravity_type5_jacobian.py sha256:dad18aff9ff0be33
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
