@@ -400,6 +400,34 @@ class Differentiator:
 _J = "j"
 
 
+#: A loop with at least this many assignments per pass (its steps' assignments and bindings, a
+#: switch's largest branch, its updates) gets its tangent code written once and run per direction;
+#: a smaller one one variable per tangent and direction (the direction array, its stores and loads
+#: cost about 100 ns a call, which a small loop does not win back: measured 2026-12-01, the gravity
+#: maps' loops of 21-23 assignments 1.55x -> 1.8x their map per direction, geyer-vs's (a switch
+#: per pass, none by default) 2.1x -> 2.9x: so a loop holding a switch is not run per direction).
+LOOPED_SIZE = 24
+
+
+def _size(steps) -> int:
+    n = 0
+    for s in steps:
+        if isinstance(s, Stage):
+            n += len(s.assignments)
+        elif isinstance(s, Call):
+            n += len(s.bind)
+        elif isinstance(s, Switch):
+            n += max((_size(b) for _, b in s.cases), default=0)
+        elif isinstance(s, Iterate):
+            n += _size(s.evaluate) + _size(s.body) + len(s.update)
+    return n
+
+
+def _straight(steps) -> bool:
+    """Steps without a loop or a branch: stages and calls."""
+    return all(isinstance(s, (Stage, Call)) for s in steps)
+
+
 @dataclass
 class _Ctx:
     diff: Differentiator
@@ -426,9 +454,9 @@ class _Ctx:
             elif isinstance(step, Call):
                 out.extend(self.call(step))
             elif isinstance(step, Iterate):
-                # the stages and calls right after a loop: per direction too, with the loop's
+                # the steps right after a loop, without a loop: per direction too, with the loop's
                 tail = []
-                while i < len(steps) and isinstance(steps[i], (Stage, Call)):
+                while i < len(steps) and _straight((steps[i],)):
                     tail.append(steps[i])
                     i += 1
                 out.extend(self.iterate(step, tuple(tail)))
@@ -553,8 +581,13 @@ class _Ctx:
         run per direction where the loop's steps are stages and calls and there are several
         directions (:meth:`looped`), else one variable per tangent and direction, carried through
         the passes (:attr:`~.ir.Iterate.carry`)."""
-        loopable = all(isinstance(s, (Stage, Call)) for s in it.evaluate + it.body)
-        if loopable and not self.generic and len(self.frame.wrt) > 1:
+        size = _size(it.evaluate + it.body) + len(it.update)
+        if (
+            _straight(it.evaluate + it.body)
+            and size >= LOOPED_SIZE
+            and not self.generic
+            and len(self.frame.wrt) > 1
+        ):
             return self.looped(it, tail)
         return [self.unrolled(it), *self.steps(tail)]
 
@@ -613,35 +646,35 @@ class _Ctx:
                 tuple(rows),
                 tuple(init_tangents),
                 tuple(
-                    (gen.tangents[x.name][_J], state_rows[s.name])
+                    (sub.frame.tangents[x.name][_J], state_rows[s.name])
                     for s, x in zip(names, starts, strict=True)
-                    if gen.tangents[x.name][_J] != 0
+                    if sub.frame.tangents[x.name][_J] != 0
                 ),
                 comment="the initial values' tangents, once per direction",
             )
         )
-        zero_starts = [s for s, x in zip(names, starts, strict=True) if gen.tangents[x.name][_J] == 0]
+        zero_starts = [s for s, x in zip(names, starts, strict=True) if sub.frame.tangents[x.name][_J] == 0]
         if zero_starts:
             pre.append(Directions(n, (), (), tuple((sp.S.Zero, state_rows[s.name]) for s in zero_starts)))
         for s in names:
-            gen.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
-            rows.append((gen.tangents[s.name][_J], state_rows[s.name]))
-        gen.tangents[it.count.name] = {_J: sp.S.Zero}
+            sub.frame.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+            rows.append((sub.frame.tangents[s.name][_J], state_rows[s.name]))
+        sub.frame.tangents[it.count.name] = {_J: sp.S.Zero}
         ev_values, ev_tangents = sub.split(it.evaluate)
-        evaluated = [e for e in visible(it.evaluate) if gen.tangents[e][_J] != 0]
+        evaluated = [e for e in visible(it.evaluate) if sub.frame.tangents[e][_J] != 0]
         ev_rows = {e: self.row() for e in evaluated}
         evaluate = tuple(ev_values) + (
             Directions(
                 n,
                 tuple(rows),
                 tuple(ev_tangents),
-                tuple((gen.tangents[e][_J], ev_rows[e]) for e in evaluated),
+                tuple((sub.frame.tangents[e][_J], ev_rows[e]) for e in evaluated),
                 comment="the evaluation's tangents, once per direction",
             ),
         )
         read_evaluated = tuple((sym(tangent_name(e, _J)), ev_rows[e]) for e in evaluated)
         for e in evaluated:  # the body reads them from their rows
-            gen.tangents[e] = {_J: sym(tangent_name(e, _J))}
+            sub.frame.tangents[e] = {_J: sym(tangent_name(e, _J))}
         nxt = [sym(f"{s.name}__next") for s in names]
         body_values, body_tangents = sub.split(
             it.body + (Stage(tuple(zip(nxt, updates, strict=True)), comment="next values"),)
@@ -652,7 +685,8 @@ class _Ctx:
                 tuple(rows) + read_evaluated,
                 tuple(body_tangents),
                 tuple(
-                    (gen.tangents[x.name][_J], state_rows[s.name]) for s, x in zip(names, nxt, strict=True)
+                    (sub.frame.tangents[x.name][_J], state_rows[s.name])
+                    for s, x in zip(names, nxt, strict=True)
                 ),
                 comment="the next state's tangents, once per direction",
             ),
@@ -676,16 +710,16 @@ class _Ctx:
         tail_rows = {}
         if tail:
             for s in names:  # the state's tangents are in its rows, as the evaluation's
-                gen.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+                sub.frame.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
             tail_values, tail_tangents = sub.split(tail)
-            defined_after = [x for x in visible(tail) if gen.tangents[x][_J] != 0]
+            defined_after = [x for x in visible(tail) if sub.frame.tangents[x][_J] != 0]
             tail_rows = {x: self.row() for x in defined_after}
             after = tail_values + [
                 Directions(
                     n,
                     tuple(rows) + read_evaluated,
                     tuple(tail_tangents),
-                    tuple((gen.tangents[x][_J], tail_rows[x]) for x in defined_after),
+                    tuple((sub.frame.tangents[x][_J], tail_rows[x]) for x in defined_after),
                     comment="their tangents, once per direction",
                 )
             ]

@@ -1061,8 +1061,6 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
             and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
             and ((g_s > 0.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((6, 3))
     # a start left of the root: V >= E there
     _x0 = (0.5)*l0
     _x1 = g_s*m
@@ -1150,77 +1148,63 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
             + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    (_T[0, 0], _T[0, 1], _T[0, 2], ) = (0.0, 1.0, 0.0, )
-    (_T[1, 0], _T[1, 1], _T[1, 2], ) = (0.0, 0.0, 1.0, )
-    (_T[2, 0], _T[2, 1], _T[2, 2], ) = (1.0, 0.0, 0.0, )
-    (_T[3, 0], _T[3, 1], _T[3, 2], ) = (d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
-    # the initial values' tangents, once per direction
-    for _j0 in range(3):
-        d_q_start__j = _T[3, _j0]
-        _T[4, _j0] = d_q_start__j
     # Newton's method on V - E: monotone from the left
-    qb = q_start
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (q_start, d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
+    _pk0 = _pki0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(60.0)):
-        _x74 = p**2
-        _x75 = (1.0/m)
+    _last0 = max(int(60.0), 0)
+    for _it0 in range(_last0 + 1):
+        (qb, d_qb__p, d_qb__E_ab, d_qb__k_c, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
+        if _conv0 or _it0 == _last0:
+            break
         _x77 = (1.0/qb)
-        _x76 = _x75*_x77**3
+        _x74 = _x77**3
+        _x75 = (1.0/m)
+        _x76 = _x75*p**2
         slope = -_x74*_x76 + g_s*m - k_c*l0 + k_c*qb
-        _pd__0 = -l0 + qb
-        _pd__1 = -2.0*_x76*p
-        _pd__2 = 3.0*_x74*_x75*_x77**4 + k_c
+        _pd__0 = 3.0*_x76*_x77**4 + k_c
+        d_slope__p = _pd__0*d_qb__p - 2.0*_x74*_x75*p
+        d_slope__E_ab = _pd__0*d_qb__E_ab
+        d_slope__k_c = _pd__0*d_qb__k_c - l0 + qb
         # V decreasing left of the root
         if not ((slope < 0.0)):
             return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
         # next values
         _x78 = (1.0/slope)
         _x79 = g_s*m
-        _x80 = l0*qb
+        _x80 = k_c*qb
         _x81 = (0.5)*l0**2
         _x82 = qb**2
         _x83 = (0.5)*_x82
         _x84 = (1.0/_x82)
         _x85 = (1.0/m)
         _x86 = _x85*p**2
-        _x87 = -E_ab + _x79*qb - _x80*k_c + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
+        _x87 = -E_ab + _x79*qb - _x80*l0 + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
         qb__next = -_x78*_x87 + qb
-        _pd__3 = _x78
-        _pd__4 = -_x78*(-_x80 + _x81 + _x83)
-        _pd__5 = -_x78*_x84*_x85*p
-        _pd__6 = -_x78*(_x79 - _x86/qb**3 - k_c*l0 + k_c*qb) + 1.0
-        _pd__7 = _x78**2*_x87
-        # the next state's tangents, once per direction
-        for _j1 in range(3):
-            d_E_ab__j = _T[0, _j1]
-            d_k_c__j = _T[1, _j1]
-            d_p__j = _T[2, _j1]
-            d_qb__j = _T[4, _j1]
-            d_slope__j = _pd__0*d_k_c__j + _pd__1*d_p__j + _pd__2*d_qb__j
-            # next values
-            d_qb__next__j = (_pd__3*d_E_ab__j + _pd__4*d_k_c__j + _pd__5*d_p__j + _pd__6*d_qb__j
-                + _pd__7*d_slope__j)
-            _T[4, _j1] = d_qb__next__j
-        _n0_0 = qb__next
+        _pd__1 = -_x78*(_x79 + _x80 - _x86/qb**3 - k_c*l0) + 1.0
+        _pd__2 = _x78**2*_x87
+        d_qb__next__p = _pd__1*d_qb__p + _pd__2*d_slope__p - _x78*_x84*_x85*p
+        d_qb__next__E_ab = _pd__1*d_qb__E_ab + _pd__2*d_slope__E_ab + _x78
+        d_qb__next__k_c = _pd__1*d_qb__k_c + _pd__2*d_slope__k_c - _x78*(_x81 + _x83 - l0*qb)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
-        qb = _n0_0
+        _conv0 = 1e-12 > 0.0 and (abs(qb__next - qb) <= 1e-12*(l0))
+        _pkn0 = (qb__next, d_qb__next__p, d_qb__next__E_ab, d_qb__next__k_c, )
+        _pk0 = _pkn0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-        return _NAN4 + (STATUS_NOT_CONVERGED,)
     q_r_b = qb
     # the bottom root is at most l0
     if not ((qb <= l0)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    # their tangents, once per direction
-    for _j2 in range(3):
-        d_qb__j = _T[4, _j2]
-        _T[5, _j2] = d_qb__j
-    (d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, ) = (_T[5, 0], _T[5, 1], _T[5, 2], )
+    # derivatives of the outputs
+    d_q_r_b__p = d_qb__p
+    d_q_r_b__E_ab = d_qb__E_ab
+    d_q_r_b__k_c = d_qb__k_c
     # (internal helper: its callers check that their outputs are finite)
     return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
 

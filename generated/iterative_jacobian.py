@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:5e86edc951466ed7
 #   geyer_jacobian.py sha256:71e01de102ad80c3
-#   geyer_vs_jacobian.py sha256:d205133c2808a1c3
+#   geyer_vs_jacobian.py sha256:da043c6f2c55db7e
 #   gravity_type0_jacobian.py sha256:398a3a66fde67744
 #   gravity_type1_jacobian.py sha256:66fa45d9056d598f
 #   gravity_type2_jacobian.py sha256:3f778c1f7c92dffa
@@ -61,240 +61,217 @@ def schwind_compression_jvp6_4eaacb_0(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         the names every branch defines: in the order the caller binds them
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 248
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((20, 6))
-    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], _T[0, 5], ) = (d_guess_q_r__0, d_guess_q_r__1,
-        d_guess_q_r__2, d_guess_q_r__3, d_guess_q_r__4, d_guess_q_r__5, )
-    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], _T[1, 5], ) = (d_guess_q_th__0, d_guess_q_th__1,
-        d_guess_q_th__2, d_guess_q_th__3, d_guess_q_th__4, d_guess_q_th__5, )
-    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], _T[2, 5], ) = (d_guess_q_thd__0, d_guess_q_thd__1,
-        d_guess_q_thd__2, d_guess_q_thd__3, d_guess_q_thd__4, d_guess_q_thd__5, )
-    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], _T[3, 5], ) = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, )
-    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], _T[4, 5], ) = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 1.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[6, 0], _T[6, 1], _T[6, 2], _T[6, 3], _T[6, 4], _T[6, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
-    (_T[7, 0], _T[7, 1], _T[7, 2], _T[7, 3], _T[7, 4], _T[7, 5], ) = (0.0, 0.0, 0.0, 1.0, 0.0, 0.0, )
-    # the initial values
-    _x0 = 1.0*m
-    _pd__0 = _x0*guess_q_r*guess_q_thd
-    _x1 = 0.5*m
-    _pd__1 = _x1*guess_q_r**2
-    _pd__2 = _x0*q_r*q_thd
-    _pd__3 = _x1*q_r**2
-    # the initial values' tangents, once per direction
-    for _j0 in range(6):
-        d_guess_q_r__j = _T[0, _j0]
-        d_guess_q_th__j = _T[1, _j0]
-        d_guess_q_thd__j = _T[2, _j0]
-        d_q_r__j = _T[4, _j0]
-        d_q_th__j = _T[6, _j0]
-        d_q_thd__j = _T[7, _j0]
-        # the initial values
-        _d_D__start__j = -d_guess_q_r__j + d_q_r__j
-        _d_Q0__start__j = 0.5*d_guess_q_th__j + 0.5*d_q_th__j
-        _d_P0__start__j = (_pd__0*d_guess_q_r__j + _pd__1*d_guess_q_thd__j + _pd__2*d_q_r__j
-            + _pd__3*d_q_thd__j)
-        _T[8, _j0] = _d_D__start__j
-        _T[9, _j0] = _d_Q0__start__j
-        _T[10, _j0] = _d_P0__start__j
+    # Total ops: 382
     # Picard passes on the 1 node values (collocation in u)
-    _D = -guess_q_r + q_r
-    _Q0 = 0.5*guess_q_th + 0.5*q_th
-    _P0 = 0.5*guess_q_r**2*guess_q_thd*m + 0.5*m*q_r**2*q_thd
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (-guess_q_r + q_r, 0.5*guess_q_th + 0.5*q_th, 0.5*guess_q_r**2*guess_q_thd*m + 0.5*m*q_r**2*q_thd,
+        1.0 - d_guess_q_r__0, -d_guess_q_r__1, -d_guess_q_r__2, -d_guess_q_r__3, -d_guess_q_r__4,
+        -d_guess_q_r__5, 0.5*d_guess_q_th__0, 0.5*d_guess_q_th__1, 0.5*d_guess_q_th__2 + 0.5,
+        0.5*d_guess_q_th__3, 0.5*d_guess_q_th__4, 0.5*d_guess_q_th__5,
+        1.0*d_guess_q_r__0*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__0*guess_q_r**2*m + 1.0*m*q_r*q_thd,
+        1.0*d_guess_q_r__1*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__1*guess_q_r**2*m,
+        1.0*d_guess_q_r__2*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__2*guess_q_r**2*m,
+        1.0*d_guess_q_r__3*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__3*guess_q_r**2*m + 0.5*m*q_r**2,
+        1.0*d_guess_q_r__4*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__4*guess_q_r**2*m,
+        1.0*d_guess_q_r__5*guess_q_r*guess_q_thd*m + 0.5*d_guess_q_thd__5*guess_q_r**2*m, )
+    _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
-    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
-    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
+        (_D, _Q0, _P0, _d_D__0, _d_D__1, _d_D__2, _d_D__3, _d_D__4, _d_D__5, _d_Q0__0, _d_Q0__1, _d_Q0__2,
+            _d_Q0__3, _d_Q0__4, _d_Q0__5, _d_P0__0, _d_P0__1, _d_P0__2, _d_P0__3, _d_P0__4, _d_P0__5, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN30 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-        _x2 = 0.75*_D - q_r
-        _x3 = -_x2
-        _isigma0 = _x3
-        _x4 = k_c*l0
-        _x5 = math.cos(_Q0)
-        _x6 = g_s*m
-        _x7 = _x5*_x6
-        _x8 = _x3*k_c
-        _x9 = _P0**2
-        _x10 = (1.0/m)
-        _x33 = (1.0/_x3)
-        _x11 = _x33**3
-        _x12 = _x10*_x11
-        _x13 = _x12*_x9
-        _iF0 = _x13 + _x4 - _x7 - _x8
-        _x14 = 2.0*_P0
-        _pd__4 = _x12*_x14
-        _x15 = math.sin(_Q0)
-        _pd__5 = _x15*_x6
-        _pd__6 = -3.0*_x10*_x33**4*_x9 - k_c
-        _pd__7 = _x2 + l0
-        _x16 = 0.5*_x13 + 0.5*_x4 - 0.5*_x7 - 0.5*_x8
-        _iPsi0 = _x16
-        _x17 = math.sqrt(_D)
-        _x18 = math.sqrt(m)
-        _x19 = (1.0/math.sqrt(_x16))
-        _x20 = _x18*_x19
-        _ift0 = _x17*_x20
-        _x21 = (0.5)/_x17
-        _pd__8 = _x20*_x21
-        _x22 = (0.5)*_x17/_x16**(1.5)
-        _pd__9 = -_x18*_x22
-        _x23 = _x17*_x19
-        _x24 = (1.0/_x18)
-        _x25 = _x24*_x33**2
+        _x0 = 0.75*_D - q_r
+        _x1 = -_x0
+        _isigma0 = _x1
+        _d_isigma0__0 = 1.0 - 0.75*_d_D__0
+        _x2 = k_c*l0
+        _x3 = math.cos(_Q0)
+        _x4 = g_s*m
+        _x5 = _x3*_x4
+        _x6 = _x1*k_c
+        _x7 = _P0**2
+        _x8 = (1.0/m)
+        _x37 = (1.0/_x1)
+        _x9 = _x37**3
+        _x10 = _x8*_x9
+        _x11 = _x10*_x7
+        _iF0 = _x11 + _x2 - _x5 - _x6
+        _x12 = 2.0*_P0
+        _pd__0 = _x10*_x12
+        _x13 = math.sin(_Q0)
+        _pd__1 = _x13*_x4
+        _pd__2 = -3.0*_x37**4*_x7*_x8 - k_c
+        _d_iF0__0 = _d_P0__0*_pd__0 + _d_Q0__0*_pd__1 + _d_isigma0__0*_pd__2
+        _x14 = 0.75*_pd__2
+        _d_iF0__1 = -_d_D__1*_x14 + _d_P0__1*_pd__0 + _d_Q0__1*_pd__1
+        _d_iF0__2 = -_d_D__2*_x14 + _d_P0__2*_pd__0 + _d_Q0__2*_pd__1
+        _d_iF0__3 = -_d_D__3*_x14 + _d_P0__3*_pd__0 + _d_Q0__3*_pd__1
+        _d_iF0__4 = -_d_D__4*_x14 + _d_P0__4*_pd__0 + _d_Q0__4*_pd__1 + _x0 + l0
+        _d_iF0__5 = -_d_D__5*_x14 + _d_P0__5*_pd__0 + _d_Q0__5*_pd__1
+        _x15 = 0.5*_x11 + 0.5*_x2 - 0.5*_x5 - 0.5*_x6
+        _iPsi0 = _x15
+        _x16 = math.sqrt(_D)
+        _x17 = math.sqrt(m)
+        _x18 = (1.0/math.sqrt(_x15))
+        _x19 = _x17*_x18
+        _ift0 = _x16*_x19
+        _x20 = (0.5)/_x16
+        _pd__3 = _x19*_x20
+        _x21 = (0.5)*_x16/_x15**(1.5)
+        _pd__4 = -_x17*_x21
+        _x22 = 0.5*_pd__4
+        _d_ift0__0 = _d_D__0*_pd__3 + _d_iF0__0*_x22
+        _d_ift0__1 = _d_D__1*_pd__3 + _d_iF0__1*_x22
+        _d_ift0__2 = _d_D__2*_pd__3 + _d_iF0__2*_x22
+        _d_ift0__3 = _d_D__3*_pd__3 + _d_iF0__3*_x22
+        _d_ift0__4 = _d_D__4*_pd__3 + _d_iF0__4*_x22
+        _d_ift0__5 = _d_D__5*_pd__3 + _d_iF0__5*_x22
+        _x23 = _x16*_x18
+        _x24 = (1.0/_x17)
+        _x25 = _x24*_x37**2
         _x26 = _x23*_x25
         _ifq0 = _P0*_x26
         _x27 = _P0*_x25
-        _x28 = _x19*_x21
-        _pd__10 = _x27*_x28
-        _pd__11 = _x26
-        _pd__12 = -_x22*_x27
-        _pd__13 = -_x11*_x14*_x23*_x24
-        _x29 = m**(1.5)
-        _x30 = _x23*_x29*g_s
-        _x31 = _x15*_x30
-        _ifp0 = _x3*_x31
-        _x32 = _x15*_x29*_x3*g_s
-        _pd__14 = _x28*_x32
-        _pd__15 = _x3*_x30*_x5
-        _pd__16 = -_x22*_x32
-        _pd__17 = _x31
+        _x28 = _x18*_x20
+        _pd__5 = _x27*_x28
+        _pd__6 = _x26
+        _pd__7 = -_x21*_x27
+        _pd__8 = -_x12*_x23*_x24*_x9
+        _x29 = 0.5*_pd__7
+        _d_ifq0__0 = _d_D__0*_pd__5 + _d_P0__0*_pd__6 + _d_iF0__0*_x29 + _d_isigma0__0*_pd__8
+        _x30 = 0.75*_pd__8
+        _d_ifq0__1 = _d_D__1*_pd__5 - _d_D__1*_x30 + _d_P0__1*_pd__6 + _d_iF0__1*_x29
+        _d_ifq0__2 = _d_D__2*_pd__5 - _d_D__2*_x30 + _d_P0__2*_pd__6 + _d_iF0__2*_x29
+        _d_ifq0__3 = _d_D__3*_pd__5 - _d_D__3*_x30 + _d_P0__3*_pd__6 + _d_iF0__3*_x29
+        _d_ifq0__4 = _d_D__4*_pd__5 - _d_D__4*_x30 + _d_P0__4*_pd__6 + _d_iF0__4*_x29
+        _d_ifq0__5 = _d_D__5*_pd__5 - _d_D__5*_x30 + _d_P0__5*_pd__6 + _d_iF0__5*_x29
+        _x31 = m**(1.5)
+        _x32 = _x23*_x31*g_s
+        _x33 = _x13*_x32
+        _ifp0 = _x1*_x33
+        _x34 = _x1*_x13*_x31*g_s
+        _pd__9 = _x28*_x34
+        _pd__10 = _x1*_x3*_x32
+        _pd__11 = -_x21*_x34
+        _pd__12 = _x33
+        _x35 = 0.5*_pd__11
+        _d_ifp0__0 = _d_D__0*_pd__9 + _d_Q0__0*_pd__10 + _d_iF0__0*_x35 + _d_isigma0__0*_pd__12
+        _x36 = 0.75*_pd__12
+        _d_ifp0__1 = _d_D__1*_pd__9 - _d_D__1*_x36 + _d_Q0__1*_pd__10 + _d_iF0__1*_x35
+        _d_ifp0__2 = _d_D__2*_pd__9 - _d_D__2*_x36 + _d_Q0__2*_pd__10 + _d_iF0__2*_x35
+        _d_ifp0__3 = _d_D__3*_pd__9 - _d_D__3*_x36 + _d_Q0__3*_pd__10 + _d_iF0__3*_x35
+        _d_ifp0__4 = _d_D__4*_pd__9 - _d_D__4*_x36 + _d_Q0__4*_pd__10 + _d_iF0__4*_x35
+        _d_ifp0__5 = _d_D__5*_pd__9 - _d_D__5*_x36 + _d_Q0__5*_pd__10 + _d_iF0__5*_x35
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
-        # the evaluation's tangents, once per direction
-        for _j1 in range(6):
-            d_k_c__j = _T[3, _j1]
-            d_q_r__j = _T[4, _j1]
-            _d_D__j = _T[8, _j1]
-            _d_Q0__j = _T[9, _j1]
-            _d_P0__j = _T[10, _j1]
-            # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-            _d_isigma0__j = -0.75*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__4 + _d_Q0__j*_pd__5 + _d_isigma0__j*_pd__6 + _pd__7*d_k_c__j
-            _x34 = 0.5*_d_iF0__j
-            _d_ift0__j = _d_D__j*_pd__8 + _pd__9*_x34
-            _d_ifq0__j = _d_D__j*_pd__10 + _d_P0__j*_pd__11 + _d_isigma0__j*_pd__13 + _pd__12*_x34
-            _d_ifp0__j = _d_D__j*_pd__14 + _d_Q0__j*_pd__15 + _d_isigma0__j*_pd__17 + _pd__16*_x34
-            _T[11, _j1] = _d_isigma0__j
-            _T[12, _j1] = _d_iF0__j
-            _T[13, _j1] = _d_ift0__j
-            _T[14, _j1] = _d_ifq0__j
-            _T[15, _j1] = _d_ifp0__j
         if _conv0 or _it0 == _last0:
             break
         # next values
-        _x35 = m*q_rd**2
-        _x36 = -q_r
-        _x37 = k_c*(_x36 + l0)
-        _x38 = 1.0*k_c
-        _x39 = 1.0*_iF0 - _x38*(-_isigma0 + l0)
-        _x40 = _x37 + _x39
-        _x41 = math.sqrt(_x35*k_c + _x40**2)
-        _x42 = _x40 + _x41
-        _x43 = (1.0/_x42)
-        _D__next = _x35*_x43
-        _x44 = (1.0/_x41)
-        _x45 = _x43**2
-        _x46 = _x35*_x45
-        _pd__18 = _x46*(-_x44*(1.0*_x37 + _x39) - 1.0)
-        _x47 = _x40*_x44
-        _pd__19 = _x46*(-_x38*_x47 - _x38)
-        _x48 = 2.0*q_r
-        _pd__20 = _x46*(-1.0*_isigma0 - _x36 - _x44*((0.5)*_x35 + (0.5)*_x40*(2.0*_isigma0 - _x48)))
-        _pd__21 = _x46*(_x47*k_c + k_c)
-        _pd__22 = 2.0*_x43*m*q_rd - _x44*_x45*k_c*m**2*q_rd**3
+        _x38 = m*q_rd**2
+        _x39 = -q_r
+        _x40 = k_c*(_x39 + l0)
+        _x41 = 1.0*k_c
+        _x42 = 1.0*_iF0 - _x41*(-_isigma0 + l0)
+        _x43 = _x40 + _x42
+        _x44 = math.sqrt(_x38*k_c + _x43**2)
+        _x45 = _x43 + _x44
+        _x46 = (1.0/_x45)
+        _D__next = _x38*_x46
+        _x47 = (1.0/_x44)
+        _x48 = _x46**2
+        _x49 = _x38*_x48
+        _pd__13 = _x49*(-_x47*(1.0*_x40 + _x42) - 1.0)
+        _x50 = _x43*_x47
+        _pd__14 = _x49*(-_x41*_x50 - _x41)
+        _d_D__next__0 = _d_iF0__0*_pd__13 + _d_isigma0__0*_pd__14 + _x49*(_x50*k_c + k_c)
+        _x51 = 0.75*_pd__14
+        _d_D__next__1 = -_d_D__1*_x51 + _d_iF0__1*_pd__13 + 2.0*_x46*m*q_rd - _x47*_x48*k_c*m**2*q_rd**3
+        _d_D__next__2 = -_d_D__2*_x51 + _d_iF0__2*_pd__13
+        _d_D__next__3 = -_d_D__3*_x51 + _d_iF0__3*_pd__13
+        _x52 = 2.0*q_r
+        _d_D__next__4 = (-_d_D__4*_x51 + _d_iF0__4*_pd__13 + _x49*(-1.0*_isigma0 - _x39 - _x47*((0.5)*_x38
+            + (0.5)*_x43*(2.0*_isigma0 - _x52))))
+        _d_D__next__5 = -_d_D__5*_x51 + _d_iF0__5*_pd__13
         _Q0__next = 0.5*_ifq0 + q_th
-        _x49 = m*q_r**2
-        _P0__next = 0.5*_ifp0 + _x49*q_thd
-        _pd__23 = _x48*m*q_thd
-        _pd__24 = _x49
-        # the next state's tangents, once per direction
-        for _j2 in range(6):
-            d_k_c__j = _T[3, _j2]
-            d_q_r__j = _T[4, _j2]
-            d_q_rd__j = _T[5, _j2]
-            d_q_th__j = _T[6, _j2]
-            d_q_thd__j = _T[7, _j2]
-            _d_isigma0__j = _T[11, _j2]
-            _d_iF0__j = _T[12, _j2]
-            _d_ifq0__j = _T[14, _j2]
-            _d_ifp0__j = _T[15, _j2]
-            # next values
-            _d_D__next__j = (_d_iF0__j*_pd__18 + _d_isigma0__j*_pd__19 + _pd__20*d_k_c__j + _pd__21*d_q_r__j
-                + _pd__22*d_q_rd__j)
-            _d_Q0__next__j = 0.5*_d_ifq0__j + d_q_th__j
-            _d_P0__next__j = 0.5*_d_ifp0__j + _pd__23*d_q_r__j + _pd__24*d_q_thd__j
-            _T[8, _j2] = _d_D__next__j
-            _T[9, _j2] = _d_Q0__next__j
-            _T[10, _j2] = _d_P0__next__j
-        _n0_0 = _D__next
-        _n0_1 = _Q0__next
-        _n0_2 = _P0__next
+        _d_Q0__next__2 = 0.5*_d_ifq0__2 + 1.0
+        _x53 = m*q_r**2
+        _P0__next = 0.5*_ifp0 + _x53*q_thd
+        _d_P0__next__0 = 0.5*_d_ifp0__0 + _x52*m*q_thd
+        _d_P0__next__3 = 0.5*_d_ifp0__3 + _x53
+        _n0_9 = 0.5*_d_ifq0__0
+        _n0_10 = 0.5*_d_ifq0__1
+        _n0_12 = 0.5*_d_ifq0__3
+        _n0_13 = 0.5*_d_ifq0__4
+        _n0_14 = 0.5*_d_ifq0__5
+        _n0_16 = 0.5*_d_ifp0__1
+        _n0_17 = 0.5*_d_ifp0__2
+        _n0_19 = 0.5*_d_ifp0__4
+        _n0_20 = 0.5*_d_ifp0__5
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
-        _D = _n0_0
-        _Q0 = _n0_1
-        _P0 = _n0_2
+        _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
+            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+        _pkn0 = (_D__next, _Q0__next, _P0__next, _d_D__next__0, _d_D__next__1, _d_D__next__2, _d_D__next__3,
+            _d_D__next__4, _d_D__next__5, _n0_9, _n0_10, _d_Q0__next__2, _n0_12, _n0_13, _n0_14,
+            _d_P0__next__0, _n0_16, _n0_17, _d_P0__next__3, _n0_19, _n0_20, )
+        _pk0 = _pkn0
         _passes += 1.0
     # bottom state
     t_half = 1.0*_ift0
     end_q_th = 1.0*_ifq0 + q_th
-    _x50 = -_D + q_r
-    end_q_r = _x50
+    d_end_q_th__2 = 1.0*_d_ifq0__2 + 1.0
+    _x54 = -_D + q_r
+    end_q_r = _x54
+    d_end_q_r__0 = 1.0 - _d_D__0
     end_q_rd = 0.0
-    _x51 = q_r**2
-    _x52 = 1.0*_ifp0 + _x51*m*q_thd
-    _x56 = (1.0/_x50)
-    _x53 = _x56**2
-    _x54 = (1.0/m)
-    _x55 = _x53*_x54
-    end_q_thd = _x52*_x55
-    _pd__25 = 1.0*_x55
-    _pd__26 = -2.0*_x52*_x54*_x56**3
-    _pd__27 = 2.0*_x53*q_r*q_thd
-    _pd__28 = _x51*_x53
+    _x55 = q_r**2
+    _x56 = 1.0*_ifp0 + _x55*m*q_thd
+    _x60 = (1.0/_x54)
+    _x57 = _x60**2
+    _x58 = (1.0/m)
+    _x59 = _x57*_x58
+    end_q_thd = _x56*_x59
+    _pd__15 = 1.0*_x59
+    _pd__16 = -2.0*_x56*_x58*_x60**3
+    d_end_q_thd__0 = _d_ifp0__0*_pd__15 + _pd__16*d_end_q_r__0 + 2.0*_x57*q_r*q_thd
+    d_end_q_thd__1 = -_d_D__1*_pd__16 + _d_ifp0__1*_pd__15
+    d_end_q_thd__2 = -_d_D__2*_pd__16 + _d_ifp0__2*_pd__15
+    d_end_q_thd__3 = -_d_D__3*_pd__16 + _d_ifp0__3*_pd__15 + _x55*_x57
+    d_end_q_thd__4 = -_d_D__4*_pd__16 + _d_ifp0__4*_pd__15
+    d_end_q_thd__5 = -_d_D__5*_pd__16 + _d_ifp0__5*_pd__15
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
         return _NAN30 + (STATUS_FALL,)
-    # their tangents, once per direction
-    for _j3 in range(6):
-        d_q_r__j = _T[4, _j3]
-        d_q_th__j = _T[6, _j3]
-        d_q_thd__j = _T[7, _j3]
-        _d_D__j = _T[8, _j3]
-        _d_ift0__j = _T[13, _j3]
-        _d_ifq0__j = _T[14, _j3]
-        _d_ifp0__j = _T[15, _j3]
-        # bottom state
-        d_end_q_th__j = 1.0*_d_ifq0__j + d_q_th__j
-        d_end_q_r__j = -_d_D__j + d_q_r__j
-        d_end_q_thd__j = _d_ifp0__j*_pd__25 + _pd__26*d_end_q_r__j + _pd__27*d_q_r__j + _pd__28*d_q_thd__j
-        _T[16, _j3] = 1.0*_d_ift0__j
-        _T[17, _j3] = d_end_q_th__j
-        _T[18, _j3] = d_end_q_r__j
-        _T[19, _j3] = d_end_q_thd__j
-    (d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4, d_t_half__5, ) = (_T[16, 0], _T[16, 1],
-        _T[16, 2], _T[16, 3], _T[16, 4], _T[16, 5], )
-    (d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, ) = (_T[17, 0],
-        _T[17, 1], _T[17, 2], _T[17, 3], _T[17, 4], _T[17, 5], )
-    (d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, ) = (_T[18, 0],
-        _T[18, 1], _T[18, 2], _T[18, 3], _T[18, 4], _T[18, 5], )
-    (d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5,
-        ) = (_T[19, 0], _T[19, 1], _T[19, 2], _T[19, 3], _T[19, 4], _T[19, 5], )
+    # tangents as every branch names them
+    d_end_q_r__1 = -_d_D__1
+    d_end_q_r__2 = -_d_D__2
+    d_end_q_r__3 = -_d_D__3
+    d_end_q_r__4 = -_d_D__4
+    d_end_q_r__5 = -_d_D__5
+    d_end_q_th__0 = 1.0*_d_ifq0__0
+    d_end_q_th__1 = 1.0*_d_ifq0__1
+    d_end_q_th__3 = 1.0*_d_ifq0__3
+    d_end_q_th__4 = 1.0*_d_ifq0__4
+    d_end_q_th__5 = 1.0*_d_ifq0__5
+    d_t_half__0 = 1.0*_d_ift0__0
+    d_t_half__1 = 1.0*_d_ift0__1
+    d_t_half__2 = 1.0*_d_ift0__2
+    d_t_half__3 = 1.0*_d_ift0__3
+    d_t_half__4 = 1.0*_d_ift0__4
+    d_t_half__5 = 1.0*_d_ift0__5
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-        d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-        d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4,
-        d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+        d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes, d_end_q_r__1,
+        d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__3,
+        d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4,
+        d_t_half__5, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -311,213 +288,232 @@ def schwind_compression_jvp6_4eaacb_1(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         the names every branch defines: in the order the caller binds them
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 476
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((27, 6))
-    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], _T[0, 5], ) = (d_guess_q_r__0, d_guess_q_r__1,
-        d_guess_q_r__2, d_guess_q_r__3, d_guess_q_r__4, d_guess_q_r__5, )
-    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], _T[1, 5], ) = (d_guess_q_th__0, d_guess_q_th__1,
-        d_guess_q_th__2, d_guess_q_th__3, d_guess_q_th__4, d_guess_q_th__5, )
-    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], _T[2, 5], ) = (d_guess_q_thd__0, d_guess_q_thd__1,
-        d_guess_q_thd__2, d_guess_q_thd__3, d_guess_q_thd__4, d_guess_q_thd__5, )
-    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], _T[3, 5], ) = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, )
-    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], _T[4, 5], ) = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 1.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[6, 0], _T[6, 1], _T[6, 2], _T[6, 3], _T[6, 4], _T[6, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
-    (_T[7, 0], _T[7, 1], _T[7, 2], _T[7, 3], _T[7, 4], _T[7, 5], ) = (0.0, 0.0, 0.0, 1.0, 0.0, 0.0, )
-    # the initial values
-    _x0 = 1.5773502691896257*m
-    _x1 = guess_q_r*guess_q_thd
-    _pd__29 = _x0*_x1
-    _x2 = guess_q_r**2*m
-    _pd__30 = 0.7886751345948129*_x2
-    _x3 = q_r*q_thd
-    _pd__31 = 0.4226497308103742*_x3*m
-    _x4 = m*q_r**2
-    _pd__32 = 0.2113248654051871*_x4
-    _pd__33 = 0.4226497308103742*_x1*m
-    _pd__34 = 0.2113248654051871*_x2
-    _pd__35 = _x0*_x3
-    _pd__36 = 0.7886751345948129*_x4
-    # the initial values' tangents, once per direction
-    for _j0 in range(6):
-        d_guess_q_r__j = _T[0, _j0]
-        d_guess_q_th__j = _T[1, _j0]
-        d_guess_q_thd__j = _T[2, _j0]
-        d_q_r__j = _T[4, _j0]
-        d_q_th__j = _T[6, _j0]
-        d_q_thd__j = _T[7, _j0]
-        # the initial values
-        _d_D__start__j = -d_guess_q_r__j + d_q_r__j
-        _d_Q0__start__j = 0.7886751345948129*d_guess_q_th__j + 0.2113248654051871*d_q_th__j
-        _d_Q1__start__j = 0.2113248654051871*d_guess_q_th__j + 0.7886751345948129*d_q_th__j
-        _d_P0__start__j = (_pd__29*d_guess_q_r__j + _pd__30*d_guess_q_thd__j + _pd__31*d_q_r__j
-            + _pd__32*d_q_thd__j)
-        _d_P1__start__j = (_pd__33*d_guess_q_r__j + _pd__34*d_guess_q_thd__j + _pd__35*d_q_r__j
-            + _pd__36*d_q_thd__j)
-        _T[8, _j0] = _d_D__start__j
-        _T[9, _j0] = _d_Q0__start__j
-        _T[10, _j0] = _d_Q1__start__j
-        _T[11, _j0] = _d_P0__start__j
-        _T[12, _j0] = _d_P1__start__j
+    # Total ops: 837
     # Picard passes on the 2 node values (collocation in u)
-    _D = -guess_q_r + q_r
-    _Q0 = 0.7886751345948129*guess_q_th + 0.2113248654051871*q_th
-    _Q1 = 0.2113248654051871*guess_q_th + 0.7886751345948129*q_th
-    _P0 = 0.7886751345948129*guess_q_r**2*guess_q_thd*m + 0.2113248654051871*m*q_r**2*q_thd
-    _P1 = 0.2113248654051871*guess_q_r**2*guess_q_thd*m + 0.7886751345948129*m*q_r**2*q_thd
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (-guess_q_r + q_r, 0.7886751345948129*guess_q_th + 0.2113248654051871*q_th,
+        0.2113248654051871*guess_q_th + 0.7886751345948129*q_th, 0.7886751345948129*guess_q_r**2*guess_q_thd*m
+        + 0.2113248654051871*m*q_r**2*q_thd, 0.2113248654051871*guess_q_r**2*guess_q_thd*m
+        + 0.7886751345948129*m*q_r**2*q_thd, 1.0 - d_guess_q_r__0, -d_guess_q_r__1, -d_guess_q_r__2,
+        -d_guess_q_r__3, -d_guess_q_r__4, -d_guess_q_r__5, 0.7886751345948129*d_guess_q_th__0,
+        0.7886751345948129*d_guess_q_th__1, 0.7886751345948129*d_guess_q_th__2 + 0.2113248654051871,
+        0.7886751345948129*d_guess_q_th__3, 0.7886751345948129*d_guess_q_th__4,
+        0.7886751345948129*d_guess_q_th__5, 0.2113248654051871*d_guess_q_th__0,
+        0.2113248654051871*d_guess_q_th__1, 0.2113248654051871*d_guess_q_th__2 + 0.7886751345948129,
+        0.2113248654051871*d_guess_q_th__3, 0.2113248654051871*d_guess_q_th__4,
+        0.2113248654051871*d_guess_q_th__5, 1.5773502691896257*d_guess_q_r__0*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__0*guess_q_r**2*m + 0.4226497308103742*m*q_r*q_thd,
+        1.5773502691896257*d_guess_q_r__1*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__1*guess_q_r**2*m,
+        1.5773502691896257*d_guess_q_r__2*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__2*guess_q_r**2*m,
+        1.5773502691896257*d_guess_q_r__3*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__3*guess_q_r**2*m + 0.2113248654051871*m*q_r**2,
+        1.5773502691896257*d_guess_q_r__4*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__4*guess_q_r**2*m,
+        1.5773502691896257*d_guess_q_r__5*guess_q_r*guess_q_thd*m
+        + 0.7886751345948129*d_guess_q_thd__5*guess_q_r**2*m,
+        0.4226497308103742*d_guess_q_r__0*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__0*guess_q_r**2*m + 1.5773502691896257*m*q_r*q_thd,
+        0.4226497308103742*d_guess_q_r__1*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__1*guess_q_r**2*m,
+        0.4226497308103742*d_guess_q_r__2*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__2*guess_q_r**2*m,
+        0.4226497308103742*d_guess_q_r__3*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__3*guess_q_r**2*m + 0.7886751345948129*m*q_r**2,
+        0.4226497308103742*d_guess_q_r__4*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__4*guess_q_r**2*m,
+        0.4226497308103742*d_guess_q_r__5*guess_q_r*guess_q_thd*m
+        + 0.2113248654051871*d_guess_q_thd__5*guess_q_r**2*m, )
+    _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
-    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
-    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
+        (_D, _Q0, _Q1, _P0, _P1, _d_D__0, _d_D__1, _d_D__2, _d_D__3, _d_D__4, _d_D__5, _d_Q0__0, _d_Q0__1,
+            _d_Q0__2, _d_Q0__3, _d_Q0__4, _d_Q0__5, _d_Q1__0, _d_Q1__1, _d_Q1__2, _d_Q1__3, _d_Q1__4,
+            _d_Q1__5, _d_P0__0, _d_P0__1, _d_P0__2, _d_P0__3, _d_P0__4, _d_P0__5, _d_P1__0, _d_P1__1,
+            _d_P1__2, _d_P1__3, _d_P1__4, _d_P1__5, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN30 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-        _x5 = -q_r
-        _x6 = 0.9553418012614795*_D + _x5
-        _x7 = -_x6
-        _isigma0 = _x7
-        _x8 = k_c*l0
-        _x9 = math.cos(_Q0)
-        _x10 = g_s*m
+        _x0 = -q_r
+        _x1 = 0.9553418012614795*_D + _x0
+        _x2 = -_x1
+        _isigma0 = _x2
+        _d_isigma0__0 = 1.0 - 0.9553418012614795*_d_D__0
+        _x3 = k_c*l0
+        _x4 = math.cos(_Q0)
+        _x5 = g_s*m
+        _x6 = _x4*_x5
+        _x7 = _x2*k_c
+        _x8 = _P0**2
+        _x9 = (1.0/m)
+        _x66 = (1.0/_x2)
+        _x10 = _x66**3
         _x11 = _x10*_x9
-        _x12 = _x7*k_c
-        _x13 = _P0**2
-        _x14 = (1.0/m)
-        _x65 = (1.0/_x7)
-        _x15 = _x65**3
-        _x16 = _x14*_x15
-        _x17 = _x13*_x16
-        _iF0 = -_x11 - _x12 + _x17 + _x8
-        _x18 = 2.0*_P0
-        _pd__37 = _x16*_x18
-        _x19 = math.sin(_Q0)
-        _pd__38 = _x10*_x19
-        _x20 = 3.0*_x14
-        _pd__39 = -_x13*_x20*_x65**4 - k_c
-        _pd__40 = _x6 + l0
-        _x21 = 0.37799153207185376*_D + _x5
-        _x22 = -_x21
-        _isigma1 = _x22
-        _x23 = math.cos(_Q1)
-        _x24 = _x10*_x23
-        _x25 = _x22*k_c
-        _x26 = _P1**2
-        _x64 = (1.0/_x22)
-        _x27 = _x64**3
-        _x28 = _x14*_x27
-        _x29 = _x26*_x28
-        _iF1 = -_x24 - _x25 + _x29 + _x8
-        _x30 = 2.0*_P1
-        _pd__41 = _x28*_x30
-        _x31 = math.sin(_Q1)
-        _pd__42 = _x10*_x31
-        _pd__43 = -_x20*_x26*_x64**4 - k_c
-        _pd__44 = _x21 + l0
-        _x32 = (-0.5610042339640731*_x11 - 0.5610042339640731*_x12 + 0.5610042339640731*_x17
-            + 0.06100423396407311*_x24 + 0.06100423396407311*_x25 - 0.06100423396407311*_x29 + 0.5*_x8)
-        _iPsi0 = _x32
-        _x33 = (1.0/math.sqrt(_x32))
-        _x34 = math.sqrt(_D)
-        _x35 = math.sqrt(m)
-        _x36 = _x34*_x35
-        _ift0 = _x33*_x36
-        _x37 = (0.5)/_x34
-        _x38 = _x35*_x37
-        _pd__45 = _x33*_x38
-        _x39 = _x32**(-1.5)
-        _x40 = (0.5)*_x36
-        _pd__46 = -_x39*_x40
-        _x41 = (1.0/_x35)
-        _x42 = _x34*_x41
-        _x43 = _x65**2
-        _x44 = _x33*_x43
-        _x45 = _x42*_x44
-        _ifq0 = _P0*_x45
-        _x46 = _x37*_x41
-        _pd__47 = _P0*_x44*_x46
-        _pd__48 = _x45
-        _x47 = (0.5)*_x42
-        _pd__49 = -_P0*_x39*_x43*_x47
-        _pd__50 = -_x15*_x18*_x33*_x42
-        _x48 = g_s*m**(1.5)
-        _x49 = _x34*_x48
-        _x50 = _x33*_x49
-        _x51 = _x19*_x50
-        _ifp0 = _x51*_x7
-        _x52 = _x19*_x7
-        _x53 = _x37*_x48
-        _pd__51 = _x33*_x52*_x53
-        _pd__52 = _x50*_x7*_x9
-        _x54 = (0.5)*_x49
-        _pd__53 = -_x39*_x52*_x54
-        _pd__54 = _x51
-        _x55 = (-0.22767090063073978*_x11 - 0.22767090063073978*_x12 + 0.22767090063073978*_x13*_x14*_x15
-            + 0.27232909936926025*_x14*_x26*_x27 - 0.27232909936926025*_x24 - 0.27232909936926025*_x25
+        _x12 = _x11*_x8
+        _iF0 = _x12 + _x3 - _x6 - _x7
+        _x13 = 2.0*_P0
+        _pd__17 = _x11*_x13
+        _x14 = math.sin(_Q0)
+        _pd__18 = _x14*_x5
+        _x15 = 3.0*_x9
+        _pd__19 = -_x15*_x66**4*_x8 - k_c
+        _d_iF0__0 = _d_P0__0*_pd__17 + _d_Q0__0*_pd__18 + _d_isigma0__0*_pd__19
+        _x16 = 0.9553418012614795*_pd__19
+        _d_iF0__1 = -_d_D__1*_x16 + _d_P0__1*_pd__17 + _d_Q0__1*_pd__18
+        _d_iF0__2 = -_d_D__2*_x16 + _d_P0__2*_pd__17 + _d_Q0__2*_pd__18
+        _d_iF0__3 = -_d_D__3*_x16 + _d_P0__3*_pd__17 + _d_Q0__3*_pd__18
+        _d_iF0__4 = -_d_D__4*_x16 + _d_P0__4*_pd__17 + _d_Q0__4*_pd__18 + _x1 + l0
+        _d_iF0__5 = -_d_D__5*_x16 + _d_P0__5*_pd__17 + _d_Q0__5*_pd__18
+        _x17 = 0.37799153207185376*_D + _x0
+        _x18 = -_x17
+        _isigma1 = _x18
+        _d_isigma1__0 = 1.0 - 0.37799153207185376*_d_D__0
+        _x19 = math.cos(_Q1)
+        _x20 = _x19*_x5
+        _x21 = _x18*k_c
+        _x22 = _P1**2
+        _x65 = (1.0/_x18)
+        _x23 = _x65**3
+        _x24 = _x23*_x9
+        _x25 = _x22*_x24
+        _iF1 = -_x20 - _x21 + _x25 + _x3
+        _x26 = 2.0*_P1
+        _pd__20 = _x24*_x26
+        _x27 = math.sin(_Q1)
+        _pd__21 = _x27*_x5
+        _pd__22 = -_x15*_x22*_x65**4 - k_c
+        _d_iF1__0 = _d_P1__0*_pd__20 + _d_Q1__0*_pd__21 + _d_isigma1__0*_pd__22
+        _x28 = 0.37799153207185376*_pd__22
+        _d_iF1__1 = -_d_D__1*_x28 + _d_P1__1*_pd__20 + _d_Q1__1*_pd__21
+        _d_iF1__2 = -_d_D__2*_x28 + _d_P1__2*_pd__20 + _d_Q1__2*_pd__21
+        _d_iF1__3 = -_d_D__3*_x28 + _d_P1__3*_pd__20 + _d_Q1__3*_pd__21
+        _d_iF1__4 = -_d_D__4*_x28 + _d_P1__4*_pd__20 + _d_Q1__4*_pd__21 + _x17 + l0
+        _d_iF1__5 = -_d_D__5*_x28 + _d_P1__5*_pd__20 + _d_Q1__5*_pd__21
+        _x29 = (0.5610042339640731*_x12 + 0.06100423396407311*_x20 + 0.06100423396407311*_x21
+            - 0.06100423396407311*_x25 + 0.5*_x3 - 0.5610042339640731*_x6 - 0.5610042339640731*_x7)
+        _iPsi0 = _x29
+        _d_iPsi0__0 = 0.5610042339640731*_d_iF0__0 - 0.06100423396407311*_d_iF1__0
+        _d_iPsi0__1 = 0.5610042339640731*_d_iF0__1 - 0.06100423396407311*_d_iF1__1
+        _d_iPsi0__2 = 0.5610042339640731*_d_iF0__2 - 0.06100423396407311*_d_iF1__2
+        _d_iPsi0__3 = 0.5610042339640731*_d_iF0__3 - 0.06100423396407311*_d_iF1__3
+        _d_iPsi0__4 = 0.5610042339640731*_d_iF0__4 - 0.06100423396407311*_d_iF1__4
+        _d_iPsi0__5 = 0.5610042339640731*_d_iF0__5 - 0.06100423396407311*_d_iF1__5
+        _x30 = (1.0/math.sqrt(_x29))
+        _x31 = math.sqrt(_D)
+        _x32 = math.sqrt(m)
+        _x33 = _x31*_x32
+        _ift0 = _x30*_x33
+        _x34 = (0.5)/_x31
+        _x35 = _x32*_x34
+        _pd__23 = _x30*_x35
+        _x36 = _x29**(-1.5)
+        _x37 = (0.5)*_x33
+        _pd__24 = -_x36*_x37
+        _d_ift0__0 = _d_D__0*_pd__23 + _d_iPsi0__0*_pd__24
+        _d_ift0__1 = _d_D__1*_pd__23 + _d_iPsi0__1*_pd__24
+        _d_ift0__2 = _d_D__2*_pd__23 + _d_iPsi0__2*_pd__24
+        _d_ift0__3 = _d_D__3*_pd__23 + _d_iPsi0__3*_pd__24
+        _d_ift0__4 = _d_D__4*_pd__23 + _d_iPsi0__4*_pd__24
+        _d_ift0__5 = _d_D__5*_pd__23 + _d_iPsi0__5*_pd__24
+        _x38 = (1.0/_x32)
+        _x39 = _x31*_x38
+        _x40 = _x66**2
+        _x41 = _x30*_x40
+        _x42 = _x39*_x41
+        _ifq0 = _P0*_x42
+        _x43 = _x34*_x38
+        _pd__25 = _P0*_x41*_x43
+        _pd__26 = _x42
+        _x44 = (0.5)*_x39
+        _pd__27 = -_P0*_x36*_x40*_x44
+        _pd__28 = -_x10*_x13*_x30*_x39
+        _d_ifq0__0 = _d_D__0*_pd__25 + _d_P0__0*_pd__26 + _d_iPsi0__0*_pd__27 + _d_isigma0__0*_pd__28
+        _x45 = 0.9553418012614795*_pd__28
+        _d_ifq0__1 = _d_D__1*_pd__25 - _d_D__1*_x45 + _d_P0__1*_pd__26 + _d_iPsi0__1*_pd__27
+        _d_ifq0__2 = _d_D__2*_pd__25 - _d_D__2*_x45 + _d_P0__2*_pd__26 + _d_iPsi0__2*_pd__27
+        _d_ifq0__3 = _d_D__3*_pd__25 - _d_D__3*_x45 + _d_P0__3*_pd__26 + _d_iPsi0__3*_pd__27
+        _d_ifq0__4 = _d_D__4*_pd__25 - _d_D__4*_x45 + _d_P0__4*_pd__26 + _d_iPsi0__4*_pd__27
+        _d_ifq0__5 = _d_D__5*_pd__25 - _d_D__5*_x45 + _d_P0__5*_pd__26 + _d_iPsi0__5*_pd__27
+        _x46 = g_s*m**(1.5)
+        _x47 = _x31*_x46
+        _x48 = _x30*_x47
+        _x49 = _x14*_x48
+        _ifp0 = _x2*_x49
+        _x50 = _x14*_x2
+        _x51 = _x34*_x46
+        _pd__29 = _x30*_x50*_x51
+        _pd__30 = _x2*_x4*_x48
+        _x52 = (0.5)*_x47
+        _pd__31 = -_x36*_x50*_x52
+        _pd__32 = _x49
+        _d_ifp0__0 = _d_D__0*_pd__29 + _d_Q0__0*_pd__30 + _d_iPsi0__0*_pd__31 + _d_isigma0__0*_pd__32
+        _x53 = 0.9553418012614795*_pd__32
+        _d_ifp0__1 = _d_D__1*_pd__29 - _d_D__1*_x53 + _d_Q0__1*_pd__30 + _d_iPsi0__1*_pd__31
+        _d_ifp0__2 = _d_D__2*_pd__29 - _d_D__2*_x53 + _d_Q0__2*_pd__30 + _d_iPsi0__2*_pd__31
+        _d_ifp0__3 = _d_D__3*_pd__29 - _d_D__3*_x53 + _d_Q0__3*_pd__30 + _d_iPsi0__3*_pd__31
+        _d_ifp0__4 = _d_D__4*_pd__29 - _d_D__4*_x53 + _d_Q0__4*_pd__30 + _d_iPsi0__4*_pd__31
+        _d_ifp0__5 = _d_D__5*_pd__29 - _d_D__5*_x53 + _d_Q0__5*_pd__30 + _d_iPsi0__5*_pd__31
+        _x54 = (0.22767090063073978*_x10*_x8*_x9 - 0.27232909936926025*_x20 - 0.27232909936926025*_x21
+            + 0.27232909936926025*_x22*_x23*_x9 - 0.22767090063073978*_x6 - 0.22767090063073978*_x7
             + 0.5*k_c*l0)
-        _iPsi1 = _x55
-        _x56 = (1.0/math.sqrt(_x55))
-        _ift1 = _x36*_x56
-        _pd__55 = _x38*_x56
-        _x57 = _x55**(-1.5)
-        _pd__56 = -_x40*_x57
-        _x58 = _x64**2
-        _x59 = _x56*_x58
-        _x60 = _x42*_x59
-        _ifq1 = _P1*_x60
-        _pd__57 = _P1*_x46*_x59
-        _pd__58 = _x60
-        _pd__59 = -_P1*_x47*_x57*_x58
-        _pd__60 = -_x27*_x30*_x42*_x56
-        _x61 = _x49*_x56
-        _x62 = _x31*_x61
-        _ifp1 = _x22*_x62
-        _x63 = _x22*_x31
-        _pd__61 = _x53*_x56*_x63
-        _pd__62 = _x22*_x23*_x61
-        _pd__63 = -_x54*_x57*_x63
-        _pd__64 = _x62
+        _iPsi1 = _x54
+        _d_iPsi1__0 = 0.22767090063073978*_d_iF0__0 + 0.27232909936926025*_d_iF1__0
+        _d_iPsi1__1 = 0.22767090063073978*_d_iF0__1 + 0.27232909936926025*_d_iF1__1
+        _d_iPsi1__2 = 0.22767090063073978*_d_iF0__2 + 0.27232909936926025*_d_iF1__2
+        _d_iPsi1__3 = 0.22767090063073978*_d_iF0__3 + 0.27232909936926025*_d_iF1__3
+        _d_iPsi1__4 = 0.22767090063073978*_d_iF0__4 + 0.27232909936926025*_d_iF1__4
+        _d_iPsi1__5 = 0.22767090063073978*_d_iF0__5 + 0.27232909936926025*_d_iF1__5
+        _x55 = (1.0/math.sqrt(_x54))
+        _ift1 = _x33*_x55
+        _pd__33 = _x35*_x55
+        _x56 = _x54**(-1.5)
+        _pd__34 = -_x37*_x56
+        _d_ift1__0 = _d_D__0*_pd__33 + _d_iPsi1__0*_pd__34
+        _d_ift1__1 = _d_D__1*_pd__33 + _d_iPsi1__1*_pd__34
+        _d_ift1__2 = _d_D__2*_pd__33 + _d_iPsi1__2*_pd__34
+        _d_ift1__3 = _d_D__3*_pd__33 + _d_iPsi1__3*_pd__34
+        _d_ift1__4 = _d_D__4*_pd__33 + _d_iPsi1__4*_pd__34
+        _d_ift1__5 = _d_D__5*_pd__33 + _d_iPsi1__5*_pd__34
+        _x57 = _x65**2
+        _x58 = _x55*_x57
+        _x59 = _x39*_x58
+        _ifq1 = _P1*_x59
+        _pd__35 = _P1*_x43*_x58
+        _pd__36 = _x59
+        _pd__37 = -_P1*_x44*_x56*_x57
+        _pd__38 = -_x23*_x26*_x39*_x55
+        _d_ifq1__0 = _d_D__0*_pd__35 + _d_P1__0*_pd__36 + _d_iPsi1__0*_pd__37 + _d_isigma1__0*_pd__38
+        _x60 = 0.37799153207185376*_pd__38
+        _d_ifq1__1 = _d_D__1*_pd__35 - _d_D__1*_x60 + _d_P1__1*_pd__36 + _d_iPsi1__1*_pd__37
+        _d_ifq1__2 = _d_D__2*_pd__35 - _d_D__2*_x60 + _d_P1__2*_pd__36 + _d_iPsi1__2*_pd__37
+        _d_ifq1__3 = _d_D__3*_pd__35 - _d_D__3*_x60 + _d_P1__3*_pd__36 + _d_iPsi1__3*_pd__37
+        _d_ifq1__4 = _d_D__4*_pd__35 - _d_D__4*_x60 + _d_P1__4*_pd__36 + _d_iPsi1__4*_pd__37
+        _d_ifq1__5 = _d_D__5*_pd__35 - _d_D__5*_x60 + _d_P1__5*_pd__36 + _d_iPsi1__5*_pd__37
+        _x61 = _x47*_x55
+        _x62 = _x27*_x61
+        _ifp1 = _x18*_x62
+        _x63 = _x18*_x27
+        _pd__39 = _x51*_x55*_x63
+        _pd__40 = _x18*_x19*_x61
+        _pd__41 = -_x52*_x56*_x63
+        _pd__42 = _x62
+        _d_ifp1__0 = _d_D__0*_pd__39 + _d_Q1__0*_pd__40 + _d_iPsi1__0*_pd__41 + _d_isigma1__0*_pd__42
+        _x64 = 0.37799153207185376*_pd__42
+        _d_ifp1__1 = _d_D__1*_pd__39 - _d_D__1*_x64 + _d_Q1__1*_pd__40 + _d_iPsi1__1*_pd__41
+        _d_ifp1__2 = _d_D__2*_pd__39 - _d_D__2*_x64 + _d_Q1__2*_pd__40 + _d_iPsi1__2*_pd__41
+        _d_ifp1__3 = _d_D__3*_pd__39 - _d_D__3*_x64 + _d_Q1__3*_pd__40 + _d_iPsi1__3*_pd__41
+        _d_ifp1__4 = _d_D__4*_pd__39 - _d_D__4*_x64 + _d_Q1__4*_pd__40 + _d_iPsi1__4*_pd__41
+        _d_ifp1__5 = _d_D__5*_pd__39 - _d_D__5*_x64 + _d_Q1__5*_pd__40 + _d_iPsi1__5*_pd__41
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi1 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
-        # the evaluation's tangents, once per direction
-        for _j1 in range(6):
-            d_k_c__j = _T[3, _j1]
-            d_q_r__j = _T[4, _j1]
-            _d_D__j = _T[8, _j1]
-            _d_Q0__j = _T[9, _j1]
-            _d_Q1__j = _T[10, _j1]
-            _d_P0__j = _T[11, _j1]
-            _d_P1__j = _T[12, _j1]
-            # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-            _x66 = -d_q_r__j
-            _d_isigma0__j = -0.9553418012614795*_d_D__j - _x66
-            _d_iF0__j = _d_P0__j*_pd__37 + _d_Q0__j*_pd__38 + _d_isigma0__j*_pd__39 + _pd__40*d_k_c__j
-            _d_isigma1__j = -0.37799153207185376*_d_D__j - _x66
-            _d_iF1__j = _d_P1__j*_pd__41 + _d_Q1__j*_pd__42 + _d_isigma1__j*_pd__43 + _pd__44*d_k_c__j
-            _d_iPsi0__j = 0.5610042339640731*_d_iF0__j - 0.06100423396407311*_d_iF1__j
-            _d_ift0__j = _d_D__j*_pd__45 + _d_iPsi0__j*_pd__46
-            _d_ifq0__j = _d_D__j*_pd__47 + _d_P0__j*_pd__48 + _d_iPsi0__j*_pd__49 + _d_isigma0__j*_pd__50
-            _d_ifp0__j = _d_D__j*_pd__51 + _d_Q0__j*_pd__52 + _d_iPsi0__j*_pd__53 + _d_isigma0__j*_pd__54
-            _d_iPsi1__j = 0.22767090063073978*_d_iF0__j + 0.27232909936926025*_d_iF1__j
-            _d_ift1__j = _d_D__j*_pd__55 + _d_iPsi1__j*_pd__56
-            _d_ifq1__j = _d_D__j*_pd__57 + _d_P1__j*_pd__58 + _d_iPsi1__j*_pd__59 + _d_isigma1__j*_pd__60
-            _d_ifp1__j = _d_D__j*_pd__61 + _d_Q1__j*_pd__62 + _d_iPsi1__j*_pd__63 + _d_isigma1__j*_pd__64
-            _T[13, _j1] = _d_isigma0__j
-            _T[14, _j1] = _d_iF0__j
-            _T[15, _j1] = _d_isigma1__j
-            _T[16, _j1] = _d_iF1__j
-            _T[17, _j1] = _d_ift0__j
-            _T[18, _j1] = _d_ifq0__j
-            _T[19, _j1] = _d_ifp0__j
-            _T[20, _j1] = _d_ift1__j
-            _T[21, _j1] = _d_ifq1__j
-            _T[22, _j1] = _d_ifp1__j
         if _conv0 or _it0 == _last0:
             break
         # next values
@@ -539,135 +535,124 @@ def schwind_compression_jvp6_4eaacb_1(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x81 = (1.0/_x76)
         _x82 = _x78**2
         _x83 = _x67*_x82
-        _pd__65 = (_x83*(-_x81*(0.04465819873852045*_iF0 + 0.16666666666666666*_iF1 + 0.2113248654051871*_x69
+        _pd__43 = (_x83*(-_x81*(0.04465819873852045*_iF0 + 0.16666666666666666*_iF1 + 0.2113248654051871*_x69
             - 0.04465819873852045*_x79 - 0.16666666666666666*_x80) - 0.2113248654051871))
-        _pd__66 = (_x83*(-_x81*(0.16666666666666666*_iF0 + 0.6220084679281462*_iF1 + 0.7886751345948129*_x69
+        _pd__44 = (_x83*(-_x81*(0.16666666666666666*_iF0 + 0.6220084679281462*_iF1 + 0.7886751345948129*_x69
             - 0.16666666666666666*_x79 - 0.6220084679281462*_x80) - 0.7886751345948129))
         _x84 = _x75*_x81
-        _pd__67 = _x83*(-_x72*_x84 - _x72)
-        _pd__68 = _x83*(-_x74*_x84 - _x74)
-        _x85 = 2.0*q_r
-        _pd__69 = (_x83*(-0.2113248654051871*_isigma0 - 0.7886751345948129*_isigma1 - _x68 - _x81*((0.5)*_x67
-            + (0.5)*_x75*(0.4226497308103742*_isigma0 + 1.5773502691896257*_isigma1 - _x85
+        _pd__45 = _x83*(-_x72*_x84 - _x72)
+        _pd__46 = _x83*(-_x74*_x84 - _x74)
+        _d_D__next__0 = (_d_iF0__0*_pd__43 + _d_iF1__0*_pd__44 + _d_isigma0__0*_pd__45 + _d_isigma1__0*_pd__46
+            + _x83*(_x84*k_c + k_c))
+        _x85 = 0.9553418012614795*_pd__45
+        _x86 = 0.37799153207185376*_pd__46
+        _d_D__next__1 = (-_d_D__1*_x85 - _d_D__1*_x86 + _d_iF0__1*_pd__43 + _d_iF1__1*_pd__44
+            + 2.0*_x78*m*q_rd - _x81*_x82*k_c*m**2*q_rd**3)
+        _d_D__next__2 = -_d_D__2*_x85 - _d_D__2*_x86 + _d_iF0__2*_pd__43 + _d_iF1__2*_pd__44
+        _d_D__next__3 = -_d_D__3*_x85 - _d_D__3*_x86 + _d_iF0__3*_pd__43 + _d_iF1__3*_pd__44
+        _x87 = 2.0*q_r
+        _d_D__next__4 = (-_d_D__4*_x85 - _d_D__4*_x86 + _d_iF0__4*_pd__43 + _d_iF1__4*_pd__44
+            + _x83*(-0.2113248654051871*_isigma0 - 0.7886751345948129*_isigma1 - _x68 - _x81*((0.5)*_x67
+            + (0.5)*_x75*(0.4226497308103742*_isigma0 + 1.5773502691896257*_isigma1 - _x87
             - 8.470329472543003e-22*l0)) + 4.235164736271502e-22*l0))
-        _pd__70 = _x83*(_x84*k_c + k_c)
-        _pd__71 = 2.0*_x78*m*q_rd - _x81*_x82*k_c*m**2*q_rd**3
+        _d_D__next__5 = -_d_D__5*_x85 - _d_D__5*_x86 + _d_iF0__5*_pd__43 + _d_iF1__5*_pd__44
         _Q0__next = 0.25*_ifq0 + 0.5386751345948129*_ifq1 + q_th
+        _d_Q0__next__0 = 0.25*_d_ifq0__0 + 0.5386751345948129*_d_ifq1__0
+        _d_Q0__next__1 = 0.25*_d_ifq0__1 + 0.5386751345948129*_d_ifq1__1
+        _d_Q0__next__2 = 0.25*_d_ifq0__2 + 0.5386751345948129*_d_ifq1__2 + 1.0
+        _d_Q0__next__3 = 0.25*_d_ifq0__3 + 0.5386751345948129*_d_ifq1__3
+        _d_Q0__next__4 = 0.25*_d_ifq0__4 + 0.5386751345948129*_d_ifq1__4
+        _d_Q0__next__5 = 0.25*_d_ifq0__5 + 0.5386751345948129*_d_ifq1__5
         _Q1__next = -0.03867513459481288*_ifq0 + 0.25*_ifq1 + q_th
-        _x86 = m*q_r**2
-        _x87 = _x86*q_thd
-        _P0__next = 0.25*_ifp0 + 0.5386751345948129*_ifp1 + _x87
-        _x88 = _x85*m*q_thd
-        _pd__72 = _x88
-        _pd__73 = _x86
-        _P1__next = -0.03867513459481288*_ifp0 + 0.25*_ifp1 + _x87
-        _pd__74 = _x88
-        _pd__75 = _x86
-        # the next state's tangents, once per direction
-        for _j2 in range(6):
-            d_k_c__j = _T[3, _j2]
-            d_q_r__j = _T[4, _j2]
-            d_q_rd__j = _T[5, _j2]
-            d_q_th__j = _T[6, _j2]
-            d_q_thd__j = _T[7, _j2]
-            _d_isigma0__j = _T[13, _j2]
-            _d_iF0__j = _T[14, _j2]
-            _d_isigma1__j = _T[15, _j2]
-            _d_iF1__j = _T[16, _j2]
-            _d_ifq0__j = _T[18, _j2]
-            _d_ifp0__j = _T[19, _j2]
-            _d_ifq1__j = _T[21, _j2]
-            _d_ifp1__j = _T[22, _j2]
-            # next values
-            _d_D__next__j = (_d_iF0__j*_pd__65 + _d_iF1__j*_pd__66 + _d_isigma0__j*_pd__67
-                + _d_isigma1__j*_pd__68 + _pd__69*d_k_c__j + _pd__70*d_q_r__j + _pd__71*d_q_rd__j)
-            _d_Q0__next__j = 0.25*_d_ifq0__j + 0.5386751345948129*_d_ifq1__j + d_q_th__j
-            _d_Q1__next__j = -0.03867513459481288*_d_ifq0__j + 0.25*_d_ifq1__j + d_q_th__j
-            _d_P0__next__j = (0.25*_d_ifp0__j + 0.5386751345948129*_d_ifp1__j + _pd__72*d_q_r__j
-                + _pd__73*d_q_thd__j)
-            _d_P1__next__j = (-0.03867513459481288*_d_ifp0__j + 0.25*_d_ifp1__j + _pd__74*d_q_r__j
-                + _pd__75*d_q_thd__j)
-            _T[8, _j2] = _d_D__next__j
-            _T[9, _j2] = _d_Q0__next__j
-            _T[10, _j2] = _d_Q1__next__j
-            _T[11, _j2] = _d_P0__next__j
-            _T[12, _j2] = _d_P1__next__j
-        _n0_0 = _D__next
-        _n0_1 = _Q0__next
-        _n0_2 = _Q1__next
-        _n0_3 = _P0__next
-        _n0_4 = _P1__next
+        _d_Q1__next__0 = -0.03867513459481288*_d_ifq0__0 + 0.25*_d_ifq1__0
+        _d_Q1__next__1 = -0.03867513459481288*_d_ifq0__1 + 0.25*_d_ifq1__1
+        _d_Q1__next__2 = -0.03867513459481288*_d_ifq0__2 + 0.25*_d_ifq1__2 + 1.0
+        _d_Q1__next__3 = -0.03867513459481288*_d_ifq0__3 + 0.25*_d_ifq1__3
+        _d_Q1__next__4 = -0.03867513459481288*_d_ifq0__4 + 0.25*_d_ifq1__4
+        _d_Q1__next__5 = -0.03867513459481288*_d_ifq0__5 + 0.25*_d_ifq1__5
+        _x88 = m*q_r**2
+        _x89 = _x88*q_thd
+        _P0__next = 0.25*_ifp0 + 0.5386751345948129*_ifp1 + _x89
+        _x90 = _x87*m*q_thd
+        _d_P0__next__0 = 0.25*_d_ifp0__0 + 0.5386751345948129*_d_ifp1__0 + _x90
+        _d_P0__next__1 = 0.25*_d_ifp0__1 + 0.5386751345948129*_d_ifp1__1
+        _d_P0__next__2 = 0.25*_d_ifp0__2 + 0.5386751345948129*_d_ifp1__2
+        _d_P0__next__3 = 0.25*_d_ifp0__3 + 0.5386751345948129*_d_ifp1__3 + _x88
+        _d_P0__next__4 = 0.25*_d_ifp0__4 + 0.5386751345948129*_d_ifp1__4
+        _d_P0__next__5 = 0.25*_d_ifp0__5 + 0.5386751345948129*_d_ifp1__5
+        _P1__next = -0.03867513459481288*_ifp0 + 0.25*_ifp1 + _x89
+        _d_P1__next__0 = -0.03867513459481288*_d_ifp0__0 + 0.25*_d_ifp1__0 + _x90
+        _d_P1__next__1 = -0.03867513459481288*_d_ifp0__1 + 0.25*_d_ifp1__1
+        _d_P1__next__2 = -0.03867513459481288*_d_ifp0__2 + 0.25*_d_ifp1__2
+        _d_P1__next__3 = -0.03867513459481288*_d_ifp0__3 + 0.25*_d_ifp1__3 + _x88
+        _d_P1__next__4 = -0.03867513459481288*_d_ifp0__4 + 0.25*_d_ifp1__4
+        _d_P1__next__5 = -0.03867513459481288*_d_ifp0__5 + 0.25*_d_ifp1__5
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))))
-        _D = _n0_0
-        _Q0 = _n0_1
-        _Q1 = _n0_2
-        _P0 = _n0_3
-        _P1 = _n0_4
+        _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
+            and (abs(_Q1__next - _Q1) <= tol*(1.0)) and (abs(_P0__next - _P0)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+        _pkn0 = (_D__next, _Q0__next, _Q1__next, _P0__next, _P1__next, _d_D__next__0, _d_D__next__1,
+            _d_D__next__2, _d_D__next__3, _d_D__next__4, _d_D__next__5, _d_Q0__next__0, _d_Q0__next__1,
+            _d_Q0__next__2, _d_Q0__next__3, _d_Q0__next__4, _d_Q0__next__5, _d_Q1__next__0, _d_Q1__next__1,
+            _d_Q1__next__2, _d_Q1__next__3, _d_Q1__next__4, _d_Q1__next__5, _d_P0__next__0, _d_P0__next__1,
+            _d_P0__next__2, _d_P0__next__3, _d_P0__next__4, _d_P0__next__5, _d_P1__next__0, _d_P1__next__1,
+            _d_P1__next__2, _d_P1__next__3, _d_P1__next__4, _d_P1__next__5, )
+        _pk0 = _pkn0
         _passes += 1.0
     # bottom state
     t_half = 0.5*_ift0 + 0.5*_ift1
+    d_t_half__0 = 0.5*_d_ift0__0 + 0.5*_d_ift1__0
+    d_t_half__1 = 0.5*_d_ift0__1 + 0.5*_d_ift1__1
+    d_t_half__2 = 0.5*_d_ift0__2 + 0.5*_d_ift1__2
+    d_t_half__3 = 0.5*_d_ift0__3 + 0.5*_d_ift1__3
+    d_t_half__4 = 0.5*_d_ift0__4 + 0.5*_d_ift1__4
+    d_t_half__5 = 0.5*_d_ift0__5 + 0.5*_d_ift1__5
     end_q_th = 0.5*_ifq0 + 0.5*_ifq1 + q_th
-    _x89 = -_D + q_r
-    end_q_r = _x89
+    d_end_q_th__0 = 0.5*_d_ifq0__0 + 0.5*_d_ifq1__0
+    d_end_q_th__1 = 0.5*_d_ifq0__1 + 0.5*_d_ifq1__1
+    d_end_q_th__2 = 0.5*_d_ifq0__2 + 0.5*_d_ifq1__2 + 1.0
+    d_end_q_th__3 = 0.5*_d_ifq0__3 + 0.5*_d_ifq1__3
+    d_end_q_th__4 = 0.5*_d_ifq0__4 + 0.5*_d_ifq1__4
+    d_end_q_th__5 = 0.5*_d_ifq0__5 + 0.5*_d_ifq1__5
+    _x91 = -_D + q_r
+    end_q_r = _x91
+    d_end_q_r__0 = 1.0 - _d_D__0
     end_q_rd = 0.0
-    _x90 = q_r**2
-    _x91 = 0.5*_ifp0 + 0.5*_ifp1 + _x90*m*q_thd
-    _x96 = (1.0/_x89)
-    _x92 = _x96**2
-    _x93 = (1.0/m)
-    _x94 = _x92*_x93
-    end_q_thd = _x91*_x94
-    _x95 = 0.5*_x94
-    _pd__76 = _x95
-    _pd__77 = _x95
-    _pd__78 = -2.0*_x91*_x93*_x96**3
-    _pd__79 = 2.0*_x92*q_r*q_thd
-    _pd__80 = _x90*_x92
+    _x92 = q_r**2
+    _x93 = 0.5*_ifp0 + 0.5*_ifp1 + _x92*m*q_thd
+    _x98 = (1.0/_x91)
+    _x94 = _x98**2
+    _x95 = (1.0/m)
+    _x96 = _x94*_x95
+    end_q_thd = _x93*_x96
+    _x97 = 0.5*_x96
+    _pd__47 = _x97
+    _pd__48 = _x97
+    _pd__49 = -2.0*_x93*_x95*_x98**3
+    d_end_q_thd__0 = _d_ifp0__0*_pd__47 + _d_ifp1__0*_pd__48 + _pd__49*d_end_q_r__0 + 2.0*_x94*q_r*q_thd
+    d_end_q_thd__1 = -_d_D__1*_pd__49 + _d_ifp0__1*_pd__47 + _d_ifp1__1*_pd__48
+    d_end_q_thd__2 = -_d_D__2*_pd__49 + _d_ifp0__2*_pd__47 + _d_ifp1__2*_pd__48
+    d_end_q_thd__3 = -_d_D__3*_pd__49 + _d_ifp0__3*_pd__47 + _d_ifp1__3*_pd__48 + _x92*_x94
+    d_end_q_thd__4 = -_d_D__4*_pd__49 + _d_ifp0__4*_pd__47 + _d_ifp1__4*_pd__48
+    d_end_q_thd__5 = -_d_D__5*_pd__49 + _d_ifp0__5*_pd__47 + _d_ifp1__5*_pd__48
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
         return _NAN30 + (STATUS_FALL,)
-    # their tangents, once per direction
-    for _j3 in range(6):
-        d_q_r__j = _T[4, _j3]
-        d_q_th__j = _T[6, _j3]
-        d_q_thd__j = _T[7, _j3]
-        _d_D__j = _T[8, _j3]
-        _d_ift0__j = _T[17, _j3]
-        _d_ifq0__j = _T[18, _j3]
-        _d_ifp0__j = _T[19, _j3]
-        _d_ift1__j = _T[20, _j3]
-        _d_ifq1__j = _T[21, _j3]
-        _d_ifp1__j = _T[22, _j3]
-        # bottom state
-        d_t_half__j = 0.5*_d_ift0__j + 0.5*_d_ift1__j
-        d_end_q_th__j = 0.5*_d_ifq0__j + 0.5*_d_ifq1__j + d_q_th__j
-        d_end_q_r__j = -_d_D__j + d_q_r__j
-        d_end_q_thd__j = (_d_ifp0__j*_pd__76 + _d_ifp1__j*_pd__77 + _pd__78*d_end_q_r__j + _pd__79*d_q_r__j
-            + _pd__80*d_q_thd__j)
-        _T[23, _j3] = d_t_half__j
-        _T[24, _j3] = d_end_q_th__j
-        _T[25, _j3] = d_end_q_r__j
-        _T[26, _j3] = d_end_q_thd__j
-    (d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4, d_t_half__5, ) = (_T[23, 0], _T[23, 1],
-        _T[23, 2], _T[23, 3], _T[23, 4], _T[23, 5], )
-    (d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, ) = (_T[24, 0],
-        _T[24, 1], _T[24, 2], _T[24, 3], _T[24, 4], _T[24, 5], )
-    (d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, ) = (_T[25, 0],
-        _T[25, 1], _T[25, 2], _T[25, 3], _T[25, 4], _T[25, 5], )
-    (d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5,
-        ) = (_T[26, 0], _T[26, 1], _T[26, 2], _T[26, 3], _T[26, 4], _T[26, 5], )
+    # tangents as every branch names them
+    d_end_q_r__1 = -_d_D__1
+    d_end_q_r__2 = -_d_D__2
+    d_end_q_r__3 = -_d_D__3
+    d_end_q_r__4 = -_d_D__4
+    d_end_q_r__5 = -_d_D__5
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-        d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-        d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4,
-        d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+        d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes, d_end_q_r__1,
+        d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__3,
+        d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4,
+        d_t_half__5, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -701,23 +686,23 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     # the initial values
     _x0 = 1.7745966692414834*m
     _x1 = guess_q_r*guess_q_thd
-    _pd__81 = _x0*_x1
+    _pd__50 = _x0*_x1
     _x2 = guess_q_r**2*m
-    _pd__82 = 0.8872983346207417*_x2
+    _pd__51 = 0.8872983346207417*_x2
     _x3 = q_r*q_thd
     _x4 = _x3*m
-    _pd__83 = 0.22540333075851662*_x4
+    _pd__52 = 0.22540333075851662*_x4
     _x5 = m*q_r**2
-    _pd__84 = 0.11270166537925831*_x5
+    _pd__53 = 0.11270166537925831*_x5
     _x6 = _x1*m
-    _pd__85 = 1.0*_x6
-    _pd__86 = 0.5*_x2
-    _pd__87 = 1.0*_x4
-    _pd__88 = 0.5*_x5
-    _pd__89 = 0.22540333075851662*_x6
-    _pd__90 = 0.11270166537925831*_x2
-    _pd__91 = _x0*_x3
-    _pd__92 = 0.8872983346207417*_x5
+    _pd__54 = 1.0*_x6
+    _pd__55 = 0.5*_x2
+    _pd__56 = 1.0*_x4
+    _pd__57 = 0.5*_x5
+    _pd__58 = 0.22540333075851662*_x6
+    _pd__59 = 0.11270166537925831*_x2
+    _pd__60 = _x0*_x3
+    _pd__61 = 0.8872983346207417*_x5
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_r__j = _T[0, _j0]
@@ -731,12 +716,12 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _d_Q0__start__j = 0.8872983346207417*d_guess_q_th__j + 0.11270166537925831*d_q_th__j
         _d_Q1__start__j = 0.5*d_guess_q_th__j + 0.5*d_q_th__j
         _d_Q2__start__j = 0.11270166537925831*d_guess_q_th__j + 0.8872983346207417*d_q_th__j
-        _d_P0__start__j = (_pd__81*d_guess_q_r__j + _pd__82*d_guess_q_thd__j + _pd__83*d_q_r__j
-            + _pd__84*d_q_thd__j)
-        _d_P1__start__j = (_pd__85*d_guess_q_r__j + _pd__86*d_guess_q_thd__j + _pd__87*d_q_r__j
-            + _pd__88*d_q_thd__j)
-        _d_P2__start__j = (_pd__89*d_guess_q_r__j + _pd__90*d_guess_q_thd__j + _pd__91*d_q_r__j
-            + _pd__92*d_q_thd__j)
+        _d_P0__start__j = (_pd__50*d_guess_q_r__j + _pd__51*d_guess_q_thd__j + _pd__52*d_q_r__j
+            + _pd__53*d_q_thd__j)
+        _d_P1__start__j = (_pd__54*d_guess_q_r__j + _pd__55*d_guess_q_thd__j + _pd__56*d_q_r__j
+            + _pd__57*d_q_thd__j)
+        _d_P2__start__j = (_pd__58*d_guess_q_r__j + _pd__59*d_guess_q_thd__j + _pd__60*d_q_r__j
+            + _pd__61*d_q_thd__j)
         _T[8, _j0] = _d_D__start__j
         _T[9, _j0] = _d_Q0__start__j
         _T[10, _j0] = _d_Q1__start__j
@@ -778,12 +763,12 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x19 = _x15*_x18
         _iF0 = _x10 - _x13 - _x14 + _x19
         _x20 = 2.0*_P0
-        _pd__93 = _x18*_x20
+        _pd__62 = _x18*_x20
         _x21 = math.sin(_Q0)
-        _pd__94 = _x12*_x21
+        _pd__63 = _x12*_x21
         _x22 = 3.0*_x16
-        _pd__95 = -_x15*_x22*_x88**4 - k_c
-        _pd__96 = _x8 + l0
+        _pd__64 = -_x15*_x22*_x88**4 - k_c
+        _pd__65 = _x8 + l0
         _x23 = 0.75*_D + _x7
         _x24 = -_x23
         _isigma1 = _x24
@@ -797,11 +782,11 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x31 = _x28*_x30
         _iF1 = _x10 - _x26 - _x27 + _x31
         _x32 = 2.0*_P1
-        _pd__97 = _x30*_x32
+        _pd__66 = _x30*_x32
         _x33 = math.sin(_Q1)
-        _pd__98 = _x12*_x33
-        _pd__99 = -_x22*_x28*_x86**4 - k_c
-        _pd__100 = _x23 + l0
+        _pd__67 = _x12*_x33
+        _pd__68 = -_x22*_x28*_x86**4 - k_c
+        _pd__69 = _x23 + l0
         _x34 = 0.2127016653792583*_D + _x7
         _x35 = -_x34
         _isigma2 = _x35
@@ -815,11 +800,11 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x42 = _x39*_x41
         _iF2 = _x10 - _x37 - _x38 + _x42
         _x43 = 2.0*_P2
-        _pd__101 = _x41*_x43
+        _pd__70 = _x41*_x43
         _x44 = math.sin(_Q2)
-        _pd__102 = _x12*_x44
-        _pd__103 = -_x22*_x39*_x87**4 - k_c
-        _pd__104 = _x34 + l0
+        _pd__71 = _x12*_x44
+        _pd__72 = -_x22*_x39*_x87**4 - k_c
+        _pd__73 = _x34 + l0
         _x45 = (0.5*_x10 - 0.5762768525670787*_x13 - 0.5762768525670787*_x14 + 0.5762768525670787*_x19
             + 0.1040546303448565*_x26 + 0.1040546303448565*_x27 - 0.1040546303448565*_x31
             - 0.027777777777777776*_x37 - 0.027777777777777776*_x38 + 0.027777777777777776*_x42)
@@ -831,10 +816,10 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ift0 = _x46*_x49
         _x50 = (0.5)/_x47
         _x51 = _x48*_x50
-        _pd__105 = _x46*_x51
+        _pd__74 = _x46*_x51
         _x52 = _x45**(-1.5)
         _x53 = (0.5)*_x49
-        _pd__106 = -_x52*_x53
+        _pd__75 = -_x52*_x53
         _x54 = (1.0/_x48)
         _x55 = _x47*_x54
         _x56 = _x88**2
@@ -842,11 +827,11 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x58 = _x55*_x57
         _ifq0 = _P0*_x58
         _x59 = _x50*_x54
-        _pd__107 = _P0*_x57*_x59
-        _pd__108 = _x58
+        _pd__76 = _P0*_x57*_x59
+        _pd__77 = _x58
         _x60 = (0.5)*_x55
-        _pd__109 = -_P0*_x52*_x56*_x60
-        _pd__110 = -_x17*_x20*_x46*_x55
+        _pd__78 = -_P0*_x52*_x56*_x60
+        _pd__79 = -_x17*_x20*_x46*_x55
         _x61 = g_s*m**(1.5)
         _x62 = _x47*_x61
         _x63 = _x46*_x62
@@ -854,61 +839,61 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ifp0 = _x64*_x9
         _x65 = _x21*_x9
         _x66 = _x50*_x61
-        _pd__111 = _x46*_x65*_x66
-        _pd__112 = _x11*_x63*_x9
+        _pd__80 = _x46*_x65*_x66
+        _pd__81 = _x11*_x63*_x9
         _x67 = (0.5)*_x62
-        _pd__113 = -_x52*_x65*_x67
-        _pd__114 = _x64
+        _pd__82 = -_x52*_x65*_x67
+        _pd__83 = _x64
         _x68 = (0.5*_x10 - 0.17702731517242826*_x13 - 0.17702731517242826*_x14 + 0.17702731517242826*_x19
             - 0.3611111111111111*_x26 - 0.3611111111111111*_x27 + 0.3611111111111111*_x31
             + 0.038138426283539355*_x37 + 0.038138426283539355*_x38 - 0.038138426283539355*_x42)
         _iPsi1 = _x68
         _x69 = (1.0/math.sqrt(_x68))
         _ift1 = _x49*_x69
-        _pd__115 = _x51*_x69
+        _pd__84 = _x51*_x69
         _x70 = _x68**(-1.5)
-        _pd__116 = -_x53*_x70
+        _pd__85 = -_x53*_x70
         _x71 = _x86**2
         _x72 = _x69*_x71
         _x73 = _x55*_x72
         _ifq1 = _P1*_x73
-        _pd__117 = _P1*_x59*_x72
-        _pd__118 = _x73
-        _pd__119 = -_P1*_x60*_x70*_x71
-        _pd__120 = -_x29*_x32*_x55*_x69
+        _pd__86 = _P1*_x59*_x72
+        _pd__87 = _x73
+        _pd__88 = -_P1*_x60*_x70*_x71
+        _pd__89 = -_x29*_x32*_x55*_x69
         _x74 = _x62*_x69
         _x75 = _x33*_x74
         _ifp1 = _x24*_x75
         _x76 = _x24*_x33
-        _pd__121 = _x66*_x69*_x76
-        _pd__122 = _x24*_x25*_x74
-        _pd__123 = -_x67*_x70*_x76
-        _pd__124 = _x75
+        _pd__90 = _x66*_x69*_x76
+        _pd__91 = _x24*_x25*_x74
+        _pd__92 = -_x67*_x70*_x76
+        _pd__93 = _x75
         _x77 = (-0.027777777777777776*_x13 - 0.027777777777777776*_x14 + 0.027777777777777776*_x15*_x16*_x17
             + 0.3262768525670787*_x16*_x28*_x29 + 0.14594536965514351*_x16*_x39*_x40 - 0.3262768525670787*_x26
             - 0.3262768525670787*_x27 - 0.14594536965514351*_x37 - 0.14594536965514351*_x38 + 0.5*k_c*l0)
         _iPsi2 = _x77
         _x78 = (1.0/math.sqrt(_x77))
         _ift2 = _x49*_x78
-        _pd__125 = _x51*_x78
+        _pd__94 = _x51*_x78
         _x79 = _x77**(-1.5)
-        _pd__126 = -_x53*_x79
+        _pd__95 = -_x53*_x79
         _x80 = _x87**2
         _x81 = _x78*_x80
         _x82 = _x55*_x81
         _ifq2 = _P2*_x82
-        _pd__127 = _P2*_x59*_x81
-        _pd__128 = _x82
-        _pd__129 = -_P2*_x60*_x79*_x80
-        _pd__130 = -_x40*_x43*_x55*_x78
+        _pd__96 = _P2*_x59*_x81
+        _pd__97 = _x82
+        _pd__98 = -_P2*_x60*_x79*_x80
+        _pd__99 = -_x40*_x43*_x55*_x78
         _x83 = _x62*_x78
         _x84 = _x44*_x83
         _ifp2 = _x35*_x84
         _x85 = _x35*_x44
-        _pd__131 = _x66*_x78*_x85
-        _pd__132 = _x35*_x36*_x83
-        _pd__133 = -_x67*_x79*_x85
-        _pd__134 = _x84
+        _pd__100 = _x66*_x78*_x85
+        _pd__101 = _x35*_x36*_x83
+        _pd__102 = -_x67*_x79*_x85
+        _pd__103 = _x84
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -932,26 +917,26 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _x89 = -d_q_r__j
             _d_isigma0__j = -0.9872983346207417*_d_D__j - _x89
-            _d_iF0__j = _d_P0__j*_pd__93 + _d_Q0__j*_pd__94 + _d_isigma0__j*_pd__95 + _pd__96*d_k_c__j
+            _d_iF0__j = _d_P0__j*_pd__62 + _d_Q0__j*_pd__63 + _d_isigma0__j*_pd__64 + _pd__65*d_k_c__j
             _d_isigma1__j = -0.75*_d_D__j - _x89
-            _d_iF1__j = _d_P1__j*_pd__97 + _d_Q1__j*_pd__98 + _d_isigma1__j*_pd__99 + _pd__100*d_k_c__j
+            _d_iF1__j = _d_P1__j*_pd__66 + _d_Q1__j*_pd__67 + _d_isigma1__j*_pd__68 + _pd__69*d_k_c__j
             _d_isigma2__j = -0.2127016653792583*_d_D__j - _x89
-            _d_iF2__j = _d_P2__j*_pd__101 + _d_Q2__j*_pd__102 + _d_isigma2__j*_pd__103 + _pd__104*d_k_c__j
+            _d_iF2__j = _d_P2__j*_pd__70 + _d_Q2__j*_pd__71 + _d_isigma2__j*_pd__72 + _pd__73*d_k_c__j
             _d_iPsi0__j = (0.5762768525670787*_d_iF0__j - 0.1040546303448565*_d_iF1__j
                 + 0.027777777777777776*_d_iF2__j)
-            _d_ift0__j = _d_D__j*_pd__105 + _d_iPsi0__j*_pd__106
-            _d_ifq0__j = _d_D__j*_pd__107 + _d_P0__j*_pd__108 + _d_iPsi0__j*_pd__109 + _d_isigma0__j*_pd__110
-            _d_ifp0__j = _d_D__j*_pd__111 + _d_Q0__j*_pd__112 + _d_iPsi0__j*_pd__113 + _d_isigma0__j*_pd__114
+            _d_ift0__j = _d_D__j*_pd__74 + _d_iPsi0__j*_pd__75
+            _d_ifq0__j = _d_D__j*_pd__76 + _d_P0__j*_pd__77 + _d_iPsi0__j*_pd__78 + _d_isigma0__j*_pd__79
+            _d_ifp0__j = _d_D__j*_pd__80 + _d_Q0__j*_pd__81 + _d_iPsi0__j*_pd__82 + _d_isigma0__j*_pd__83
             _d_iPsi1__j = (0.17702731517242826*_d_iF0__j + 0.3611111111111111*_d_iF1__j
                 - 0.038138426283539355*_d_iF2__j)
-            _d_ift1__j = _d_D__j*_pd__115 + _d_iPsi1__j*_pd__116
-            _d_ifq1__j = _d_D__j*_pd__117 + _d_P1__j*_pd__118 + _d_iPsi1__j*_pd__119 + _d_isigma1__j*_pd__120
-            _d_ifp1__j = _d_D__j*_pd__121 + _d_Q1__j*_pd__122 + _d_iPsi1__j*_pd__123 + _d_isigma1__j*_pd__124
+            _d_ift1__j = _d_D__j*_pd__84 + _d_iPsi1__j*_pd__85
+            _d_ifq1__j = _d_D__j*_pd__86 + _d_P1__j*_pd__87 + _d_iPsi1__j*_pd__88 + _d_isigma1__j*_pd__89
+            _d_ifp1__j = _d_D__j*_pd__90 + _d_Q1__j*_pd__91 + _d_iPsi1__j*_pd__92 + _d_isigma1__j*_pd__93
             _d_iPsi2__j = (0.027777777777777776*_d_iF0__j + 0.3262768525670787*_d_iF1__j
                 + 0.14594536965514351*_d_iF2__j)
-            _d_ift2__j = _d_D__j*_pd__125 + _d_iPsi2__j*_pd__126
-            _d_ifq2__j = _d_D__j*_pd__127 + _d_P2__j*_pd__128 + _d_iPsi2__j*_pd__129 + _d_isigma2__j*_pd__130
-            _d_ifp2__j = _d_D__j*_pd__131 + _d_Q2__j*_pd__132 + _d_iPsi2__j*_pd__133 + _d_isigma2__j*_pd__134
+            _d_ift2__j = _d_D__j*_pd__94 + _d_iPsi2__j*_pd__95
+            _d_ifq2__j = _d_D__j*_pd__96 + _d_P2__j*_pd__97 + _d_iPsi2__j*_pd__98 + _d_isigma2__j*_pd__99
+            _d_ifp2__j = _d_D__j*_pd__100 + _d_Q2__j*_pd__101 + _d_iPsi2__j*_pd__102 + _d_isigma2__j*_pd__103
             _T[15, _j1] = _d_isigma0__j
             _T[16, _j1] = _d_iF0__j
             _T[17, _j1] = _d_isigma1__j
@@ -992,25 +977,25 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x107 = (1.0/_x101)
         _x108 = _x103**2
         _x109 = _x108*_x90
-        _pd__135 = (_x109*(-_x107*(0.0039202670923636765*_iF0 + 0.0278275716985823*_iF1
+        _pd__104 = (_x109*(-_x107*(0.0039202670923636765*_iF0 + 0.0278275716985823*_iF1
             + 0.030864197530864196*_iF2 - 0.0039202670923636765*_x104 - 0.0278275716985823*_x105
             - 0.030864197530864196*_x106 + 0.06261203632181017*_x92) - 0.06261203632181017))
-        _pd__136 = (_x109*(-_x107*(0.0278275716985823*_iF0 + 0.19753086419753085*_iF1
+        _pd__105 = (_x109*(-_x107*(0.0278275716985823*_iF0 + 0.19753086419753085*_iF1
             + 0.21908600854833127*_iF2 - 0.0278275716985823*_x104 - 0.19753086419753085*_x105
             - 0.21908600854833127*_x106 + 0.4444444444444444*_x92) - 0.4444444444444444))
-        _pd__137 = (_x109*(-_x107*(0.030864197530864196*_iF0 + 0.21908600854833127*_iF1
+        _pd__106 = (_x109*(-_x107*(0.030864197530864196*_iF0 + 0.21908600854833127*_iF1
             + 0.24299331315454992*_iF2 - 0.030864197530864196*_x104 - 0.21908600854833127*_x105
             - 0.24299331315454992*_x106 + 0.4929435192337454*_x92) - 0.4929435192337454))
         _x110 = _x100*_x107
-        _pd__138 = _x109*(-_x110*_x95 - _x95)
-        _pd__139 = _x109*(-_x110*_x97 - _x97)
-        _pd__140 = _x109*(-_x110*_x99 - _x99)
+        _pd__107 = _x109*(-_x110*_x95 - _x95)
+        _pd__108 = _x109*(-_x110*_x97 - _x97)
+        _pd__109 = _x109*(-_x110*_x99 - _x99)
         _x111 = 2.0*q_r
-        _pd__141 = (_x109*(-0.06261203632181017*_isigma0 - 0.4444444444444444*_isigma1
+        _pd__110 = (_x109*(-0.06261203632181017*_isigma0 - 0.4444444444444444*_isigma1
             - 0.4929435192337454*_isigma2 - _x107*((0.5)*_x100*(0.12522407264362034*_isigma0
             + 0.8888888888888888*_isigma1 + 0.9858870384674908*_isigma2 - _x111) + (0.5)*_x90) - _x91))
-        _pd__142 = _x109*(_x110*k_c + k_c)
-        _pd__143 = 2.0*_x103*m*q_rd - _x107*_x108*k_c*m**2*q_rd**3
+        _pd__111 = _x109*(_x110*k_c + k_c)
+        _pd__112 = 2.0*_x103*m*q_rd - _x107*_x108*k_c*m**2*q_rd**3
         _Q0__next = 0.1388888888888889*_ifq0 + 0.48042111196938336*_ifq1 + 0.26798833376246944*_ifq2 + q_th
         _Q1__next = -0.022485417203086815*_ifq0 + 0.2222222222222222*_ifq1 + 0.30026319498086457*_ifq2 + q_th
         _Q2__next = 0.009789444015308325*_ifq0 - 0.0359766675249389*_ifq1 + 0.1388888888888889*_ifq2 + q_th
@@ -1018,14 +1003,14 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x113 = _x112*q_thd
         _P0__next = 0.1388888888888889*_ifp0 + 0.48042111196938336*_ifp1 + 0.26798833376246944*_ifp2 + _x113
         _x114 = _x111*m*q_thd
-        _pd__144 = _x114
-        _pd__145 = _x112
+        _pd__113 = _x114
+        _pd__114 = _x112
         _P1__next = -0.022485417203086815*_ifp0 + 0.2222222222222222*_ifp1 + 0.30026319498086457*_ifp2 + _x113
-        _pd__146 = _x114
-        _pd__147 = _x112
+        _pd__115 = _x114
+        _pd__116 = _x112
         _P2__next = 0.009789444015308325*_ifp0 - 0.0359766675249389*_ifp1 + 0.1388888888888889*_ifp2 + _x113
-        _pd__148 = _x114
-        _pd__149 = _x112
+        _pd__117 = _x114
+        _pd__118 = _x112
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_k_c__j = _T[3, _j2]
@@ -1046,9 +1031,9 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             _d_ifq2__j = _T[28, _j2]
             _d_ifp2__j = _T[29, _j2]
             # next values
-            _d_D__next__j = (_d_iF0__j*_pd__135 + _d_iF1__j*_pd__136 + _d_iF2__j*_pd__137
-                + _d_isigma0__j*_pd__138 + _d_isigma1__j*_pd__139 + _d_isigma2__j*_pd__140 + _pd__141*d_k_c__j
-                + _pd__142*d_q_r__j + _pd__143*d_q_rd__j)
+            _d_D__next__j = (_d_iF0__j*_pd__104 + _d_iF1__j*_pd__105 + _d_iF2__j*_pd__106
+                + _d_isigma0__j*_pd__107 + _d_isigma1__j*_pd__108 + _d_isigma2__j*_pd__109 + _pd__110*d_k_c__j
+                + _pd__111*d_q_r__j + _pd__112*d_q_rd__j)
             _d_Q0__next__j = (0.1388888888888889*_d_ifq0__j + 0.48042111196938336*_d_ifq1__j
                 + 0.26798833376246944*_d_ifq2__j + d_q_th__j)
             _d_Q1__next__j = (-0.022485417203086815*_d_ifq0__j + 0.2222222222222222*_d_ifq1__j
@@ -1056,11 +1041,11 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             _d_Q2__next__j = (0.009789444015308325*_d_ifq0__j - 0.0359766675249389*_d_ifq1__j
                 + 0.1388888888888889*_d_ifq2__j + d_q_th__j)
             _d_P0__next__j = (0.1388888888888889*_d_ifp0__j + 0.48042111196938336*_d_ifp1__j
-                + 0.26798833376246944*_d_ifp2__j + _pd__144*d_q_r__j + _pd__145*d_q_thd__j)
+                + 0.26798833376246944*_d_ifp2__j + _pd__113*d_q_r__j + _pd__114*d_q_thd__j)
             _d_P1__next__j = (-0.022485417203086815*_d_ifp0__j + 0.2222222222222222*_d_ifp1__j
-                + 0.30026319498086457*_d_ifp2__j + _pd__146*d_q_r__j + _pd__147*d_q_thd__j)
+                + 0.30026319498086457*_d_ifp2__j + _pd__115*d_q_r__j + _pd__116*d_q_thd__j)
             _d_P2__next__j = (0.009789444015308325*_d_ifp0__j - 0.0359766675249389*_d_ifp1__j
-                + 0.1388888888888889*_d_ifp2__j + _pd__148*d_q_r__j + _pd__149*d_q_thd__j)
+                + 0.1388888888888889*_d_ifp2__j + _pd__117*d_q_r__j + _pd__118*d_q_thd__j)
             _T[8, _j2] = _d_D__next__j
             _T[9, _j2] = _d_Q0__next__j
             _T[10, _j2] = _d_Q1__next__j
@@ -1104,12 +1089,12 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     _x120 = _x118*_x119
     end_q_thd = _x117*_x120
     _x121 = 0.2777777777777778*_x120
-    _pd__150 = _x121
-    _pd__151 = 0.4444444444444444*_x120
-    _pd__152 = _x121
-    _pd__153 = -2.0*_x117*_x119*_x122**3
-    _pd__154 = 2.0*_x118*q_r*q_thd
-    _pd__155 = _x116*_x118
+    _pd__119 = _x121
+    _pd__120 = 0.4444444444444444*_x120
+    _pd__121 = _x121
+    _pd__122 = -2.0*_x117*_x119*_x122**3
+    _pd__123 = 2.0*_x118*q_r*q_thd
+    _pd__124 = _x116*_x118
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
@@ -1135,8 +1120,8 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         d_end_q_th__j = (0.2777777777777778*_d_ifq0__j + 0.4444444444444444*_d_ifq1__j
             + 0.2777777777777778*_d_ifq2__j + d_q_th__j)
         d_end_q_r__j = -_d_D__j + d_q_r__j
-        d_end_q_thd__j = (_d_ifp0__j*_pd__150 + _d_ifp1__j*_pd__151 + _d_ifp2__j*_pd__152
-            + _pd__153*d_end_q_r__j + _pd__154*d_q_r__j + _pd__155*d_q_thd__j)
+        d_end_q_thd__j = (_d_ifp0__j*_pd__119 + _d_ifp1__j*_pd__120 + _d_ifp2__j*_pd__121
+            + _pd__122*d_end_q_r__j + _pd__123*d_q_r__j + _pd__124*d_q_thd__j)
         _T[30, _j3] = d_t_half__j
         _T[31, _j3] = d_end_q_th__j
         _T[32, _j3] = d_end_q_r__j
@@ -1150,11 +1135,11 @@ def schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     (d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5,
         ) = (_T[33, 0], _T[33, 1], _T[33, 2], _T[33, 3], _T[33, 4], _T[33, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-        d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-        d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4,
-        d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+        d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes, d_end_q_r__1,
+        d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__3,
+        d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4,
+        d_t_half__5, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1188,27 +1173,27 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     # the initial values
     _x0 = 1.8611363115940527*m
     _x1 = guess_q_r*guess_q_thd
-    _pd__156 = _x0*_x1
+    _pd__125 = _x0*_x1
     _x2 = guess_q_r**2*m
-    _pd__157 = 0.9305681557970263*_x2
+    _pd__126 = 0.9305681557970263*_x2
     _x3 = q_r*q_thd
     _x4 = _x3*m
-    _pd__158 = 0.13886368840594743*_x4
+    _pd__127 = 0.13886368840594743*_x4
     _x5 = m*q_r**2
-    _pd__159 = 0.06943184420297371*_x5
+    _pd__128 = 0.06943184420297371*_x5
     _x6 = _x1*m
-    _pd__160 = 1.3399810435848563*_x6
-    _pd__161 = 0.6699905217924281*_x2
-    _pd__162 = 0.6600189564151437*_x4
-    _pd__163 = 0.33000947820757187*_x5
-    _pd__164 = 0.6600189564151437*_x6
-    _pd__165 = 0.33000947820757187*_x2
-    _pd__166 = 1.3399810435848563*_x4
-    _pd__167 = 0.6699905217924281*_x5
-    _pd__168 = 0.13886368840594743*_x6
-    _pd__169 = 0.06943184420297371*_x2
-    _pd__170 = _x0*_x3
-    _pd__171 = 0.9305681557970263*_x5
+    _pd__129 = 1.3399810435848563*_x6
+    _pd__130 = 0.6699905217924281*_x2
+    _pd__131 = 0.6600189564151437*_x4
+    _pd__132 = 0.33000947820757187*_x5
+    _pd__133 = 0.6600189564151437*_x6
+    _pd__134 = 0.33000947820757187*_x2
+    _pd__135 = 1.3399810435848563*_x4
+    _pd__136 = 0.6699905217924281*_x5
+    _pd__137 = 0.13886368840594743*_x6
+    _pd__138 = 0.06943184420297371*_x2
+    _pd__139 = _x0*_x3
+    _pd__140 = 0.9305681557970263*_x5
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_r__j = _T[0, _j0]
@@ -1223,14 +1208,14 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _d_Q1__start__j = 0.6699905217924281*d_guess_q_th__j + 0.33000947820757187*d_q_th__j
         _d_Q2__start__j = 0.33000947820757187*d_guess_q_th__j + 0.6699905217924281*d_q_th__j
         _d_Q3__start__j = 0.06943184420297371*d_guess_q_th__j + 0.9305681557970263*d_q_th__j
-        _d_P0__start__j = (_pd__156*d_guess_q_r__j + _pd__157*d_guess_q_thd__j + _pd__158*d_q_r__j
-            + _pd__159*d_q_thd__j)
-        _d_P1__start__j = (_pd__160*d_guess_q_r__j + _pd__161*d_guess_q_thd__j + _pd__162*d_q_r__j
-            + _pd__163*d_q_thd__j)
-        _d_P2__start__j = (_pd__164*d_guess_q_r__j + _pd__165*d_guess_q_thd__j + _pd__166*d_q_r__j
-            + _pd__167*d_q_thd__j)
-        _d_P3__start__j = (_pd__168*d_guess_q_r__j + _pd__169*d_guess_q_thd__j + _pd__170*d_q_r__j
-            + _pd__171*d_q_thd__j)
+        _d_P0__start__j = (_pd__125*d_guess_q_r__j + _pd__126*d_guess_q_thd__j + _pd__127*d_q_r__j
+            + _pd__128*d_q_thd__j)
+        _d_P1__start__j = (_pd__129*d_guess_q_r__j + _pd__130*d_guess_q_thd__j + _pd__131*d_q_r__j
+            + _pd__132*d_q_thd__j)
+        _d_P2__start__j = (_pd__133*d_guess_q_r__j + _pd__134*d_guess_q_thd__j + _pd__135*d_q_r__j
+            + _pd__136*d_q_thd__j)
+        _d_P3__start__j = (_pd__137*d_guess_q_r__j + _pd__138*d_guess_q_thd__j + _pd__139*d_q_r__j
+            + _pd__140*d_q_thd__j)
         _T[8, _j0] = _d_D__start__j
         _T[9, _j0] = _d_Q0__start__j
         _T[10, _j0] = _d_Q1__start__j
@@ -1276,12 +1261,12 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x19 = _x15*_x18
         _iF0 = _x10 - _x13 - _x14 + _x19
         _x20 = 2.0*_P0
-        _pd__172 = _x18*_x20
+        _pd__141 = _x18*_x20
         _x21 = math.sin(_Q0)
-        _pd__173 = _x12*_x21
+        _pd__142 = _x12*_x21
         _x22 = 3.0*_x16
-        _pd__174 = -_x109**4*_x15*_x22 - k_c
-        _pd__175 = _x8 + l0
+        _pd__143 = -_x109**4*_x15*_x22 - k_c
+        _pd__144 = _x8 + l0
         _x23 = 0.8910937442931661*_D + _x7
         _x24 = -_x23
         _isigma1 = _x24
@@ -1295,11 +1280,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x31 = _x28*_x30
         _iF1 = _x10 - _x26 - _x27 + _x31
         _x32 = 2.0*_P1
-        _pd__176 = _x30*_x32
+        _pd__145 = _x30*_x32
         _x33 = math.sin(_Q1)
-        _pd__177 = _x12*_x33
-        _pd__178 = -_x106**4*_x22*_x28 - k_c
-        _pd__179 = _x23 + l0
+        _pd__146 = _x12*_x33
+        _pd__147 = -_x106**4*_x22*_x28 - k_c
+        _pd__148 = _x23 + l0
         _x34 = 0.5511127007083099*_D + _x7
         _x35 = -_x34
         _isigma2 = _x35
@@ -1313,11 +1298,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x42 = _x39*_x41
         _iF2 = _x10 - _x37 - _x38 + _x42
         _x43 = 2.0*_P2
-        _pd__180 = _x41*_x43
+        _pd__149 = _x41*_x43
         _x44 = math.sin(_Q2)
-        _pd__181 = _x12*_x44
-        _pd__182 = -_x107**4*_x22*_x39 - k_c
-        _pd__183 = _x34 + l0
+        _pd__150 = _x12*_x44
+        _pd__151 = -_x107**4*_x22*_x39 - k_c
+        _pd__152 = _x34 + l0
         _x45 = 0.13404290741652142*_D + _x7
         _x46 = -_x45
         _isigma3 = _x46
@@ -1331,11 +1316,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x53 = _x50*_x52
         _iF3 = _x10 - _x48 - _x49 + _x53
         _x54 = 2.0*_P3
-        _pd__184 = _x52*_x54
+        _pd__153 = _x52*_x54
         _x55 = math.sin(_Q3)
-        _pd__185 = _x12*_x55
-        _pd__186 = -_x108**4*_x22*_x50 - k_c
-        _pd__187 = _x45 + l0
+        _pd__154 = _x12*_x55
+        _pd__155 = -_x108**4*_x22*_x50 - k_c
+        _pd__156 = _x45 + l0
         _x56 = (0.5*_x10 - 0.582374038291501*_x13 - 0.582374038291501*_x14 + 0.582374038291501*_x19
             + 0.12383458041329967*_x26 + 0.12383458041329967*_x27 - 0.12383458041329967*_x31
             - 0.0575898635297681*_x37 - 0.0575898635297681*_x38 + 0.0575898635297681*_x42
@@ -1348,10 +1333,10 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ift0 = _x57*_x60
         _x61 = (0.5)/_x58
         _x62 = _x59*_x61
-        _pd__188 = _x57*_x62
+        _pd__157 = _x57*_x62
         _x63 = _x56**(-1.5)
         _x64 = (0.5)*_x60
-        _pd__189 = -_x63*_x64
+        _pd__158 = -_x63*_x64
         _x65 = (1.0/_x59)
         _x66 = _x58*_x65
         _x67 = _x109**2
@@ -1359,11 +1344,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x69 = _x66*_x68
         _ifq0 = _P0*_x69
         _x70 = _x61*_x65
-        _pd__190 = _P0*_x68*_x70
-        _pd__191 = _x69
+        _pd__159 = _P0*_x68*_x70
+        _pd__160 = _x69
         _x71 = (0.5)*_x66
-        _pd__192 = -_P0*_x63*_x67*_x71
-        _pd__193 = -_x17*_x20*_x57*_x66
+        _pd__161 = -_P0*_x63*_x67*_x71
+        _pd__162 = -_x17*_x20*_x57*_x66
         _x72 = g_s*m**(1.5)
         _x73 = _x58*_x72
         _x74 = _x57*_x73
@@ -1371,11 +1356,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ifp0 = _x75*_x9
         _x76 = _x21*_x9
         _x77 = _x61*_x72
-        _pd__194 = _x57*_x76*_x77
-        _pd__195 = _x11*_x74*_x9
+        _pd__163 = _x57*_x76*_x77
+        _pd__164 = _x11*_x74*_x9
         _x78 = (0.5)*_x73
-        _pd__196 = -_x63*_x76*_x78
-        _pd__197 = _x75
+        _pd__165 = -_x63*_x76*_x78
+        _pd__166 = _x75
         _x79 = (-0.16000937841634696*_x13 - 0.16000937841634696*_x14 + 0.16000937841634696*_x15*_x16*_x17
             + 0.39252437029865583*_x16*_x28*_x29 + 0.017475652789475504*_x16*_x50*_x51
             - 0.39252437029865583*_x26 - 0.39252437029865583*_x27 + 0.0700094015044783*_x35*k_c
@@ -1384,25 +1369,25 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi1 = _x79
         _x80 = (1.0/math.sqrt(_x79))
         _ift1 = _x60*_x80
-        _pd__198 = _x62*_x80
+        _pd__167 = _x62*_x80
         _x81 = _x79**(-1.5)
-        _pd__199 = -_x64*_x81
+        _pd__168 = -_x64*_x81
         _x82 = _x106**2
         _x83 = _x80*_x82
         _x84 = _x66*_x83
         _ifq1 = _P1*_x84
-        _pd__200 = _P1*_x70*_x83
-        _pd__201 = _x84
-        _pd__202 = -_P1*_x71*_x81*_x82
-        _pd__203 = -_x29*_x32*_x66*_x80
+        _pd__169 = _P1*_x70*_x83
+        _pd__170 = _x84
+        _pd__171 = -_P1*_x71*_x81*_x82
+        _pd__172 = -_x29*_x32*_x66*_x80
         _x85 = _x73*_x80
         _x86 = _x33*_x85
         _ifp1 = _x24*_x86
         _x87 = _x24*_x33
-        _pd__204 = _x77*_x80*_x87
-        _pd__205 = _x24*_x25*_x85
-        _pd__206 = -_x78*_x81*_x87
-        _pd__207 = _x86
+        _pd__173 = _x77*_x80*_x87
+        _pd__174 = _x24*_x25*_x85
+        _pd__175 = -_x78*_x81*_x87
+        _pd__176 = _x86
         _x88 = (-0.01613725546399532*_x13 - 0.01613725546399532*_x14 + 0.01613725546399532*_x15*_x16*_x17
             + 0.2848443432415939*_x16*_x28*_x29 + 0.21871326539550162*_x16*_x39*_x40 - 0.2848443432415939*_x26
             - 0.2848443432415939*_x27 - 0.21871326539550162*_x37 - 0.21871326539550162*_x38
@@ -1411,25 +1396,25 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi2 = _x88
         _x89 = (1.0/math.sqrt(_x88))
         _ift2 = _x60*_x89
-        _pd__208 = _x62*_x89
+        _pd__177 = _x62*_x89
         _x90 = _x88**(-1.5)
-        _pd__209 = -_x64*_x90
+        _pd__178 = -_x64*_x90
         _x91 = _x107**2
         _x92 = _x89*_x91
         _x93 = _x66*_x92
         _ifq2 = _P2*_x93
-        _pd__210 = _P2*_x70*_x92
-        _pd__211 = _x93
-        _pd__212 = -_P2*_x71*_x90*_x91
-        _pd__213 = -_x40*_x43*_x66*_x89
+        _pd__179 = _P2*_x70*_x92
+        _pd__180 = _x93
+        _pd__181 = -_P2*_x71*_x90*_x91
+        _pd__182 = -_x40*_x43*_x66*_x89
         _x94 = _x73*_x89
         _x95 = _x44*_x94
         _ifp2 = _x35*_x95
         _x96 = _x35*_x44
-        _pd__214 = _x77*_x89*_x96
-        _pd__215 = _x35*_x36*_x94
-        _pd__216 = -_x78*_x90*_x96
-        _pd__217 = _x95
+        _pd__183 = _x77*_x89*_x96
+        _pd__184 = _x35*_x36*_x94
+        _pd__185 = -_x78*_x90*_x96
+        _pd__186 = _x95
         _x97 = (-0.01796104633752054*_x13 - 0.01796104633752054*_x14 + 0.01796104633752054*_x15*_x16*_x17
             + 0.11000222456933441*_x16*_x28*_x29 + 0.2823150697454702*_x16*_x39*_x40
             + 0.08972165934767481*_x16*_x50*_x51 - 0.11000222456933441*_x26 - 0.11000222456933441*_x27
@@ -1438,25 +1423,25 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi3 = _x97
         _x98 = (1.0/math.sqrt(_x97))
         _ift3 = _x60*_x98
-        _pd__218 = _x62*_x98
+        _pd__187 = _x62*_x98
         _x99 = _x97**(-1.5)
-        _pd__219 = -_x64*_x99
+        _pd__188 = -_x64*_x99
         _x100 = _x108**2
         _x101 = _x100*_x98
         _x102 = _x101*_x66
         _ifq3 = _P3*_x102
-        _pd__220 = _P3*_x101*_x70
-        _pd__221 = _x102
-        _pd__222 = -_P3*_x100*_x71*_x99
-        _pd__223 = -_x51*_x54*_x66*_x98
+        _pd__189 = _P3*_x101*_x70
+        _pd__190 = _x102
+        _pd__191 = -_P3*_x100*_x71*_x99
+        _pd__192 = -_x51*_x54*_x66*_x98
         _x103 = _x73*_x98
         _x104 = _x103*_x55
         _ifp3 = _x104*_x46
         _x105 = _x46*_x55
-        _pd__224 = _x105*_x77*_x98
-        _pd__225 = _x103*_x46*_x47
-        _pd__226 = -_x105*_x78*_x99
-        _pd__227 = _x104
+        _pd__193 = _x105*_x77*_x98
+        _pd__194 = _x103*_x46*_x47
+        _pd__195 = -_x105*_x78*_x99
+        _pd__196 = _x104
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -1485,33 +1470,33 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _x110 = -d_q_r__j
             _d_isigma0__j = -0.9951792190105739*_d_D__j - _x110
-            _d_iF0__j = _d_P0__j*_pd__172 + _d_Q0__j*_pd__173 + _d_isigma0__j*_pd__174 + _pd__175*d_k_c__j
+            _d_iF0__j = _d_P0__j*_pd__141 + _d_Q0__j*_pd__142 + _d_isigma0__j*_pd__143 + _pd__144*d_k_c__j
             _d_isigma1__j = -0.8910937442931661*_d_D__j - _x110
-            _d_iF1__j = _d_P1__j*_pd__176 + _d_Q1__j*_pd__177 + _d_isigma1__j*_pd__178 + _pd__179*d_k_c__j
+            _d_iF1__j = _d_P1__j*_pd__145 + _d_Q1__j*_pd__146 + _d_isigma1__j*_pd__147 + _pd__148*d_k_c__j
             _d_isigma2__j = -0.5511127007083099*_d_D__j - _x110
-            _d_iF2__j = _d_P2__j*_pd__180 + _d_Q2__j*_pd__181 + _d_isigma2__j*_pd__182 + _pd__183*d_k_c__j
+            _d_iF2__j = _d_P2__j*_pd__149 + _d_Q2__j*_pd__150 + _d_isigma2__j*_pd__151 + _pd__152*d_k_c__j
             _d_isigma3__j = -0.13404290741652142*_d_D__j - _x110
-            _d_iF3__j = _d_P3__j*_pd__184 + _d_Q3__j*_pd__185 + _d_isigma3__j*_pd__186 + _pd__187*d_k_c__j
+            _d_iF3__j = _d_P3__j*_pd__153 + _d_Q3__j*_pd__154 + _d_isigma3__j*_pd__155 + _pd__156*d_k_c__j
             _d_iPsi0__j = (0.582374038291501*_d_iF0__j - 0.12383458041329967*_d_iF1__j
                 + 0.0575898635297681*_d_iF2__j - 0.016129321407969507*_d_iF3__j)
-            _d_ift0__j = _d_D__j*_pd__188 + _d_iPsi0__j*_pd__189
-            _d_ifq0__j = _d_D__j*_pd__190 + _d_P0__j*_pd__191 + _d_iPsi0__j*_pd__192 + _d_isigma0__j*_pd__193
-            _d_ifp0__j = _d_D__j*_pd__194 + _d_Q0__j*_pd__195 + _d_iPsi0__j*_pd__196 + _d_isigma0__j*_pd__197
+            _d_ift0__j = _d_D__j*_pd__157 + _d_iPsi0__j*_pd__158
+            _d_ifq0__j = _d_D__j*_pd__159 + _d_P0__j*_pd__160 + _d_iPsi0__j*_pd__161 + _d_isigma0__j*_pd__162
+            _d_ifp0__j = _d_D__j*_pd__163 + _d_Q0__j*_pd__164 + _d_iPsi0__j*_pd__165 + _d_isigma0__j*_pd__166
             _d_iPsi1__j = (0.16000937841634696*_d_iF0__j + 0.39252437029865583*_d_iF1__j
                 - 0.0700094015044783*_d_iF2__j + 0.017475652789475504*_d_iF3__j)
-            _d_ift1__j = _d_D__j*_pd__198 + _d_iPsi1__j*_pd__199
-            _d_ifq1__j = _d_D__j*_pd__200 + _d_P1__j*_pd__201 + _d_iPsi1__j*_pd__202 + _d_isigma1__j*_pd__203
-            _d_ifp1__j = _d_D__j*_pd__204 + _d_Q1__j*_pd__205 + _d_iPsi1__j*_pd__206 + _d_isigma1__j*_pd__207
+            _d_ift1__j = _d_D__j*_pd__167 + _d_iPsi1__j*_pd__168
+            _d_ifq1__j = _d_D__j*_pd__169 + _d_P1__j*_pd__170 + _d_iPsi1__j*_pd__171 + _d_isigma1__j*_pd__172
+            _d_ifp1__j = _d_D__j*_pd__173 + _d_Q1__j*_pd__174 + _d_iPsi1__j*_pd__175 + _d_isigma1__j*_pd__176
             _d_iPsi2__j = (0.01613725546399532*_d_iF0__j + 0.2848443432415939*_d_iF1__j
                 + 0.21871326539550162*_d_iF2__j - 0.019694864101090868*_d_iF3__j)
-            _d_ift2__j = _d_D__j*_pd__208 + _d_iPsi2__j*_pd__209
-            _d_ifq2__j = _d_D__j*_pd__210 + _d_P2__j*_pd__211 + _d_iPsi2__j*_pd__212 + _d_isigma2__j*_pd__213
-            _d_ifp2__j = _d_D__j*_pd__214 + _d_Q2__j*_pd__215 + _d_iPsi2__j*_pd__216 + _d_isigma2__j*_pd__217
+            _d_ift2__j = _d_D__j*_pd__177 + _d_iPsi2__j*_pd__178
+            _d_ifq2__j = _d_D__j*_pd__179 + _d_P2__j*_pd__180 + _d_iPsi2__j*_pd__181 + _d_isigma2__j*_pd__182
+            _d_ifp2__j = _d_D__j*_pd__183 + _d_Q2__j*_pd__184 + _d_iPsi2__j*_pd__185 + _d_isigma2__j*_pd__186
             _d_iPsi3__j = (0.01796104633752054*_d_iF0__j + 0.11000222456933441*_d_iF1__j
                 + 0.2823150697454702*_d_iF2__j + 0.08972165934767481*_d_iF3__j)
-            _d_ift3__j = _d_D__j*_pd__218 + _d_iPsi3__j*_pd__219
-            _d_ifq3__j = _d_D__j*_pd__220 + _d_P3__j*_pd__221 + _d_iPsi3__j*_pd__222 + _d_isigma3__j*_pd__223
-            _d_ifp3__j = _d_D__j*_pd__224 + _d_Q3__j*_pd__225 + _d_iPsi3__j*_pd__226 + _d_isigma3__j*_pd__227
+            _d_ift3__j = _d_D__j*_pd__187 + _d_iPsi3__j*_pd__188
+            _d_ifq3__j = _d_D__j*_pd__189 + _d_P3__j*_pd__190 + _d_iPsi3__j*_pd__191 + _d_isigma3__j*_pd__192
+            _d_ifp3__j = _d_D__j*_pd__193 + _d_Q3__j*_pd__194 + _d_iPsi3__j*_pd__195 + _d_isigma3__j*_pd__196
             _T[17, _j1] = _d_isigma0__j
             _T[18, _j1] = _d_iF0__j
             _T[19, _j1] = _d_isigma1__j
@@ -1560,36 +1545,36 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x131 = (1.0/_x124)
         _x132 = _x126**2
         _x133 = _x111*_x132
-        _pd__228 = (_x133*(-_x131*(0.0005833289296948737*_iF0 + 0.0051978942923343804*_iF1
+        _pd__197 = (_x133*(-_x131*(0.0005833289296948737*_iF0 + 0.0051978942923343804*_iF1
             + 0.01055284814259947*_iF2 + 0.007818132048204519*_iF3 + 0.024152203412833244*_x113 - _x117*_x128
             - 0.0005833289296948737*_x127 - 0.01055284814259947*_x129 - 0.007818132048204519*_x130)
             - 0.024152203412833244))
         _x134 = _x117*k_c
-        _pd__229 = (_x133*(-_x131*(0.0051978942923343804*_iF0 + 0.046317101208086645*_iF1
+        _pd__198 = (_x133*(-_x131*(0.0051978942923343804*_iF0 + 0.046317101208086645*_iF1
             + 0.09403371980364733*_iF2 + 0.06966536696771665*_iF3 + 0.215214082271785*_x113 - _x115*_x128
             - 0.09403371980364733*_x129 - 0.06966536696771665*_x130 - 0.046317101208086645*_x134)
             - 0.215214082271785))
-        _pd__230 = (_x133*(-_x131*(0.01055284814259947*_iF0 + 0.09403371980364733*_iF1
+        _pd__199 = (_x133*(-_x131*(0.01055284814259947*_iF0 + 0.09403371980364733*_iF1
             + 0.19090876219531297*_iF2 + 0.14143574244920135*_iF3 + 0.43693107259076114*_x113
             - 0.01055284814259947*_x127 - 0.19090876219531297*_x129 - 0.14143574244920135*_x130
             - 0.09403371980364733*_x134) - 0.43693107259076114))
-        _pd__231 = (_x133*(-_x131*(0.007818132048204519*_iF0 + 0.06966536696771665*_iF1
+        _pd__200 = (_x133*(-_x131*(0.007818132048204519*_iF0 + 0.06966536696771665*_iF1
             + 0.14143574244920135*_iF2 + 0.10478340025949809*_iF3 + 0.3237026417246206*_x113
             - 0.007818132048204519*_x127 - 0.14143574244920135*_x129 - 0.10478340025949809*_x130
             - 0.06966536696771665*_x134) - 0.3237026417246206))
         _x135 = _x123*_x131
-        _pd__232 = _x133*(-_x116*_x135 - _x116)
-        _pd__233 = _x133*(-_x118*_x135 - _x118)
-        _pd__234 = _x133*(-_x120*_x135 - _x120)
-        _pd__235 = _x133*(-_x122*_x135 - _x122)
+        _pd__201 = _x133*(-_x116*_x135 - _x116)
+        _pd__202 = _x133*(-_x118*_x135 - _x118)
+        _pd__203 = _x133*(-_x120*_x135 - _x120)
+        _pd__204 = _x133*(-_x122*_x135 - _x122)
         _x136 = 2.0*q_r
-        _pd__236 = (_x133*(-0.024152203412833244*_isigma0 - 0.215214082271785*_isigma1
+        _pd__205 = (_x133*(-0.024152203412833244*_isigma0 - 0.215214082271785*_isigma1
             - 0.43693107259076114*_isigma2 - 0.3237026417246206*_isigma3 - _x112 - _x131*((0.5)*_x111
             + (0.5)*_x123*(0.04830440682566649*_isigma0 + 0.43042816454357*_isigma1
             + 0.8738621451815223*_isigma2 + 0.6474052834492412*_isigma3 - _x136 - 8.470329472543003e-22*l0))
             + 4.235164736271502e-22*l0))
-        _pd__237 = _x133*(_x135*k_c + k_c)
-        _pd__238 = 2.0*_x126*m*q_rd - _x131*_x132*k_c*m**2*q_rd**3
+        _pd__206 = _x133*(_x135*k_c + k_c)
+        _pd__207 = 2.0*_x126*m*q_rd - _x131*_x132*k_c*m**2*q_rd**3
         _Q0__next = (0.08696371128436346*_ifq0 + 0.35267675751627187*_ifq1 + 0.31344511474186837*_ifq2
             + 0.1774825722545226*_ifq3 + q_th)
         _Q1__next = (-0.014190694931141144*_ifq0 + 0.16303628871563652*_ifq1 + 0.35395300603374397*_ifq2
@@ -1603,20 +1588,20 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _P0__next = (0.08696371128436346*_ifp0 + 0.35267675751627187*_ifp1 + 0.31344511474186837*_ifp2
             + 0.1774825722545226*_ifp3 + _x138)
         _x139 = _x136*m*q_thd
-        _pd__239 = _x139
-        _pd__240 = _x137
+        _pd__208 = _x139
+        _pd__209 = _x137
         _P1__next = (-0.014190694931141144*_ifp0 + 0.16303628871563652*_ifp1 + 0.35395300603374397*_ifp2
             + 0.16719192197418878*_ifp3 + _x138)
-        _pd__241 = _x139
-        _pd__242 = _x137
+        _pd__210 = _x139
+        _pd__211 = _x137
         _P2__next = (0.006735500594538156*_ifp0 - 0.027880428602470895*_ifp1 + 0.16303628871563652*_ifp2
             + 0.18811811749986806*_ifp3 + _x138)
-        _pd__243 = _x139
-        _pd__244 = _x137
+        _pd__212 = _x139
+        _pd__213 = _x137
         _P3__next = (-0.0035551496857956833*_ifp0 + 0.012627462689404725*_ifp1 - 0.026604180084998794*_ifp2
             + 0.08696371128436346*_ifp3 + _x138)
-        _pd__245 = _x139
-        _pd__246 = _x137
+        _pd__214 = _x139
+        _pd__215 = _x137
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_k_c__j = _T[3, _j2]
@@ -1641,9 +1626,9 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             _d_ifq3__j = _T[35, _j2]
             _d_ifp3__j = _T[36, _j2]
             # next values
-            _d_D__next__j = (_d_iF0__j*_pd__228 + _d_iF1__j*_pd__229 + _d_iF2__j*_pd__230 + _d_iF3__j*_pd__231
-                + _d_isigma0__j*_pd__232 + _d_isigma1__j*_pd__233 + _d_isigma2__j*_pd__234
-                + _d_isigma3__j*_pd__235 + _pd__236*d_k_c__j + _pd__237*d_q_r__j + _pd__238*d_q_rd__j)
+            _d_D__next__j = (_d_iF0__j*_pd__197 + _d_iF1__j*_pd__198 + _d_iF2__j*_pd__199 + _d_iF3__j*_pd__200
+                + _d_isigma0__j*_pd__201 + _d_isigma1__j*_pd__202 + _d_isigma2__j*_pd__203
+                + _d_isigma3__j*_pd__204 + _pd__205*d_k_c__j + _pd__206*d_q_r__j + _pd__207*d_q_rd__j)
             _d_Q0__next__j = (0.08696371128436346*_d_ifq0__j + 0.35267675751627187*_d_ifq1__j
                 + 0.31344511474186837*_d_ifq2__j + 0.1774825722545226*_d_ifq3__j + d_q_th__j)
             _d_Q1__next__j = (-0.014190694931141144*_d_ifq0__j + 0.16303628871563652*_d_ifq1__j
@@ -1653,17 +1638,17 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             _d_Q3__next__j = (-0.0035551496857956833*_d_ifq0__j + 0.012627462689404725*_d_ifq1__j
                 - 0.026604180084998794*_d_ifq2__j + 0.08696371128436346*_d_ifq3__j + d_q_th__j)
             _d_P0__next__j = (0.08696371128436346*_d_ifp0__j + 0.35267675751627187*_d_ifp1__j
-                + 0.31344511474186837*_d_ifp2__j + 0.1774825722545226*_d_ifp3__j + _pd__239*d_q_r__j
-                + _pd__240*d_q_thd__j)
+                + 0.31344511474186837*_d_ifp2__j + 0.1774825722545226*_d_ifp3__j + _pd__208*d_q_r__j
+                + _pd__209*d_q_thd__j)
             _d_P1__next__j = (-0.014190694931141144*_d_ifp0__j + 0.16303628871563652*_d_ifp1__j
-                + 0.35395300603374397*_d_ifp2__j + 0.16719192197418878*_d_ifp3__j + _pd__241*d_q_r__j
-                + _pd__242*d_q_thd__j)
+                + 0.35395300603374397*_d_ifp2__j + 0.16719192197418878*_d_ifp3__j + _pd__210*d_q_r__j
+                + _pd__211*d_q_thd__j)
             _d_P2__next__j = (0.006735500594538156*_d_ifp0__j - 0.027880428602470895*_d_ifp1__j
-                + 0.16303628871563652*_d_ifp2__j + 0.18811811749986806*_d_ifp3__j + _pd__243*d_q_r__j
-                + _pd__244*d_q_thd__j)
+                + 0.16303628871563652*_d_ifp2__j + 0.18811811749986806*_d_ifp3__j + _pd__212*d_q_r__j
+                + _pd__213*d_q_thd__j)
             _d_P3__next__j = (-0.0035551496857956833*_d_ifp0__j + 0.012627462689404725*_d_ifp1__j
-                - 0.026604180084998794*_d_ifp2__j + 0.08696371128436346*_d_ifp3__j + _pd__245*d_q_r__j
-                + _pd__246*d_q_thd__j)
+                - 0.026604180084998794*_d_ifp2__j + 0.08696371128436346*_d_ifp3__j + _pd__214*d_q_r__j
+                + _pd__215*d_q_thd__j)
             _T[8, _j2] = _d_D__next__j
             _T[9, _j2] = _d_Q0__next__j
             _T[10, _j2] = _d_Q1__next__j
@@ -1717,14 +1702,14 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     _x145 = _x143*_x144
     end_q_thd = _x142*_x145
     _x146 = 0.17392742256872692*_x145
-    _pd__247 = _x146
+    _pd__216 = _x146
     _x147 = 0.32607257743127305*_x145
-    _pd__248 = _x147
-    _pd__249 = _x147
-    _pd__250 = _x146
-    _pd__251 = -2.0*_x142*_x144*_x148**3
-    _pd__252 = 2.0*_x143*q_r*q_thd
-    _pd__253 = _x141*_x143
+    _pd__217 = _x147
+    _pd__218 = _x147
+    _pd__219 = _x146
+    _pd__220 = -2.0*_x142*_x144*_x148**3
+    _pd__221 = 2.0*_x143*q_r*q_thd
+    _pd__222 = _x141*_x143
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
@@ -1753,8 +1738,8 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         d_end_q_th__j = (0.17392742256872692*_d_ifq0__j + 0.32607257743127305*_d_ifq1__j
             + 0.32607257743127305*_d_ifq2__j + 0.17392742256872692*_d_ifq3__j + d_q_th__j)
         d_end_q_r__j = -_d_D__j + d_q_r__j
-        d_end_q_thd__j = (_d_ifp0__j*_pd__247 + _d_ifp1__j*_pd__248 + _d_ifp2__j*_pd__249
-            + _d_ifp3__j*_pd__250 + _pd__251*d_end_q_r__j + _pd__252*d_q_r__j + _pd__253*d_q_thd__j)
+        d_end_q_thd__j = (_d_ifp0__j*_pd__216 + _d_ifp1__j*_pd__217 + _d_ifp2__j*_pd__218
+            + _d_ifp3__j*_pd__219 + _pd__220*d_end_q_r__j + _pd__221*d_q_r__j + _pd__222*d_q_thd__j)
         _T[37, _j3] = d_t_half__j
         _T[38, _j3] = d_end_q_th__j
         _T[39, _j3] = d_end_q_r__j
@@ -1768,11 +1753,11 @@ def schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     (d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5,
         ) = (_T[40, 0], _T[40, 1], _T[40, 2], _T[40, 3], _T[40, 4], _T[40, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-        d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-        d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4,
-        d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+        d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes, d_end_q_r__1,
+        d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__3,
+        d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4,
+        d_t_half__5, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1806,35 +1791,35 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     # the initial values
     _x0 = 1.932469514203152*m
     _x1 = guess_q_r*guess_q_thd
-    _pd__254 = _x0*_x1
+    _pd__223 = _x0*_x1
     _x2 = guess_q_r**2*m
-    _pd__255 = 0.966234757101576*_x2
+    _pd__224 = 0.966234757101576*_x2
     _x3 = q_r*q_thd
     _x4 = _x3*m
-    _pd__256 = 0.06753048579684798*_x4
+    _pd__225 = 0.06753048579684798*_x4
     _x5 = m*q_r**2
-    _pd__257 = 0.03376524289842399*_x5
+    _pd__226 = 0.03376524289842399*_x5
     _x6 = _x1*m
-    _pd__258 = 1.6612093864662645*_x6
-    _pd__259 = 0.8306046932331322*_x2
-    _pd__260 = 0.33879061353373546*_x4
-    _pd__261 = 0.16939530676686773*_x5
-    _pd__262 = 1.238619186083197*_x6
-    _pd__263 = 0.6193095930415985*_x2
-    _pd__264 = 0.7613808139168031*_x4
-    _pd__265 = 0.38069040695840156*_x5
-    _pd__266 = 0.7613808139168031*_x6
-    _pd__267 = 0.38069040695840156*_x2
-    _pd__268 = 1.238619186083197*_x4
-    _pd__269 = 0.6193095930415985*_x5
-    _pd__270 = 0.33879061353373546*_x6
-    _pd__271 = 0.16939530676686773*_x2
-    _pd__272 = 1.6612093864662645*_x4
-    _pd__273 = 0.8306046932331322*_x5
-    _pd__274 = 0.06753048579684798*_x6
-    _pd__275 = 0.03376524289842399*_x2
-    _pd__276 = _x0*_x3
-    _pd__277 = 0.966234757101576*_x5
+    _pd__227 = 1.6612093864662645*_x6
+    _pd__228 = 0.8306046932331322*_x2
+    _pd__229 = 0.33879061353373546*_x4
+    _pd__230 = 0.16939530676686773*_x5
+    _pd__231 = 1.238619186083197*_x6
+    _pd__232 = 0.6193095930415985*_x2
+    _pd__233 = 0.7613808139168031*_x4
+    _pd__234 = 0.38069040695840156*_x5
+    _pd__235 = 0.7613808139168031*_x6
+    _pd__236 = 0.38069040695840156*_x2
+    _pd__237 = 1.238619186083197*_x4
+    _pd__238 = 0.6193095930415985*_x5
+    _pd__239 = 0.33879061353373546*_x6
+    _pd__240 = 0.16939530676686773*_x2
+    _pd__241 = 1.6612093864662645*_x4
+    _pd__242 = 0.8306046932331322*_x5
+    _pd__243 = 0.06753048579684798*_x6
+    _pd__244 = 0.03376524289842399*_x2
+    _pd__245 = _x0*_x3
+    _pd__246 = 0.966234757101576*_x5
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_r__j = _T[0, _j0]
@@ -1851,18 +1836,18 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _d_Q3__start__j = 0.38069040695840156*d_guess_q_th__j + 0.6193095930415985*d_q_th__j
         _d_Q4__start__j = 0.16939530676686773*d_guess_q_th__j + 0.8306046932331322*d_q_th__j
         _d_Q5__start__j = 0.03376524289842399*d_guess_q_th__j + 0.966234757101576*d_q_th__j
-        _d_P0__start__j = (_pd__254*d_guess_q_r__j + _pd__255*d_guess_q_thd__j + _pd__256*d_q_r__j
-            + _pd__257*d_q_thd__j)
-        _d_P1__start__j = (_pd__258*d_guess_q_r__j + _pd__259*d_guess_q_thd__j + _pd__260*d_q_r__j
-            + _pd__261*d_q_thd__j)
-        _d_P2__start__j = (_pd__262*d_guess_q_r__j + _pd__263*d_guess_q_thd__j + _pd__264*d_q_r__j
-            + _pd__265*d_q_thd__j)
-        _d_P3__start__j = (_pd__266*d_guess_q_r__j + _pd__267*d_guess_q_thd__j + _pd__268*d_q_r__j
-            + _pd__269*d_q_thd__j)
-        _d_P4__start__j = (_pd__270*d_guess_q_r__j + _pd__271*d_guess_q_thd__j + _pd__272*d_q_r__j
-            + _pd__273*d_q_thd__j)
-        _d_P5__start__j = (_pd__274*d_guess_q_r__j + _pd__275*d_guess_q_thd__j + _pd__276*d_q_r__j
-            + _pd__277*d_q_thd__j)
+        _d_P0__start__j = (_pd__223*d_guess_q_r__j + _pd__224*d_guess_q_thd__j + _pd__225*d_q_r__j
+            + _pd__226*d_q_thd__j)
+        _d_P1__start__j = (_pd__227*d_guess_q_r__j + _pd__228*d_guess_q_thd__j + _pd__229*d_q_r__j
+            + _pd__230*d_q_thd__j)
+        _d_P2__start__j = (_pd__231*d_guess_q_r__j + _pd__232*d_guess_q_thd__j + _pd__233*d_q_r__j
+            + _pd__234*d_q_thd__j)
+        _d_P3__start__j = (_pd__235*d_guess_q_r__j + _pd__236*d_guess_q_thd__j + _pd__237*d_q_r__j
+            + _pd__238*d_q_thd__j)
+        _d_P4__start__j = (_pd__239*d_guess_q_r__j + _pd__240*d_guess_q_thd__j + _pd__241*d_q_r__j
+            + _pd__242*d_q_thd__j)
+        _d_P5__start__j = (_pd__243*d_guess_q_r__j + _pd__244*d_guess_q_thd__j + _pd__245*d_q_r__j
+            + _pd__246*d_q_thd__j)
         _T[8, _j0] = _d_D__start__j
         _T[9, _j0] = _d_Q0__start__j
         _T[10, _j0] = _d_Q1__start__j
@@ -1916,12 +1901,12 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x19 = _x15*_x18
         _iF0 = _x10 - _x13 - _x14 + _x19
         _x20 = 2.0*_P0
-        _pd__278 = _x18*_x20
+        _pd__247 = _x18*_x20
         _x21 = math.sin(_Q0)
-        _pd__279 = _x12*_x21
+        _pd__248 = _x12*_x21
         _x22 = 3.0*_x16
-        _pd__280 = -_x15*_x153**4*_x22 - k_c
-        _pd__281 = _x8 + l0
+        _pd__249 = -_x15*_x153**4*_x22 - k_c
+        _pd__250 = _x8 + l0
         _x23 = 0.9713052300453587*_D + _x7
         _x24 = -_x23
         _isigma1 = _x24
@@ -1935,11 +1920,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x31 = _x28*_x30
         _iF1 = _x10 - _x26 - _x27 + _x31
         _x32 = 2.0*_P1
-        _pd__282 = _x30*_x32
+        _pd__251 = _x30*_x32
         _x33 = math.sin(_Q1)
-        _pd__283 = _x12*_x33
-        _pd__284 = -_x148**4*_x22*_x28 - k_c
-        _pd__285 = _x23 + l0
+        _pd__252 = _x12*_x33
+        _pd__253 = -_x148**4*_x22*_x28 - k_c
+        _pd__254 = _x23 + l0
         _x34 = 0.8550748140498466*_D + _x7
         _x35 = -_x34
         _isigma2 = _x35
@@ -1953,11 +1938,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x42 = _x39*_x41
         _iF2 = _x10 - _x37 - _x38 + _x42
         _x43 = 2.0*_P2
-        _pd__286 = _x41*_x43
+        _pd__255 = _x41*_x43
         _x44 = math.sin(_Q2)
-        _pd__287 = _x12*_x44
-        _pd__288 = -_x149**4*_x22*_x39 - k_c
-        _pd__289 = _x34 + l0
+        _pd__256 = _x12*_x44
+        _pd__257 = -_x149**4*_x22*_x39 - k_c
+        _pd__258 = _x34 + l0
         _x45 = 0.6164556279666497*_D + _x7
         _x46 = -_x45
         _isigma3 = _x46
@@ -1971,11 +1956,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x53 = _x50*_x52
         _iF3 = _x10 - _x48 - _x49 + _x53
         _x54 = 2.0*_P3
-        _pd__290 = _x52*_x54
+        _pd__259 = _x52*_x54
         _x55 = math.sin(_Q3)
-        _pd__291 = _x12*_x55
-        _pd__292 = -_x150**4*_x22*_x50 - k_c
-        _pd__293 = _x45 + l0
+        _pd__260 = _x12*_x55
+        _pd__261 = -_x150**4*_x22*_x50 - k_c
+        _pd__262 = _x45 + l0
         _x56 = 0.31009584357909425*_D + _x7
         _x57 = -_x56
         _isigma4 = _x57
@@ -1989,11 +1974,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x64 = _x61*_x63
         _iF4 = _x10 - _x59 - _x60 + _x64
         _x65 = 2.0*_P4
-        _pd__294 = _x63*_x65
+        _pd__263 = _x63*_x65
         _x66 = math.sin(_Q4)
-        _pd__295 = _x12*_x66
-        _pd__296 = -_x151**4*_x22*_x61 - k_c
-        _pd__297 = _x56 + l0
+        _pd__264 = _x12*_x66
+        _pd__265 = -_x151**4*_x22*_x61 - k_c
+        _pd__266 = _x56 + l0
         _x67 = 0.0663903941688584*_D + _x7
         _x68 = -_x67
         _isigma5 = _x68
@@ -2007,11 +1992,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x75 = _x72*_x74
         _iF5 = _x10 - _x70 - _x71 + _x75
         _x76 = 2.0*_P5
-        _pd__298 = _x74*_x76
+        _pd__267 = _x74*_x76
         _x77 = math.sin(_Q5)
-        _pd__299 = _x12*_x77
-        _pd__300 = -_x152**4*_x22*_x72 - k_c
-        _pd__301 = _x67 + l0
+        _pd__268 = _x12*_x77
+        _pd__269 = -_x152**4*_x22*_x72 - k_c
+        _pd__270 = _x67 + l0
         _x78 = (0.5*_x10 - 0.5871580340658094*_x13 - 0.5871580340658094*_x14 + 0.5871580340658094*_x19
             + 0.140380692261653*_x26 + 0.140380692261653*_x27 - 0.140380692261653*_x31
             - 0.08683151831711133*_x37 - 0.08683151831711133*_x38 + 0.08683151831711133*_x42
@@ -2026,10 +2011,10 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ift0 = _x79*_x82
         _x83 = (0.5)/_x80
         _x84 = _x81*_x83
-        _pd__302 = _x79*_x84
+        _pd__271 = _x79*_x84
         _x85 = _x78**(-1.5)
         _x86 = (0.5)*_x82
-        _pd__303 = -_x85*_x86
+        _pd__272 = -_x85*_x86
         _x87 = (1.0/_x81)
         _x88 = _x80*_x87
         _x89 = _x153**2
@@ -2037,11 +2022,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x91 = _x88*_x90
         _ifq0 = _P0*_x91
         _x92 = _x83*_x87
-        _pd__304 = _P0*_x90*_x92
-        _pd__305 = _x91
+        _pd__273 = _P0*_x90*_x92
+        _pd__274 = _x91
         _x93 = (0.5)*_x88
-        _pd__306 = -_P0*_x85*_x89*_x93
-        _pd__307 = -_x17*_x20*_x79*_x88
+        _pd__275 = -_P0*_x85*_x89*_x93
+        _pd__276 = -_x17*_x20*_x79*_x88
         _x94 = g_s*m**(1.5)
         _x95 = _x80*_x94
         _x96 = _x79*_x95
@@ -2049,11 +2034,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _ifp0 = _x9*_x97
         _x98 = _x21*_x9
         _x99 = _x83*_x94
-        _pd__308 = _x79*_x98*_x99
-        _pd__309 = _x11*_x9*_x96
+        _pd__277 = _x79*_x98*_x99
+        _pd__278 = _x11*_x9*_x96
         _x100 = (0.5)*_x95
-        _pd__310 = -_x100*_x85*_x98
-        _pd__311 = _x97
+        _pd__279 = -_x100*_x85*_x98
+        _pd__280 = _x97
         _x101 = -0.5*k_c*l0
         _x102 = (-_x101 - 0.147790320897128*_x13 - 0.147790320897128*_x14 + 0.147790320897128*_x15*_x16*_x17
             + 0.41567911405660357*_x16*_x28*_x29 + 0.05155355009455148*_x16*_x50*_x51
@@ -2065,25 +2050,25 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi1 = _x102
         _x103 = (1.0/math.sqrt(_x102))
         _ift1 = _x103*_x82
-        _pd__312 = _x103*_x84
+        _pd__281 = _x103*_x84
         _x104 = _x102**(-1.5)
-        _pd__313 = -_x104*_x86
+        _pd__282 = -_x104*_x86
         _x105 = _x148**2
         _x106 = _x103*_x105
         _x107 = _x106*_x88
         _ifq1 = _P1*_x107
-        _pd__314 = _P1*_x106*_x92
-        _pd__315 = _x107
-        _pd__316 = -_P1*_x104*_x105*_x93
-        _pd__317 = -_x103*_x29*_x32*_x88
+        _pd__283 = _P1*_x106*_x92
+        _pd__284 = _x107
+        _pd__285 = -_P1*_x104*_x105*_x93
+        _pd__286 = -_x103*_x29*_x32*_x88
         _x108 = _x103*_x95
         _x109 = _x108*_x33
         _ifp1 = _x109*_x24
         _x110 = _x24*_x33
-        _pd__318 = _x103*_x110*_x99
-        _pd__319 = _x108*_x24*_x25
-        _pd__320 = -_x100*_x104*_x110
-        _pd__321 = _x109
+        _pd__287 = _x103*_x110*_x99
+        _pd__288 = _x108*_x24*_x25
+        _pd__289 = -_x100*_x104*_x110
+        _pd__290 = _x109
         _x111 = (-_x101 - 0.010443786721981197*_x13 - 0.010443786721981197*_x14
             + 0.010443786721981197*_x15*_x16*_x17 + 0.25540525119175433*_x16*_x28*_x29
             + 0.2685463444140672*_x16*_x39*_x40 + 0.01951903325298492*_x16*_x61*_x62
@@ -2094,25 +2079,25 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi2 = _x111
         _x112 = (1.0/math.sqrt(_x111))
         _ift2 = _x112*_x82
-        _pd__322 = _x112*_x84
+        _pd__291 = _x112*_x84
         _x113 = _x111**(-1.5)
-        _pd__323 = -_x113*_x86
+        _pd__292 = -_x113*_x86
         _x114 = _x149**2
         _x115 = _x112*_x114
         _x116 = _x115*_x88
         _ifq2 = _P2*_x116
-        _pd__324 = _P2*_x115*_x92
-        _pd__325 = _x116
-        _pd__326 = -_P2*_x113*_x114*_x93
-        _pd__327 = -_x112*_x40*_x43*_x88
+        _pd__293 = _P2*_x115*_x92
+        _pd__294 = _x116
+        _pd__295 = -_P2*_x113*_x114*_x93
+        _pd__296 = -_x112*_x40*_x43*_x88
         _x117 = _x112*_x95
         _x118 = _x117*_x44
         _ifp2 = _x118*_x35
         _x119 = _x35*_x44
-        _pd__328 = _x112*_x119*_x99
-        _pd__329 = _x117*_x35*_x36
-        _pd__330 = -_x100*_x113*_x119
-        _pd__331 = _x118
+        _pd__297 = _x112*_x119*_x99
+        _pd__298 = _x117*_x35*_x36
+        _pd__299 = -_x100*_x113*_x119
+        _pd__300 = _x118
         _x120 = -0.5*k_c*l0
         _x121 = (-_x120 - 0.01101839635505667*_x13 - 0.01101839635505667*_x14
             + 0.01101839635505667*_x15*_x16*_x17 + 0.0662099828438604*_x16*_x28*_x29
@@ -2124,25 +2109,25 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi3 = _x121
         _x122 = (1.0/math.sqrt(_x121))
         _ift3 = _x122*_x82
-        _pd__332 = _x122*_x84
+        _pd__301 = _x122*_x84
         _x123 = _x121**(-1.5)
-        _pd__333 = -_x123*_x86
+        _pd__302 = -_x123*_x86
         _x124 = _x150**2
         _x125 = _x122*_x124
         _x126 = _x125*_x88
         _ifq3 = _P3*_x126
-        _pd__334 = _P3*_x125*_x92
-        _pd__335 = _x126
-        _pd__336 = -_P3*_x123*_x124*_x93
-        _pd__337 = -_x122*_x51*_x54*_x88
+        _pd__303 = _P3*_x125*_x92
+        _pd__304 = _x126
+        _pd__305 = -_P3*_x123*_x124*_x93
+        _pd__306 = -_x122*_x51*_x54*_x88
         _x127 = _x122*_x95
         _x128 = _x127*_x55
         _ifp3 = _x128*_x46
         _x129 = _x46*_x55
-        _pd__338 = _x122*_x129*_x99
-        _pd__339 = _x127*_x46*_x47
-        _pd__340 = -_x100*_x123*_x129
-        _pd__341 = _x128
+        _pd__307 = _x122*_x129*_x99
+        _pd__308 = _x127*_x46*_x47
+        _pd__309 = -_x100*_x123*_x129
+        _pd__310 = _x128
         _x130 = (-_x101 - 0.0025147977064533143*_x13 - 0.0025147977064533143*_x14
             + 0.0025147977064533143*_x15*_x16*_x17 + 0.050345455482979015*_x16*_x28*_x29
             + 0.11622097556712797*_x16*_x39*_x40 + 0.2353986790647292*_x16*_x50*_x51
@@ -2153,25 +2138,25 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi4 = _x130
         _x131 = (1.0/math.sqrt(_x130))
         _ift4 = _x131*_x82
-        _pd__342 = _x131*_x84
+        _pd__311 = _x131*_x84
         _x132 = _x130**(-1.5)
-        _pd__343 = -_x132*_x86
+        _pd__312 = -_x132*_x86
         _x133 = _x151**2
         _x134 = _x131*_x133
         _x135 = _x134*_x88
         _ifq4 = _P4*_x135
-        _pd__344 = _P4*_x134*_x92
-        _pd__345 = _x135
-        _pd__346 = -_P4*_x132*_x133*_x93
-        _pd__347 = -_x131*_x62*_x65*_x88
+        _pd__313 = _P4*_x134*_x92
+        _pd__314 = _x135
+        _pd__315 = -_P4*_x132*_x133*_x93
+        _pd__316 = -_x131*_x62*_x65*_x88
         _x136 = _x131*_x95
         _x137 = _x136*_x66
         _ifp4 = _x137*_x57
         _x138 = _x57*_x66
-        _pd__348 = _x131*_x138*_x99
-        _pd__349 = _x136*_x57*_x58
-        _pd__350 = -_x100*_x132*_x138
-        _pd__351 = _x137
+        _pd__317 = _x131*_x138*_x99
+        _pd__318 = _x136*_x57*_x58
+        _pd__319 = -_x100*_x132*_x138
+        _pd__320 = _x137
         _x139 = (-_x120 - 0.003959513229722528*_x13 - 0.003959513229722528*_x14
             + 0.003959513229722528*_x15*_x16*_x17 + 0.029703284805013122*_x16*_x28*_x29
             + 0.10140664131431479*_x16*_x39*_x40 + 0.14531313573962065*_x16*_x50*_x51
@@ -2183,25 +2168,25 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _iPsi5 = _x139
         _x140 = (1.0/math.sqrt(_x139))
         _ift5 = _x140*_x82
-        _pd__352 = _x140*_x84
+        _pd__321 = _x140*_x84
         _x141 = _x139**(-1.5)
-        _pd__353 = -_x141*_x86
+        _pd__322 = -_x141*_x86
         _x142 = _x152**2
         _x143 = _x140*_x142
         _x144 = _x143*_x88
         _ifq5 = _P5*_x144
-        _pd__354 = _P5*_x143*_x92
-        _pd__355 = _x144
-        _pd__356 = -_P5*_x141*_x142*_x93
-        _pd__357 = -_x140*_x73*_x76*_x88
+        _pd__323 = _P5*_x143*_x92
+        _pd__324 = _x144
+        _pd__325 = -_P5*_x141*_x142*_x93
+        _pd__326 = -_x140*_x73*_x76*_x88
         _x145 = _x140*_x95
         _x146 = _x145*_x77
         _ifp5 = _x146*_x68
         _x147 = _x68*_x77
-        _pd__358 = _x140*_x147*_x99
-        _pd__359 = _x145*_x68*_x69
-        _pd__360 = -_x100*_x141*_x147
-        _pd__361 = _x146
+        _pd__327 = _x140*_x147*_x99
+        _pd__328 = _x145*_x68*_x69
+        _pd__329 = -_x100*_x141*_x147
+        _pd__330 = _x146
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -2240,53 +2225,53 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _x154 = -d_q_r__j
             _d_isigma0__j = -0.9988599083720104*_d_D__j - _x154
-            _d_iF0__j = _d_P0__j*_pd__278 + _d_Q0__j*_pd__279 + _d_isigma0__j*_pd__280 + _pd__281*d_k_c__j
+            _d_iF0__j = _d_P0__j*_pd__247 + _d_Q0__j*_pd__248 + _d_isigma0__j*_pd__249 + _pd__250*d_k_c__j
             _d_isigma1__j = -0.9713052300453587*_d_D__j - _x154
-            _d_iF1__j = _d_P1__j*_pd__282 + _d_Q1__j*_pd__283 + _d_isigma1__j*_pd__284 + _pd__285*d_k_c__j
+            _d_iF1__j = _d_P1__j*_pd__251 + _d_Q1__j*_pd__252 + _d_isigma1__j*_pd__253 + _pd__254*d_k_c__j
             _d_isigma2__j = -0.8550748140498466*_d_D__j - _x154
-            _d_iF2__j = _d_P2__j*_pd__286 + _d_Q2__j*_pd__287 + _d_isigma2__j*_pd__288 + _pd__289*d_k_c__j
+            _d_iF2__j = _d_P2__j*_pd__255 + _d_Q2__j*_pd__256 + _d_isigma2__j*_pd__257 + _pd__258*d_k_c__j
             _d_isigma3__j = -0.6164556279666497*_d_D__j - _x154
-            _d_iF3__j = _d_P3__j*_pd__290 + _d_Q3__j*_pd__291 + _d_isigma3__j*_pd__292 + _pd__293*d_k_c__j
+            _d_iF3__j = _d_P3__j*_pd__259 + _d_Q3__j*_pd__260 + _d_isigma3__j*_pd__261 + _pd__262*d_k_c__j
             _d_isigma4__j = -0.31009584357909425*_d_D__j - _x154
-            _d_iF4__j = _d_P4__j*_pd__294 + _d_Q4__j*_pd__295 + _d_isigma4__j*_pd__296 + _pd__297*d_k_c__j
+            _d_iF4__j = _d_P4__j*_pd__263 + _d_Q4__j*_pd__264 + _d_isigma4__j*_pd__265 + _pd__266*d_k_c__j
             _d_isigma5__j = -0.0663903941688584*_d_D__j - _x154
-            _d_iF5__j = _d_P5__j*_pd__298 + _d_Q5__j*_pd__299 + _d_isigma5__j*_pd__300 + _pd__301*d_k_c__j
+            _d_iF5__j = _d_P5__j*_pd__267 + _d_Q5__j*_pd__268 + _d_isigma5__j*_pd__269 + _pd__270*d_k_c__j
             _d_iPsi0__j = (0.5871580340658094*_d_iF0__j - 0.140380692261653*_d_iF1__j
                 + 0.08683151831711133*_d_iF2__j - 0.052466581536012566*_d_iF3__j
                 + 0.026354606039126004*_d_iF4__j - 0.007496884624381081*_d_iF5__j)
-            _d_ift0__j = _d_D__j*_pd__302 + _d_iPsi0__j*_pd__303
-            _d_ifq0__j = _d_D__j*_pd__304 + _d_P0__j*_pd__305 + _d_iPsi0__j*_pd__306 + _d_isigma0__j*_pd__307
-            _d_ifp0__j = _d_D__j*_pd__308 + _d_Q0__j*_pd__309 + _d_iPsi0__j*_pd__310 + _d_isigma0__j*_pd__311
+            _d_ift0__j = _d_D__j*_pd__271 + _d_iPsi0__j*_pd__272
+            _d_ifq0__j = _d_D__j*_pd__273 + _d_P0__j*_pd__274 + _d_iPsi0__j*_pd__275 + _d_isigma0__j*_pd__276
+            _d_ifp0__j = _d_D__j*_pd__277 + _d_Q0__j*_pd__278 + _d_iPsi0__j*_pd__279 + _d_isigma0__j*_pd__280
             _d_iPsi1__j = (0.147790320897128*_d_iF0__j + 0.41567911405660357*_d_iF1__j
                 - 0.09720828549085844*_d_iF2__j + 0.05155355009455148*_d_iF3__j
                 - 0.024719229415033087*_d_iF4__j + 0.006904529857608445*_d_iF5__j)
-            _d_ift1__j = _d_D__j*_pd__312 + _d_iPsi1__j*_pd__313
-            _d_ifq1__j = _d_D__j*_pd__314 + _d_P1__j*_pd__315 + _d_iPsi1__j*_pd__316 + _d_isigma1__j*_pd__317
-            _d_ifp1__j = _d_D__j*_pd__318 + _d_Q1__j*_pd__319 + _d_iPsi1__j*_pd__320 + _d_isigma1__j*_pd__321
+            _d_ift1__j = _d_D__j*_pd__281 + _d_iPsi1__j*_pd__282
+            _d_ifq1__j = _d_D__j*_pd__283 + _d_P1__j*_pd__284 + _d_iPsi1__j*_pd__285 + _d_isigma1__j*_pd__286
+            _d_ifp1__j = _d_D__j*_pd__287 + _d_Q1__j*_pd__288 + _d_iPsi1__j*_pd__289 + _d_isigma1__j*_pd__290
             _d_iPsi2__j = (0.010443786721981197*_d_iF0__j + 0.25540525119175433*_d_iF1__j
                 + 0.2685463444140672*_d_iF2__j - 0.048794612428541204*_d_iF3__j
                 + 0.01951903325298492*_d_iF4__j - 0.005119803152246505*_d_iF5__j)
-            _d_ift2__j = _d_D__j*_pd__322 + _d_iPsi2__j*_pd__323
-            _d_ifq2__j = _d_D__j*_pd__324 + _d_P2__j*_pd__325 + _d_iPsi2__j*_pd__326 + _d_isigma2__j*_pd__327
-            _d_ifp2__j = _d_D__j*_pd__328 + _d_Q2__j*_pd__329 + _d_iPsi2__j*_pd__330 + _d_isigma2__j*_pd__331
+            _d_ift2__j = _d_D__j*_pd__291 + _d_iPsi2__j*_pd__292
+            _d_ifq2__j = _d_D__j*_pd__293 + _d_P2__j*_pd__294 + _d_iPsi2__j*_pd__295 + _d_isigma2__j*_pd__296
+            _d_ifp2__j = _d_D__j*_pd__297 + _d_Q2__j*_pd__298 + _d_iPsi2__j*_pd__299 + _d_isigma2__j*_pd__300
             _d_iPsi3__j = (0.01101839635505667*_d_iF0__j + 0.0662099828438604*_d_iF1__j
                 + 0.2671819482314443*_d_iF2__j + 0.1742495636223592*_d_iF3__j - 0.02396692958086051*_d_iF4__j
                 + 0.00530703852813994*_d_iF5__j)
-            _d_ift3__j = _d_D__j*_pd__332 + _d_iPsi3__j*_pd__333
-            _d_ifq3__j = _d_D__j*_pd__334 + _d_P3__j*_pd__335 + _d_iPsi3__j*_pd__336 + _d_isigma3__j*_pd__337
-            _d_ifp3__j = _d_D__j*_pd__338 + _d_Q3__j*_pd__339 + _d_iPsi3__j*_pd__340 + _d_isigma3__j*_pd__341
+            _d_ift3__j = _d_D__j*_pd__301 + _d_iPsi3__j*_pd__302
+            _d_ifq3__j = _d_D__j*_pd__303 + _d_P3__j*_pd__304 + _d_iPsi3__j*_pd__305 + _d_isigma3__j*_pd__306
+            _d_ifp3__j = _d_D__j*_pd__307 + _d_Q3__j*_pd__308 + _d_iPsi3__j*_pd__309 + _d_isigma3__j*_pd__310
             _d_iPsi4__j = (0.0025147977064533143*_d_iF0__j + 0.050345455482979015*_d_iF1__j
                 + 0.11622097556712797*_d_iF2__j + 0.2353986790647292*_d_iF3__j + 0.10372825048336794*_d_iF4__j
                 - 0.008208158304657426*_d_iF5__j)
-            _d_ift4__j = _d_D__j*_pd__342 + _d_iPsi4__j*_pd__343
-            _d_ifq4__j = _d_D__j*_pd__344 + _d_P4__j*_pd__345 + _d_iPsi4__j*_pd__346 + _d_isigma4__j*_pd__347
-            _d_ifp4__j = _d_D__j*_pd__348 + _d_Q4__j*_pd__349 + _d_iPsi4__j*_pd__350 + _d_isigma4__j*_pd__351
+            _d_ift4__j = _d_D__j*_pd__311 + _d_iPsi4__j*_pd__312
+            _d_ifq4__j = _d_D__j*_pd__313 + _d_P4__j*_pd__314 + _d_iPsi4__j*_pd__315 + _d_isigma4__j*_pd__316
+            _d_ifp4__j = _d_D__j*_pd__317 + _d_Q4__j*_pd__318 + _d_iPsi4__j*_pd__319 + _d_isigma4__j*_pd__320
             _d_iPsi5__j = (0.003959513229722528*_d_iF0__j + 0.029703284805013122*_d_iF1__j
                 + 0.10140664131431479*_d_iF2__j + 0.14531313573962065*_d_iF3__j
                 + 0.17612158869639333*_d_iF4__j + 0.04349583621493557*_d_iF5__j)
-            _d_ift5__j = _d_D__j*_pd__352 + _d_iPsi5__j*_pd__353
-            _d_ifq5__j = _d_D__j*_pd__354 + _d_P5__j*_pd__355 + _d_iPsi5__j*_pd__356 + _d_isigma5__j*_pd__357
-            _d_ifp5__j = _d_D__j*_pd__358 + _d_Q5__j*_pd__359 + _d_iPsi5__j*_pd__360 + _d_isigma5__j*_pd__361
+            _d_ift5__j = _d_D__j*_pd__321 + _d_iPsi5__j*_pd__322
+            _d_ifq5__j = _d_D__j*_pd__323 + _d_P5__j*_pd__324 + _d_iPsi5__j*_pd__325 + _d_isigma5__j*_pd__326
+            _d_ifp5__j = _d_D__j*_pd__327 + _d_Q5__j*_pd__328 + _d_iPsi5__j*_pd__329 + _d_isigma5__j*_pd__330
             _T[21, _j1] = _d_isigma0__j
             _T[22, _j1] = _d_iF0__j
             _T[23, _j1] = _d_isigma1__j
@@ -2352,52 +2337,52 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _x181 = (1.0/_x172)
         _x182 = _x174**2
         _x183 = _x155*_x182
-        _pd__362 = (_x183*(-_x181*(3.346406259767255e-05*_iF0 + 0.0003535175490621363*_iF1
+        _pd__331 = (_x183*(-_x181*(3.346406259767255e-05*_iF0 + 0.0003535175490621363*_iF1
             + 0.0010304507599892272*_iF2 + 0.0016763438982271685*_iF3 + 0.001733420724550538*_iF4
             + 0.0009576161052051336*_iF5 + 0.005784813099631875*_x157 - 3.346406259767255e-05*_x175
             - 0.0003535175490621363*_x176 - 0.0010304507599892272*_x177 - 0.0016763438982271685*_x178
             - 0.001733420724550538*_x179 - 0.0009576161052051336*_x180) - 0.005784813099631875))
-        _pd__363 = (_x183*(-_x181*(0.0003535175490621363*_iF0 + 0.003734593106564175*_iF1
+        _pd__332 = (_x183*(-_x181*(0.0003535175490621363*_iF0 + 0.003734593106564175*_iF1
             + 0.010885780112243256*_iF2 + 0.017709056829452403*_iF3 + 0.018312021866682706*_iF4
             + 0.010116347872182529*_iF5 + 0.06111131733618721*_x157 - 0.0003535175490621363*_x175
             - 0.003734593106564175*_x176 - 0.010885780112243256*_x177 - 0.017709056829452403*_x178
             - 0.018312021866682706*_x179 - 0.010116347872182529*_x180) - 0.06111131733618721))
-        _pd__364 = (_x183*(-_x181*(0.0010304507599892272*_iF0 + 0.010885780112243256*_iF1
+        _pd__333 = (_x183*(-_x181*(0.0010304507599892272*_iF0 + 0.010885780112243256*_iF1
             + 0.0317304202280636*_iF2 + 0.05161925091700105*_iF3 + 0.05337680378109292*_iF4
             + 0.02948764037559458*_iF5 + 0.17813034617398463*_x157 - 0.0010304507599892272*_x175
             - 0.010885780112243256*_x176 - 0.0317304202280636*_x177 - 0.05161925091700105*_x178
             - 0.05337680378109292*_x179 - 0.02948764037559458*_x180) - 0.17813034617398463))
-        _pd__365 = (_x183*(-_x181*(0.0016763438982271685*_iF0 + 0.017709056829452403*_iF1
+        _pd__334 = (_x183*(-_x181*(0.0016763438982271685*_iF0 + 0.017709056829452403*_iF1
             + 0.05161925091700105*_iF2 + 0.0839745281052309*_iF3 + 0.08683372636479925*_iF4
             + 0.04797068228399565*_iF5 + 0.28978358839870644*_x157 - 0.0016763438982271685*_x175
             - 0.017709056829452403*_x176 - 0.05161925091700105*_x177 - 0.0839745281052309*_x178
             - 0.08683372636479925*_x179 - 0.04797068228399565*_x180) - 0.28978358839870644))
-        _pd__366 = (_x183*(-_x181*(0.001733420724550538*_iF0 + 0.018312021866682706*_iF1
+        _pd__335 = (_x183*(-_x181*(0.001733420724550538*_iF0 + 0.018312021866682706*_iF1
             + 0.05337680378109292*_iF2 + 0.08683372636479925*_iF3 + 0.08979027574823786*_iF4
             + 0.04960400722658813*_iF5 + 0.2996502557119514*_x157 - 0.001733420724550538*_x175
             - 0.018312021866682706*_x176 - 0.05337680378109292*_x177 - 0.08683372636479925*_x178
             - 0.08979027574823786*_x179 - 0.04960400722658813*_x180) - 0.2996502557119514))
-        _pd__367 = (_x183*(-_x181*(0.0009576161052051336*_iF0 + 0.010116347872182529*_iF1
+        _pd__336 = (_x183*(-_x181*(0.0009576161052051336*_iF0 + 0.010116347872182529*_iF1
             + 0.02948764037559458*_iF2 + 0.04797068228399565*_iF3 + 0.04960400722658813*_iF4
             + 0.027403385415972457*_iF5 + 0.16553967927953847*_x157 - 0.0009576161052051336*_x175
             - 0.010116347872182529*_x176 - 0.02948764037559458*_x177 - 0.04797068228399565*_x178
             - 0.04960400722658813*_x179 - 0.027403385415972457*_x180) - 0.16553967927953847))
         _x184 = _x171*_x181
-        _pd__368 = _x183*(-_x160*_x184 - _x160)
-        _pd__369 = _x183*(-_x162*_x184 - _x162)
-        _pd__370 = _x183*(-_x164*_x184 - _x164)
-        _pd__371 = _x183*(-_x166*_x184 - _x166)
-        _pd__372 = _x183*(-_x168*_x184 - _x168)
-        _pd__373 = _x183*(-_x170*_x184 - _x170)
+        _pd__337 = _x183*(-_x160*_x184 - _x160)
+        _pd__338 = _x183*(-_x162*_x184 - _x162)
+        _pd__339 = _x183*(-_x164*_x184 - _x164)
+        _pd__340 = _x183*(-_x166*_x184 - _x166)
+        _pd__341 = _x183*(-_x168*_x184 - _x168)
+        _pd__342 = _x183*(-_x170*_x184 - _x170)
         _x185 = 2.0*q_r
-        _pd__374 = (_x183*(-0.005784813099631875*_isigma0 - 0.06111131733618721*_isigma1
+        _pd__343 = (_x183*(-0.005784813099631875*_isigma0 - 0.06111131733618721*_isigma1
             - 0.17813034617398463*_isigma2 - 0.28978358839870644*_isigma3 - 0.2996502557119514*_isigma4
             - 0.16553967927953847*_isigma5 - _x156 - _x181*((0.5)*_x155
             + (0.5)*_x171*(0.01156962619926375*_isigma0 + 0.12222263467237442*_isigma1
             + 0.35626069234796925*_isigma2 + 0.5795671767974129*_isigma3 + 0.5993005114239028*_isigma4
             + 0.33107935855907694*_isigma5 - _x185 - 1.164670302474663e-21*l0)) + 5.823351512373315e-22*l0))
-        _pd__375 = _x183*(_x184*k_c + k_c)
-        _pd__376 = 2.0*_x174*m*q_rd - _x181*_x182*k_c*m**2*q_rd**3
+        _pd__344 = _x183*(_x184*k_c + k_c)
+        _pd__345 = 2.0*_x174*m*q_rd - _x181*_x182*k_c*m**2*q_rd**3
         _Q0__next = (0.04283112309479259*_ifq0 + 0.19514451252126672*_ifq1 + 0.22463191657986778*_ifq2
             + 0.23962582533582905*_ifq3 + 0.17752635320896998*_ifq4 + 0.08647502636084993*_ifq5 + q_th)
         _Q1__next = (-0.007011245240793691*_ifq0 + 0.09019039326203465*_ifq1 + 0.2542570695795851*_ifq2
@@ -2415,28 +2400,28 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
         _P0__next = (0.04283112309479259*_ifp0 + 0.19514451252126672*_ifp1 + 0.22463191657986778*_ifp2
             + 0.23962582533582905*_ifp3 + 0.17752635320896998*_ifp4 + 0.08647502636084993*_ifp5 + _x187)
         _x188 = _x185*m*q_thd
-        _pd__377 = _x188
-        _pd__378 = _x186
+        _pd__346 = _x188
+        _pd__347 = _x186
         _P1__next = (-0.007011245240793691*_ifp0 + 0.09019039326203465*_ifp1 + 0.2542570695795851*_ifp2
             + 0.2235938110460991*_ifp3 + 0.18526797945210696*_ifp4 + 0.08430668513410011*_ifp5 + _x187)
-        _pd__379 = _x188
-        _pd__380 = _x186
+        _pd__348 = _x188
+        _pd__349 = _x186
         _P2__next = (0.0034143235767412987*_ifp0 - 0.0156513758091757*_ifp1 + 0.11697848364317276*_ifp2
             + 0.25443949503200164*_ifp3 + 0.17239079462440696*_ifp4 + 0.0877378719744515*_ifp5 + _x187)
-        _pd__381 = _x188
-        _pd__382 = _x186
+        _pd__350 = _x188
+        _pd__351 = _x186
         _P3__next = (-0.002075625784866334*_ifp0 + 0.007989991899662336*_ifp1 - 0.020482527745656096*_ifp2
             + 0.11697848364317276*_ifp3 + 0.196032162333245*_ifp4 + 0.08224792261284387*_ifp5 + _x187)
-        _pd__383 = _x188
-        _pd__384 = _x186
+        _pd__352 = _x188
+        _pd__353 = _x186
         _P4__next = (0.0013555610554850618*_ifp0 - 0.004887192928037671*_ifp1 + 0.010363156240246424*_ifp2
             - 0.020300102293239586*_ifp3 + 0.09019039326203465*_ifp4 + 0.09267349143037887*_ifp5 + _x187)
-        _pd__385 = _x188
-        _pd__386 = _x186
+        _pd__354 = _x188
+        _pd__355 = _x186
         _P5__next = (-0.0008127801712647621*_ifp0 + 0.002854433315099335*_ifp1 - 0.005668858049483512*_ifp2
             + 0.009325050706477751*_ifp3 - 0.014763725997197413*_ifp4 + 0.04283112309479259*_ifp5 + _x187)
-        _pd__387 = _x188
-        _pd__388 = _x186
+        _pd__356 = _x188
+        _pd__357 = _x186
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_k_c__j = _T[3, _j2]
@@ -2469,10 +2454,10 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             _d_ifq5__j = _T[49, _j2]
             _d_ifp5__j = _T[50, _j2]
             # next values
-            _d_D__next__j = (_d_iF0__j*_pd__362 + _d_iF1__j*_pd__363 + _d_iF2__j*_pd__364 + _d_iF3__j*_pd__365
-                + _d_iF4__j*_pd__366 + _d_iF5__j*_pd__367 + _d_isigma0__j*_pd__368 + _d_isigma1__j*_pd__369
-                + _d_isigma2__j*_pd__370 + _d_isigma3__j*_pd__371 + _d_isigma4__j*_pd__372
-                + _d_isigma5__j*_pd__373 + _pd__374*d_k_c__j + _pd__375*d_q_r__j + _pd__376*d_q_rd__j)
+            _d_D__next__j = (_d_iF0__j*_pd__331 + _d_iF1__j*_pd__332 + _d_iF2__j*_pd__333 + _d_iF3__j*_pd__334
+                + _d_iF4__j*_pd__335 + _d_iF5__j*_pd__336 + _d_isigma0__j*_pd__337 + _d_isigma1__j*_pd__338
+                + _d_isigma2__j*_pd__339 + _d_isigma3__j*_pd__340 + _d_isigma4__j*_pd__341
+                + _d_isigma5__j*_pd__342 + _pd__343*d_k_c__j + _pd__344*d_q_r__j + _pd__345*d_q_rd__j)
             _d_Q0__next__j = (0.04283112309479259*_d_ifq0__j + 0.19514451252126672*_d_ifq1__j
                 + 0.22463191657986778*_d_ifq2__j + 0.23962582533582905*_d_ifq3__j
                 + 0.17752635320896998*_d_ifq4__j + 0.08647502636084993*_d_ifq5__j + d_q_th__j)
@@ -2493,28 +2478,28 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
                 - 0.014763725997197413*_d_ifq4__j + 0.04283112309479259*_d_ifq5__j + d_q_th__j)
             _d_P0__next__j = (0.04283112309479259*_d_ifp0__j + 0.19514451252126672*_d_ifp1__j
                 + 0.22463191657986778*_d_ifp2__j + 0.23962582533582905*_d_ifp3__j
-                + 0.17752635320896998*_d_ifp4__j + 0.08647502636084993*_d_ifp5__j + _pd__377*d_q_r__j
-                + _pd__378*d_q_thd__j)
+                + 0.17752635320896998*_d_ifp4__j + 0.08647502636084993*_d_ifp5__j + _pd__346*d_q_r__j
+                + _pd__347*d_q_thd__j)
             _d_P1__next__j = (-0.007011245240793691*_d_ifp0__j + 0.09019039326203465*_d_ifp1__j
                 + 0.2542570695795851*_d_ifp2__j + 0.2235938110460991*_d_ifp3__j
-                + 0.18526797945210696*_d_ifp4__j + 0.08430668513410011*_d_ifp5__j + _pd__379*d_q_r__j
-                + _pd__380*d_q_thd__j)
+                + 0.18526797945210696*_d_ifp4__j + 0.08430668513410011*_d_ifp5__j + _pd__348*d_q_r__j
+                + _pd__349*d_q_thd__j)
             _d_P2__next__j = (0.0034143235767412987*_d_ifp0__j - 0.0156513758091757*_d_ifp1__j
                 + 0.11697848364317276*_d_ifp2__j + 0.25443949503200164*_d_ifp3__j
-                + 0.17239079462440696*_d_ifp4__j + 0.0877378719744515*_d_ifp5__j + _pd__381*d_q_r__j
-                + _pd__382*d_q_thd__j)
+                + 0.17239079462440696*_d_ifp4__j + 0.0877378719744515*_d_ifp5__j + _pd__350*d_q_r__j
+                + _pd__351*d_q_thd__j)
             _d_P3__next__j = (-0.002075625784866334*_d_ifp0__j + 0.007989991899662336*_d_ifp1__j
                 - 0.020482527745656096*_d_ifp2__j + 0.11697848364317276*_d_ifp3__j
-                + 0.196032162333245*_d_ifp4__j + 0.08224792261284387*_d_ifp5__j + _pd__383*d_q_r__j
-                + _pd__384*d_q_thd__j)
+                + 0.196032162333245*_d_ifp4__j + 0.08224792261284387*_d_ifp5__j + _pd__352*d_q_r__j
+                + _pd__353*d_q_thd__j)
             _d_P4__next__j = (0.0013555610554850618*_d_ifp0__j - 0.004887192928037671*_d_ifp1__j
                 + 0.010363156240246424*_d_ifp2__j - 0.020300102293239586*_d_ifp3__j
-                + 0.09019039326203465*_d_ifp4__j + 0.09267349143037887*_d_ifp5__j + _pd__385*d_q_r__j
-                + _pd__386*d_q_thd__j)
+                + 0.09019039326203465*_d_ifp4__j + 0.09267349143037887*_d_ifp5__j + _pd__354*d_q_r__j
+                + _pd__355*d_q_thd__j)
             _d_P5__next__j = (-0.0008127801712647621*_d_ifp0__j + 0.002854433315099335*_d_ifp1__j
                 - 0.005668858049483512*_d_ifp2__j + 0.009325050706477751*_d_ifp3__j
-                - 0.014763725997197413*_d_ifp4__j + 0.04283112309479259*_d_ifp5__j + _pd__387*d_q_r__j
-                + _pd__388*d_q_thd__j)
+                - 0.014763725997197413*_d_ifp4__j + 0.04283112309479259*_d_ifp5__j + _pd__356*d_q_r__j
+                + _pd__357*d_q_thd__j)
             _T[8, _j2] = _d_D__next__j
             _T[9, _j2] = _d_Q0__next__j
             _T[10, _j2] = _d_Q1__next__j
@@ -2583,17 +2568,17 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     _x194 = _x192*_x193
     end_q_thd = _x191*_x194
     _x195 = 0.08566224618958518*_x194
-    _pd__389 = _x195
+    _pd__358 = _x195
     _x196 = 0.1803807865240693*_x194
-    _pd__390 = _x196
+    _pd__359 = _x196
     _x197 = 0.23395696728634552*_x194
-    _pd__391 = _x197
-    _pd__392 = _x197
-    _pd__393 = _x196
-    _pd__394 = _x195
-    _pd__395 = -2.0*_x191*_x193*_x198**3
-    _pd__396 = 2.0*_x192*q_r*q_thd
-    _pd__397 = _x190*_x192
+    _pd__360 = _x197
+    _pd__361 = _x197
+    _pd__362 = _x196
+    _pd__363 = _x195
+    _pd__364 = -2.0*_x191*_x193*_x198**3
+    _pd__365 = 2.0*_x192*q_r*q_thd
+    _pd__366 = _x190*_x192
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
@@ -2630,9 +2615,9 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
             + 0.23395696728634552*_d_ifq2__j + 0.23395696728634552*_d_ifq3__j + 0.1803807865240693*_d_ifq4__j
             + 0.08566224618958518*_d_ifq5__j + d_q_th__j)
         d_end_q_r__j = -_d_D__j + d_q_r__j
-        d_end_q_thd__j = (_d_ifp0__j*_pd__389 + _d_ifp1__j*_pd__390 + _d_ifp2__j*_pd__391
-            + _d_ifp3__j*_pd__392 + _d_ifp4__j*_pd__393 + _d_ifp5__j*_pd__394 + _pd__395*d_end_q_r__j
-            + _pd__396*d_q_r__j + _pd__397*d_q_thd__j)
+        d_end_q_thd__j = (_d_ifp0__j*_pd__358 + _d_ifp1__j*_pd__359 + _d_ifp2__j*_pd__360
+            + _d_ifp3__j*_pd__361 + _d_ifp4__j*_pd__362 + _d_ifp5__j*_pd__363 + _pd__364*d_end_q_r__j
+            + _pd__365*d_q_r__j + _pd__366*d_q_thd__j)
         _T[51, _j3] = d_t_half__j
         _T[52, _j3] = d_end_q_th__j
         _T[53, _j3] = d_end_q_r__j
@@ -2646,11 +2631,11 @@ def schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_
     (d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5,
         ) = (_T[54, 0], _T[54, 1], _T[54, 2], _T[54, 3], _T[54, 4], _T[54, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-        d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-        d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4,
-        d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+        d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes, d_end_q_r__1,
+        d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__3,
+        d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2, d_t_half__3, d_t_half__4,
+        d_t_half__5, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2738,11 +2723,11 @@ def schwind_compression_jvp6_4eaacb(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, gue
             guess_q_th, guess_q_thd, iterations, k_c, l0, m, q_r, q_rd, q_th, q_thd, tol))
         if _c0[30] != STATUS_OK:
             return _NAN42 + (_c0[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-            d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-            d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-            d_end_q_r__4, d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3,
-            d_end_q_thd__4, d_end_q_thd__5, _) = _c0
+        (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+            d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes,
+            d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0,
+            d_end_q_th__1, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2,
+            d_t_half__3, d_t_half__4, d_t_half__5, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = (schwind_compression_jvp6_4eaacb_1(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_r__2,
@@ -2752,11 +2737,11 @@ def schwind_compression_jvp6_4eaacb(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, gue
             guess_q_th, guess_q_thd, iterations, k_c, l0, m, q_r, q_rd, q_th, q_thd, tol))
         if _c1[30] != STATUS_OK:
             return _NAN42 + (_c1[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-            d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-            d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-            d_end_q_r__4, d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3,
-            d_end_q_thd__4, d_end_q_thd__5, _) = _c1
+        (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+            d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes,
+            d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0,
+            d_end_q_th__1, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2,
+            d_t_half__3, d_t_half__4, d_t_half__5, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = (schwind_compression_jvp6_4eaacb_2(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_r__2,
@@ -2766,11 +2751,11 @@ def schwind_compression_jvp6_4eaacb(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, gue
             guess_q_th, guess_q_thd, iterations, k_c, l0, m, q_r, q_rd, q_th, q_thd, tol))
         if _c2[30] != STATUS_OK:
             return _NAN42 + (_c2[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-            d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-            d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-            d_end_q_r__4, d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3,
-            d_end_q_thd__4, d_end_q_thd__5, _) = _c2
+        (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+            d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes,
+            d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0,
+            d_end_q_th__1, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2,
+            d_t_half__3, d_t_half__4, d_t_half__5, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = (schwind_compression_jvp6_4eaacb_3(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_r__2,
@@ -2780,11 +2765,11 @@ def schwind_compression_jvp6_4eaacb(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, gue
             guess_q_th, guess_q_thd, iterations, k_c, l0, m, q_r, q_rd, q_th, q_thd, tol))
         if _c3[30] != STATUS_OK:
             return _NAN42 + (_c3[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-            d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-            d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-            d_end_q_r__4, d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3,
-            d_end_q_thd__4, d_end_q_thd__5, _) = _c3
+        (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+            d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes,
+            d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0,
+            d_end_q_th__1, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2,
+            d_t_half__3, d_t_half__4, d_t_half__5, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = (schwind_compression_jvp6_4eaacb_4(d_guess_q_r__0, d_guess_q_r__1, d_guess_q_r__2,
@@ -2794,11 +2779,11 @@ def schwind_compression_jvp6_4eaacb(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, gue
             guess_q_th, guess_q_thd, iterations, k_c, l0, m, q_r, q_rd, q_th, q_thd, tol))
         if _c4[30] != STATUS_OK:
             return _NAN42 + (_c4[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
-            d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3,
-            d_end_q_th__4, d_end_q_th__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-            d_end_q_r__4, d_end_q_r__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3,
-            d_end_q_thd__4, d_end_q_thd__5, _) = _c4
+        (t_half, end_q_th, d_end_q_th__2, end_q_r, d_end_q_r__0, end_q_rd, end_q_thd, d_end_q_thd__0,
+            d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, passes,
+            d_end_q_r__1, d_end_q_r__2, d_end_q_r__3, d_end_q_r__4, d_end_q_r__5, d_end_q_th__0,
+            d_end_q_th__1, d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_t_half__0, d_t_half__1, d_t_half__2,
+            d_t_half__3, d_t_half__4, d_t_half__5, _) = _c4
     else:
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # derivatives of the outputs
@@ -2836,48 +2821,28 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(g_s, g
         the names every branch defines: in the order the caller binds them
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 179
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((17, 6))
-    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], _T[0, 5], ) = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, )
-    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], _T[1, 5], ) = (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, )
-    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], _T[2, 5], ) = (0.0, 0.0, 0.0, 1.0, 0.0, 0.0, )
-    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], _T[3, 5], ) = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], _T[4, 5], ) = (0.0, 1.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
-    # the initial values
-    _x0 = 0.5*m
-    _pd__0 = _x0*q_r_lo**2
-    _pd__1 = 1.0*m*q_r*q_thd
-    _pd__2 = _x0*q_r**2
-    # the initial values' tangents, once per direction
-    for _j0 in range(6):
-        d_guess_q_th__j = _T[0, _j0]
-        d_guess_q_thd__j = _T[1, _j0]
-        d_q_r__j = _T[3, _j0]
-        d_q_th__j = _T[4, _j0]
-        d_q_thd__j = _T[5, _j0]
-        # the initial values
-        _d_Q0__start__j = 0.5*d_guess_q_th__j + 0.5*d_q_th__j
-        _d_P0__start__j = _pd__0*d_guess_q_thd__j + _pd__1*d_q_r__j + _pd__2*d_q_thd__j
-        _T[6, _j0] = -d_q_r__j
-        _T[7, _j0] = _d_Q0__start__j
-        _T[8, _j0] = _d_P0__start__j
+    # Total ops: 306
     # Picard passes on the 1 node values (collocation in u)
-    _D = -q_r + q_r_lo
-    _Q0 = 0.5*guess_q_th + 0.5*q_th
-    _P0 = 0.5*guess_q_thd*m*q_r_lo**2 + 0.5*m*q_r**2*q_thd
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (-q_r + q_r_lo, 0.5*guess_q_th + 0.5*q_th, 0.5*guess_q_thd*m*q_r_lo**2 + 0.5*m*q_r**2*q_thd, -1.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.5, 0.0, 1.0*m*q_r*q_thd, 0.0, 0.5*m*q_r**2, 0.0, 0.0,
+        0.5*m*q_r_lo**2, )
+    _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
-    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
-    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
+        (_D, _Q0, _P0, _d_D__q_r, _d_D__q_th, _d_D__q_thd, _d_D__k_d, _d_D__guess_q_th, _d_D__guess_q_thd,
+            _d_Q0__q_r, _d_Q0__q_th, _d_Q0__q_thd, _d_Q0__k_d, _d_Q0__guess_q_th, _d_Q0__guess_q_thd,
+            _d_P0__q_r, _d_P0__q_th, _d_P0__q_thd, _d_P0__k_d, _d_P0__guess_q_th, _d_P0__guess_q_thd, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN30 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-        _x1 = 0.25*_D + q_r
+        _x0 = 0.25*_D
+        _x1 = _x0 + q_r
         _isigma0 = _x1
+        _d_isigma0__q_r = 0.25*_d_D__q_r + 1.0
         _x2 = k_d*l0
         _x3 = math.cos(_Q0)
         _x4 = g_s*m
@@ -2885,102 +2850,117 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(g_s, g
         _x6 = _x1*k_d
         _x7 = _P0**2
         _x8 = (1.0/m)
-        _x31 = (1.0/_x1)
-        _x9 = _x31**3
+        _x37 = (1.0/_x1)
+        _x9 = _x37**3
         _x10 = _x8*_x9
         _x11 = _x10*_x7
         _iF0 = _x11 + _x2 - _x5 - _x6
         _x12 = 2.0*_P0
-        _pd__3 = _x10*_x12
+        _pd__0 = _x10*_x12
         _x13 = math.sin(_Q0)
-        _pd__4 = _x13*_x4
-        _pd__5 = -3.0*_x31**4*_x7*_x8 - k_d
-        _pd__6 = -_x1 + l0
-        _x14 = 0.5*_x11 + 0.5*_x2 - 0.5*_x5 - 0.5*_x6
-        _iPsi0 = _x14
-        _x15 = math.sqrt(_D)
-        _x16 = math.sqrt(m)
-        _x17 = (1.0/math.sqrt(_x14))
-        _x18 = _x16*_x17
-        _ift0 = _x15*_x18
-        _x19 = (0.5)/_x15
-        _pd__7 = _x18*_x19
-        _x20 = (0.5)*_x15/_x14**(1.5)
-        _pd__8 = -_x16*_x20
-        _x21 = _x15*_x17
-        _x22 = (1.0/_x16)
-        _x23 = _x22*_x31**2
-        _x24 = _x21*_x23
-        _ifq0 = _P0*_x24
-        _x25 = _P0*_x23
-        _x26 = _x17*_x19
-        _pd__9 = _x25*_x26
-        _pd__10 = _x24
-        _pd__11 = -_x20*_x25
-        _pd__12 = -_x12*_x21*_x22*_x9
-        _x27 = m**(1.5)
-        _x28 = _x21*_x27*g_s
-        _x29 = _x13*_x28
-        _ifp0 = _x1*_x29
-        _x30 = _x1*_x13*_x27*g_s
-        _pd__13 = _x26*_x30
-        _pd__14 = _x1*_x28*_x3
-        _pd__15 = -_x20*_x30
-        _pd__16 = _x29
+        _pd__1 = _x13*_x4
+        _pd__2 = -3.0*_x37**4*_x7*_x8 - k_d
+        _d_iF0__q_r = _d_P0__q_r*_pd__0 + _d_Q0__q_r*_pd__1 + _d_isigma0__q_r*_pd__2
+        _x14 = 0.25*_pd__2
+        _d_iF0__q_th = _d_D__q_th*_x14 + _d_P0__q_th*_pd__0 + _d_Q0__q_th*_pd__1
+        _d_iF0__q_thd = _d_D__q_thd*_x14 + _d_P0__q_thd*_pd__0 + _d_Q0__q_thd*_pd__1
+        _d_iF0__k_d = _d_D__k_d*_x14 + _d_P0__k_d*_pd__0 + _d_Q0__k_d*_pd__1 - _x0 + l0 - q_r
+        _d_iF0__guess_q_th = _d_D__guess_q_th*_x14 + _d_P0__guess_q_th*_pd__0 + _d_Q0__guess_q_th*_pd__1
+        _d_iF0__guess_q_thd = _d_D__guess_q_thd*_x14 + _d_P0__guess_q_thd*_pd__0 + _d_Q0__guess_q_thd*_pd__1
+        _x15 = 0.5*_x11 + 0.5*_x2 - 0.5*_x5 - 0.5*_x6
+        _iPsi0 = _x15
+        _x16 = math.sqrt(_D)
+        _x17 = math.sqrt(m)
+        _x18 = (1.0/math.sqrt(_x15))
+        _x19 = _x17*_x18
+        _ift0 = _x16*_x19
+        _x20 = (0.5)/_x16
+        _pd__3 = _x19*_x20
+        _x21 = (0.5)*_x16/_x15**(1.5)
+        _pd__4 = -_x17*_x21
+        _x22 = 0.5*_pd__4
+        _d_ift0__q_r = _d_D__q_r*_pd__3 + _d_iF0__q_r*_x22
+        _d_ift0__q_th = _d_D__q_th*_pd__3 + _d_iF0__q_th*_x22
+        _d_ift0__q_thd = _d_D__q_thd*_pd__3 + _d_iF0__q_thd*_x22
+        _d_ift0__k_d = _d_D__k_d*_pd__3 + _d_iF0__k_d*_x22
+        _d_ift0__guess_q_th = _d_D__guess_q_th*_pd__3 + _d_iF0__guess_q_th*_x22
+        _d_ift0__guess_q_thd = _d_D__guess_q_thd*_pd__3 + _d_iF0__guess_q_thd*_x22
+        _x23 = _x16*_x18
+        _x24 = (1.0/_x17)
+        _x25 = _x24*_x37**2
+        _x26 = _x23*_x25
+        _ifq0 = _P0*_x26
+        _x27 = _P0*_x25
+        _x28 = _x18*_x20
+        _pd__5 = _x27*_x28
+        _pd__6 = _x26
+        _pd__7 = -_x21*_x27
+        _pd__8 = -_x12*_x23*_x24*_x9
+        _x29 = 0.5*_pd__7
+        _d_ifq0__q_r = _d_D__q_r*_pd__5 + _d_P0__q_r*_pd__6 + _d_iF0__q_r*_x29 + _d_isigma0__q_r*_pd__8
+        _x30 = 0.25*_pd__8
+        _d_ifq0__q_th = _d_D__q_th*_pd__5 + _d_D__q_th*_x30 + _d_P0__q_th*_pd__6 + _d_iF0__q_th*_x29
+        _d_ifq0__q_thd = _d_D__q_thd*_pd__5 + _d_D__q_thd*_x30 + _d_P0__q_thd*_pd__6 + _d_iF0__q_thd*_x29
+        _d_ifq0__k_d = _d_D__k_d*_pd__5 + _d_D__k_d*_x30 + _d_P0__k_d*_pd__6 + _d_iF0__k_d*_x29
+        _d_ifq0__guess_q_th = (_d_D__guess_q_th*_pd__5 + _d_D__guess_q_th*_x30 + _d_P0__guess_q_th*_pd__6
+            + _d_iF0__guess_q_th*_x29)
+        _d_ifq0__guess_q_thd = (_d_D__guess_q_thd*_pd__5 + _d_D__guess_q_thd*_x30 + _d_P0__guess_q_thd*_pd__6
+            + _d_iF0__guess_q_thd*_x29)
+        _x31 = m**(1.5)
+        _x32 = _x23*_x31*g_s
+        _x33 = _x13*_x32
+        _ifp0 = _x1*_x33
+        _x34 = _x1*_x13*_x31*g_s
+        _pd__9 = _x28*_x34
+        _pd__10 = _x1*_x3*_x32
+        _pd__11 = -_x21*_x34
+        _pd__12 = _x33
+        _x35 = 0.5*_pd__11
+        _d_ifp0__q_r = _d_D__q_r*_pd__9 + _d_Q0__q_r*_pd__10 + _d_iF0__q_r*_x35 + _d_isigma0__q_r*_pd__12
+        _x36 = 0.25*_pd__12
+        _d_ifp0__q_th = _d_D__q_th*_pd__9 + _d_D__q_th*_x36 + _d_Q0__q_th*_pd__10 + _d_iF0__q_th*_x35
+        _d_ifp0__q_thd = _d_D__q_thd*_pd__9 + _d_D__q_thd*_x36 + _d_Q0__q_thd*_pd__10 + _d_iF0__q_thd*_x35
+        _d_ifp0__k_d = _d_D__k_d*_pd__9 + _d_D__k_d*_x36 + _d_Q0__k_d*_pd__10 + _d_iF0__k_d*_x35
+        _d_ifp0__guess_q_th = (_d_D__guess_q_th*_pd__9 + _d_D__guess_q_th*_x36 + _d_Q0__guess_q_th*_pd__10
+            + _d_iF0__guess_q_th*_x35)
+        _d_ifp0__guess_q_thd = (_d_D__guess_q_thd*_pd__9 + _d_D__guess_q_thd*_x36 + _d_Q0__guess_q_thd*_pd__10
+            + _d_iF0__guess_q_thd*_x35)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
-        # the evaluation's tangents, once per direction
-        for _j1 in range(6):
-            d_k_d__j = _T[2, _j1]
-            d_q_r__j = _T[3, _j1]
-            _d_D__j = _T[6, _j1]
-            _d_Q0__j = _T[7, _j1]
-            _d_P0__j = _T[8, _j1]
-            # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-            _d_isigma0__j = 0.25*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__3 + _d_Q0__j*_pd__4 + _d_isigma0__j*_pd__5 + _pd__6*d_k_d__j
-            _x32 = 0.5*_d_iF0__j
-            _d_ift0__j = _d_D__j*_pd__7 + _pd__8*_x32
-            _d_ifq0__j = _d_D__j*_pd__9 + _d_P0__j*_pd__10 + _d_isigma0__j*_pd__12 + _pd__11*_x32
-            _d_ifp0__j = _d_D__j*_pd__13 + _d_Q0__j*_pd__14 + _d_isigma0__j*_pd__16 + _pd__15*_x32
-            _T[9, _j1] = _d_iF0__j
-            _T[10, _j1] = _d_ift0__j
-            _T[11, _j1] = _d_ifq0__j
-            _T[12, _j1] = _d_ifp0__j
         if _conv0 or _it0 == _last0:
             break
         # next values
         _D__next = _D
         _Q0__next = 0.5*_ifq0 + q_th
-        _x33 = m*q_r**2
-        _P0__next = 0.5*_ifp0 + _x33*q_thd
-        _pd__17 = 2.0*m*q_r*q_thd
-        _pd__18 = _x33
-        # the next state's tangents, once per direction
-        for _j2 in range(6):
-            d_q_r__j = _T[3, _j2]
-            d_q_th__j = _T[4, _j2]
-            d_q_thd__j = _T[5, _j2]
-            _d_D__j = _T[6, _j2]
-            _d_ifq0__j = _T[11, _j2]
-            _d_ifp0__j = _T[12, _j2]
-            # next values
-            _d_Q0__next__j = 0.5*_d_ifq0__j + d_q_th__j
-            _d_P0__next__j = 0.5*_d_ifp0__j + _pd__17*d_q_r__j + _pd__18*d_q_thd__j
-            _T[6, _j2] = _d_D__j
-            _T[7, _j2] = _d_Q0__next__j
-            _T[8, _j2] = _d_P0__next__j
-        _n0_0 = _D__next
-        _n0_1 = _Q0__next
-        _n0_2 = _P0__next
+        _d_Q0__next__q_th = 0.5*_d_ifq0__q_th + 1.0
+        _x38 = m*q_r**2
+        _P0__next = 0.5*_ifp0 + _x38*q_thd
+        _d_P0__next__q_r = 0.5*_d_ifp0__q_r + 2.0*m*q_r*q_thd
+        _d_P0__next__q_thd = 0.5*_d_ifp0__q_thd + _x38
+        _n0_3 = _d_D__q_r
+        _n0_4 = _d_D__q_th
+        _n0_5 = _d_D__q_thd
+        _n0_6 = _d_D__k_d
+        _n0_7 = _d_D__guess_q_th
+        _n0_8 = _d_D__guess_q_thd
+        _n0_9 = 0.5*_d_ifq0__q_r
+        _n0_11 = 0.5*_d_ifq0__q_thd
+        _n0_12 = 0.5*_d_ifq0__k_d
+        _n0_13 = 0.5*_d_ifq0__guess_q_th
+        _n0_14 = 0.5*_d_ifq0__guess_q_thd
+        _n0_16 = 0.5*_d_ifp0__q_th
+        _n0_18 = 0.5*_d_ifp0__k_d
+        _n0_19 = 0.5*_d_ifp0__guess_q_th
+        _n0_20 = 0.5*_d_ifp0__guess_q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
-        _D = _n0_0
-        _Q0 = _n0_1
-        _P0 = _n0_2
+        _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
+            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+        _pkn0 = (_D__next, _Q0__next, _P0__next, _n0_3, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
+            _d_Q0__next__q_th, _n0_11, _n0_12, _n0_13, _n0_14, _d_P0__next__q_r, _n0_16, _d_P0__next__q_thd,
+            _n0_18, _n0_19, _n0_20, )
+        _pk0 = _pkn0
         _passes += 1.0
     _work = 0.5*_iF0
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
@@ -2989,52 +2969,50 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_0(g_s, g
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     t_half = 1.0*_ift0
     end_q_th = 1.0*_ifq0 + q_th
+    d_end_q_th__q_th = 1.0*_d_ifq0__q_th + 1.0
     end_q_r = q_r_lo
-    _x34 = math.sqrt(_D*_work)/math.sqrt(m)
-    end_q_rd = 2.0*_x34
-    _pd__19 = _x34/_D
-    _pd__20 = _x34/_work
-    _x35 = q_r**2
-    _x36 = q_r_lo**-2
-    _x37 = _x36/m
-    end_q_thd = _x37*(1.0*_ifp0 + _x35*m*q_thd)
-    _pd__21 = 1.0*_x37
-    _pd__22 = 2.0*_x36*q_r*q_thd
-    _pd__23 = _x35*_x36
+    _x39 = math.sqrt(_D*_work)/math.sqrt(m)
+    end_q_rd = 2.0*_x39
+    _pd__13 = _x39/_D
+    _pd__14 = _x39/_work
+    _x40 = 0.5*_pd__14
+    d_end_q_rd__q_r = _d_D__q_r*_pd__13 + _d_iF0__q_r*_x40
+    d_end_q_rd__q_th = _d_D__q_th*_pd__13 + _d_iF0__q_th*_x40
+    d_end_q_rd__q_thd = _d_D__q_thd*_pd__13 + _d_iF0__q_thd*_x40
+    d_end_q_rd__k_d = _d_D__k_d*_pd__13 + _d_iF0__k_d*_x40
+    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__13 + _d_iF0__guess_q_th*_x40
+    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__13 + _d_iF0__guess_q_thd*_x40
+    _x41 = q_r**2
+    _x42 = q_r_lo**-2
+    _x43 = _x42/m
+    end_q_thd = _x43*(1.0*_ifp0 + _x41*m*q_thd)
+    _pd__15 = 1.0*_x43
+    d_end_q_thd__q_r = _d_ifp0__q_r*_pd__15 + 2.0*_x42*q_r*q_thd
+    d_end_q_thd__q_th = _d_ifp0__q_th*_pd__15
+    d_end_q_thd__q_thd = _d_ifp0__q_thd*_pd__15 + _x41*_x42
+    d_end_q_thd__k_d = _d_ifp0__k_d*_pd__15
+    d_end_q_thd__guess_q_th = _d_ifp0__guess_q_th*_pd__15
+    d_end_q_thd__guess_q_thd = _d_ifp0__guess_q_thd*_pd__15
     passes = _passes
-    # their tangents, once per direction
-    for _j3 in range(6):
-        d_q_r__j = _T[3, _j3]
-        d_q_th__j = _T[4, _j3]
-        d_q_thd__j = _T[5, _j3]
-        _d_D__j = _T[6, _j3]
-        _d_iF0__j = _T[9, _j3]
-        _d_ift0__j = _T[10, _j3]
-        _d_ifq0__j = _T[11, _j3]
-        _d_ifp0__j = _T[12, _j3]
-        # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-        d_end_q_th__j = 1.0*_d_ifq0__j + d_q_th__j
-        d_end_q_rd__j = _d_D__j*_pd__19 + 0.5*_d_iF0__j*_pd__20
-        d_end_q_thd__j = _d_ifp0__j*_pd__21 + _pd__22*d_q_r__j + _pd__23*d_q_thd__j
-        _T[13, _j3] = 1.0*_d_ift0__j
-        _T[14, _j3] = d_end_q_th__j
-        _T[15, _j3] = d_end_q_rd__j
-        _T[16, _j3] = d_end_q_thd__j
-    (d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th,
-        d_t_half__guess_q_thd, ) = (_T[13, 0], _T[13, 1], _T[13, 2], _T[13, 3], _T[13, 4], _T[13, 5], )
-    (d_end_q_th__q_r, d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-        d_end_q_th__guess_q_thd, ) = (_T[14, 0], _T[14, 1], _T[14, 2], _T[14, 3], _T[14, 4], _T[14, 5], )
-    (d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, ) = (_T[15, 0], _T[15, 1], _T[15, 2], _T[15, 3], _T[15, 4], _T[15, 5], )
-    (d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
-        d_end_q_thd__guess_q_thd, ) = (_T[16, 0], _T[16, 1], _T[16, 2], _T[16, 3], _T[16, 4], _T[16, 5], )
+    # tangents as every branch names them
+    d_end_q_th__q_r = 1.0*_d_ifq0__q_r
+    d_end_q_th__q_thd = 1.0*_d_ifq0__q_thd
+    d_end_q_th__k_d = 1.0*_d_ifq0__k_d
+    d_end_q_th__guess_q_th = 1.0*_d_ifq0__guess_q_th
+    d_end_q_th__guess_q_thd = 1.0*_d_ifq0__guess_q_thd
+    d_t_half__q_r = 1.0*_d_ift0__q_r
+    d_t_half__q_th = 1.0*_d_ift0__q_th
+    d_t_half__q_thd = 1.0*_d_ift0__q_thd
+    d_t_half__k_d = 1.0*_d_ift0__k_d
+    d_t_half__guess_q_th = 1.0*_d_ift0__guess_q_th
+    d_t_half__guess_q_thd = 1.0*_d_ift0__guess_q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-        d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
-        d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+        d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+        d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
+        d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd, d_end_q_th__k_d,
+        d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd,
+        d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3049,310 +3027,339 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(g_s, g
         the names every branch defines: in the order the caller binds them
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 358
-    # the tangents the loops compute once per direction: _T[row, direction]
-    _T = np.empty((23, 6))
-    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], _T[0, 5], ) = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, )
-    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], _T[1, 5], ) = (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, )
-    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], _T[2, 5], ) = (0.0, 0.0, 0.0, 1.0, 0.0, 0.0, )
-    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], _T[3, 5], ) = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], _T[4, 5], ) = (0.0, 1.0, 0.0, 0.0, 0.0, 0.0, )
-    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
-    # the initial values
-    _x0 = m*q_r_lo**2
-    _pd__24 = 0.2113248654051871*_x0
-    _x1 = m*q_r*q_thd
-    _pd__25 = 1.5773502691896257*_x1
-    _x2 = m*q_r**2
-    _pd__26 = 0.7886751345948129*_x2
-    _pd__27 = 0.7886751345948129*_x0
-    _pd__28 = 0.4226497308103742*_x1
-    _pd__29 = 0.2113248654051871*_x2
-    # the initial values' tangents, once per direction
-    for _j0 in range(6):
-        d_guess_q_th__j = _T[0, _j0]
-        d_guess_q_thd__j = _T[1, _j0]
-        d_q_r__j = _T[3, _j0]
-        d_q_th__j = _T[4, _j0]
-        d_q_thd__j = _T[5, _j0]
-        # the initial values
-        _d_Q0__start__j = 0.2113248654051871*d_guess_q_th__j + 0.7886751345948129*d_q_th__j
-        _d_Q1__start__j = 0.7886751345948129*d_guess_q_th__j + 0.2113248654051871*d_q_th__j
-        _d_P0__start__j = _pd__24*d_guess_q_thd__j + _pd__25*d_q_r__j + _pd__26*d_q_thd__j
-        _d_P1__start__j = _pd__27*d_guess_q_thd__j + _pd__28*d_q_r__j + _pd__29*d_q_thd__j
-        _T[6, _j0] = -d_q_r__j
-        _T[7, _j0] = _d_Q0__start__j
-        _T[8, _j0] = _d_Q1__start__j
-        _T[9, _j0] = _d_P0__start__j
-        _T[10, _j0] = _d_P1__start__j
+    # Total ops: 711
     # Picard passes on the 2 node values (collocation in u)
-    _D = -q_r + q_r_lo
-    _Q0 = 0.2113248654051871*guess_q_th + 0.7886751345948129*q_th
-    _Q1 = 0.7886751345948129*guess_q_th + 0.2113248654051871*q_th
-    _P0 = 0.2113248654051871*guess_q_thd*m*q_r_lo**2 + 0.7886751345948129*m*q_r**2*q_thd
-    _P1 = 0.7886751345948129*guess_q_thd*m*q_r_lo**2 + 0.2113248654051871*m*q_r**2*q_thd
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (-q_r + q_r_lo, 0.2113248654051871*guess_q_th + 0.7886751345948129*q_th,
+        0.7886751345948129*guess_q_th + 0.2113248654051871*q_th, 0.2113248654051871*guess_q_thd*m*q_r_lo**2
+        + 0.7886751345948129*m*q_r**2*q_thd, 0.7886751345948129*guess_q_thd*m*q_r_lo**2
+        + 0.2113248654051871*m*q_r**2*q_thd, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.7886751345948129, 0.0, 0.0,
+        0.2113248654051871, 0.0, 0.0, 0.2113248654051871, 0.0, 0.0, 0.7886751345948129, 0.0,
+        1.5773502691896257*m*q_r*q_thd, 0.0, 0.7886751345948129*m*q_r**2, 0.0, 0.0,
+        0.2113248654051871*m*q_r_lo**2, 0.4226497308103742*m*q_r*q_thd, 0.0, 0.2113248654051871*m*q_r**2, 0.0,
+        0.0, 0.7886751345948129*m*q_r_lo**2, )
+    _pk0 = _pki0
     _passes = 0.0
     _conv0 = False
-    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
-    # final iterate is evaluated too, so its values are visible after the loop
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
+        (_D, _Q0, _Q1, _P0, _P1, _d_D__q_r, _d_D__q_th, _d_D__q_thd, _d_D__k_d, _d_D__guess_q_th,
+            _d_D__guess_q_thd, _d_Q0__q_r, _d_Q0__q_th, _d_Q0__q_thd, _d_Q0__k_d, _d_Q0__guess_q_th,
+            _d_Q0__guess_q_thd, _d_Q1__q_r, _d_Q1__q_th, _d_Q1__q_thd, _d_Q1__k_d, _d_Q1__guess_q_th,
+            _d_Q1__guess_q_thd, _d_P0__q_r, _d_P0__q_th, _d_P0__q_thd, _d_P0__k_d, _d_P0__guess_q_th,
+            _d_P0__guess_q_thd, _d_P1__q_r, _d_P1__q_th, _d_P1__q_thd, _d_P1__k_d, _d_P1__guess_q_th,
+            _d_P1__guess_q_thd, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and _passes > 0.0:
             return _NAN30 + (STATUS_NOT_CONVERGED,)
         # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-        _x3 = 0.04465819873852045*_D + q_r
-        _isigma0 = _x3
-        _x4 = k_d*l0
-        _x5 = math.cos(_Q0)
-        _x6 = g_s*m
-        _x7 = _x5*_x6
-        _x8 = _x3*k_d
-        _x9 = _P0**2
-        _x10 = (1.0/m)
-        _x61 = (1.0/_x3)
-        _x11 = _x61**3
-        _x12 = _x10*_x11
-        _x13 = _x12*_x9
-        _iF0 = _x13 + _x4 - _x7 - _x8
-        _x14 = 2.0*_P0
-        _pd__30 = _x12*_x14
-        _x15 = math.sin(_Q0)
-        _pd__31 = _x15*_x6
-        _x16 = 3.0*_x10
-        _pd__32 = -_x16*_x61**4*_x9 - k_d
-        _x17 = -l0
-        _pd__33 = -_x17 - _x3
-        _x18 = 0.6220084679281462*_D + q_r
+        _x0 = 0.04465819873852045*_D
+        _x1 = _x0 + q_r
+        _isigma0 = _x1
+        _d_isigma0__q_r = 0.04465819873852045*_d_D__q_r + 1.0
+        _x2 = k_d*l0
+        _x3 = math.cos(_Q0)
+        _x4 = g_s*m
+        _x5 = _x3*_x4
+        _x6 = _x1*k_d
+        _x7 = _P0**2
+        _x8 = (1.0/m)
+        _x65 = (1.0/_x1)
+        _x9 = _x65**3
+        _x10 = _x8*_x9
+        _x11 = _x10*_x7
+        _iF0 = _x11 + _x2 - _x5 - _x6
+        _x12 = 2.0*_P0
+        _pd__16 = _x10*_x12
+        _x13 = math.sin(_Q0)
+        _pd__17 = _x13*_x4
+        _x14 = 3.0*_x8
+        _pd__18 = -_x14*_x65**4*_x7 - k_d
+        _d_iF0__q_r = _d_P0__q_r*_pd__16 + _d_Q0__q_r*_pd__17 + _d_isigma0__q_r*_pd__18
+        _x15 = 0.04465819873852045*_pd__18
+        _d_iF0__q_th = _d_D__q_th*_x15 + _d_P0__q_th*_pd__16 + _d_Q0__q_th*_pd__17
+        _d_iF0__q_thd = _d_D__q_thd*_x15 + _d_P0__q_thd*_pd__16 + _d_Q0__q_thd*_pd__17
+        _x16 = l0 - q_r
+        _d_iF0__k_d = _d_D__k_d*_x15 + _d_P0__k_d*_pd__16 + _d_Q0__k_d*_pd__17 - _x0 + _x16
+        _d_iF0__guess_q_th = _d_D__guess_q_th*_x15 + _d_P0__guess_q_th*_pd__16 + _d_Q0__guess_q_th*_pd__17
+        _d_iF0__guess_q_thd = _d_D__guess_q_thd*_x15 + _d_P0__guess_q_thd*_pd__16 + _d_Q0__guess_q_thd*_pd__17
+        _x17 = 0.6220084679281462*_D
+        _x18 = _x17 + q_r
         _isigma1 = _x18
+        _d_isigma1__q_r = 0.6220084679281462*_d_D__q_r + 1.0
         _x19 = math.cos(_Q1)
-        _x20 = _x19*_x6
+        _x20 = _x19*_x4
         _x21 = _x18*k_d
         _x22 = _P1**2
-        _x60 = (1.0/_x18)
-        _x23 = _x60**3
-        _x24 = _x10*_x23
+        _x66 = (1.0/_x18)
+        _x23 = _x66**3
+        _x24 = _x23*_x8
         _x25 = _x22*_x24
-        _iF1 = -_x20 - _x21 + _x25 + _x4
+        _iF1 = _x2 - _x20 - _x21 + _x25
         _x26 = 2.0*_P1
-        _pd__34 = _x24*_x26
+        _pd__19 = _x24*_x26
         _x27 = math.sin(_Q1)
-        _pd__35 = _x27*_x6
-        _pd__36 = -_x16*_x22*_x60**4 - k_d
-        _pd__37 = -_x17 - _x18
-        _x28 = (0.5610042339640731*_x13 + 0.06100423396407311*_x20 + 0.06100423396407311*_x21
-            - 0.06100423396407311*_x25 + 0.5*_x4 - 0.5610042339640731*_x7 - 0.5610042339640731*_x8)
-        _iPsi0 = _x28
-        _x29 = (1.0/math.sqrt(_x28))
-        _x30 = math.sqrt(_D)
-        _x31 = math.sqrt(m)
-        _x32 = _x30*_x31
-        _ift0 = _x29*_x32
-        _x33 = (0.5)/_x30
-        _x34 = _x31*_x33
-        _pd__38 = _x29*_x34
-        _x35 = _x28**(-1.5)
-        _x36 = (0.5)*_x32
-        _pd__39 = -_x35*_x36
-        _x37 = (1.0/_x31)
-        _x38 = _x30*_x37
-        _x39 = _x61**2
-        _x40 = _x29*_x39
-        _x41 = _x38*_x40
-        _ifq0 = _P0*_x41
-        _x42 = _x33*_x37
-        _pd__40 = _P0*_x40*_x42
-        _pd__41 = _x41
-        _x43 = (0.5)*_x38
-        _pd__42 = -_P0*_x35*_x39*_x43
-        _pd__43 = -_x11*_x14*_x29*_x38
-        _x44 = g_s*m**(1.5)
-        _x45 = _x30*_x44
-        _x46 = _x29*_x45
-        _x47 = _x15*_x46
-        _ifp0 = _x3*_x47
-        _x48 = _x15*_x3
-        _x49 = _x33*_x44
-        _pd__44 = _x29*_x48*_x49
-        _pd__45 = _x3*_x46*_x5
-        _x50 = (0.5)*_x45
-        _pd__46 = -_x35*_x48*_x50
-        _pd__47 = _x47
-        _x51 = (0.22767090063073978*_x10*_x11*_x9 + 0.27232909936926025*_x10*_x22*_x23
-            - 0.27232909936926025*_x20 - 0.27232909936926025*_x21 - 0.22767090063073978*_x7
-            - 0.22767090063073978*_x8 + 0.5*k_d*l0)
-        _iPsi1 = _x51
-        _x52 = (1.0/math.sqrt(_x51))
-        _ift1 = _x32*_x52
-        _pd__48 = _x34*_x52
-        _x53 = _x51**(-1.5)
-        _pd__49 = -_x36*_x53
-        _x54 = _x60**2
-        _x55 = _x52*_x54
-        _x56 = _x38*_x55
-        _ifq1 = _P1*_x56
-        _pd__50 = _P1*_x42*_x55
-        _pd__51 = _x56
-        _pd__52 = -_P1*_x43*_x53*_x54
-        _pd__53 = -_x23*_x26*_x38*_x52
-        _x57 = _x45*_x52
-        _x58 = _x27*_x57
-        _ifp1 = _x18*_x58
-        _x59 = _x18*_x27
-        _pd__54 = _x49*_x52*_x59
-        _pd__55 = _x18*_x19*_x57
-        _pd__56 = -_x50*_x53*_x59
-        _pd__57 = _x58
+        _pd__20 = _x27*_x4
+        _pd__21 = -_x14*_x22*_x66**4 - k_d
+        _d_iF1__q_r = _d_P1__q_r*_pd__19 + _d_Q1__q_r*_pd__20 + _d_isigma1__q_r*_pd__21
+        _x28 = 0.6220084679281462*_pd__21
+        _d_iF1__q_th = _d_D__q_th*_x28 + _d_P1__q_th*_pd__19 + _d_Q1__q_th*_pd__20
+        _d_iF1__q_thd = _d_D__q_thd*_x28 + _d_P1__q_thd*_pd__19 + _d_Q1__q_thd*_pd__20
+        _d_iF1__k_d = _d_D__k_d*_x28 + _d_P1__k_d*_pd__19 + _d_Q1__k_d*_pd__20 + _x16 - _x17
+        _d_iF1__guess_q_th = _d_D__guess_q_th*_x28 + _d_P1__guess_q_th*_pd__19 + _d_Q1__guess_q_th*_pd__20
+        _d_iF1__guess_q_thd = _d_D__guess_q_thd*_x28 + _d_P1__guess_q_thd*_pd__19 + _d_Q1__guess_q_thd*_pd__20
+        _x29 = (0.5610042339640731*_x11 + 0.5*_x2 + 0.06100423396407311*_x20 + 0.06100423396407311*_x21
+            - 0.06100423396407311*_x25 - 0.5610042339640731*_x5 - 0.5610042339640731*_x6)
+        _iPsi0 = _x29
+        _d_iPsi0__q_r = 0.5610042339640731*_d_iF0__q_r - 0.06100423396407311*_d_iF1__q_r
+        _d_iPsi0__q_th = 0.5610042339640731*_d_iF0__q_th - 0.06100423396407311*_d_iF1__q_th
+        _d_iPsi0__q_thd = 0.5610042339640731*_d_iF0__q_thd - 0.06100423396407311*_d_iF1__q_thd
+        _d_iPsi0__k_d = 0.5610042339640731*_d_iF0__k_d - 0.06100423396407311*_d_iF1__k_d
+        _d_iPsi0__guess_q_th = 0.5610042339640731*_d_iF0__guess_q_th - 0.06100423396407311*_d_iF1__guess_q_th
+        _d_iPsi0__guess_q_thd = (0.5610042339640731*_d_iF0__guess_q_thd
+            - 0.06100423396407311*_d_iF1__guess_q_thd)
+        _x30 = (1.0/math.sqrt(_x29))
+        _x31 = math.sqrt(_D)
+        _x32 = math.sqrt(m)
+        _x33 = _x31*_x32
+        _ift0 = _x30*_x33
+        _x34 = (0.5)/_x31
+        _x35 = _x32*_x34
+        _pd__22 = _x30*_x35
+        _x36 = _x29**(-1.5)
+        _x37 = (0.5)*_x33
+        _pd__23 = -_x36*_x37
+        _d_ift0__q_r = _d_D__q_r*_pd__22 + _d_iPsi0__q_r*_pd__23
+        _d_ift0__q_th = _d_D__q_th*_pd__22 + _d_iPsi0__q_th*_pd__23
+        _d_ift0__q_thd = _d_D__q_thd*_pd__22 + _d_iPsi0__q_thd*_pd__23
+        _d_ift0__k_d = _d_D__k_d*_pd__22 + _d_iPsi0__k_d*_pd__23
+        _d_ift0__guess_q_th = _d_D__guess_q_th*_pd__22 + _d_iPsi0__guess_q_th*_pd__23
+        _d_ift0__guess_q_thd = _d_D__guess_q_thd*_pd__22 + _d_iPsi0__guess_q_thd*_pd__23
+        _x38 = (1.0/_x32)
+        _x39 = _x31*_x38
+        _x40 = _x65**2
+        _x41 = _x30*_x40
+        _x42 = _x39*_x41
+        _ifq0 = _P0*_x42
+        _x43 = _x34*_x38
+        _pd__24 = _P0*_x41*_x43
+        _pd__25 = _x42
+        _x44 = (0.5)*_x39
+        _pd__26 = -_P0*_x36*_x40*_x44
+        _pd__27 = -_x12*_x30*_x39*_x9
+        _d_ifq0__q_r = (_d_D__q_r*_pd__24 + _d_P0__q_r*_pd__25 + _d_iPsi0__q_r*_pd__26
+            + _d_isigma0__q_r*_pd__27)
+        _x45 = 0.04465819873852045*_pd__27
+        _d_ifq0__q_th = _d_D__q_th*_pd__24 + _d_D__q_th*_x45 + _d_P0__q_th*_pd__25 + _d_iPsi0__q_th*_pd__26
+        _d_ifq0__q_thd = (_d_D__q_thd*_pd__24 + _d_D__q_thd*_x45 + _d_P0__q_thd*_pd__25
+            + _d_iPsi0__q_thd*_pd__26)
+        _d_ifq0__k_d = _d_D__k_d*_pd__24 + _d_D__k_d*_x45 + _d_P0__k_d*_pd__25 + _d_iPsi0__k_d*_pd__26
+        _d_ifq0__guess_q_th = (_d_D__guess_q_th*_pd__24 + _d_D__guess_q_th*_x45 + _d_P0__guess_q_th*_pd__25
+            + _d_iPsi0__guess_q_th*_pd__26)
+        _d_ifq0__guess_q_thd = (_d_D__guess_q_thd*_pd__24 + _d_D__guess_q_thd*_x45
+            + _d_P0__guess_q_thd*_pd__25 + _d_iPsi0__guess_q_thd*_pd__26)
+        _x46 = g_s*m**(1.5)
+        _x47 = _x31*_x46
+        _x48 = _x30*_x47
+        _x49 = _x13*_x48
+        _ifp0 = _x1*_x49
+        _x50 = _x1*_x13
+        _x51 = _x34*_x46
+        _pd__28 = _x30*_x50*_x51
+        _pd__29 = _x1*_x3*_x48
+        _x52 = (0.5)*_x47
+        _pd__30 = -_x36*_x50*_x52
+        _pd__31 = _x49
+        _d_ifp0__q_r = (_d_D__q_r*_pd__28 + _d_Q0__q_r*_pd__29 + _d_iPsi0__q_r*_pd__30
+            + _d_isigma0__q_r*_pd__31)
+        _x53 = 0.04465819873852045*_pd__31
+        _d_ifp0__q_th = _d_D__q_th*_pd__28 + _d_D__q_th*_x53 + _d_Q0__q_th*_pd__29 + _d_iPsi0__q_th*_pd__30
+        _d_ifp0__q_thd = (_d_D__q_thd*_pd__28 + _d_D__q_thd*_x53 + _d_Q0__q_thd*_pd__29
+            + _d_iPsi0__q_thd*_pd__30)
+        _d_ifp0__k_d = _d_D__k_d*_pd__28 + _d_D__k_d*_x53 + _d_Q0__k_d*_pd__29 + _d_iPsi0__k_d*_pd__30
+        _d_ifp0__guess_q_th = (_d_D__guess_q_th*_pd__28 + _d_D__guess_q_th*_x53 + _d_Q0__guess_q_th*_pd__29
+            + _d_iPsi0__guess_q_th*_pd__30)
+        _d_ifp0__guess_q_thd = (_d_D__guess_q_thd*_pd__28 + _d_D__guess_q_thd*_x53
+            + _d_Q0__guess_q_thd*_pd__29 + _d_iPsi0__guess_q_thd*_pd__30)
+        _x54 = (-0.27232909936926025*_x20 - 0.27232909936926025*_x21 + 0.27232909936926025*_x22*_x23*_x8
+            - 0.22767090063073978*_x5 - 0.22767090063073978*_x6 + 0.22767090063073978*_x7*_x8*_x9
+            + 0.5*k_d*l0)
+        _iPsi1 = _x54
+        _d_iPsi1__q_r = 0.22767090063073978*_d_iF0__q_r + 0.27232909936926025*_d_iF1__q_r
+        _d_iPsi1__q_th = 0.22767090063073978*_d_iF0__q_th + 0.27232909936926025*_d_iF1__q_th
+        _d_iPsi1__q_thd = 0.22767090063073978*_d_iF0__q_thd + 0.27232909936926025*_d_iF1__q_thd
+        _d_iPsi1__k_d = 0.22767090063073978*_d_iF0__k_d + 0.27232909936926025*_d_iF1__k_d
+        _d_iPsi1__guess_q_th = 0.22767090063073978*_d_iF0__guess_q_th + 0.27232909936926025*_d_iF1__guess_q_th
+        _d_iPsi1__guess_q_thd = (0.22767090063073978*_d_iF0__guess_q_thd
+            + 0.27232909936926025*_d_iF1__guess_q_thd)
+        _x55 = (1.0/math.sqrt(_x54))
+        _ift1 = _x33*_x55
+        _pd__32 = _x35*_x55
+        _x56 = _x54**(-1.5)
+        _pd__33 = -_x37*_x56
+        _d_ift1__q_r = _d_D__q_r*_pd__32 + _d_iPsi1__q_r*_pd__33
+        _d_ift1__q_th = _d_D__q_th*_pd__32 + _d_iPsi1__q_th*_pd__33
+        _d_ift1__q_thd = _d_D__q_thd*_pd__32 + _d_iPsi1__q_thd*_pd__33
+        _d_ift1__k_d = _d_D__k_d*_pd__32 + _d_iPsi1__k_d*_pd__33
+        _d_ift1__guess_q_th = _d_D__guess_q_th*_pd__32 + _d_iPsi1__guess_q_th*_pd__33
+        _d_ift1__guess_q_thd = _d_D__guess_q_thd*_pd__32 + _d_iPsi1__guess_q_thd*_pd__33
+        _x57 = _x66**2
+        _x58 = _x55*_x57
+        _x59 = _x39*_x58
+        _ifq1 = _P1*_x59
+        _pd__34 = _P1*_x43*_x58
+        _pd__35 = _x59
+        _pd__36 = -_P1*_x44*_x56*_x57
+        _pd__37 = -_x23*_x26*_x39*_x55
+        _d_ifq1__q_r = (_d_D__q_r*_pd__34 + _d_P1__q_r*_pd__35 + _d_iPsi1__q_r*_pd__36
+            + _d_isigma1__q_r*_pd__37)
+        _x60 = 0.6220084679281462*_pd__37
+        _d_ifq1__q_th = _d_D__q_th*_pd__34 + _d_D__q_th*_x60 + _d_P1__q_th*_pd__35 + _d_iPsi1__q_th*_pd__36
+        _d_ifq1__q_thd = (_d_D__q_thd*_pd__34 + _d_D__q_thd*_x60 + _d_P1__q_thd*_pd__35
+            + _d_iPsi1__q_thd*_pd__36)
+        _d_ifq1__k_d = _d_D__k_d*_pd__34 + _d_D__k_d*_x60 + _d_P1__k_d*_pd__35 + _d_iPsi1__k_d*_pd__36
+        _d_ifq1__guess_q_th = (_d_D__guess_q_th*_pd__34 + _d_D__guess_q_th*_x60 + _d_P1__guess_q_th*_pd__35
+            + _d_iPsi1__guess_q_th*_pd__36)
+        _d_ifq1__guess_q_thd = (_d_D__guess_q_thd*_pd__34 + _d_D__guess_q_thd*_x60
+            + _d_P1__guess_q_thd*_pd__35 + _d_iPsi1__guess_q_thd*_pd__36)
+        _x61 = _x47*_x55
+        _x62 = _x27*_x61
+        _ifp1 = _x18*_x62
+        _x63 = _x18*_x27
+        _pd__38 = _x51*_x55*_x63
+        _pd__39 = _x18*_x19*_x61
+        _pd__40 = -_x52*_x56*_x63
+        _pd__41 = _x62
+        _d_ifp1__q_r = (_d_D__q_r*_pd__38 + _d_Q1__q_r*_pd__39 + _d_iPsi1__q_r*_pd__40
+            + _d_isigma1__q_r*_pd__41)
+        _x64 = 0.6220084679281462*_pd__41
+        _d_ifp1__q_th = _d_D__q_th*_pd__38 + _d_D__q_th*_x64 + _d_Q1__q_th*_pd__39 + _d_iPsi1__q_th*_pd__40
+        _d_ifp1__q_thd = (_d_D__q_thd*_pd__38 + _d_D__q_thd*_x64 + _d_Q1__q_thd*_pd__39
+            + _d_iPsi1__q_thd*_pd__40)
+        _d_ifp1__k_d = _d_D__k_d*_pd__38 + _d_D__k_d*_x64 + _d_Q1__k_d*_pd__39 + _d_iPsi1__k_d*_pd__40
+        _d_ifp1__guess_q_th = (_d_D__guess_q_th*_pd__38 + _d_D__guess_q_th*_x64 + _d_Q1__guess_q_th*_pd__39
+            + _d_iPsi1__guess_q_th*_pd__40)
+        _d_ifp1__guess_q_thd = (_d_D__guess_q_thd*_pd__38 + _d_D__guess_q_thd*_x64
+            + _d_Q1__guess_q_thd*_pd__39 + _d_iPsi1__guess_q_thd*_pd__40)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi1 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
-        # the evaluation's tangents, once per direction
-        for _j1 in range(6):
-            d_k_d__j = _T[2, _j1]
-            d_q_r__j = _T[3, _j1]
-            _d_D__j = _T[6, _j1]
-            _d_Q0__j = _T[7, _j1]
-            _d_Q1__j = _T[8, _j1]
-            _d_P0__j = _T[9, _j1]
-            _d_P1__j = _T[10, _j1]
-            # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
-            _d_isigma0__j = 0.04465819873852045*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__30 + _d_Q0__j*_pd__31 + _d_isigma0__j*_pd__32 + _pd__33*d_k_d__j
-            _d_isigma1__j = 0.6220084679281462*_d_D__j + d_q_r__j
-            _d_iF1__j = _d_P1__j*_pd__34 + _d_Q1__j*_pd__35 + _d_isigma1__j*_pd__36 + _pd__37*d_k_d__j
-            _d_iPsi0__j = 0.5610042339640731*_d_iF0__j - 0.06100423396407311*_d_iF1__j
-            _d_ift0__j = _d_D__j*_pd__38 + _d_iPsi0__j*_pd__39
-            _d_ifq0__j = _d_D__j*_pd__40 + _d_P0__j*_pd__41 + _d_iPsi0__j*_pd__42 + _d_isigma0__j*_pd__43
-            _d_ifp0__j = _d_D__j*_pd__44 + _d_Q0__j*_pd__45 + _d_iPsi0__j*_pd__46 + _d_isigma0__j*_pd__47
-            _d_iPsi1__j = 0.22767090063073978*_d_iF0__j + 0.27232909936926025*_d_iF1__j
-            _d_ift1__j = _d_D__j*_pd__48 + _d_iPsi1__j*_pd__49
-            _d_ifq1__j = _d_D__j*_pd__50 + _d_P1__j*_pd__51 + _d_iPsi1__j*_pd__52 + _d_isigma1__j*_pd__53
-            _d_ifp1__j = _d_D__j*_pd__54 + _d_Q1__j*_pd__55 + _d_iPsi1__j*_pd__56 + _d_isigma1__j*_pd__57
-            _T[11, _j1] = _d_iF0__j
-            _T[12, _j1] = _d_iF1__j
-            _T[13, _j1] = _d_ift0__j
-            _T[14, _j1] = _d_ifq0__j
-            _T[15, _j1] = _d_ifp0__j
-            _T[16, _j1] = _d_ift1__j
-            _T[17, _j1] = _d_ifq1__j
-            _T[18, _j1] = _d_ifp1__j
         if _conv0 or _it0 == _last0:
             break
         # next values
         _D__next = _D
         _Q0__next = 0.25*_ifq0 - 0.03867513459481288*_ifq1 + q_th
+        _d_Q0__next__q_r = 0.25*_d_ifq0__q_r - 0.03867513459481288*_d_ifq1__q_r
+        _d_Q0__next__q_th = 0.25*_d_ifq0__q_th - 0.03867513459481288*_d_ifq1__q_th + 1.0
+        _d_Q0__next__q_thd = 0.25*_d_ifq0__q_thd - 0.03867513459481288*_d_ifq1__q_thd
+        _d_Q0__next__k_d = 0.25*_d_ifq0__k_d - 0.03867513459481288*_d_ifq1__k_d
+        _d_Q0__next__guess_q_th = 0.25*_d_ifq0__guess_q_th - 0.03867513459481288*_d_ifq1__guess_q_th
+        _d_Q0__next__guess_q_thd = 0.25*_d_ifq0__guess_q_thd - 0.03867513459481288*_d_ifq1__guess_q_thd
         _Q1__next = 0.5386751345948129*_ifq0 + 0.25*_ifq1 + q_th
-        _x62 = m*q_r**2
-        _x63 = _x62*q_thd
-        _P0__next = 0.25*_ifp0 - 0.03867513459481288*_ifp1 + _x63
-        _x64 = 2.0*m*q_r*q_thd
-        _pd__58 = _x64
-        _pd__59 = _x62
-        _P1__next = 0.5386751345948129*_ifp0 + 0.25*_ifp1 + _x63
-        _pd__60 = _x64
-        _pd__61 = _x62
-        # the next state's tangents, once per direction
-        for _j2 in range(6):
-            d_q_r__j = _T[3, _j2]
-            d_q_th__j = _T[4, _j2]
-            d_q_thd__j = _T[5, _j2]
-            _d_D__j = _T[6, _j2]
-            _d_ifq0__j = _T[14, _j2]
-            _d_ifp0__j = _T[15, _j2]
-            _d_ifq1__j = _T[17, _j2]
-            _d_ifp1__j = _T[18, _j2]
-            # next values
-            _d_Q0__next__j = 0.25*_d_ifq0__j - 0.03867513459481288*_d_ifq1__j + d_q_th__j
-            _d_Q1__next__j = 0.5386751345948129*_d_ifq0__j + 0.25*_d_ifq1__j + d_q_th__j
-            _d_P0__next__j = (0.25*_d_ifp0__j - 0.03867513459481288*_d_ifp1__j + _pd__58*d_q_r__j
-                + _pd__59*d_q_thd__j)
-            _d_P1__next__j = (0.5386751345948129*_d_ifp0__j + 0.25*_d_ifp1__j + _pd__60*d_q_r__j
-                + _pd__61*d_q_thd__j)
-            _T[6, _j2] = _d_D__j
-            _T[7, _j2] = _d_Q0__next__j
-            _T[8, _j2] = _d_Q1__next__j
-            _T[9, _j2] = _d_P0__next__j
-            _T[10, _j2] = _d_P1__next__j
-        _n0_0 = _D__next
-        _n0_1 = _Q0__next
-        _n0_2 = _Q1__next
-        _n0_3 = _P0__next
-        _n0_4 = _P1__next
+        _d_Q1__next__q_r = 0.5386751345948129*_d_ifq0__q_r + 0.25*_d_ifq1__q_r
+        _d_Q1__next__q_th = 0.5386751345948129*_d_ifq0__q_th + 0.25*_d_ifq1__q_th + 1.0
+        _d_Q1__next__q_thd = 0.5386751345948129*_d_ifq0__q_thd + 0.25*_d_ifq1__q_thd
+        _d_Q1__next__k_d = 0.5386751345948129*_d_ifq0__k_d + 0.25*_d_ifq1__k_d
+        _d_Q1__next__guess_q_th = 0.5386751345948129*_d_ifq0__guess_q_th + 0.25*_d_ifq1__guess_q_th
+        _d_Q1__next__guess_q_thd = 0.5386751345948129*_d_ifq0__guess_q_thd + 0.25*_d_ifq1__guess_q_thd
+        _x67 = m*q_r**2
+        _x68 = _x67*q_thd
+        _P0__next = 0.25*_ifp0 - 0.03867513459481288*_ifp1 + _x68
+        _x69 = 2.0*m*q_r*q_thd
+        _d_P0__next__q_r = 0.25*_d_ifp0__q_r - 0.03867513459481288*_d_ifp1__q_r + _x69
+        _d_P0__next__q_th = 0.25*_d_ifp0__q_th - 0.03867513459481288*_d_ifp1__q_th
+        _d_P0__next__q_thd = 0.25*_d_ifp0__q_thd - 0.03867513459481288*_d_ifp1__q_thd + _x67
+        _d_P0__next__k_d = 0.25*_d_ifp0__k_d - 0.03867513459481288*_d_ifp1__k_d
+        _d_P0__next__guess_q_th = 0.25*_d_ifp0__guess_q_th - 0.03867513459481288*_d_ifp1__guess_q_th
+        _d_P0__next__guess_q_thd = 0.25*_d_ifp0__guess_q_thd - 0.03867513459481288*_d_ifp1__guess_q_thd
+        _P1__next = 0.5386751345948129*_ifp0 + 0.25*_ifp1 + _x68
+        _d_P1__next__q_r = 0.5386751345948129*_d_ifp0__q_r + 0.25*_d_ifp1__q_r + _x69
+        _d_P1__next__q_th = 0.5386751345948129*_d_ifp0__q_th + 0.25*_d_ifp1__q_th
+        _d_P1__next__q_thd = 0.5386751345948129*_d_ifp0__q_thd + 0.25*_d_ifp1__q_thd + _x67
+        _d_P1__next__k_d = 0.5386751345948129*_d_ifp0__k_d + 0.25*_d_ifp1__k_d
+        _d_P1__next__guess_q_th = 0.5386751345948129*_d_ifp0__guess_q_th + 0.25*_d_ifp1__guess_q_th
+        _d_P1__next__guess_q_thd = 0.5386751345948129*_d_ifp0__guess_q_thd + 0.25*_d_ifp1__guess_q_thd
+        _n0_5 = _d_D__q_r
+        _n0_6 = _d_D__q_th
+        _n0_7 = _d_D__q_thd
+        _n0_8 = _d_D__k_d
+        _n0_9 = _d_D__guess_q_th
+        _n0_10 = _d_D__guess_q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))))
-        _D = _n0_0
-        _Q0 = _n0_1
-        _Q1 = _n0_2
-        _P0 = _n0_3
-        _P1 = _n0_4
+        _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
+            and (abs(_Q1__next - _Q1) <= tol*(1.0)) and (abs(_P0__next - _P0)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+        _pkn0 = (_D__next, _Q0__next, _Q1__next, _P0__next, _P1__next, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
+            _n0_10, _d_Q0__next__q_r, _d_Q0__next__q_th, _d_Q0__next__q_thd, _d_Q0__next__k_d,
+            _d_Q0__next__guess_q_th, _d_Q0__next__guess_q_thd, _d_Q1__next__q_r, _d_Q1__next__q_th,
+            _d_Q1__next__q_thd, _d_Q1__next__k_d, _d_Q1__next__guess_q_th, _d_Q1__next__guess_q_thd,
+            _d_P0__next__q_r, _d_P0__next__q_th, _d_P0__next__q_thd, _d_P0__next__k_d,
+            _d_P0__next__guess_q_th, _d_P0__next__guess_q_thd, _d_P1__next__q_r, _d_P1__next__q_th,
+            _d_P1__next__q_thd, _d_P1__next__k_d, _d_P1__next__guess_q_th, _d_P1__next__guess_q_thd, )
+        _pk0 = _pkn0
         _passes += 1.0
     _work = 0.10566243270259355*_iF0 + 0.39433756729740643*_iF1
+    _d_work__q_r = 0.10566243270259355*_d_iF0__q_r + 0.39433756729740643*_d_iF1__q_r
+    _d_work__q_th = 0.10566243270259355*_d_iF0__q_th + 0.39433756729740643*_d_iF1__q_th
+    _d_work__q_thd = 0.10566243270259355*_d_iF0__q_thd + 0.39433756729740643*_d_iF1__q_thd
+    _d_work__k_d = 0.10566243270259355*_d_iF0__k_d + 0.39433756729740643*_d_iF1__k_d
+    _d_work__guess_q_th = 0.10566243270259355*_d_iF0__guess_q_th + 0.39433756729740643*_d_iF1__guess_q_th
+    _d_work__guess_q_thd = 0.10566243270259355*_d_iF0__guess_q_thd + 0.39433756729740643*_d_iF1__guess_q_thd
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return _NAN30 + (STATUS_NO_LIFTOFF,)
     # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
     t_half = 0.5*_ift0 + 0.5*_ift1
+    d_t_half__q_r = 0.5*_d_ift0__q_r + 0.5*_d_ift1__q_r
+    d_t_half__q_th = 0.5*_d_ift0__q_th + 0.5*_d_ift1__q_th
+    d_t_half__q_thd = 0.5*_d_ift0__q_thd + 0.5*_d_ift1__q_thd
+    d_t_half__k_d = 0.5*_d_ift0__k_d + 0.5*_d_ift1__k_d
+    d_t_half__guess_q_th = 0.5*_d_ift0__guess_q_th + 0.5*_d_ift1__guess_q_th
+    d_t_half__guess_q_thd = 0.5*_d_ift0__guess_q_thd + 0.5*_d_ift1__guess_q_thd
     end_q_th = 0.5*_ifq0 + 0.5*_ifq1 + q_th
+    d_end_q_th__q_r = 0.5*_d_ifq0__q_r + 0.5*_d_ifq1__q_r
+    d_end_q_th__q_th = 0.5*_d_ifq0__q_th + 0.5*_d_ifq1__q_th + 1.0
+    d_end_q_th__q_thd = 0.5*_d_ifq0__q_thd + 0.5*_d_ifq1__q_thd
+    d_end_q_th__k_d = 0.5*_d_ifq0__k_d + 0.5*_d_ifq1__k_d
+    d_end_q_th__guess_q_th = 0.5*_d_ifq0__guess_q_th + 0.5*_d_ifq1__guess_q_th
+    d_end_q_th__guess_q_thd = 0.5*_d_ifq0__guess_q_thd + 0.5*_d_ifq1__guess_q_thd
     end_q_r = q_r_lo
-    _x65 = math.sqrt(_D*_work)/math.sqrt(m)
-    end_q_rd = 2.0*_x65
-    _pd__62 = _x65/_D
-    _pd__63 = _x65/_work
-    _x66 = q_r**2
-    _x67 = q_r_lo**-2
-    _x68 = _x67/m
-    end_q_thd = _x68*(0.5*_ifp0 + 0.5*_ifp1 + _x66*m*q_thd)
-    _x69 = 0.5*_x68
-    _pd__64 = _x69
-    _pd__65 = _x69
-    _pd__66 = 2.0*_x67*q_r*q_thd
-    _pd__67 = _x66*_x67
+    _x70 = math.sqrt(_D*_work)/math.sqrt(m)
+    end_q_rd = 2.0*_x70
+    _pd__42 = _x70/_D
+    _pd__43 = _x70/_work
+    d_end_q_rd__q_r = _d_D__q_r*_pd__42 + _d_work__q_r*_pd__43
+    d_end_q_rd__q_th = _d_D__q_th*_pd__42 + _d_work__q_th*_pd__43
+    d_end_q_rd__q_thd = _d_D__q_thd*_pd__42 + _d_work__q_thd*_pd__43
+    d_end_q_rd__k_d = _d_D__k_d*_pd__42 + _d_work__k_d*_pd__43
+    d_end_q_rd__guess_q_th = _d_D__guess_q_th*_pd__42 + _d_work__guess_q_th*_pd__43
+    d_end_q_rd__guess_q_thd = _d_D__guess_q_thd*_pd__42 + _d_work__guess_q_thd*_pd__43
+    _x71 = q_r**2
+    _x72 = q_r_lo**-2
+    _x73 = _x72/m
+    end_q_thd = _x73*(0.5*_ifp0 + 0.5*_ifp1 + _x71*m*q_thd)
+    _x74 = 0.5*_x73
+    _pd__44 = _x74
+    _pd__45 = _x74
+    d_end_q_thd__q_r = _d_ifp0__q_r*_pd__44 + _d_ifp1__q_r*_pd__45 + 2.0*_x72*q_r*q_thd
+    d_end_q_thd__q_th = _d_ifp0__q_th*_pd__44 + _d_ifp1__q_th*_pd__45
+    d_end_q_thd__q_thd = _d_ifp0__q_thd*_pd__44 + _d_ifp1__q_thd*_pd__45 + _x71*_x72
+    d_end_q_thd__k_d = _d_ifp0__k_d*_pd__44 + _d_ifp1__k_d*_pd__45
+    d_end_q_thd__guess_q_th = _d_ifp0__guess_q_th*_pd__44 + _d_ifp1__guess_q_th*_pd__45
+    d_end_q_thd__guess_q_thd = _d_ifp0__guess_q_thd*_pd__44 + _d_ifp1__guess_q_thd*_pd__45
     passes = _passes
-    # their tangents, once per direction
-    for _j3 in range(6):
-        d_q_r__j = _T[3, _j3]
-        d_q_th__j = _T[4, _j3]
-        d_q_thd__j = _T[5, _j3]
-        _d_D__j = _T[6, _j3]
-        _d_iF0__j = _T[11, _j3]
-        _d_iF1__j = _T[12, _j3]
-        _d_ift0__j = _T[13, _j3]
-        _d_ifq0__j = _T[14, _j3]
-        _d_ifp0__j = _T[15, _j3]
-        _d_ift1__j = _T[16, _j3]
-        _d_ifq1__j = _T[17, _j3]
-        _d_ifp1__j = _T[18, _j3]
-        _d_work__j = 0.10566243270259355*_d_iF0__j + 0.39433756729740643*_d_iF1__j
-        # liftoff state: p_r_lo^2 = 2 m int F_r (work form)
-        d_t_half__j = 0.5*_d_ift0__j + 0.5*_d_ift1__j
-        d_end_q_th__j = 0.5*_d_ifq0__j + 0.5*_d_ifq1__j + d_q_th__j
-        d_end_q_rd__j = _d_D__j*_pd__62 + _d_work__j*_pd__63
-        d_end_q_thd__j = _d_ifp0__j*_pd__64 + _d_ifp1__j*_pd__65 + _pd__66*d_q_r__j + _pd__67*d_q_thd__j
-        _T[19, _j3] = d_t_half__j
-        _T[20, _j3] = d_end_q_th__j
-        _T[21, _j3] = d_end_q_rd__j
-        _T[22, _j3] = d_end_q_thd__j
-    (d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th,
-        d_t_half__guess_q_thd, ) = (_T[19, 0], _T[19, 1], _T[19, 2], _T[19, 3], _T[19, 4], _T[19, 5], )
-    (d_end_q_th__q_r, d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-        d_end_q_th__guess_q_thd, ) = (_T[20, 0], _T[20, 1], _T[20, 2], _T[20, 3], _T[20, 4], _T[20, 5], )
-    (d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, ) = (_T[21, 0], _T[21, 1], _T[21, 2], _T[21, 3], _T[21, 4], _T[21, 5], )
-    (d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
-        d_end_q_thd__guess_q_thd, ) = (_T[22, 0], _T[22, 1], _T[22, 2], _T[22, 3], _T[22, 4], _T[22, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-        d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
-        d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+        d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+        d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
+        d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd, d_end_q_th__k_d,
+        d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd,
+        d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3378,17 +3385,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
     (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
     # the initial values
     _x0 = m*q_r_lo**2
-    _pd__68 = 0.11270166537925831*_x0
+    _pd__46 = 0.11270166537925831*_x0
     _x1 = m*q_r*q_thd
-    _pd__69 = 1.7745966692414834*_x1
+    _pd__47 = 1.7745966692414834*_x1
     _x2 = m*q_r**2
-    _pd__70 = 0.8872983346207417*_x2
-    _pd__71 = 0.5*_x0
-    _pd__72 = 1.0*_x1
-    _pd__73 = 0.5*_x2
-    _pd__74 = 0.8872983346207417*_x0
-    _pd__75 = 0.22540333075851662*_x1
-    _pd__76 = 0.11270166537925831*_x2
+    _pd__48 = 0.8872983346207417*_x2
+    _pd__49 = 0.5*_x0
+    _pd__50 = 1.0*_x1
+    _pd__51 = 0.5*_x2
+    _pd__52 = 0.8872983346207417*_x0
+    _pd__53 = 0.22540333075851662*_x1
+    _pd__54 = 0.11270166537925831*_x2
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_th__j = _T[0, _j0]
@@ -3400,9 +3407,9 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _d_Q0__start__j = 0.11270166537925831*d_guess_q_th__j + 0.8872983346207417*d_q_th__j
         _d_Q1__start__j = 0.5*d_guess_q_th__j + 0.5*d_q_th__j
         _d_Q2__start__j = 0.8872983346207417*d_guess_q_th__j + 0.11270166537925831*d_q_th__j
-        _d_P0__start__j = _pd__68*d_guess_q_thd__j + _pd__69*d_q_r__j + _pd__70*d_q_thd__j
-        _d_P1__start__j = _pd__71*d_guess_q_thd__j + _pd__72*d_q_r__j + _pd__73*d_q_thd__j
-        _d_P2__start__j = _pd__74*d_guess_q_thd__j + _pd__75*d_q_r__j + _pd__76*d_q_thd__j
+        _d_P0__start__j = _pd__46*d_guess_q_thd__j + _pd__47*d_q_r__j + _pd__48*d_q_thd__j
+        _d_P1__start__j = _pd__49*d_guess_q_thd__j + _pd__50*d_q_r__j + _pd__51*d_q_thd__j
+        _d_P2__start__j = _pd__52*d_guess_q_thd__j + _pd__53*d_q_r__j + _pd__54*d_q_thd__j
         _T[6, _j0] = -d_q_r__j
         _T[7, _j0] = _d_Q0__start__j
         _T[8, _j0] = _d_Q1__start__j
@@ -3442,13 +3449,13 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _x13 = _x12*_x9
         _iF0 = _x13 + _x4 - _x7 - _x8
         _x14 = 2.0*_P0
-        _pd__77 = _x12*_x14
+        _pd__55 = _x12*_x14
         _x15 = math.sin(_Q0)
-        _pd__78 = _x15*_x6
+        _pd__56 = _x15*_x6
         _x16 = 3.0*_x10
-        _pd__79 = -_x16*_x81**4*_x9 - k_d
+        _pd__57 = -_x16*_x81**4*_x9 - k_d
         _x17 = -l0
-        _pd__80 = -_x17 - _x3
+        _pd__58 = -_x17 - _x3
         _x18 = 0.25*_D + q_r
         _isigma1 = _x18
         _x19 = math.cos(_Q1)
@@ -3461,11 +3468,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _x25 = _x22*_x24
         _iF1 = -_x20 - _x21 + _x25 + _x4
         _x26 = 2.0*_P1
-        _pd__81 = _x24*_x26
+        _pd__59 = _x24*_x26
         _x27 = math.sin(_Q1)
-        _pd__82 = _x27*_x6
-        _pd__83 = -_x16*_x22*_x79**4 - k_d
-        _pd__84 = -_x17 - _x18
+        _pd__60 = _x27*_x6
+        _pd__61 = -_x16*_x22*_x79**4 - k_d
+        _pd__62 = -_x17 - _x18
         _x28 = 0.7872983346207417*_D + q_r
         _isigma2 = _x28
         _x29 = math.cos(_Q2)
@@ -3478,11 +3485,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _x35 = _x32*_x34
         _iF2 = -_x30 - _x31 + _x35 + _x4
         _x36 = 2.0*_P2
-        _pd__85 = _x34*_x36
+        _pd__63 = _x34*_x36
         _x37 = math.sin(_Q2)
-        _pd__86 = _x37*_x6
-        _pd__87 = -_x16*_x32*_x80**4 - k_d
-        _pd__88 = -_x17 - _x28
+        _pd__64 = _x37*_x6
+        _pd__65 = -_x16*_x32*_x80**4 - k_d
+        _pd__66 = -_x17 - _x28
         _x38 = (0.5762768525670787*_x13 + 0.1040546303448565*_x20 + 0.1040546303448565*_x21
             - 0.1040546303448565*_x25 - 0.027777777777777776*_x30 - 0.027777777777777776*_x31
             + 0.027777777777777776*_x35 + 0.5*_x4 - 0.5762768525670787*_x7 - 0.5762768525670787*_x8)
@@ -3494,10 +3501,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _ift0 = _x39*_x42
         _x43 = (0.5)/_x40
         _x44 = _x41*_x43
-        _pd__89 = _x39*_x44
+        _pd__67 = _x39*_x44
         _x45 = _x38**(-1.5)
         _x46 = (0.5)*_x42
-        _pd__90 = -_x45*_x46
+        _pd__68 = -_x45*_x46
         _x47 = (1.0/_x41)
         _x48 = _x40*_x47
         _x49 = _x81**2
@@ -3505,11 +3512,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _x51 = _x48*_x50
         _ifq0 = _P0*_x51
         _x52 = _x43*_x47
-        _pd__91 = _P0*_x50*_x52
-        _pd__92 = _x51
+        _pd__69 = _P0*_x50*_x52
+        _pd__70 = _x51
         _x53 = (0.5)*_x48
-        _pd__93 = -_P0*_x45*_x49*_x53
-        _pd__94 = -_x11*_x14*_x39*_x48
+        _pd__71 = -_P0*_x45*_x49*_x53
+        _pd__72 = -_x11*_x14*_x39*_x48
         _x54 = g_s*m**(1.5)
         _x55 = _x40*_x54
         _x56 = _x39*_x55
@@ -3517,36 +3524,36 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _ifp0 = _x3*_x57
         _x58 = _x15*_x3
         _x59 = _x43*_x54
-        _pd__95 = _x39*_x58*_x59
-        _pd__96 = _x3*_x5*_x56
+        _pd__73 = _x39*_x58*_x59
+        _pd__74 = _x3*_x5*_x56
         _x60 = (0.5)*_x55
-        _pd__97 = -_x45*_x58*_x60
-        _pd__98 = _x57
+        _pd__75 = -_x45*_x58*_x60
+        _pd__76 = _x57
         _x61 = (0.17702731517242826*_x13 - 0.3611111111111111*_x20 - 0.3611111111111111*_x21
             + 0.3611111111111111*_x25 + 0.038138426283539355*_x30 + 0.038138426283539355*_x31
             - 0.038138426283539355*_x35 + 0.5*_x4 - 0.17702731517242826*_x7 - 0.17702731517242826*_x8)
         _iPsi1 = _x61
         _x62 = (1.0/math.sqrt(_x61))
         _ift1 = _x42*_x62
-        _pd__99 = _x44*_x62
+        _pd__77 = _x44*_x62
         _x63 = _x61**(-1.5)
-        _pd__100 = -_x46*_x63
+        _pd__78 = -_x46*_x63
         _x64 = _x79**2
         _x65 = _x62*_x64
         _x66 = _x48*_x65
         _ifq1 = _P1*_x66
-        _pd__101 = _P1*_x52*_x65
-        _pd__102 = _x66
-        _pd__103 = -_P1*_x53*_x63*_x64
-        _pd__104 = -_x23*_x26*_x48*_x62
+        _pd__79 = _P1*_x52*_x65
+        _pd__80 = _x66
+        _pd__81 = -_P1*_x53*_x63*_x64
+        _pd__82 = -_x23*_x26*_x48*_x62
         _x67 = _x55*_x62
         _x68 = _x27*_x67
         _ifp1 = _x18*_x68
         _x69 = _x18*_x27
-        _pd__105 = _x59*_x62*_x69
-        _pd__106 = _x18*_x19*_x67
-        _pd__107 = -_x60*_x63*_x69
-        _pd__108 = _x68
+        _pd__83 = _x59*_x62*_x69
+        _pd__84 = _x18*_x19*_x67
+        _pd__85 = -_x60*_x63*_x69
+        _pd__86 = _x68
         _x70 = (0.027777777777777776*_x10*_x11*_x9 + 0.3262768525670787*_x10*_x22*_x23
             + 0.14594536965514351*_x10*_x32*_x33 - 0.3262768525670787*_x20 - 0.3262768525670787*_x21
             - 0.14594536965514351*_x30 - 0.14594536965514351*_x31 - 0.027777777777777776*_x7
@@ -3554,25 +3561,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _iPsi2 = _x70
         _x71 = (1.0/math.sqrt(_x70))
         _ift2 = _x42*_x71
-        _pd__109 = _x44*_x71
+        _pd__87 = _x44*_x71
         _x72 = _x70**(-1.5)
-        _pd__110 = -_x46*_x72
+        _pd__88 = -_x46*_x72
         _x73 = _x80**2
         _x74 = _x71*_x73
         _x75 = _x48*_x74
         _ifq2 = _P2*_x75
-        _pd__111 = _P2*_x52*_x74
-        _pd__112 = _x75
-        _pd__113 = -_P2*_x53*_x72*_x73
-        _pd__114 = -_x33*_x36*_x48*_x71
+        _pd__89 = _P2*_x52*_x74
+        _pd__90 = _x75
+        _pd__91 = -_P2*_x53*_x72*_x73
+        _pd__92 = -_x33*_x36*_x48*_x71
         _x76 = _x55*_x71
         _x77 = _x37*_x76
         _ifp2 = _x28*_x77
         _x78 = _x28*_x37
-        _pd__115 = _x59*_x71*_x78
-        _pd__116 = _x28*_x29*_x76
-        _pd__117 = -_x60*_x72*_x78
-        _pd__118 = _x77
+        _pd__93 = _x59*_x71*_x78
+        _pd__94 = _x28*_x29*_x76
+        _pd__95 = -_x60*_x72*_x78
+        _pd__96 = _x77
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -3595,26 +3602,26 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
             _d_P2__j = _T[12, _j1]
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _d_isigma0__j = 0.012701665379258311*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__77 + _d_Q0__j*_pd__78 + _d_isigma0__j*_pd__79 + _pd__80*d_k_d__j
+            _d_iF0__j = _d_P0__j*_pd__55 + _d_Q0__j*_pd__56 + _d_isigma0__j*_pd__57 + _pd__58*d_k_d__j
             _d_isigma1__j = 0.25*_d_D__j + d_q_r__j
-            _d_iF1__j = _d_P1__j*_pd__81 + _d_Q1__j*_pd__82 + _d_isigma1__j*_pd__83 + _pd__84*d_k_d__j
+            _d_iF1__j = _d_P1__j*_pd__59 + _d_Q1__j*_pd__60 + _d_isigma1__j*_pd__61 + _pd__62*d_k_d__j
             _d_isigma2__j = 0.7872983346207417*_d_D__j + d_q_r__j
-            _d_iF2__j = _d_P2__j*_pd__85 + _d_Q2__j*_pd__86 + _d_isigma2__j*_pd__87 + _pd__88*d_k_d__j
+            _d_iF2__j = _d_P2__j*_pd__63 + _d_Q2__j*_pd__64 + _d_isigma2__j*_pd__65 + _pd__66*d_k_d__j
             _d_iPsi0__j = (0.5762768525670787*_d_iF0__j - 0.1040546303448565*_d_iF1__j
                 + 0.027777777777777776*_d_iF2__j)
-            _d_ift0__j = _d_D__j*_pd__89 + _d_iPsi0__j*_pd__90
-            _d_ifq0__j = _d_D__j*_pd__91 + _d_P0__j*_pd__92 + _d_iPsi0__j*_pd__93 + _d_isigma0__j*_pd__94
-            _d_ifp0__j = _d_D__j*_pd__95 + _d_Q0__j*_pd__96 + _d_iPsi0__j*_pd__97 + _d_isigma0__j*_pd__98
+            _d_ift0__j = _d_D__j*_pd__67 + _d_iPsi0__j*_pd__68
+            _d_ifq0__j = _d_D__j*_pd__69 + _d_P0__j*_pd__70 + _d_iPsi0__j*_pd__71 + _d_isigma0__j*_pd__72
+            _d_ifp0__j = _d_D__j*_pd__73 + _d_Q0__j*_pd__74 + _d_iPsi0__j*_pd__75 + _d_isigma0__j*_pd__76
             _d_iPsi1__j = (0.17702731517242826*_d_iF0__j + 0.3611111111111111*_d_iF1__j
                 - 0.038138426283539355*_d_iF2__j)
-            _d_ift1__j = _d_D__j*_pd__99 + _d_iPsi1__j*_pd__100
-            _d_ifq1__j = _d_D__j*_pd__101 + _d_P1__j*_pd__102 + _d_iPsi1__j*_pd__103 + _d_isigma1__j*_pd__104
-            _d_ifp1__j = _d_D__j*_pd__105 + _d_Q1__j*_pd__106 + _d_iPsi1__j*_pd__107 + _d_isigma1__j*_pd__108
+            _d_ift1__j = _d_D__j*_pd__77 + _d_iPsi1__j*_pd__78
+            _d_ifq1__j = _d_D__j*_pd__79 + _d_P1__j*_pd__80 + _d_iPsi1__j*_pd__81 + _d_isigma1__j*_pd__82
+            _d_ifp1__j = _d_D__j*_pd__83 + _d_Q1__j*_pd__84 + _d_iPsi1__j*_pd__85 + _d_isigma1__j*_pd__86
             _d_iPsi2__j = (0.027777777777777776*_d_iF0__j + 0.3262768525670787*_d_iF1__j
                 + 0.14594536965514351*_d_iF2__j)
-            _d_ift2__j = _d_D__j*_pd__109 + _d_iPsi2__j*_pd__110
-            _d_ifq2__j = _d_D__j*_pd__111 + _d_P2__j*_pd__112 + _d_iPsi2__j*_pd__113 + _d_isigma2__j*_pd__114
-            _d_ifp2__j = _d_D__j*_pd__115 + _d_Q2__j*_pd__116 + _d_iPsi2__j*_pd__117 + _d_isigma2__j*_pd__118
+            _d_ift2__j = _d_D__j*_pd__87 + _d_iPsi2__j*_pd__88
+            _d_ifq2__j = _d_D__j*_pd__89 + _d_P2__j*_pd__90 + _d_iPsi2__j*_pd__91 + _d_isigma2__j*_pd__92
+            _d_ifp2__j = _d_D__j*_pd__93 + _d_Q2__j*_pd__94 + _d_iPsi2__j*_pd__95 + _d_isigma2__j*_pd__96
             _T[13, _j1] = _d_iF0__j
             _T[14, _j1] = _d_iF1__j
             _T[15, _j1] = _d_iF2__j
@@ -3638,14 +3645,14 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
         _x83 = _x82*q_thd
         _P0__next = 0.1388888888888889*_ifp0 - 0.0359766675249389*_ifp1 + 0.009789444015308325*_ifp2 + _x83
         _x84 = 2.0*m*q_r*q_thd
-        _pd__119 = _x84
-        _pd__120 = _x82
+        _pd__97 = _x84
+        _pd__98 = _x82
         _P1__next = 0.30026319498086457*_ifp0 + 0.2222222222222222*_ifp1 - 0.022485417203086815*_ifp2 + _x83
-        _pd__121 = _x84
-        _pd__122 = _x82
+        _pd__99 = _x84
+        _pd__100 = _x82
         _P2__next = 0.26798833376246944*_ifp0 + 0.48042111196938336*_ifp1 + 0.1388888888888889*_ifp2 + _x83
-        _pd__123 = _x84
-        _pd__124 = _x82
+        _pd__101 = _x84
+        _pd__102 = _x82
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_q_r__j = _T[3, _j2]
@@ -3666,11 +3673,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
             _d_Q2__next__j = (0.26798833376246944*_d_ifq0__j + 0.48042111196938336*_d_ifq1__j
                 + 0.1388888888888889*_d_ifq2__j + d_q_th__j)
             _d_P0__next__j = (0.1388888888888889*_d_ifp0__j - 0.0359766675249389*_d_ifp1__j
-                + 0.009789444015308325*_d_ifp2__j + _pd__119*d_q_r__j + _pd__120*d_q_thd__j)
+                + 0.009789444015308325*_d_ifp2__j + _pd__97*d_q_r__j + _pd__98*d_q_thd__j)
             _d_P1__next__j = (0.30026319498086457*_d_ifp0__j + 0.2222222222222222*_d_ifp1__j
-                - 0.022485417203086815*_d_ifp2__j + _pd__121*d_q_r__j + _pd__122*d_q_thd__j)
+                - 0.022485417203086815*_d_ifp2__j + _pd__100*d_q_thd__j + _pd__99*d_q_r__j)
             _d_P2__next__j = (0.26798833376246944*_d_ifp0__j + 0.48042111196938336*_d_ifp1__j
-                + 0.1388888888888889*_d_ifp2__j + _pd__123*d_q_r__j + _pd__124*d_q_thd__j)
+                + 0.1388888888888889*_d_ifp2__j + _pd__101*d_q_r__j + _pd__102*d_q_thd__j)
             _T[6, _j2] = _d_D__j
             _T[7, _j2] = _d_Q0__next__j
             _T[8, _j2] = _d_Q1__next__j
@@ -3710,19 +3717,19 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
     end_q_r = q_r_lo
     _x85 = math.sqrt(_D*_work)/math.sqrt(m)
     end_q_rd = 2.0*_x85
-    _pd__125 = _x85/_D
-    _pd__126 = _x85/_work
+    _pd__103 = _x85/_D
+    _pd__104 = _x85/_work
     _x86 = q_r**2
     _x87 = q_r_lo**-2
     _x88 = _x87/m
     end_q_thd = (_x88*(0.2777777777777778*_ifp0 + 0.4444444444444444*_ifp1 + 0.2777777777777778*_ifp2
         + _x86*m*q_thd))
     _x89 = 0.2777777777777778*_x88
-    _pd__127 = _x89
-    _pd__128 = 0.4444444444444444*_x88
-    _pd__129 = _x89
-    _pd__130 = 2.0*_x87*q_r*q_thd
-    _pd__131 = _x86*_x87
+    _pd__105 = _x89
+    _pd__106 = 0.4444444444444444*_x88
+    _pd__107 = _x89
+    _pd__108 = 2.0*_x87*q_r*q_thd
+    _pd__109 = _x86*_x87
     passes = _passes
     # their tangents, once per direction
     for _j3 in range(6):
@@ -3749,9 +3756,9 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
             + 0.2777777777777778*_d_ift2__j)
         d_end_q_th__j = (0.2777777777777778*_d_ifq0__j + 0.4444444444444444*_d_ifq1__j
             + 0.2777777777777778*_d_ifq2__j + d_q_th__j)
-        d_end_q_rd__j = _d_D__j*_pd__125 + _d_work__j*_pd__126
-        d_end_q_thd__j = (_d_ifp0__j*_pd__127 + _d_ifp1__j*_pd__128 + _d_ifp2__j*_pd__129 + _pd__130*d_q_r__j
-            + _pd__131*d_q_thd__j)
+        d_end_q_rd__j = _d_D__j*_pd__103 + _d_work__j*_pd__104
+        d_end_q_thd__j = (_d_ifp0__j*_pd__105 + _d_ifp1__j*_pd__106 + _d_ifp2__j*_pd__107 + _pd__108*d_q_r__j
+            + _pd__109*d_q_thd__j)
         _T[25, _j3] = d_t_half__j
         _T[26, _j3] = d_end_q_th__j
         _T[27, _j3] = d_end_q_rd__j
@@ -3765,12 +3772,12 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, g
     (d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
         d_end_q_thd__guess_q_thd, ) = (_T[28, 0], _T[28, 1], _T[28, 2], _T[28, 3], _T[28, 4], _T[28, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-        d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
-        d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+        d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+        d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
+        d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd, d_end_q_th__k_d,
+        d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd,
+        d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3796,20 +3803,20 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
     (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
     # the initial values
     _x0 = m*q_r_lo**2
-    _pd__132 = 0.06943184420297371*_x0
+    _pd__110 = 0.06943184420297371*_x0
     _x1 = m*q_r*q_thd
-    _pd__133 = 1.8611363115940527*_x1
+    _pd__111 = 1.8611363115940527*_x1
     _x2 = m*q_r**2
-    _pd__134 = 0.9305681557970263*_x2
-    _pd__135 = 0.33000947820757187*_x0
-    _pd__136 = 1.3399810435848563*_x1
-    _pd__137 = 0.6699905217924281*_x2
-    _pd__138 = 0.6699905217924281*_x0
-    _pd__139 = 0.6600189564151437*_x1
-    _pd__140 = 0.33000947820757187*_x2
-    _pd__141 = 0.9305681557970263*_x0
-    _pd__142 = 0.13886368840594743*_x1
-    _pd__143 = 0.06943184420297371*_x2
+    _pd__112 = 0.9305681557970263*_x2
+    _pd__113 = 0.33000947820757187*_x0
+    _pd__114 = 1.3399810435848563*_x1
+    _pd__115 = 0.6699905217924281*_x2
+    _pd__116 = 0.6699905217924281*_x0
+    _pd__117 = 0.6600189564151437*_x1
+    _pd__118 = 0.33000947820757187*_x2
+    _pd__119 = 0.9305681557970263*_x0
+    _pd__120 = 0.13886368840594743*_x1
+    _pd__121 = 0.06943184420297371*_x2
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_th__j = _T[0, _j0]
@@ -3822,10 +3829,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _d_Q1__start__j = 0.33000947820757187*d_guess_q_th__j + 0.6699905217924281*d_q_th__j
         _d_Q2__start__j = 0.6699905217924281*d_guess_q_th__j + 0.33000947820757187*d_q_th__j
         _d_Q3__start__j = 0.9305681557970263*d_guess_q_th__j + 0.06943184420297371*d_q_th__j
-        _d_P0__start__j = _pd__132*d_guess_q_thd__j + _pd__133*d_q_r__j + _pd__134*d_q_thd__j
-        _d_P1__start__j = _pd__135*d_guess_q_thd__j + _pd__136*d_q_r__j + _pd__137*d_q_thd__j
-        _d_P2__start__j = _pd__138*d_guess_q_thd__j + _pd__139*d_q_r__j + _pd__140*d_q_thd__j
-        _d_P3__start__j = _pd__141*d_guess_q_thd__j + _pd__142*d_q_r__j + _pd__143*d_q_thd__j
+        _d_P0__start__j = _pd__110*d_guess_q_thd__j + _pd__111*d_q_r__j + _pd__112*d_q_thd__j
+        _d_P1__start__j = _pd__113*d_guess_q_thd__j + _pd__114*d_q_r__j + _pd__115*d_q_thd__j
+        _d_P2__start__j = _pd__116*d_guess_q_thd__j + _pd__117*d_q_r__j + _pd__118*d_q_thd__j
+        _d_P3__start__j = _pd__119*d_guess_q_thd__j + _pd__120*d_q_r__j + _pd__121*d_q_thd__j
         _T[6, _j0] = -d_q_r__j
         _T[7, _j0] = _d_Q0__start__j
         _T[8, _j0] = _d_Q1__start__j
@@ -3869,13 +3876,13 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _x13 = _x12*_x9
         _iF0 = _x13 + _x4 - _x7 - _x8
         _x14 = 2.0*_P0
-        _pd__144 = _x12*_x14
+        _pd__122 = _x12*_x14
         _x15 = math.sin(_Q0)
-        _pd__145 = _x15*_x6
+        _pd__123 = _x15*_x6
         _x16 = 3.0*_x10
-        _pd__146 = -_x100**4*_x16*_x9 - k_d
+        _pd__124 = -_x100**4*_x16*_x9 - k_d
         _x17 = -l0
-        _pd__147 = -_x17 - _x3
+        _pd__125 = -_x17 - _x3
         _x18 = 0.10890625570683385*_D + q_r
         _isigma1 = _x18
         _x19 = math.cos(_Q1)
@@ -3888,11 +3895,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _x25 = _x22*_x24
         _iF1 = -_x20 - _x21 + _x25 + _x4
         _x26 = 2.0*_P1
-        _pd__148 = _x24*_x26
+        _pd__126 = _x24*_x26
         _x27 = math.sin(_Q1)
-        _pd__149 = _x27*_x6
-        _pd__150 = -_x16*_x22*_x98**4 - k_d
-        _pd__151 = -_x17 - _x18
+        _pd__127 = _x27*_x6
+        _pd__128 = -_x16*_x22*_x98**4 - k_d
+        _pd__129 = -_x17 - _x18
         _x28 = 0.44888729929169013*_D + q_r
         _isigma2 = _x28
         _x29 = math.cos(_Q2)
@@ -3905,11 +3912,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _x35 = _x32*_x34
         _iF2 = -_x30 - _x31 + _x35 + _x4
         _x36 = 2.0*_P2
-        _pd__152 = _x34*_x36
+        _pd__130 = _x34*_x36
         _x37 = math.sin(_Q2)
-        _pd__153 = _x37*_x6
-        _pd__154 = -_x16*_x32*_x99**4 - k_d
-        _pd__155 = -_x17 - _x28
+        _pd__131 = _x37*_x6
+        _pd__132 = -_x16*_x32*_x99**4 - k_d
+        _pd__133 = -_x17 - _x28
         _x38 = 0.8659570925834786*_D + q_r
         _isigma3 = _x38
         _x39 = math.cos(_Q3)
@@ -3922,11 +3929,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _x45 = _x42*_x44
         _iF3 = _x4 - _x40 - _x41 + _x45
         _x46 = 2.0*_P3
-        _pd__156 = _x44*_x46
+        _pd__134 = _x44*_x46
         _x47 = math.sin(_Q3)
-        _pd__157 = _x47*_x6
-        _pd__158 = -_x101**4*_x16*_x42 - k_d
-        _pd__159 = -_x17 - _x38
+        _pd__135 = _x47*_x6
+        _pd__136 = -_x101**4*_x16*_x42 - k_d
+        _pd__137 = -_x17 - _x38
         _x48 = (0.582374038291501*_x13 + 0.12383458041329967*_x20 + 0.12383458041329967*_x21
             - 0.12383458041329967*_x25 - 0.0575898635297681*_x30 - 0.0575898635297681*_x31
             + 0.0575898635297681*_x35 + 0.5*_x4 + 0.016129321407969507*_x40 + 0.016129321407969507*_x41
@@ -3939,10 +3946,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _ift0 = _x49*_x52
         _x53 = (0.5)/_x50
         _x54 = _x51*_x53
-        _pd__160 = _x49*_x54
+        _pd__138 = _x49*_x54
         _x55 = _x48**(-1.5)
         _x56 = (0.5)*_x52
-        _pd__161 = -_x55*_x56
+        _pd__139 = -_x55*_x56
         _x57 = (1.0/_x51)
         _x58 = _x50*_x57
         _x59 = _x100**2
@@ -3950,11 +3957,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _x61 = _x58*_x60
         _ifq0 = _P0*_x61
         _x62 = _x53*_x57
-        _pd__162 = _P0*_x60*_x62
-        _pd__163 = _x61
+        _pd__140 = _P0*_x60*_x62
+        _pd__141 = _x61
         _x63 = (0.5)*_x58
-        _pd__164 = -_P0*_x55*_x59*_x63
-        _pd__165 = -_x11*_x14*_x49*_x58
+        _pd__142 = -_P0*_x55*_x59*_x63
+        _pd__143 = -_x11*_x14*_x49*_x58
         _x64 = g_s*m**(1.5)
         _x65 = _x50*_x64
         _x66 = _x49*_x65
@@ -3962,11 +3969,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _ifp0 = _x3*_x67
         _x68 = _x15*_x3
         _x69 = _x53*_x64
-        _pd__166 = _x49*_x68*_x69
-        _pd__167 = _x3*_x5*_x66
+        _pd__144 = _x49*_x68*_x69
+        _pd__145 = _x3*_x5*_x66
         _x70 = (0.5)*_x65
-        _pd__168 = -_x55*_x68*_x70
-        _pd__169 = _x67
+        _pd__146 = -_x55*_x68*_x70
+        _pd__147 = _x67
         _x71 = (0.16000937841634696*_x10*_x11*_x9 + 0.39252437029865583*_x10*_x22*_x23
             + 0.017475652789475504*_x10*_x42*_x43 - 0.39252437029865583*_x20 - 0.39252437029865583*_x21
             + 0.0700094015044783*_x28*k_d + 0.0700094015044783*_x29*g_s*m - 0.0700094015044783*_x35
@@ -3975,25 +3982,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _iPsi1 = _x71
         _x72 = (1.0/math.sqrt(_x71))
         _ift1 = _x52*_x72
-        _pd__170 = _x54*_x72
+        _pd__148 = _x54*_x72
         _x73 = _x71**(-1.5)
-        _pd__171 = -_x56*_x73
+        _pd__149 = -_x56*_x73
         _x74 = _x98**2
         _x75 = _x72*_x74
         _x76 = _x58*_x75
         _ifq1 = _P1*_x76
-        _pd__172 = _P1*_x62*_x75
-        _pd__173 = _x76
-        _pd__174 = -_P1*_x63*_x73*_x74
-        _pd__175 = -_x23*_x26*_x58*_x72
+        _pd__150 = _P1*_x62*_x75
+        _pd__151 = _x76
+        _pd__152 = -_P1*_x63*_x73*_x74
+        _pd__153 = -_x23*_x26*_x58*_x72
         _x77 = _x65*_x72
         _x78 = _x27*_x77
         _ifp1 = _x18*_x78
         _x79 = _x18*_x27
-        _pd__176 = _x69*_x72*_x79
-        _pd__177 = _x18*_x19*_x77
-        _pd__178 = -_x70*_x73*_x79
-        _pd__179 = _x78
+        _pd__154 = _x69*_x72*_x79
+        _pd__155 = _x18*_x19*_x77
+        _pd__156 = -_x70*_x73*_x79
+        _pd__157 = _x78
         _x80 = (0.01613725546399532*_x10*_x11*_x9 + 0.2848443432415939*_x10*_x22*_x23
             + 0.21871326539550162*_x10*_x32*_x33 - 0.2848443432415939*_x20 - 0.2848443432415939*_x21
             - 0.21871326539550162*_x30 - 0.21871326539550162*_x31 + 0.019694864101090868*_x38*k_d
@@ -4002,25 +4009,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _iPsi2 = _x80
         _x81 = (1.0/math.sqrt(_x80))
         _ift2 = _x52*_x81
-        _pd__180 = _x54*_x81
+        _pd__158 = _x54*_x81
         _x82 = _x80**(-1.5)
-        _pd__181 = -_x56*_x82
+        _pd__159 = -_x56*_x82
         _x83 = _x99**2
         _x84 = _x81*_x83
         _x85 = _x58*_x84
         _ifq2 = _P2*_x85
-        _pd__182 = _P2*_x62*_x84
-        _pd__183 = _x85
-        _pd__184 = -_P2*_x63*_x82*_x83
-        _pd__185 = -_x33*_x36*_x58*_x81
+        _pd__160 = _P2*_x62*_x84
+        _pd__161 = _x85
+        _pd__162 = -_P2*_x63*_x82*_x83
+        _pd__163 = -_x33*_x36*_x58*_x81
         _x86 = _x65*_x81
         _x87 = _x37*_x86
         _ifp2 = _x28*_x87
         _x88 = _x28*_x37
-        _pd__186 = _x69*_x81*_x88
-        _pd__187 = _x28*_x29*_x86
-        _pd__188 = -_x70*_x82*_x88
-        _pd__189 = _x87
+        _pd__164 = _x69*_x81*_x88
+        _pd__165 = _x28*_x29*_x86
+        _pd__166 = -_x70*_x82*_x88
+        _pd__167 = _x87
         _x89 = (0.01796104633752054*_x10*_x11*_x9 + 0.11000222456933441*_x10*_x22*_x23
             + 0.2823150697454702*_x10*_x32*_x33 + 0.08972165934767481*_x10*_x42*_x43
             - 0.11000222456933441*_x20 - 0.11000222456933441*_x21 - 0.2823150697454702*_x30
@@ -4029,25 +4036,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _iPsi3 = _x89
         _x90 = (1.0/math.sqrt(_x89))
         _ift3 = _x52*_x90
-        _pd__190 = _x54*_x90
+        _pd__168 = _x54*_x90
         _x91 = _x89**(-1.5)
-        _pd__191 = -_x56*_x91
+        _pd__169 = -_x56*_x91
         _x92 = _x101**2
         _x93 = _x90*_x92
         _x94 = _x58*_x93
         _ifq3 = _P3*_x94
-        _pd__192 = _P3*_x62*_x93
-        _pd__193 = _x94
-        _pd__194 = -_P3*_x63*_x91*_x92
-        _pd__195 = -_x43*_x46*_x58*_x90
+        _pd__170 = _P3*_x62*_x93
+        _pd__171 = _x94
+        _pd__172 = -_P3*_x63*_x91*_x92
+        _pd__173 = -_x43*_x46*_x58*_x90
         _x95 = _x65*_x90
         _x96 = _x47*_x95
         _ifp3 = _x38*_x96
         _x97 = _x38*_x47
-        _pd__196 = _x69*_x90*_x97
-        _pd__197 = _x38*_x39*_x95
-        _pd__198 = -_x70*_x91*_x97
-        _pd__199 = _x96
+        _pd__174 = _x69*_x90*_x97
+        _pd__175 = _x38*_x39*_x95
+        _pd__176 = -_x70*_x91*_x97
+        _pd__177 = _x96
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -4075,33 +4082,33 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
             _d_P3__j = _T[14, _j1]
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _d_isigma0__j = 0.004820780989426014*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__144 + _d_Q0__j*_pd__145 + _d_isigma0__j*_pd__146 + _pd__147*d_k_d__j
+            _d_iF0__j = _d_P0__j*_pd__122 + _d_Q0__j*_pd__123 + _d_isigma0__j*_pd__124 + _pd__125*d_k_d__j
             _d_isigma1__j = 0.10890625570683385*_d_D__j + d_q_r__j
-            _d_iF1__j = _d_P1__j*_pd__148 + _d_Q1__j*_pd__149 + _d_isigma1__j*_pd__150 + _pd__151*d_k_d__j
+            _d_iF1__j = _d_P1__j*_pd__126 + _d_Q1__j*_pd__127 + _d_isigma1__j*_pd__128 + _pd__129*d_k_d__j
             _d_isigma2__j = 0.44888729929169013*_d_D__j + d_q_r__j
-            _d_iF2__j = _d_P2__j*_pd__152 + _d_Q2__j*_pd__153 + _d_isigma2__j*_pd__154 + _pd__155*d_k_d__j
+            _d_iF2__j = _d_P2__j*_pd__130 + _d_Q2__j*_pd__131 + _d_isigma2__j*_pd__132 + _pd__133*d_k_d__j
             _d_isigma3__j = 0.8659570925834786*_d_D__j + d_q_r__j
-            _d_iF3__j = _d_P3__j*_pd__156 + _d_Q3__j*_pd__157 + _d_isigma3__j*_pd__158 + _pd__159*d_k_d__j
+            _d_iF3__j = _d_P3__j*_pd__134 + _d_Q3__j*_pd__135 + _d_isigma3__j*_pd__136 + _pd__137*d_k_d__j
             _d_iPsi0__j = (0.582374038291501*_d_iF0__j - 0.12383458041329967*_d_iF1__j
                 + 0.0575898635297681*_d_iF2__j - 0.016129321407969507*_d_iF3__j)
-            _d_ift0__j = _d_D__j*_pd__160 + _d_iPsi0__j*_pd__161
-            _d_ifq0__j = _d_D__j*_pd__162 + _d_P0__j*_pd__163 + _d_iPsi0__j*_pd__164 + _d_isigma0__j*_pd__165
-            _d_ifp0__j = _d_D__j*_pd__166 + _d_Q0__j*_pd__167 + _d_iPsi0__j*_pd__168 + _d_isigma0__j*_pd__169
+            _d_ift0__j = _d_D__j*_pd__138 + _d_iPsi0__j*_pd__139
+            _d_ifq0__j = _d_D__j*_pd__140 + _d_P0__j*_pd__141 + _d_iPsi0__j*_pd__142 + _d_isigma0__j*_pd__143
+            _d_ifp0__j = _d_D__j*_pd__144 + _d_Q0__j*_pd__145 + _d_iPsi0__j*_pd__146 + _d_isigma0__j*_pd__147
             _d_iPsi1__j = (0.16000937841634696*_d_iF0__j + 0.39252437029865583*_d_iF1__j
                 - 0.0700094015044783*_d_iF2__j + 0.017475652789475504*_d_iF3__j)
-            _d_ift1__j = _d_D__j*_pd__170 + _d_iPsi1__j*_pd__171
-            _d_ifq1__j = _d_D__j*_pd__172 + _d_P1__j*_pd__173 + _d_iPsi1__j*_pd__174 + _d_isigma1__j*_pd__175
-            _d_ifp1__j = _d_D__j*_pd__176 + _d_Q1__j*_pd__177 + _d_iPsi1__j*_pd__178 + _d_isigma1__j*_pd__179
+            _d_ift1__j = _d_D__j*_pd__148 + _d_iPsi1__j*_pd__149
+            _d_ifq1__j = _d_D__j*_pd__150 + _d_P1__j*_pd__151 + _d_iPsi1__j*_pd__152 + _d_isigma1__j*_pd__153
+            _d_ifp1__j = _d_D__j*_pd__154 + _d_Q1__j*_pd__155 + _d_iPsi1__j*_pd__156 + _d_isigma1__j*_pd__157
             _d_iPsi2__j = (0.01613725546399532*_d_iF0__j + 0.2848443432415939*_d_iF1__j
                 + 0.21871326539550162*_d_iF2__j - 0.019694864101090868*_d_iF3__j)
-            _d_ift2__j = _d_D__j*_pd__180 + _d_iPsi2__j*_pd__181
-            _d_ifq2__j = _d_D__j*_pd__182 + _d_P2__j*_pd__183 + _d_iPsi2__j*_pd__184 + _d_isigma2__j*_pd__185
-            _d_ifp2__j = _d_D__j*_pd__186 + _d_Q2__j*_pd__187 + _d_iPsi2__j*_pd__188 + _d_isigma2__j*_pd__189
+            _d_ift2__j = _d_D__j*_pd__158 + _d_iPsi2__j*_pd__159
+            _d_ifq2__j = _d_D__j*_pd__160 + _d_P2__j*_pd__161 + _d_iPsi2__j*_pd__162 + _d_isigma2__j*_pd__163
+            _d_ifp2__j = _d_D__j*_pd__164 + _d_Q2__j*_pd__165 + _d_iPsi2__j*_pd__166 + _d_isigma2__j*_pd__167
             _d_iPsi3__j = (0.01796104633752054*_d_iF0__j + 0.11000222456933441*_d_iF1__j
                 + 0.2823150697454702*_d_iF2__j + 0.08972165934767481*_d_iF3__j)
-            _d_ift3__j = _d_D__j*_pd__190 + _d_iPsi3__j*_pd__191
-            _d_ifq3__j = _d_D__j*_pd__192 + _d_P3__j*_pd__193 + _d_iPsi3__j*_pd__194 + _d_isigma3__j*_pd__195
-            _d_ifp3__j = _d_D__j*_pd__196 + _d_Q3__j*_pd__197 + _d_iPsi3__j*_pd__198 + _d_isigma3__j*_pd__199
+            _d_ift3__j = _d_D__j*_pd__168 + _d_iPsi3__j*_pd__169
+            _d_ifq3__j = _d_D__j*_pd__170 + _d_P3__j*_pd__171 + _d_iPsi3__j*_pd__172 + _d_isigma3__j*_pd__173
+            _d_ifp3__j = _d_D__j*_pd__174 + _d_Q3__j*_pd__175 + _d_iPsi3__j*_pd__176 + _d_isigma3__j*_pd__177
             _T[15, _j1] = _d_iF0__j
             _T[16, _j1] = _d_iF1__j
             _T[17, _j1] = _d_iF2__j
@@ -4135,20 +4142,20 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
         _P0__next = (0.08696371128436346*_ifp0 - 0.026604180084998794*_ifp1 + 0.012627462689404725*_ifp2
             - 0.0035551496857956833*_ifp3 + _x103)
         _x104 = 2.0*m*q_r*q_thd
-        _pd__200 = _x104
-        _pd__201 = _x102
+        _pd__178 = _x104
+        _pd__179 = _x102
         _P1__next = (0.18811811749986806*_ifp0 + 0.16303628871563652*_ifp1 - 0.027880428602470895*_ifp2
             + 0.006735500594538156*_ifp3 + _x103)
-        _pd__202 = _x104
-        _pd__203 = _x102
+        _pd__180 = _x104
+        _pd__181 = _x102
         _P2__next = (0.16719192197418878*_ifp0 + 0.35395300603374397*_ifp1 + 0.16303628871563652*_ifp2
             - 0.014190694931141144*_ifp3 + _x103)
-        _pd__204 = _x104
-        _pd__205 = _x102
+        _pd__182 = _x104
+        _pd__183 = _x102
         _P3__next = (0.1774825722545226*_ifp0 + 0.31344511474186837*_ifp1 + 0.35267675751627187*_ifp2
             + 0.08696371128436346*_ifp3 + _x103)
-        _pd__206 = _x104
-        _pd__207 = _x102
+        _pd__184 = _x104
+        _pd__185 = _x102
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_q_r__j = _T[3, _j2]
@@ -4173,17 +4180,17 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
             _d_Q3__next__j = (0.1774825722545226*_d_ifq0__j + 0.31344511474186837*_d_ifq1__j
                 + 0.35267675751627187*_d_ifq2__j + 0.08696371128436346*_d_ifq3__j + d_q_th__j)
             _d_P0__next__j = (0.08696371128436346*_d_ifp0__j - 0.026604180084998794*_d_ifp1__j
-                + 0.012627462689404725*_d_ifp2__j - 0.0035551496857956833*_d_ifp3__j + _pd__200*d_q_r__j
-                + _pd__201*d_q_thd__j)
+                + 0.012627462689404725*_d_ifp2__j - 0.0035551496857956833*_d_ifp3__j + _pd__178*d_q_r__j
+                + _pd__179*d_q_thd__j)
             _d_P1__next__j = (0.18811811749986806*_d_ifp0__j + 0.16303628871563652*_d_ifp1__j
-                - 0.027880428602470895*_d_ifp2__j + 0.006735500594538156*_d_ifp3__j + _pd__202*d_q_r__j
-                + _pd__203*d_q_thd__j)
+                - 0.027880428602470895*_d_ifp2__j + 0.006735500594538156*_d_ifp3__j + _pd__180*d_q_r__j
+                + _pd__181*d_q_thd__j)
             _d_P2__next__j = (0.16719192197418878*_d_ifp0__j + 0.35395300603374397*_d_ifp1__j
-                + 0.16303628871563652*_d_ifp2__j - 0.014190694931141144*_d_ifp3__j + _pd__204*d_q_r__j
-                + _pd__205*d_q_thd__j)
+                + 0.16303628871563652*_d_ifp2__j - 0.014190694931141144*_d_ifp3__j + _pd__182*d_q_r__j
+                + _pd__183*d_q_thd__j)
             _d_P3__next__j = (0.1774825722545226*_d_ifp0__j + 0.31344511474186837*_d_ifp1__j
-                + 0.35267675751627187*_d_ifp2__j + 0.08696371128436346*_d_ifp3__j + _pd__206*d_q_r__j
-                + _pd__207*d_q_thd__j)
+                + 0.35267675751627187*_d_ifp2__j + 0.08696371128436346*_d_ifp3__j + _pd__184*d_q_r__j
+                + _pd__185*d_q_thd__j)
             _T[6, _j2] = _d_D__j
             _T[7, _j2] = _d_Q0__next__j
             _T[8, _j2] = _d_Q1__next__j
@@ -4233,21 +4240,21 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
     end_q_r = q_r_lo
     _x105 = math.sqrt(_D*_work)/math.sqrt(m)
     end_q_rd = 2.0*_x105
-    _pd__208 = _x105/_D
-    _pd__209 = _x105/_work
+    _pd__186 = _x105/_D
+    _pd__187 = _x105/_work
     _x106 = q_r**2
     _x107 = q_r_lo**-2
     _x108 = _x107/m
     end_q_thd = (_x108*(0.17392742256872692*_ifp0 + 0.32607257743127305*_ifp1 + 0.32607257743127305*_ifp2
         + 0.17392742256872692*_ifp3 + _x106*m*q_thd))
     _x109 = 0.17392742256872692*_x108
-    _pd__210 = _x109
+    _pd__188 = _x109
     _x110 = 0.32607257743127305*_x108
-    _pd__211 = _x110
-    _pd__212 = _x110
-    _pd__213 = _x109
-    _pd__214 = 2.0*_x107*q_r*q_thd
-    _pd__215 = _x106*_x107
+    _pd__189 = _x110
+    _pd__190 = _x110
+    _pd__191 = _x109
+    _pd__192 = 2.0*_x107*q_r*q_thd
+    _pd__193 = _x106*_x107
     passes = _passes
     # their tangents, once per direction
     for _j3 in range(6):
@@ -4278,9 +4285,9 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
             + 0.32607257743127305*_d_ift2__j + 0.17392742256872692*_d_ift3__j)
         d_end_q_th__j = (0.17392742256872692*_d_ifq0__j + 0.32607257743127305*_d_ifq1__j
             + 0.32607257743127305*_d_ifq2__j + 0.17392742256872692*_d_ifq3__j + d_q_th__j)
-        d_end_q_rd__j = _d_D__j*_pd__208 + _d_work__j*_pd__209
-        d_end_q_thd__j = (_d_ifp0__j*_pd__210 + _d_ifp1__j*_pd__211 + _d_ifp2__j*_pd__212
-            + _d_ifp3__j*_pd__213 + _pd__214*d_q_r__j + _pd__215*d_q_thd__j)
+        d_end_q_rd__j = _d_D__j*_pd__186 + _d_work__j*_pd__187
+        d_end_q_thd__j = (_d_ifp0__j*_pd__188 + _d_ifp1__j*_pd__189 + _d_ifp2__j*_pd__190
+            + _d_ifp3__j*_pd__191 + _pd__192*d_q_r__j + _pd__193*d_q_thd__j)
         _T[31, _j3] = d_t_half__j
         _T[32, _j3] = d_end_q_th__j
         _T[33, _j3] = d_end_q_rd__j
@@ -4294,12 +4301,12 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, g
     (d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
         d_end_q_thd__guess_q_thd, ) = (_T[34, 0], _T[34, 1], _T[34, 2], _T[34, 3], _T[34, 4], _T[34, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-        d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
-        d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+        d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+        d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
+        d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd, d_end_q_th__k_d,
+        d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd,
+        d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4325,26 +4332,26 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
     (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], _T[5, 5], ) = (0.0, 0.0, 1.0, 0.0, 0.0, 0.0, )
     # the initial values
     _x0 = m*q_r_lo**2
-    _pd__216 = 0.03376524289842399*_x0
+    _pd__194 = 0.03376524289842399*_x0
     _x1 = m*q_r*q_thd
-    _pd__217 = 1.932469514203152*_x1
+    _pd__195 = 1.932469514203152*_x1
     _x2 = m*q_r**2
-    _pd__218 = 0.966234757101576*_x2
-    _pd__219 = 0.16939530676686773*_x0
-    _pd__220 = 1.6612093864662645*_x1
-    _pd__221 = 0.8306046932331322*_x2
-    _pd__222 = 0.38069040695840156*_x0
-    _pd__223 = 1.238619186083197*_x1
-    _pd__224 = 0.6193095930415985*_x2
-    _pd__225 = 0.6193095930415985*_x0
-    _pd__226 = 0.7613808139168031*_x1
-    _pd__227 = 0.38069040695840156*_x2
-    _pd__228 = 0.8306046932331322*_x0
-    _pd__229 = 0.33879061353373546*_x1
-    _pd__230 = 0.16939530676686773*_x2
-    _pd__231 = 0.966234757101576*_x0
-    _pd__232 = 0.06753048579684798*_x1
-    _pd__233 = 0.03376524289842399*_x2
+    _pd__196 = 0.966234757101576*_x2
+    _pd__197 = 0.16939530676686773*_x0
+    _pd__198 = 1.6612093864662645*_x1
+    _pd__199 = 0.8306046932331322*_x2
+    _pd__200 = 0.38069040695840156*_x0
+    _pd__201 = 1.238619186083197*_x1
+    _pd__202 = 0.6193095930415985*_x2
+    _pd__203 = 0.6193095930415985*_x0
+    _pd__204 = 0.7613808139168031*_x1
+    _pd__205 = 0.38069040695840156*_x2
+    _pd__206 = 0.8306046932331322*_x0
+    _pd__207 = 0.33879061353373546*_x1
+    _pd__208 = 0.16939530676686773*_x2
+    _pd__209 = 0.966234757101576*_x0
+    _pd__210 = 0.06753048579684798*_x1
+    _pd__211 = 0.03376524289842399*_x2
     # the initial values' tangents, once per direction
     for _j0 in range(6):
         d_guess_q_th__j = _T[0, _j0]
@@ -4359,12 +4366,12 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _d_Q3__start__j = 0.6193095930415985*d_guess_q_th__j + 0.38069040695840156*d_q_th__j
         _d_Q4__start__j = 0.8306046932331322*d_guess_q_th__j + 0.16939530676686773*d_q_th__j
         _d_Q5__start__j = 0.966234757101576*d_guess_q_th__j + 0.03376524289842399*d_q_th__j
-        _d_P0__start__j = _pd__216*d_guess_q_thd__j + _pd__217*d_q_r__j + _pd__218*d_q_thd__j
-        _d_P1__start__j = _pd__219*d_guess_q_thd__j + _pd__220*d_q_r__j + _pd__221*d_q_thd__j
-        _d_P2__start__j = _pd__222*d_guess_q_thd__j + _pd__223*d_q_r__j + _pd__224*d_q_thd__j
-        _d_P3__start__j = _pd__225*d_guess_q_thd__j + _pd__226*d_q_r__j + _pd__227*d_q_thd__j
-        _d_P4__start__j = _pd__228*d_guess_q_thd__j + _pd__229*d_q_r__j + _pd__230*d_q_thd__j
-        _d_P5__start__j = _pd__231*d_guess_q_thd__j + _pd__232*d_q_r__j + _pd__233*d_q_thd__j
+        _d_P0__start__j = _pd__194*d_guess_q_thd__j + _pd__195*d_q_r__j + _pd__196*d_q_thd__j
+        _d_P1__start__j = _pd__197*d_guess_q_thd__j + _pd__198*d_q_r__j + _pd__199*d_q_thd__j
+        _d_P2__start__j = _pd__200*d_guess_q_thd__j + _pd__201*d_q_r__j + _pd__202*d_q_thd__j
+        _d_P3__start__j = _pd__203*d_guess_q_thd__j + _pd__204*d_q_r__j + _pd__205*d_q_thd__j
+        _d_P4__start__j = _pd__206*d_guess_q_thd__j + _pd__207*d_q_r__j + _pd__208*d_q_thd__j
+        _d_P5__start__j = _pd__209*d_guess_q_thd__j + _pd__210*d_q_r__j + _pd__211*d_q_thd__j
         _T[6, _j0] = -d_q_r__j
         _T[7, _j0] = _d_Q0__start__j
         _T[8, _j0] = _d_Q1__start__j
@@ -4416,13 +4423,13 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x13 = _x12*_x9
         _iF0 = _x13 + _x4 - _x7 - _x8
         _x14 = 2.0*_P0
-        _pd__234 = _x12*_x14
+        _pd__212 = _x12*_x14
         _x15 = math.sin(_Q0)
-        _pd__235 = _x15*_x6
+        _pd__213 = _x15*_x6
         _x16 = 3.0*_x10
-        _pd__236 = -_x140**4*_x16*_x9 - k_d
+        _pd__214 = -_x140**4*_x16*_x9 - k_d
         _x17 = -l0
-        _pd__237 = -_x17 - _x3
+        _pd__215 = -_x17 - _x3
         _x18 = 0.02869476995464123*_D + q_r
         _isigma1 = _x18
         _x19 = math.cos(_Q1)
@@ -4435,11 +4442,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x25 = _x22*_x24
         _iF1 = -_x20 - _x21 + _x25 + _x4
         _x26 = 2.0*_P1
-        _pd__238 = _x24*_x26
+        _pd__216 = _x24*_x26
         _x27 = math.sin(_Q1)
-        _pd__239 = _x27*_x6
-        _pd__240 = -_x138**4*_x16*_x22 - k_d
-        _pd__241 = -_x17 - _x18
+        _pd__217 = _x27*_x6
+        _pd__218 = -_x138**4*_x16*_x22 - k_d
+        _pd__219 = -_x17 - _x18
         _x28 = 0.14492518595015338*_D + q_r
         _isigma2 = _x28
         _x29 = math.cos(_Q2)
@@ -4452,11 +4459,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x35 = _x32*_x34
         _iF2 = -_x30 - _x31 + _x35 + _x4
         _x36 = 2.0*_P2
-        _pd__242 = _x34*_x36
+        _pd__220 = _x34*_x36
         _x37 = math.sin(_Q2)
-        _pd__243 = _x37*_x6
-        _pd__244 = -_x139**4*_x16*_x32 - k_d
-        _pd__245 = -_x17 - _x28
+        _pd__221 = _x37*_x6
+        _pd__222 = -_x139**4*_x16*_x32 - k_d
+        _pd__223 = -_x17 - _x28
         _x38 = 0.3835443720333503*_D + q_r
         _isigma3 = _x38
         _x39 = math.cos(_Q3)
@@ -4469,11 +4476,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x45 = _x42*_x44
         _iF3 = _x4 - _x40 - _x41 + _x45
         _x46 = 2.0*_P3
-        _pd__246 = _x44*_x46
+        _pd__224 = _x44*_x46
         _x47 = math.sin(_Q3)
-        _pd__247 = _x47*_x6
-        _pd__248 = -_x141**4*_x16*_x42 - k_d
-        _pd__249 = -_x17 - _x38
+        _pd__225 = _x47*_x6
+        _pd__226 = -_x141**4*_x16*_x42 - k_d
+        _pd__227 = -_x17 - _x38
         _x48 = 0.6899041564209057*_D + q_r
         _isigma4 = _x48
         _x49 = math.cos(_Q4)
@@ -4486,11 +4493,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x55 = _x52*_x54
         _iF4 = _x4 - _x50 - _x51 + _x55
         _x56 = 2.0*_P4
-        _pd__250 = _x54*_x56
+        _pd__228 = _x54*_x56
         _x57 = math.sin(_Q4)
-        _pd__251 = _x57*_x6
-        _pd__252 = -_x142**4*_x16*_x52 - k_d
-        _pd__253 = -_x17 - _x48
+        _pd__229 = _x57*_x6
+        _pd__230 = -_x142**4*_x16*_x52 - k_d
+        _pd__231 = -_x17 - _x48
         _x58 = 0.9336096058311416*_D + q_r
         _isigma5 = _x58
         _x59 = math.cos(_Q5)
@@ -4503,11 +4510,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x65 = _x62*_x64
         _iF5 = _x4 - _x60 - _x61 + _x65
         _x66 = 2.0*_P5
-        _pd__254 = _x64*_x66
+        _pd__232 = _x64*_x66
         _x67 = math.sin(_Q5)
-        _pd__255 = _x6*_x67
-        _pd__256 = -_x143**4*_x16*_x62 - k_d
-        _pd__257 = -_x17 - _x58
+        _pd__233 = _x6*_x67
+        _pd__234 = -_x143**4*_x16*_x62 - k_d
+        _pd__235 = -_x17 - _x58
         _x68 = (0.5871580340658094*_x13 + 0.140380692261653*_x20 + 0.140380692261653*_x21
             - 0.140380692261653*_x25 - 0.08683151831711133*_x30 - 0.08683151831711133*_x31
             + 0.08683151831711133*_x35 + 0.5*_x4 + 0.052466581536012566*_x40 + 0.052466581536012566*_x41
@@ -4522,10 +4529,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _ift0 = _x69*_x72
         _x73 = (0.5)/_x70
         _x74 = _x71*_x73
-        _pd__258 = _x69*_x74
+        _pd__236 = _x69*_x74
         _x75 = _x68**(-1.5)
         _x76 = (0.5)*_x72
-        _pd__259 = -_x75*_x76
+        _pd__237 = -_x75*_x76
         _x77 = (1.0/_x71)
         _x78 = _x70*_x77
         _x79 = _x140**2
@@ -4533,11 +4540,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _x81 = _x78*_x80
         _ifq0 = _P0*_x81
         _x82 = _x73*_x77
-        _pd__260 = _P0*_x80*_x82
-        _pd__261 = _x81
+        _pd__238 = _P0*_x80*_x82
+        _pd__239 = _x81
         _x83 = (0.5)*_x78
-        _pd__262 = -_P0*_x75*_x79*_x83
-        _pd__263 = -_x11*_x14*_x69*_x78
+        _pd__240 = -_P0*_x75*_x79*_x83
+        _pd__241 = -_x11*_x14*_x69*_x78
         _x84 = g_s*m**(1.5)
         _x85 = _x70*_x84
         _x86 = _x69*_x85
@@ -4545,11 +4552,11 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _ifp0 = _x3*_x87
         _x88 = _x15*_x3
         _x89 = _x73*_x84
-        _pd__264 = _x69*_x88*_x89
-        _pd__265 = _x3*_x5*_x86
+        _pd__242 = _x69*_x88*_x89
+        _pd__243 = _x3*_x5*_x86
         _x90 = (0.5)*_x85
-        _pd__266 = -_x75*_x88*_x90
-        _pd__267 = _x87
+        _pd__244 = -_x75*_x88*_x90
+        _pd__245 = _x87
         _x91 = -0.5*k_d*l0
         _x92 = (0.147790320897128*_x10*_x11*_x9 + 0.41567911405660357*_x10*_x22*_x23
             + 0.05155355009455148*_x10*_x42*_x43 + 0.006904529857608445*_x10*_x62*_x63
@@ -4561,25 +4568,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _iPsi1 = _x92
         _x93 = (1.0/math.sqrt(_x92))
         _ift1 = _x72*_x93
-        _pd__268 = _x74*_x93
+        _pd__246 = _x74*_x93
         _x94 = _x92**(-1.5)
-        _pd__269 = -_x76*_x94
+        _pd__247 = -_x76*_x94
         _x95 = _x138**2
         _x96 = _x93*_x95
         _x97 = _x78*_x96
         _ifq1 = _P1*_x97
-        _pd__270 = _P1*_x82*_x96
-        _pd__271 = _x97
-        _pd__272 = -_P1*_x83*_x94*_x95
-        _pd__273 = -_x23*_x26*_x78*_x93
+        _pd__248 = _P1*_x82*_x96
+        _pd__249 = _x97
+        _pd__250 = -_P1*_x83*_x94*_x95
+        _pd__251 = -_x23*_x26*_x78*_x93
         _x98 = _x85*_x93
         _x99 = _x27*_x98
         _ifp1 = _x18*_x99
         _x100 = _x18*_x27
-        _pd__274 = _x100*_x89*_x93
-        _pd__275 = _x18*_x19*_x98
-        _pd__276 = -_x100*_x90*_x94
-        _pd__277 = _x99
+        _pd__252 = _x100*_x89*_x93
+        _pd__253 = _x18*_x19*_x98
+        _pd__254 = -_x100*_x90*_x94
+        _pd__255 = _x99
         _x101 = (0.010443786721981197*_x10*_x11*_x9 + 0.25540525119175433*_x10*_x22*_x23
             + 0.2685463444140672*_x10*_x32*_x33 + 0.01951903325298492*_x10*_x52*_x53
             - 0.25540525119175433*_x20 - 0.25540525119175433*_x21 - 0.2685463444140672*_x30
@@ -4590,25 +4597,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _iPsi2 = _x101
         _x102 = (1.0/math.sqrt(_x101))
         _ift2 = _x102*_x72
-        _pd__278 = _x102*_x74
+        _pd__256 = _x102*_x74
         _x103 = _x101**(-1.5)
-        _pd__279 = -_x103*_x76
+        _pd__257 = -_x103*_x76
         _x104 = _x139**2
         _x105 = _x102*_x104
         _x106 = _x105*_x78
         _ifq2 = _P2*_x106
-        _pd__280 = _P2*_x105*_x82
-        _pd__281 = _x106
-        _pd__282 = -_P2*_x103*_x104*_x83
-        _pd__283 = -_x102*_x33*_x36*_x78
+        _pd__258 = _P2*_x105*_x82
+        _pd__259 = _x106
+        _pd__260 = -_P2*_x103*_x104*_x83
+        _pd__261 = -_x102*_x33*_x36*_x78
         _x107 = _x102*_x85
         _x108 = _x107*_x37
         _ifp2 = _x108*_x28
         _x109 = _x28*_x37
-        _pd__284 = _x102*_x109*_x89
-        _pd__285 = _x107*_x28*_x29
-        _pd__286 = -_x103*_x109*_x90
-        _pd__287 = _x108
+        _pd__262 = _x102*_x109*_x89
+        _pd__263 = _x107*_x28*_x29
+        _pd__264 = -_x103*_x109*_x90
+        _pd__265 = _x108
         _x110 = -0.5*k_d*l0
         _x111 = (0.01101839635505667*_x10*_x11*_x9 + 0.0662099828438604*_x10*_x22*_x23
             + 0.2671819482314443*_x10*_x32*_x33 + 0.1742495636223592*_x10*_x42*_x43
@@ -4620,25 +4627,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _iPsi3 = _x111
         _x112 = (1.0/math.sqrt(_x111))
         _ift3 = _x112*_x72
-        _pd__288 = _x112*_x74
+        _pd__266 = _x112*_x74
         _x113 = _x111**(-1.5)
-        _pd__289 = -_x113*_x76
+        _pd__267 = -_x113*_x76
         _x114 = _x141**2
         _x115 = _x112*_x114
         _x116 = _x115*_x78
         _ifq3 = _P3*_x116
-        _pd__290 = _P3*_x115*_x82
-        _pd__291 = _x116
-        _pd__292 = -_P3*_x113*_x114*_x83
-        _pd__293 = -_x112*_x43*_x46*_x78
+        _pd__268 = _P3*_x115*_x82
+        _pd__269 = _x116
+        _pd__270 = -_P3*_x113*_x114*_x83
+        _pd__271 = -_x112*_x43*_x46*_x78
         _x117 = _x112*_x85
         _x118 = _x117*_x47
         _ifp3 = _x118*_x38
         _x119 = _x38*_x47
-        _pd__294 = _x112*_x119*_x89
-        _pd__295 = _x117*_x38*_x39
-        _pd__296 = -_x113*_x119*_x90
-        _pd__297 = _x118
+        _pd__272 = _x112*_x119*_x89
+        _pd__273 = _x117*_x38*_x39
+        _pd__274 = -_x113*_x119*_x90
+        _pd__275 = _x118
         _x120 = (0.0025147977064533143*_x10*_x11*_x9 + 0.050345455482979015*_x10*_x22*_x23
             + 0.11622097556712797*_x10*_x32*_x33 + 0.2353986790647292*_x10*_x42*_x43
             + 0.10372825048336794*_x10*_x52*_x53 - 0.050345455482979015*_x20 - 0.050345455482979015*_x21
@@ -4649,25 +4656,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _iPsi4 = _x120
         _x121 = (1.0/math.sqrt(_x120))
         _ift4 = _x121*_x72
-        _pd__298 = _x121*_x74
+        _pd__276 = _x121*_x74
         _x122 = _x120**(-1.5)
-        _pd__299 = -_x122*_x76
+        _pd__277 = -_x122*_x76
         _x123 = _x142**2
         _x124 = _x121*_x123
         _x125 = _x124*_x78
         _ifq4 = _P4*_x125
-        _pd__300 = _P4*_x124*_x82
-        _pd__301 = _x125
-        _pd__302 = -_P4*_x122*_x123*_x83
-        _pd__303 = -_x121*_x53*_x56*_x78
+        _pd__278 = _P4*_x124*_x82
+        _pd__279 = _x125
+        _pd__280 = -_P4*_x122*_x123*_x83
+        _pd__281 = -_x121*_x53*_x56*_x78
         _x126 = _x121*_x85
         _x127 = _x126*_x57
         _ifp4 = _x127*_x48
         _x128 = _x48*_x57
-        _pd__304 = _x121*_x128*_x89
-        _pd__305 = _x126*_x48*_x49
-        _pd__306 = -_x122*_x128*_x90
-        _pd__307 = _x127
+        _pd__282 = _x121*_x128*_x89
+        _pd__283 = _x126*_x48*_x49
+        _pd__284 = -_x122*_x128*_x90
+        _pd__285 = _x127
         _x129 = (0.003959513229722528*_x10*_x11*_x9 + 0.029703284805013122*_x10*_x22*_x23
             + 0.10140664131431479*_x10*_x32*_x33 + 0.14531313573962065*_x10*_x42*_x43
             + 0.17612158869639333*_x10*_x52*_x53 + 0.04349583621493557*_x10*_x62*_x63 - _x110
@@ -4678,25 +4685,25 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _iPsi5 = _x129
         _x130 = (1.0/math.sqrt(_x129))
         _ift5 = _x130*_x72
-        _pd__308 = _x130*_x74
+        _pd__286 = _x130*_x74
         _x131 = _x129**(-1.5)
-        _pd__309 = -_x131*_x76
+        _pd__287 = -_x131*_x76
         _x132 = _x143**2
         _x133 = _x130*_x132
         _x134 = _x133*_x78
         _ifq5 = _P5*_x134
-        _pd__310 = _P5*_x133*_x82
-        _pd__311 = _x134
-        _pd__312 = -_P5*_x131*_x132*_x83
-        _pd__313 = -_x130*_x63*_x66*_x78
+        _pd__288 = _P5*_x133*_x82
+        _pd__289 = _x134
+        _pd__290 = -_P5*_x131*_x132*_x83
+        _pd__291 = -_x130*_x63*_x66*_x78
         _x135 = _x130*_x85
         _x136 = _x135*_x67
         _ifp5 = _x136*_x58
         _x137 = _x58*_x67
-        _pd__314 = _x130*_x137*_x89
-        _pd__315 = _x135*_x58*_x59
-        _pd__316 = -_x131*_x137*_x90
-        _pd__317 = _x136
+        _pd__292 = _x130*_x137*_x89
+        _pd__293 = _x135*_x58*_x59
+        _pd__294 = -_x131*_x137*_x90
+        _pd__295 = _x136
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN30 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -4734,53 +4741,53 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
             _d_P5__j = _T[18, _j1]
             # node values: sigma, F_r (29), Psi, u-rates of (30)-(32)
             _d_isigma0__j = 0.0011400916279895713*_d_D__j + d_q_r__j
-            _d_iF0__j = _d_P0__j*_pd__234 + _d_Q0__j*_pd__235 + _d_isigma0__j*_pd__236 + _pd__237*d_k_d__j
+            _d_iF0__j = _d_P0__j*_pd__212 + _d_Q0__j*_pd__213 + _d_isigma0__j*_pd__214 + _pd__215*d_k_d__j
             _d_isigma1__j = 0.02869476995464123*_d_D__j + d_q_r__j
-            _d_iF1__j = _d_P1__j*_pd__238 + _d_Q1__j*_pd__239 + _d_isigma1__j*_pd__240 + _pd__241*d_k_d__j
+            _d_iF1__j = _d_P1__j*_pd__216 + _d_Q1__j*_pd__217 + _d_isigma1__j*_pd__218 + _pd__219*d_k_d__j
             _d_isigma2__j = 0.14492518595015338*_d_D__j + d_q_r__j
-            _d_iF2__j = _d_P2__j*_pd__242 + _d_Q2__j*_pd__243 + _d_isigma2__j*_pd__244 + _pd__245*d_k_d__j
+            _d_iF2__j = _d_P2__j*_pd__220 + _d_Q2__j*_pd__221 + _d_isigma2__j*_pd__222 + _pd__223*d_k_d__j
             _d_isigma3__j = 0.3835443720333503*_d_D__j + d_q_r__j
-            _d_iF3__j = _d_P3__j*_pd__246 + _d_Q3__j*_pd__247 + _d_isigma3__j*_pd__248 + _pd__249*d_k_d__j
+            _d_iF3__j = _d_P3__j*_pd__224 + _d_Q3__j*_pd__225 + _d_isigma3__j*_pd__226 + _pd__227*d_k_d__j
             _d_isigma4__j = 0.6899041564209057*_d_D__j + d_q_r__j
-            _d_iF4__j = _d_P4__j*_pd__250 + _d_Q4__j*_pd__251 + _d_isigma4__j*_pd__252 + _pd__253*d_k_d__j
+            _d_iF4__j = _d_P4__j*_pd__228 + _d_Q4__j*_pd__229 + _d_isigma4__j*_pd__230 + _pd__231*d_k_d__j
             _d_isigma5__j = 0.9336096058311416*_d_D__j + d_q_r__j
-            _d_iF5__j = _d_P5__j*_pd__254 + _d_Q5__j*_pd__255 + _d_isigma5__j*_pd__256 + _pd__257*d_k_d__j
+            _d_iF5__j = _d_P5__j*_pd__232 + _d_Q5__j*_pd__233 + _d_isigma5__j*_pd__234 + _pd__235*d_k_d__j
             _d_iPsi0__j = (0.5871580340658094*_d_iF0__j - 0.140380692261653*_d_iF1__j
                 + 0.08683151831711133*_d_iF2__j - 0.052466581536012566*_d_iF3__j
                 + 0.026354606039126004*_d_iF4__j - 0.007496884624381081*_d_iF5__j)
-            _d_ift0__j = _d_D__j*_pd__258 + _d_iPsi0__j*_pd__259
-            _d_ifq0__j = _d_D__j*_pd__260 + _d_P0__j*_pd__261 + _d_iPsi0__j*_pd__262 + _d_isigma0__j*_pd__263
-            _d_ifp0__j = _d_D__j*_pd__264 + _d_Q0__j*_pd__265 + _d_iPsi0__j*_pd__266 + _d_isigma0__j*_pd__267
+            _d_ift0__j = _d_D__j*_pd__236 + _d_iPsi0__j*_pd__237
+            _d_ifq0__j = _d_D__j*_pd__238 + _d_P0__j*_pd__239 + _d_iPsi0__j*_pd__240 + _d_isigma0__j*_pd__241
+            _d_ifp0__j = _d_D__j*_pd__242 + _d_Q0__j*_pd__243 + _d_iPsi0__j*_pd__244 + _d_isigma0__j*_pd__245
             _d_iPsi1__j = (0.147790320897128*_d_iF0__j + 0.41567911405660357*_d_iF1__j
                 - 0.09720828549085844*_d_iF2__j + 0.05155355009455148*_d_iF3__j
                 - 0.024719229415033087*_d_iF4__j + 0.006904529857608445*_d_iF5__j)
-            _d_ift1__j = _d_D__j*_pd__268 + _d_iPsi1__j*_pd__269
-            _d_ifq1__j = _d_D__j*_pd__270 + _d_P1__j*_pd__271 + _d_iPsi1__j*_pd__272 + _d_isigma1__j*_pd__273
-            _d_ifp1__j = _d_D__j*_pd__274 + _d_Q1__j*_pd__275 + _d_iPsi1__j*_pd__276 + _d_isigma1__j*_pd__277
+            _d_ift1__j = _d_D__j*_pd__246 + _d_iPsi1__j*_pd__247
+            _d_ifq1__j = _d_D__j*_pd__248 + _d_P1__j*_pd__249 + _d_iPsi1__j*_pd__250 + _d_isigma1__j*_pd__251
+            _d_ifp1__j = _d_D__j*_pd__252 + _d_Q1__j*_pd__253 + _d_iPsi1__j*_pd__254 + _d_isigma1__j*_pd__255
             _d_iPsi2__j = (0.010443786721981197*_d_iF0__j + 0.25540525119175433*_d_iF1__j
                 + 0.2685463444140672*_d_iF2__j - 0.048794612428541204*_d_iF3__j
                 + 0.01951903325298492*_d_iF4__j - 0.005119803152246505*_d_iF5__j)
-            _d_ift2__j = _d_D__j*_pd__278 + _d_iPsi2__j*_pd__279
-            _d_ifq2__j = _d_D__j*_pd__280 + _d_P2__j*_pd__281 + _d_iPsi2__j*_pd__282 + _d_isigma2__j*_pd__283
-            _d_ifp2__j = _d_D__j*_pd__284 + _d_Q2__j*_pd__285 + _d_iPsi2__j*_pd__286 + _d_isigma2__j*_pd__287
+            _d_ift2__j = _d_D__j*_pd__256 + _d_iPsi2__j*_pd__257
+            _d_ifq2__j = _d_D__j*_pd__258 + _d_P2__j*_pd__259 + _d_iPsi2__j*_pd__260 + _d_isigma2__j*_pd__261
+            _d_ifp2__j = _d_D__j*_pd__262 + _d_Q2__j*_pd__263 + _d_iPsi2__j*_pd__264 + _d_isigma2__j*_pd__265
             _d_iPsi3__j = (0.01101839635505667*_d_iF0__j + 0.0662099828438604*_d_iF1__j
                 + 0.2671819482314443*_d_iF2__j + 0.1742495636223592*_d_iF3__j - 0.02396692958086051*_d_iF4__j
                 + 0.00530703852813994*_d_iF5__j)
-            _d_ift3__j = _d_D__j*_pd__288 + _d_iPsi3__j*_pd__289
-            _d_ifq3__j = _d_D__j*_pd__290 + _d_P3__j*_pd__291 + _d_iPsi3__j*_pd__292 + _d_isigma3__j*_pd__293
-            _d_ifp3__j = _d_D__j*_pd__294 + _d_Q3__j*_pd__295 + _d_iPsi3__j*_pd__296 + _d_isigma3__j*_pd__297
+            _d_ift3__j = _d_D__j*_pd__266 + _d_iPsi3__j*_pd__267
+            _d_ifq3__j = _d_D__j*_pd__268 + _d_P3__j*_pd__269 + _d_iPsi3__j*_pd__270 + _d_isigma3__j*_pd__271
+            _d_ifp3__j = _d_D__j*_pd__272 + _d_Q3__j*_pd__273 + _d_iPsi3__j*_pd__274 + _d_isigma3__j*_pd__275
             _d_iPsi4__j = (0.0025147977064533143*_d_iF0__j + 0.050345455482979015*_d_iF1__j
                 + 0.11622097556712797*_d_iF2__j + 0.2353986790647292*_d_iF3__j + 0.10372825048336794*_d_iF4__j
                 - 0.008208158304657426*_d_iF5__j)
-            _d_ift4__j = _d_D__j*_pd__298 + _d_iPsi4__j*_pd__299
-            _d_ifq4__j = _d_D__j*_pd__300 + _d_P4__j*_pd__301 + _d_iPsi4__j*_pd__302 + _d_isigma4__j*_pd__303
-            _d_ifp4__j = _d_D__j*_pd__304 + _d_Q4__j*_pd__305 + _d_iPsi4__j*_pd__306 + _d_isigma4__j*_pd__307
+            _d_ift4__j = _d_D__j*_pd__276 + _d_iPsi4__j*_pd__277
+            _d_ifq4__j = _d_D__j*_pd__278 + _d_P4__j*_pd__279 + _d_iPsi4__j*_pd__280 + _d_isigma4__j*_pd__281
+            _d_ifp4__j = _d_D__j*_pd__282 + _d_Q4__j*_pd__283 + _d_iPsi4__j*_pd__284 + _d_isigma4__j*_pd__285
             _d_iPsi5__j = (0.003959513229722528*_d_iF0__j + 0.029703284805013122*_d_iF1__j
                 + 0.10140664131431479*_d_iF2__j + 0.14531313573962065*_d_iF3__j
                 + 0.17612158869639333*_d_iF4__j + 0.04349583621493557*_d_iF5__j)
-            _d_ift5__j = _d_D__j*_pd__308 + _d_iPsi5__j*_pd__309
-            _d_ifq5__j = _d_D__j*_pd__310 + _d_P5__j*_pd__311 + _d_iPsi5__j*_pd__312 + _d_isigma5__j*_pd__313
-            _d_ifp5__j = _d_D__j*_pd__314 + _d_Q5__j*_pd__315 + _d_iPsi5__j*_pd__316 + _d_isigma5__j*_pd__317
+            _d_ift5__j = _d_D__j*_pd__286 + _d_iPsi5__j*_pd__287
+            _d_ifq5__j = _d_D__j*_pd__288 + _d_P5__j*_pd__289 + _d_iPsi5__j*_pd__290 + _d_isigma5__j*_pd__291
+            _d_ifp5__j = _d_D__j*_pd__292 + _d_Q5__j*_pd__293 + _d_iPsi5__j*_pd__294 + _d_isigma5__j*_pd__295
             _T[19, _j1] = _d_iF0__j
             _T[20, _j1] = _d_iF1__j
             _T[21, _j1] = _d_iF2__j
@@ -4826,28 +4833,28 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         _P0__next = (0.04283112309479259*_ifp0 - 0.014763725997197413*_ifp1 + 0.009325050706477751*_ifp2
             - 0.005668858049483512*_ifp3 + 0.002854433315099335*_ifp4 - 0.0008127801712647621*_ifp5 + _x145)
         _x146 = 2.0*m*q_r*q_thd
-        _pd__318 = _x146
-        _pd__319 = _x144
+        _pd__296 = _x146
+        _pd__297 = _x144
         _P1__next = (0.09267349143037887*_ifp0 + 0.09019039326203465*_ifp1 - 0.020300102293239586*_ifp2
             + 0.010363156240246424*_ifp3 - 0.004887192928037671*_ifp4 + 0.0013555610554850618*_ifp5 + _x145)
-        _pd__320 = _x146
-        _pd__321 = _x144
+        _pd__298 = _x146
+        _pd__299 = _x144
         _P2__next = (0.08224792261284387*_ifp0 + 0.196032162333245*_ifp1 + 0.11697848364317276*_ifp2
             - 0.020482527745656096*_ifp3 + 0.007989991899662336*_ifp4 - 0.002075625784866334*_ifp5 + _x145)
-        _pd__322 = _x146
-        _pd__323 = _x144
+        _pd__300 = _x146
+        _pd__301 = _x144
         _P3__next = (0.0877378719744515*_ifp0 + 0.17239079462440696*_ifp1 + 0.25443949503200164*_ifp2
             + 0.11697848364317276*_ifp3 - 0.0156513758091757*_ifp4 + 0.0034143235767412987*_ifp5 + _x145)
-        _pd__324 = _x146
-        _pd__325 = _x144
+        _pd__302 = _x146
+        _pd__303 = _x144
         _P4__next = (0.08430668513410011*_ifp0 + 0.18526797945210696*_ifp1 + 0.2235938110460991*_ifp2
             + 0.2542570695795851*_ifp3 + 0.09019039326203465*_ifp4 - 0.007011245240793691*_ifp5 + _x145)
-        _pd__326 = _x146
-        _pd__327 = _x144
+        _pd__304 = _x146
+        _pd__305 = _x144
         _P5__next = (0.08647502636084993*_ifp0 + 0.17752635320896998*_ifp1 + 0.23962582533582905*_ifp2
             + 0.22463191657986778*_ifp3 + 0.19514451252126672*_ifp4 + 0.04283112309479259*_ifp5 + _x145)
-        _pd__328 = _x146
-        _pd__329 = _x144
+        _pd__306 = _x146
+        _pd__307 = _x144
         # the next state's tangents, once per direction
         for _j2 in range(6):
             d_q_r__j = _T[3, _j2]
@@ -4887,28 +4894,28 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
                 + 0.19514451252126672*_d_ifq4__j + 0.04283112309479259*_d_ifq5__j + d_q_th__j)
             _d_P0__next__j = (0.04283112309479259*_d_ifp0__j - 0.014763725997197413*_d_ifp1__j
                 + 0.009325050706477751*_d_ifp2__j - 0.005668858049483512*_d_ifp3__j
-                + 0.002854433315099335*_d_ifp4__j - 0.0008127801712647621*_d_ifp5__j + _pd__318*d_q_r__j
-                + _pd__319*d_q_thd__j)
+                + 0.002854433315099335*_d_ifp4__j - 0.0008127801712647621*_d_ifp5__j + _pd__296*d_q_r__j
+                + _pd__297*d_q_thd__j)
             _d_P1__next__j = (0.09267349143037887*_d_ifp0__j + 0.09019039326203465*_d_ifp1__j
                 - 0.020300102293239586*_d_ifp2__j + 0.010363156240246424*_d_ifp3__j
-                - 0.004887192928037671*_d_ifp4__j + 0.0013555610554850618*_d_ifp5__j + _pd__320*d_q_r__j
-                + _pd__321*d_q_thd__j)
+                - 0.004887192928037671*_d_ifp4__j + 0.0013555610554850618*_d_ifp5__j + _pd__298*d_q_r__j
+                + _pd__299*d_q_thd__j)
             _d_P2__next__j = (0.08224792261284387*_d_ifp0__j + 0.196032162333245*_d_ifp1__j
                 + 0.11697848364317276*_d_ifp2__j - 0.020482527745656096*_d_ifp3__j
-                + 0.007989991899662336*_d_ifp4__j - 0.002075625784866334*_d_ifp5__j + _pd__322*d_q_r__j
-                + _pd__323*d_q_thd__j)
+                + 0.007989991899662336*_d_ifp4__j - 0.002075625784866334*_d_ifp5__j + _pd__300*d_q_r__j
+                + _pd__301*d_q_thd__j)
             _d_P3__next__j = (0.0877378719744515*_d_ifp0__j + 0.17239079462440696*_d_ifp1__j
                 + 0.25443949503200164*_d_ifp2__j + 0.11697848364317276*_d_ifp3__j
-                - 0.0156513758091757*_d_ifp4__j + 0.0034143235767412987*_d_ifp5__j + _pd__324*d_q_r__j
-                + _pd__325*d_q_thd__j)
+                - 0.0156513758091757*_d_ifp4__j + 0.0034143235767412987*_d_ifp5__j + _pd__302*d_q_r__j
+                + _pd__303*d_q_thd__j)
             _d_P4__next__j = (0.08430668513410011*_d_ifp0__j + 0.18526797945210696*_d_ifp1__j
                 + 0.2235938110460991*_d_ifp2__j + 0.2542570695795851*_d_ifp3__j
-                + 0.09019039326203465*_d_ifp4__j - 0.007011245240793691*_d_ifp5__j + _pd__326*d_q_r__j
-                + _pd__327*d_q_thd__j)
+                + 0.09019039326203465*_d_ifp4__j - 0.007011245240793691*_d_ifp5__j + _pd__304*d_q_r__j
+                + _pd__305*d_q_thd__j)
             _d_P5__next__j = (0.08647502636084993*_d_ifp0__j + 0.17752635320896998*_d_ifp1__j
                 + 0.23962582533582905*_d_ifp2__j + 0.22463191657986778*_d_ifp3__j
-                + 0.19514451252126672*_d_ifp4__j + 0.04283112309479259*_d_ifp5__j + _pd__328*d_q_r__j
-                + _pd__329*d_q_thd__j)
+                + 0.19514451252126672*_d_ifp4__j + 0.04283112309479259*_d_ifp5__j + _pd__306*d_q_r__j
+                + _pd__307*d_q_thd__j)
             _T[6, _j2] = _d_D__j
             _T[7, _j2] = _d_Q0__next__j
             _T[8, _j2] = _d_Q1__next__j
@@ -4973,24 +4980,24 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
     end_q_r = q_r_lo
     _x147 = math.sqrt(_D*_work)/math.sqrt(m)
     end_q_rd = 2.0*_x147
-    _pd__330 = _x147/_D
-    _pd__331 = _x147/_work
+    _pd__308 = _x147/_D
+    _pd__309 = _x147/_work
     _x148 = q_r**2
     _x149 = q_r_lo**-2
     _x150 = _x149/m
     end_q_thd = (_x150*(0.08566224618958518*_ifp0 + 0.1803807865240693*_ifp1 + 0.23395696728634552*_ifp2
         + 0.23395696728634552*_ifp3 + 0.1803807865240693*_ifp4 + 0.08566224618958518*_ifp5 + _x148*m*q_thd))
     _x151 = 0.08566224618958518*_x150
-    _pd__332 = _x151
+    _pd__310 = _x151
     _x152 = 0.1803807865240693*_x150
-    _pd__333 = _x152
+    _pd__311 = _x152
     _x153 = 0.23395696728634552*_x150
-    _pd__334 = _x153
-    _pd__335 = _x153
-    _pd__336 = _x152
-    _pd__337 = _x151
-    _pd__338 = 2.0*_x149*q_r*q_thd
-    _pd__339 = _x148*_x149
+    _pd__312 = _x153
+    _pd__313 = _x153
+    _pd__314 = _x152
+    _pd__315 = _x151
+    _pd__316 = 2.0*_x149*q_r*q_thd
+    _pd__317 = _x148*_x149
     passes = _passes
     # their tangents, once per direction
     for _j3 in range(6):
@@ -5032,10 +5039,10 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
         d_end_q_th__j = (0.08566224618958518*_d_ifq0__j + 0.1803807865240693*_d_ifq1__j
             + 0.23395696728634552*_d_ifq2__j + 0.23395696728634552*_d_ifq3__j + 0.1803807865240693*_d_ifq4__j
             + 0.08566224618958518*_d_ifq5__j + d_q_th__j)
-        d_end_q_rd__j = _d_D__j*_pd__330 + _d_work__j*_pd__331
-        d_end_q_thd__j = (_d_ifp0__j*_pd__332 + _d_ifp1__j*_pd__333 + _d_ifp2__j*_pd__334
-            + _d_ifp3__j*_pd__335 + _d_ifp4__j*_pd__336 + _d_ifp5__j*_pd__337 + _pd__338*d_q_r__j
-            + _pd__339*d_q_thd__j)
+        d_end_q_rd__j = _d_D__j*_pd__308 + _d_work__j*_pd__309
+        d_end_q_thd__j = (_d_ifp0__j*_pd__310 + _d_ifp1__j*_pd__311 + _d_ifp2__j*_pd__312
+            + _d_ifp3__j*_pd__313 + _d_ifp4__j*_pd__314 + _d_ifp5__j*_pd__315 + _pd__316*d_q_r__j
+            + _pd__317*d_q_thd__j)
         _T[43, _j3] = d_t_half__j
         _T[44, _j3] = d_end_q_th__j
         _T[45, _j3] = d_end_q_rd__j
@@ -5049,12 +5056,12 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, g
     (d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
         d_end_q_thd__guess_q_thd, ) = (_T[46, 0], _T[46, 1], _T[46, 2], _T[46, 3], _T[46, 4], _T[46, 5], )
     # (internal helper: its callers check that their outputs are finite)
-    return (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-        d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
-        d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
-        d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, STATUS_OK)
+    return (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+        d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+        d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th,
+        d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd, d_end_q_th__k_d,
+        d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th, d_t_half__q_thd,
+        d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5121,60 +5128,60 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             guess_q_thd, iterations, k_d, l0, m, q_r, q_r_lo, q_th, q_thd, tol))
         if _c0[30] != STATUS_OK:
             return _NAN42 + (_c0[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-            d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-            d_end_q_th__guess_q_thd, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d,
-            d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-            d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, _) = _c0
+        (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+            d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+            d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
+            d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd,
+            d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th,
+            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, _) = _c0
     elif nodes == 1.0:
         # branch nodes = 1
         _c1 = (schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_1(g_s, guess_q_th,
             guess_q_thd, iterations, k_d, l0, m, q_r, q_r_lo, q_th, q_thd, tol))
         if _c1[30] != STATUS_OK:
             return _NAN42 + (_c1[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-            d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-            d_end_q_th__guess_q_thd, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d,
-            d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-            d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, _) = _c1
+        (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+            d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+            d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
+            d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd,
+            d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th,
+            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, _) = _c1
     elif nodes == 2.0:
         # branch nodes = 2
         _c2 = (schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_2(g_s, guess_q_th,
             guess_q_thd, iterations, k_d, l0, m, q_r, q_r_lo, q_th, q_thd, tol))
         if _c2[30] != STATUS_OK:
             return _NAN42 + (_c2[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-            d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-            d_end_q_th__guess_q_thd, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d,
-            d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-            d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, _) = _c2
+        (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+            d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+            d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
+            d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd,
+            d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th,
+            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, _) = _c2
     elif nodes == 3.0:
         # branch nodes = 3
         _c3 = (schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_3(g_s, guess_q_th,
             guess_q_thd, iterations, k_d, l0, m, q_r, q_r_lo, q_th, q_thd, tol))
         if _c3[30] != STATUS_OK:
             return _NAN42 + (_c3[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-            d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-            d_end_q_th__guess_q_thd, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d,
-            d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-            d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, _) = _c3
+        (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+            d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+            d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
+            d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd,
+            d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th,
+            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, _) = _c3
     elif nodes == 4.0:
         # branch nodes = 4
         _c4 = (schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd_4(g_s, guess_q_th,
             guess_q_thd, iterations, k_d, l0, m, q_r, q_r_lo, q_th, q_thd, tol))
         if _c4[30] != STATUS_OK:
             return _NAN42 + (_c4[30],)
-        (t_half, end_q_th, end_q_r, end_q_rd, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_th__q_r,
-            d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d, d_end_q_th__guess_q_th,
-            d_end_q_th__guess_q_thd, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d,
-            d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-            d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, _) = _c4
+        (t_half, end_q_th, d_end_q_th__q_th, end_q_r, end_q_rd, d_end_q_rd__q_r, d_end_q_rd__q_th,
+            d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th, d_end_q_rd__guess_q_thd, end_q_thd,
+            d_end_q_thd__q_r, d_end_q_thd__q_th, d_end_q_thd__q_thd, d_end_q_thd__k_d,
+            d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, passes, d_end_q_th__q_r, d_end_q_th__q_thd,
+            d_end_q_th__k_d, d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_t_half__q_r, d_t_half__q_th,
+            d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, _) = _c4
     else:
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # derivatives of the outputs

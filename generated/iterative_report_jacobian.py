@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:5e86edc951466ed7
 #   geyer_jacobian.py sha256:71e01de102ad80c3
-#   geyer_vs_jacobian.py sha256:d205133c2808a1c3
+#   geyer_vs_jacobian.py sha256:da043c6f2c55db7e
 #   gravity_type0_jacobian.py sha256:398a3a66fde67744
 #   gravity_type1_jacobian.py sha256:66fa45d9056d598f
 #   gravity_type2_jacobian.py sha256:3f778c1f7c92dffa

@@ -1044,6 +1044,40 @@ def _d_tail():
     return _kernel("d_tail", _args(a_, b_, n_it), (step, *tail), _out("u", "v", "w"))
 
 
+def _d_loop_switch():
+    """A loop whose evaluation and body branch on an option, a call in a branch, a switch after it."""
+    h_, g_ = sym("h"), sym("g")
+    evaluate = (
+        Switch(
+            k_,
+            (
+                (0, (Stage(((h_, sp.sin(u) * a_ + b_),)),)),
+                (1, (Stage(((sym("_e"), sp.exp(-u * b_)),)), Stage(((h_, sym("_e") * a_ + u**2 / 3),)))),
+            ),
+        ),
+    )
+    body = (
+        Switch(
+            k_,
+            (
+                (0, (Stage(((g_, h_ / 2 + u / 4),)),)),
+                (
+                    1,
+                    (
+                        Call(_d_small(), {"p": h_, "q": b_, "m": a_}, {"w": "_sw"}),
+                        Stage(((g_, sym("_sw") / 3 + u / 5),)),
+                    ),
+                ),
+            ),
+        ),
+    )
+    step = Iterate(
+        ((u, b_ / 2),), body, (g_,), n_it, sp.S.Zero, (sp.S.One,), passes, fail_status=None, evaluate=evaluate
+    )
+    tail = (Switch(k_, ((0, (Stage(((v, h_ * b_),)),)), (1, (Stage(((v, h_ + a_),)),)))),)
+    return _kernel("d_loop_switch", _args(a_, b_, k_, n_it), (step, *tail), _out("u", "h", "v"))
+
+
 def _d_switch():
     """Branches defining the same outputs differently, one of them through a call and a loop."""
     s_, count = sym("_s"), sym("_count")
@@ -1114,6 +1148,11 @@ D_CASES = {
     ),
     "d_picard": (_d_picard, ("a", "b"), [(0.6, 0.9, 7.0), (0.6, 0.9, 0.0), (1.2, -0.3, 1.0)]),
     "d_tail": (_d_tail, ("a", "b"), [(0.6, 0.9, 5.0), (0.6, 0.9, 0.0)]),
+    "d_loop_switch": (
+        _d_loop_switch,
+        ("a", "b"),
+        [(0.7, 0.8, 0.0, 4.0), (0.7, 0.8, 1.0, 4.0), (0.7, 0.8, 1.0, 0.0)],
+    ),
     "d_switch": (
         _d_switch,
         ("a", "b"),
@@ -1128,25 +1167,31 @@ def _d_kernel(name):
     return make(name == "d_loop_evaluate") if make is _d_loop else make()
 
 
-def dgen_kernels():
+def dgen_kernels(looped_size: int = 1):
     """Every synthetic kernel and its Jacobian (one kernel, every direction in one pass) with the
-    kernels the differentiation generates: (primal and callee kernels, derivative kernels by name)."""
-    from slipmaps.derive.tangent import Differentiator
+    kernels the differentiation generates: (primal and callee kernels, the Differentiator). Loops
+    of at least ``looped_size`` assignments get their tangent code once, run per direction."""
+    from slipmaps.derive import tangent
 
-    diff = Differentiator()
-    primal = {}
-    for name, (_, wrt, _) in D_CASES.items():
-        kern = _d_kernel(name)
-        primal[name] = kern
-        diff.jacobian(kern, wrt, name=f"{name}_jacobian", summary=f"Jacobian of {name}.")
-    diff.build()
+    default, tangent.LOOPED_SIZE = tangent.LOOPED_SIZE, looped_size
+    try:
+        diff = tangent.Differentiator()
+        primal = {}
+        for name, (_, wrt, _) in D_CASES.items():
+            kern = _d_kernel(name)
+            primal[name] = kern
+            diff.jacobian(kern, wrt, name=f"{name}_jacobian", summary=f"Jacobian of {name}.")
+        diff.build()
+    finally:
+        tangent.LOOPED_SIZE = default
     return list(primal.values()) + [_d_inner(), _d_small()], diff
 
 
-@pytest.fixture(scope="module")
-def dgen(tmp_path_factory):
-    """The module of :func:`dgen_kernels` and its Differentiator."""
-    kernels, diff = dgen_kernels()
+@pytest.fixture(scope="module", params=[1, 10**6], ids=["loops per direction", "loops unrolled"])
+def dgen(request, tmp_path_factory):
+    """The module of :func:`dgen_kernels` and its Differentiator: every loop's tangent code per
+    direction, or every loop's unrolled."""
+    kernels, diff = dgen_kernels(request.param)
     directory = tmp_path_factory.mktemp("ir_jacobians")
     return load_module(directory, "ir_jacobians", kernels + list(diff.kernels.values())), diff
 
@@ -1201,14 +1246,18 @@ def test_loop_tangents_are_computed_once_per_direction_in_a_loop():
     """A loop whose steps are stages (and calls) computes its values once per pass and runs its
     tangent code, written once, per direction on the direction array; a loop holding another loop
     carries a variable per tangent and direction."""
-    _, diff = dgen_kernels()
+    _, diff = dgen_kernels(1)
     derived = diff.kernels
     src = render_module(list(derived.values()))
     picard = src.split("def d_picard_jacobian(", 1)[1].split("\ndef ", 1)[0]
     assert "for _j0 in range(2):" in picard and "_T = np.empty((" in picard
     assert "d_u__j" in picard and "d_u__a" in picard  # per direction in the loop, loaded after it
+    branching = src.split("def d_loop_switch_jacobian(", 1)[1].split("\ndef ", 1)[0]
+    assert "for _j" not in branching  # a loop holding a switch: a variable per tangent and direction
     nested = lower(derived["d_nested_jacobian"])
     assert any(n["kind"] == "loop" and n["packed"] for n in nested["body"])
+    _, unrolled = dgen_kernels(10**6)
+    assert "for _j" not in render_module(list(unrolled.kernels.values()))
 
 
 def test_jacobian_of_zero_iterations_is_the_start_values(dgen):
