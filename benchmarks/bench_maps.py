@@ -13,8 +13,10 @@ Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
     map's speed-up over it;
 (d) the iterative maps' cost against their number of passes;
 (e) every map's apex-return Jacobian (``slipmaps.apex_return_jacobian_batch``, N/10 states) per state
-    and as a multiple of its apex-return map (target: at most 3x), and its stance Jacobian as a
-    multiple of its stance map;
+    and as a multiple of its apex-return map (target: at most 3x), its stance Jacobian as a
+    multiple of its stance map, and the generated kernels alone: the scalar apex-return Jacobian
+    kernel against the scalar apex-return kernel, called in a numba loop on one thread (CPU time;
+    without the batch API's allocation and checks of the larger Jacobian output);
 (f) the first call of every map's apex-return Jacobian (``slipmaps.apex_return_jacobian``) in a
     fresh process with an empty ``NUMBA_CACHE_DIR``: the seconds a new user waits while numba
     compiles the Jacobian kernel and everything it calls (target: at most 15 s for the slowest);
@@ -210,6 +212,47 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
     return out
 
 
+def _kernel_loop(kernel):
+    """A numba loop calling the scalar apex-return ``kernel`` once per state (apex height, speed
+    and angle from arrays, the other arguments fixed); returns a checksum."""
+    namespace = {"kernel": kernel}
+    exec(  # noqa: S102 - a benchmark's loop over one kernel
+        "def run(h, v, th, rest):\n"
+        "    s = 0.0\n"
+        "    for i in range(h.shape[0]):\n"
+        "        s += kernel(h[i], v[i], th[i], *rest)[0]\n"
+        "    return s\n",
+        namespace,
+    )
+    return numba.njit(namespace["run"])
+
+
+def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
+    """CPU seconds of the scalar apex-return kernel and of its Jacobian kernel over the states, on
+    one thread (best of ``repeat``)."""
+    import importlib
+
+    primal = getattr(
+        importlib.import_module(f"slipmaps.generated.{info.module}"), info.kernels["apex_return"]
+    )
+    jac_mod = importlib.import_module(f"slipmaps.generated.{info.jacobian['module']}")
+    jacobian = getattr(jac_mod, info.jacobian["apex_return"])
+    params = tuple(float(getattr(P, "k_c" if p == "k" else p)) for p in info.params)
+    options = tuple(o.encode(info.name, o.default) for o in info.options)
+    rest = (*params, P.g_f, P.q_r_td, P.q_r_lo, *options)
+    out = []
+    for kern in (primal, jacobian):
+        run = _kernel_loop(kern)
+        run(h[:10], v[:10], th[:10], rest)
+        best = math.inf
+        for _ in range(repeat):
+            c0 = time.process_time()
+            run(h, v, th, rest)
+            best = min(best, time.process_time() - c0)
+        out.append(best)
+    return out[0], out[1]
+
+
 def jacobians(h, v, th, td, nj: int, repeat: int) -> list[dict]:
     """(e) every map's apex-return Jacobian (batch, ``nj`` states) against its apex-return map, and
     its stance Jacobian against its stance map (each after a warm-up call)."""
@@ -227,6 +270,7 @@ def jacobians(h, v, th, td, nj: int, repeat: int) -> list[dict]:
         t_a = best_of(lambda args=args: slipmaps.apex_return_batch(*args), repeat)
         t_sj = best_of(lambda sargs=sargs: slipmaps.stance_jacobian_batch(*sargs), repeat)
         t_s = best_of(lambda sargs=sargs: slipmaps.stance_batch(*sargs), repeat)
+        k_a, k_j = kernel_seconds(info, h[: nj // 4], v[: nj // 4], th[: nj // 4], repeat)
         rows.append(
             {
                 "map": info.name,
@@ -235,6 +279,9 @@ def jacobians(h, v, th, td, nj: int, repeat: int) -> list[dict]:
                 "ratio": t_j / t_a,
                 "stance_jacobian_ns": 1e9 * t_sj / nj,
                 "stance_ratio": t_sj / t_s,
+                "kernel_jacobian_ns": 1e9 * k_j / (nj // 4),
+                "kernel_apex_return_ns": 1e9 * k_a / (nj // 4),
+                "kernel_ratio": k_j / k_a,
             }
         )
     return rows
@@ -294,13 +341,21 @@ def _report_jacobians(r: dict) -> list[str]:
             "(e) apex-return Jacobian (next apex, liftoff and times against apex height, speed, angle and",
             "    stiffness), public batch API, ns per state and its cost in apex-return calls (target <= "
             f"{TARGET_JACOBIAN_RATIO:g}x: {'met' if worst <= TARGET_JACOBIAN_RATIO else 'NOT met'}); the",
-            "    stance Jacobian in stance calls:",
-            f"    {'map':<18}{'jacobian':>10}{'apex return':>14}{'ratio':>8}{'stance jac':>12}{'ratio':>8}",
+            "    stance Jacobian in stance calls; the kernels alone (scalar, one thread, CPU time):",
+            f"    {'map':<18}{'jacobian':>10}{'apex return':>14}{'ratio':>8}{'stance jac':>12}{'ratio':>8}"
+            f"{'kernels':>22}{'ratio':>7}",
         ]
         for row in r["jacobians"]:
+            kern = (
+                f"{row['kernel_jacobian_ns']:>7.0f} / {row['kernel_apex_return_ns']:.0f} ns"
+                f"{row['kernel_ratio']:>7.1f}x"
+                if "kernel_ratio" in row
+                else ""
+            )
             lines.append(
                 f"    {row['map']:<18}{row['jacobian_ns']:>7.0f} ns{row['apex_return_ns']:>11.0f} ns"
                 f"{row['ratio']:>7.1f}x{row['stance_jacobian_ns']:>9.0f} ns{row['stance_ratio']:>7.1f}x"
+                f"  {kern}"
             )
     if r.get("first_call"):
         worst = max(row["seconds"] for row in r["first_call"])
