@@ -30,12 +30,13 @@ direction). Symbolic forward mode over the declaration, step by step:
   outside the convergence test: the derivative of the iterate the loop stops at, which is what the
   map returns (derivatives through the iterations). What the loop evaluates at every iterate
   (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it. Where the loop's steps are stages
-  and calls (the iterations of Schwind and Koditschek's halves), each pass computes its values and
+  and calls, at least :data:`LOOPED_SIZE` assignments a pass (the iterations of Schwind and
+  Koditschek's halves at 3 or more nodes, gravity-type5's), each pass computes its values and
   partial derivatives once and then runs its tangent code, written once, per direction
   (:class:`~.ir.Directions`, on the rows of a direction array ``_T[row, direction]``), and so do the
-  stages and calls right after the loop; otherwise every tangent has a variable per direction,
-  carried through the passes (:attr:`~.ir.Iterate.carry`). A direction that reaches neither the
-  initial values nor anything the loop reads is zero in it.
+  initial values and the stages and calls right after the loop; otherwise every tangent has a
+  variable per direction, carried through the passes (:attr:`~.ir.Iterate.carry`). A direction
+  that reaches neither the initial values nor anything the loop reads is zero in it.
 - :class:`~.ir.Switch`: each branch is differentiated; a tangent one branch defines is zero in the
   others.
 
@@ -49,7 +50,7 @@ compile time is about proportional to the bytecode it compiles (about 0.4 ms per
 the shared 2-core machine; the per-direction loops' array accesses cost more per instruction, so
 they save lines and run time rather than compile time). Measured 2026-12-01, bytecode
 instructions of iterative_jacobian.py: one-direction JVP called per direction, same lowering,
-33,644; unrolled vector mode 52,627; with the loops' tangent code per direction 38,937.
+33,644; unrolled vector mode 52,627; with the large loops' tangent code per direction 38,409.
 
 Almost-everywhere derivatives: ``sign``, ``floor`` and ``ceiling`` differentiate to 0 (SymPy's
 ``DiracDelta`` / unevaluated ``Derivative``); ``Abs`` to ``sign``; ``Max``/``Min`` to a Heaviside
