@@ -10,11 +10,15 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
     and the agreement on the 50 states (same statuses, max relative difference);
 (b) batch throughput of ``slipmaps.stance_batch("exact", ...)`` and ``apex_return_batch`` on all
     of numba's threads, and its speed-up over one thread;
-(c) the stance with its Jacobian (``runtime/exact_jacobian.py``, variational equations), per state
+(c) the stance with its Jacobian (``runtime/exact/jacobian.py``, variational equations), per state
     on one thread, and its cost relative to the stance alone;
 (d) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
     (a function pointer, no inlining) instead of an njit dispatcher (the shipped form), compression
-    phases per microsecond of each (compiles two extra specialisations: ~15 s).
+    phases per microsecond of each (compiles two extra specialisations: ~15 s);
+(e) the external kernels of ``runtime/exact/kernels.py`` (the map ``"exact"``'s generated code
+    calls them), per state in an njit loop on one thread: ``stance``, ``compression`` then
+    ``decompression`` (the same stance in two calls), ``state_at`` at mid-stance, each relative
+    to ``stance``.
 
 Best of ``--repeat`` after a warm-up call (compilation excluded); ratios are measured in one run,
 absolute times move with the machine and its load (printed). Usage::
@@ -33,10 +37,11 @@ from pathlib import Path
 import numba
 import numpy as np
 import slipmaps
-from slipmaps.runtime import dop853
-from slipmaps.runtime import exact_compiled as ec
-from slipmaps.runtime import exact_jacobian as ej
-from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
+from numba import njit
+from slipmaps.runtime.exact import compiled as ec
+from slipmaps.runtime.exact import dop853
+from slipmaps.runtime.exact import kernels as ek
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import best_of, machine, states  # noqa: E402
@@ -55,17 +60,21 @@ def _with_threads(n: int, fn):
         numba.set_num_threads(before)
 
 
+def _stance_rows(rows: np.ndarray):
+    """The exact map's batch (the generated parallel kernel around the compiled stance)."""
+    res = slipmaps.stance_batch("exact", P, rows)
+    return np.column_stack([res[n] for n in res.names]), res["status"]
+
+
 def per_stance(td: np.ndarray, repeat: int) -> dict:
     few = td[:N_SCIPY]
     t_scipy = best_of(lambda: [simulate_stance(P, row) for row in few], 3) / len(few)
-    ec.stance_rows(P, td[:10], DEFAULT_RTOL, DEFAULT_ATOL)  # warm-up (cache load or compilation)
-    t_one = _with_threads(
-        1, lambda: best_of(lambda: ec.stance_rows(P, td, DEFAULT_RTOL, DEFAULT_ATOL), repeat)
-    ) / len(td)
+    _stance_rows(td[:10])  # warm-up (cache load or compilation)
+    t_one = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     slipmaps.stance("exact", P, few[0])
     t_api = best_of(lambda: [slipmaps.stance("exact", P, row) for row in few], repeat) / len(few)
     ref = [simulate_stance(P, row) for row in few]
-    got, status = ec.stance_rows(P, few, DEFAULT_RTOL, DEFAULT_ATOL)
+    got, status = _stance_rows(few)
     same = all(int(r.status) == int(s) for r, s in zip(ref, status, strict=True))
     diff = 0.0
     for r, row in zip(ref, got, strict=True):
@@ -86,12 +95,47 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
 
 def jacobian(td: np.ndarray, repeat: int) -> dict:
     """The stance with its Jacobian (variational equations), batch kernel on one thread."""
-    ej.jacobian_rows(P, td[:10])
-    t_jac = _with_threads(1, lambda: best_of(lambda: ej.jacobian_rows(P, td), repeat)) / len(td)
-    t_st = _with_threads(
-        1, lambda: best_of(lambda: ec.stance_rows(P, td, DEFAULT_RTOL, DEFAULT_ATOL), repeat)
+    slipmaps.stance_jacobian_batch("exact", P, td[:10])
+    t_jac = _with_threads(
+        1, lambda: best_of(lambda: slipmaps.stance_jacobian_batch("exact", P, td), repeat)
     ) / len(td)
+    t_st = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     return {"jacobian_us": 1e6 * t_jac, "ratio_to_stance": t_jac / t_st}
+
+
+@njit
+def _kernel_loop(which, td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+    """Sum of an output of one external kernel over the rows of td (0 stance, 1 the halves,
+    2 state_at at half the stance time)."""
+    acc = 0.0
+    for i in range(td.shape[0]):
+        q_r, q_rd, q_th, q_thd = td[i, 0], td[i, 1], td[i, 2], td[i, 3]
+        if which == 0:
+            acc += ek.stance(q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[1]
+        elif which == 1:
+            down = ek.compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, q_r_lo, rtol, atol)
+            up = ek.decompression(down[1], down[2], down[3], down[4], m, l0, k_d, g_s, q_r_lo, rtol, atol)
+            acc += down[0] + up[0]
+        else:
+            acc += ek.state_at(0.07, q_r, q_rd, q_th, q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)[0]
+    return acc
+
+
+def external(td: np.ndarray, repeat: int) -> dict:
+    """The external kernels per state (one thread: no prange)."""
+    rows = np.ascontiguousarray(td[:20_000])
+    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
+    times = {}
+    for which, name in enumerate(("stance", "halves", "state_at")):
+        _kernel_loop(which, rows[:10], *args)
+        times[name] = best_of(lambda w=which: _kernel_loop(w, rows, *args), repeat) / len(rows)
+    return {
+        "stance_us": 1e6 * times["stance"],
+        "halves_us": 1e6 * times["halves"],
+        "state_at_us": 1e6 * times["state_at"],
+        "halves_ratio": times["halves"] / times["stance"],
+        "state_at_ratio": times["state_at"] / times["stance"],
+    }
 
 
 def throughput(h, v, th, td, repeat: int) -> dict:
@@ -133,6 +177,9 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
             f8,
             types.int64,
             arr,
+            f8,
+            arr,
+            types.boolean,
         )
     )(dop853.solve.py_func)
 
@@ -142,14 +189,48 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     def run_fc(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += solve_fc(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
+            acc += solve_fc(
+                rhs,
+                p,
+                ev,
+                pe,
+                direction,
+                0.0,
+                rows[i],
+                10.0,
+                rtol,
+                atol,
+                cap,
+                4,
+                y_end,
+                math.inf,
+                y_end,
+                False,
+            )[1]
         return acc
 
     @njit
     def run_disp(rows, rhs, ev, p, pe, direction, cap, y_end):
         acc = 0.0
         for i in range(rows.shape[0]):
-            acc += dop853.solve(rhs, p, ev, pe, direction, 0.0, rows[i], 10.0, rtol, atol, cap, 4, y_end)[1]
+            acc += dop853.solve(
+                rhs,
+                p,
+                ev,
+                pe,
+                direction,
+                0.0,
+                rows[i],
+                10.0,
+                rtol,
+                atol,
+                cap,
+                4,
+                y_end,
+                math.inf,
+                y_end,
+                False,
+            )[1]
         return acc
 
     rows = np.ascontiguousarray(td[:2000])
@@ -170,6 +251,7 @@ def run(n: int, repeat: int, with_first_class: bool) -> dict:
     out["per_stance"] = per_stance(td, repeat)
     out["throughput"] = throughput(h, v, th, td, repeat)
     out["jacobian"] = jacobian(td, repeat)
+    out["external"] = external(td, repeat)
     if with_first_class:
         out["first_class"] = first_class(td, repeat)
     return out
@@ -185,7 +267,7 @@ def report(r: dict) -> str:
         f"rtol {r['rtol']:g}, atol {r['atol']:g}",
         "",
         "(a) exact stance, per state:",
-        f"    solve_ivp (runtime/simulate.py)        {s['scipy_us']:9.1f} us",
+        f"    solve_ivp (runtime/exact/reference.py)        {s['scipy_us']:9.1f} us",
         f"    compiled, batch kernel on 1 thread      {s['compiled_us']:9.2f} us: {s['speedup']:.0f}x "
         f"(target >= {s['target']:g}x: {met})",
         f"    compiled, slipmaps.stance scalar call   {s['api_scalar_us']:9.2f} us: "
@@ -202,6 +284,14 @@ def report(r: dict) -> str:
         "",
         f"(c) stance with its 10 x 6 Jacobian (exact_jacobian, 1 thread): {j['jacobian_us']:.1f} us "
         f"per state, {j['ratio_to_stance']:.1f}x the stance alone",
+    ]
+    e = r["external"]
+    lines += [
+        "",
+        "(e) external kernels (runtime/exact/kernels.py, njit loop, 1 thread): "
+        f"stance {e['stance_us']:.2f} us, compression + decompression {e['halves_us']:.2f} us "
+        f"({e['halves_ratio']:.2f}x), "
+        f"state_at mid-stance {e['state_at_us']:.2f} us ({e['state_at_ratio']:.2f}x)",
     ]
     if "first_class" in r:
         f = r["first_class"]

@@ -47,7 +47,7 @@ import numpy as np
 import scipy
 import slipmaps
 from slipmaps.generated import flight as gen_flight
-from slipmaps.runtime.simulate import simulate_stance
+from slipmaps.runtime.exact.reference import simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import handwritten_geyer  # noqa: E402
@@ -95,7 +95,7 @@ def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
     h, v, th = rng.uniform(1.0, 1.1, n), rng.uniform(3.0, 7.0, n), rng.uniform(0.30, 0.50, n)
     unique = min(n, 20_000)
     td = np.array(
-        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f)[:4] for i in range(unique)]
+        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f, 0.0)[:4] for i in range(unique)]
     )
     return h, v, th, np.ascontiguousarray(np.resize(td, (n, 4)))
 
@@ -177,8 +177,8 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
     # (b) every map
     out["maps"] = []
     for info in slipmaps.maps():
-        if not info.generated:
-            continue
+        if info.ground_truth:
+            continue  # measured in (c)
         slipmaps.stance_batch(info.name, P, td[:1000])
         slipmaps.apex_return_batch(info.name, P, h[:1000], v[:1000], th[:1000])
         if info.name == "geyer":  # measured in (a), side by side with the yardstick
@@ -200,13 +200,15 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
         )
 
     # (d) cost against the number of passes of the iterative maps (tol = 0: exactly n passes)
-    from slipmaps.runtime import convergence, index
+    from slipmaps.runtime.api import index
+    from slipmaps.runtime.studies import convergence
+    from slipmaps.runtime.studies.accuracy import options_with
 
     out["passes"] = []
     for name in convergence.study_maps():
-        has_tol = any(o.name == "tol" for o in index.get(name).options)
+        tolerance = {o.name: 0.0 for o in options_with(index.get(name), "tolerance")}
         for k in convergence.PASSES:
-            opts = {"iterations": k, **({"tol": 0.0} if has_tol else {})}
+            opts = {convergence.pass_option(name): k, **tolerance}
             t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
             out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
     return out
@@ -258,8 +260,6 @@ def jacobians(h, v, th, td, nj: int, repeat: int) -> list[dict]:
     its stance Jacobian against its stance map (each after a warm-up call)."""
     rows = []
     for info in slipmaps.maps():
-        if not info.generated:
-            continue
         args = (info.name, P, h[:nj], v[:nj], th[:nj])
         sargs = (info.name, P, td[:nj])
         slipmaps.apex_return_jacobian_batch(*args)

@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 import slipmaps
-from slipmaps.runtime.sweep_compute import compute
+from slipmaps.runtime.sweep.compute import compute
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import machine  # noqa: E402

@@ -9,19 +9,10 @@ from __future__ import annotations
 
 import sympy as sp
 
+from . import params, symbols
 from .ir import Arg, Field, Group, positive, real, sym
 from .symbols import (
-    b_xd_apex,
-    b_y_apex,
-    g_f,
-    g_s,
-    k,
-    k_c,
-    k_d,
     l0,
-    m,
-    q_r_lo,
-    q_r_td,
     q_rd_td,
     q_th_td,
     q_thd_td,
@@ -30,21 +21,37 @@ from .symbols import (
 _HALF_PI = sp.pi / 2
 
 
-def _leg_length(s: sp.Symbol) -> sp.Basic:
-    return sp.And(positive(s), real(s) <= real(l0))
+def domain(kind: str, s: sp.Symbol) -> sp.Basic | None:
+    """The run-time check of a :mod:`.params` domain on symbol ``s`` (None: finite is enough)."""
+    x = real(s)
+    checks = {
+        "positive": positive(s),
+        "leg_length": sp.And(positive(s), x <= real(l0)),
+        "non_negative": x >= 0,
+        "leg_angle": sp.Abs(x) < _HALF_PI,
+        "real": None,
+    }
+    return checks[kind]
 
 
-#: SLIP parameters (report Table 1) as kernel arguments, by name.
+def _describe(row: dict) -> str:
+    limits = {"leg_length": f", 0 < {row['name']} <= l0", "positive": ", > 0", "non_negative": ", >= 0"}
+    return f"{row['doc']} {row['name']} [{row['unit']}]{limits.get(row['domain'], '')}"
+
+
+def _symbol(name: str) -> sp.Symbol:
+    """The symbol of a parameter or an input: derive/symbols.py's (with its assumptions)."""
+    return getattr(symbols, name)
+
+
+#: SLIP parameters (report Table 1) as kernel arguments, by name: the rows of :mod:`.params`, and
+#: its alias ``k`` (a constant stiffness).
 PARAMS: dict[str, Arg] = {
-    "m": Arg(m, "body mass m [kg]", positive(m)),
-    "l0": Arg(l0, "rest leg length l0 [m]", positive(l0)),
-    "k": Arg(k, "leg stiffness k [N/m] (constant: k_c = k_d)", positive(k)),
-    "k_c": Arg(k_c, "leg stiffness while compressing k_c [N/m]", positive(k_c)),
-    "k_d": Arg(k_d, "leg stiffness after the bottom k_d [N/m]", positive(k_d)),
-    "g_s": Arg(g_s, "gravitational acceleration in stance g_s [m/s^2], positive", positive(g_s)),
-    "g_f": Arg(g_f, "gravitational acceleration in flight g_f [m/s^2], positive", positive(g_f)),
-    "q_r_td": Arg(q_r_td, "touchdown leg length q_r_td [m], 0 < q_r_td <= l0", _leg_length(q_r_td)),
-    "q_r_lo": Arg(q_r_lo, "liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0", _leg_length(q_r_lo)),
+    r["name"]: Arg(_symbol(r["name"]), _describe(r), domain(r["domain"], _symbol(r["name"])))
+    for r in params.PARAMETERS
+} | {
+    name: Arg(_symbol(name), _describe({**a, "name": name, "domain": "positive"}), positive(_symbol(name)))
+    for name, a in params.ALIASES.items()
 }
 
 #: The polar touchdown state, the first arguments of every stance map.
@@ -58,18 +65,32 @@ TOUCHDOWN: tuple[Arg, ...] = (
 #: Time since touchdown, the first argument of a map's state-at-time kernel.
 TIME = Arg(sym("t"), "time since touchdown t [s], >= 0", real(sym("t")) >= 0)
 
-#: The apex-return inputs before the parameters: the apex and the touchdown leg angle.
-APEX_ARGS: tuple[Arg, ...] = (
-    Arg(b_y_apex, "apex height of the body above the ground [m], >= 0", real(b_y_apex) >= 0),
-    Arg(b_xd_apex, "horizontal apex speed [m/s], >= 0 (the runner moves in +x)", real(b_xd_apex) >= 0),
-    TOUCHDOWN[2],
+#: The apex-return inputs before the parameters (the rows of :mod:`.params`' ``APEX_INPUTS``): the
+#: apex, the touchdown leg angle, the ground.
+APEX_ARGS: tuple[Arg, ...] = tuple(
+    Arg(_symbol(r["arg"]), _describe({**r, "name": r["arg"]}), domain(r["domain"], _symbol(r["arg"])))
+    for r in params.APEX_INPUTS
+)
+GROUND = next(a for a in APEX_ARGS if a.name == "ground")
+
+#: The public name of an apex-return input (the API's argument and Jacobian column) by kernel argument.
+APEX_PUBLIC = {r["arg"]: r["name"] for r in params.APEX_INPUTS}
+
+#: The direction of a step, from the sign of its apex speed (+1, -1, or 0 for a hop in place): the
+#: liftoff must not move against it (LIFTOFF_BACKWARD).
+DIRECTION = Arg(
+    sym("direction"),
+    "direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)",
+    sp.Or(
+        sp.Eq(real(sym("direction")), 1), sp.Eq(real(sym("direction")), -1), sp.Eq(real(sym("direction")), 0)
+    ),
 )
 
 POLAR = (
     Field("q_r", "leg length", "m"),
     Field("q_rd", "leg length rate", "m/s"),
-    Field("q_th", "leg angle from the vertical, counterclockwise positive", "rad"),
-    Field("q_thd", "leg angle rate", "rad/s"),
+    Field("q_th", "leg angle from the vertical, counterclockwise positive", "rad", odd=True),
+    Field("q_thd", "leg angle rate", "rad/s", odd=True),
 )
 
 #: Outputs of every stance map (a map may append extras).
@@ -87,12 +108,19 @@ STANCE = Group(
 APEX_RETURN = Group(
     "",
     (
-        Field("apex_height", "next apex height above the ground", "m"),
-        Field("apex_speed", "next apex horizontal speed", "m/s"),
+        Field("apex_height", "next apex height above the ground the foot stood on", "m"),
+        Field("apex_speed", "next apex horizontal speed (signed)", "m/s", odd=True),
         Field("t_descent", "flight time from the apex to touchdown", "s"),
         Field("t_stance", "stance time, touchdown to liftoff", "s"),
         Field("t_ascent", "flight time from liftoff to the next apex", "s"),
         Group("liftoff", POLAR, "state at liftoff (q_r = q_r_lo)"),
+        Field("step_length", "horizontal distance from the apex to the next apex (signed)", "m", odd=True),
+        Field("foot_x", "horizontal position of the foot at touchdown relative to the apex", "m", odd=True),
+        Field(
+            "foot_y",
+            "height of the foot (the touchdown ground) relative to the apex: ground - apex height",
+            "m",
+        ),
     ),
 )
 
@@ -102,52 +130,3 @@ TRAJECTORY = Group("", POLAR)
 #: A touchdown leg length counts as the rest length l0 within this relative tolerance (for the
 #: choices that assume it, ``Option.at_rest_length``).
 REST_LENGTH_TOLERANCE = 1e-9
-
-#: The index row of ``"exact"``, the numerical ground truth (runtime/exact_compiled.py, with
-#: runtime/simulate.py as the solve_ivp reference; no generated kernels).
-EXACT = {
-    "name": "exact",
-    "title": "Exact stance by numerical integration (DOP853)",
-    "section": "2.2",
-    "equations": ["1", "2", "3", "27"],
-    "requires": [],
-    "params": ["m", "l0", "k_c", "k_d", "g_s"],
-    "options": [
-        {
-            "name": "method",
-            "kind": "choice",
-            "default": "compiled",
-            "doc": "which DOP853 implementation integrates the stance (same algorithm, events and statuses)",
-            "choices": [
-                {"value": "compiled", "doc": "numba-compiled, batches in parallel"},
-                {"value": "scipy", "doc": "scipy's solve_ivp, the reference"},
-            ],
-            "low": None,
-            "high": None,
-            "at_rest_length": [],
-        },
-        {
-            "name": "rtol",
-            "kind": "float",
-            "default": 1e-11,
-            "doc": "relative tolerance of the DOP853 integration",
-            "choices": [],
-            "low": 1e-14,
-            "high": 1e-3,
-        },
-        {
-            "name": "atol",
-            "kind": "float",
-            "default": 1e-12,
-            "doc": "absolute tolerance of the DOP853 integration",
-            "choices": [],
-            "low": 1e-16,
-            "high": 1e-3,
-        },
-    ],
-    "summary": "the polar stance equations of motion (2)-(3) integrated with events for the bottom "
-    "(k_c -> k_d), liftoff and failures: the ground truth",
-    "module": None,
-    "kernels": None,
-    "extras": [],
-}

@@ -83,19 +83,21 @@ def maps_page(index: dict) -> str:
         ]
         if row["summary"]:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
+        kernels = row["kernels"]
         out += [
-            f"- stance arguments: {', '.join(f'`{a}`' for a in row['stance_args'])}",
-            f"- apex-return arguments: {', '.join(f'`{a}`' for a in row['apex_args'])}",
+            f"- stance arguments: {', '.join(f'`{a}`' for a in kernels['stance']['args'])}",
+            f"- apex-return arguments: {', '.join(f'`{a}`' for a in kernels['apex_return']['args'])}",
             f"- requires: {', '.join(row['requires']) or 'nothing'}",
             f"- generated module `slipmaps.generated.{row['module']}`: "
-            + ", ".join(f"`{k}`" for k in row["kernels"].values() if k),
+            + ", ".join(f"`{k['name']}`" for role, k in kernels.items() if not role.endswith("_jacobian")),
         ]
-        jac = row.get("jacobian")
+        jac = {role.removesuffix("_jacobian"): k for role, k in kernels.items() if role.endswith("_jacobian")}
         if jac:
             out.append(
-                f"- Jacobians in `slipmaps.generated.{jac['module']}`: `{jac['stance']}` (with respect to "
-                f"{', '.join(f'`{a}`' for a in jac['stance_wrt'])}), `{jac['apex_return']}` (with respect "
-                f"to {', '.join(f'`{a}`' for a in jac['apex_wrt'])})"
+                f"- Jacobians in `slipmaps.generated.{jac['stance']['module']}`: `{jac['stance']['name']}` "
+                f"(with respect to {', '.join(f'`{a}`' for a in jac['stance']['wrt'])}), "
+                f"`{jac['apex_return']['name']}` (with respect to "
+                f"{', '.join(f'`{a}`' for a in jac['apex_return']['wrt'])})"
             )
         if row["as_printed"]:
             out.append(
@@ -156,9 +158,9 @@ def _halves_page(index: dict) -> list[str]:
         if row["summary"]:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
         out += [
-            f"- arguments: {', '.join(f'`{a}`' for a in row['args'])}",
-            f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernels']['half']}`, "
-            f"`{row['kernels']['half']}_batch`",
+            f"- arguments: {', '.join(f'`{a}`' for a in row['kernels']['half']['args'])}",
+            f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernels']['half']['name']}`, "
+            f"`{row['kernels']['half']['name']}_batch`",
         ]
         if row["extras"]:
             out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))

@@ -24,16 +24,16 @@ import sympy as sp
 
 from . import docs
 from .equations import render_equation_table
-from .ir import Call, Iterate, Module, Switch
+from .ir import Call, Iterate, Module, Switch, is_external_module
 from .lower import lower
-from .maps import all_halves, all_maps
+from .maps import all_halves, all_maps, ground_truth
 from .mapspec import MapSpec
 from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import flight_kernels
 from .render import render
 from .status import STATUS_CODES
 from .tangent import Differentiator
-from .wrap import wrap
+from .wrap import LIMIT, wrap
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
@@ -93,20 +93,16 @@ def _callee_modules(mod: Module) -> set[str]:
 
     for kernel in mod.kernels():
         walk(kernel.steps)
-    return found - {mod.name}
+    return {m for m in found if not is_external_module(m)} - {mod.name}
 
 
 def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
     """The Jacobian kernels of every map (:meth:`MapSpec.jacobian_kernels`) and of the kernels they
     call, one module ``<module>_jacobian`` per module of the differentiated kernels."""
     diff = Differentiator()
-    for spec in all_maps():
+    for spec in (*all_maps(), ground_truth()):
         spec.jacobian_kernels(diff, flights)
     diff.build()
-    # the flights' one-direction JVPs, which runtime/exact_step_jacobian.py composes with the exact
-    # stance's variational equations
-    diff.jvp(flights["apex_to_touchdown"], ("b_y_apex", "b_xd_apex", "q_th_td"))
-    diff.jvp(flights["liftoff_to_apex"], ("q_r", "q_rd", "q_th", "q_thd"))
     by_module: dict[str, list] = {}
     for kernel in diff.kernels.values():
         by_module.setdefault(kernel.module, []).append(kernel)
@@ -130,7 +126,7 @@ def modules() -> tuple[Module, ...]:
     """Every generated kernel module, callees before callers (otherwise model, maps in report
     order, their Jacobians, halves)."""
     flights = flight_kernels()
-    maps = tuple(spec.module(flights) for spec in all_maps())
+    maps = tuple(spec.module(flights) for spec in (*all_maps(), ground_truth()))
     jacobians = _jacobian_modules(MODEL_MODULES + maps, flights)
     pending = list(MODEL_MODULES + maps + jacobians + tuple(half.module() for half in all_halves()))
     needs = {mod.name: _callee_modules(mod) for mod in pending}
@@ -144,23 +140,43 @@ def modules() -> tuple[Module, ...]:
     return tuple(done)
 
 
+def _external_sources(module: str) -> dict[str, str]:
+    """The sources an external kernel module may depend on: every file of its package (``{name:
+    content}``), hashed into a caller's header so that numba's cache of the caller (which does not
+    see other files) is re-keyed when any of them changes."""
+    parts = module.split(".")
+    if parts[0] != "slipmaps" or len(parts) < 3 or parts[1] not in ("runtime",):
+        raise ValueError(f"external kernel module {module}: expected slipmaps.runtime.<package>.<module>")
+    folder = ROOT.joinpath(*parts[1:-1])
+    if not (folder / f"{parts[-1]}.py").is_file():
+        raise ValueError(f"external kernel module {module}: no file {folder / (parts[-1] + '.py')}")
+    return {f"{'/'.join(parts[1:-1])}/{p.name}": p.read_text() for p in sorted(folder.glob("*.py"))}
+
+
 def _render_module(mod: Module, files: dict[str, str]) -> str:
     kernels = [lower(k) for k in mod.kernels()]
     callees: dict[str, set[str]] = {}
     for k in kernels:
         for module, name in k["callees"]:
             callees.setdefault(module, set()).add(name)
-    missing = sorted(m for m in callees if f"generated/{m}.py" not in files)
+    generated = sorted(m for m in callees if not is_external_module(m))
+    external = sorted(m for m in callees if is_external_module(m))
+    missing = [m for m in generated if f"generated/{m}.py" not in files]
     if missing:
         raise ValueError(f"module {mod.name} calls into {missing}, which must be generated before it")
+    depends = [{"name": f"{m}.py", "sha256": _sha(files[f"generated/{m}.py"])} for m in generated]
+    for m in external:
+        depends += [{"name": n, "sha256": _sha(t)} for n, t in _external_sources(m).items()]
+    imports = [f"from .{m} import {', '.join(sorted(callees[m]))}" for m in generated]
+    imports += [f"from {m} import {', '.join(sorted(callees[m]))}" for m in external]
     used = set().union(*(k["statuses"] for k in kernels))
     text = render(
         "kernels.py.j2",
         source=mod.source,
         template="derive/templates/kernels.py.j2",
-        depends=[{"name": f"{m}.py", "sha256": _sha(files[f"generated/{m}.py"])} for m in sorted(callees)],
+        depends=depends,
         module_doc=mod.doc,
-        imports=[f"from .{m} import {', '.join(sorted(names))}" for m, names in sorted(callees.items())],
+        imports=imports,
         kernels=kernels,
         versions=VERSIONS,
         statuses=[st["name"] for st in _STATUSES if st["name"] in used],
@@ -173,8 +189,10 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
     from . import catalog
     from .halfspec import HALF_OUTPUTS
 
+    flights = flight_kernels()
+
     def rows(group) -> list[dict]:
-        return [{"name": f.name, "doc": f.doc, "unit": f.unit} for f in group.fields()]
+        return [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in group.fields()]
 
     return {
         "STANCE_OUTPUTS": rows(catalog.STANCE),
@@ -187,9 +205,10 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
             **HALF_OUTPUTS.subgroups(),
         },
         "TOUCHDOWN": [a.name for a in catalog.TOUCHDOWN],
-        "MAPS": [s.index_row() for s in specs],
+        "APEX_PUBLIC": dict(catalog.APEX_PUBLIC),
+        "MAPS": [s.index_row(flights) for s in specs],
         "HALVES": [h.index_row() for h in all_halves()],
-        "EXACT": catalog.EXACT,
+        "EXACT": ground_truth().index_row(flights),
         "REST_LENGTH_TOLERANCE": catalog.REST_LENGTH_TOLERANCE,
     }
 
@@ -220,7 +239,9 @@ def build_files() -> dict[str, str]:
             template="derive/templates/maps_index.py.j2",
             depends=[],
             tables=[
-                (name, pprint.pformat(value, width=100, sort_dicts=False)) for name, value in index.items()
+                # the first line holds "NAME = " too: every line within the limit
+                (name, pprint.pformat(value, width=LIMIT - len(name) - 3, sort_dicts=False))
+                for name, value in index.items()
             ],
             **common,
         )

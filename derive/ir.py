@@ -66,11 +66,14 @@ class Arg:
 
 @dataclass(frozen=True)
 class Field:
-    """One named scalar output."""
+    """One named scalar output. ``odd``: the output changes sign under the model's mirror symmetry
+    x -> -x (a leg angle or angle rate, a horizontal speed or distance, an angular impulse); an even
+    one keeps its value. Running toward -x is the mirror image of running toward +x."""
 
     name: str
     doc: str
     unit: str = ""
+    odd: bool = False
 
 
 @dataclass(frozen=True)
@@ -89,7 +92,7 @@ class Group:
             if isinstance(item, Group):
                 out.extend(item.fields(pre))
             else:
-                out.append(Field(pre + item.name, item.doc, item.unit))
+                out.append(Field(pre + item.name, item.doc, item.unit, item.odd))
         return tuple(out)
 
     def names(self) -> tuple[str, ...]:
@@ -272,7 +275,7 @@ class Kernel:
     #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
     inline: bool = False
     #: Arguments and outputs the finiteness checks leave out: a derivative kernel's directions and
-    #: derivatives (a non-finite derivative is NUMERICAL_RANGE for the public API, runtime/jacobian.py,
+    #: derivatives (a non-finite derivative is NUMERICAL_RANGE for the public API, runtime/api/jacobian.py,
     #: when the Jacobian returns it; one of an output nothing uses must not fail a caller).
     unchecked: tuple[str, ...] = ()
     #: The docstring's account of the arguments, when one line per argument says less (an outlined
@@ -281,6 +284,22 @@ class Kernel:
     #: The docstring's Returns list, (name, doc) pairs, when one line per output says less (a
     #: Jacobian's derivative block in one entry).
     doc_returns: tuple[tuple[str, str], ...] = ()
+    #: A hand-written kernel that generated code calls (no steps; ``module`` is its Python module,
+    #: e.g. ``slipmaps.runtime.exact.kernels``): a numba function of the declared arguments, in their
+    #: order, returning the declared outputs and the status. The exact simulator's stance is one.
+    external: bool = False
+    #: An external kernel's Jacobian: an external kernel of the same arguments returning the outputs,
+    #: then d output / d ``jacobian_wrt`` (``derivative_fields`` order), then the status. Generated
+    #: derivatives of a caller go through it (:mod:`.tangent`).
+    jacobian: Kernel | None = None
+    jacobian_wrt: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        if self.external and (self.steps or "." not in self.module):
+            raise ValueError(f"external kernel {self.name}: no steps, and module must be its Python module")
+        unknown = [w for w in self.jacobian_wrt if w not in self.arg_names]
+        if unknown:
+            raise ValueError(f"kernel {self.name}: jacobian_wrt names unknown argument(s) {unknown}")
 
     @property
     def arg_names(self) -> tuple[str, ...]:
@@ -289,6 +308,37 @@ class Kernel:
     @property
     def output_names(self) -> tuple[str, ...]:
         return self.outputs.names()
+
+    @property
+    def batch_args(self) -> tuple[str, ...] | None:
+        """The batch form's arguments before ``out, status``: the row arguments, then the scalars,
+        each in argument order (None without a batch form)."""
+        if self.batch is None:
+            return None
+        names = self.arg_names
+        return tuple(n for n in names if n in self.batch.rows) + tuple(
+            n for n in names if n not in self.batch.rows
+        )
+
+    def signature(self, **extra) -> dict:
+        """This kernel's calling convention, as the generated index publishes it: its module and
+        name, its arguments, the arguments its batch form takes as rows and its batch form's
+        arguments (``out, status`` follow), and its outputs (the status follows), plus ``extra``."""
+        batch = self.batch_args
+        return {
+            "module": self.module,
+            "name": self.name,
+            "args": list(self.arg_names),
+            "rows": None if batch is None else list(batch[: len(self.batch.rows)]),
+            "batch": None if batch is None else list(batch),
+            "outputs": list(self.output_names),
+            **extra,
+        }
+
+
+def is_external_module(module: str) -> bool:
+    """A kernel module named by its dotted Python path is hand-written, not generated."""
+    return "." in module
 
 
 @dataclass(frozen=True)

@@ -496,10 +496,10 @@ def lower(kernel: Kernel) -> dict:
         unknown = sorted(set(kernel.batch.rows) - set(names))
         if unknown:
             raise LoweringError(f"kernel {kernel.name}: batch rows {unknown} are not arguments")
-        rows = [n for n in names if n in kernel.batch.rows]
+        order = kernel.batch_args
         batch = {
-            "rows": rows,
-            "scalars": [n for n in names if n not in kernel.batch.rows],
+            "rows": list(order[: len(kernel.batch.rows)]),
+            "scalars": list(order[len(kernel.batch.rows) :]),
             "call": ", ".join(f"{n}[i]" if n in kernel.batch.rows else n for n in names),
         }
     if kernel.status:

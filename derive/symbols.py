@@ -41,6 +41,8 @@ q_r_lo = sp.Symbol("q_r_lo", positive=True)
 
 # Apex quantities.
 b_y_apex, b_xd_apex = sp.symbols("b_y_apex b_xd_apex", real=True)
+#: Height of the touchdown ground above the ground under the apex (a step up is positive).
+ground = sp.Symbol("ground", real=True)
 
 # Geyer et al.'s dimensionless quantities (eq 7) and solution parameters (eqs 9, 11).
 rho = sp.Symbol("rho", real=True)

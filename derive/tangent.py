@@ -56,10 +56,6 @@ Almost-everywhere derivatives: ``sign``, ``floor`` and ``ceiling`` differentiate
 ``DiracDelta`` / unevaluated ``Derivative``); ``Abs`` to ``sign``; ``Max``/``Min`` to a Heaviside
 step. At such a kink the derivative is one-sided or the mean of both sides, as printed. Anything
 SymPy leaves unevaluated is refused at generation.
-
-:meth:`Differentiator.jvp` builds the one-direction JVP kernel of the earlier design (arguments
-``<arg>__tan``, outputs ``<output>__tan``), which the exact map's runtime composes with its
-variational equations (runtime/exact_step_jacobian.py).
 """
 
 from __future__ import annotations
@@ -207,11 +203,10 @@ class Differentiator:
     - :meth:`jacobian` (then :meth:`build`): a public Jacobian kernel (outputs, then d output_i /
       d input_j row-major, a batch form), which every caller differentiating the same kernel with
       respect to the same arguments shares.
-    - :meth:`jvp`: the one-direction JVP kernel (runtime/exact_step_jacobian.py).
 
     No derivative kernel checks its derivatives or its direction arguments for finiteness: an
     infinite derivative of an output the caller does not use must not fail the caller, and one the
-    public API returns is its NUMERICAL_RANGE (runtime/jacobian.py). A public Jacobian checks its
+    public API returns is its NUMERICAL_RANGE (runtime/api/jacobian.py). A public Jacobian checks its
     values as the map does; the others leave that to their callers, as JVP kernels always did.
     """
 
@@ -233,7 +228,7 @@ class Differentiator:
     ) -> None:
         """Declare the public Jacobian kernel ``name``: ``kernel``'s outputs and their derivatives
         ``d_<out>__<w>`` with respect to each ``w`` of ``wrt`` (values checked to be finite, the
-        derivatives left to runtime/jacobian.py), with a batch form. :meth:`build` builds it, after
+        derivatives left to runtime/api/jacobian.py), with a batch form. :meth:`build` builds it, after
         every declaration, so that each caller differentiating ``kernel`` with respect to ``wrt``
         (another map's zeroth iterate, the apex-return map's stance) calls it by its public name."""
         key = (kernel.module, kernel.name, tuple(wrt))
@@ -248,28 +243,6 @@ class Differentiator:
             self._jacobian(kernel, wrt)
         self._pending.clear()
         return self.kernels
-
-    def jvp(self, kernel: Kernel, active: tuple[str, ...]) -> Kernel:
-        """``kernel`` and the derivative of every output along a direction in its ``active``
-        arguments, given as the extra arguments ``<arg>__tan``; outputs ``<out>__tan``."""
-        active = tuple(active)
-        unknown = [a for a in active if a not in kernel.arg_names]
-        if unknown:
-            raise ValueError(f"kernel {kernel.name}: cannot differentiate with respect to {unknown}")
-        key = (kernel.module, kernel.name, ("jvp", active))
-        if key not in self._jvps:
-            name = f"{kernel.name}_jvp" + ("" if active == kernel.arg_names else "_" + "_".join(active))
-            seeds = {a: {None: sym(tangent_name(a))} for a in active}
-            self._jvps[key] = self._derive(
-                kernel,
-                (None,),
-                seeds,
-                name=name,
-                extra=tuple(Arg(sym(tangent_name(a)), f"direction: its component along {a}") for a in active),
-                summary=f"{kernel.summary.rstrip('.')}, with the derivative of every output along the "
-                f"direction ({', '.join(tangent_name(a) for a in active)}).",
-            )
-        return self._jvps[key].kernel
 
     # -- internal kernels ---------------------------------------------------------------------------
     def _jacobian(self, kernel: Kernel, wrt: tuple[str, ...]) -> _Derived:
@@ -528,6 +501,8 @@ class _Ctx:
             for local in c.bind.values():
                 self.frame.bind(local, {w: sp.S.Zero for w in wrt})
             return [c]
+        if callee.external:
+            return self.external_call(c, arg_t, active)
         # (in the generic direction always the callee's Jacobian: its tangents are values there)
         how, by = self.diff._for_call(callee, active, active if self.generic else dirs)
         if how == "jacobian":
@@ -576,6 +551,41 @@ class _Ctx:
                     tangent[w] = sym(tangent_name(local, w))
             self.frame.tangents[local] = tangent
         return [Call(derived.kernel, args, bind, comment=c.comment)]
+
+    def external_call(self, c: Call, arg_t: dict[str, _Tangent], active: tuple[str, ...]) -> list:
+        """A hand-written callee (``Kernel.external``): its own Jacobian kernel gives d output / d
+        argument, and each bound output's tangent is that row times the arguments' tangents."""
+        callee = c.kernel
+        if callee.jacobian is None:
+            raise ValueError(
+                f"external kernel {callee.name} has no Jacobian: cannot differentiate a call of it"
+            )
+        missing = [a for a in active if a not in callee.jacobian_wrt]
+        if missing:
+            raise ValueError(
+                f"external kernel {callee.name}: its Jacobian is with respect to "
+                f"{list(callee.jacobian_wrt)}, "
+                f"not {missing}"
+            )
+        bind = dict(c.bind)
+        chain = []
+        for out, local in c.bind.items():
+            entries = []
+            for a in active:
+                entry = sym(f"dext_{local}__{a}")
+                bind[tangent_name(out, a)] = entry.name
+                entries.append((entry, a))
+            tangent = {w: sp.Add(*(j * arg_t[a][w] for j, a in entries)) for w in self.frame.wrt}
+            chain += self.frame.bind(local, tangent)
+        steps: list = [Call(callee.jacobian, dict(c.args), bind, comment=c.comment)]
+        if chain:
+            steps.append(
+                Stage(
+                    tuple(chain),
+                    comment=f"tangents of {callee.name}'s outputs: its Jacobian times the directions",
+                )
+            )
+        return steps
 
     def iterate(self, it: Iterate, tail: tuple = ()) -> list:
         """The loop (and the stages and calls of its ``tail``) with its tangents: written once and

@@ -17,10 +17,10 @@ Run: ``python examples/choose_kd.py [TARGET_HEIGHT ...]`` (default 0.95 1.0 1.05
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import slipmaps
-from slipmaps.runtime.flight import next_apex, touchdown
+from slipmaps.runtime.cli.flight import next_apex, touchdown
 
 PARAMS = slipmaps.HUMAN_RUNNER  # k_c = 20000 N/m
 APEX = (1.0, 5.0, 0.35)  # apex height [m], apex speed [m/s], touchdown angle [rad]
@@ -39,7 +39,7 @@ class Choice:
 
 
 def _with_kd(k_d: float) -> slipmaps.SlipParams:
-    return replace(PARAMS, k_d=k_d)
+    return PARAMS.with_(k_d=k_d)
 
 
 def from_bottom(bottom) -> callable:
@@ -51,7 +51,7 @@ def from_bottom(bottom) -> callable:
         if not half.ok:
             return float("nan")
         end = tuple(half[f"end_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd"))
-        status, h, _ = next_apex(params, end)
+        status, h, _ = next_apex(params, end, 1.0)  # a step toward +x
         return h if status == slipmaps.Status.OK else float("nan")
 
     return height

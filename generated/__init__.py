@@ -32,6 +32,8 @@ Modules:
         state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance,
         state-at-time and apex-return kernels.
+    exact: Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and
+        apex-return kernels.
     flight_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP
         kernels, and for a map its stance and apex-return Jacobians.
     geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels,
@@ -54,6 +56,12 @@ Modules:
         iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP
         kernels, and for a map its stance and apex-return Jacobians.
+    exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels,
+        and for a map its stance and apex-return Jacobians.
+    exact_compression: Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section
+        2.2): touchdown -> bottom.
+    exact_decompression: Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section
+        2.2): bottom -> liftoff.
     iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report
         section 5.2.1): touchdown -> bottom.
     iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report

@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:e1c99c5d9ccf115a
-#   geyer.py sha256:56141b7b10ce8833
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return
 kernels."""
@@ -26,8 +26,8 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERI
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
-_NAN11 = (NAN,) * 11
 _NAN12 = (NAN,) * 12
+_NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
@@ -45,10 +45,10 @@ def gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
@@ -278,10 +278,10 @@ def gravity_type2_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
@@ -458,21 +458,24 @@ def gravity_type2_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading,
-        samples, leg_length, iterations, tol):
+def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, samples, leg_length, iterations, tol):
     """Apex-return map: exact flights, stance by Gravity correction type 2 (average leg length).
 
     Report equations: 46, 47, 48, 50, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k: leg stiffness k [N/m] (constant: k_c = k_d)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
@@ -485,8 +488,8 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
             1]
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -494,38 +497,44 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 3
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s)
-            and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
             and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(leg_length)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((b_xd_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
-            and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0)
-            and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples
-            == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0)
-            or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN11 + (STATUS_INVALID_INPUT,)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples
+            >= 2.0) and (samples <= 3.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length
+            == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN14 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
-    if _c0[5] != STATUS_OK:
-        return _NAN11 + (_c0[5],)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN14 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
+    foot_x = _c0[5]
     # stance: Gravity correction type 2 (average leg length)
     _c1 = (gravity_type2_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples,
         leg_length, iterations, tol))
     if _c1[12] != STATUS_OK:
-        return _NAN11 + (_c1[12],)
+        return _NAN14 + (_c1[12],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -534,37 +543,42 @@ def gravity_type2_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, 
     P_c = _c1[10]
     passes = _c1[11]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
-    if _c2[4] != STATUS_OK:
-        return _NAN11 + (_c2[4],)
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN14 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
             and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
             and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
             and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+        return _NAN14 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, P_c, passes, STATUS_OK)
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type2_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading,
-        samples, leg_length, iterations, tol, out, status):
+def gravity_type2_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, samples, leg_length, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type2_apex_return`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, leg_length,
     iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    Writes output j of row i to ``out[i, j]`` (shape (n, 14)) and its status code to
     ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = (gravity_type2_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k, g_s, g_f, q_r_td,
-            q_r_lo, reading, samples, leg_length, iterations, tol))
+        res = (gravity_type2_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, reading, samples, leg_length, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -576,4 +590,7 @@ def gravity_type2_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k, g_s,
         out[i, 8] = res[8]
         out[i, 9] = res[9]
         out[i, 10] = res[10]
-        status[i] = res[11]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        out[i, 13] = res[13]
+        status[i] = res[14]

@@ -1,20 +1,20 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:e1c99c5d9ccf115a
-#   geyer.py sha256:56141b7b10ce8833
-#   geyer_vs.py sha256:1911c03cc28dae7e
-#   gravity_type0.py sha256:df2c2f22d8ab5893
-#   gravity_type1.py sha256:07372a3473961a61
-#   gravity_type2.py sha256:ec7faca9c4a8859a
-#   gravity_type3.py sha256:580dc33ab469086f
-#   gravity_type4.py sha256:af8a365d68c74c6e
-#   gravity_type5.py sha256:bd691a41dfefc3ea
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
+#   geyer_vs.py sha256:a6ee89e186ef4bfc
+#   gravity_type0.py sha256:4ed141dc3f790aa7
+#   gravity_type1.py sha256:80cd2ce579117fc4
+#   gravity_type2.py sha256:58993d926f39c1da
+#   gravity_type3.py sha256:c3762bab48ece072
+#   gravity_type4.py sha256:dfdb6ca60108eea5
+#   gravity_type5.py sha256:802b0ef9c9c3aa72
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -41,8 +41,8 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
 
 NAN = math.nan
 _NAN6 = (NAN,) * 6
-_NAN10 = (NAN,) * 10
 _NAN11 = (NAN,) * 11
+_NAN13 = (NAN,) * 13
 
 
 @njit(cache=True, error_model="numpy")
@@ -58,10 +58,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         q_rd: touchdown state: leg length rate [m/s]
         q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         guess_q_r: zeroth iterate's bottom q_r
         guess_q_th: zeroth iterate's bottom q_th
         guess_q_thd: zeroth iterate's bottom q_thd
@@ -850,10 +850,10 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         q_rd: bottom state: leg length rate [m/s]
         q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         guess_q_th: zeroth iterate's liftoff q_th
         guess_q_thd: zeroth iterate's liftoff q_thd
@@ -1622,11 +1622,11 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
@@ -1841,23 +1841,26 @@ def iterative_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, 
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes,
-        iterations, tol, zeroth):
+def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        nodes, iterations, tol, zeroth):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground [m], >= 0
-        b_xd_apex: horizontal apex speed [m/s], >= 0 (the runner moves in +x)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
-        g_f: gravitational acceleration in flight g_f [m/s^2], positive
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
@@ -1871,8 +1874,8 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
             geyer-vs
 
     Returns a tuple:
-        apex_height: next apex height above the ground [m]
-        apex_speed: next apex horizontal speed [m/s]
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
         t_stance: stance time, touchdown to liftoff [s]
         t_ascent: flight time from liftoff to the next apex [s]
@@ -1880,16 +1883,19 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         passes: Picard passes run (the larger of the two halves) [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 3
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d)
-            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
-            and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol)
-            and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((b_xd_apex >= 0.0)) and ((abs(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
             < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
             > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
             > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes
@@ -1897,21 +1903,24 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
             <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth
             == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth
             == 7.0) or (zeroth == 8.0))):
-        return _NAN10 + (STATUS_INVALID_INPUT,)
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f)
-    if _c0[5] != STATUS_OK:
-        return _NAN10 + (_c0[5],)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
     td_q_thd = _c0[3]
     t_descent = _c0[4]
+    foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _c1 = (iterative_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
         iterations, tol, zeroth))
     if _c1[11] != STATUS_OK:
-        return _NAN10 + (_c1[11],)
+        return _NAN13 + (_c1[11],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -1919,37 +1928,42 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_
     liftoff_q_thd = _c1[9]
     passes = _c1[10]
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f)
-    if _c2[4] != STATUS_OK:
-        return _NAN10 + (_c2[4],)
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
             and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
             and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
             and math.isfinite(passes)):
-        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
     return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, passes, STATUS_OK)
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-        nodes, iterations, tol, zeroth, out, status):
+def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, nodes, iterations, tol, zeroth, out, status):
     """Parallel batch form of :func:`iterative_apex_return`.
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td.
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,
     zeroth.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
     ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
     """
     for i in prange(out.shape[0]):
-        res = (iterative_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], m, l0, k_c, k_d, g_s, g_f, q_r_td,
-            q_r_lo, nodes, iterations, tol, zeroth))
+        res = (iterative_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s,
+            g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1960,4 +1974,7 @@ def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, m, l0, k_c, k_d, g
         out[i, 7] = res[7]
         out[i, 8] = res[8]
         out[i, 9] = res[9]
-        status[i] = res[10]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]

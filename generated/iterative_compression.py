@@ -1,20 +1,20 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:56141b7b10ce8833
-#   geyer_vs.py sha256:1911c03cc28dae7e
-#   gravity_type0.py sha256:df2c2f22d8ab5893
-#   gravity_type1.py sha256:07372a3473961a61
-#   gravity_type2.py sha256:ec7faca9c4a8859a
-#   gravity_type3.py sha256:580dc33ab469086f
-#   gravity_type4.py sha256:af8a365d68c74c6e
-#   gravity_type5.py sha256:bd691a41dfefc3ea
-#   iterative.py sha256:a9c442a7ac29842a
+#   geyer.py sha256:b5f57629dafd4ce6
+#   geyer_vs.py sha256:a6ee89e186ef4bfc
+#   gravity_type0.py sha256:4ed141dc3f790aa7
+#   gravity_type1.py sha256:80cd2ce579117fc4
+#   gravity_type2.py sha256:58993d926f39c1da
+#   gravity_type3.py sha256:c3762bab48ece072
+#   gravity_type4.py sha256:dfdb6ca60108eea5
+#   gravity_type5.py sha256:802b0ef9c9c3aa72
+#   iterative.py sha256:b83092ee58fe80fb
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -54,10 +54,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
         q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
         q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_c: leg stiffness while compressing k_c [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]

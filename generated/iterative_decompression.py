@@ -1,12 +1,12 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:a9c442a7ac29842a
+#   iterative.py sha256:b83092ee58fe80fb
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -36,10 +36,10 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
         q_rd_b: bottom leg length rate [m/s] (not read: 0 at the bottom)
         q_th_b: bottom leg angle from the vertical, counterclockwise positive [rad], |q_th_b| < pi/2
         q_thd_b: bottom leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
             (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6

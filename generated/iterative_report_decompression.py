@@ -1,6 +1,6 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind_report.py
+# Source:    derive/maps/iterative_report.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
@@ -35,10 +35,10 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         q_rd_b: bottom leg length rate [m/s] (not read: 0 at the bottom)
         q_th_b: bottom leg angle from the vertical, counterclockwise positive [rad], |q_th_b| < pi/2
         q_thd_b: bottom leg angle rate [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
-        k_d: leg stiffness after the bottom k_d [N/m]
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]

@@ -28,10 +28,10 @@ def stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
         k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
     Returns a tuple:
         d_q_r: dq_r/dt [m/s]
@@ -60,10 +60,10 @@ def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
         k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
     Returns a tuple:
         d_q_rd_d_q_r: dq_rd/dq_r [(m/s)/(m)]
@@ -130,10 +130,10 @@ def stance_cartesian_rhs(b_x, b_xd, b_y, b_yd, m, l0, k, g_s):
         b_xd: horizontal body velocity b_xd [m/s]
         b_y: body height above the toe b_y [m]
         b_yd: vertical body velocity b_yd [m/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
         k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
     Returns a tuple:
         d_b_x: db_x/dt [m/s]
@@ -164,10 +164,10 @@ def stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
-        m: body mass m [kg]
-        l0: rest leg length l0 [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
         k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
-        g_s: gravitational acceleration in stance g_s [m/s^2], positive
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
     Returns:
         energy: total mechanical energy E (gravity potential zero at toe height) [J]

@@ -1,1 +1,9 @@
-"""slipmaps.runtime: exact hybrid simulation, apex-return maps built on the generated kernels, CLI."""
+"""slipmaps.runtime: everything that runs the generated kernels, in subpackages by job.
+
+Imports run one way (a test checks it): ``api`` (the public names, parameters, validation, results,
+the index) < ``exact`` (the exact simulator: the compiled DOP853 integrator, its stance and
+Jacobian, the ``solve_ivp`` reference) < ``analysis`` (periodic gaits), ``sweep`` (parameter
+sweeps), ``studies`` (the accuracy, convergence, stiffness and stability studies and their
+reports) < ``cli`` (one module per command). Where numba caches the compiled kernels is set up by the
+top-level package (``slipmaps.kernel_cache``).
+"""

@@ -429,6 +429,10 @@ NOMINAL = {
     "q_thd_td": -3.0,
     "q_r_lo": 1.0,
     "t": 0.05,
+    "ground": 0.0,
+    "direction": 1.0,
+    "rtol": 1e-11,
+    "atol": 1e-12,
 }
 
 
@@ -460,27 +464,56 @@ def test_index_lists_every_declared_map():
     assert len(set(MAP_IDS)) == len(MAP_IDS)
 
 
-@pytest.mark.parametrize("row", MAPS, ids=MAP_IDS)
+def test_a_map_is_declared_in_the_module_named_after_it_or_its_family():
+    """derive/maps/<name>.py declares the map <name> (or, a family module, the maps <name>-...): the
+    check all_maps() runs names the module a misplaced declaration belongs in; a module that declares
+    no map is named *_helpers.py."""
+    from slipmaps.derive import maps
+
+    specs = {spec.name: spec for spec in all_maps()}
+    maps._check_layout([("geyer", specs["geyer"]), ("gravity", specs["gravity-type2"])], "map")
+    with pytest.raises(
+        ValueError, match=r"geyer-vs is declared in derive/maps/geyer\.py: it belongs in .*/geyer_vs\.py"
+    ):
+        maps._check_layout([("geyer", specs["geyer-vs"])], "map")
+    with pytest.raises(ValueError, match=r"gravity-type5 .* belongs in derive/maps/gravity_type5\.py"):
+        maps._check_layout([("gravity", specs["gravity-type5"])], "map")
+    # derive/maps/<module>.py of every declaration
+    sources = {spec.source for spec in (*all_maps(), *maps.all_halves(), maps.ground_truth())}
+    modules = [m.__name__.rsplit(".", 1)[-1] for m in maps._modules()]
+    assert any(m.endswith(maps.HELPERS_SUFFIX) for m in modules)
+    for m in modules:
+        assert (f"derive/maps/{m}.py" in sources) != m.endswith(maps.HELPERS_SUFFIX), m
+
+
+@pytest.mark.parametrize("row", [*MAPS, maps_index.EXACT], ids=[*MAP_IDS, "exact"])
 def test_map_module_exports_kernels_with_index_signatures(row):
-    mod = MAP_MODULES[row["name"]]
+    """The index publishes every kernel's calling convention (what the runtime fills by name): each
+    role's function exists in its module, jitted, with exactly those arguments, and its batch form
+    takes its row arguments then the scalars, then out and status."""
     kernels = row["kernels"]
-    assert kernels["stance"] and kernels["apex_return"]
-    expected = {
-        kernels["stance"]: row["stance_args"],
-        kernels["apex_return"]: row["apex_args"],
-    }
-    if kernels["state_at"]:
-        expected[kernels["state_at"]] = ["t", *row["stance_args"]]
-    for name, args in expected.items():
-        for fn_name, fn_args in ((name, args), (f"{name}_batch", [*args, "out", "status"])):
+    assert {"stance", "apex_return", "stance_jacobian", "apex_return_jacobian"} <= set(kernels)
+    for role, spec in kernels.items():
+        mod = importlib.import_module(f"slipmaps.generated.{spec['module']}")
+        rows = [a for a in spec["args"] if a in spec["rows"]]
+        assert spec["rows"] == rows and spec["batch"] == rows + [a for a in spec["args"] if a not in rows], (
+            role
+        )
+        batch = (f"{spec['name']}_batch", [*spec["batch"], "out", "status"])
+        for fn_name, fn_args in ((spec["name"], spec["args"]), batch):
             fn = getattr(mod, fn_name, None)
             assert fn is not None, f"{mod.__name__} has no {fn_name}"
             assert _is_kernel(mod, fn), fn_name
             assert _params(fn) == fn_args, fn_name
-    assert row["stance_args"][:4] == maps_index.TOUCHDOWN
-    assert row["stance_args"][4 : 4 + len(row["params"])] == row["params"]
-    options = [o["name"] for o in row["options"]]
-    assert row["stance_args"][len(row["stance_args"]) - len(options) :] == options
+    stance = kernels["stance"]["args"]
+    assert stance[:4] == maps_index.TOUCHDOWN and kernels["stance"]["rows"] == maps_index.TOUCHDOWN
+    assert stance[4 : 4 + len(row["params"])] == row["params"]
+    options = [o["name"] for o in row["options"] if o["kernel"]]
+    assert stance[len(stance) - len(options) :] == options
+    assert kernels["apex_return"]["rows"] == list(maps_index.APEX_PUBLIC)
+    if "state_at" in kernels:
+        assert kernels["state_at"]["args"] == ["t", *stance] and kernels["state_at"]["rows"] == ["t"]
+    assert kernels["apex_return_jacobian"]["wrt"][:4] == list(maps_index.APEX_PUBLIC)
 
 
 @pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
@@ -515,7 +548,7 @@ def _scalar_kernels():
 
 
 def _map_kernel_names() -> set[str]:
-    return {n for row in MAPS for n in row["kernels"].values() if n}
+    return {k["name"] for row in MAPS for role, k in row["kernels"].items() if not role.endswith("_jacobian")}
 
 
 @pytest.mark.parametrize(("mod", "name"), _scalar_kernels())
@@ -694,36 +727,41 @@ def _apex_points(name, n=N_POINTS):
         p = _params_sample(rng)
         q_th_td = rng.uniform(-0.6, 0.6)
         q_r_td = rng.uniform(0.8, 1.0) * p["l0"]
+        ground = rng.uniform(-0.2, 0.2) * p["l0"]  # a step up (> 0) or down
         p.update(
             q_th_td=q_th_td,
             q_r_td=q_r_td,
-            b_y_apex=q_r_td * math.cos(q_th_td) + rng.uniform(0.02, 0.5) * p["l0"],
-            b_xd_apex=rng.uniform(0.5, 8.0),
+            ground=ground,
+            b_y_apex=max(ground, 0.0) + q_r_td * math.cos(q_th_td) + rng.uniform(0.02, 0.5) * p["l0"],
+            b_xd_apex=rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 8.0),  # signed: either direction
         )
         pts.append(p)
     return pts
 
 
-A2T_ARGS = ("b_y_apex", "b_xd_apex", "q_th_td", "q_r_td", "g_f")
+A2T_ARGS = ("b_y_apex", "b_xd_apex", "q_th_td", "q_r_td", "g_f", "ground")
 
 
 def _apex_to_touchdown_ref(env, cse):
     atd = d_flight.apex_to_touchdown()
     env = {**env, atd["drop_symbol"].name: ev(atd["drop"], env, cse)}
-    return [ev(e, env, cse) for e in atd["state"]] + [ev(atd["t_flight"], env, cse)]
+    return [ev(e, env, cse) for e in atd["state"]] + [ev(atd[k], env, cse) for k in ("t_flight", "foot_x")]
 
 
 def test_apex_to_touchdown_matches_derivation():
     assert _params(g_flight.apex_to_touchdown) == list(A2T_ARGS)
     pts = _apex_points("a2t")
-    got = _assert_agree(g_flight.apex_to_touchdown, A2T_ARGS, pts, _apex_to_touchdown_ref, 5)
-    # Physics of the descent: falling speed sqrt(2 g drop), horizontal speed kept.
+    got = _assert_agree(g_flight.apex_to_touchdown, A2T_ARGS, pts, _apex_to_touchdown_ref, 6)
+    # Physics of the descent onto ground `ground` higher: falling speed sqrt(2 g drop), horizontal
+    # speed kept, the toe a flight's travel plus q_r_td sin(q_th_td) ahead of the apex.
     for env, row in zip(pts, got, strict=True):
         _, xd, _, yd = g_slip.polar_to_cartesian(*row[:4])
         assert xd == pytest.approx(env["b_xd_apex"], rel=1e-12)
-        drop = env["b_y_apex"] - env["q_r_td"] * math.cos(env["q_th_td"])
+        drop = env["b_y_apex"] - env["ground"] - env["q_r_td"] * math.cos(env["q_th_td"])
         assert yd == pytest.approx(-math.sqrt(2 * env["g_f"] * drop), rel=1e-12)
         assert row[4] == pytest.approx(-yd / env["g_f"], rel=1e-12)
+        foot = env["b_xd_apex"] * row[4] + env["q_r_td"] * math.sin(env["q_th_td"])
+        assert row[5] == pytest.approx(foot, rel=1e-12, abs=1e-12)
 
 
 def _liftoff_points(name, n=N_POINTS):
@@ -738,7 +776,8 @@ def _liftoff_points(name, n=N_POINTS):
             q_th=rng.uniform(-0.6, -0.05),
             q_thd=rng.uniform(-6.0, -0.5),
         )
-        if g_flight.liftoff_to_apex(*(p[n] for n in POLAR), p["g_f"])[-1] == OK:
+        p["direction"] = 1.0
+        if g_flight.liftoff_to_apex(*(p[n] for n in POLAR), p["g_f"], p["direction"])[-1] == OK:
             pts.append(p)
     return pts
 
@@ -746,17 +785,26 @@ def _liftoff_points(name, n=N_POINTS):
 def _liftoff_to_apex_ref(env, cse):
     lta = d_flight.liftoff_to_apex()
     env = {**env, **{n: ev(e, env, cse) for n, e in zip(CART, lta["liftoff_cartesian"], strict=True)}}
-    return [ev(lta[key], env, cse) for key in ("b_y_apex", "b_xd_apex", "t_flight", "dx_flight")]
+    return [ev(lta[key], env, cse) for key in ("b_y_apex", "b_xd_apex", "t_flight", "dx_flight", "apex_b_x")]
 
 
 def test_liftoff_to_apex_matches_derivation():
     pts = _liftoff_points("l2a")
-    got = _assert_agree(g_flight.liftoff_to_apex, POLAR + ("g_f",), pts, _liftoff_to_apex_ref, 4)
+    got = _assert_agree(g_flight.liftoff_to_apex, POLAR + ("g_f", "direction"), pts, _liftoff_to_apex_ref, 5)
     for env, row in zip(pts, got, strict=True):
-        _, xd, y, yd = g_slip.polar_to_cartesian(*(env[n] for n in POLAR))
+        x, xd, y, yd = g_slip.polar_to_cartesian(*(env[n] for n in POLAR))
         # Energy per unit mass is conserved in flight: g y + yd^2 / 2 = g * apex height.
         assert row[0] * env["g_f"] == pytest.approx(env["g_f"] * y + yd**2 / 2, rel=1e-12)
         assert row[3] == pytest.approx(xd * row[2], rel=1e-12)
+        assert row[4] == pytest.approx(x + row[3], rel=1e-12)  # the next apex relative to the toe
+
+
+def test_liftoff_against_the_direction_is_backward_and_a_hop_in_place_goes_either_way():
+    """LIFTOFF_BACKWARD is relative to the step's direction (the sign of its apex speed): the same
+    liftoff moving toward +x is backward for a step toward -x, and fine for a hop in place."""
+    forward = (1.0, 1.5, -0.3, -4.4)
+    ok, backward, either = (g_flight.liftoff_to_apex(*forward, 9.81, d)[-1] for d in (1.0, -1.0, 0.0))
+    assert ok == OK and backward == int(Status.LIFTOFF_BACKWARD) and either == OK
 
 
 # Geyer et al.'s stance map (report section 3.1) ------------------------------------------------
@@ -899,7 +947,8 @@ def test_apex_return_is_flight_stance_flight_composition(row):
     """<map>_apex_return = flight.apex_to_touchdown -> <map>_stance -> flight.liftoff_to_apex, bit for bit,
     with the map's default options; a failing stage's status is the kernel's status."""
     mod = MAP_MODULES[row["name"]]
-    apex_return, stance = getattr(mod, row["kernels"]["apex_return"]), getattr(mod, row["kernels"]["stance"])
+    spec_ap, spec_st = row["kernels"]["apex_return"], row["kernels"]["stance"]
+    apex_return, stance = getattr(mod, spec_ap["name"]), getattr(mod, spec_st["name"])
     extras = [e["name"] for e in row["extras"]]
     stance_names = STANCE_OUT + extras
     opts = option_defaults(row)
@@ -910,17 +959,20 @@ def test_apex_return_is_flight_stance_flight_composition(row):
         env["q_r_td"] = env["l0"] * rng.choice([1.0, rng.uniform(0.95, 1.0)])
         env["q_r_lo"] = env["l0"] * rng.choice([1.0, rng.uniform(0.95, 1.0)])
         env["q_th_td"] = rng.uniform(0.1, 0.45)  # toe ahead of the body
-        env["b_y_apex"] = env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(-0.01, 0.2) * env["l0"]
+        env["ground"] = rng.uniform(-0.1, 0.1) * env["l0"]
+        env["b_y_apex"] = (
+            env["ground"] + env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(-0.01, 0.2) * env["l0"]
+        )
         env["b_xd_apex"] = rng.uniform(0.3, 2.5) * math.sqrt(env["g_f"] * env["l0"])
-        got = apex_return(*(env[a] for a in row["apex_args"]))
+        got = apex_return(*(env[a] for a in spec_ap["args"]))
         assert len(got) == len(APEX_OUT) + len(extras) + 1
         td = g_flight.apex_to_touchdown(*(env[k] for k in A2T_ARGS))
         stance_env = {**env, **dict(zip(maps_index.TOUCHDOWN, td[:4], strict=True))}
-        st = stance(*(stance_env[a] for a in row["stance_args"]))
+        st = stance(*(stance_env[a] for a in spec_st["args"]))
         failed = next((res[-1] for res in (td, st) if res[-1] != OK), None)
         if failed is None:
             out = dict(zip(stance_names, st[:-1], strict=True))
-            ap = g_flight.liftoff_to_apex(*(out[f"liftoff_{p}"] for p in POLAR), env["g_f"])
+            ap = g_flight.liftoff_to_apex(*(out[f"liftoff_{p}"] for p in POLAR), env["g_f"], 1.0)
             failed = None if ap[-1] == OK else ap[-1]
         if failed is not None:
             n_fail += 1
@@ -933,6 +985,9 @@ def test_apex_return_is_flight_stance_flight_composition(row):
             "apex_speed": ap[1],
             "t_descent": td[4],
             "t_ascent": ap[2],
+            "step_length": td[5] + ap[4],
+            "foot_x": td[5],
+            "foot_y": env["ground"] - env["b_y_apex"],
             **{k: out[k] for k in ("t_stance", *(f"liftoff_{p}" for p in POLAR), *extras)},
         }
         assert got == (*(expected[k] for k in APEX_OUT + extras), OK)

@@ -1,6 +1,6 @@
-"""Exact stance derivatives (runtime/exact_jacobian.py, through slipmaps.stance_jacobian("exact")):
+"""Exact stance derivatives (runtime/exact/jacobian.py, through slipmaps.stance_jacobian("exact")):
 the variational equations of (2)-(3) with saltation matrices at the bottom (k_c -> k_d) and at
-liftoff, against central differences of the compiled simulator itself (runtime/exact_compiled.py).
+liftoff, against central differences of the compiled simulator itself (runtime/exact/compiled.py).
 
 Central-difference step: h = 1e-5 times each input's scale (l0, sqrt(g_s l0), 1 rad, sqrt(g_s/l0),
 k_c, k_d), the best of 1e-4 ... 1e-7 measured on every case below (truncation error ~ h^2 above,
@@ -17,16 +17,14 @@ import pytest
 import slipmaps
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
-from slipmaps.runtime import exact_compiled as ec
-from slipmaps.runtime import exact_jacobian as ej
-from slipmaps.runtime.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
-from slipmaps.runtime.simulate import DEFAULT_ATOL, DEFAULT_RTOL
+from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from slipmaps.runtime.exact import jacobian as ej
 
 FD_STEP = 1e-5
 
 
 def _touchdown(p: SlipParams, height: float, speed: float, angle: float) -> tuple[float, ...]:
-    return tuple(gen_flight.apex_to_touchdown(height, speed, angle, p.q_r_td, p.g_f)[:4])
+    return tuple(gen_flight.apex_to_touchdown(height, speed, angle, p.q_r_td, p.g_f, 0.0)[:4])
 
 
 SYMMETRIC_ANGLE = 0.41116492751713  # the human runner's symmetric fixed point at 1 m, 5 m/s
@@ -53,9 +51,9 @@ CASES = [
 
 def _outputs(p: SlipParams, w: np.ndarray) -> np.ndarray:
     stiffness = p.with_(k_c=w[ej.K_C], k_d=w[ej.K_D])
-    status, values = ec.stance_values(stiffness, w[list(ej.TOUCHDOWN)], DEFAULT_RTOL, DEFAULT_ATOL)
-    assert status == Status.OK
-    return np.array([values[n] for n in ej.OUTPUTS])
+    res = slipmaps.stance("exact", stiffness, w[list(ej.TOUCHDOWN)])
+    assert res.status == Status.OK
+    return np.array([res.values[n] for n in ej.OUTPUTS])
 
 
 @pytest.mark.parametrize(("params", "touchdown"), CASES)
@@ -93,7 +91,9 @@ def test_batch_rows_equal_scalar_calls_and_failures_are_nan():
     p = HUMAN_RUNNER.with_(k_d=9_000.0)
     vertical = _touchdown(p, 1.1, 0.0, 0.0)  # RECOMPRESSION with the soft k_d (test_simulator.py)
     rows = np.array([(0.99, -1.5, 0.35, -4.5), vertical, (1.0, 0.5, 0.3, -4.0), (math.nan, -1.0, 0.3, -4.0)])
-    out, jac, status = ej.jacobian_rows(p, rows)
+    batch = slipmaps.stance_jacobian_batch("exact", p, rows)
+    out = np.column_stack([batch.result[n] for n in ej.OUTPUTS])
+    jac, status = batch.matrix, batch.status
     expected = [Status.OK, Status.RECOMPRESSION, Status.TOUCHDOWN_NOT_COMPRESSING, Status.INVALID_INPUT]
     assert list(status) == expected
     one = slipmaps.stance_jacobian("exact", p, rows[0])
@@ -107,3 +107,37 @@ def test_batch_rows_equal_scalar_calls_and_failures_are_nan():
         slipmaps.stance_jacobian("exact", p, (1.2, -1.0, 0.3, -4.0))
     with pytest.raises(KeyError, match="apex"):
         _ = one["apex", "k_c"]
+
+
+#: The parity of each output (t_bottom, t_stance, bottom, liftoff) and input (touchdown, k_c, k_d)
+#: under the mirror x -> -x, (q_th, q_thd) -> (-q_th, -q_thd).
+_STATE_PARITY = (1.0, 1.0, -1.0, -1.0)
+OUT_PARITY = np.array([1.0, 1.0, *_STATE_PARITY, *_STATE_PARITY])
+IN_PARITY = np.array([*_STATE_PARITY, 1.0, 1.0])
+SIGNS = OUT_PARITY[:, None] * IN_PARITY[None, :]
+
+
+@pytest.mark.parametrize(("params", "touchdown"), CASES)
+def test_jacobian_is_mirror_symmetric(params, touchdown):
+    """d(out_i)/d(in_j) of the mirrored touchdown is parity(out_i) parity(in_j) times the original's."""
+    mirror = tuple(np.array(touchdown) * IN_PARITY[:4])
+    jac = slipmaps.stance_jacobian("exact", params, touchdown)
+    jac_m = slipmaps.stance_jacobian("exact", params, mirror)
+    assert jac.status == jac_m.status == Status.OK
+    # Measured over CASES: 0 (bitwise).
+    scale = np.max(np.abs(jac.matrix), axis=0)
+    assert np.max(np.abs(jac_m.matrix - SIGNS * jac.matrix) / scale) < 1e-14
+
+
+def test_vertical_hop_jacobian_has_no_mixed_parity_entries():
+    """At q_th = q_thd = 0 the mirror fixes the touchdown: entries coupling even and odd parities
+    are exactly 0, the others are not."""
+    p = HUMAN_RUNNER.with_(k_d=25_000.0)
+    jac = slipmaps.stance_jacobian("exact", p, (0.99, -1.5, 0.0, 0.0))
+    assert jac.status == Status.OK
+    assert np.all(jac.matrix[SIGNS < 0] == 0.0)
+    even = ("t_stance", "liftoff_q_rd")  # liftoff_q_r stays on the surface q_r = q_r_lo
+    odd = ("liftoff_q_th", "liftoff_q_thd")
+    even_in, odd_in = ("q_r_td", "q_rd_td", "k_c", "k_d"), ("q_th_td", "q_thd_td")
+    assert all(jac[o, i] != 0.0 for o in even for i in even_in)
+    assert all(jac[o, i] != 0.0 for o in odd for i in odd_in)

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 import slipmaps
 from slipmaps import SlipParams, Status
-from slipmaps.runtime import index
+from slipmaps.runtime.api import index
 
 MAP = "iterative-report"
 #: The Yu protocol's runner (kappa = k l0/(m g) = 10).

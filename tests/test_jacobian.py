@@ -43,9 +43,7 @@ TOUCHDOWNS = [(1.0, -1.55, 0.35, -4.6), (0.99, -1.2, 0.30, -5.2)]
 
 
 def _stiffness_params(params: slipmaps.SlipParams, name: str, x: float) -> slipmaps.SlipParams:
-    if name == "k":
-        return dataclasses.replace(params, k_c=x, k_d=x)
-    return dataclasses.replace(params, **{name: x})
+    return params.with_(**{name: x})  # k sets both stiffnesses
 
 
 def _params_for(name: str) -> slipmaps.SlipParams:
@@ -71,26 +69,36 @@ def _central(f, x0: tuple, j: int, h: float, outputs) -> np.ndarray:
     return np.array([(a[o] - b[o]) / (2 * h) for o in outputs])
 
 
+#: Apex-return points (apex height, speed, touchdown angle, ground): running toward +x onto a step
+#: up of 5 cm from a 1.1 m apex, and toward -x (the mirrored angle) onto a step down of 3 cm; both
+#: fall 9-11 cm to touchdown, as the flat-ground point (1.0, 5.0, 0.35) does 6 cm (a grazing
+#: touchdown's derivatives grow as 1/sqrt(drop), beyond the difference quotients' reach).
+APEX_POINTS = [(1.1, 5.0, 0.35, 0.05), (1.0, -5.0, -0.35, -0.03)]
+
+
+@pytest.mark.parametrize("point", APEX_POINTS, ids=["forward-step-up", "backward-step-down"])
 @pytest.mark.parametrize("name", NAMES)
-def test_apex_return_jacobian_matches_central_differences(name):
+def test_apex_return_jacobian_matches_central_differences(name, point):
+    """Every column, the ground's and the signed speed's included, against central differences."""
     params = _params_for(name)
-    point = (1.0, 5.0, 0.35)
-    jac = slipmaps.apex_return_jacobian(name, params, *point)
+    jac = slipmaps.apex_return_jacobian(name, params, *point[:3], ground=point[3])
     assert jac.ok, jac.message
-    assert jac.inputs[:3] == ("apex_height", "apex_speed", "touchdown_angle")
+    assert jac.inputs[:4] == ("apex_height", "apex_speed", "touchdown_angle", "ground")
+
+    def apex_return(h, v, th, ground, p=params):
+        return slipmaps.apex_return(name, p, h, v, th, ground=ground)
+
     columns, steps = [], []
     for j, inp in enumerate(jac.inputs):
-        if j < 3:
+        if j < 4:
             h = REL_STEP.get(name, 1e-6) * max(1.0, abs(point[j]))
-            columns.append(
-                _central(lambda *x: slipmaps.apex_return(name, params, *x), point, j, h, jac.outputs)
-            )
+            columns.append(_central(apex_return, point, j, h, jac.outputs))
         else:
             k = getattr(params, "k_c" if inp == "k" else inp)
             h = REL_STEP.get(name, 1e-6) * k
 
             def step(x, inp=inp):
-                return slipmaps.apex_return(name, _stiffness_params(params, inp, x), *point)
+                return apex_return(*point, p=_stiffness_params(params, inp, x))
 
             columns.append(_central(step, (k,), 0, h, jac.outputs))
         steps.append(h)
@@ -135,6 +143,7 @@ def _stance_error(name: str, params, touchdown, options: dict) -> float:
                 )
             )
         steps.append(h)
+    assert keep, (name, options)
     values = np.array([jac.values[o] for o in jac.outputs])
     kept = dataclasses.replace(jac, matrix=jac.matrix[:, keep], inputs=tuple(jac.inputs[j] for j in keep))
     return _compare(name, kept, np.array(columns).T, values, steps)
@@ -154,7 +163,7 @@ def _option_cases() -> list:
     run-time arguments)."""
     cases = []
     for info in slipmaps.maps():
-        if not info.generated:
+        if info.ground_truth:
             continue  # "exact": its one choice, method="scipy", has no Jacobian (tested below)
         for o in info.options:
             if o.kind == "choice":
@@ -163,6 +172,12 @@ def _option_cases() -> list:
                 with_tol = any(t.name == "tol" for t in info.options)
                 cases.append((info.name, {o.name: 3, **({"tol": 0} if with_tol else {})}))
     return cases
+
+
+def test_option_cases_cover_every_generated_map_with_options():
+    """The parametrization below is a filtered list: it must hold every generated map with options."""
+    with_options = {m.name for m in slipmaps.maps() if not m.ground_truth and m.options}
+    assert with_options and {name for name, _ in _option_cases()} == with_options
 
 
 @pytest.mark.parametrize(("name", "options"), _option_cases(), ids=lambda x: str(x))

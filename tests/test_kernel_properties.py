@@ -60,8 +60,8 @@ STANCE = tuple(r["name"] for r in maps_index.STANCE_OUTPUTS)
 APEX = tuple(r["name"] for r in maps_index.APEX_OUTPUTS)
 TRAJECTORY = tuple(r["name"] for r in maps_index.TRAJECTORY_OUTPUTS)
 TOUCHDOWN = tuple(maps_index.TOUCHDOWN)
-#: The batch rows of an apex-return kernel: the apex and the touchdown angle (the rest is shared).
-APEX_ROWS = ("b_y_apex", "b_xd_apex", "q_th_td")
+#: The batch rows of an apex-return kernel: the apex, the touchdown angle, the ground.
+APEX_ROWS = tuple(maps_index.APEX_PUBLIC)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -89,20 +89,20 @@ class Kernel:
 
 
 def _map_kernels(row: dict) -> list[Kernel]:
-    module = importlib.import_module(f"slipmaps.generated.{row['module']}")
+    """A map's stance, state-at-time and apex-return kernels, as the index publishes them."""
     extras = tuple(e["name"] for e in row["extras"])
-    layout = {
-        "stance": (tuple(row["stance_args"]), STANCE + extras, TOUCHDOWN),
-        "state_at": (("t", *row["stance_args"]), TRAJECTORY, ("t",)),
-        "apex_return": (tuple(row["apex_args"]), APEX + extras, APEX_ROWS),
-    }
+    expected = {"stance": STANCE + extras, "state_at": TRAJECTORY, "apex_return": APEX + extras}
     out = []
-    for role, (args, outputs, rows) in layout.items():
-        name = row["kernels"][role]
-        if name is None:
+    for role, outputs in expected.items():
+        spec = row["kernels"].get(role)
+        if spec is None:
             continue
-        scalar, batch = getattr(module, name), getattr(module, f"{name}_batch")
-        out.append(Kernel(name, role, row, scalar, batch, args, outputs, rows))
+        assert tuple(spec["outputs"]) == outputs, (row["name"], role)
+        module = importlib.import_module(f"slipmaps.generated.{spec['module']}")
+        scalar, batch = getattr(module, spec["name"]), getattr(module, f"{spec['name']}_batch")
+        out.append(
+            Kernel(spec["name"], role, row, scalar, batch, tuple(spec["args"]), outputs, tuple(spec["rows"]))
+        )
     return out
 
 
@@ -119,7 +119,7 @@ FLIGHT_KERNELS = [
         g_flight.apex_to_touchdown,
         None,
         _signature(g_flight.apex_to_touchdown),
-        ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd", "t_flight"),
+        ("touchdown_q_r", "touchdown_q_rd", "touchdown_q_th", "touchdown_q_thd", "t_flight", "foot_x"),
     ),
     Kernel(
         "liftoff_to_apex",
@@ -128,11 +128,17 @@ FLIGHT_KERNELS = [
         g_flight.liftoff_to_apex,
         None,
         _signature(g_flight.liftoff_to_apex),
-        ("apex_b_y", "apex_b_xd", "t_flight", "dx_flight"),
+        ("apex_b_y", "apex_b_xd", "t_flight", "dx_flight", "apex_b_x"),
     ),
 ]
 KERNELS = MAP_KERNELS + FLIGHT_KERNELS
 ROLE = {role: [k for k in MAP_KERNELS if k.role == role] for role in ("stance", "state_at", "apex_return")}
+
+
+def test_kernel_sets_by_role_are_not_empty():
+    """The tests below are parametrized over kernels filtered by role: an empty set would run none."""
+    assert FLIGHT_KERNELS and all(ROLE[role] for role in ROLE), {r: len(k) for r, k in ROLE.items()}
+    assert len(ROLE["stance"]) == len(ROLE["apex_return"]) == len(maps_index.MAPS)
 
 
 def _ids(kernels):
@@ -291,9 +297,13 @@ def touchdown_from(th: float, vx: float, vy: float, q_r: float) -> dict[str, flo
     return {"q_r_td": q_r, "q_rd_td": -s * vx + c * vy, "q_th_td": th, "q_thd_td": -(c * vx + s * vy) / q_r}
 
 
-def apex_from(th: float, vx: float, vy: float, q_r_td: float, g_f: float) -> dict[str, float]:
-    """The apex above a touchdown at angle th reached at (vx, vy), vy < 0 (the inverse descent)."""
-    return {"b_y_apex": q_r_td * math.cos(th) + vy**2 / (2.0 * g_f), "b_xd_apex": vx, "q_th_td": th}
+def apex_from(
+    th: float, vx: float, vy: float, q_r_td: float, g_f: float, ground: float = 0.0
+) -> dict[str, float]:
+    """The apex above a touchdown at angle th on ground ``ground`` higher, reached at (vx, vy), vy < 0
+    (the inverse descent)."""
+    apex = ground + q_r_td * math.cos(th) + vy**2 / (2.0 * g_f)
+    return {"b_y_apex": apex, "b_xd_apex": vx, "q_th_td": th, "ground": ground}
 
 
 @st.composite
@@ -318,7 +328,7 @@ def gait(draw, row: dict | None = None) -> dict[str, float]:
     env.update(touchdown_from(th, vx, vy, env["q_r_td"]))
     env.update(apex_from(th, vx, vy, env["q_r_td"], env["g_f"]))
     lo = touchdown_from(-th, vx, -vy, env["q_r_lo"])
-    env.update(q_r=lo["q_r_td"], q_rd=lo["q_rd_td"], q_th=lo["q_th_td"], q_thd=lo["q_thd_td"])
+    env.update(q_r=lo["q_r_td"], q_rd=lo["q_rd_td"], q_th=lo["q_th_td"], q_thd=lo["q_thd_td"], direction=1.0)
     env["t"] = draw(st.floats(0.0, 1.5)) * math.pi * math.sqrt(env["m"] / env["k"])
     if row is not None and row["options"]:
         combo = draw(st.sampled_from(option_combinations(row)), label="options")
@@ -444,6 +454,7 @@ def sweep_env(gait_row) -> dict[str, float]:
         "g_f": G,
         "q_r_td": r_td * l0,
         "q_r_lo": r_lo * l0,
+        "direction": 1.0,
     }
     env.update(touchdown_from(th, vx, vy, env["q_r_td"]))
     env.update(apex_from(th, vx, vy, env["q_r_td"], G))
@@ -484,6 +495,11 @@ REST_LENGTH_CHOICES = [
 ]
 
 
+def test_some_choices_need_touchdown_at_l0():
+    """The parametrization below is filtered (choices in ``at_rest_length``): it must not be empty."""
+    assert REST_LENGTH_CHOICES
+
+
 @pytest.mark.parametrize(("kernel", "option", "code"), REST_LENGTH_CHOICES)
 def test_choice_needing_touchdown_at_l0_rejects_a_shorter_touchdown(kernel, option, code):
     """A choice the index documents as needing the touchdown at l0 (the other options at their
@@ -506,7 +522,7 @@ DOMAINS = {
     "q_th_td": ("angle",),
     "t": ("negative",),
     "b_y_apex": ("negative",),
-    "b_xd_apex": ("negative",),  # the runner moves in +x
+    # b_xd_apex and ground: any finite value (a signed speed; a step up or down)
 }
 #: The flight kernels have no l0 and take any apex speed and liftoff state.
 FLIGHT_DOMAINS = {
@@ -516,7 +532,7 @@ FLIGHT_DOMAINS = {
         "q_r_td": ("nonpositive",),
         "g_f": ("nonpositive",),
     },
-    "liftoff_to_apex": {"q_r": ("nonpositive",), "g_f": ("nonpositive",)},
+    "liftoff_to_apex": {"q_r": ("nonpositive",), "g_f": ("nonpositive",), "direction": ("direction",)},
 }
 #: Representative values of each kind (l0 scales "above_l0").
 INVALID_EXAMPLES = {
@@ -524,6 +540,7 @@ INVALID_EXAMPLES = {
     "nonpositive": (0.0, -0.0, -MIN_MAGNITUDE, -1.0, -MAX_MAGNITUDE),
     "negative": (-MIN_MAGNITUDE, -1e-9, -1.0, -MAX_MAGNITUDE),
     "angle": (HALF_PI, -HALF_PI, float(np.nextafter(HALF_PI, INF)), 2.0, -3.0, 1e3),
+    "direction": (0.5, -0.5, 2.0, -2.0, 1e-300),  # a step's direction is +1, -1 or 0
 }
 
 
@@ -550,7 +567,7 @@ def test_invalid_input_every_argument_every_kind(kernel):
     non-integer iteration count, a negative tol ...): INVALID_INPUT."""
     for g in SWEEP_GAITS[:2] + SWEEP_GAITS[4:5]:
         env = {**sweep_env(g), **(default_options(kernel.row) if kernel.row else {})}
-        env.update(q_r=env["q_r_lo"], q_rd=1.0, q_th=-0.3, q_thd=-3.0)
+        env.update(q_r=env["q_r_lo"], q_rd=1.0, q_th=-0.3, q_thd=-3.0, direction=1.0)
         for arg in kernel.args:
             for kind in invalid_kinds(kernel, arg):
                 for bad in invalid_examples(kernel, arg, kind, env):
@@ -575,6 +592,8 @@ def test_invalid_input_status(kernel, data):
         bad = env["l0"] * (1.0 + data.draw(st.floats(1e-9, 1.0)))
     elif kind == "angle":
         bad = math.copysign(data.draw(st.floats(HALF_PI, 1e3)), data.draw(st.sampled_from((1.0, -1.0))))
+    elif kind == "direction":
+        bad = data.draw(st.floats(-1e3, 1e3).filter(lambda x: x not in (-1.0, 0.0, 1.0)))
     else:
         option = next(o for o in kernel.options if o["name"] == arg)
         bad = data.draw(st.sampled_from(invalid_option_values(option)))
@@ -636,7 +655,7 @@ def test_apex_return_is_descent_then_stance_then_ascent(kernel, data):
     stance = next(k for k in ROLE["stance"] if k.row is kernel.row)
     got = kernel.call(env)
     td = g_flight.apex_to_touchdown(
-        env["b_y_apex"], env["b_xd_apex"], env["q_th_td"], env["q_r_td"], env["g_f"]
+        env["b_y_apex"], env["b_xd_apex"], env["q_th_td"], env["q_r_td"], env["g_f"], env["ground"]
     )
     assert td[-1] == OK
     st_env = {**env, **dict(zip(TOUCHDOWN, td[:4], strict=True))}
@@ -645,11 +664,13 @@ def test_apex_return_is_descent_then_stance_then_ascent(kernel, data):
         assert got[-1] == sres[-1]
         return
     s = dict(zip(stance.outputs, sres[:-1], strict=True))
-    lo = g_flight.liftoff_to_apex(*(s[f"liftoff_{q}"] for q in TRAJECTORY), env["g_f"])
+    direction = float(np.sign(env["b_xd_apex"]))
+    lo = g_flight.liftoff_to_apex(*(s[f"liftoff_{q}"] for q in TRAJECTORY), env["g_f"], direction)
     assert got[-1] == lo[-1]
     if lo[-1] != OK:
         return
     expected = {**s, "apex_height": lo[0], "apex_speed": lo[1], "t_descent": td[4], "t_ascent": lo[2]}
+    expected.update(step_length=td[5] + lo[4], foot_x=td[5], foot_y=env["ground"] - env["b_y_apex"])
     want = np.array([expected[n] for n in kernel.outputs])
     assert np.array(got[:-1]).tobytes() == want.tobytes(), (got, want)
 
@@ -741,6 +762,7 @@ def test_batch_bad_rows_do_not_spoil_good_rows(kernel):
                 rows += [row, good[len(rows) // 2 % 2]]
                 is_bad += [True, False]
     rows, is_bad = np.array(rows), np.array(is_bad)
+    assert is_bad.any() and (~is_bad).any(), kernel.name
     out, status = run_batch(kernel, env, rows)
     assert np.all(status[is_bad] == INVALID) and np.all(np.isnan(out[is_bad]))
     assert np.all(status[~is_bad] == OK) and np.all(np.isfinite(out[~is_bad]))
@@ -750,7 +772,7 @@ def test_batch_bad_rows_do_not_spoil_good_rows(kernel):
 
 
 # ----------------------------------------------------------------------------------------------
-# The public API (runtime/maps.py), every map of slipmaps.maps() including "exact"
+# The public API (runtime/api/maps.py), every map of slipmaps.maps() including "exact"
 # ----------------------------------------------------------------------------------------------
 API_MAPS = [m.name for m in slipmaps.maps()]
 API_OPTIONS = [(m.name, o) for m in slipmaps.maps() for o in m.options]
@@ -774,11 +796,11 @@ def bad_touchdown_entry(l0: float):
 
 
 def bad_apex_entry():
-    """(argument, value) that makes an apex-return input invalid: non-finite, a negative apex
-    height or speed, |touchdown angle| >= pi/2."""
+    """(argument, value) that makes an apex-return input invalid: non-finite (any of the four), a
+    negative apex height, |touchdown angle| >= pi/2 (a negative speed and any ground are valid)."""
     return st.one_of(
-        st.tuples(st.integers(0, 2), st.sampled_from((NAN, INF, -INF))),
-        st.tuples(st.integers(0, 1), st.sampled_from((-1e-9, -1.0, -1e300))),
+        st.tuples(st.integers(0, 3), st.sampled_from((NAN, INF, -INF))),
+        st.tuples(st.just(0), st.sampled_from((-1e-9, -1.0, -1e300))),
         st.tuples(st.just(2), st.sampled_from((HALF_PI, -HALF_PI, 2.0, -1e3))),
     )
 
@@ -825,15 +847,15 @@ def test_public_apex_return_batch_bad_row_is_invalid_input_others_computed(name,
     i_bad = data.draw(st.integers(0, n - 1), label="bad row")
     j, value = data.draw(bad_apex_entry(), label="bad entry")
     cols[j, i_bad] = value
-    height, speed, angle = (np.ascontiguousarray(c) for c in cols)
-    res = slipmaps.apex_return_batch(name, params, height, speed, angle)
+    height, speed, angle, ground = (np.ascontiguousarray(c) for c in cols)
+    res = slipmaps.apex_return_batch(name, params, height, speed, angle, ground=ground)
     assert res["status"].shape == (n,)
     assert res["status"][i_bad] == INVALID
     assert all(math.isnan(res[c][i_bad]) for c in res.names)
     for i in range(n):
         if i == i_bad:
             continue
-        one = slipmaps.apex_return(name, params, height[i], speed[i], angle[i])
+        one = slipmaps.apex_return(name, params, height[i], speed[i], angle[i], ground=ground[i])
         assert res["status"][i] == one.status, (i, res.message(i), one.message)
         assert all(_same(res[c][i], one[c]) for c in res.names), (i, one)
 
@@ -870,12 +892,14 @@ def test_public_stance_rejects_bad_touchdown_naming_it(name, component):
 
 
 @pytest.mark.parametrize("name", API_MAPS)
-@pytest.mark.parametrize("arg", ["apex_height", "apex_speed", "touchdown_angle"])
+@pytest.mark.parametrize("arg", ["apex_height", "apex_speed", "touchdown_angle", "ground"])
 def test_public_apex_return_rejects_bad_apex_naming_it(name, arg):
+    """Non-finite inputs, a negative apex height and |angle| >= pi/2 (a negative speed runs toward
+    -x and any finite ground is a step up or down: both valid)."""
     params = slipmaps.HUMAN_RUNNER
-    values = [NAN, INF, -INF] + ([HALF_PI, -2.0] if arg == "touchdown_angle" else [-1e-9, -1.0])
-    for bad in values:
-        kwargs = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35, arg: bad}
+    domain = {"apex_height": [-1e-9, -1.0], "touchdown_angle": [HALF_PI, -2.0]}
+    for bad in [NAN, INF, -INF, *domain.get(arg, [])]:
+        kwargs = {"apex_height": 1.0, "apex_speed": 5.0, "touchdown_angle": 0.35, "ground": 0.0, arg: bad}
         with pytest.raises(ValueError) as exc:
             slipmaps.apex_return(name, params, **kwargs)
         msg = str(exc.value)
@@ -1011,8 +1035,8 @@ def test_regression_underflow_is_a_status(kernel):
 @pytest.mark.parametrize(
     ("name", "args"),
     [
-        ("liftoff_to_apex", (1.0, 1e200, -0.1, 0.0, 9.81)),
-        ("apex_to_touchdown", (1.0, 1e300, 0.3, 1e-10, 9.81)),
+        ("liftoff_to_apex", (1.0, 1e200, -0.1, 0.0, 9.81, 1.0)),
+        ("apex_to_touchdown", (1.0, 1e300, 0.3, 1e-10, 9.81, 0.0)),
     ],
 )
 def test_regression_flight_overflow_is_numerical_range(name, args):

@@ -14,12 +14,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.runtime import sweep_files
-from slipmaps.runtime.cli import main
-from slipmaps.runtime.sweep import load, sweep
-from slipmaps.runtime.sweep_compute import compute
-from slipmaps.runtime.sweep_spec import Sweep
-from slipmaps.runtime.sweep_store import read_sweep
+from slipmaps.runtime.cli.app import main
+from slipmaps.runtime.sweep import files as sweep_files
+from slipmaps.runtime.sweep.compute import compute
+from slipmaps.runtime.sweep.run import load, sweep
+from slipmaps.runtime.sweep.spec import Sweep
+from slipmaps.runtime.sweep.store import read_sweep
 
 P = slipmaps.HUMAN_RUNNER
 EXAMPLE = Path(__file__).resolve().parent.parent / "examples" / "sweep.toml"
@@ -258,7 +258,7 @@ def test_cli_interrupted_sweep_says_how_to_resume(tmp_path, capsys, monkeypatch)
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("slipmaps.runtime.sweep.sweep", interrupted)
+    monkeypatch.setattr("slipmaps.runtime.sweep.run.sweep", interrupted)
     argv = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--fixed", "touchdown_angle=0.3"]
     assert main([*argv, "--axis", "apex_speed=3,4", "--out", str(tmp_path / "i")]) == 130
     assert "run the same command again to resume" in capsys.readouterr().err

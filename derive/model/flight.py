@@ -1,8 +1,9 @@
 """Ballistic flight events (report sections 2.1-2.2.2), solved from :func:`mechanics.ballistic_flight`.
 
 Apex -> touchdown: the body falls from the apex (b_xd = b_xd_apex, b_yd = 0) until its height
-equals q_r_td cos q_th_td, the height at which a leg held at angle q_th_td and length q_r_td
-touches flat ground. Liftoff -> apex: the body rises until b_yd = 0.
+equals ground + q_r_td cos q_th_td, the height at which a leg held at angle q_th_td and length
+q_r_td touches ground ``ground`` higher than the ground under the apex (flat ground: 0). Liftoff ->
+apex: the body rises until b_yd = 0; heights after liftoff are above the ground the foot stood on.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from ..symbols import (
     b_y,
     b_y_apex,
     b_yd,
+    ground,
     q_r_td,
     q_th_td,
     t,
@@ -29,8 +31,9 @@ from . import mechanics
 def apex_to_touchdown():
     """Descent time and touchdown polar state from an apex state and a touchdown leg posture.
 
-    Returns a dict with the time of flight ``t_flight`` (positive root of b_y(t) = q_r_td cos q_th_td),
-    the fall height ``drop`` that must be positive, and the polar touchdown state.
+    Returns a dict with the time of flight ``t_flight`` (positive root of b_y(t) = ground + q_r_td
+    cos q_th_td), the fall height ``drop`` that must be positive, the polar touchdown state, and
+    ``foot_x``, the toe's horizontal position relative to the apex.
     """
     _, xd_t, y_t, yd_t = mechanics.ballistic_flight()
     apex = {b_xd: b_xd_apex, b_y: b_y_apex, b_yd: 0}
@@ -46,8 +49,9 @@ def apex_to_touchdown():
     q_rd_td = sp.simplify(rd_expr.subs(at_td))
     q_thd_td = sp.simplify(thd_expr.subs(at_td))
     return {
-        "drop": b_y_apex - y_td,
+        "drop": b_y_apex - ground - y_td,
         "t_flight": t_fl,
+        "foot_x": sp.simplify(xd_t.subs(apex).subs(t, t_fl) * t_fl - pos[0]),
         "drop_symbol": drop,
         "state": (q_r_td, q_rd_td, q_th_td, q_thd_td),
     }
@@ -68,4 +72,5 @@ def liftoff_to_apex():
         "b_y_apex": sp.simplify(y_t.subs(t, t_apex)),
         "b_xd_apex": xd_t.subs(t, t_apex),
         "dx_flight": sp.simplify((x_t - b_x).subs(t, t_apex)),
+        "apex_b_x": sp.simplify(x_t.subs(t, t_apex)),
     }

@@ -9,13 +9,14 @@ from functools import cache
 
 import sympy as sp
 
-from ..catalog import APEX_ARGS, PARAMS, POLAR
+from ..catalog import APEX_ARGS, DIRECTION, GROUND, PARAMS, POLAR
 from ..ir import Arg, Field, Group, Guard, Kernel, Module, Stage, positive, real, sym
 from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
 from . import flight, mechanics
 
-#: Liftoff with a horizontal speed below -BACKWARD_TOLERANCE * sqrt(g_f q_r) is backward; a vertical
-#: hop (apex speed 0) lifts off with b_xd = -0.0 or a round-off of either sign and is a valid gait.
+#: Liftoff with a horizontal speed against the step's direction by more than BACKWARD_TOLERANCE *
+#: sqrt(g_f q_r) is backward (the body reversed in the stance); a hop in place (direction 0) may lift
+#: off either way.
 BACKWARD_TOLERANCE = 1e-9
 
 _STIFFNESS = Arg(k, "leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)")
@@ -159,10 +160,11 @@ def flight_kernels() -> dict[str, Kernel]:
         equations=("sec2.1-touchdown", "sec2.2.2"),
         args=(
             APEX_ARGS[0],
-            Arg(b_xd_apex, "horizontal apex speed [m/s]"),
+            Arg(b_xd_apex, "horizontal apex speed [m/s], signed"),
             APEX_ARGS[2],
             Arg(q_r_td, "touchdown leg length [m], > 0", positive(q_r_td)),  # l0 is not an argument here
             PARAMS["g_f"],
+            GROUND,
         ),
         steps=(
             Stage(
@@ -180,7 +182,7 @@ def flight_kernels() -> dict[str, Kernel]:
                         strict=True,
                     )
                 )
-                + ((sym("t_flight"), atd["t_flight"]),),
+                + ((sym("t_flight"), atd["t_flight"]), (sym("foot_x"), atd["foot_x"])),
                 comment="touchdown state from the derived Cartesian -> polar map",
             ),
         ),
@@ -189,6 +191,12 @@ def flight_kernels() -> dict[str, Kernel]:
             (
                 Group("touchdown", POLAR, "polar state at touchdown"),
                 Field("t_flight", "time from the apex to touchdown", "s"),
+                Field(
+                    "foot_x",
+                    "horizontal position of the toe at touchdown relative to the apex",
+                    "m",
+                    odd=True,
+                ),
             ),
         ),
         module="flight",
@@ -203,6 +211,7 @@ def flight_kernels() -> dict[str, Kernel]:
             Arg(q_r, "liftoff leg length q_r [m], > 0", positive(q_r)),
             *_POLAR_ARGS[1:],
             PARAMS["g_f"],
+            DIRECTION,
         ),
         steps=(
             Stage(
@@ -210,9 +219,9 @@ def flight_kernels() -> dict[str, Kernel]:
                 (
                     Guard(b_yd > 0, "LIFTOFF_DOWNWARD", "liftoff requires an upward velocity"),
                     Guard(
-                        b_xd >= -BACKWARD_TOLERANCE * sp.sqrt(real(g_f) * real(q_r)),
+                        DIRECTION.symbol * b_xd >= -BACKWARD_TOLERANCE * sp.sqrt(real(g_f) * real(q_r)),
                         "LIFTOFF_BACKWARD",
-                        "the runner moves in +x; a vertical hop (b_xd ~ 0) is a valid gait",
+                        "the body must not move against the step's direction (a hop in place: either way)",
                     ),
                 ),
                 comment="Cartesian liftoff state relative to the toe",
@@ -223,6 +232,7 @@ def flight_kernels() -> dict[str, Kernel]:
                     (sym("apex_b_xd"), lta["b_xd_apex"]),
                     (sym("t_flight"), lta["t_flight"]),
                     (sym("dx_flight"), lta["dx_flight"]),
+                    (sym("apex_b_x"), lta["apex_b_x"]),
                 ),
                 comment="apex where b_yd(t) = 0",
             ),
@@ -231,9 +241,10 @@ def flight_kernels() -> dict[str, Kernel]:
             "",
             (
                 Field("apex_b_y", "next apex height above the ground", "m"),
-                Field("apex_b_xd", "next apex horizontal speed", "m/s"),
+                Field("apex_b_xd", "next apex horizontal speed", "m/s", odd=True),
                 Field("t_flight", "time from liftoff to the apex", "s"),
-                Field("dx_flight", "horizontal distance travelled from liftoff to the apex", "m"),
+                Field("dx_flight", "horizontal distance travelled from liftoff to the apex", "m", odd=True),
+                Field("apex_b_x", "horizontal position of the next apex relative to the toe", "m", odd=True),
             ),
         ),
         module="flight",

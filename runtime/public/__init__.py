@@ -18,49 +18,44 @@ Conventions: SI units; leg angle from the vertical, counterclockwise positive; p
 ``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
 top-level package ``slipmaps`` (``pyproject.toml``, ``package-dir``).
 
-numba caches the compiled kernels beside the generated modules (``generated/__pycache__``). In a
-read-only install without ``NUMBA_CACHE_DIR``, importing ``slipmaps`` sets ``NUMBA_CACHE_DIR`` to a
-writable directory, with one warning naming it (:func:`_numba_cache_fallback`).
+numba caches the compiled kernels in ``NUMBA_CACHE_DIR`` when it is set, else in
+``~/.cache/slipmaps/numba`` (``$XDG_CACHE_HOME``), never inside the installed package; importing
+``slipmaps`` sets this up (``slipmaps.kernel_cache``).
 """
 
 from __future__ import annotations
 
 import importlib
-import importlib.util
-import os
-import sys
-import tempfile
-import warnings
 
 #: Public name -> the module that defines it. Loaded on first use (PEP 562), so that importing
 #: ``slipmaps.derive`` (``slipmaps generate``) never needs the generated kernels.
 _EXPORTS = {
-    "SlipParams": "slipmaps.runtime.params",
-    "HUMAN_RUNNER": "slipmaps.runtime.params",
-    "ROBOT_HOPPER": "slipmaps.runtime.params",
-    "maps": "slipmaps.runtime.index",
-    "MapInfo": "slipmaps.runtime.index",
-    "stance": "slipmaps.runtime.maps",
-    "stance_batch": "slipmaps.runtime.maps",
-    "apex_return": "slipmaps.runtime.maps",
-    "apex_return_batch": "slipmaps.runtime.maps",
-    "trajectory": "slipmaps.runtime.maps",
-    "half_stance": "slipmaps.runtime.maps",
-    "half_stance_batch": "slipmaps.runtime.maps",
-    "stance_jacobian": "slipmaps.runtime.jacobian",
-    "stance_jacobian_batch": "slipmaps.runtime.jacobian",
-    "apex_return_jacobian": "slipmaps.runtime.jacobian",
-    "apex_return_jacobian_batch": "slipmaps.runtime.jacobian",
-    "Jacobian": "slipmaps.runtime.jacobian",
-    "JacobianBatch": "slipmaps.runtime.jacobian",
-    "fixed_points": "slipmaps.runtime.gait",
-    "FixedPoint": "slipmaps.runtime.gait",
-    "Result": "slipmaps.runtime.results",
-    "BatchResult": "slipmaps.runtime.results",
+    "SlipParams": "slipmaps.runtime.api.params",
+    "HUMAN_RUNNER": "slipmaps.runtime.api.params",
+    "ROBOT_HOPPER": "slipmaps.runtime.api.params",
+    "maps": "slipmaps.runtime.api.index",
+    "MapInfo": "slipmaps.runtime.api.index",
+    "stance": "slipmaps.runtime.api.maps",
+    "stance_batch": "slipmaps.runtime.api.maps",
+    "apex_return": "slipmaps.runtime.api.maps",
+    "apex_return_batch": "slipmaps.runtime.api.maps",
+    "trajectory": "slipmaps.runtime.api.maps",
+    "half_stance": "slipmaps.runtime.api.maps",
+    "half_stance_batch": "slipmaps.runtime.api.maps",
+    "stance_jacobian": "slipmaps.runtime.api.jacobian",
+    "stance_jacobian_batch": "slipmaps.runtime.api.jacobian",
+    "apex_return_jacobian": "slipmaps.runtime.api.jacobian",
+    "apex_return_jacobian_batch": "slipmaps.runtime.api.jacobian",
+    "Jacobian": "slipmaps.runtime.api.jacobian",
+    "JacobianBatch": "slipmaps.runtime.api.jacobian",
+    "fixed_points": "slipmaps.runtime.analysis.gait",
+    "FixedPoint": "slipmaps.runtime.analysis.gait",
+    "Result": "slipmaps.runtime.api.results",
+    "BatchResult": "slipmaps.runtime.api.results",
     "Status": "slipmaps.generated.status",
-    "Sweep": "slipmaps.runtime.sweep",
-    "sweep": "slipmaps.runtime.sweep",
-    "read_sweep": "slipmaps.runtime.sweep",
+    "Sweep": "slipmaps.runtime.sweep.run",
+    "sweep": "slipmaps.runtime.sweep.run",
+    "read_sweep": "slipmaps.runtime.sweep.run",
     "MESSAGES": "slipmaps.generated.status",
 }
 
@@ -79,72 +74,6 @@ def __dir__():
     return sorted(set(globals()) | set(_EXPORTS))
 
 
-def _writable(path: str, mode: int = 0o777) -> bool:
-    """numba's own test of a cache directory: it can be created (with ``mode``, less the umask) and a
-    file written in it."""
-    try:
-        os.makedirs(path, mode=mode, exist_ok=True)
-        tempfile.TemporaryFile(dir=path).close()
-    except OSError:
-        return False
-    return True
-
-
-def _private_temp_dir() -> str | None:
-    """<tempdir>/slipmaps-numba-<uid>, kept between runs when it is this user's alone (else a fresh
-    one: a shared directory's cache index could be planted by another user); None if none is writable."""
-    uid = os.getuid() if hasattr(os, "getuid") else None
-    path = os.path.join(tempfile.gettempdir(), f"slipmaps-numba-{uid if uid is not None else 'user'}")
-    try:
-        os.makedirs(path, mode=0o700, exist_ok=True)
-        st = os.stat(path)
-        if (uid is None or st.st_uid == uid) and not st.st_mode & 0o022 and _writable(path, 0o700):
-            return path
-        return tempfile.mkdtemp(prefix="slipmaps-numba-")
-    except OSError:
-        return None
-
-
-def _numba_cache_fallback() -> None:
-    """Give numba a writable cache directory when the install's is not.
-
-    The generated kernels are ``@njit(cache=True)``: numba caches them in ``generated/__pycache__``,
-    else in its user-wide cache (``~/.cache/numba``), and refuses to import them when neither is
-    writable ("cannot cache function ...: no locator available"). When ``NUMBA_CACHE_DIR`` is unset
-    and ``generated/__pycache__`` is not writable, this sets ``NUMBA_CACHE_DIR`` to the first
-    writable of ``$XDG_CACHE_HOME/slipmaps/numba`` (``~/.cache/slipmaps/numba``) and a private
-    directory under the temporary directory, with one warning naming it. It runs before any
-    generated module is imported (they all import through this package); when numba's configuration
-    was already read (numba imported first), it is reloaded so the setting still applies.
-    """
-    if os.environ.get("NUMBA_CACHE_DIR"):
-        return
-    spec = importlib.util.find_spec(__name__ + ".generated")
-    if spec is None or not spec.submodule_search_locations:
-        return
-    pycache = os.path.join(list(spec.submodule_search_locations)[0], "__pycache__")
-    if _writable(pycache):
-        return
-    user = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    user = os.path.join(user, "slipmaps", "numba")
-    chosen = user if _writable(user, 0o700) else _private_temp_dir()
-    if chosen is None:
-        warnings.warn(
-            f"slipmaps: numba cannot cache the compiled kernels ({pycache}, {user} and the temporary "
-            "directory are not writable): set NUMBA_CACHE_DIR to a writable directory",
-            RuntimeWarning,
-            stacklevel=2,
-        )
-        return
-    os.environ["NUMBA_CACHE_DIR"] = chosen
-    if "numba.core.config" in sys.modules:
-        sys.modules["numba.core.config"].reload_config()
-    warnings.warn(
-        f"slipmaps: {pycache} is not writable; numba caches the compiled kernels in {chosen} "
-        "(set NUMBA_CACHE_DIR to choose another directory)",
-        RuntimeWarning,
-        stacklevel=2,
-    )
-
-
-_numba_cache_fallback()
+# Before any kernel module is imported: numba caches slipmaps' compiled kernels in a user cache
+# directory, never inside the installed package (runtime/public/kernel_cache.py says why and where).
+importlib.import_module("slipmaps.kernel_cache").install()

@@ -1,0 +1,102 @@
+"""The SLIP parameters and the apex-return inputs, declared once, as plain data.
+
+Every parameter (report Table 1) and every public input of the apex-return map is a row here:
+its name, meaning, SI unit, default and domain. Everything else reads these rows: the kernel
+arguments (:mod:`.catalog` gives each its SymPy symbol and run-time domain check),
+``slipmaps.SlipParams`` (its fields, defaults and checks), the command line's flags (``--m``,
+``--k-c`` ...), the sweep's quantities, the API's input checks and the Jacobians' column names.
+Adding a parameter is adding its row (and using it in a declaration).
+
+Plain data, no SymPy: the runtime imports this module (a wheel without the derive extra runs
+without SymPy).
+
+Domains (the checks both the kernels and the Python layer make):
+
+- ``positive``: finite and > 0;
+- ``leg_length``: finite, > 0 and <= l0 (a default of ``"l0"`` is the rest length);
+- ``non_negative``: finite and >= 0;
+- ``leg_angle``: finite and |x| < pi/2 (the leg above the ground);
+- ``real``: finite.
+"""
+
+from __future__ import annotations
+
+__all__ = ["ALIASES", "APEX_INPUTS", "DOMAINS", "PARAMETERS"]
+
+DOMAINS = ("positive", "leg_length", "non_negative", "leg_angle", "real")
+
+#: The SLIP parameters, in the order of ``SlipParams``' fields.
+PARAMETERS: tuple[dict, ...] = (
+    {"name": "m", "doc": "body mass", "unit": "kg", "default": 80.0, "domain": "positive"},
+    {"name": "l0", "doc": "rest leg length", "unit": "m", "default": 1.0, "domain": "positive"},
+    {
+        "name": "k_c",
+        "doc": "leg stiffness while compressing",
+        "unit": "N/m",
+        "default": 20_000.0,
+        "domain": "positive",
+    },
+    {
+        "name": "k_d",
+        "doc": "leg stiffness after the bottom",
+        "unit": "N/m",
+        "default": 20_000.0,
+        "domain": "positive",
+    },
+    {
+        "name": "g_s",
+        "doc": "gravitational acceleration in stance, positive (pointing down)",
+        "unit": "m/s^2",
+        "default": 9.81,
+        "domain": "positive",
+    },
+    {
+        "name": "g_f",
+        "doc": "gravitational acceleration in flight, positive (pointing down)",
+        "unit": "m/s^2",
+        "default": 9.81,
+        "domain": "positive",
+    },
+    {"name": "q_r_td", "doc": "touchdown leg length", "unit": "m", "default": "l0", "domain": "leg_length"},
+    {"name": "q_r_lo", "doc": "liftoff leg length", "unit": "m", "default": "l0", "domain": "leg_length"},
+)
+
+#: Parameters that set others: ``k``, a constant stiffness (k_c = k_d = k), the kernel argument of
+#: the maps that need one (report sections 3-4).
+ALIASES: dict[str, dict] = {
+    "k": {"doc": "leg stiffness, constant (k_c = k_d = k)", "unit": "N/m", "sets": ("k_c", "k_d")},
+}
+
+#: The public inputs of the apex-return map, by their API names, with the kernel argument each is.
+APEX_INPUTS: tuple[dict, ...] = (
+    {
+        "name": "apex_height",
+        "arg": "b_y_apex",
+        "doc": "apex height of the body above the ground under it",
+        "unit": "m",
+        "domain": "non_negative",
+    },
+    {
+        "name": "apex_speed",
+        "arg": "b_xd_apex",
+        "doc": "horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward "
+        "+x, with the touchdown angle mirrored too); 0 is a hop in place",
+        "unit": "m/s",
+        "domain": "real",
+    },
+    {
+        "name": "touchdown_angle",
+        "arg": "q_th_td",
+        "doc": "touchdown leg angle from the vertical, counterclockwise positive",
+        "unit": "rad",
+        "domain": "leg_angle",
+    },
+    {
+        "name": "ground",
+        "arg": "ground",
+        "doc": "height of the touchdown ground above the ground under the apex (a step up is positive)",
+        "unit": "m",
+        "domain": "real",
+        "default": 0.0,
+    },
+)

@@ -1,0 +1,148 @@
+"""One calling convention: a map call's arguments are filled by name from the generated index.
+
+A :class:`Call` is a map, its parameters and its options, validated once (cached, so a controller
+calling a map thousands of times with the same ones pays the Python checks once). It holds every
+kernel argument the parameters and options give, by name (:attr:`Call.values`: ``m``, ``l0``,
+``k_c``, ``k_d`` and ``k`` when they agree, ``g_s``, ``g_f``, ``q_r_td``, ``q_r_lo``, each kernel
+option), and the backend that runs the map:
+
+- :class:`KernelBackend`: the generated kernels. A role's :class:`~.index.KernelSpec` (from the
+  index) lists its arguments; :meth:`KernelBackend.scalar` passes ``{**call.values, **inputs}`` in
+  that order, :meth:`KernelBackend.rows` the row arrays and the shared scalars in the batch form's
+  order. Nothing here knows a kernel's argument order, and no function branches on a map's name:
+  the exact map is generated like the others.
+- an option choice naming a module (the index's ``backends``; the exact map's ``method="scipy"``:
+  :mod:`slipmaps.runtime.exact.reference`) runs the map through that module's ``BACKEND``, which
+  has the same two methods.
+
+Per-call inputs are given by kernel argument name too: the touchdown state ``q_r_td, q_rd_td,
+q_th_td, q_thd_td`` (it replaces the parameter ``q_r_td`` in a stance), the apex ``b_y_apex,
+b_xd_apex, q_th_td, ground``, a time ``t``, a half's start state.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cache, lru_cache
+from typing import Protocol
+
+import numpy as np
+from slipmaps.generated.status import Status
+
+from .index import MapInfo, get, get_half
+from .params import SlipParams
+
+__all__ = ["Backend", "Call", "KernelBackend", "KERNELS", "column_count"]
+
+
+def column_count(call: Call, role: str) -> int:
+    """The number of columns a role's batch writes: its outputs, and for a Jacobian d output /
+    d input for every (output, input) pair after them."""
+    spec = call.info.kernels[role]
+    return len(spec.outputs) * (1 + len(spec.wrt))
+
+
+class Backend(Protocol):
+    """What runs a map: a role (``stance``, ``apex_return``, ``state_at``, ``half``,
+    ``stance_jacobian``, ``apex_return_jacobian``) once or over rows; failures are statuses."""
+
+    def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
+        """The role's outputs (a Jacobian's: values, then row-major derivatives) and the status."""
+
+    def rows(
+        self, call: Call, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """``(out (n, columns), status (n,))`` over ``n`` rows: ``rows`` holds the per-row inputs
+        (1-D float arrays), ``inputs`` the per-call ones; ``show`` a progress bar (None: auto)."""
+
+
+class KernelBackend:
+    """The generated kernels, called with their arguments filled by name."""
+
+    def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
+        spec = call.spec(role)
+        values = {**call.values, **inputs}
+        return _functions(spec)[0](*(values[a] for a in spec.args))
+
+    def rows(self, call, role, rows, inputs, n, show):
+        spec = call.spec(role)
+        values = {**call.values, **inputs}
+        out = np.empty((n, column_count(call, role)))
+        status = np.empty(n, dtype=np.int64)
+        args = (rows[a] if a in spec.rows else values[a] for a in spec.batch)
+        _functions(spec)[1](*args, out, status)
+        return out, status
+
+
+#: The generated kernels' backend (stateless).
+KERNELS = KernelBackend()
+
+
+@cache
+def _functions(spec):
+    return spec.functions()
+
+
+@cache
+def _backend_module(module: str) -> Backend:
+    return importlib.import_module(module).BACKEND
+
+
+@dataclass(frozen=True)
+class Call:
+    """A map, its parameters and its options, validated once per call (module docstring)."""
+
+    info: MapInfo
+    params: SlipParams
+    options: Mapping[str, object]  # the resolved options, by name
+    values: Mapping[str, float]  # every kernel argument the parameters and options give, by name
+    backend: Backend
+
+    @classmethod
+    def of(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> Call:
+        """Validated once per (map, parameters, options); ``half``: a half-stance map. ValueError
+        naming an unknown map or option, or a requirement the parameters break."""
+        try:
+            key = (name, params, tuple(sorted(options.items())), half)
+            hash(key)
+        except TypeError:  # an unhashable option value: validate (and refuse) it uncached
+            return cls._build(name, params, options, half)
+        return cls._cached(key)
+
+    @staticmethod
+    @lru_cache(maxsize=256)
+    def _cached(key) -> Call:
+        name, params, options, half = key
+        return Call._build(name, params, dict(options), half)
+
+    @classmethod
+    def _build(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> Call:
+        info = get_half(name) if half else get(name)
+        info.check_params(params)
+        resolved = info.resolve(options)
+        values = {**params.values(), **info.encode(resolved)}  # ValueError naming the valid values
+        module = info.backend(resolved)
+        backend = KERNELS if module is None else _backend_module(module)
+        return cls(info, params, resolved, values, backend)
+
+    def spec(self, role: str):
+        """The role's kernel spec; ValueError when the map has none (naming the maps that have one)."""
+        spec = self.info.kernels.get(role)
+        if spec is None:
+            raise ValueError(f"map {self.info.name!r} has no {role.replace('_', ' ')} kernel")
+        return spec
+
+    def scalar(self, role: str, inputs: Mapping[str, float]) -> tuple[Status, tuple[float, ...], str | None]:
+        """``(status, outputs, message)`` of one call of the role; the message is the backend's own
+        when it has a more specific one than the status's (the solve_ivp reference names the stage
+        and event that failed), else None."""
+        res = self.backend.scalar(self, role, inputs)
+        return Status(int(res[-1])), tuple(map(float, res[:-1])), getattr(res, "message", None)
+
+    def rows(self, role: str, rows: Mapping[str, np.ndarray], inputs: Mapping[str, float], n: int, show=None):
+        """``(out, status)`` of the role over ``n`` rows (:meth:`Backend.rows`)."""
+        if n == 0:
+            return np.empty((0, column_count(self, role))), np.empty(0, dtype=np.int64)
+        return self.backend.rows(self, role, rows, inputs, n, show)

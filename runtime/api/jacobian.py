@@ -1,0 +1,250 @@
+"""Derivatives of every map: Jacobians of the stance and of the apex-return map.
+
+- :func:`stance_jacobian` (``name, params, touchdown``): rows are the stance outputs
+  (``t_bottom``, ``t_stance``, ``bottom_*``, ``liftoff_*``, then the map's extras), columns the
+  touchdown state ``q_r_td, q_rd_td, q_th_td, q_thd_td`` and the stiffness.
+- :func:`apex_return_jacobian` (``name, params, apex_height, apex_speed, touchdown_angle, ground=``):
+  rows are the apex-return outputs (``apex_height`` and ``apex_speed`` of the NEXT apex, the flight
+  and stance times, ``liftoff_*``, ``step_length``, ``foot_x``, ``foot_y``, extras), columns
+  ``apex_height, apex_speed, touchdown_angle, ground`` and the stiffness.
+- :func:`stance_jacobian_batch`, :func:`apex_return_jacobian_batch`: the same over arrays, in
+  parallel, a status per row.
+
+The stiffness columns are the map's own parameters: ``k`` for a map that needs k_c = k_d (a change
+of both together), ``k_c`` and ``k_d`` for the others and for ``"exact"``. Units: SI per unit input
+(per N/m for a stiffness).
+
+How they are computed. Every map's Jacobian kernels are generated from its declaration by
+forward-mode differentiation (``derive/tangent.py``): closed-form maps symbolically, iterative maps
+through their iterations (the derivative of the iterate the map returns), and the exact map
+through its stance's own Jacobian (the compiled simulator's variational equations with saltation
+at the bottom and the map to the liftoff surface, ``runtime/exact/jacobian.py``), composed with
+the flights' derivatives like every map's; ``method="scipy"`` has no Jacobian. They are called
+like the maps, arguments by name (:mod:`.calls`). Agreement with central differences is measured in
+tests/test_jacobian.py.
+
+Where the map is defined but a derivative is not (an infinite one, e.g. as q_rd_td -> 0), the
+status is NUMERICAL_RANGE and everything NaN. With an option choice that assumes touchdown at the
+rest length (``leg_length="eq21"`` ...), the ``q_r_td`` column is NaN: the map exists only at
+q_r_td = l0. At q_r_td = l0 the ``q_r_td`` column is the derivative from below (q_r > l0 is not a
+touchdown).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+from slipmaps.generated import maps_index
+from slipmaps.generated.status import MESSAGES, Status
+
+from .calls import Call
+from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
+from .params import SlipParams
+from .results import GROUPS, BatchResult, Result
+from .validate import polar_state
+
+__all__ = [
+    "Jacobian",
+    "JacobianBatch",
+    "stance_jacobian",
+    "stance_jacobian_batch",
+    "apex_return_jacobian",
+    "apex_return_jacobian_batch",
+]
+
+#: Kernel argument -> the public name of a Jacobian column (the apex-return inputs' API names).
+_PUBLIC = dict(maps_index.APEX_PUBLIC)
+_TOUCHDOWN = tuple(maps_index.TOUCHDOWN)
+
+
+def _indices(key: str, names: tuple[str, ...]) -> list[int]:
+    """Positions of ``key`` in ``names``: a name, or a group ("bottom", "liftoff", "touchdown")."""
+    if key in names:
+        return [names.index(key)]
+    group = _TOUCHDOWN if key == "touchdown" else GROUPS.get(key, ())
+    if group and all(n in names for n in group):
+        return [names.index(n) for n in group]
+    raise KeyError(f"{key!r} is not among {', '.join(names)} (nor a group of them)")
+
+
+def _block(matrix: np.ndarray, outputs, inputs, key):
+    if not (isinstance(key, tuple) and len(key) == 2):
+        raise KeyError("index a Jacobian by (output, input), e.g. jac['apex_height', 'touchdown_angle']")
+    i, j = _indices(key[0], outputs), _indices(key[1], inputs)
+    block = matrix[..., i, :][..., j]
+    if len(i) == 1 and len(j) == 1:
+        return block[..., 0, 0] if block.ndim > 2 else float(block[0, 0])
+    if len(i) == 1:
+        return block[..., 0, :]
+    if len(j) == 1:
+        return block[..., 0]
+    return block
+
+
+@dataclass(frozen=True)
+class Jacobian:
+    """One map's outputs and their derivatives at one point.
+
+    ``jac.matrix[i, j]`` is d ``outputs[i]`` / d ``inputs[j]``; ``jac["apex_height", "apex_speed"]``
+    one entry, ``jac["liftoff", "touchdown"]`` a block (groups ``bottom``, ``liftoff``,
+    ``touchdown``). ``jac.result`` is the map's :class:`~.results.Result` at the point (the values
+    are those of ``slipmaps.stance`` / ``slipmaps.apex_return`` to round-off). NaN unless OK.
+    """
+
+    map: str
+    kind: str  # "stance" or "apex_return"
+    status: Status
+    message: str
+    values: Mapping[str, float]
+    outputs: tuple[str, ...]
+    inputs: tuple[str, ...]
+    matrix: np.ndarray = field(repr=False)
+    point: Mapping[str, object] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return self.status == Status.OK
+
+    @property
+    def result(self) -> Result:
+        return Result(self.map, self.kind, self.status, self.message, dict(self.values), dict(self.point))
+
+    def __getitem__(self, key):
+        return _block(self.matrix, self.outputs, self.inputs, key)
+
+
+@dataclass(frozen=True)
+class JacobianBatch:
+    """Jacobians over many points: ``result`` is the :class:`~.results.BatchResult` of the values,
+    ``matrix`` has shape ``(*result.shape, len(outputs), len(inputs))`` (NaN in rows that are not
+    OK), ``jac[output, input]`` an array in the inputs' shape (or a block)."""
+
+    map: str
+    kind: str
+    outputs: tuple[str, ...]
+    inputs: tuple[str, ...]
+    result: BatchResult
+    matrix: np.ndarray = field(repr=False)
+
+    @property
+    def status(self) -> np.ndarray:
+        return self.result["status"]
+
+    @property
+    def ok(self) -> np.ndarray:
+        return self.result.ok
+
+    def __getitem__(self, key):
+        return _block(self.matrix, self.outputs, self.inputs, key)
+
+
+# ----------------------------------------------------------------------------------------------
+# Every map: the role's kernel (values, then d output_i / d input_j row-major), by name
+# ----------------------------------------------------------------------------------------------
+def _names(call: Call, role: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(outputs, inputs) of a Jacobian: its rows and its columns (public names for the apex)."""
+    spec = call.spec(role)
+    wrt = tuple(_PUBLIC.get(w, w) for w in spec.wrt) if role == "apex_return_jacobian" else spec.wrt
+    return spec.outputs, wrt
+
+
+def _split(row: np.ndarray, n_out: int, n_in: int) -> tuple[np.ndarray, np.ndarray]:
+    """A Jacobian kernel's row: the outputs, then d output_i / d input_j row-major."""
+    return row[..., :n_out], row[..., n_out : n_out + n_out * n_in].reshape(*row.shape[:-1], n_out, n_in)
+
+
+def _at_rest_length(call: Call) -> bool:
+    """An option choice that assumes touchdown at the rest length (``Option.at_rest_length``): the
+    map has no derivative with respect to q_r_td (it is INVALID_INPUT anywhere else)."""
+    return any(call.options[o.name] in o.at_rest_length for o in call.info.options)
+
+
+def _mask_rest_length(call: Call, inputs, jac: np.ndarray) -> None:
+    if "q_r_td" in inputs and _at_rest_length(call):
+        jac[..., inputs.index("q_r_td")] = math.nan
+
+
+def _jacobian(call: Call, role: str, status: Status, row, point) -> Jacobian:
+    outputs, inputs = _names(call, role)
+    values, jac = _split(np.array(row, dtype=float), len(outputs), len(inputs))
+    jac = jac.copy()
+    if status == Status.OK and not np.isfinite(jac).all():
+        status = Status.NUMERICAL_RANGE  # a derivative that does not exist there
+    if status != Status.OK:
+        values = np.full(len(outputs), math.nan)
+        jac = np.full((len(outputs), len(inputs)), math.nan)
+    _mask_rest_length(call, inputs, jac)
+    jac.setflags(write=False)
+    kind = role.removesuffix("_jacobian")
+    named = dict(zip(outputs, map(float, values), strict=True))
+    return Jacobian(call.info.name, kind, status, MESSAGES[int(status)], named, outputs, inputs, jac, point)
+
+
+def stance_jacobian(name: str, params: SlipParams, touchdown, **options) -> Jacobian:
+    """Map ``name``'s stance from the polar touchdown state and its derivatives with respect to the
+    touchdown state and the stiffness (module docstring)."""
+    call = Call.of(name, params, options)
+    td = polar_state(params, touchdown)
+    status, row, _ = call.scalar("stance_jacobian", touchdown_inputs(call, td))
+    return _jacobian(call, "stance_jacobian", status, row, {"touchdown": td, "options": dict(call.options)})
+
+
+def apex_return_jacobian(
+    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
+) -> Jacobian:
+    """One step of map ``name`` (as :func:`slipmaps.apex_return`) and its derivatives with respect to
+    the apex height and speed, the touchdown angle, the ground and the stiffness (module docstring)."""
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    given["ground"] = ground
+    inputs = apex_inputs(given)
+    status, row, _ = call.scalar("apex_return_jacobian", inputs)
+    point = {k: inputs[_ARG[k]] for k in given} | {"options": dict(call.options)}
+    return _jacobian(call, "apex_return_jacobian", status, row, point)
+
+
+#: The apex-return inputs' kernel arguments by public name.
+_ARG = {public: arg for arg, public in _PUBLIC.items()}
+
+
+def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) -> JacobianBatch:
+    outputs, inputs = _names(call, role)
+    data, jac = _split(out, len(outputs), len(inputs))
+    data, jac = data.copy(), jac.copy()
+    ok = status == int(Status.OK)
+    status[ok & ~np.isfinite(jac).all(axis=(1, 2))] = int(Status.NUMERICAL_RANGE)
+    bad = status != int(Status.OK)
+    data[bad] = math.nan
+    jac[bad] = math.nan
+    _mask_rest_length(call, inputs, jac)
+    jac.setflags(write=False)
+    kind = role.removesuffix("_jacobian")
+    result = BatchResult(call.info.name, kind, outputs, data, status, shape)
+    return JacobianBatch(
+        call.info.name, kind, outputs, inputs, result, jac.reshape(*shape, len(outputs), len(inputs))
+    )
+
+
+def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) -> JacobianBatch:
+    """:func:`stance_jacobian` over touchdown states of shape (n, 4), in parallel; a status per row."""
+    call = Call.of(name, params, options)
+    arr = state_rows(params, touchdowns)
+    n = arr.shape[0]
+    cols = {a: np.ascontiguousarray(arr[:, j]) for j, a in enumerate(call.spec("stance_jacobian").rows)}
+    out, status = call.rows("stance_jacobian", cols, {}, n)
+    return _batch(call, "stance_jacobian", out, status, (n,))
+
+
+def apex_return_jacobian_batch(
+    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
+) -> JacobianBatch:
+    """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
+    status per row; the result has the broadcast shape."""
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    cols, shape = apex_rows({**given, "ground": ground})
+    out, status = call.rows("apex_return_jacobian", cols, {}, int(np.prod(shape)))
+    return _batch(call, "apex_return_jacobian", out, status, shape)

@@ -1,0 +1,211 @@
+"""The public map API, generic over every map of the index (``slipmaps.maps()``) and ``"exact"``.
+
+- :func:`stance`: polar touchdown state ``(q_r, q_rd, q_th, q_thd)`` -> bottom and liftoff states,
+  ``t_bottom``, ``t_stance`` (times from touchdown) and the map's extras.
+- :func:`apex_return`: apex ``(height [m], signed speed [m/s])``, touchdown leg angle [rad] and the
+  ``ground`` under the touchdown [m] -> the next apex (``apex_height`` above the new ground,
+  ``apex_speed``), flight and stance times, liftoff state, ``step_length`` and the foot's position
+  (``foot_x``, ``foot_y``) relative to the apex; the flights are exact (ballistic, ``g_f``), only
+  the stance differs between maps. A negative speed runs toward -x, the mirror image of running
+  toward +x with the touchdown angle mirrored (every map is mirror symmetric to round-off).
+- :func:`stance_batch`, :func:`apex_return_batch`: the same over arrays, in parallel (the exact
+  map's ``method="scipy"`` loops in Python); every row gets its own status, and a bad row (NaN,
+  out of domain) gets ``INVALID_INPUT`` without failing the others. Apex-return inputs broadcast
+  against each other.
+- :func:`trajectory`: the polar state along the stance.
+- :func:`half_stance`, :func:`half_stance_batch`: a half-stance map (``slipmaps maps`` lists them):
+  the touchdown state -> ``t_half`` and the bottom state (compression, k_c), or a bottom state
+  ``(q_r, q_rd, q_th, q_thd)`` (q_rd ignored: 0 at the bottom) -> ``t_half`` and the liftoff state
+  (decompression, k_d); ``res.end`` is the end state. A controller picks k_d between the two calls.
+
+Every call fills the kernels' arguments by name (:mod:`.calls`): no function here knows an
+argument order or branches on a map; the exact map is one like the others. Options are keywords
+(``iterations=20``, ``reading="mean"``; ``slipmaps maps`` lists them). A scalar call raises
+ValueError for an invalid argument (naming it); a state outside the map's domain is a result with a
+status, never an exception. Conventions (README): SI units, leg angle from the vertical,
+counterclockwise positive.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from slipmaps.derive import params as _table
+from slipmaps.generated.status import MESSAGES, Status
+
+from .calls import Call
+from .index import maps
+from .params import SlipParams
+from .results import BatchResult, Result
+from .validate import CHECKS, L0_SLACK, float_array, polar_state, real_array
+
+__all__ = [
+    "maps",
+    "stance",
+    "stance_batch",
+    "apex_return",
+    "apex_return_batch",
+    "trajectory",
+    "half_stance",
+    "half_stance_batch",
+    "apex_inputs",
+    "apex_rows",
+    "state_rows",
+    "touchdown_inputs",
+]
+
+#: The apex-return inputs (``derive/params.py``): API name -> kernel argument, check and default.
+APEX_INPUTS = {r["name"]: r for r in _table.APEX_INPUTS}
+
+
+def _result(call: Call, role: str, status: Status, row, inputs: dict, message: str | None = None) -> Result:
+    names = call.spec(role).outputs
+    values = dict(zip(names, row, strict=True)) if status == Status.OK else dict.fromkeys(names, math.nan)
+    return Result(call.info.name, role, status, message or MESSAGES[int(status)], values, inputs)
+
+
+def touchdown_inputs(call: Call, state) -> dict[str, float]:
+    """A validated polar state (:func:`~.validate.polar_state`) by the role's state arguments."""
+    return dict(zip(call.spec("stance").rows, state, strict=True))
+
+
+def apex_inputs(given: dict) -> dict[str, float]:
+    """The apex-return inputs by kernel argument, each checked by its domain (one line naming it)."""
+    return {APEX_INPUTS[k]["arg"]: CHECKS[APEX_INPUTS[k]["domain"]](k, v) for k, v in given.items()}
+
+
+def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
+    """One stance of map ``name`` from the polar touchdown state ``touchdown``."""
+    call = Call.of(name, params, options)
+    td = polar_state(params, touchdown)
+    status, row, message = call.scalar("stance", touchdown_inputs(call, td))
+    return _result(call, "stance", status, row, {"touchdown": td, "options": dict(call.options)}, message)
+
+
+def apex_return(
+    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
+) -> Result:
+    """One step of map ``name``: apex -> touchdown (leg at ``touchdown_angle``, on ground ``ground``
+    higher) -> stance -> next apex (module docstring)."""
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    given["ground"] = ground
+    inputs = apex_inputs(given)
+    status, row, message = call.scalar("apex_return", inputs)
+    point = {k: inputs[APEX_INPUTS[k]["arg"]] for k in given} | {"options": dict(call.options)}
+    return _result(call, "apex_return", status, row, point, message)
+
+
+def state_rows(params: SlipParams, states, what: str = "touchdowns") -> np.ndarray:
+    """(n, 4) float64 polar states (touchdown or bottom); leg lengths within round-off above l0 are
+    l0, as in :func:`stance` (the only copy made: when such a row exists)."""
+    arr = real_array(what, states)
+    if arr.ndim != 2 or arr.shape[1] != 4:
+        raise ValueError(f"{what} must have shape (n, 4) (q_r, q_rd, q_th, q_thd), got {arr.shape}")
+    above = arr[:, 0] > params.l0
+    if above.any():
+        snap = above & (arr[:, 0] <= params.l0 * (1.0 + L0_SLACK))
+        if snap.any():
+            arr = arr.copy()
+            arr[snap, 0] = params.l0
+    return arr
+
+
+def _columns(arr: np.ndarray, names) -> dict[str, np.ndarray]:
+    """The columns of (n, k) ``arr`` as C-contiguous float64 arrays by ``names`` (one compiled
+    specialisation of each batch kernel: a strided or broadcast view would compile another)."""
+    return {n: np.ascontiguousarray(arr[:, j], dtype=np.float64) for j, n in enumerate(names)}
+
+
+def stance_batch(
+    name: str, params: SlipParams, touchdowns, *, progress: bool | None = None, **options
+) -> BatchResult:
+    """Map ``name`` over touchdown states of shape (n, 4); a status per row."""
+    call = Call.of(name, params, options)
+    arr = state_rows(params, touchdowns)
+    n = arr.shape[0]
+    out, status = call.rows("stance", _columns(arr, call.spec("stance").rows), {}, n, progress)
+    return BatchResult(call.info.name, "stance", call.spec("stance").outputs, out, status, (n,))
+
+
+def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], tuple[int, ...]]:
+    """The apex-return inputs (by API name) broadcast against each other, flattened into C-contiguous
+    float64 columns by kernel argument, and their broadcast shape."""
+    parts = np.broadcast_arrays(*(real_array(key, x) for key, x in given.items()))
+    shape = parts[0].shape
+    n = int(np.prod(shape))
+    cols = {
+        APEX_INPUTS[k]["arg"]: np.ascontiguousarray(p.reshape(n), dtype=np.float64)
+        for k, p in zip(given, parts, strict=True)
+    }
+    return cols, shape
+
+
+def apex_return_batch(
+    name: str,
+    params: SlipParams,
+    apex_height,
+    apex_speed,
+    touchdown_angle,
+    *,
+    ground=0.0,
+    progress: bool | None = None,
+    **options,
+) -> BatchResult:
+    """Map ``name`` over apexes, touchdown angles and grounds (arrays broadcast); a status per row.
+
+    The result's columns have the broadcast shape of the inputs.
+    """
+    call = Call.of(name, params, options)
+    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
+    cols, shape = apex_rows({**given, "ground": ground})
+    out, status = call.rows("apex_return", cols, {}, int(np.prod(shape)), progress)
+    return BatchResult(call.info.name, "apex_return", call.spec("apex_return").outputs, out, status, shape)
+
+
+def trajectory(
+    name: str, params: SlipParams, touchdown, t=None, **options
+) -> tuple[np.ndarray, np.ndarray, Status]:
+    """The stance of map ``name`` from ``touchdown``: ``(t, states, status)``.
+
+    ``states`` has shape (len(t), 4): q_r, q_rd, q_th, q_thd at the times ``t`` after touchdown
+    (default: 200 points from touchdown to the map's liftoff); ``status`` the first failing one.
+    """
+    call = Call.of(name, params, options)
+    td = polar_state(params, touchdown)
+    if not call.info.has_trajectory:
+        with_one = ", ".join(m.name for m in maps() if m.has_trajectory)
+        raise ValueError(
+            f"map {call.info.name!r} has no trajectory: it computes its event states only (touchdown, "
+            f"bottom, liftoff: slipmaps.stance); maps with a trajectory: {with_one}"
+        )
+    if t is None:
+        res = stance(name, params, td, **options)
+        if not res.ok:
+            return np.empty(0), np.empty((0, 4)), res.status
+        t = np.linspace(0.0, res.t_stance, 200)
+    times = float_array("t", np.atleast_1d(t))
+    out, status = call.rows("state_at", {"t": times}, touchdown_inputs(call, td), times.shape[0])
+    bad = status[status != int(Status.OK)]
+    return times, out, Status(int(bad[0])) if bad.size else Status.OK
+
+
+def half_stance(name: str, params: SlipParams, state, **options) -> Result:
+    """One half of the stance by half-stance map ``name`` from its start state (polar, SI): the
+    touchdown state for a compression half, a bottom state for a decompression half."""
+    call = Call.of(name, params, options, half=True)
+    start = polar_state(params, state, what=f"{call.info.start} state")
+    status, row, message = call.scalar("half", dict(zip(call.spec("half").rows, start, strict=True)))
+    return _result(
+        call, "half", status, row, {call.info.start: start, "options": dict(call.options)}, message
+    )
+
+
+def half_stance_batch(name: str, params: SlipParams, states, **options) -> BatchResult:
+    """Half-stance map ``name`` over start states of shape (n, 4); a status per row."""
+    call = Call.of(name, params, options, half=True)
+    arr = state_rows(params, states, "states")
+    n = arr.shape[0]
+    out, status = call.rows("half", _columns(arr, call.spec("half").rows), {}, n)
+    return BatchResult(call.info.name, "half", call.spec("half").outputs, out, status, (n,))

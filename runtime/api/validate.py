@@ -1,0 +1,124 @@
+"""Input validation shared by the runtime layer: every failure names the value.
+
+A value that is not a real number (a string, bytes, None, a complex number) is a TypeError
+(:class:`~.numeric.NotANumber`, also a ValueError); a real number out of its domain (NaN, negative,
+|q_th| >= pi/2...) a ValueError. Messages show values plainly (:func:`~.numeric.num`: ``nan``,
+``-1.0``, never ``np.float64(...)``).
+
+Kernels never raise (they return status codes); the Python layer checks its inputs here first so
+that a wrong argument fails loudly and clearly instead of turning into a NaN.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .numeric import NotANumber, is_real, num
+from .params import SlipParams
+
+PolarState = tuple[float, float, float, float]
+POLAR_NAMES = ("q_r", "q_rd", "q_th", "q_thd")
+#: Touchdown leg lengths up to ``l0 * (1 + L0_SLACK)`` are accepted (round-off of conversions).
+L0_SLACK = 1e-12
+
+
+def check_params(params: object) -> SlipParams:
+    if not isinstance(params, SlipParams):
+        raise TypeError(f"params must be a SlipParams, got {type(params).__name__}: {params!r}")
+    return params
+
+
+def real(name: str, value: object) -> float:
+    """A finite float; TypeError when ``value`` is not a real number (a string, bytes, a bool...),
+    ValueError when it is not finite, both naming ``name`` and the value."""
+    if not is_real(value):
+        raise NotANumber(f"{name} must be a real number, got {type(value).__name__} {value!r}")
+    x = float(value)  # type: ignore[arg-type]
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {num(x)}")
+    return x
+
+
+def non_negative(name: str, value: object) -> float:
+    x = real(name, value)
+    if x < 0.0:
+        raise ValueError(f"{name} must not be negative, got {num(x)}")
+    return x
+
+
+def positive(name: str, value: object) -> float:
+    x = real(name, value)
+    if x <= 0.0:
+        raise ValueError(f"{name} must be positive, got {num(x)}")
+    return x
+
+
+def leg_angle(name: str, value: object) -> float:
+    x = real(name, value)
+    if abs(x) >= math.pi / 2:
+        raise ValueError(f"{name} must satisfy |{name}| < pi/2 (leg above the ground), got {num(x)}")
+    return x
+
+
+def leg_length(name: str, value: object, l0: float | None = None) -> float:
+    x = positive(name, value)
+    if l0 is not None and x > l0:
+        raise ValueError(f"{name} must not exceed the rest length l0={num(l0)}, got {num(x)}")
+    return x
+
+
+#: The check of each domain of ``derive/params.py`` (one line naming the value, ValueError).
+CHECKS = {
+    "real": real,
+    "non_negative": non_negative,
+    "positive": positive,
+    "leg_angle": leg_angle,
+    "leg_length": leg_length,
+}
+
+
+def real_array(name: str, value: object) -> np.ndarray:
+    """``value`` as a float64 array (no copy when it already is one); TypeError when it holds
+    strings, bytes or other non-numbers (numpy would parse ``"1.0"`` as 1.0)."""
+    arr = np.asarray(value)
+    if arr.dtype.kind == "O":
+        bad = next((v for v in arr.flat if not is_real(v)), None)
+        if bad is not None:
+            raise NotANumber(f"{name} must hold real numbers, got {type(bad).__name__} {bad!r}")
+    elif arr.dtype.kind not in "biuf":
+        raise NotANumber(f"{name} must hold real numbers, got an array of dtype {arr.dtype}")
+    return arr.astype(float, copy=False)
+
+
+def polar_state(params: SlipParams, state: object, what: str = "touchdown") -> PolarState:
+    """Validate a polar stance state (q_r, q_rd, q_th, q_thd) with 0 < q_r <= l0 and |q_th| < pi/2."""
+    if isinstance(state, (str, bytes)):
+        raise NotANumber(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}")
+    try:
+        arr = real_array(what, state)
+    except NotANumber:
+        raise
+    except ValueError:  # ragged
+        raise ValueError(f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got {state!r}") from None
+    if arr.shape != (4,):
+        raise ValueError(
+            f"{what} must be 4 numbers (q_r, q_rd, q_th, q_thd), got shape {arr.shape}: {state!r}"
+        )
+    q_r, q_rd, q_th, q_thd = (real(f"{what} {n}", v) for n, v in zip(POLAR_NAMES, arr, strict=True))
+    if not 0.0 < q_r <= params.l0 * (1.0 + L0_SLACK):
+        raise ValueError(f"{what} q_r must lie in (0, l0={num(params.l0)}], got {num(q_r)}")
+    leg_angle(f"{what} q_th", q_th)
+    return (min(q_r, params.l0), q_rd, q_th, q_thd)
+
+
+def float_array(name: str, value: object) -> np.ndarray:
+    """A contiguous 1-D float64 array with every entry finite (ValueError naming the first bad one)."""
+    arr = real_array(name, value)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array, got shape {arr.shape}")
+    bad = np.flatnonzero(~np.isfinite(arr))
+    if bad.size:
+        raise ValueError(f"{name}[{bad[0]}] must be finite, got {num(arr[bad[0]])}")
+    return np.ascontiguousarray(arr)

@@ -1,0 +1,401 @@
+"""The ``slipmaps`` command line (also ``python -m slipmaps`` and ``python -m slipmaps.runtime``).
+
+Subcommands (``slipmaps --version`` prints the installed version):
+
+- ``maps [--json]``: the maps of the index (name, title, report section, equations, requirements,
+  options), then the half-stance maps;
+- ``compare [--map NAME] [--against NAME] [--option KEY=VALUE ...]``: the main job, one step by two
+  maps from the same touchdown (default Geyer et al. against the exact simulator): table + plot; a
+  half-stance map is compared with the same half of --against (from its bottom for a decompression
+  half). The default step scales with the leg: apex height 1.0 l0 (``--apex-height-l0``), speed by
+  the Froude number 1.596 (``--froude``), touchdown angle 0.35 rad sqrt(25.5 / kappa) with kappa =
+  k_c l0 / (m g_s), i.e. 1.0 m, 5 m/s and 0.35 rad for the human runner; ``--apex-height`` [m],
+  ``--apex-speed`` [m/s] and ``--angle`` [rad] give absolute values. With ``--touchdown`` the
+  touchdown leg length q_r_td is the state's q_r (a different ``--q-r-td`` is refused). Exit status:
+  0 when both sides ran (status OK), 1 when a side failed physically (no touchdown, a fall, no
+  flight phase...: its status and message under the table, ``n/a`` in its cells), 2 for a user error;
+- ``accuracy [--map NAME|all] [--out DIR]``: every map against the exact simulator on the accuracy
+  grids, written as accuracy.md (+ .json, .png) with the convergence study of the iterative maps
+  (convergence.md), the variable-stiffness study over k_d/k_c (stiffness.md) and the periodic
+  gaits' fixed points and stability (stability.md): into the checkout's docs/ when slipmaps runs
+  from a source checkout, else into ``--out DIR`` (required there);
+- ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
+  apex-return map and their eigenvalues (runtime/cli/gait.py);
+- ``equations [--json]``: run the symbolic check of every registered report equation (``--json``:
+  one JSON array, an object per equation);
+- ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
+  stale); a source checkout only.
+
+A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
+that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
+the flag as typed. Every path a command writes (``compare --plot``, ``gait --figure``, ``sweep
+--out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. A reader that
+closes standard output early (``slipmaps maps | head -1``) ends any command quietly with exit
+status :data:`BROKEN_PIPE`. The map names and options come from the generated index.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
+from ..api.paths import writable_dir, writable_file
+from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import sweep as sweep_cli
+from .args import add_params, image_path, map_options, params_of, stiffness_note
+from .defaults import (
+    APEX_FROUDE,
+    APEX_HEIGHT_L0,
+    TOUCHDOWN_ANGLE,
+    apex_height_of,
+    apex_speed_of,
+    default_touchdown_angle,
+    stiffness_number,
+)
+
+__all__ = ["main", "build_parser", "BROKEN_PIPE"]
+
+#: The exit status when standard output's reader closed the pipe early (128 + SIGPIPE, the status
+#: of a process that the signal ended): no traceback, nothing on standard error.
+BROKEN_PIPE = 141
+
+
+def _step(args: argparse.Namespace, params: SlipParams) -> dict:
+    """The step's keywords of :func:`~.compare.compare`, validated under the flags' names: the apex
+    (absolute, or relative to the leg) or the touchdown state; None keeps a default."""
+    height = speed = None
+    if args.apex_height is not None:
+        height = non_negative("--apex-height", args.apex_height)
+    if args.apex_height_l0 is not None:
+        height = apex_height_of(params, positive("--apex-height-l0", args.apex_height_l0))
+    if args.apex_speed is not None:
+        speed = non_negative("--apex-speed", args.apex_speed)
+    if args.froude is not None:
+        speed = apex_speed_of(params, non_negative("--froude", args.froude))
+    angle = None if args.angle is None else leg_angle("--angle", args.angle)
+    td = None if args.touchdown is None else polar_state(params, args.touchdown, what="--touchdown")
+    return {"apex_height": height, "apex_speed": speed, "touchdown_angle": angle, "touchdown": td}
+
+
+def _version() -> str:
+    """The installed distribution's version (``unknown`` when slipmaps runs uninstalled)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("slipmaps")
+    except PackageNotFoundError:
+        return "unknown (not installed)"
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="slipmaps",
+        description="Approximate SLIP stance maps: derived in SymPy, generated as numba kernels, "
+        "checked against numerical integration.",
+    )
+    parser.add_argument("--version", action="version", version=f"slipmaps {_version()}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    mp = sub.add_parser(
+        "maps",
+        help="list the maps (name, title, report section, equations, options)",
+        description="List every map of the index (name, report section, title, equations, requirements, "
+        "options with their defaults), then the half-stance maps.",
+    )
+    mp.add_argument("--json", action="store_true", help="print the index as JSON")
+
+    cmp_ = sub.add_parser(
+        "compare",
+        help="one step by two maps from the same touchdown: table and plot",
+        description="One SLIP step from an apex (default: 1.0 l0 high at Froude number "
+        f"{APEX_FROUDE:.4g}, touchdown angle scaled by the leg's stiffness; 1.0 m, 5 m/s and "
+        f"{TOUCHDOWN_ANGLE:g} rad for the human runner) or from a touchdown state, by --map and by "
+        "--against (default: Geyer et al.'s map, or geyer-vs when k_c != k_d, against the exact simulator).",
+        epilog="exit status: 0 both sides ran (status OK); 1 a side failed physically (no touchdown, a fall, "
+        "no flight phase...: n/a in its cells, its status and message under the table); 2 a user error "
+        "(one line on standard error).",
+    )
+    add_params(cmp_)
+    cmp_.add_argument(
+        "--map",
+        default=None,
+        help="the map to compare (default geyer; geyer-vs when k_c != k_d; see `slipmaps maps`)",
+    )
+    cmp_.add_argument(
+        "--against", default=None, help="the reference map (default: the exact map, the ground truth)"
+    )
+    cmp_.add_argument(
+        "--option", action="append", metavar="KEY=VALUE", help="an option of --map (repeatable)"
+    )
+    cmp_.add_argument("--against-option", action="append", metavar="KEY=VALUE", help="an option of --against")
+    t = cmp_.add_argument_group(
+        "touchdown conditions (an apex, or --touchdown)",
+        "The defaults scale with the leg (the human runner's: 1.0 m, 5 m/s, 0.35 rad): --apex-height-l0 "
+        "and --froude are relative to l0, --apex-height [m], --apex-speed [m/s] and --angle [rad] "
+        "absolute (give one of each pair).",
+    )
+    height = t.add_mutually_exclusive_group()
+    height.add_argument(
+        "--apex-height",
+        type=float,
+        default=None,
+        help="apex height [m], absolute (default: see --apex-height-l0)",
+    )
+    height.add_argument(
+        "--apex-height-l0",
+        type=float,
+        default=None,
+        metavar="H",
+        help=f"apex height in units of l0 (default {APEX_HEIGHT_L0}: 1.0 m for the human runner, "
+        "0.25 m for a 0.25 m leg)",
+    )
+    speed = t.add_mutually_exclusive_group()
+    speed.add_argument(
+        "--apex-speed", type=float, default=None, help="apex speed [m/s], absolute (default: see --froude)"
+    )
+    speed.add_argument(
+        "--froude",
+        type=float,
+        default=None,
+        metavar="FR",
+        help=f"apex speed as the Froude number v/sqrt(g_f l0) (default {APEX_FROUDE:.4g}: 5 m/s for the "
+        "human runner, 2.5 m/s for a 0.25 m leg)",
+    )
+    t.add_argument(
+        "--angle",
+        type=float,
+        default=None,
+        help=f"touchdown leg angle q_th_td [rad], absolute (default {TOUCHDOWN_ANGLE:g} "
+        f"sqrt({stiffness_number(HUMAN_RUNNER):.3g}/kappa), kappa = k_c l0/(m g_s) the dimensionless "
+        f"stiffness: {TOUCHDOWN_ANGLE:g} rad for the human runner, "
+        f"{default_touchdown_angle(ROBOT_HOPPER):.3g} rad for the robot hopper)",
+    )
+    t.add_argument(
+        "--touchdown",
+        type=float,
+        nargs=4,
+        metavar=("Q_R", "Q_RD", "Q_TH", "Q_THD"),
+        default=None,
+        help="start from this polar touchdown state instead of an apex (e.g. a nonsymmetric one); "
+        "its Q_R is the touchdown leg length q_r_td",
+    )
+    cmp_.add_argument(
+        "--plot",
+        default="slipmaps_compare.png",
+        help="image path, .png/.pdf/.svg (default %(default)s; a missing directory is created)",
+    )
+    cmp_.add_argument("--no-plot", action="store_true", help="do not write the plot")
+    cmp_.add_argument("--json", action="store_true", help="print the numbers as JSON instead of a table")
+
+    gen = sub.add_parser(
+        "generate",
+        help="regenerate generated/ and docs from derive/ (needs the [derive] extra)",
+        description="Render generated/ (the numba kernels and the map index), docs/equations.md, "
+        "docs/maps.md and the README tables from the SymPy derivations in derive/. Works on a source "
+        "checkout (pip install -e '.[derive]'); writes only files whose content changes.",
+    )
+    gen.add_argument("--check", action="store_true", help="exit 1 if generated files differ from the sources")
+
+    eq = sub.add_parser(
+        "equations",
+        help="check every registered report equation symbolically and print its status",
+        description="Run the SymPy check of every equation of the report registered in derive/equations "
+        "and print its status (verified, corrected, definition) with a note; exit 1 if a check fails. "
+        "Needs the [derive] extra.",
+    )
+    eq.add_argument(
+        "--json",
+        action="store_true",
+        help="print the equations as one JSON array (an object per equation) instead of the table",
+    )
+
+    acc = sub.add_parser(
+        "accuracy",
+        help="every map against the exact simulator on the accuracy grids",
+        description="Measure every map (or one) against the exact simulator on the accuracy grids and "
+        "write accuracy.md (+ .json, .png), convergence.md, stiffness.md and stability.md (+ .json, .png): "
+        "into the "
+        "checkout's docs/ when slipmaps runs from a source checkout, else into --out DIR.",
+    )
+    acc.add_argument(
+        "--map",
+        default="all",
+        help="a map name, or 'all' (default): all maps, written as accuracy.md (and beside it "
+        "convergence.md, stiffness.md, stability.md); one map: accuracy_<map>.md",
+    )
+    acc.add_argument(
+        "--out",
+        default=None,
+        metavar="DIR",
+        help="the directory to write into (or a .md path for the accuracy report); default: the "
+        "checkout's docs/, required when slipmaps does not run from a source checkout",
+    )
+    acc.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+
+    from .gait import add_parser as add_gait
+
+    add_gait(sub)
+    sweep_cli.add_parser(sub)
+    return parser
+
+
+def _cmd_maps(args: argparse.Namespace) -> int:
+    from ..api.index import HalfInfo, halves, maps
+
+    rows = maps() + halves()
+    if args.json:
+        print(json.dumps([m.as_dict() for m in rows], indent=2))
+        return 0
+    w = max(len(m.name) for m in rows) + 1
+    for m in rows:
+        print(f"{m.name:<{w}} {m.section:<6} {m.title}")
+        if isinstance(m, HalfInfo):
+            where = f"half of {m.whole}: {m.start} -> {m.end} (slipmaps.half_stance)"
+        else:
+            where = f"requires {', '.join(m.requires) or 'nothing'}"
+        print(f"{'':<{w}} equations {', '.join(m.equations)}; {where}")
+        for o in m.options:
+            kind = "|".join(o.choices) if o.kind == "choice" else o.kind
+            print(f"{'':<{w}} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
+    return 0
+
+
+def _cmd_compare(args: argparse.Namespace) -> int:
+    """0 when both sides ran, 1 when a side failed physically (its status under the table)."""
+    params = params_of(args)
+    step = _step(args, params)  # bad values and plot paths are refused before any work
+    path = None if args.no_plot else image_path("--plot", args.plot)
+    note = stiffness_note(args, params)
+    if note:
+        print(f"slipmaps compare: note: {note}", file=sys.stderr)
+    from ..api.index import EXACT
+    from .compare import compare, default_map, format_table, plot
+
+    name = args.map or default_map(params)
+    against = args.against or EXACT
+    c = compare(
+        params,
+        map=name,
+        against=against,
+        **step,
+        options=map_options(name, args.option),
+        against_options=map_options(against, args.against_option),
+    )
+    if path:
+        try:
+            plot(c, path)
+        except OSError as exc:
+            raise ValueError(f"--plot {path}: {exc.strerror or exc}") from None
+    if args.json:
+        data = c.to_dict()
+        data["plot"] = path
+        print(json.dumps(data, indent=2))
+    else:
+        print(format_table(c))
+        if path:
+            print(f"\nplot: {path}")
+    return 0 if c.ok else 1
+
+
+def _derive_module(name: str):
+    import importlib
+
+    try:
+        return importlib.import_module(f"slipmaps.derive.{name}")
+    except ImportError as exc:  # sympy / jinja2 missing
+        raise ValueError(f"needs the derive extra (pip install -e '.[derive]'): {exc}") from None
+
+
+def _cmd_generate(args: argparse.Namespace) -> int:
+    return _derive_module("generate").main(check_only=args.check)
+
+
+def _cmd_equations(args: argparse.Namespace) -> int:
+    return _derive_module("equations").main(json_output=args.json)
+
+
+def _accuracy_out(args: argparse.Namespace) -> Path:
+    """The accuracy report's markdown path: ``--out`` (a directory, or a .md path; checked, and its
+    directory created, before any work), else the checkout's docs/; ValueError when there is
+    neither (never a relative docs/) or when ``--out`` cannot be written."""
+    from ..studies.checkout import docs_dir
+
+    name = "accuracy.md" if args.map == "all" else f"accuracy_{args.map}.md"
+    if args.out is not None:
+        out = Path(args.out)
+        if out.suffix == ".md":
+            return writable_file("--out", args.out, ("md",), described="a markdown file")
+        return writable_dir("--out", args.out) / name
+    docs = docs_dir()
+    if docs is None:
+        raise ValueError(
+            "slipmaps does not run from a source checkout, so there is no docs/ to update: "
+            "give --out DIR (the directory for accuracy.md, convergence.md, stiffness.md)"
+        )
+    return docs / name
+
+
+def _cmd_accuracy(args: argparse.Namespace) -> int:
+    from ..api.index import get
+    from ..studies.runner import run
+
+    names = None if args.map == "all" else [get(args.map).name]
+    if names is not None and get(names[0]).ground_truth:
+        raise ValueError("accuracy compares maps against the exact simulator; choose an approximate map")
+    out = _accuracy_out(args)  # before any work
+    for path in run(out, names, show_progress=False if args.no_progress else None):
+        print(f"wrote {path}")
+    return 0
+
+
+def _cmd_gait(args: argparse.Namespace) -> int:
+    from .gait import run
+
+    return run(args)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``) and return its exit status: a user
+    error is one line on standard error and 2; a reader that closes standard output early
+    (``slipmaps maps | head -1``) ends every command quietly with :data:`BROKEN_PIPE`."""
+    try:
+        return _run(argv)
+    except BrokenPipeError:
+        # The reader stopped early: nothing more to say to it. Python flushes stdout again at
+        # exit; pointing it at devnull keeps that flush quiet (the recipe of Python's signal docs).
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return BROKEN_PIPE
+
+
+def _run(argv: list[str] | None) -> int:
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit:  # --help, --version or a usage error: their output is written now
+        sys.stdout.flush()
+        raise
+    handlers = {
+        "maps": _cmd_maps,
+        "compare": _cmd_compare,
+        "generate": _cmd_generate,
+        "equations": _cmd_equations,
+        "accuracy": _cmd_accuracy,
+        "gait": _cmd_gait,
+        "sweep": sweep_cli.run,
+    }
+    try:
+        code = handlers[args.command](args)
+    except (ValueError, TypeError) as exc:
+        print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    sys.stdout.flush()  # a closed pipe shows here, inside main, not at the interpreter's exit
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())
