@@ -140,7 +140,7 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
         # first, on an idle interpreter: compile times are the most load-sensitive numbers
         out["first_call"] = []
         for info in slipmaps.maps():
-            if info.generated:
+            if info.has("apex_return_jacobian"):
                 load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
                 wall, cpu = first_call_seconds(info.name)
                 out["first_call"].append(
@@ -214,15 +214,23 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
     return out
 
 
-def _kernel_loop(kernel):
-    """A numba loop calling the scalar apex-return ``kernel`` once per state (apex height, speed
-    and angle from arrays, the other arguments fixed); returns a checksum."""
+#: The apex-return kernels' per-state arguments (the index's names), in the loop's array order.
+_APEX = ("b_y_apex", "b_xd_apex", "q_th_td")
+
+
+def _kernel_loop(kernel, args: tuple[str, ...]):
+    """A numba loop calling the scalar apex-return ``kernel`` once per state: its arguments
+    ``args`` (the index's order) from the arrays ``h, v, th`` for :data:`_APEX` and from the tuple
+    ``rest`` for the others, in order; returns a checksum."""
+    arrays = dict(zip(_APEX, ("h[i]", "v[i]", "th[i]"), strict=True))
+    others = [a for a in args if a not in arrays]
+    fill = [arrays.get(a) or f"rest[{others.index(a)}]" for a in args]
     namespace = {"kernel": kernel}
     exec(  # noqa: S102 - a benchmark's loop over one kernel
         "def run(h, v, th, rest):\n"
         "    s = 0.0\n"
         "    for i in range(h.shape[0]):\n"
-        "        s += kernel(h[i], v[i], th[i], *rest)[0]\n"
+        f"        s += kernel({', '.join(fill)})[0]\n"
         "    return s\n",
         namespace,
     )
@@ -231,20 +239,18 @@ def _kernel_loop(kernel):
 
 def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
     """CPU seconds of the scalar apex-return kernel and of its Jacobian kernel over the states, on
-    one thread (best of ``repeat``)."""
-    import importlib
+    one thread (best of ``repeat``): arguments by name from the index (runtime/api/calls.py), the
+    ground 0."""
+    from slipmaps.runtime.api.calls import Call
 
-    primal = getattr(
-        importlib.import_module(f"slipmaps.generated.{info.module}"), info.kernels["apex_return"]
-    )
-    jac_mod = importlib.import_module(f"slipmaps.generated.{info.jacobian['module']}")
-    jacobian = getattr(jac_mod, info.jacobian["apex_return"])
-    params = tuple(float(getattr(P, "k_c" if p == "k" else p)) for p in info.params)
-    options = tuple(o.encode(info.name, o.default) for o in info.options)
-    rest = (*params, P.g_f, P.q_r_td, P.q_r_lo, *options)
+    call = Call.of(info.name, P, {})
+    values = {**call.values, "ground": 0.0}
     out = []
-    for kern in (primal, jacobian):
-        run = _kernel_loop(kern)
+    for role in ("apex_return", "apex_return_jacobian"):
+        spec = call.spec(role)
+        kern = spec.functions()[0]
+        run = _kernel_loop(kern, spec.args)
+        rest = tuple(values[a] for a in spec.args if a not in _APEX)
         run(h[:10], v[:10], th[:10], rest)
         best = math.inf
         for _ in range(repeat):
