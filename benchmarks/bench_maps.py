@@ -13,13 +13,20 @@ Measured side by side, for the human runner (``slipmaps.HUMAN_RUNNER``):
     map's speed-up over it;
 (d) the iterative maps' cost against their number of passes;
 (e) every map's apex-return Jacobian (``slipmaps.apex_return_jacobian_batch``, N/10 states) per state
-    and as a multiple of its apex-return map.
+    and as a multiple of its apex-return map (target: at most 3x), its stance Jacobian as a
+    multiple of its stance map, and the generated kernels alone: the scalar apex-return Jacobian
+    kernel against the scalar apex-return kernel, called in a numba loop on one thread (CPU time;
+    without the batch API's allocation and checks of the larger Jacobian output);
+(f) the first call of every map's apex-return Jacobian (``slipmaps.apex_return_jacobian``) in a
+    fresh process with an empty ``NUMBA_CACHE_DIR``: the seconds a new user waits while numba
+    compiles the Jacobian kernel and everything it calls (target: at most 15 s for the slowest);
+(g) the generated Jacobian modules' sizes (lines, longest line).
 
 States: apex heights 1.0-1.1 m, speeds 3-7 m/s, touchdown angles 0.30-0.50 rad (uniform, seed 0);
 the stance states are their touchdowns. Ratios are measured in one run; absolute times move with the
 machine and its load (printed). Usage::
 
-    python benchmarks/bench_maps.py [--n N] [--repeat R] [--json]
+    python benchmarks/bench_maps.py [--n N] [--repeat R] [--sections abcdefg] [--json]
 """
 
 from __future__ import annotations
@@ -29,7 +36,9 @@ import json
 import math
 import os
 import platform
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -45,6 +54,21 @@ import handwritten_geyer  # noqa: E402
 
 P = slipmaps.HUMAN_RUNNER
 TARGET_RATIO = 1.4
+#: Targets of the Jacobians (issue 17, item 6): cost in apex-return calls, first-call compile seconds.
+TARGET_JACOBIAN_RATIO = 3.0
+TARGET_FIRST_CALL_S = 15.0
+GENERATED = Path(slipmaps.__file__).resolve().parent.parent.parent / "generated"
+
+#: (f): one first call, timed in a fresh interpreter (its own empty numba cache).
+_FIRST_CALL = """
+import sys, time
+import slipmaps
+t0, c0 = time.perf_counter(), time.process_time()
+jac = slipmaps.apex_return_jacobian(sys.argv[1], slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35)
+t1, c1 = time.perf_counter(), time.process_time()
+assert jac.ok, jac.message
+print(t1 - t0, c1 - c0)
+"""
 
 
 def machine() -> dict:
@@ -85,9 +109,47 @@ def best_of(fn, repeat: int) -> float:
     return best
 
 
-def run(n: int, repeat: int) -> dict:
+def first_call_seconds(name: str) -> tuple[float, float]:
+    """Seconds of the first ``apex_return_jacobian(name, ...)`` in a new process, empty numba cache:
+    elapsed and CPU (the process's own, which other load on the machine disturbs less)."""
+    with tempfile.TemporaryDirectory(prefix="slipmaps-numba-") as cache:
+        env = {**os.environ, "NUMBA_CACHE_DIR": cache}
+        done = subprocess.run(
+            [sys.executable, "-c", _FIRST_CALL, name], env=env, capture_output=True, text=True, check=True
+        )
+    wall, cpu = done.stdout.strip().splitlines()[-1].split()
+    return float(wall), float(cpu)
+
+
+def module_sizes() -> list[dict]:
+    """Lines and longest line of every generated Jacobian module (and the total of generated/)."""
+    rows = []
+    for path in sorted(GENERATED.glob("*_jacobian.py")):
+        lines = path.read_text().splitlines()
+        rows.append({"module": path.name, "lines": len(lines), "longest": max(map(len, lines))})
+    return rows
+
+
+def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
     h, v, th, td = states(n)
     out: dict = {"machine": machine(), "n": n, "repeat": repeat}
+    if "g" in sections:
+        out["sizes"] = module_sizes()
+        out["generated_lines"] = sum(len(p.read_text().splitlines()) for p in GENERATED.glob("*.py"))
+    if "f" in sections:
+        # first, on an idle interpreter: compile times are the most load-sensitive numbers
+        out["first_call"] = []
+        for info in slipmaps.maps():
+            if info.has("apex_return_jacobian"):
+                load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
+                wall, cpu = first_call_seconds(info.name)
+                out["first_call"].append(
+                    {"map": info.name, "seconds": wall, "cpu_seconds": cpu, "load_1min": load}
+                )
+    if "e" in sections:
+        out["jacobians"] = jacobians(h, v, th, td, max(1, n // 10), repeat)
+    if not set(sections) & set("abcd"):
+        return out
     prm = (P.m, P.l0, P.k, P.g_s, P.q_r_lo)
 
     # (a) yardstick, both called once first (compilation or cache load excluded)
@@ -149,27 +211,106 @@ def run(n: int, repeat: int) -> dict:
             opts = {convergence.pass_option(name): k, **tolerance}
             t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
             out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
-    # (e) every map's apex-return Jacobian (batch, N/10 states) against its apex-return map
-    nj = max(1, n // 10)
-    out["jacobians"] = []
+    return out
+
+
+#: The apex-return kernels' per-state arguments (the index's names), in the loop's array order.
+_APEX = ("b_y_apex", "b_xd_apex", "q_th_td")
+
+
+def _kernel_loop(kernel, args: tuple[str, ...]):
+    """A numba loop calling the scalar apex-return ``kernel`` once per state: its arguments
+    ``args`` (the index's order) from the arrays ``h, v, th`` for :data:`_APEX` and from the tuple
+    ``rest`` for the others, in order; returns a checksum."""
+    arrays = dict(zip(_APEX, ("h[i]", "v[i]", "th[i]"), strict=True))
+    others = [a for a in args if a not in arrays]
+    fill = [arrays.get(a) or f"rest[{others.index(a)}]" for a in args]
+    namespace = {"kernel": kernel}
+    exec(  # noqa: S102 - a benchmark's loop over one kernel
+        "def run(h, v, th, rest):\n"
+        "    s = 0.0\n"
+        "    for i in range(h.shape[0]):\n"
+        f"        s += kernel({', '.join(fill)})[0]\n"
+        "    return s\n",
+        namespace,
+    )
+    return numba.njit(namespace["run"])
+
+
+def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
+    """CPU seconds of the scalar apex-return kernel and of its Jacobian kernel over the states, on
+    one thread (best of ``repeat``): arguments by name from the index (runtime/api/calls.py), the
+    ground 0."""
+    from slipmaps.runtime.api.calls import Call
+
+    call = Call.of(info.name, P, {})
+    values = {**call.values, "ground": 0.0}
+    out = []
+    for role in ("apex_return", "apex_return_jacobian"):
+        spec = call.spec(role)
+        kern = spec.functions()[0]
+        run = _kernel_loop(kern, spec.args)
+        rest = tuple(values[a] for a in spec.args if a not in _APEX)
+        run(h[:10], v[:10], th[:10], rest)
+        best = math.inf
+        for _ in range(repeat):
+            c0 = time.process_time()
+            run(h, v, th, rest)
+            best = min(best, time.process_time() - c0)
+        out.append(best)
+    return out[0], out[1]
+
+
+def jacobians(h, v, th, td, nj: int, repeat: int) -> list[dict]:
+    """(e) every map's apex-return Jacobian (batch, ``nj`` states) against its apex-return map, and
+    its stance Jacobian against its stance map (each after a warm-up call)."""
+    rows = []
     for info in slipmaps.maps():
         args = (info.name, P, h[:nj], v[:nj], th[:nj])
+        sargs = (info.name, P, td[:nj])
         slipmaps.apex_return_jacobian_batch(*args)
+        slipmaps.apex_return_batch(*args)
+        slipmaps.stance_jacobian_batch(*sargs)
+        slipmaps.stance_batch(*sargs)
         t_j = best_of(lambda args=args: slipmaps.apex_return_jacobian_batch(*args), repeat)
         t_a = best_of(lambda args=args: slipmaps.apex_return_batch(*args), repeat)
-        out["jacobians"].append({"map": info.name, "jacobian_ns": 1e9 * t_j / nj, "ratio": t_j / t_a})
-    return out
+        t_sj = best_of(lambda sargs=sargs: slipmaps.stance_jacobian_batch(*sargs), repeat)
+        t_s = best_of(lambda sargs=sargs: slipmaps.stance_batch(*sargs), repeat)
+        k_a, k_j = kernel_seconds(info, h[: nj // 4], v[: nj // 4], th[: nj // 4], repeat)
+        rows.append(
+            {
+                "map": info.name,
+                "jacobian_ns": 1e9 * t_j / nj,
+                "apex_return_ns": 1e9 * t_a / nj,
+                "ratio": t_j / t_a,
+                "stance_jacobian_ns": 1e9 * t_sj / nj,
+                "stance_ratio": t_sj / t_s,
+                "kernel_jacobian_ns": 1e9 * k_j / (nj // 4),
+                "kernel_apex_return_ns": 1e9 * k_a / (nj // 4),
+                "kernel_ratio": k_j / k_a,
+            }
+        )
+    return rows
 
 
 def report(r: dict) -> str:
     mach = r["machine"]
-    y = r["yardstick"]
     lines = [
         f"machine: {mach['cpu']}, {mach['cpus']} CPUs, numba {mach['numba']} "
         f"({mach['numba_threads']} threads), numpy {mach['numpy']}, scipy {mach['scipy']}, "
         f"Python {mach['python']}, 1-min load {mach['load_1min']}",
         f"N = {r['n']} states, best of {r['repeat']}",
         "",
+    ]
+    if "yardstick" in r:
+        lines += _report_maps(r)
+    lines += _report_jacobians(r)
+    return "\n".join(lines)
+
+
+def _report_maps(r: dict) -> list[str]:
+    y = r["yardstick"]
+    lines = [
         "(a) Geyer's stance map, public batch API vs a hand-written njit kernel of the same math:",
         f"    hand-written {y['handwritten_ns']:.1f} ns/state, "
         f"slipmaps.stance_batch {y['api_ns']:.1f} ns/state: ratio {y['ratio']:.2f} "
@@ -194,24 +335,64 @@ def report(r: dict) -> str:
             lines.append(
                 f"    {name:<18}" + " ".join(f"n={row['n']}: {row['stance_ns']:.0f}" for row in rows)
             )
+    return lines
+
+
+def _report_jacobians(r: dict) -> list[str]:
+    lines = []
     if r.get("jacobians"):
+        worst = max(row["ratio"] for row in r["jacobians"])
         lines += [
             "",
             "(e) apex-return Jacobian (next apex, liftoff and times against apex height, speed, angle and",
-            "    stiffness), public batch API, ns per state and its cost in apex-return calls:",
+            "    stiffness), public batch API, ns per state and its cost in apex-return calls (target <= "
+            f"{TARGET_JACOBIAN_RATIO:g}x: {'met' if worst <= TARGET_JACOBIAN_RATIO else 'NOT met'}); the",
+            "    stance Jacobian in stance calls; the kernels alone (scalar, one thread, CPU time):",
+            f"    {'map':<18}{'jacobian':>10}{'apex return':>14}{'ratio':>8}{'stance jac':>12}{'ratio':>8}"
+            f"{'kernels':>22}{'ratio':>7}",
         ]
         for row in r["jacobians"]:
-            lines.append(f"    {row['map']:<18}{row['jacobian_ns']:>10.0f} ns {row['ratio']:>7.1f}x")
-    return "\n".join(lines)
+            kern = (
+                f"{row['kernel_jacobian_ns']:>7.0f} / {row['kernel_apex_return_ns']:.0f} ns"
+                f"{row['kernel_ratio']:>7.1f}x"
+                if "kernel_ratio" in row
+                else ""
+            )
+            lines.append(
+                f"    {row['map']:<18}{row['jacobian_ns']:>7.0f} ns{row['apex_return_ns']:>11.0f} ns"
+                f"{row['ratio']:>7.1f}x{row['stance_jacobian_ns']:>9.0f} ns{row['stance_ratio']:>7.1f}x"
+                f"  {kern}"
+            )
+    if r.get("first_call"):
+        worst = max(row["seconds"] for row in r["first_call"])
+        lines += [
+            "",
+            "(f) first call of slipmaps.apex_return_jacobian in a fresh process, empty NUMBA_CACHE_DIR",
+            f"    (compile time; target <= {TARGET_FIRST_CALL_S:g} s for the slowest: "
+            f"{'met' if worst <= TARGET_FIRST_CALL_S else 'NOT met'}), with the 1-min load when it started:",
+        ]
+        for row in r["first_call"]:
+            lines.append(
+                f"    {row['map']:<18}{row['seconds']:>7.1f} s elapsed, "
+                f"{row.get('cpu_seconds', math.nan):>6.1f} s CPU   (load {row['load_1min']:.2f})"
+            )
+    if r.get("sizes"):
+        lines += ["", f"(g) generated Jacobian modules (all of generated/: {r['generated_lines']} lines):"]
+        for row in r["sizes"]:
+            lines.append(f"    {row['module']:<34}{row['lines']:>7} lines, longest {row['longest']:>5} chars")
+    return lines
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--n", type=int, default=1_000_000, help="states per batch (default %(default)s)")
     parser.add_argument("--repeat", type=int, default=5, help="timed runs, best kept (default %(default)s)")
+    parser.add_argument(
+        "--sections", default="abcdefg", help="sections to run, e.g. efg (default %(default)s)"
+    )
     parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
     args = parser.parse_args()
-    r = run(args.n, args.repeat)
+    r = run(args.n, args.repeat, args.sections)
     print(json.dumps(r, indent=2) if args.json else report(r))
     return 0
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import difflib
 import hashlib
+import json
 import pprint
 from pathlib import Path
 
@@ -32,12 +33,36 @@ from .model.kernels import flight_kernels
 from .render import render
 from .status import STATUS_CODES
 from .tangent import Differentiator
+from .wrap import LIMIT, wrap
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 
 VERSIONS = {"sympy": sp.__version__, "jinja2": jinja2.__version__}
-_STATUSES = [{"name": n, "code": c, "message": msg} for n, c, msg in STATUS_CODES]
+
+
+def _pieces(text: str, width: int = 80) -> list[str]:
+    """``text`` in pieces of at most about ``width`` characters, split after spaces (adjacent string
+    literals in the generated file, which Python joins)."""
+    out, current = [], ""
+    for word in text.split(" "):
+        if current and len(current) + len(word) > width:
+            out.append(current)
+            current = ""
+        current += word + " "
+    out.append(current[:-1])
+    return out
+
+
+def _literal(text: str) -> str:
+    """``text`` as adjacent string literals of at most about 80 characters (jinja2's ``tojson``
+    escapes), one a line."""
+    pieces = [json.dumps(p).translate(_HTML_SAFE) for p in _pieces(text)]
+    return "\n        ".join(pieces)
+
+
+_HTML_SAFE = str.maketrans({"<": "\\u003c", ">": "\\u003e", "&": "\\u0026", "'": "\\u0027"})
+_STATUSES = [{"name": n, "code": c, "message": msg, "literal": _literal(msg)} for n, c, msg in STATUS_CODES]
 
 
 def _sha(text: str) -> str:
@@ -77,6 +102,7 @@ def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]
     diff = Differentiator()
     for spec in (*all_maps(), ground_truth()):
         spec.jacobian_kernels(diff, flights)
+    diff.build()
     by_module: dict[str, list] = {}
     for kernel in diff.kernels.values():
         by_module.setdefault(kernel.module, []).append(kernel)
@@ -143,7 +169,8 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
         depends += [{"name": n, "sha256": _sha(t)} for n, t in _external_sources(m).items()]
     imports = [f"from .{m} import {', '.join(sorted(callees[m]))}" for m in generated]
     imports += [f"from {m} import {', '.join(sorted(callees[m]))}" for m in external]
-    return render(
+    used = set().union(*(k["statuses"] for k in kernels))
+    text = render(
         "kernels.py.j2",
         source=mod.source,
         template="derive/templates/kernels.py.j2",
@@ -152,8 +179,10 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
         imports=imports,
         kernels=kernels,
         versions=VERSIONS,
-        statuses=_STATUSES,
+        statuses=[st["name"] for st in _STATUSES if st["name"] in used],
+        status_module=".status",
     )
+    return wrap(text)
 
 
 def _index(specs: tuple[MapSpec, ...]) -> dict:
@@ -189,33 +218,43 @@ def build_files() -> dict[str, str]:
     _require_checkout()
     files: dict[str, str] = {}
     common = {"versions": VERSIONS, "statuses": _STATUSES}
-    files["generated/status.py"] = render(
-        "status.py.j2",
-        source="derive/status.py",
-        template="derive/templates/status.py.j2",
-        depends=[],
-        **common,
+    files["generated/status.py"] = wrap(
+        render(
+            "status.py.j2",
+            source="derive/status.py",
+            template="derive/templates/status.py.j2",
+            depends=[],
+            **common,
+        )
     )
     mods = modules()
     for mod in mods:
         files[f"generated/{mod.name}.py"] = _render_module(mod, files)
     specs = all_maps()
     index = _index(specs)
-    files["generated/maps_index.py"] = render(
-        "maps_index.py.j2",
-        source="derive/mapspec.py",
-        template="derive/templates/maps_index.py.j2",
-        depends=[],
-        tables=[(name, pprint.pformat(value, width=100, sort_dicts=False)) for name, value in index.items()],
-        **common,
+    files["generated/maps_index.py"] = wrap(
+        render(
+            "maps_index.py.j2",
+            source="derive/mapspec.py",
+            template="derive/templates/maps_index.py.j2",
+            depends=[],
+            tables=[
+                # the first line holds "NAME = " too: every line within the limit
+                (name, pprint.pformat(value, width=LIMIT - len(name) - 3, sort_dicts=False))
+                for name, value in index.items()
+            ],
+            **common,
+        )
     )
-    files["generated/__init__.py"] = render(
-        "init.py.j2",
-        source="derive/generate.py",
-        template="derive/templates/init.py.j2",
-        depends=[],
-        modules=[{"name": m.name, "doc": m.doc} for m in mods],
-        **common,
+    files["generated/__init__.py"] = wrap(
+        render(
+            "init.py.j2",
+            source="derive/generate.py",
+            template="derive/templates/init.py.j2",
+            depends=[],
+            modules=[{"name": m.name, "doc": m.doc} for m in mods],
+            **common,
+        )
     )
     table = render_equation_table()
     files["docs/equations.md"] = table

@@ -11,7 +11,8 @@ code. Steps:
 - :class:`Call`: calls another kernel, passing arguments **by the callee's argument names** and
   binding the callee's outputs **by name**; a failing callee status is propagated.
 - :class:`Iterate`: a bounded fixed-point iteration on named state variables (at most ``max_iter``
-  updates, stopping when every update moves by at most ``tol * scale``).
+  updates, stopping when every update moves by at most ``tol * scale``); what it ``evaluate`` s at
+  every iterate stays visible after the loop, at the iterate it stops at.
 - :class:`Switch`: branches on an integer option; every branch defines the same names.
 
 Kernels never raise. :mod:`.lower` checks the declaration (every symbol an expression uses is an
@@ -130,11 +131,17 @@ class Guard:
 
 @dataclass(frozen=True)
 class Stage:
-    """Named assignments (in order; a later one may use an earlier one), then guards."""
+    """Named assignments (in order; a later one may use an earlier one), then guards.
+
+    The stage's one CSE sees an assignment that uses an earlier one of the stage with that one
+    inlined, except for the ``opaque`` names, which later assignments read as variables (a
+    derivative stage's tangents: inlining them would expand the chain rule's products).
+    """
 
     assignments: tuple[tuple[sp.Symbol, sp.Basic], ...]
     guards: tuple[Guard, ...] = ()
     comment: str = ""
+    opaque: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -161,8 +168,15 @@ class Iterate:
     ``scales`` entry (a positive expression in the units of that variable), or after ``max_iter``
     passes; then ``fail_status`` (if set) is returned when ``tol > 0``. With ``tol = 0`` it runs
     exactly ``max_iter`` passes; with ``max_iter = 0`` none (the initial values stand, no failure).
-    After the loop only the state variables and ``count`` (the number of passes, a float) are
-    visible.
+    After the loop the state variables and ``count`` (the number of passes, a float) are visible,
+    and the names ``evaluate`` defines.
+
+    ``evaluate`` holds steps run at every iterate, the one the loop stops at included: each pass
+    runs ``evaluate`` then ``body`` (both see the current state) then the updates, and once the loop
+    stops (converged, or ``max_iter`` passes run, or none with ``max_iter = 0``) ``evaluate`` runs once
+    more at the final state, after the ``fail_status`` check. Its names stay visible after the loop
+    with their values at that iterate, so a declaration does not repeat the loop's steps after it to
+    get them (the loop's code is emitted once). Its guards fail the kernel as anywhere else.
 
     ``carry`` holds variables updated every pass but outside the convergence test, each as
     ``(variable, initial value, update)``: the derivatives a Jacobian kernel carries through the
@@ -179,6 +193,7 @@ class Iterate:
     fail_status: str | None = "NOT_CONVERGED"
     comment: str = ""
     carry: tuple[tuple[sp.Symbol, sp.Basic, sp.Basic], ...] = ()
+    evaluate: tuple[Step, ...] = ()
 
     def __post_init__(self):
         if not len(self.update) == len(self.scales) == len(self.state):
@@ -196,7 +211,38 @@ class Switch:
     comment: str = ""
 
 
-Step = Stage | Call | Iterate | Switch
+@dataclass(frozen=True)
+class Store:
+    """Tangents into the kernel's direction array ``_T`` (derive/tangent.py): ``_T[row, j] =
+    values[j]`` for every direction ``j``."""
+
+    row: int
+    values: tuple[sp.Basic, ...]
+
+
+@dataclass(frozen=True)
+class Load:
+    """Tangents out of the kernel's direction array: ``names[j] = _T[row, j]`` for every direction."""
+
+    row: int
+    names: tuple[sp.Symbol, ...]
+
+
+@dataclass(frozen=True)
+class Directions:
+    """Steps run once per direction ``j`` of a derivative kernel (its tangent code inside a loop,
+    written once instead of once per direction): each read binds a name to ``_T[row, j]``, the
+    stages compute, each write stores an expression in ``_T[row, j]``. Names defined inside are not
+    visible after."""
+
+    n: int
+    reads: tuple[tuple[sp.Symbol, int], ...]
+    steps: tuple[Stage, ...]
+    writes: tuple[tuple[sp.Basic, int], ...]
+    comment: str = ""
+
+
+Step = Stage | Call | Iterate | Switch | Store | Load | Directions
 
 
 @dataclass(frozen=True)
@@ -228,6 +274,16 @@ class Kernel:
     #: Inline into every caller at numba's IR level (``njit(inline="always")``): a map's stance kernel
     #: when its MapSpec opts in (``MapSpec.inline``), so its batch loop runs straight-line code.
     inline: bool = False
+    #: Arguments and outputs the finiteness checks leave out: a derivative kernel's directions and
+    #: derivatives (a non-finite derivative is NUMERICAL_RANGE for the public API, runtime/api/jacobian.py,
+    #: when the Jacobian returns it; one of an output nothing uses must not fail a caller).
+    unchecked: tuple[str, ...] = ()
+    #: The docstring's account of the arguments, when one line per argument says less (an outlined
+    #: kernel's are the caller's variables of the same names).
+    doc_args: str = ""
+    #: The docstring's Returns list, (name, doc) pairs, when one line per output says less (a
+    #: Jacobian's derivative block in one entry).
+    doc_returns: tuple[tuple[str, str], ...] = ()
     #: A hand-written kernel that generated code calls (no steps; ``module`` is its Python module,
     #: e.g. ``slipmaps.runtime.exact.kernels``): a numba function of the declared arguments, in their
     #: order, returning the declared outputs and the status. The exact simulator's stance is one.

@@ -233,14 +233,13 @@ class MapSpec(Declaration):
         touchdown angle, ground, the stiffness."""
         return tuple(a.name for a in catalog.APEX_ARGS) + self.stiffness()
 
-    def jacobian_kernels(
-        self, diff: Differentiator, flight_kernels: Mapping[str, Kernel]
-    ) -> tuple[Kernel, ...]:
-        """``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (with batch forms), built by
-        forward-mode differentiation (:mod:`.tangent`) into module ``<ident>_jacobian``; the kernels
-        they call land in ``diff.kernels``. The stance one is built first, so that the apex-return
-        kernel's call of the stance (same arguments active) reuses it."""
-        stance = diff.jacobian(
+    def jacobian_kernels(self, diff: Differentiator, flight_kernels: Mapping[str, Kernel]) -> None:
+        """Declare ``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (with batch forms),
+        built by forward-mode differentiation (:mod:`.tangent`, ``diff.build()``) into module
+        ``<ident>_jacobian``; the kernels they call land in ``diff.kernels`` too. The stance one is
+        built first, so that the apex-return kernel's call of the stance reuses it (a superset of the
+        arguments active there: the touchdown leg length is not)."""
+        diff.jacobian(
             self.stance_kernel(),
             self.stance_wrt(),
             name=self.kernel_name("stance_jacobian"),
@@ -248,7 +247,7 @@ class MapSpec(Declaration):
             "state and the stiffness.",
             batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
         )
-        apex = diff.jacobian(
+        diff.jacobian(
             self.apex_return_kernel(flight_kernels),
             self.apex_wrt(),
             name=self.kernel_name("apex_return_jacobian"),
@@ -256,7 +255,6 @@ class MapSpec(Declaration):
             "the touchdown angle and the stiffness.",
             batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
         )
-        return stance, apex
 
     def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
         state_at = self.state_at_kernel()

@@ -1,42 +1,75 @@
-"""Forward-mode differentiation of the kernel IR: JVP and Jacobian kernels of any :class:`~.ir.Kernel`.
+"""Forward-mode differentiation of the kernel IR, every direction in one pass: Jacobian and JVP kernels.
 
-:meth:`Differentiator.jvp` turns a kernel into one that also takes a direction (``<arg>__tan`` for
-each differentiated argument) and returns, besides its outputs, the derivative of every output
-along it (``<output>__tan``). :meth:`Differentiator.jacobian` calls that JVP kernel once per
-argument of ``wrt`` with a unit direction and returns every output's derivative with respect to
-each, named ``d_<output>__<argument>``. Symbolic forward mode over the declaration, step by step:
+:meth:`Differentiator.jacobian` turns a kernel into one that returns its outputs and the derivative
+of every output with respect to each argument of ``wrt`` (``d_<output>__<argument>``), all from one
+call: every quantity the kernel computes carries its value and one tangent per direction together,
+as SymForce's ``with_jacobians`` shares one common-subexpression pass between a function's values
+and its derivatives (the sin, cos and square roots once, the partial derivatives once for every
+direction). Symbolic forward mode over the declaration, step by step:
 
-- :class:`~.ir.Stage`: each assignment ``y = f(x, ...)`` is followed by its tangent,
-  ``y__tan = sum_x df/dx * x__tan`` (SymPy ``diff``), so one CSE per stage shares the
-  subexpressions of a value and its derivative. A name whose tangent is identically zero gets no
-  tangent variable. Guards are unchanged (a derivative is taken where the value exists).
-- :class:`~.ir.Call`: the callee's own JVP kernel (generated once per callee and set of arguments
-  that carry a tangent) gets the arguments' tangents: the chain rule, done by the callee.
-- :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass
-  (:attr:`~.ir.Iterate.carry`, outside the convergence test): the derivative of the iterate the
-  loop stops at, which is what the map returns (derivatives through the iterations).
+- :class:`~.ir.Stage`: each assignment ``y = f(x, ...)`` is followed by its tangents,
+  ``d_y__w = sum_x df/dx * d_x__w`` for every direction ``w`` (SymPy ``diff``, once per ``x``), so
+  the stage's CSE shares the partial derivatives between the directions and with the value. A
+  tangent that is identically zero gets no variable, one that is a constant or another variable
+  none either (it is used in place). Guards are unchanged (a derivative is taken where the value
+  exists).
+- :class:`~.ir.Call`: the chain rule, done by a derivative of the callee, whichever computes fewer
+  directions:
+
+  * with respect to the callee's arguments that carry a tangent (its Jacobian, unit directions:
+    shared by every caller with those arguments active, the map's public stance Jacobian among
+    them), then ``d_out__w = sum_a d_out/d_a * d_a__w`` at the call; a Jacobian already generated
+    for a superset of the arguments with at most one direction more is reused;
+  * or along the caller's directions (a vector JVP kernel, ``d_<arg>__<j>`` the component of
+    direction ``j`` along an argument; a direction that is exactly a unit vector or zero along an
+    argument is built in, not passed), when the callee has more active arguments than the caller
+    has directions reaching it.
+
+  Both are generated once per callee and set of active arguments (pattern of directions).
+- :class:`~.ir.Iterate`: the tangents of the state variables are carried through every pass,
+  outside the convergence test: the derivative of the iterate the loop stops at, which is what the
+  map returns (derivatives through the iterations). What the loop evaluates at every iterate
+  (:attr:`~.ir.Iterate.evaluate`) keeps its tangents after it. Where the loop's steps are stages
+  and calls, at least :data:`LOOPED_SIZE` assignments a pass (the iterations of Schwind and
+  Koditschek's halves at 3 or more nodes, gravity-type5's), each pass computes its values and
+  partial derivatives once and then runs its tangent code, written once, per direction
+  (:class:`~.ir.Directions`, on the rows of a direction array ``_T[row, direction]``), and so do the
+  initial values and the stages and calls right after the loop; otherwise every tangent has a
+  variable per direction, carried through the passes (:attr:`~.ir.Iterate.carry`). A direction
+  that reaches neither the initial values nor anything the loop reads is zero in it.
 - :class:`~.ir.Switch`: each branch is differentiated; a tangent one branch defines is zero in the
   others.
 
-The loops and branches of a derivative kernel are then outlined into kernels of their own
-(:mod:`.outline`), which keeps numba's compile time near linear in the code size.
+What no output needs is then pruned, and the switch branches that hold a loop are outlined into
+kernels of their own (:mod:`.outline`; the loops keep their tangents in one tuple, derive/lower.py),
+which keeps numba's compile time near linear in the code size.
+
+Cost: see benchmarks/bench_maps.py (e)-(g). Outside loops the directions are unrolled (every tangent
+a line of its own per direction), so that code grows with the number of directions, and numba's
+compile time is about proportional to the bytecode it compiles (about 0.4 ms per instruction on
+the shared 2-core machine; the per-direction loops' array accesses cost more per instruction, so
+they save lines and run time rather than compile time). Measured 2026-12-01, bytecode
+instructions of iterative_jacobian.py: one-direction JVP called per direction, same lowering,
+33,644; unrolled vector mode 52,627; with the large loops' tangent code per direction 38,409.
 
 Almost-everywhere derivatives: ``sign``, ``floor`` and ``ceiling`` differentiate to 0 (SymPy's
 ``DiracDelta`` / unevaluated ``Derivative``); ``Abs`` to ``sign``; ``Max``/``Min`` to a Heaviside
-step. At such a kink the derivative is one-sided or the mean of both sides, as printed.
+step. At such a kink the derivative is one-sided or the mean of both sides, as printed. Anything
+SymPy leaves unevaluated is refused at generation.
 """
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .ir import Arg, Call, Field, Group, Iterate, Kernel, Stage, Switch, sym
-from .outline import Outliner
+from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
+from .outline import Outliner, defined, prune, prune_rows, used, visible
 
 #: A tangent per direction: direction name -> expression (0 when the value does not depend on it).
-_Tangent = dict[str, sp.Basic]
+_Tangent = dict
 
 
 def tangent_name(name: str, wrt: str | None = None) -> str:
@@ -48,8 +81,15 @@ def tangent_name(name: str, wrt: str | None = None) -> str:
     return f"_d{name}__{wrt}" if name.startswith("_") else f"d_{name}__{wrt}"
 
 
+def _entry_name(name: str, arg: str) -> str:
+    """The caller's variable holding the callee's d <output bound to name> / d <arg> (a Jacobian
+    entry, before the chain rule): ``_j_<name>__<arg>``."""
+    return f"_j{name}__{arg}" if name.startswith("_") else f"_j_{name}__{arg}"
+
+
 def derivative_fields(outputs: Group, wrt: tuple[str | None, ...]) -> tuple[Field, ...]:
-    """Every output's derivative with respect to every ``wrt`` (None: along a JVP's direction)."""
+    """Every output's derivative with respect to every ``wrt`` (None: along a JVP's direction),
+    output-major (the row-major Jacobian after the values)."""
     return tuple(
         Field(
             tangent_name(f.name, w),
@@ -76,44 +116,83 @@ def _clean(expr: sp.Basic) -> sp.Basic:
     return expr
 
 
+def _direct(t: sp.Basic) -> bool:
+    """A tangent used in place, without a variable of its own: a number, a variable or a number
+    times a variable."""
+    if t.is_Number or isinstance(t, sp.Symbol):
+        return True
+    return isinstance(t, sp.Mul) and len(t.args) == 2 and t.args[0].is_Number and t.args[1].is_Symbol
+
+
 @dataclass
 class _Frame:
-    """The tangents known at one point of a kernel body, by variable name."""
+    """The tangents known at one point of a kernel body, by variable name: each a number, a
+    variable holding it, or (for an argument) the direction's component passed in."""
 
-    wrt: tuple[str, ...]
+    wrt: tuple
     tangents: dict[str, _Tangent]
 
-    def of(self, expr: sp.Basic) -> _Tangent:
-        """The tangent of ``expr`` in every direction (chain rule over its free symbols)."""
+    def partials(self, expr: sp.Basic) -> list[tuple[sp.Basic, _Tangent]]:
+        """(d expr / d x, tangent of x) for every free symbol x of ``expr`` with a tangent."""
         expr = sp.sympify(expr)
-        out = {w: sp.S.Zero for w in self.wrt}
+        out = []
         for s in sorted(expr.free_symbols, key=lambda s: s.name):
             t = self.tangents.get(s.name)
             if t is None or all(v == 0 for v in t.values()):
                 continue
             d = _clean(sp.diff(expr, s))
-            if d == 0:
-                continue
-            for w in self.wrt:
-                if t[w] != 0:
-                    out[w] += d * t[w]
+            if d != 0:
+                out.append((d, t))
         return out
 
+    def of(self, expr: sp.Basic) -> _Tangent:
+        """The tangent of ``expr`` in every direction (chain rule over its free symbols)."""
+        return self.combine(self.partials(expr))
+
+    def combine(self, partials) -> _Tangent:
+        return {w: sp.Add(*(d * t[w] for d, t in partials if t[w] != 0)) for w in self.wrt}
+
     def bind(self, name: str, tangent: _Tangent) -> list[tuple[sp.Symbol, sp.Basic]]:
-        """Record ``name``'s tangent; the assignments of its nonzero directions."""
+        """Record ``name``'s tangent; the assignments of the directions that need a variable."""
         assigns, rec = [], {}
         for w in self.wrt:
-            if tangent[w] == 0:
-                rec[w] = sp.S.Zero
+            t = sp.sympify(tangent[w])
+            if _direct(t):
+                rec[w] = t
             else:
                 s = sym(tangent_name(name, w))
-                assigns.append((s, tangent[w]))
+                assigns.append((s, t))
                 rec[w] = s
         self.tangents[name] = rec
         return assigns
 
+    def materialize(self, name: str, wrt) -> list[tuple[sp.Symbol, sp.Basic]]:
+        """Assignments giving ``name``'s tangents in ``wrt`` their own variables (where the frame
+        holds a number or another variable), for code after a branch or a loop, or the outputs."""
+        out = []
+        for w in wrt:
+            s = sym(tangent_name(name, w))
+            if self.tangents[name][w] != s:
+                out.append((s, self.tangents[name][w]))
+        return out
+
     def copy(self) -> _Frame:
         return _Frame(self.wrt, {k: dict(v) for k, v in self.tangents.items()})
+
+
+@dataclass(frozen=True)
+class _Derived:
+    """A generated derivative kernel and the (output, direction) pairs whose derivative is
+    identically zero (its callers use 0 instead)."""
+
+    kernel: Kernel
+    zero: frozenset
+
+
+_NOTES = (
+    "Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every "
+    "direction in one pass; through an iteration, of the iterate it stops at."
+)
 
 
 @dataclass
@@ -121,67 +200,23 @@ class Differentiator:
     """Builds derivative kernels, each once, kept in :attr:`kernels` (name -> kernel) for the
     generator to place in ``<primal module>_jacobian``.
 
-    - :meth:`jvp`: the kernel plus one directional derivative (a Jacobian-vector product): extra
-      arguments ``<arg>__tan`` (the direction, for the ``active`` arguments), extra outputs
-      ``<out>__tan``. Its outputs are not checked for finiteness (its callers check theirs): an
-      infinite derivative of an output the caller does not use must not fail the caller.
-    - :meth:`jacobian`: all outputs and their derivatives with respect to ``wrt``, one call of the
-      JVP kernel per direction (unit seeds). One direction per call keeps each generated function
-      about twice the size of the primal one (numba's compile time grows faster than linearly with
-      a function's size), at the cost of recomputing the values once per direction.
+    - :meth:`jacobian` (then :meth:`build`): a public Jacobian kernel (outputs, then d output_i /
+      d input_j row-major, a batch form), which every caller differentiating the same kernel with
+      respect to the same arguments shares.
+
+    No derivative kernel checks its derivatives or its direction arguments for finiteness: an
+    infinite derivative of an output the caller does not use must not fail the caller, and one the
+    public API returns is its NUMERICAL_RANGE (runtime/api/jacobian.py). A public Jacobian checks its
+    values as the map does; the others leave that to their callers, as JVP kernels always did.
     """
 
     kernels: dict[str, Kernel] = field(default_factory=dict)
-    _memo: dict[tuple, Kernel] = field(default_factory=dict)
+    _jacobians: dict[tuple, dict[tuple[str, ...], _Derived]] = field(default_factory=dict)
+    _jvps: dict[tuple, _Derived] = field(default_factory=dict)
+    _public: dict[tuple, dict] = field(default_factory=dict)
+    _pending: list = field(default_factory=list)
 
-    def jvp(self, kernel: Kernel, active: tuple[str, ...]) -> Kernel:
-        """``kernel`` and the derivative of every output along a direction in its ``active``
-        arguments, given as the extra arguments ``<arg>__tan``."""
-        unknown = [a for a in active if a not in kernel.arg_names]
-        if unknown:
-            raise ValueError(f"kernel {kernel.name}: cannot differentiate with respect to {unknown}")
-        key = ("jvp", kernel.module, kernel.name, tuple(active))
-        if key in self._memo:
-            return self._memo[key]
-        frame = _Frame((None,), {})
-        for a in kernel.args:
-            frame.tangents[a.name] = {None: sym(tangent_name(a.name)) if a.name in active else sp.S.Zero}
-        ctx = _Ctx(self, frame)
-        steps = ctx.steps(kernel.steps)
-        fields = derivative_fields(kernel.outputs, (None,))
-        # a derivative output that is identically zero still needs its variable
-        zeros = [
-            (sym(tangent_name(f.name)), sp.S.Zero)
-            for f in kernel.outputs.fields()
-            if ctx.frame.tangents.get(f.name, {}).get(None, sp.S.Zero) == 0
-        ]
-        if zeros:
-            steps += (Stage(tuple(zeros), comment="derivatives that are identically zero"),)
-        name = f"{kernel.name}_jvp" + ("" if active == kernel.arg_names else "_" + "_".join(active))
-        module = f"{kernel.module}_jacobian"
-        steps = Outliner(name, module, self._add).steps(
-            steps, list(kernel.outputs.names()) + [f.name for f in fields]
-        )
-        out = Kernel(
-            name=name,
-            summary=f"{kernel.summary.rstrip('.')}, with the derivative of every output along the "
-            f"direction ({', '.join(tangent_name(a) for a in active)}).",
-            equations=kernel.equations,
-            args=kernel.args
-            + tuple(Arg(sym(tangent_name(a)), f"direction: its component along {a}") for a in active),
-            steps=steps,
-            outputs=Group("", kernel.outputs.items + fields),
-            status=kernel.status,
-            notes="Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); "
-            "through an iteration, of the iterate it stops at.",
-            module=module,
-            check_inputs=kernel.check_inputs,
-            check_outputs=False,
-        )
-        self._memo[key] = out
-        self._add(out)
-        return out
-
+    # -- public ------------------------------------------------------------------------------------
     def jacobian(
         self,
         kernel: Kernel,
@@ -190,88 +225,332 @@ class Differentiator:
         name: str,
         summary: str,
         batch=None,
-    ) -> Kernel:
-        """``kernel``'s outputs and their derivatives ``d_<out>__<w>`` with respect to each ``w`` of
-        ``wrt``: one call of :meth:`jvp` per direction."""
-        jvp = self.jvp(kernel, tuple(wrt))
-        outs = kernel.outputs.names()
-        steps = []
-        for w in wrt:
-            seeds = {tangent_name(a): sp.S.One if a == w else sp.S.Zero for a in wrt}
-            bind = {tangent_name(o): tangent_name(o, w) for o in outs}
-            if w == wrt[0]:
-                bind.update({o: o for o in outs})
-            args = {**{a.name: a.symbol for a in kernel.args}, **seeds}
-            steps.append(Call(jvp, args, bind, comment=f"derivatives with respect to {w}"))
+    ) -> None:
+        """Declare the public Jacobian kernel ``name``: ``kernel``'s outputs and their derivatives
+        ``d_<out>__<w>`` with respect to each ``w`` of ``wrt`` (values checked to be finite, the
+        derivatives left to runtime/api/jacobian.py), with a batch form. :meth:`build` builds it, after
+        every declaration, so that each caller differentiating ``kernel`` with respect to ``wrt``
+        (another map's zeroth iterate, the apex-return map's stance) calls it by its public name."""
+        key = (kernel.module, kernel.name, tuple(wrt))
+        if key in self._public:
+            raise ValueError(f"two public Jacobians of {kernel.name} with respect to {wrt}")
+        self._public[key] = {"name": name, "summary": summary, "batch": batch}
+        self._pending.append((kernel, tuple(wrt)))
+
+    def build(self) -> dict[str, Kernel]:
+        """Build every declared public Jacobian (and the kernels it calls); :attr:`kernels`."""
+        for kernel, wrt in self._pending:
+            self._jacobian(kernel, wrt)
+        self._pending.clear()
+        return self.kernels
+
+    # -- internal kernels ---------------------------------------------------------------------------
+    def _jacobian(self, kernel: Kernel, wrt: tuple[str, ...]) -> _Derived:
+        """The internal Jacobian of ``kernel`` with respect to ``wrt`` (unit directions)."""
+        unknown = [a for a in wrt if a not in kernel.arg_names]
+        if unknown:
+            raise ValueError(f"kernel {kernel.name}: cannot differentiate with respect to {unknown}")
+        memo = self._jacobians.setdefault((kernel.module, kernel.name), {})
+        if wrt not in memo:
+            public = self._public.get((kernel.module, kernel.name, wrt))
+            seeds = {a: {w: sp.S.One if a == w else sp.S.Zero for w in wrt} for a in wrt}
+            if public is None:
+                name = f"{kernel.name}_jac" + ("" if wrt == kernel.arg_names else "_" + "_".join(wrt))
+                summary = (
+                    f"{kernel.summary.rstrip('.')}, and the derivatives of its outputs with respect to "
+                    f"{', '.join(wrt)}."
+                )
+                public = {"name": name, "summary": summary, "batch": None}
+            memo[wrt] = self._derive(
+                kernel,
+                wrt,
+                seeds,
+                name=public["name"],
+                extra=(),
+                summary=public["summary"],
+                batch=public["batch"],
+                check=public["batch"] is not None and kernel.check_outputs,
+            )
+        return memo[wrt]
+
+    def _vector_jvp(self, kernel: Kernel, pattern: tuple[tuple[str, ...], ...]) -> _Derived:
+        """``kernel``'s outputs and their derivatives along ``len(pattern)`` directions; direction
+        ``j`` has along argument ``a`` the component ``pattern[j][i]`` of ``a = arg_names[i]``: "0",
+        "1" or "s" (passed as the argument ``d_<a>__<j>``)."""
+        key = (kernel.module, kernel.name, pattern)
+        if key not in self._jvps:
+            dirs = tuple(str(j) for j in range(len(pattern)))
+            seeds: dict[str, dict] = {}
+            extra = []
+            for j, row in zip(dirs, pattern, strict=True):
+                for a, kind in zip(kernel.args, row, strict=True):
+                    if kind == "s":
+                        s = sym(tangent_name(a.name, j))
+                        extra.append(Arg(s, f"direction {j}: its component along {a.name}"))
+                    else:
+                        s = sp.S.One if kind == "1" else sp.S.Zero
+                    seeds.setdefault(a.name, {})[j] = s
+            digest = hashlib.sha256(repr(pattern).encode()).hexdigest()[:6]
+            self._jvps[key] = self._derive(
+                kernel,
+                dirs,
+                seeds,
+                name=f"{kernel.name}_jvp{len(dirs)}_{digest}",
+                extra=tuple(extra),
+                summary=f"{kernel.summary.rstrip('.')}, and the derivatives of its outputs along "
+                f"{len(dirs)} directions (d_<argument>__<j>: direction j's component along an argument; "
+                f"the arguments not listed have a fixed component, 0 or 1).",
+            )
+        return self._jvps[key]
+
+    def _derive(
+        self, kernel: Kernel, dirs: tuple, seeds: dict, *, name, extra, summary, batch=None, check=False
+    ) -> _Derived:
+        frame = _Frame(dirs, {})
+        for a in kernel.args:
+            frame.tangents[a.name] = {w: seeds.get(a.name, {}).get(w, sp.S.Zero) for w in dirs}
+        ctx = _Ctx(self, frame)
+        steps = ctx.steps(kernel.steps)
+        finals: list = []
+        zero = set()
+        for f in kernel.outputs.fields():
+            for w in dirs:
+                if ctx.frame.tangents[f.name][w] == 0:
+                    zero.add((f.name, w))
+            finals += ctx.frame.materialize(f.name, dirs)
+        if finals:
+            steps += (Stage(tuple(finals), comment="derivatives of the outputs"),)
+        fields = derivative_fields(kernel.outputs, dirs)
+        module = f"{kernel.module}_jacobian"
+        needed = set(kernel.outputs.names()) | {f.name for f in fields}
+        steps = prune(prune_rows(prune(steps, needed)), needed)
+        steps = Outliner(name, module, self._add).steps(steps, needed)
+        values = tuple((f.name, f.doc + (f" [{f.unit}]" if f.unit else "")) for f in kernel.outputs.fields())
+        if dirs == (None,):
+            block = ("<output>__tan", "the derivative of each output above along the direction, in order")
+        else:
+            over = "direction" if dirs[0] == "0" else "argument"
+            block = (
+                f"d_<output>__<{over}>",
+                f"d output / d {over} for each output above and {over} {', '.join(dirs)} (row-major)",
+            )
         out = Kernel(
             name=name,
             summary=summary,
             equations=kernel.equations,
-            args=kernel.args,
-            steps=tuple(steps),
-            outputs=Group("", kernel.outputs.items + derivative_fields(kernel.outputs, tuple(wrt))),
+            args=kernel.args + tuple(extra),
+            steps=steps,
+            outputs=Group("", kernel.outputs.items + fields),
             status=kernel.status,
             batch=batch,
-            notes=jvp.notes,
-            module=f"{kernel.module}_jacobian",
+            notes=_NOTES,
+            module=module,
             check_inputs=kernel.check_inputs,
-            check_outputs=kernel.check_outputs,
+            check_outputs=check,
+            unchecked=tuple(a.name for a in extra) + tuple(f.name for f in fields),
+            doc_returns=values + (block,),
         )
         self._add(out)
-        return out
+        return _Derived(out, frozenset(zero))
 
     def _add(self, kernel: Kernel) -> None:
         if kernel.name in self.kernels:
             raise ValueError(f"two generated kernels named {kernel.name}")
         self.kernels[kernel.name] = kernel
 
+    def _for_call(self, callee: Kernel, active: tuple[str, ...], dirs: tuple) -> tuple[str, object]:
+        """How a call differentiates ``callee``: ("jacobian", wrt) or ("jvp", None) (module docstring)."""
+        memo = self._jacobians.get((callee.module, callee.name), {})
+        fewest = min(len(active), len(dirs))
+        supersets = sorted((len(b), b) for b in memo if set(active) <= set(b) and len(b) <= fewest + 1)
+        if supersets:
+            return "jacobian", supersets[0][1]
+        if len(active) <= len(dirs):
+            return "jacobian", active
+        return "jvp", None
+
+
+#: The generic direction of the tangent code a loop runs once per direction (:meth:`_Ctx.looped`).
+_J = "j"
+
+
+#: A loop with at least this many assignments per pass (its steps' assignments and bindings, a
+#: switch's largest branch, its updates) gets its tangent code written once and run per direction;
+#: a smaller one one variable per tangent and direction (the direction array, its stores and loads
+#: cost about 100 ns a call, which a small loop does not win back: measured 2026-12-01, the gravity
+#: maps' loops of 21-23 assignments 1.55x -> 1.8x their map per direction, geyer-vs's (a switch
+#: per pass, none by default) 2.1x -> 2.9x: so a loop holding a switch is not run per direction).
+LOOPED_SIZE = 24
+
+
+def _size(steps) -> int:
+    n = 0
+    for s in steps:
+        if isinstance(s, Stage):
+            n += len(s.assignments)
+        elif isinstance(s, Call):
+            n += len(s.bind)
+        elif isinstance(s, Switch):
+            n += max((_size(b) for _, b in s.cases), default=0)
+        elif isinstance(s, Iterate):
+            n += _size(s.evaluate) + _size(s.body) + len(s.update)
+    return n
+
+
+def _straight(steps) -> bool:
+    """Steps without a loop or a branch: stages and calls."""
+    return all(isinstance(s, (Stage, Call)) for s in steps)
+
 
 @dataclass
 class _Ctx:
     diff: Differentiator
     frame: _Frame
+    #: counters shared by the contexts of one derivative kernel: partial derivatives given variables
+    #: of their own (``_pd__<n>``) and rows of the direction array ``_T``
+    counters: dict = field(default_factory=lambda: {"pd": 0, "row": 0})
+    #: differentiating along the one generic direction of a loop's per-direction tangent code
+    generic: bool = False
+
+    def row(self) -> int:
+        self.counters["row"] += 1
+        return self.counters["row"] - 1
 
     def steps(self, steps) -> tuple:
         out: list = []
-        for step in steps:
+        steps = tuple(steps)
+        i = 0
+        while i < len(steps):
+            step = steps[i]
+            i += 1
             if isinstance(step, Stage):
                 out.append(self.stage(step))
             elif isinstance(step, Call):
                 out.extend(self.call(step))
             elif isinstance(step, Iterate):
-                out.append(self.iterate(step))
+                # the steps right after a loop, without a loop: per direction too, with the loop's
+                tail = []
+                while i < len(steps) and _straight((steps[i],)):
+                    tail.append(steps[i])
+                    i += 1
+                out.extend(self.iterate(step, tuple(tail)))
             elif isinstance(step, Switch):
                 out.append(self.switch(step))
             else:
                 raise TypeError(f"cannot differentiate a {type(step).__name__}")
         return tuple(out)
 
-    def stage(self, st: Stage) -> Stage:
-        assigns: list[tuple[sp.Symbol, sp.Basic]] = []
+    def parts(self, st: Stage) -> list[tuple[list, list]]:
+        """For each assignment: its value and the partial derivatives used in two or more directions
+        (in the generic direction: every one that is not a number or a variable) as variables of
+        their own (``_pd__<n>``); its tangents, sum over x of (d f / d x) times the tangent of x."""
+        out = []
         for s, expr in st.assignments:
-            assigns.append((s, expr))
-            assigns.extend(self.frame.bind(s.name, self.frame.of(expr)))
-        return Stage(tuple(assigns), st.guards, st.comment)
+            values = [(s, expr)]
+            partials = []
+            for d, t in self.frame.partials(expr):
+                if not _direct(d) and (self.generic or sum(1 for v in t.values() if v != 0) > 1):
+                    p = sym(f"_pd__{self.counters['pd']}")
+                    self.counters["pd"] += 1
+                    values.append((p, d))
+                    d = p
+                partials.append((d, t))
+            out.append((values, self.frame.bind(s.name, self.frame.combine(partials))))
+        return out
+
+    def stage(self, st: Stage) -> Stage:
+        """Each assignment, its partial derivatives, then its tangents (:meth:`parts`); the partial
+        derivatives and the tangents stay variables for the later assignments (the chain rule's
+        products, not expanded)."""
+        assigns, opaque = [], []
+        for values, tangents in self.parts(st):
+            assigns += values + tangents
+            opaque += [p.name for p, _ in values[1:]] + [t.name for t, _ in tangents]
+        return Stage(tuple(assigns), st.guards, st.comment, opaque=tuple(opaque))
+
+    def split(self, steps) -> tuple[list, list]:
+        """Generic direction: the steps' values (stages with their partial derivatives, calls of the
+        callees' Jacobians) and their tangent code (stages), apart."""
+        values, tangents = [], []
+        for step in steps:
+            if isinstance(step, Stage):
+                groups = self.parts(step)
+                vals = [a for v, _ in groups for a in v]
+                partial_names = tuple(p.name for v, _ in groups for p, _ in v[1:])
+                values.append(Stage(tuple(vals), step.guards, step.comment, opaque=partial_names))
+                assigns = tuple(a for _, t in groups for a in t)
+                if assigns:
+                    tangents.append(
+                        Stage(assigns, comment=step.comment, opaque=tuple(s.name for s, _ in assigns))
+                    )
+            elif isinstance(step, Call):
+                for part in self.call(step):
+                    (values if isinstance(part, Call) else tangents).append(part)
+            else:
+                raise TypeError(f"no per-direction tangent code for a {type(step).__name__}")
+        return values, tangents
 
     def call(self, c: Call) -> list:
-        """The callee's JVP kernel along the arguments' tangents (the chain rule, by the callee)."""
+        """The chain rule through a derivative of the callee (module docstring)."""
         callee = c.kernel
+        wrt = self.frame.wrt
         arg_t = {a: self.frame.of(c.args[a]) for a in callee.arg_names}
         active = tuple(a for a in callee.arg_names if any(v != 0 for v in arg_t[a].values()))
+        dirs = tuple(w for w in wrt if any(arg_t[a][w] != 0 for a in active))
         if not active or not c.bind:
             for local in c.bind.values():
-                self.frame.bind(local, {w: sp.S.Zero for w in self.frame.wrt})
+                self.frame.bind(local, {w: sp.S.Zero for w in wrt})
             return [c]
-        (w,) = self.frame.wrt
         if callee.external:
             return self.external_call(c, arg_t, active)
-        jvp = self.diff.jvp(callee, active)
-        args = {**c.args, **{tangent_name(a): arg_t[a][w] for a in active}}
+        # (in the generic direction always the callee's Jacobian: its tangents are values there)
+        how, by = self.diff._for_call(callee, active, active if self.generic else dirs)
+        if how == "jacobian":
+            return self._through_jacobian(c, arg_t, active, by)
+        return self._through_jvp(c, arg_t, dirs)
+
+    def _through_jacobian(self, c: Call, arg_t, active, by) -> list:
+        derived = self.diff._jacobian(c.kernel, by)
+        bind = dict(c.bind)
+        entries: dict[str, list] = {}
+        for out, local in c.bind.items():
+            entries[local] = []
+            for a in active:
+                if (out, a) not in derived.zero:
+                    name = _entry_name(local, a)
+                    bind[tangent_name(out, a)] = name
+                    entries[local].append((sym(name), a))
+        steps: list = [Call(derived.kernel, dict(c.args), bind, comment=c.comment)]
+        chain = []
+        for local, row in entries.items():
+            tangent = {w: sp.Add(*(j * arg_t[a][w] for j, a in row)) for w in self.frame.wrt}
+            chain += self.frame.bind(local, tangent)
+        if chain:
+            steps.append(Stage(tuple(chain), comment=f"chain rule through {c.kernel.name}"))
+        return steps
+
+    def _through_jvp(self, c: Call, arg_t, dirs) -> list:
+        callee = c.kernel
+
+        def kind(t):
+            return "0" if t == 0 else "1" if t == 1 else "s"
+
+        pattern = tuple(tuple(kind(arg_t[a][w]) for a in callee.arg_names) for w in dirs)
+        derived = self.diff._vector_jvp(callee, pattern)
+        args = dict(c.args)
+        for j, (w, row) in enumerate(zip(dirs, pattern, strict=True)):
+            for a, k in zip(callee.arg_names, row, strict=True):
+                if k == "s":
+                    args[tangent_name(a, str(j))] = arg_t[a][w]
         bind = dict(c.bind)
         for out, local in c.bind.items():
-            bind[tangent_name(out)] = tangent_name(local, w)
-            self.frame.tangents[local] = {w: sym(tangent_name(local, w))}
-        return [Call(jvp, args, bind, comment=c.comment)]
+            tangent = {w: sp.S.Zero for w in self.frame.wrt}
+            for j, w in enumerate(dirs):
+                if (out, str(j)) not in derived.zero:
+                    bind[tangent_name(out, str(j))] = tangent_name(local, w)
+                    tangent[w] = sym(tangent_name(local, w))
+            self.frame.tangents[local] = tangent
+        return [Call(derived.kernel, args, bind, comment=c.comment)]
 
     def external_call(self, c: Call, arg_t: dict[str, _Tangent], active: tuple[str, ...]) -> list:
         """A hand-written callee (``Kernel.external``): its own Jacobian kernel gives d output / d
@@ -288,89 +567,263 @@ class _Ctx:
                 f"{list(callee.jacobian_wrt)}, "
                 f"not {missing}"
             )
-        (w,) = self.frame.wrt
         bind = dict(c.bind)
-        tangents = []
+        chain = []
         for out, local in c.bind.items():
-            total = sp.S.Zero
+            entries = []
             for a in active:
                 entry = sym(f"dext_{local}__{a}")
                 bind[tangent_name(out, a)] = entry.name
-                total += entry * arg_t[a][w]
-            tangents.append((sym(tangent_name(local, w)), total))
-            self.frame.tangents[local] = {w: sym(tangent_name(local, w))}
-        return [
-            Call(callee.jacobian, dict(c.args), bind, comment=c.comment),
-            Stage(
-                tuple(tangents),
-                comment=f"tangents of {callee.name}'s outputs: its Jacobian times the direction",
-            ),
-        ]
+                entries.append((entry, a))
+            tangent = {w: sp.Add(*(j * arg_t[a][w] for j, a in entries)) for w in self.frame.wrt}
+            chain += self.frame.bind(local, tangent)
+        steps: list = [Call(callee.jacobian, dict(c.args), bind, comment=c.comment)]
+        if chain:
+            steps.append(
+                Stage(
+                    tuple(chain),
+                    comment=f"tangents of {callee.name}'s outputs: its Jacobian times the directions",
+                )
+            )
+        return steps
 
-    def iterate(self, it: Iterate) -> Iterate:
-        outer = self.frame.copy()
-        wrt = self.frame.wrt
-        # every state variable carries a tangent (its update may depend on active inputs)
-        carry: list[tuple[sp.Symbol, sp.Basic, sp.Basic]] = []
-        inits = {s.name: outer.of(init) for s, init in it.state}
-        for s, _ in it.state:
-            self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) for w in wrt}
-        for s, init in it.carry:
-            inits[s.name] = outer.of(init)
-            self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) for w in wrt}
-        self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
-        body = self.steps(it.body)
-        updates = [self.frame.of(u) for u in it.update] + [self.frame.of(u) for _, _, u in it.carry]
-        names = [s for s, _ in it.state] + [s for s, _, _ in it.carry]
-        for s, t in zip(names, updates, strict=True):
-            for w in wrt:
-                carry.append((sym(tangent_name(s.name, w)), inits[s.name][w], t[w]))
-        # after the loop only the state variables, the carried ones and the count are visible
-        self.frame = outer
+    def iterate(self, it: Iterate, tail: tuple = ()) -> list:
+        """The loop (and the stages and calls of its ``tail``) with its tangents: written once and
+        run per direction where the loop's steps are stages and calls and there are several
+        directions (:meth:`looped`), else one variable per tangent and direction, carried through
+        the passes (:attr:`~.ir.Iterate.carry`)."""
+        size = _size(it.evaluate + it.body) + len(it.update)
+        if (
+            _straight(it.evaluate + it.body)
+            and size >= LOOPED_SIZE
+            and not self.generic
+            and len(self.frame.wrt) > 1
+        ):
+            return self.looped(it, tail)
+        return [self.unrolled(it), *self.steps(tail)]
+
+    def _reach(self, it: Iterate) -> tuple[set[str], tuple]:
+        """The names from before the loop it reads, and the directions that reach it through them."""
+        names = [s for s, _ in it.state] + [c[0] for c in it.carry]
+        inner = {s.name for s in names} | {it.count.name}
+        reads = used(it.evaluate + it.body) - inner
+        exprs = [e for _, e in it.state] + list(it.update) + [e for c in it.carry for e in (c[1], c[2])]
+        for e in (*exprs, it.max_iter, it.tol, *it.scales):
+            reads |= {s.name for s in sp.sympify(e).free_symbols} - inner
+        outer = self.frame
+        reach = tuple(w for w in outer.wrt if any(outer.tangents.get(n, {}).get(w, 0) != 0 for n in reads))
+        return reads, reach
+
+    def looped(self, it: Iterate, tail: tuple = ()) -> list:
+        """Values once, tangent code once: each pass computes the values and partial derivatives,
+        then runs its tangent code once per direction (:class:`~.ir.Directions`) on the state's
+        tangents in the rows of the direction array ``_T``; the next state's tangents overwrite
+        them (a direction reads its column before it writes it). Before the loop the tangents of
+        what it reads and of its initial values are stored in rows; after it the state's and the
+        evaluated names' tangents are loaded into a variable per direction."""
+        outer = self.frame
+        wrt = outer.wrt
+        reads, reach = self._reach(it)
+        if not reach:
+            return [self.unrolled(it), *self.steps(tail)]
+        names = [s for s, _ in it.state] + [c[0] for c in it.carry]
+        inits = [init for _, init in it.state] + [c[1] for c in it.carry]
+        updates = list(it.update) + [c[2] for c in it.carry]
+        gen = _Frame((_J,), {})
+        pre: list = []
+        rows: list[tuple[sp.Symbol, int]] = []
+        # what the loop and its tail read from before them (the tail: besides what the loop defines)
+        inner = {s.name for s in names} | {it.count.name} | set(visible(it.evaluate))
+        reads = reads | (used(tail) - inner - defined(tail))
+        for x in sorted(reads):
+            t = outer.tangents.get(x)
+            if t is not None and any(v != 0 for v in t.values()):
+                row = self.row()
+                pre.append(Store(row, tuple(t[w] for w in wrt)))
+                gen.tangents[x] = {_J: sym(tangent_name(x, _J))}
+                rows.append((gen.tangents[x][_J], row))
+        n = len(wrt)
+        sub = _Ctx(self.diff, gen, self.counters, generic=True)
+        # the initial values' tangents, per direction too, into the state's rows
+        starts = [sym(f"{s.name}__start") for s in names]
+        init_values, init_tangents = sub.split(
+            (Stage(tuple(zip(starts, inits, strict=True)), comment="the initial values"),)
+        )
+        state_rows = {s.name: self.row() for s in names}
+        pre += init_values
+        pre.append(
+            Directions(
+                n,
+                tuple(rows),
+                tuple(init_tangents),
+                tuple(
+                    (sub.frame.tangents[x.name][_J], state_rows[s.name])
+                    for s, x in zip(names, starts, strict=True)
+                    if sub.frame.tangents[x.name][_J] != 0
+                ),
+                comment="the initial values' tangents, once per direction",
+            )
+        )
+        zero_starts = [s for s, x in zip(names, starts, strict=True) if sub.frame.tangents[x.name][_J] == 0]
+        if zero_starts:
+            pre.append(Directions(n, (), (), tuple((sp.S.Zero, state_rows[s.name]) for s in zero_starts)))
         for s in names:
-            self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) for w in wrt}
-        self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
-        return Iterate(
+            sub.frame.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+            rows.append((sub.frame.tangents[s.name][_J], state_rows[s.name]))
+        sub.frame.tangents[it.count.name] = {_J: sp.S.Zero}
+        ev_values, ev_tangents = sub.split(it.evaluate)
+        evaluated = [e for e in visible(it.evaluate) if sub.frame.tangents[e][_J] != 0]
+        ev_rows = {e: self.row() for e in evaluated}
+        evaluate = tuple(ev_values) + (
+            Directions(
+                n,
+                tuple(rows),
+                tuple(ev_tangents),
+                tuple((sub.frame.tangents[e][_J], ev_rows[e]) for e in evaluated),
+                comment="the evaluation's tangents, once per direction",
+            ),
+        )
+        read_evaluated = tuple((sym(tangent_name(e, _J)), ev_rows[e]) for e in evaluated)
+        for e in evaluated:  # the body reads them from their rows
+            sub.frame.tangents[e] = {_J: sym(tangent_name(e, _J))}
+        nxt = [sym(f"{s.name}__next") for s in names]
+        body_values, body_tangents = sub.split(
+            it.body + (Stage(tuple(zip(nxt, updates, strict=True)), comment="next values"),)
+        )
+        body = tuple(body_values) + (
+            Directions(
+                n,
+                tuple(rows) + read_evaluated,
+                tuple(body_tangents),
+                tuple(
+                    (sub.frame.tangents[x.name][_J], state_rows[s.name])
+                    for s, x in zip(names, nxt, strict=True)
+                ),
+                comment="the next state's tangents, once per direction",
+            ),
+        )
+        k = len(it.state)
+        loop = Iterate(
             state=it.state,
             body=body,
-            update=it.update,
+            update=tuple(nxt[:k]),
             max_iter=it.max_iter,
             tol=it.tol,
             scales=it.scales,
             count=it.count,
             fail_status=it.fail_status,
             comment=it.comment,
-            carry=tuple(it.carry) + tuple(carry),
+            carry=tuple((c[0], c[1], x) for c, x in zip(it.carry, nxt[k:], strict=True)),
+            evaluate=evaluate,
+        )
+        # the steps after the loop: values, then their tangents per direction too
+        after: list = []
+        tail_rows = {}
+        if tail:
+            for s in names:  # the state's tangents are in its rows, as the evaluation's
+                sub.frame.tangents[s.name] = {_J: sym(tangent_name(s.name, _J))}
+            tail_values, tail_tangents = sub.split(tail)
+            defined_after = [x for x in visible(tail) if sub.frame.tangents[x][_J] != 0]
+            tail_rows = {x: self.row() for x in defined_after}
+            after = tail_values + [
+                Directions(
+                    n,
+                    tuple(rows) + read_evaluated,
+                    tuple(tail_tangents),
+                    tuple((sub.frame.tangents[x][_J], tail_rows[x]) for x in defined_after),
+                    comment="their tangents, once per direction",
+                )
+            ]
+        # then a variable per direction for the tangents of what the loop and its tail define
+        self.frame = outer.copy()
+        post = []
+        loaded_rows = [(s.name, state_rows[s.name]) for s in names] + list(ev_rows.items())
+        for name, row in loaded_rows + list(tail_rows.items()):
+            loaded = tuple(sym(tangent_name(name, w)) for w in wrt)
+            post.append(Load(row, loaded))
+            self.frame.tangents[name] = dict(zip(wrt, loaded, strict=True))
+        zero = {w: sp.S.Zero for w in wrt}
+        for e in visible(it.evaluate) + visible(tail):
+            if e not in ev_rows and e not in tail_rows:
+                self.frame.tangents[e] = dict(zero)
+        self.frame.tangents[it.count.name] = dict(zero)
+        return pre + [loop] + after + post
+
+    def unrolled(self, it: Iterate) -> Iterate:
+        outer = self.frame
+        wrt = outer.wrt
+        names = [s for s, _ in it.state] + [c[0] for c in it.carry]
+        inits = [init for _, init in it.state] + [c[1] for c in it.carry]
+        updates = list(it.update) + [c[2] for c in it.carry]
+        # the directions that reach the loop: through what it reads from before it
+        _, reach = self._reach(it)
+        init_t = [outer.of(e) for e in inits]
+        self.frame = outer.copy()
+        for s in names:
+            self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) if w in reach else 0 for w in wrt}
+        self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
+        evaluate = self.steps(it.evaluate)
+        evaluated = {n: dict(self.frame.tangents[n]) for n in visible(it.evaluate)}
+        body = self.steps(it.body)
+        # the next values and their tangents as a stage of the body (one CSE, partials shared)
+        nxt = [sym(f"{s.name}__next") for s in names]
+        body += (self.stage(Stage(tuple(zip(nxt, updates, strict=True)), comment="next values")),)
+        update_t = [self.frame.tangents[n.name] for n in nxt]
+        carry = []
+        for s, t0, t in zip(names, init_t, update_t, strict=True):
+            for w in wrt:
+                if w in reach:
+                    carry.append((sym(tangent_name(s.name, w)), t0[w], t[w]))
+                elif t[w] != 0 or t0[w] != 0:
+                    raise AssertionError(f"{s.name}: a tangent in {w}, which does not reach the loop")
+        # after the loop: the state, the carried variables, the count and what the loop evaluates
+        self.frame = outer.copy()
+        for s in names:
+            self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) if w in reach else 0 for w in wrt}
+        self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
+        self.frame.tangents.update(evaluated)
+        k = len(it.state)
+        return Iterate(
+            state=it.state,
+            body=body,
+            update=tuple(nxt[:k]),
+            max_iter=it.max_iter,
+            tol=it.tol,
+            scales=it.scales,
+            count=it.count,
+            fail_status=it.fail_status,
+            comment=it.comment,
+            carry=tuple((c[0], c[1], n) for c, n in zip(it.carry, nxt[k:], strict=True)) + tuple(carry),
+            evaluate=evaluate,
         )
 
     def switch(self, sw: Switch) -> Switch:
-        before = self.frame.copy()
+        before = self.frame
         branches = []
         for value, steps in sw.cases:
             self.frame = before.copy()
             new = self.steps(steps)
             branches.append((value, new, self.frame))
         defined = [set(f.tangents) - set(before.tangents) for _, _, f in branches]
-        common = set.intersection(*defined) if defined else set()
+        common = sorted(set.intersection(*defined)) if defined else []
         wrt = before.wrt
         merged = before.copy()
+        for name in common:
+            rec = {}
+            for w in wrt:
+                values = {f.tangents[name][w] for _, _, f in branches}
+                # the same number in every branch is used in place; else each branch assigns it
+                (one,) = values if len(values) == 1 else (None,)
+                rec[w] = one if one is not None and one.is_Number else sym(tangent_name(name, w))
+            merged.tangents[name] = rec
         cases = []
         for value, new, f in branches:
             fill = []
-            for name in sorted(common):
-                for w in wrt:
-                    if f.tangents[name][w] == 0 and any(g.tangents[name][w] != 0 for _, _, g in branches):
-                        fill.append((sym(tangent_name(name, w)), sp.S.Zero))
+            for name in common:
+                fill += f.materialize(name, [w for w in wrt if not merged.tangents[name][w].is_Number])
             if fill:
-                new = new + (Stage(tuple(fill), comment="tangents the other branches define"),)
+                new = new + (Stage(tuple(fill), comment="tangents as every branch names them"),)
             cases.append((value, new))
-        for name in sorted(common):
-            merged.tangents[name] = {
-                w: sym(tangent_name(name, w))
-                if any(g.tangents[name][w] != 0 for _, _, g in branches)
-                else sp.S.Zero
-                for w in wrt
-            }
         self.frame = merged
         return Switch(sw.selector, tuple(cases), sw.comment)
 

@@ -4,41 +4,72 @@
 # Template:  derive/templates/init.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """slipmaps.generated: numba kernels rendered from the SymPy derivations in slipmaps.derive.
 
 Modules:
-    slip_model: SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2).
+    slip_model: SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec
+        2.2).
     flight: Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2).
-    geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels.
-    gravity_type0: Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and apex-return kernels.
-    gravity_type1: Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and apex-return kernels.
-    gravity_type2: Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time and apex-return kernels.
-    gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels.
-    gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time and apex-return kernels.
-    gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels.
-    geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels.
-    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels.
-    iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time and apex-return kernels.
-    exact: Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and apex-return kernels.
-    flight_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map its stance and apex-return Jacobians.
-    geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type0_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type1_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type2_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type2: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type3_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type3: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type4_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians.
-    gravity_type5_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians.
-    geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians.
-    iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
-    iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a map its stance and apex-return Jacobians.
-    exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map its stance and apex-return Jacobians.
-    exact_compression: Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown -> bottom.
-    exact_decompression: Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom -> liftoff.
-    iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom.
-    iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown -> bottom.
-    iterative_decompression: Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff.
-    iterative_report_decompression: Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom -> liftoff.
+    geyer: Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
+        kernels.
+    gravity_type0: Gravity correction type 0 (leg length l0) (report section 4.1): stance, state-at-time and
+        apex-return kernels.
+    gravity_type1: Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance,
+        state-at-time and apex-return kernels.
+    gravity_type2: Gravity correction type 2 (average leg length) (report section 4.3): stance, state-at-time
+        and apex-return kernels.
+    gravity_type3: Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance,
+        state-at-time and apex-return kernels.
+    gravity_type4: Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance,
+        state-at-time and apex-return kernels.
+    gravity_type5: Gravity correction type 5 (time-varying momentum) (report section 4.6): stance,
+        state-at-time and apex-return kernels.
+    geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance,
+        state-at-time and apex-return kernels.
+    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance,
+        state-at-time and apex-return kernels.
+    iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance,
+        state-at-time and apex-return kernels.
+    exact: Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and
+        apex-return kernels.
+    flight_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP
+        kernels, and for a map its stance and apex-return Jacobians.
+    geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels,
+        and for a map its stance and apex-return Jacobians.
+    gravity_type0_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_type1_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type1: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_type2_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type2: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_type3_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type3: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_type4_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians.
+    gravity_type5_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians.
+    geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP
+        kernels, and for a map its stance and apex-return Jacobians.
+    iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
+    iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP
+        kernels, and for a map its stance and apex-return Jacobians.
+    exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels,
+        and for a map its stance and apex-return Jacobians.
+    exact_compression: Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section
+        2.2): touchdown -> bottom.
+    exact_decompression: Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section
+        2.2): bottom -> liftoff.
+    iterative_compression: Iterative compression half (touchdown to bottom, k_c; converging form) (report
+        section 5.2.1): touchdown -> bottom.
+    iterative_report_compression: Iterative compression half as printed (touchdown to bottom, k_c) (report
+        section 5.2.1): touchdown -> bottom.
+    iterative_decompression: Iterative decompression half (bottom to liftoff, k_d; converging form) (report
+        section 5.2.2): bottom -> liftoff.
+    iterative_report_decompression: Iterative decompression half as printed (bottom to liftoff, k_d) (report
+        section 5.2.2): bottom -> liftoff.
     maps_index: the index of every declared map (plain data).
     status: status codes shared by all kernels and the exact simulator.
 """

@@ -4,6 +4,7 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
 #   runtime/exact/compiled.py sha256:595a53190fbf913f
@@ -12,7 +13,8 @@
 #   runtime/exact/kernels.py sha256:2bd1ad174519234a
 #   runtime/exact/reference.py sha256:92508c65a86c4289
 # ----------------------------------------------------------------------------------------------
-"""Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown -> bottom."""
+"""Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
+bottom."""
 
 import math
 
@@ -20,23 +22,12 @@ import numpy as np
 from numba import njit, prange
 from slipmaps.runtime.exact.kernels import compression
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
@@ -68,25 +59,32 @@ def exact_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_l
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(rtol) and math.isfinite(atol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((rtol >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(rtol) and math.isfinite(atol)
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((rtol >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # runtime/exact/kernels.py
     _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol)
     if _c0[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, _c0[5])
+        return _NAN5 + (_c0[5],)
     t_half = _c0[0]
     end_q_r = _c0[1]
     end_q_rd = _c0[2]
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def exact_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol, out, status):
+def exact_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol, out,
+        status):
     """Parallel batch form of :func:`exact_compression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
@@ -95,7 +93,8 @@ def exact_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = exact_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, q_r_lo, rtol, atol)
+        res = (exact_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, q_r_lo,
+            rtol, atol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

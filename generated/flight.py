@@ -4,6 +4,7 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """Exact ballistic flight between apex, touchdown and liftoff (report sections 2.1, 2.2.2)."""
 
@@ -12,23 +13,14 @@ import math
 import numpy as np
 from numba import njit, prange
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
+    STATUS_LIFTOFF_BACKWARD, STATUS_NUMERICAL_RANGE)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN5 = (NAN,) * 5
+_NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
@@ -43,7 +35,8 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         q_r_td: touchdown leg length [m], > 0
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
 
     Returns a tuple:
         touchdown_q_r: leg length [m]
@@ -56,12 +49,14 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
     """
     # Total ops: 28
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+        return _NAN6 + (STATUS_APEX_TOO_LOW,)
     # touchdown state from the derived Cartesian -> polar map
     _x0 = math.sin(q_th_td)
     _x1 = math.cos(q_th_td)
@@ -77,8 +72,9 @@ def apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground):
     t_flight = _x6
     foot_x = _x0*q_r_td + _x6*b_xd_apex
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th) and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(touchdown_q_r) and math.isfinite(touchdown_q_rd) and math.isfinite(touchdown_q_th)
+            and math.isfinite(touchdown_q_thd) and math.isfinite(t_flight) and math.isfinite(foot_x)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, STATUS_OK)
 
 
@@ -106,8 +102,10 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     """
     # Total ops: 20
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0)) and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
+            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -119,10 +117,10 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     b_yd = -_x1*q_thd + _x2*q_rd
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+        return _NAN5 + (STATUS_LIFTOFF_DOWNWARD,)
     # the body must not move against the step's direction (a hop in place: either way)
     if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+        return _NAN5 + (STATUS_LIFTOFF_BACKWARD,)
     # apex where b_yd(t) = 0
     _x4 = (1.0/g_f)
     _x5 = _x4*b_yd
@@ -133,6 +131,7 @@ def liftoff_to_apex(q_r, q_rd, q_th, q_thd, g_f, direction):
     dx_flight = _x6
     apex_b_x = _x6 + b_x
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight) and math.isfinite(dx_flight) and math.isfinite(apex_b_x)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(apex_b_y) and math.isfinite(apex_b_xd) and math.isfinite(t_flight)
+            and math.isfinite(dx_flight) and math.isfinite(apex_b_x)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, STATUS_OK)

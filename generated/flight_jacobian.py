@@ -4,41 +4,37 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
+its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATUS_LIFTOFF_DOWNWARD,
+    STATUS_LIFTOFF_BACKWARD)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN20 = (NAN,) * 20
+_NAN25 = (NAN,) * 25
+_NAN30 = (NAN,) * 30
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan):
-    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan).
+def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground):
+    """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives
+    of its outputs with respect to b_y_apex, b_xd_apex, q_th_td, ground.
 
     Report equations: sec2.1-touchdown, sec2.2.2.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -46,11 +42,8 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
         q_r_td: touchdown leg length [m], > 0
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
 
     Returns a tuple:
         touchdown_q_r: leg length [m]
@@ -59,63 +52,93 @@ def apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         touchdown_q_thd: leg angle rate [rad/s]
         t_flight: time from the apex to touchdown [s]
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
-        touchdown_q_r__tan: derivative of touchdown_q_r along the direction
-        touchdown_q_rd__tan: derivative of touchdown_q_rd along the direction
-        touchdown_q_th__tan: derivative of touchdown_q_th along the direction
-        touchdown_q_thd__tan: derivative of touchdown_q_thd along the direction
-        t_flight__tan: derivative of t_flight along the direction
-        foot_x__tan: derivative of foot_x along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 59
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
+        return _NAN30 + (STATUS_INVALID_INPUT,)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
-    drop__tan = b_y_apex__tan - ground__tan + q_r_td*q_th_td__tan*math.sin(q_th_td)
+    d_drop__q_th_td = q_r_td*math.sin(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_APEX_TOO_LOW)
+        return _NAN30 + (STATUS_APEX_TOO_LOW,)
     # touchdown state from the derived Cartesian -> polar map
+    touchdown_q_r = q_r_td
     _x0 = math.sin(q_th_td)
     _x1 = math.cos(q_th_td)
     _x2 = math.sqrt(g_f)
     _x3 = math.sqrt(2.0)
     _x4 = math.sqrt(drop)
     _x5 = _x3*_x4
-    _x6 = _x0*b_xd_apex + _x1*_x2*_x5
-    _x7 = (0.5)*_x3*drop__tan/_x4
-    _x8 = _x2*_x7
-    _x9 = _x0*_x2*_x3*_x4 - _x1*b_xd_apex
-    _x10 = (1.0/q_r_td)
-    _x11 = (1.0/_x2)
-    _x12 = _x11*_x5
-    _x13 = _x11*_x7
-    touchdown_q_r = q_r_td
-    touchdown_q_rd = -_x6
-    touchdown_q_rd__tan = -_x0*b_xd_apex__tan - _x1*_x8 + _x9*q_th_td__tan
+    _x6 = _x2*_x5
+    _x7 = _x0*b_xd_apex + _x1*_x6
+    touchdown_q_rd = -_x7
+    _x8 = (0.5)*_x3/_x4
+    _x9 = _x2*_x8
+    _pd__0 = -_x1*_x9
+    d_touchdown_q_rd__b_xd_apex = -_x0
+    _x10 = _x1*b_xd_apex
+    d_touchdown_q_rd__q_th_td = _pd__0*d_drop__q_th_td + _x0*_x6 - _x10
     touchdown_q_th = q_th_td
-    touchdown_q_th__tan = q_th_td__tan
-    touchdown_q_thd = _x10*_x9
-    touchdown_q_thd__tan = _x0*_x10*_x8 - _x1*_x10*b_xd_apex__tan + _x10*_x6*q_th_td__tan
-    t_flight = _x12
-    t_flight__tan = _x13
-    foot_x = _x0*q_r_td + _x12*b_xd_apex
-    foot_x__tan = _x1*q_r_td*q_th_td__tan + _x12*b_xd_apex__tan + _x13*b_xd_apex
-    # derivatives that are identically zero
-    touchdown_q_r__tan = 0.0
+    _x11 = (1.0/q_r_td)
+    touchdown_q_thd = _x11*(_x0*_x2*_x3*_x4 - _x10)
+    _pd__1 = _x0*_x11*_x9
+    d_touchdown_q_thd__b_xd_apex = -_x1*_x11
+    d_touchdown_q_thd__q_th_td = _pd__1*d_drop__q_th_td + _x11*_x7
+    _x12 = (1.0/_x2)
+    _x13 = _x12*_x5
+    t_flight = _x13
+    _x14 = _x12*_x8
+    _pd__2 = _x14
+    d_t_flight__q_th_td = _pd__2*d_drop__q_th_td
+    foot_x = _x0*q_r_td + _x13*b_xd_apex
+    _pd__3 = _x14*b_xd_apex
+    d_foot_x__b_xd_apex = _x13
+    d_foot_x__q_th_td = _pd__3*d_drop__q_th_td + _x1*q_r_td
+    # derivatives of the outputs
+    d_touchdown_q_r__b_y_apex = 0.0
+    d_touchdown_q_r__b_xd_apex = 0.0
+    d_touchdown_q_r__q_th_td = 0.0
+    d_touchdown_q_r__ground = 0.0
+    d_touchdown_q_rd__b_y_apex = _pd__0
+    d_touchdown_q_rd__ground = -_pd__0
+    d_touchdown_q_th__b_y_apex = 0.0
+    d_touchdown_q_th__b_xd_apex = 0.0
+    d_touchdown_q_th__q_th_td = 1.0
+    d_touchdown_q_th__ground = 0.0
+    d_touchdown_q_thd__b_y_apex = _pd__1
+    d_touchdown_q_thd__ground = -_pd__1
+    d_t_flight__b_y_apex = _pd__2
+    d_t_flight__b_xd_apex = 0.0
+    d_t_flight__ground = -_pd__2
+    d_foot_x__b_y_apex = _pd__3
+    d_foot_x__ground = -_pd__3
     # (internal helper: its callers check that their outputs are finite)
-    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, touchdown_q_r__tan, touchdown_q_rd__tan, touchdown_q_th__tan, touchdown_q_thd__tan, t_flight__tan, foot_x__tan, STATUS_OK)
+    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,
+        d_touchdown_q_r__b_y_apex, d_touchdown_q_r__b_xd_apex, d_touchdown_q_r__q_th_td,
+        d_touchdown_q_r__ground, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex,
+        d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, d_touchdown_q_th__b_y_apex,
+        d_touchdown_q_th__b_xd_apex, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
+        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
+        d_touchdown_q_thd__ground, d_t_flight__b_y_apex, d_t_flight__b_xd_apex, d_t_flight__q_th_td,
+        d_t_flight__ground, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
+        STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, q_r__tan, q_rd__tan, q_th__tan, q_thd__tan):
-    """Ballistic ascent from a polar liftoff state to the next apex, with the derivative of every output along the direction (q_r__tan, q_rd__tan, q_th__tan, q_thd__tan).
+def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
+    """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with
+    respect to q_rd, q_th, q_thd.
 
     Report equations: sec2.1-apex, sec2.2.2.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r: liftoff leg length q_r [m], > 0
@@ -124,10 +147,6 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
         q_thd: leg angle rate q_thd [rad/s]
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
-        q_r__tan: direction: its component along q_r
-        q_rd__tan: direction: its component along q_rd
-        q_th__tan: direction: its component along q_th
-        q_thd__tan: direction: its component along q_thd
 
     Returns a tuple:
         apex_b_y: next apex height above the ground [m]
@@ -135,54 +154,188 @@ def liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
         t_flight: time from liftoff to the apex [s]
         dx_flight: horizontal distance travelled from liftoff to the apex [m]
         apex_b_x: horizontal position of the next apex relative to the toe [m]
-        apex_b_y__tan: derivative of apex_b_y along the direction
-        apex_b_xd__tan: derivative of apex_b_xd along the direction
-        t_flight__tan: derivative of t_flight along the direction
-        dx_flight__tan: derivative of dx_flight along the direction
-        apex_b_x__tan: derivative of apex_b_x along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_rd, q_th, q_thd
+            (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 50
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd) and math.isfinite(g_f) and math.isfinite(direction) and math.isfinite(q_r__tan) and math.isfinite(q_rd__tan) and math.isfinite(q_th__tan) and math.isfinite(q_thd__tan) and ((q_r > 0.0)) and ((g_f > 0.0)) and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
+            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+        return _NAN20 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
-    _x2 = _x0*q_r__tan
+    _x2 = -_x1
+    b_x = _x2
     _x3 = math.cos(q_th)
     _x4 = _x3*q_r
-    _x5 = -_x0*q_rd - _x4*q_thd
-    _x6 = _x1*q_thd - _x3*q_rd
-    b_x = -_x1
-    b_x__tan = -_x2 - _x4*q_th__tan
-    b_xd = _x5
-    b_xd__tan = -_x0*q_rd__tan - _x3*q_r__tan*q_thd - _x4*q_thd__tan + _x6*q_th__tan
+    _x5 = -_x4
+    d_b_x__q_th = _x5
+    _x6 = -_x0*q_rd - _x4*q_thd
+    b_xd = _x6
+    d_b_xd__q_rd = -_x0
+    _x7 = _x1*q_thd - _x3*q_rd
+    d_b_xd__q_th = _x7
+    d_b_xd__q_thd = _x5
     b_y = _x4
-    b_y__tan = -_x1*q_th__tan + _x3*q_r__tan
-    b_yd = -_x6
-    b_yd__tan = -_x1*q_thd__tan - _x2*q_thd + _x3*q_rd__tan + _x5*q_th__tan
+    d_b_y__q_th = _x2
+    b_yd = -_x7
+    d_b_yd__q_rd = _x3
+    d_b_yd__q_th = _x6
+    d_b_yd__q_thd = _x2
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_DOWNWARD)
+        return _NAN20 + (STATUS_LIFTOFF_DOWNWARD,)
     # the body must not move against the step's direction (a hop in place: either way)
     if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_LIFTOFF_BACKWARD)
+        return _NAN20 + (STATUS_LIFTOFF_BACKWARD,)
     # apex where b_yd(t) = 0
-    _x7 = (1.0/g_f)
-    _x8 = _x7*b_yd
-    _x9 = _x7*b_yd__tan
-    _x10 = _x8*b_xd
-    _x11 = _x8*b_xd__tan + _x9*b_xd
-    apex_b_y = (0.5)*_x7*b_yd**2 + b_y
-    apex_b_y__tan = _x8*b_yd__tan + b_y__tan
+    _x8 = (1.0/g_f)
+    apex_b_y = (0.5)*_x8*b_yd**2 + b_y
+    _x9 = _x8*b_yd
+    _pd__0 = _x9
+    d_apex_b_y__q_rd = _pd__0*d_b_yd__q_rd
+    d_apex_b_y__q_th = _pd__0*d_b_yd__q_th + d_b_y__q_th
+    d_apex_b_y__q_thd = _pd__0*d_b_yd__q_thd
     apex_b_xd = b_xd
-    apex_b_xd__tan = b_xd__tan
-    t_flight = _x8
-    t_flight__tan = _x9
+    t_flight = _x9
+    _pd__1 = _x8
+    d_t_flight__q_rd = _pd__1*d_b_yd__q_rd
+    d_t_flight__q_th = _pd__1*d_b_yd__q_th
+    d_t_flight__q_thd = _pd__1*d_b_yd__q_thd
+    _x10 = _x9*b_xd
     dx_flight = _x10
-    dx_flight__tan = _x11
+    _pd__2 = _x9
+    _x11 = _x8*b_xd
+    _pd__3 = _x11
+    d_dx_flight__q_rd = _pd__2*d_b_xd__q_rd + _pd__3*d_b_yd__q_rd
+    d_dx_flight__q_th = _pd__2*d_b_xd__q_th + _pd__3*d_b_yd__q_th
+    d_dx_flight__q_thd = _pd__2*d_b_xd__q_thd + _pd__3*d_b_yd__q_thd
     apex_b_x = _x10 + b_x
-    apex_b_x__tan = _x11 + b_x__tan
+    _pd__4 = _x9
+    _pd__5 = _x11
+    d_apex_b_x__q_rd = _pd__4*d_b_xd__q_rd + _pd__5*d_b_yd__q_rd
+    d_apex_b_x__q_th = _pd__4*d_b_xd__q_th + _pd__5*d_b_yd__q_th + d_b_x__q_th
+    d_apex_b_x__q_thd = _pd__4*d_b_xd__q_thd + _pd__5*d_b_yd__q_thd
+    # derivatives of the outputs
+    d_apex_b_xd__q_rd = d_b_xd__q_rd
+    d_apex_b_xd__q_th = d_b_xd__q_th
+    d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, apex_b_y__tan, apex_b_xd__tan, t_flight__tan, dx_flight__tan, apex_b_x__tan, STATUS_OK)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th,
+        d_apex_b_y__q_thd, d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd,
+        d_t_flight__q_th, d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
+def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
+    """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with
+    respect to q_r, q_rd, q_th, q_thd.
+
+    Report equations: sec2.1-apex, sec2.2.2.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments:
+        q_r: liftoff leg length q_r [m], > 0
+        q_rd: leg length rate q_rd [m/s]
+        q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
+        q_thd: leg angle rate q_thd [rad/s]
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
+
+    Returns a tuple:
+        apex_b_y: next apex height above the ground [m]
+        apex_b_xd: next apex horizontal speed [m/s]
+        t_flight: time from liftoff to the apex [s]
+        dx_flight: horizontal distance travelled from liftoff to the apex [m]
+        apex_b_x: horizontal position of the next apex relative to the toe [m]
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_rd, q_th,
+            q_thd (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 64
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
+            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
+        return _NAN25 + (STATUS_INVALID_INPUT,)
+    # Cartesian liftoff state relative to the toe
+    _x0 = math.sin(q_th)
+    _x1 = _x0*q_r
+    _x2 = -_x1
+    b_x = _x2
+    _x3 = -_x0
+    d_b_x__q_r = _x3
+    _x4 = math.cos(q_th)
+    _x5 = _x4*q_r
+    _x6 = -_x5
+    d_b_x__q_th = _x6
+    _x7 = -_x0*q_rd - _x5*q_thd
+    b_xd = _x7
+    d_b_xd__q_r = -_x4*q_thd
+    d_b_xd__q_rd = _x3
+    _x8 = _x1*q_thd - _x4*q_rd
+    d_b_xd__q_th = _x8
+    d_b_xd__q_thd = _x6
+    b_y = _x5
+    d_b_y__q_r = _x4
+    d_b_y__q_th = _x2
+    b_yd = -_x8
+    d_b_yd__q_r = -_x0*q_thd
+    d_b_yd__q_rd = _x4
+    d_b_yd__q_th = _x7
+    d_b_yd__q_thd = _x2
+    # liftoff requires an upward velocity
+    if not ((b_yd > 0.0)):
+        return _NAN25 + (STATUS_LIFTOFF_DOWNWARD,)
+    # the body must not move against the step's direction (a hop in place: either way)
+    if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
+        return _NAN25 + (STATUS_LIFTOFF_BACKWARD,)
+    # apex where b_yd(t) = 0
+    _x9 = (1.0/g_f)
+    apex_b_y = (0.5)*_x9*b_yd**2 + b_y
+    _x10 = _x9*b_yd
+    _pd__0 = _x10
+    d_apex_b_y__q_r = _pd__0*d_b_yd__q_r + d_b_y__q_r
+    d_apex_b_y__q_rd = _pd__0*d_b_yd__q_rd
+    d_apex_b_y__q_th = _pd__0*d_b_yd__q_th + d_b_y__q_th
+    d_apex_b_y__q_thd = _pd__0*d_b_yd__q_thd
+    apex_b_xd = b_xd
+    t_flight = _x10
+    _pd__1 = _x9
+    d_t_flight__q_r = _pd__1*d_b_yd__q_r
+    d_t_flight__q_rd = _pd__1*d_b_yd__q_rd
+    d_t_flight__q_th = _pd__1*d_b_yd__q_th
+    d_t_flight__q_thd = _pd__1*d_b_yd__q_thd
+    _x11 = _x10*b_xd
+    dx_flight = _x11
+    _pd__2 = _x10
+    _x12 = _x9*b_xd
+    _pd__3 = _x12
+    d_dx_flight__q_r = _pd__2*d_b_xd__q_r + _pd__3*d_b_yd__q_r
+    d_dx_flight__q_rd = _pd__2*d_b_xd__q_rd + _pd__3*d_b_yd__q_rd
+    d_dx_flight__q_th = _pd__2*d_b_xd__q_th + _pd__3*d_b_yd__q_th
+    d_dx_flight__q_thd = _pd__2*d_b_xd__q_thd + _pd__3*d_b_yd__q_thd
+    apex_b_x = _x11 + b_x
+    _pd__4 = _x10
+    _pd__5 = _x12
+    d_apex_b_x__q_r = _pd__4*d_b_xd__q_r + _pd__5*d_b_yd__q_r + d_b_x__q_r
+    d_apex_b_x__q_rd = _pd__4*d_b_xd__q_rd + _pd__5*d_b_yd__q_rd
+    d_apex_b_x__q_th = _pd__4*d_b_xd__q_th + _pd__5*d_b_yd__q_th + d_b_x__q_th
+    d_apex_b_x__q_thd = _pd__4*d_b_xd__q_thd + _pd__5*d_b_yd__q_thd
+    # derivatives of the outputs
+    d_apex_b_xd__q_r = d_b_xd__q_r
+    d_apex_b_xd__q_rd = d_b_xd__q_rd
+    d_apex_b_xd__q_th = d_b_xd__q_th
+    d_apex_b_xd__q_thd = d_b_xd__q_thd
+    # (internal helper: its callers check that their outputs are finite)
+    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r, d_apex_b_y__q_rd,
+        d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd, d_apex_b_xd__q_th,
+        d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th, d_t_flight__q_thd,
+        d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_r,
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd, STATUS_OK)

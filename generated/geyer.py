@@ -4,10 +4,12 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:4d6fab274bba303b
+#   flight.py sha256:8b20bd5230ccfe19
 # ----------------------------------------------------------------------------------------------
-"""Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return kernels."""
+"""Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
+kernels."""
 
 import math
 
@@ -15,23 +17,18 @@ import numpy as np
 from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_NO_LIFTOFF, STATUS_FALL,
+    STATUS_NUMERICAL_RANGE)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN2 = (NAN,) * 2
+_NAN4 = (NAN,) * 4
+_NAN6 = (NAN,) * 6
+_NAN10 = (NAN,) * 10
+_NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
@@ -67,7 +64,7 @@ def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
     rho_d_td = _x0*q_rd_td
     # stance starts compressing
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
     _x1 = omega**2
     _x2 = 2.0*g_s/l0
@@ -85,17 +82,17 @@ def geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
     b2 = (0.25)*_x5**2*(-4.0*lam*nu + mu**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN6 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x6 = math.sqrt(b2)
     b = _x6
     s_td = (-a - 1.0 + q_r_td/l0)/_x6
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN6 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN6 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     # (internal helper: its callers check that their outputs are finite)
@@ -124,7 +121,7 @@ def geyer_liftoff_phase(a, b, l0, q_r_lo):
     s_lo = (-a - 1.0 + q_r_lo/l0)/b
     # eq (14) needs |s_lo| <= 1
     if not ((abs(s_lo) <= 1.0)):
-        return (NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN2 + (STATUS_NO_LIFTOFF,)
     # eq (14), n = 0: extending root
     phase_lo = math.asin(s_lo) + 2.0*math.pi
     # (internal helper: its callers check that their outputs are finite)
@@ -166,7 +163,8 @@ def geyer_state(phase, phase_td, q_th_td, omega, omega0_hat, a, b, l0):
     _x6 = 2.0*omega
     q_r = _x0*l0
     q_rd = _x1*b*l0*omega0_hat
-    q_th = _x3*phase - _x3*phase_td - _x6*(-_x1*_x5 + _x4*phase) + _x6*(_x4*phase_td - _x5*math.cos(phase_td)) + q_th_td
+    q_th = (_x3*phase - _x3*phase_td - _x6*(-_x1*_x5 + _x4*phase) + _x6*(_x4*phase_td
+        - _x5*math.cos(phase_td)) + q_th_td)
     q_thd = omega/_x0**2
     return (q_r, q_rd, q_th, q_thd)
 
@@ -207,12 +205,16 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     """
     # Total ops: 54
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN10 + (_c0[6],)
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -221,7 +223,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     s_td = _c0[5]
     _c1 = geyer_liftoff_phase(a, b, l0, q_r_lo)
     if _c1[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+        return _NAN10 + (_c1[2],)
     phase_lo = _c1[0]
     s_lo = _c1[1]
     # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -247,11 +249,15 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     liftoff_q_thd = omega/(_x1 + b*s_lo)**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -261,7 +267,8 @@ def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
         res = geyer_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
@@ -305,12 +312,16 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
     """
     # Total ops: 2
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
+            and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN4 + (_c0[6],)
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -326,7 +337,7 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
     q_thd = _c1[3]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
@@ -356,9 +367,11 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -384,14 +397,19 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN12 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -401,7 +419,7 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     # stance: Geyer et al.'s approximate stance map
     _c1 = geyer_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
     if _c1[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
+        return _NAN12 + (_c1[10],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -410,7 +428,7 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
+        return _NAN12 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -419,22 +437,29 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
+def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out,
+        status):
     """Parallel batch form of :func:`geyer_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
     """
     for i in prange(out.shape[0]):
-        res = geyer_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo)
+        res = (geyer_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td,
+            q_r_lo))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

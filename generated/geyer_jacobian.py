@@ -4,44 +4,42 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:93735a9cd1eada3e
+#   flight_jacobian.py sha256:2e171e0cb588eb80
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
+its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
+
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_NO_LIFTOFF, STATUS_FALL,
+    STATUS_NUMERICAL_RANGE)
 
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN6 = (NAN,) * 6
+_NAN30 = (NAN,) * 30
+_NAN60 = (NAN,) * 60
+_NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, q_thd_td__tan, k__tan):
-    """Geyer et al.'s radial solution (11) from a touchdown state: omega, omega0_hat, a, b, phase, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_thd_td__tan, k__tan).
+def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
+    """Geyer et al.'s radial solution (11) from a touchdown state: omega, omega0_hat, a, b, phase, and the
+    derivatives of its outputs with respect to q_r_td, q_rd_td, q_thd_td, k.
 
     Report equations: 7, 8, 9, 10, 11, 12.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -51,10 +49,6 @@ def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k__tan: direction: its component along k
 
     Returns a tuple:
         omega: omega = p_th / (m l0^2), eq (7) [rad/s]
@@ -63,31 +57,28 @@ def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         b: amplitude of rho(t) in (11)
         phase_td: touchdown phase omega0_hat t_td, eq (12) [rad]
         s_td: sin(phase_td) = (q_r_td / l0 - 1 - a) / b
-        omega__tan: derivative of omega along the direction
-        omega0_hat__tan: derivative of omega0_hat along the direction
-        a__tan: derivative of a along the direction
-        b__tan: derivative of b along the direction
-        phase_td__tan: derivative of phase_td along the direction
-        s_td__tan: derivative of s_td along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 130
+    # Total ops: 159
     # eq (7) at touchdown: omega0^2 = k/m, omega = p_th/(m l0^2), rho and its rate
-    _x3 = (1.0/l0)
     _x0 = (1.0/m)
+    omega0_sq = _x0*k
+    d_omega0_sq__k = _x0
+    _x3 = (1.0/l0)
     _x1 = _x3**2
     _x2 = _x1*q_r_td**2
-    omega0_sq = _x0*k
-    omega0_sq__tan = _x0*k__tan
     omega = _x2*q_thd_td
-    omega__tan = 2.0*_x1*q_r_td*q_r_td__tan*q_thd_td + _x2*q_thd_td__tan
+    d_omega__q_r_td = 2.0*_x1*q_r_td*q_thd_td
+    d_omega__q_thd_td = _x2
     rho_td = _x3*q_r_td - 1.0
-    rho_td__tan = _x3*q_r_td__tan
+    d_rho_td__q_r_td = _x3
     rho_d_td = _x3*q_rd_td
-    rho_d_td__tan = _x3*q_rd_td__tan
+    d_rho_d_td__q_rd_td = _x3
     # stance starts compressing
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN30 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
     _x4 = omega**2
     _x5 = 2.0*g_s/l0
@@ -95,77 +86,119 @@ def geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     _x7 = 3.0*_x4 + omega0_sq
     _x8 = -2.0*_x4 + _x5
     epsilon = _x4 + _x5 + _x6*_x7 + _x8*rho_td + rho_d_td**2
-    epsilon__tan = _x6*omega0_sq__tan + omega__tan*(6.0*_x6*omega - 4.0*omega*rho_td + 2.0*omega) + 2.0*rho_d_td*rho_d_td__tan + rho_td__tan*(2.0*_x7*rho_td + _x8)
+    _pd__0 = 6.0*_x6*omega - 4.0*omega*rho_td + 2.0*omega
+    d_epsilon__q_r_td = _pd__0*d_omega__q_r_td + d_rho_td__q_r_td*(2.0*_x7*rho_td + _x8)
+    d_epsilon__q_rd_td = 2.0*d_rho_d_td__q_rd_td*rho_d_td
+    d_epsilon__q_thd_td = _pd__0*d_omega__q_thd_td
+    d_epsilon__k = _x6*d_omega0_sq__k
     # eq (9): rho_d^2 = lambda rho^2 + mu rho + nu
     _x9 = omega**2
-    _x10 = omega*omega__tan
-    _x11 = 2.0*g_s/l0
     lam = -3.0*_x9 - omega0_sq
-    lam__tan = -6.0*_x10 - omega0_sq__tan
+    _x10 = 6.0*omega
+    d_lam__q_r_td = -_x10*d_omega__q_r_td
+    d_lam__q_thd_td = -_x10*d_omega__q_thd_td
+    _x11 = 2.0*g_s/l0
     mu = -_x11 + 2.0*_x9
-    mu__tan = 4.0*_x10
+    _x12 = 4.0*omega
+    d_mu__q_r_td = _x12*d_omega__q_r_td
+    d_mu__q_thd_td = _x12*d_omega__q_thd_td
     nu = -_x11 - _x9 + epsilon
-    nu__tan = -2.0*_x10 + epsilon__tan
+    _x13 = 2.0*omega
+    d_nu__q_r_td = -_x13*d_omega__q_r_td + d_epsilon__q_r_td
+    d_nu__q_thd_td = -_x13*d_omega__q_thd_td + d_epsilon__q_thd_td
     # eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)
-    _x13 = (1.0/lam)
-    _x12 = math.sqrt(-lam)
-    _x14 = (0.5)*_x13
-    _x15 = _x13**2
-    _x16 = -4.0*lam*nu + mu**2
-    omega0_hat = _x12
-    omega0_hat__tan = _x12*_x14*lam__tan
-    a = -_x14*mu
-    a__tan = -_x14*mu__tan + (0.5)*_x15*lam__tan*mu
-    b2 = (0.25)*_x15*_x16
-    b2__tan = -_x13*nu__tan + (0.5)*_x15*mu*mu__tan + lam__tan*(-0.5*_x13**3*_x16 - _x15*nu)
+    _x14 = math.sqrt(-lam)
+    omega0_hat = _x14
+    _x15 = (1.0/lam)
+    _x16 = (0.5)*_x15
+    _pd__1 = _x14*_x16
+    d_omega0_hat__q_r_td = _pd__1*d_lam__q_r_td
+    d_omega0_hat__q_thd_td = _pd__1*d_lam__q_thd_td
+    d_omega0_hat__k = -_pd__1*d_omega0_sq__k
+    a = -_x16*mu
+    _x17 = _x15**2
+    _x18 = (0.5)*_x17*mu
+    _pd__2 = _x18
+    _pd__3 = -_x16
+    d_a__q_r_td = _pd__2*d_lam__q_r_td + _pd__3*d_mu__q_r_td
+    d_a__q_thd_td = _pd__2*d_lam__q_thd_td + _pd__3*d_mu__q_thd_td
+    d_a__k = -_pd__2*d_omega0_sq__k
+    _x19 = -4.0*lam*nu + mu**2
+    b2 = (0.25)*_x17*_x19
+    _pd__4 = -0.5*_x15**3*_x19 - _x17*nu
+    _pd__5 = _x18
+    _pd__6 = -_x15
+    d_b2__q_r_td = _pd__4*d_lam__q_r_td + _pd__5*d_mu__q_r_td + _pd__6*d_nu__q_r_td
+    d_b2__q_rd_td = _pd__6*d_epsilon__q_rd_td
+    d_b2__q_thd_td = _pd__4*d_lam__q_thd_td + _pd__5*d_mu__q_thd_td + _pd__6*d_nu__q_thd_td
+    d_b2__k = -_pd__4*d_omega0_sq__k + _pd__6*d_epsilon__k
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN30 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
-    _x17 = math.sqrt(b2)
-    _x18 = (1.0/_x17)
-    _x19 = (0.5)*b2__tan
-    _x20 = (1.0/l0)
-    _x21 = _x20*q_r_td - a - 1.0
-    b = _x17
-    b__tan = _x18*_x19
-    s_td = _x18*_x21
-    s_td__tan = _x18*_x20*q_r_td__tan - _x18*a__tan - _x19*_x21/b2**(1.5)
+    _x20 = math.sqrt(b2)
+    b = _x20
+    _x21 = (1.0/_x20)
+    _pd__7 = (0.5)*_x21
+    d_b__q_r_td = _pd__7*d_b2__q_r_td
+    d_b__q_rd_td = _pd__7*d_b2__q_rd_td
+    d_b__q_thd_td = _pd__7*d_b2__q_thd_td
+    d_b__k = _pd__7*d_b2__k
+    _x22 = (1.0/l0)
+    _x23 = _x22*q_r_td - a - 1.0
+    s_td = _x21*_x23
+    _pd__8 = -_x21
+    _pd__9 = -_x23/b2
+    d_s_td__q_r_td = _pd__8*d_a__q_r_td + _pd__9*d_b__q_r_td + _x21*_x22
+    d_s_td__q_rd_td = _pd__9*d_b__q_rd_td
+    d_s_td__q_thd_td = _pd__8*d_a__q_thd_td + _pd__9*d_b__q_thd_td
+    d_s_td__k = _pd__8*d_a__k + _pd__9*d_b__k
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN30 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN30 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
-    phase_td__tan = -s_td__tan/math.sqrt(1.0 - s_td**2)
+    _pd__10 = -1.0/math.sqrt(1.0 - s_td**2)
+    d_phase_td__q_r_td = _pd__10*d_s_td__q_r_td
+    d_phase_td__q_rd_td = _pd__10*d_s_td__q_rd_td
+    d_phase_td__q_thd_td = _pd__10*d_s_td__q_thd_td
+    d_phase_td__k = _pd__10*d_s_td__k
+    # derivatives of the outputs
+    d_omega__q_rd_td = 0.0
+    d_omega__k = 0.0
+    d_omega0_hat__q_rd_td = 0.0
+    d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (omega, omega0_hat, a, b, phase_td, s_td, omega__tan, omega0_hat__tan, a__tan, b__tan, phase_td__tan, s_td__tan, STATUS_OK)
+    return (omega, omega0_hat, a, b, phase_td, s_td, d_omega__q_r_td, d_omega__q_rd_td, d_omega__q_thd_td,
+        d_omega__k, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td, d_omega0_hat__q_thd_td, d_omega0_hat__k,
+        d_a__q_r_td, d_a__q_rd_td, d_a__q_thd_td, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__q_thd_td, d_b__k,
+        d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__q_thd_td, d_phase_td__k, d_s_td__q_r_td,
+        d_s_td__q_rd_td, d_s_td__q_thd_td, d_s_td__k, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_liftoff_phase_jvp_a_b(a, b, l0, q_r_lo, a__tan, b__tan):
-    """Geyer et al.'s liftoff phase omega0_hat t_lo, eq (14) with n = 0, with the derivative of every output along the direction (a__tan, b__tan).
+def geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo):
+    """Geyer et al.'s liftoff phase omega0_hat t_lo, eq (14) with n = 0, and the derivatives of its outputs
+    with respect to a, b.
 
     Report equations: 14.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         a: offset a of (11)
         b: amplitude b of (11)
         l0: rest leg length l0 [m], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        a__tan: direction: its component along a
-        b__tan: direction: its component along b
 
     Returns a tuple:
         phase_lo: liftoff phase omega0_hat t_lo, eq (14) [rad]
         s_lo: sin(phase_lo) = (q_r_lo / l0 - 1 - a) / b
-        phase_lo__tan: derivative of phase_lo along the direction
-        s_lo__tan: derivative of s_lo along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument a, b (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 19
@@ -173,175 +206,29 @@ def geyer_liftoff_phase_jvp_a_b(a, b, l0, q_r_lo, a__tan, b__tan):
     _x0 = (1.0/b)
     _x1 = -a - 1.0 + q_r_lo/l0
     s_lo = _x0*_x1
-    s_lo__tan = -_x0**2*_x1*b__tan - _x0*a__tan
+    d_s_lo__a = -_x0
+    d_s_lo__b = -_x0**2*_x1
     # eq (14) needs |s_lo| <= 1
     if not ((abs(s_lo) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN6 + (STATUS_NO_LIFTOFF,)
     # eq (14), n = 0: extending root
     phase_lo = math.asin(s_lo) + 2.0*math.pi
-    phase_lo__tan = s_lo__tan/math.sqrt(1.0 - s_lo**2)
+    _pd__0 = (1.0/math.sqrt(1.0 - s_lo**2))
+    d_phase_lo__a = _pd__0*d_s_lo__a
+    d_phase_lo__b = _pd__0*d_s_lo__b
     # (internal helper: its callers check that their outputs are finite)
-    return (phase_lo, s_lo, phase_lo__tan, s_lo__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan):
-    """Geyer et al.'s approximate stance map: touchdown state -> bottom and liftoff states, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan).
-
-    Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_th_td__tan: direction: its component along q_th_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k__tan: direction: its component along k
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        t_bottom__tan: derivative of t_bottom along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        bottom_q_r__tan: derivative of bottom_q_r along the direction
-        bottom_q_rd__tan: derivative of bottom_q_rd along the direction
-        bottom_q_th__tan: derivative of bottom_q_th along the direction
-        bottom_q_thd__tan: derivative of bottom_q_thd along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 177
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, q_thd_td__tan, k__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    omega = _c0[0]
-    omega0_hat = _c0[1]
-    a = _c0[2]
-    b = _c0[3]
-    phase_td = _c0[4]
-    s_td = _c0[5]
-    omega__tan = _c0[6]
-    omega0_hat__tan = _c0[7]
-    a__tan = _c0[8]
-    b__tan = _c0[9]
-    phase_td__tan = _c0[10]
-    s_td__tan = _c0[11]
-    _c1 = geyer_liftoff_phase_jvp_a_b(a, b, l0, q_r_lo, a__tan, b__tan)
-    if _c1[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-    phase_lo = _c1[0]
-    s_lo = _c1[1]
-    phase_lo__tan = _c1[2]
-    s_lo__tan = _c1[3]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x0 = (1.0/omega0_hat)
-    _x1 = -phase_td + (1.5)*math.pi
-    _x2 = _x0*phase_td__tan
-    _x3 = _x0**2
-    _x4 = _x3*omega0_hat__tan
-    _x5 = phase_lo - phase_td
-    _x6 = a + 1.0
-    _x7 = _x6 - b
-    _x45 = (1.0/_x7)
-    _x8 = b__tan*l0
-    _x9 = (1.5)*math.pi
-    _x10 = _x0*omega
-    _x11 = 3.0*math.pi
-    _x12 = _x10*_x11
-    _x13 = _x0*phase_td
-    _x14 = _x13*a
-    _x15 = math.sqrt(1.0 - s_td**2)
-    _x16 = _x15*b
-    _x17 = _x0*_x16
-    _x18 = 2.0*omega
-    _x19 = -_x13*omega + _x18*(_x14 + _x17) + q_th_td
-    _x20 = _x3*phase_td
-    _x21 = _x3*omega
-    _x22 = _x11*a
-    _x23 = -_x16*_x3 - _x20*a
-    _x24 = -_x13 + 2.0*_x14 + 2.0*_x17
-    _x25 = 2.0*_x10
-    _x26 = _x15*_x25
-    _x27 = -_x10 + _x25*a
-    _x28 = _x27*phase_td__tan + q_th_td__tan - _x25*b*s_td*s_td__tan/_x15
-    _x29 = _x45**2
-    _x30 = _x18*_x45**3
-    _x31 = math.sqrt(1.0 - s_lo**2)
-    _x32 = _x31*b
-    _x33 = _x32*l0
-    _x34 = b*s_lo
-    _x35 = _x34*s_lo__tan/_x31
-    _x36 = _x0*phase_lo
-    _x37 = _x36*a
-    _x38 = _x0*_x32
-    _x39 = _x10*phase_lo
-    _x40 = _x3*phase_lo
-    _x41 = _x34 + _x6
-    _x44 = (1.0/_x41)
-    _x42 = _x44**2
-    _x43 = _x18*_x44**3
-    t_bottom = _x0*_x1
-    t_bottom__tan = -_x1*_x4 - _x2
-    t_stance = _x0*_x5
-    t_stance__tan = _x0*phase_lo__tan - _x2 - _x4*_x5
-    bottom_q_r = _x7*l0
-    bottom_q_r__tan = -_x8 + a__tan*l0
-    bottom_q_rd = 0.0
-    bottom_q_th = _x10*_x9 - _x12*a + _x19
-    bottom_q_th__tan = _x26*b__tan + _x28 + a__tan*(-_x12 + _x13*_x18) + omega0_hat__tan*(_x18*_x23 + _x20*omega + _x21*_x22 - _x21*_x9) + omega__tan*(-_x0*_x22 + _x0*_x9 + _x24)
-    bottom_q_thd = _x29*omega
-    bottom_q_thd__tan = _x29*omega__tan - _x30*a__tan + _x30*b__tan
-    liftoff_q_r = q_r_lo
-    liftoff_q_rd = _x33*omega0_hat
-    liftoff_q_rd__tan = _x31*_x8*omega0_hat + _x33*omega0_hat__tan - _x35*l0*omega0_hat
-    liftoff_q_th = -_x18*(_x37 - _x38) + _x19 + _x39
-    liftoff_q_th__tan = -_x25*_x35 - _x27*phase_lo__tan + _x28 + a__tan*(2.0*_x0*omega*phase_td - 2.0*_x39) + b__tan*(_x25*_x31 + _x26) + omega0_hat__tan*(-_x18*(_x3*_x31*b - _x40*a) + 2.0*_x23*omega + _x3*omega*phase_td - _x40*omega) + omega__tan*(_x24 + _x36 - 2.0*_x37 + 2.0*_x38)
-    liftoff_q_thd = _x42*omega
-    liftoff_q_thd__tan = _x42*omega__tan - _x43*a__tan - _x43*b*s_lo__tan - _x43*b__tan*s_lo
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # derivatives that are identically zero
-    bottom_q_rd__tan = 0.0
-    liftoff_q_r__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
+    return (phase_lo, s_lo, d_phase_lo__a, d_phase_lo__b, d_s_lo__a, d_s_lo__b, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
 def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
-    """Geyer et al.'s approximate stance map: stance outputs and their derivatives with respect to the touchdown state and the stiffness.
+    """Geyer et al.'s approximate stance map: stance outputs and their derivatives with respect to the
+    touchdown state and the stiffness.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -365,146 +252,217 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
-        d_t_bottom__q_r_td: d t_bottom / d q_r_td
-        d_t_bottom__q_rd_td: d t_bottom / d q_rd_td
-        d_t_bottom__q_th_td: d t_bottom / d q_th_td
-        d_t_bottom__q_thd_td: d t_bottom / d q_thd_td
-        d_t_bottom__k: d t_bottom / d k
-        d_t_stance__q_r_td: d t_stance / d q_r_td
-        d_t_stance__q_rd_td: d t_stance / d q_rd_td
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__q_thd_td: d t_stance / d q_thd_td
-        d_t_stance__k: d t_stance / d k
-        d_bottom_q_r__q_r_td: d bottom_q_r / d q_r_td
-        d_bottom_q_r__q_rd_td: d bottom_q_r / d q_rd_td
-        d_bottom_q_r__q_th_td: d bottom_q_r / d q_th_td
-        d_bottom_q_r__q_thd_td: d bottom_q_r / d q_thd_td
-        d_bottom_q_r__k: d bottom_q_r / d k
-        d_bottom_q_rd__q_r_td: d bottom_q_rd / d q_r_td
-        d_bottom_q_rd__q_rd_td: d bottom_q_rd / d q_rd_td
-        d_bottom_q_rd__q_th_td: d bottom_q_rd / d q_th_td
-        d_bottom_q_rd__q_thd_td: d bottom_q_rd / d q_thd_td
-        d_bottom_q_rd__k: d bottom_q_rd / d k
-        d_bottom_q_th__q_r_td: d bottom_q_th / d q_r_td
-        d_bottom_q_th__q_rd_td: d bottom_q_th / d q_rd_td
-        d_bottom_q_th__q_th_td: d bottom_q_th / d q_th_td
-        d_bottom_q_th__q_thd_td: d bottom_q_th / d q_thd_td
-        d_bottom_q_th__k: d bottom_q_th / d k
-        d_bottom_q_thd__q_r_td: d bottom_q_thd / d q_r_td
-        d_bottom_q_thd__q_rd_td: d bottom_q_thd / d q_rd_td
-        d_bottom_q_thd__q_th_td: d bottom_q_thd / d q_th_td
-        d_bottom_q_thd__q_thd_td: d bottom_q_thd / d q_thd_td
-        d_bottom_q_thd__k: d bottom_q_thd / d k
-        d_liftoff_q_r__q_r_td: d liftoff_q_r / d q_r_td
-        d_liftoff_q_r__q_rd_td: d liftoff_q_r / d q_rd_td
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__q_thd_td: d liftoff_q_r / d q_thd_td
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__q_r_td: d liftoff_q_rd / d q_r_td
-        d_liftoff_q_rd__q_rd_td: d liftoff_q_rd / d q_rd_td
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__q_thd_td: d liftoff_q_rd / d q_thd_td
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__q_r_td: d liftoff_q_th / d q_r_td
-        d_liftoff_q_th__q_rd_td: d liftoff_q_th / d q_rd_td
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__q_thd_td: d liftoff_q_th / d q_thd_td
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__q_r_td: d liftoff_q_thd / d q_r_td
-        d_liftoff_q_thd__q_rd_td: d liftoff_q_thd / d q_rd_td
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__q_thd_td: d liftoff_q_thd / d q_thd_td
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 340
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to q_r_td
-    _c0 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    d_t_bottom__q_r_td = _c0[10]
-    d_t_stance__q_r_td = _c0[11]
-    d_bottom_q_r__q_r_td = _c0[12]
-    d_bottom_q_rd__q_r_td = _c0[13]
-    d_bottom_q_th__q_r_td = _c0[14]
-    d_bottom_q_thd__q_r_td = _c0[15]
-    d_liftoff_q_r__q_r_td = _c0[16]
-    d_liftoff_q_rd__q_r_td = _c0[17]
-    d_liftoff_q_th__q_r_td = _c0[18]
-    d_liftoff_q_thd__q_r_td = _c0[19]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    # derivatives with respect to q_rd_td
-    _c1 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    d_t_bottom__q_rd_td = _c1[10]
-    d_t_stance__q_rd_td = _c1[11]
-    d_bottom_q_r__q_rd_td = _c1[12]
-    d_bottom_q_rd__q_rd_td = _c1[13]
-    d_bottom_q_th__q_rd_td = _c1[14]
-    d_bottom_q_thd__q_rd_td = _c1[15]
-    d_liftoff_q_r__q_rd_td = _c1[16]
-    d_liftoff_q_rd__q_rd_td = _c1[17]
-    d_liftoff_q_th__q_rd_td = _c1[18]
-    d_liftoff_q_thd__q_rd_td = _c1[19]
-    # derivatives with respect to q_th_td
-    _c2 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[20])
-    d_t_bottom__q_th_td = _c2[10]
-    d_t_stance__q_th_td = _c2[11]
-    d_bottom_q_r__q_th_td = _c2[12]
-    d_bottom_q_rd__q_th_td = _c2[13]
-    d_bottom_q_th__q_th_td = _c2[14]
-    d_bottom_q_thd__q_th_td = _c2[15]
-    d_liftoff_q_r__q_th_td = _c2[16]
-    d_liftoff_q_rd__q_th_td = _c2[17]
-    d_liftoff_q_th__q_th_td = _c2[18]
-    d_liftoff_q_thd__q_th_td = _c2[19]
-    # derivatives with respect to q_thd_td
-    _c3 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[20])
-    d_t_bottom__q_thd_td = _c3[10]
-    d_t_stance__q_thd_td = _c3[11]
-    d_bottom_q_r__q_thd_td = _c3[12]
-    d_bottom_q_rd__q_thd_td = _c3[13]
-    d_bottom_q_th__q_thd_td = _c3[14]
-    d_bottom_q_thd__q_thd_td = _c3[15]
-    d_liftoff_q_r__q_thd_td = _c3[16]
-    d_liftoff_q_rd__q_thd_td = _c3[17]
-    d_liftoff_q_th__q_thd_td = _c3[18]
-    d_liftoff_q_thd__q_thd_td = _c3[19]
-    # derivatives with respect to k
-    _c4 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[20])
-    d_t_bottom__k = _c4[10]
-    d_t_stance__k = _c4[11]
-    d_bottom_q_r__k = _c4[12]
-    d_bottom_q_rd__k = _c4[13]
-    d_bottom_q_th__k = _c4[14]
-    d_bottom_q_thd__k = _c4[15]
-    d_liftoff_q_r__k = _c4[16]
-    d_liftoff_q_rd__k = _c4[17]
-    d_liftoff_q_th__k = _c4[18]
-    d_liftoff_q_thd__k = _c4[19]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, STATUS_OK)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return _NAN60 + (STATUS_INVALID_INPUT,)
+    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
+    _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
+    if _c0[30] != STATUS_OK:
+        return _NAN60 + (_c0[30],)
+    (omega, omega0_hat, a, b, phase_td, s_td, _j_omega__q_r_td, _, _j_omega__q_thd_td, _,
+        _j_omega0_hat__q_r_td, _, _j_omega0_hat__q_thd_td, _j_omega0_hat__k, _j_a__q_r_td, _, _j_a__q_thd_td,
+        _j_a__k, _j_b__q_r_td, _j_b__q_rd_td, _j_b__q_thd_td, _j_b__k, _j_phase_td__q_r_td,
+        _j_phase_td__q_rd_td, _j_phase_td__q_thd_td, _j_phase_td__k, _j_s_td__q_r_td, _j_s_td__q_rd_td,
+        _j_s_td__q_thd_td, _j_s_td__k, _) = _c0
+    _c1 = geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo)
+    if _c1[6] != STATUS_OK:
+        return _NAN60 + (_c1[6],)
+    phase_lo = _c1[0]
+    s_lo = _c1[1]
+    _j_phase_lo__a = _c1[2]
+    _j_phase_lo__b = _c1[3]
+    _j_s_lo__a = _c1[4]
+    _j_s_lo__b = _c1[5]
+    # chain rule through geyer_liftoff_phase
+    d_phase_lo__q_r_td = _j_a__q_r_td*_j_phase_lo__a + _j_b__q_r_td*_j_phase_lo__b
+    d_phase_lo__q_rd_td = _j_b__q_rd_td*_j_phase_lo__b
+    d_phase_lo__q_thd_td = _j_a__q_thd_td*_j_phase_lo__a + _j_b__q_thd_td*_j_phase_lo__b
+    d_phase_lo__k = _j_a__k*_j_phase_lo__a + _j_b__k*_j_phase_lo__b
+    d_s_lo__q_r_td = _j_a__q_r_td*_j_s_lo__a + _j_b__q_r_td*_j_s_lo__b
+    d_s_lo__q_rd_td = _j_b__q_rd_td*_j_s_lo__b
+    d_s_lo__q_thd_td = _j_a__q_thd_td*_j_s_lo__a + _j_b__q_thd_td*_j_s_lo__b
+    d_s_lo__k = _j_a__k*_j_s_lo__a + _j_b__k*_j_s_lo__b
+    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
+    _x0 = (1.0/omega0_hat)
+    _x1 = -phase_td + (1.5)*math.pi
+    t_bottom = _x0*_x1
+    _x2 = _x0**2
+    _pd__0 = -_x1*_x2
+    _x3 = -_x0
+    _pd__1 = _x3
+    d_t_bottom__q_r_td = _j_omega0_hat__q_r_td*_pd__0 + _j_phase_td__q_r_td*_pd__1
+    d_t_bottom__q_rd_td = _j_phase_td__q_rd_td*_pd__1
+    d_t_bottom__q_thd_td = _j_omega0_hat__q_thd_td*_pd__0 + _j_phase_td__q_thd_td*_pd__1
+    d_t_bottom__k = _j_omega0_hat__k*_pd__0 + _j_phase_td__k*_pd__1
+    _x4 = phase_lo - phase_td
+    t_stance = _x0*_x4
+    _pd__2 = -_x2*_x4
+    _pd__3 = _x0
+    _pd__4 = _x3
+    d_t_stance__q_r_td = _j_omega0_hat__q_r_td*_pd__2 + _j_phase_td__q_r_td*_pd__4 + _pd__3*d_phase_lo__q_r_td
+    d_t_stance__q_rd_td = _j_phase_td__q_rd_td*_pd__4 + _pd__3*d_phase_lo__q_rd_td
+    d_t_stance__q_thd_td = (_j_omega0_hat__q_thd_td*_pd__2 + _j_phase_td__q_thd_td*_pd__4
+        + _pd__3*d_phase_lo__q_thd_td)
+    d_t_stance__k = _j_omega0_hat__k*_pd__2 + _j_phase_td__k*_pd__4 + _pd__3*d_phase_lo__k
+    _x5 = a + 1.0
+    _x6 = _x5 - b
+    bottom_q_r = _x6*l0
+    d_bottom_q_r__q_r_td = _j_a__q_r_td*l0 - _j_b__q_r_td*l0
+    d_bottom_q_r__q_rd_td = -_j_b__q_rd_td*l0
+    d_bottom_q_r__q_thd_td = _j_a__q_thd_td*l0 - _j_b__q_thd_td*l0
+    d_bottom_q_r__k = _j_a__k*l0 - _j_b__k*l0
+    bottom_q_rd = 0.0
+    _x7 = (1.5)*math.pi
+    _x8 = _x0*omega
+    _x9 = 3.0*math.pi
+    _x10 = _x8*_x9
+    _x11 = _x0*phase_td
+    _x12 = _x11*a
+    _x13 = math.sqrt(1.0 - s_td**2)
+    _x14 = _x13*b
+    _x15 = _x0*_x14
+    _x16 = 2.0*omega
+    _x17 = -_x11*omega + _x16*(_x12 + _x15) + q_th_td
+    bottom_q_th = -_x10*a + _x17 + _x7*_x8
+    _pd__5 = -_x10 + _x11*_x16
+    _x18 = 2.0*_x8
+    _x19 = _x13*_x18
+    _pd__6 = _x19
+    _x20 = _x9*a
+    _x21 = -_x11 + 2.0*_x12 + 2.0*_x15
+    _pd__7 = -_x0*_x20 + _x0*_x7 + _x21
+    _x22 = _x2*phase_td
+    _x23 = _x2*omega
+    _x24 = -_x14*_x2 - _x22*a
+    _pd__8 = _x16*_x24 + _x20*_x23 + _x22*omega - _x23*_x7
+    _x25 = _x18*a - _x8
+    _pd__9 = _x25
+    _x26 = -_x18*b*s_td/_x13
+    _pd__10 = _x26
+    d_bottom_q_th__q_r_td = (_j_a__q_r_td*_pd__5 + _j_b__q_r_td*_pd__6 + _j_omega0_hat__q_r_td*_pd__8
+        + _j_omega__q_r_td*_pd__7 + _j_phase_td__q_r_td*_pd__9 + _j_s_td__q_r_td*_pd__10)
+    d_bottom_q_th__q_rd_td = _j_b__q_rd_td*_pd__6 + _j_phase_td__q_rd_td*_pd__9 + _j_s_td__q_rd_td*_pd__10
+    d_bottom_q_th__q_thd_td = (_j_a__q_thd_td*_pd__5 + _j_b__q_thd_td*_pd__6 + _j_omega0_hat__q_thd_td*_pd__8
+        + _j_omega__q_thd_td*_pd__7 + _j_phase_td__q_thd_td*_pd__9 + _j_s_td__q_thd_td*_pd__10)
+    d_bottom_q_th__k = (_j_a__k*_pd__5 + _j_b__k*_pd__6 + _j_omega0_hat__k*_pd__8 + _j_phase_td__k*_pd__9
+        + _j_s_td__k*_pd__10)
+    _x43 = (1.0/_x6)
+    _x27 = _x43**2
+    bottom_q_thd = _x27*omega
+    _x28 = _x16*_x43**3
+    _pd__11 = -_x28
+    _pd__12 = _x28
+    _pd__13 = _x27
+    d_bottom_q_thd__q_r_td = _j_a__q_r_td*_pd__11 + _j_b__q_r_td*_pd__12 + _j_omega__q_r_td*_pd__13
+    d_bottom_q_thd__q_rd_td = _j_b__q_rd_td*_pd__12
+    d_bottom_q_thd__q_thd_td = _j_a__q_thd_td*_pd__11 + _j_b__q_thd_td*_pd__12 + _j_omega__q_thd_td*_pd__13
+    d_bottom_q_thd__k = _j_a__k*_pd__11 + _j_b__k*_pd__12
+    liftoff_q_r = q_r_lo
+    _x29 = math.sqrt(1.0 - s_lo**2)
+    _x30 = _x29*l0
+    _x31 = _x30*omega0_hat
+    liftoff_q_rd = _x31*b
+    _pd__14 = _x31
+    _pd__15 = _x30*b
+    _x32 = b*s_lo
+    _x33 = _x32/_x29
+    _pd__16 = -_x33*l0*omega0_hat
+    d_liftoff_q_rd__q_r_td = _j_b__q_r_td*_pd__14 + _j_omega0_hat__q_r_td*_pd__15 + _pd__16*d_s_lo__q_r_td
+    d_liftoff_q_rd__q_rd_td = _j_b__q_rd_td*_pd__14 + _pd__16*d_s_lo__q_rd_td
+    d_liftoff_q_rd__q_thd_td = (_j_b__q_thd_td*_pd__14 + _j_omega0_hat__q_thd_td*_pd__15
+        + _pd__16*d_s_lo__q_thd_td)
+    d_liftoff_q_rd__k = _j_b__k*_pd__14 + _j_omega0_hat__k*_pd__15 + _pd__16*d_s_lo__k
+    _x34 = _x0*phase_lo
+    _x35 = _x34*a
+    _x36 = _x0*_x29*b
+    _x37 = _x8*phase_lo
+    liftoff_q_th = -_x16*(_x35 - _x36) + _x17 + _x37
+    _pd__17 = 2.0*_x0*omega*phase_td - 2.0*_x37
+    _pd__18 = _x18*_x29 + _x19
+    _pd__19 = _x21 + _x34 - 2.0*_x35 + 2.0*_x36
+    _x38 = _x2*phase_lo
+    _pd__20 = -_x16*(_x2*_x29*b - _x38*a) + _x2*omega*phase_td + 2.0*_x24*omega - _x38*omega
+    _pd__21 = -_x25
+    _pd__22 = _x25
+    _pd__23 = -_x18*_x33
+    _pd__24 = _x26
+    d_liftoff_q_th__q_r_td = (_j_a__q_r_td*_pd__17 + _j_b__q_r_td*_pd__18 + _j_omega0_hat__q_r_td*_pd__20
+        + _j_omega__q_r_td*_pd__19 + _j_phase_td__q_r_td*_pd__22 + _j_s_td__q_r_td*_pd__24
+        + _pd__21*d_phase_lo__q_r_td + _pd__23*d_s_lo__q_r_td)
+    d_liftoff_q_th__q_rd_td = (_j_b__q_rd_td*_pd__18 + _j_phase_td__q_rd_td*_pd__22 + _j_s_td__q_rd_td*_pd__24
+        + _pd__21*d_phase_lo__q_rd_td + _pd__23*d_s_lo__q_rd_td)
+    d_liftoff_q_th__q_thd_td = (_j_a__q_thd_td*_pd__17 + _j_b__q_thd_td*_pd__18
+        + _j_omega0_hat__q_thd_td*_pd__20 + _j_omega__q_thd_td*_pd__19 + _j_phase_td__q_thd_td*_pd__22
+        + _j_s_td__q_thd_td*_pd__24 + _pd__21*d_phase_lo__q_thd_td + _pd__23*d_s_lo__q_thd_td)
+    d_liftoff_q_th__k = (_j_a__k*_pd__17 + _j_b__k*_pd__18 + _j_omega0_hat__k*_pd__20 + _j_phase_td__k*_pd__22
+        + _j_s_td__k*_pd__24 + _pd__21*d_phase_lo__k + _pd__23*d_s_lo__k)
+    _x39 = _x32 + _x5
+    _x42 = (1.0/_x39)
+    _x40 = _x42**2
+    liftoff_q_thd = _x40*omega
+    _x41 = _x16*_x42**3
+    _pd__25 = -_x41
+    _pd__26 = -_x41*s_lo
+    _pd__27 = _x40
+    _pd__28 = -_x41*b
+    d_liftoff_q_thd__q_r_td = (_j_a__q_r_td*_pd__25 + _j_b__q_r_td*_pd__26 + _j_omega__q_r_td*_pd__27
+        + _pd__28*d_s_lo__q_r_td)
+    d_liftoff_q_thd__q_rd_td = _j_b__q_rd_td*_pd__26 + _pd__28*d_s_lo__q_rd_td
+    d_liftoff_q_thd__q_thd_td = (_j_a__q_thd_td*_pd__25 + _j_b__q_thd_td*_pd__26 + _j_omega__q_thd_td*_pd__27
+        + _pd__28*d_s_lo__q_thd_td)
+    d_liftoff_q_thd__k = _j_a__k*_pd__25 + _j_b__k*_pd__26 + _pd__28*d_s_lo__k
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN60 + (STATUS_FALL,)
+    # derivatives of the outputs
+    d_t_bottom__q_th_td = 0.0
+    d_t_stance__q_th_td = 0.0
+    d_bottom_q_r__q_th_td = 0.0
+    d_bottom_q_rd__q_r_td = 0.0
+    d_bottom_q_rd__q_rd_td = 0.0
+    d_bottom_q_rd__q_th_td = 0.0
+    d_bottom_q_rd__q_thd_td = 0.0
+    d_bottom_q_rd__k = 0.0
+    d_bottom_q_th__q_th_td = 1.0
+    d_bottom_q_thd__q_th_td = 0.0
+    d_liftoff_q_r__q_r_td = 0.0
+    d_liftoff_q_r__q_rd_td = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__q_thd_td = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_liftoff_q_rd__q_th_td = 0.0
+    d_liftoff_q_th__q_th_td = 1.0
+    d_liftoff_q_thd__q_th_td = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return _NAN60 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td,
+        d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td,
+        d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -514,7 +472,20 @@ def geyer_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 60)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+    d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+    d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+    d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+    d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+    d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+    d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+    d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+    d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+    d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k.
     """
     for i in prange(out.shape[0]):
         res = geyer_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
@@ -582,19 +553,22 @@ def geyer_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan):
-    """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map, with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan).
+def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
+    """Apex-return map by Geyer et al.'s approximate stance map, and its derivatives with respect to the apex,
+    the touchdown angle and the stiffness.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -602,11 +576,6 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_ape
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
-        k__tan: direction: its component along k
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -621,287 +590,209 @@ def geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_ape
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        apex_height__tan: derivative of apex_height along the direction
-        apex_speed__tan: derivative of apex_speed along the direction
-        t_descent__tan: derivative of t_descent along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        t_ascent__tan: derivative of t_ascent along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        step_length__tan: derivative of step_length along the direction
-        foot_x__tan: derivative of foot_x along the direction
-        foot_y__tan: derivative of foot_y along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 5
+    # Total ops: 158
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
+        return _NAN72 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    td_q_r__tan = _c0[6]
-    td_q_rd__tan = _c0[7]
-    td_q_th__tan = _c0[8]
-    td_q_thd__tan = _c0[9]
-    t_descent__tan = _c0[10]
-    foot_x__tan = _c0[11]
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
+    if _c0[30] != STATUS_OK:
+        return _NAN72 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
     # stance: Geyer et al.'s approximate stance map
-    _c1 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k__tan)
-    if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    t_stance__tan = _c1[11]
-    liftoff_q_r__tan = _c1[16]
-    liftoff_q_rd__tan = _c1[17]
-    liftoff_q_th__tan = _c1[18]
-    liftoff_q_thd__tan = _c1[19]
+    _c1 = geyer_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
+    if _c1[60] != STATUS_OK:
+        return _NAN72 + (_c1[60],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _,
+        _j_t_stance__q_rd_td, _, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _, _j_liftoff_q_rd__q_thd_td,
+        _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td, _, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k,
+        _) = _c1
+    # chain rule through geyer_stance
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    apex_height__tan = _c2[5]
-    apex_speed__tan = _c2[6]
-    t_ascent__tan = _c2[7]
-    next_apex_x__tan = _c2[9]
+    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+        direction))
+    if _c2[20] != STATUS_OK:
+        return _NAN72 + (_c2[20],)
+    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
+        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
+        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+    # chain rule through liftoff_to_apex
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
+    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
+    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
+        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__k = (_j_liftoff_q_rd__k*_j_next_apex_x__q_rd + _j_liftoff_q_th__k*_j_next_apex_x__q_th
+        + _j_liftoff_q_thd__k*_j_next_apex_x__q_thd)
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
-    step_length__tan = foot_x__tan + next_apex_x__tan
+    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
+    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
+    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
+    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     foot_y = -b_y_apex + ground
-    foot_y__tan = -b_y_apex__tan + ground__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
-    """Apex-return map by Geyer et al.'s approximate stance map, and its derivatives with respect to the apex, the touchdown angle and the stiffness.
-
-    Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_apex_height__b_y_apex: d apex_height / d b_y_apex
-        d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
-        d_apex_height__q_th_td: d apex_height / d q_th_td
-        d_apex_height__ground: d apex_height / d ground
-        d_apex_height__k: d apex_height / d k
-        d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
-        d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
-        d_apex_speed__q_th_td: d apex_speed / d q_th_td
-        d_apex_speed__ground: d apex_speed / d ground
-        d_apex_speed__k: d apex_speed / d k
-        d_t_descent__b_y_apex: d t_descent / d b_y_apex
-        d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
-        d_t_descent__q_th_td: d t_descent / d q_th_td
-        d_t_descent__ground: d t_descent / d ground
-        d_t_descent__k: d t_descent / d k
-        d_t_stance__b_y_apex: d t_stance / d b_y_apex
-        d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__ground: d t_stance / d ground
-        d_t_stance__k: d t_stance / d k
-        d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
-        d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
-        d_t_ascent__q_th_td: d t_ascent / d q_th_td
-        d_t_ascent__ground: d t_ascent / d ground
-        d_t_ascent__k: d t_ascent / d k
-        d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
-        d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__ground: d liftoff_q_r / d ground
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
-        d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
-        d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__ground: d liftoff_q_th / d ground
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
-        d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
-        d_step_length__b_y_apex: d step_length / d b_y_apex
-        d_step_length__b_xd_apex: d step_length / d b_xd_apex
-        d_step_length__q_th_td: d step_length / d q_th_td
-        d_step_length__ground: d step_length / d ground
-        d_step_length__k: d step_length / d k
-        d_foot_x__b_y_apex: d foot_x / d b_y_apex
-        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
-        d_foot_x__q_th_td: d foot_x / d q_th_td
-        d_foot_x__ground: d foot_x / d ground
-        d_foot_x__k: d foot_x / d k
-        d_foot_y__b_y_apex: d foot_y / d b_y_apex
-        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
-        d_foot_y__q_th_td: d foot_y / d q_th_td
-        d_foot_y__ground: d foot_y / d ground
-        d_foot_y__k: d foot_y / d k
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to b_y_apex
-    _c0 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_apex_height__b_y_apex = _c0[12]
-    d_apex_speed__b_y_apex = _c0[13]
-    d_t_descent__b_y_apex = _c0[14]
-    d_t_stance__b_y_apex = _c0[15]
-    d_t_ascent__b_y_apex = _c0[16]
-    d_liftoff_q_r__b_y_apex = _c0[17]
-    d_liftoff_q_rd__b_y_apex = _c0[18]
-    d_liftoff_q_th__b_y_apex = _c0[19]
-    d_liftoff_q_thd__b_y_apex = _c0[20]
-    d_step_length__b_y_apex = _c0[21]
-    d_foot_x__b_y_apex = _c0[22]
-    d_foot_y__b_y_apex = _c0[23]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    step_length = _c0[9]
-    foot_x = _c0[10]
-    foot_y = _c0[11]
-    # derivatives with respect to b_xd_apex
-    _c1 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_apex_height__b_xd_apex = _c1[12]
-    d_apex_speed__b_xd_apex = _c1[13]
-    d_t_descent__b_xd_apex = _c1[14]
-    d_t_stance__b_xd_apex = _c1[15]
-    d_t_ascent__b_xd_apex = _c1[16]
-    d_liftoff_q_r__b_xd_apex = _c1[17]
-    d_liftoff_q_rd__b_xd_apex = _c1[18]
-    d_liftoff_q_th__b_xd_apex = _c1[19]
-    d_liftoff_q_thd__b_xd_apex = _c1[20]
-    d_step_length__b_xd_apex = _c1[21]
-    d_foot_x__b_xd_apex = _c1[22]
-    d_foot_y__b_xd_apex = _c1[23]
-    # derivatives with respect to q_th_td
-    _c2 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_apex_height__q_th_td = _c2[12]
-    d_apex_speed__q_th_td = _c2[13]
-    d_t_descent__q_th_td = _c2[14]
-    d_t_stance__q_th_td = _c2[15]
-    d_t_ascent__q_th_td = _c2[16]
-    d_liftoff_q_r__q_th_td = _c2[17]
-    d_liftoff_q_rd__q_th_td = _c2[18]
-    d_liftoff_q_th__q_th_td = _c2[19]
-    d_liftoff_q_thd__q_th_td = _c2[20]
-    d_step_length__q_th_td = _c2[21]
-    d_foot_x__q_th_td = _c2[22]
-    d_foot_y__q_th_td = _c2[23]
-    # derivatives with respect to ground
-    _c3 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_apex_height__ground = _c3[12]
-    d_apex_speed__ground = _c3[13]
-    d_t_descent__ground = _c3[14]
-    d_t_stance__ground = _c3[15]
-    d_t_ascent__ground = _c3[16]
-    d_liftoff_q_r__ground = _c3[17]
-    d_liftoff_q_rd__ground = _c3[18]
-    d_liftoff_q_th__ground = _c3[19]
-    d_liftoff_q_thd__ground = _c3[20]
-    d_step_length__ground = _c3[21]
-    d_foot_x__ground = _c3[22]
-    d_foot_y__ground = _c3[23]
-    # derivatives with respect to k
-    _c4 = geyer_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_apex_height__k = _c4[12]
-    d_apex_speed__k = _c4[13]
-    d_t_descent__k = _c4[14]
-    d_t_stance__k = _c4[15]
-    d_t_ascent__k = _c4[16]
-    d_liftoff_q_r__k = _c4[17]
-    d_liftoff_q_rd__k = _c4[18]
-    d_liftoff_q_th__k = _c4[19]
-    d_liftoff_q_thd__k = _c4[20]
-    d_step_length__k = _c4[21]
-    d_foot_x__k = _c4[22]
-    d_foot_y__k = _c4[23]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, STATUS_OK)
+    # derivatives of the outputs
+    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
+    d_t_descent__b_xd_apex = 0.0
+    d_t_descent__q_th_td = _j_t_descent__q_th_td
+    d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__k = 0.0
+    d_t_stance__k = _j_t_stance__k
+    d_liftoff_q_r__b_y_apex = 0.0
+    d_liftoff_q_r__b_xd_apex = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__ground = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_liftoff_q_rd__k = _j_liftoff_q_rd__k
+    d_liftoff_q_th__k = _j_liftoff_q_th__k
+    d_liftoff_q_thd__k = _j_liftoff_q_thd__k
+    d_step_length__k = d_next_apex_x__k
+    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
+    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
+    d_foot_x__q_th_td = _j_foot_x__q_th_td
+    d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__k = 0.0
+    d_foot_y__b_y_apex = -1.0
+    d_foot_y__b_xd_apex = 0.0
+    d_foot_y__q_th_td = 0.0
+    d_foot_y__ground = 1.0
+    d_foot_y__k = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
+        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex,
+        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k,
+        d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground,
+        d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
+        d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground,
+        d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
+        d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
+        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k,
+        d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
+        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
+        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out, status):
+def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        out, status):
     """Parallel batch form of :func:`geyer_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
+    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
+    d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+    d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground,
+    d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground,
+    d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground,
+    d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
+    d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
+    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex,
+    d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k,
+    d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground,
+    d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
+    d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td,
+    d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td,
+    d_foot_y__ground, d_foot_y__k.
     """
     for i in prange(out.shape[0]):
-        res = geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo)
+        res = (geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s,
+            g_f, q_r_td, q_r_lo))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

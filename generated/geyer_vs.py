@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:4d6fab274bba303b
-#   geyer.py sha256:26ff4a0183dca42d
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
 # ----------------------------------------------------------------------------------------------
-"""Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and apex-return kernels."""
+"""Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -17,23 +19,16 @@ from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL,
+    STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN1 = (NAN,) * 1
+_NAN4 = (NAN,) * 4
+_NAN13 = (NAN,) * 13
+_NAN15 = (NAN,) * 15
 
 
 @njit(cache=True, error_model="numpy")
@@ -56,8 +51,10 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
-        return (NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((g_s > 0.0))):
+        return _NAN1 + (STATUS_INVALID_INPUT,)
     # a start left of the root: V >= E there
     _x0 = g_s*m
     _x1 = _x0/k_c
@@ -70,8 +67,9 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     _x8 = math.sqrt(2.0)*abs(p)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x2 + _x4*k_c*l0 - 0.5*_x5 - _x6))
     q_start = -0.5*_x1 - 0.5*_x7 + (0.25)*_x8 + (0.5)*l0 + (0.5)*abs(_x3 + _x7 + (0.5)*_x8)
     # E_ab above the minimum of the potential
-    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
-        return (NAN, STATUS_NO_REAL_SOLUTION)
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
+            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
+        return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # Newton's method on V - E: monotone from the left
     qb = q_start
     passes = 0.0
@@ -80,8 +78,9 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         slope = g_s*m - k_c*l0 + k_c*qb - p**2/(m*qb**3)
         # V decreasing left of the root
         if not ((slope < 0.0)):
-            return (NAN, STATUS_NO_REAL_SOLUTION)
-        _n0_0 = qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2 + (0.5)*p**2/(m*qb**2))/slope
+            return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
+        _n0_0 = (qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2
+            + (0.5)*p**2/(m*qb**2))/slope)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
@@ -90,22 +89,24 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
         if _conv0:
             break
     if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-        return (NAN, STATUS_NOT_CONVERGED)
+        return _NAN1 + (STATUS_NOT_CONVERGED,)
     q_r_b = qb
     # the bottom root is at most l0
     if not ((qb <= l0)):
-        return (NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r_b)):
-        return (NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN1 + (STATUS_NUMERICAL_RANGE,)
     return (q_r_b, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity,
+        iterations, tol):
     """Simple variable-stiffness map (Geyer et al. per half): touchdown state -> bottom and liftoff states.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Section 5.1: apex to bottom (78)-(89) with k_c, bottom to apex (90)-(105) with k_d and E_ba
     = E_ab + (k_d - k_c)(l0 - q_r_b)^2/2; option continuity chooses (103)-(104) with the
@@ -123,10 +124,14 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -144,28 +149,43 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         passes: fixed-point passes run (0 unless gravity)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 506
+    # Total ops: 297
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k_c
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)
     P_c_compression = 0.0
     P_c_decompression = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN13 + (STATUS_NOT_CONVERGED,)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN13 + (_c0[6],)
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -182,7 +202,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_t_bottom = _x3*(-i_ab_phase_td + (1.5)*math.pi)
         i_bottom_q_r = _x5*l0
         i_bottom_q_rd = 0.0
-        i_bottom_q_th = -3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td
+        i_bottom_q_th = (-3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega
+            + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td)
         i_p_b = _x8
         i_bottom_q_thd = _x8/(_x5**2*l0**2*m)
         i_rho_b = _x4
@@ -197,7 +218,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+            return _NAN13 + (STATUS_RECOMPRESSION,)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -211,15 +232,16 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             _x14 = i_ba_omega**2
             _x15 = 2.0*_x17*g_s
             _x16 = (1.0/m)
-            i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
+            i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
+                + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN13 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+            return _NAN13 + (STATUS_NO_REAL_SOLUTION,)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -227,7 +249,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN13 + (_c1[2],)
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -236,7 +258,8 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         _x22 = (1.5)*math.pi
         _x23 = _x21*i_ba_phase_lo
         _x24 = _x21*i_ba_omega
-        _x25 = -_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th
+        _x25 = (-_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a
+            - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th)
         _x27 = q_r_lo**2
         _x28 = (1.0/_x27)
         _x29 = P_c_decompression + i_p_b
@@ -245,15 +268,19 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_liftoff_q_r = q_r_lo
         i_liftoff_q_th = _x25
         i_liftoff_q_thd = _x26*_x28*_x29
-        i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
+        i_q_rd_lo_sq = (-_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r
+            + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN13 + (STATUS_FALL,)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN13 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
-        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
+            else (math.sqrt(i_q_rd_lo_sq)))
+        if _conv0 or _it0 == _last0:
+            break
         # the virtual gravity effect of each half
         if gravity == 0.0:
             i_P_new1 = 0.0
@@ -269,10 +296,12 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             _x33 = (1.0/i_ab_omega0_hat)
             _x34 = i_ab_a + 1.0
             _x35 = (1.5)*math.pi
-            _x36 = _x33*l0*(_x34*_x35 - _x34*i_ab_phase_td + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33)
+            _x36 = (_x33*l0*(_x34*_x35 - _x34*i_ab_phase_td
+                + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33))
             _x37 = (1.0/i_ba_omega0_hat)
             _x38 = i_ba_a + 1.0
-            _x39 = _x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37 + _x37*i_ba_phase_lo)
+            _x39 = (_x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37
+                + _x37*i_ba_phase_lo))
             _x40 = math.sin(i_bottom_q_th)
             _x41 = g_s*m
             _x42 = _x36*_x41
@@ -282,129 +311,52 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN13 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # the first half's mean momentum as a touchdown rate
-    q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
-    if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[6])
-    ab_omega = _c2[0]
-    ab_omega0_hat = _c2[1]
-    ab_a = _c2[2]
-    ab_b = _c2[3]
-    ab_phase_td = _c2[4]
-    ab_s_td = _c2[5]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x44 = (1.0/ab_omega0_hat)
-    _x45 = ab_a - ab_b
-    _x46 = _x45 + 1.0
-    _x47 = _x44*ab_omega
-    _x48 = _x44*ab_phase_td
-    _x49 = P_c_compression + p_td
-    t_bottom = _x44*(-ab_phase_td + (1.5)*math.pi)
-    bottom_q_r = _x46*l0
-    bottom_q_rd = 0.0
-    bottom_q_th = -3.0*math.pi*_x47*ab_a + (1.5)*math.pi*_x47 - _x48*ab_omega + 2.0*ab_omega*(_x44*ab_b*math.sqrt(1.0 - ab_s_td**2) + _x48*ab_a) + q_th_td
-    p_b = _x49
-    bottom_q_thd = _x49/(_x46**2*l0**2*m)
-    rho_b = _x45
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x54 = (1.0/l0)
-    _x50 = (1.0/m)
-    _x51 = (0.5)*P_c_decompression + p_b
-    _x52 = _x51**2
-    _x53 = 3.0*_x50*_x52*_x54**4 + k_d
-    ba_omega = _x50*_x51*_x54**2
-    ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
-    ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # eqs (97)-(99), E_ab the energy (27)
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 1.0:
-        # as report
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 2.0:
-        # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-        _x56 = (1.0/l0)
-        _x55 = ba_omega**2
-        _x57 = (1.0/m)
-        eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    _x58 = ba_omega**2
-    _x59 = 3.0*_x58*m + k_d
-    ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (104); eq (103), or (111) when constrained
-    _x60 = math.sqrt(ba_b2)
-    ba_b = _x60
-    ba_a = ((_x60 + rho_b) if (continuity == 1.0) else (ba_a_free))
-    # eq (94): the liftoff phase of the second half
-    _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
-    ba_phase_lo = _c3[0]
-    ba_s_lo = _c3[1]
-    # eqs (90)-(94) at liftoff
-    _x66 = (1.0/m)
-    _x61 = (1.0/ba_omega0_hat)
-    _x62 = (1.5)*math.pi
-    _x63 = _x61*ba_phase_lo
-    _x64 = _x61*ba_omega
-    _x65 = -_x62*_x64 + _x63*ba_omega + 3.0*math.pi*_x64*ba_a - 2.0*ba_omega*(-_x61*ba_b*math.sqrt(1.0 - ba_s_lo**2) + _x63*ba_a) + bottom_q_th
-    _x67 = q_r_lo**2
-    _x68 = (1.0/_x67)
-    _x69 = P_c_decompression + p_b
-    _x70 = _x66*k_d
-    t_stance = _x61*(-_x62 + ba_phase_lo) + t_bottom
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x65
-    liftoff_q_thd = _x66*_x68*_x69
-    q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = i_bottom_q_thd
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = i_liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
+            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo,
+            continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -422,10 +374,12 @@ def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol):
     """Simple variable-stiffness map (Geyer et al. per half): the polar state a time t after touchdown.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -439,10 +393,14 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -451,28 +409,43 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 558
+    # Total ops: 349
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k_c
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)
     P_c_compression = 0.0
     P_c_decompression = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN4 + (_c0[6],)
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -489,7 +462,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_t_bottom = _x3*(-i_ab_phase_td + (1.5)*math.pi)
         i_bottom_q_r = _x5*l0
         i_bottom_q_rd = 0.0
-        i_bottom_q_th = -3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td
+        i_bottom_q_th = (-3.0*math.pi*_x6*i_ab_a + (1.5)*math.pi*_x6 - _x7*i_ab_omega
+            + 2.0*i_ab_omega*(_x3*i_ab_b*math.sqrt(1.0 - i_ab_s_td**2) + _x7*i_ab_a) + q_th_td)
         i_p_b = _x8
         i_bottom_q_thd = _x8/(_x5**2*l0**2*m)
         i_rho_b = _x4
@@ -504,7 +478,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
+            return _NAN4 + (STATUS_RECOMPRESSION,)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -518,15 +492,16 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             _x14 = i_ba_omega**2
             _x15 = 2.0*_x17*g_s
             _x16 = (1.0/m)
-            i_eps_ba = _x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15)
+            i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
+                + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -534,7 +509,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -543,7 +518,8 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         _x22 = (1.5)*math.pi
         _x23 = _x21*i_ba_phase_lo
         _x24 = _x21*i_ba_omega
-        _x25 = -_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th
+        _x25 = (-_x22*_x24 + _x23*i_ba_omega + 3.0*math.pi*_x24*i_ba_a
+            - 2.0*i_ba_omega*(-_x21*i_ba_b*math.sqrt(1.0 - i_ba_s_lo**2) + _x23*i_ba_a) + i_bottom_q_th)
         _x27 = q_r_lo**2
         _x28 = (1.0/_x27)
         _x29 = P_c_decompression + i_p_b
@@ -552,15 +528,19 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_liftoff_q_r = q_r_lo
         i_liftoff_q_th = _x25
         i_liftoff_q_thd = _x26*_x28*_x29
-        i_q_rd_lo_sq = -_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25)
+        i_q_rd_lo_sq = (-_x26**2*_x28*_x29**2 + 2.0*_x26*k_d*l0*q_r_lo + 2.0*_x26*(E_td - 0.5*(-i_bottom_q_r
+            + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN4 + (STATUS_FALL,)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN4 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo: (11) without a gravity correction, the energy with one
-        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(i_q_rd_lo_sq)))
+        i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
+            else (math.sqrt(i_q_rd_lo_sq)))
+        if _conv0 or _it0 == _last0:
+            break
         # the virtual gravity effect of each half
         if gravity == 0.0:
             i_P_new1 = 0.0
@@ -576,10 +556,12 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             _x33 = (1.0/i_ab_omega0_hat)
             _x34 = i_ab_a + 1.0
             _x35 = (1.5)*math.pi
-            _x36 = _x33*l0*(_x34*_x35 - _x34*i_ab_phase_td + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33)
+            _x36 = (_x33*l0*(_x34*_x35 - _x34*i_ab_phase_td
+                + i_ab_b*math.cos(i_ab_phase_td))/(-_x33*i_ab_phase_td + (1.5)*math.pi*_x33))
             _x37 = (1.0/i_ba_omega0_hat)
             _x38 = i_ba_a + 1.0
-            _x39 = _x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37 + _x37*i_ba_phase_lo)
+            _x39 = (_x37*l0*(-_x35*_x38 + _x38*i_ba_phase_lo - i_ba_b*math.cos(i_ba_phase_lo))/(-_x35*_x37
+                + _x37*i_ba_phase_lo))
             _x40 = math.sin(i_bottom_q_th)
             _x41 = g_s*m
             _x42 = _x36*_x41
@@ -589,150 +571,72 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # the first half's mean momentum as a touchdown rate
-    q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s)
-    if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c2[6])
-    ab_omega = _c2[0]
-    ab_omega0_hat = _c2[1]
-    ab_a = _c2[2]
-    ab_b = _c2[3]
-    ab_phase_td = _c2[4]
-    ab_s_td = _c2[5]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x44 = (1.0/ab_omega0_hat)
-    _x45 = ab_a - ab_b
-    _x46 = _x45 + 1.0
-    _x47 = _x44*ab_omega
-    _x48 = _x44*ab_phase_td
-    _x49 = P_c_compression + p_td
-    t_bottom = _x44*(-ab_phase_td + (1.5)*math.pi)
-    bottom_q_r = _x46*l0
-    bottom_q_rd = 0.0
-    bottom_q_th = -3.0*math.pi*_x47*ab_a + (1.5)*math.pi*_x47 - _x48*ab_omega + 2.0*ab_omega*(_x44*ab_b*math.sqrt(1.0 - ab_s_td**2) + _x48*ab_a) + q_th_td
-    p_b = _x49
-    bottom_q_thd = _x49/(_x46**2*l0**2*m)
-    rho_b = _x45
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x54 = (1.0/l0)
-    _x50 = (1.0/m)
-    _x51 = (0.5)*P_c_decompression + p_b
-    _x52 = _x51**2
-    _x53 = 3.0*_x50*_x52*_x54**4 + k_d
-    ba_omega = _x50*_x51*_x54**2
-    ba_omega0_hat = math.sqrt(_x53)/math.sqrt(m)
-    ba_a_free = _x54*m*(_x50**2*_x52*_x54**3 - g_s)/_x53
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # eqs (97)-(99), E_ab the energy (27)
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 1.0:
-        # as report
-        eps_ba = (2.0*E_td - (-bottom_q_r + l0)**2*(k_c - k_d))/(l0**2*m)
-    elif continuity == 2.0:
-        # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-        _x56 = (1.0/l0)
-        _x55 = ba_omega**2
-        _x57 = (1.0/m)
-        eps_ba = _x55 - _x56**2*_x57*(-bottom_q_r + l0)**2*(k_c - k_d) + 2.0*_x56*g_s + rho_b**2*(3.0*_x55 + _x57*k_c) + rho_b*(-2.0*_x55 + 2.0*_x56*g_s)
-    else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    _x58 = ba_omega**2
-    _x59 = 3.0*_x58*m + k_d
-    ba_b2 = -m*(_x59*l0*(2.0*g_s - l0*(-_x58 + eps_ba)) - m*(-_x58*l0 + g_s)**2)/(_x59**2*l0**2)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (104); eq (103), or (111) when constrained
-    _x60 = math.sqrt(ba_b2)
-    ba_b = _x60
-    ba_a = ((_x60 + rho_b) if (continuity == 1.0) else (ba_a_free))
-    # eq (94): the liftoff phase of the second half
-    _c3 = geyer_liftoff_phase(ba_a, ba_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c3[2])
-    ba_phase_lo = _c3[0]
-    ba_s_lo = _c3[1]
-    # eqs (90)-(94) at liftoff
-    _x66 = (1.0/m)
-    _x61 = (1.0/ba_omega0_hat)
-    _x62 = (1.5)*math.pi
-    _x63 = _x61*ba_phase_lo
-    _x64 = _x61*ba_omega
-    _x65 = -_x62*_x64 + _x63*ba_omega + 3.0*math.pi*_x64*ba_a - 2.0*ba_omega*(-_x61*ba_b*math.sqrt(1.0 - ba_s_lo**2) + _x63*ba_a) + bottom_q_th
-    _x67 = q_r_lo**2
-    _x68 = (1.0/_x67)
-    _x69 = P_c_decompression + p_b
-    _x70 = _x66*k_d
-    t_stance = _x61*(-_x62 + ba_phase_lo) + t_bottom
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x65
-    liftoff_q_thd = _x66*_x68*_x69
-    q_rd_lo_sq = -_x66**2*_x68*_x69**2 + 2.0*_x66*k_d*l0*q_r_lo + 2.0*_x66*(E_td - 0.5*(-bottom_q_r + l0)**2*(k_c - k_d)) - _x67*_x70 - _x70*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x65)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    liftoff_q_rd = ((ba_b*ba_omega0_hat*l0*math.sqrt(1.0 - ba_s_lo**2)) if (gravity == 0.0) else (math.sqrt(q_rd_lo_sq)))
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = i_bottom_q_thd
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = i_liftoff_q_thd
     # eqs (78)-(79): the first half
-    _c4 = geyer_state(ab_omega0_hat*t + ab_phase_td, ab_phase_td, q_th_td, ab_omega, ab_omega0_hat, ab_a, ab_b, l0)
-    c_q_r = _c4[0]
-    c_q_rd = _c4[1]
-    c_q_th = _c4[2]
-    c_q_thd = _c4[3]
-    # the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, (90)-(92) after; the rates with the momentum at t
-    _x71 = (t <= t_bottom)
-    _x72 = t - t_bottom
-    _x73 = _x72*ba_omega0_hat
-    _x74 = ba_a - ba_b*math.cos(_x73) + 1.0
-    _x75 = ba_b*math.sin(_x73)
-    _x76 = (1.5)*math.pi
-    _x77 = (1.0/ba_omega0_hat)
-    _x78 = _x77*ba_omega
-    _x79 = _x77*(_x73 + _x76)
-    _x80 = (1.0/m)
-    q_r = ((c_q_r) if _x71 else (_x74*l0))
-    q_rd = ((c_q_rd) if _x71 else (_x75*ba_omega0_hat*l0))
-    q_th = ((c_q_th) if _x71 else (-_x76*_x78 + 3.0*math.pi*_x78*ba_a + _x79*ba_omega - 2.0*ba_omega*(-_x75*_x77 + _x79*ba_a) + bottom_q_th))
-    q_thd = ((_x80*(P_c_compression*t/t_bottom + p_td)/c_q_r**2) if _x71 else (_x80*(P_c_decompression*_x72/(-t_bottom + t_stance) + p_b)/(_x74**2*l0**2)))
+    _c2 = (geyer_state(i_ab_omega0_hat*t + i_ab_phase_td, i_ab_phase_td, q_th_td, i_ab_omega, i_ab_omega0_hat,
+        i_ab_a, i_ab_b, l0))
+    c_q_r = _c2[0]
+    c_q_rd = _c2[1]
+    c_q_th = _c2[2]
+    c_q_thd = _c2[3]
+    # the piecewise stance map of section 5.1 ((112)-(113)): (78)-(79) up to t_b, (90)-(92) after; the rates
+    # with the momentum at t
+    _x44 = (i_t_bottom >= t)
+    _x45 = -i_t_bottom + t
+    _x46 = _x45*i_ba_omega0_hat
+    _x47 = i_ba_a - i_ba_b*math.cos(_x46) + 1.0
+    _x48 = i_ba_b*math.sin(_x46)
+    _x49 = (1.5)*math.pi
+    _x50 = (1.0/i_ba_omega0_hat)
+    _x51 = _x50*i_ba_omega
+    _x52 = _x50*(_x46 + _x49)
+    _x53 = (1.0/m)
+    q_r = ((c_q_r) if _x44 else (_x47*l0))
+    q_rd = ((c_q_rd) if _x44 else (_x48*i_ba_omega0_hat*l0))
+    q_th = ((c_q_th) if _x44 else (-_x49*_x51 + 3.0*math.pi*_x51*i_ba_a + _x52*i_ba_omega
+        - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
+    q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44
+        else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+    continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+            continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -741,16 +645,20 @@ def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        continuity, gravity, iterations, tol):
     """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half).
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -759,10 +667,14 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -784,14 +696,23 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
+            == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN15 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN15 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -799,21 +720,16 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+    _c1 = (geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol))
     if _c1[13] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[13])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c_compression = _c1[10]
-    P_c_decompression = _c1[11]
-    passes = _c1[12]
+        return _NAN15 + (_c1[13],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
+        P_c_decompression, passes, _) = _c1
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
+        return _NAN15 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -822,22 +738,33 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
+            and math.isfinite(passes)):
+        return _NAN15 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 15)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression,
+    P_c_decompression, passes.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s,
+            g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,999 +4,44 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:93735a9cd1eada3e
-#   geyer_jacobian.py sha256:2cc3bc7df9c66782
+#   flight_jacobian.py sha256:2e171e0cb588eb80
+#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
+its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
-from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b, geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
+from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
+
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, STATUS_FALL,
+    STATUS_RECOMPRESSION, STATUS_NUMERICAL_RANGE, STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN4 = (NAN,) * 4
+_NAN91 = (NAN,) * 91
+_NAN105 = (NAN,) * 105
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 0 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
+def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
+        gravity, iterations, tol):
+    """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
 
-    Report equations: .
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        i_bottom_q_r: value of the caller's variable
-        i_bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        i_eps_ba: result for the caller
-        i_eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # eqs (97)-(99), E_ab the energy (27)
-    _x0 = k_c - k_d
-    _x1 = (-i_bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    i_eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    i_eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_eps_ba, i_eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 1 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        i_bottom_q_r: value of the caller's variable
-        i_bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        i_eps_ba: result for the caller
-        i_eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # as report
-    _x0 = k_c - k_d
-    _x1 = (-i_bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    i_eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    i_eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_eps_ba, i_eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omega, i_ba_omega__tan, i_bottom_q_r, i_bottom_q_r__tan, i_rho_b, i_rho_b__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 2 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_ba_omega: value of the caller's variable
-        i_ba_omega__tan: value of the caller's variable
-        i_bottom_q_r: value of the caller's variable
-        i_bottom_q_r__tan: value of the caller's variable
-        i_rho_b: value of the caller's variable
-        i_rho_b__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        i_eps_ba: result for the caller
-        i_eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 50
-    # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-    _x9 = (1.0/l0)
-    _x0 = i_ba_omega**2
-    _x1 = 2.0*_x9*g_s
-    _x2 = -2.0*_x0 + _x1
-    _x3 = i_rho_b**2
-    _x4 = (1.0/m)
-    _x5 = 3.0*_x0 + _x4*k_c
-    _x6 = k_c - k_d
-    _x7 = _x4*_x9**2
-    _x8 = _x7*(-i_bottom_q_r + l0)**2
-    i_eps_ba = _x0 + _x1 + _x2*i_rho_b + _x3*_x5 - _x6*_x8
-    i_eps_ba__tan = -_x6*_x7*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) + _x8*k_d__tan + i_ba_omega__tan*(6.0*_x3*i_ba_omega - 4.0*i_ba_omega*i_rho_b + 2.0*i_ba_omega) + i_rho_b__tan*(_x2 + 2.0*_x5*i_rho_b) + k_c__tan*(_x3*_x4 - _x8)
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_eps_ba, i_eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3():
-    """branch gravity = 0 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-
-    Returns a tuple:
-        i_P_new1: result for the caller
-        i_P_new2: result for the caller
-        i_P_new1__tan: result for the caller
-        i_P_new2__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    i_P_new1 = 0.0
-    i_P_new2 = 0.0
-    # tangents the other branches define
-    i_P_new1__tan = 0.0
-    i_P_new2__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new1, i_P_new2, i_P_new1__tan, i_P_new2__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan):
-    """branch gravity = 1 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_bottom_q_r: value of the caller's variable
-        i_bottom_q_r__tan: value of the caller's variable
-        i_bottom_q_th: value of the caller's variable
-        i_bottom_q_th__tan: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_bottom: value of the caller's variable
-        i_t_bottom__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new1: result for the caller
-        i_P_new2: result for the caller
-        i_P_new1__tan: result for the caller
-        i_P_new2__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 54
-    # eq (65) on each half
-    _x0 = g_s*m
-    _x1 = _x0*math.sin(i_bottom_q_th)
-    _x2 = _x1*i_bottom_q_r
-    _x3 = _x0*math.sin(q_th_td)
-    _x4 = _x3*q_r_td
-    _x5 = (0.5)*i_t_bottom
-    _x6 = _x1*i_bottom_q_r__tan
-    _x7 = _x0*_x5
-    _x8 = i_bottom_q_r*i_bottom_q_th__tan*math.cos(i_bottom_q_th)
-    _x9 = (0.5)*_x2
-    _x10 = _x0*q_r_lo
-    _x11 = _x10*math.sin(i_liftoff_q_th)
-    _x12 = -0.5*i_t_bottom + (0.5)*i_t_stance
-    _x13 = (0.5)*_x11 + _x9
-    i_P_new1 = _x5*(_x2 + _x4)
-    i_P_new1__tan = _x3*_x5*q_r_td__tan + _x5*_x6 + _x7*_x8 + _x7*q_r_td*q_th_td__tan*math.cos(q_th_td) + i_t_bottom__tan*((0.5)*_x4 + _x9)
-    i_P_new2 = _x12*(_x11 + _x2)
-    i_P_new2__tan = _x0*_x12*_x8 + _x10*_x12*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x12*_x6 - _x13*i_t_bottom__tan + _x13*i_t_stance__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new1, i_P_new2, i_P_new1__tan, i_P_new2__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan):
-    """branch gravity = 2 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_ab_a: value of the caller's variable
-        i_ab_a__tan: value of the caller's variable
-        i_ab_b: value of the caller's variable
-        i_ab_b__tan: value of the caller's variable
-        i_ab_omega0_hat: value of the caller's variable
-        i_ab_omega0_hat__tan: value of the caller's variable
-        i_ab_phase_td: value of the caller's variable
-        i_ab_phase_td__tan: value of the caller's variable
-        i_ba_a: value of the caller's variable
-        i_ba_a__tan: value of the caller's variable
-        i_ba_b: value of the caller's variable
-        i_ba_b__tan: value of the caller's variable
-        i_ba_omega0_hat: value of the caller's variable
-        i_ba_omega0_hat__tan: value of the caller's variable
-        i_ba_phase_lo: value of the caller's variable
-        i_ba_phase_lo__tan: value of the caller's variable
-        i_bottom_q_th: value of the caller's variable
-        i_bottom_q_th__tan: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_bottom: value of the caller's variable
-        i_t_bottom__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new1: result for the caller
-        i_P_new2: result for the caller
-        i_P_new1__tan: result for the caller
-        i_P_new2__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 150
-    # eq (76) on each half, the average leg length of (11) on it
-    _x0 = (1.0/i_ab_omega0_hat)
-    _x14 = (1.0/i_ba_omega0_hat)
-    _x1 = -_x0*i_ab_phase_td + (1.5)*math.pi*_x0
-    _x2 = (1.0/_x1)
-    _x3 = math.cos(i_ab_phase_td)
-    _x4 = i_ab_a + 1.0
-    _x5 = (1.5)*math.pi
-    _x6 = l0*(_x3*i_ab_b + _x4*_x5 - _x4*i_ab_phase_td)
-    _x7 = _x2*_x6
-    _x8 = _x0*_x7
-    _x9 = _x0*_x2*l0
-    _x10 = -_x5
-    _x11 = _x0**2
-    _x12 = _x2**2*_x6
-    _x13 = _x3*_x9*i_ab_b__tan + _x9*i_ab_a__tan*(-_x10 - i_ab_phase_td) + i_ab_omega0_hat__tan*(_x0*_x12*(-_x11*i_ab_phase_td + (1.5)*math.pi*_x11) - _x11*_x7) + i_ab_phase_td__tan*(_x11*_x12 + _x9*(-_x4 - i_ab_b*math.sin(i_ab_phase_td)))
-    _x15 = -_x14*_x5 + _x14*i_ba_phase_lo
-    _x16 = (1.0/_x15)
-    _x17 = math.cos(i_ba_phase_lo)
-    _x18 = i_ba_a + 1.0
-    _x19 = l0*(-_x17*i_ba_b - _x18*_x5 + _x18*i_ba_phase_lo)
-    _x20 = _x16*_x19
-    _x21 = _x14*_x20
-    _x22 = _x14*_x16*l0
-    _x23 = _x14**2
-    _x24 = _x16**2*_x19
-    _x25 = -_x17*_x22*i_ba_b__tan + _x22*i_ba_a__tan*(_x10 + i_ba_phase_lo) + i_ba_omega0_hat__tan*(_x14*_x24*(-_x23*_x5 + _x23*i_ba_phase_lo) - _x20*_x23) + i_ba_phase_lo__tan*(_x22*(_x18 + i_ba_b*math.sin(i_ba_phase_lo)) - _x23*_x24)
-    _x26 = g_s*m
-    _x27 = _x26*math.sin(i_bottom_q_th)
-    _x28 = _x27*_x8
-    _x29 = _x26*math.sin(q_th_td)
-    _x30 = _x29*_x8
-    _x31 = (0.5)*i_t_bottom
-    _x32 = _x26*_x31*_x8
-    _x33 = i_bottom_q_th__tan*math.cos(i_bottom_q_th)
-    _x34 = _x21*_x27
-    _x35 = _x26*math.sin(i_liftoff_q_th)
-    _x36 = _x21*_x35
-    _x37 = -0.5*i_t_bottom + (0.5)*i_t_stance
-    _x38 = _x21*_x26*_x37
-    _x39 = (0.5)*_x34 + (0.5)*_x36
-    _i_L1 = _x8
-    _i_L1__tan = _x13
-    _i_L2 = _x21
-    _i_L2__tan = _x25
-    i_P_new1 = _x31*(_x28 + _x30)
-    i_P_new1__tan = _x13*_x31*(_x27 + _x29) + _x32*_x33 + _x32*q_th_td__tan*math.cos(q_th_td) + i_t_bottom__tan*((0.5)*_x28 + (0.5)*_x30)
-    i_P_new2 = _x37*(_x34 + _x36)
-    i_P_new2__tan = _x25*_x37*(_x27 + _x35) + _x33*_x38 + _x38*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) - _x39*i_t_bottom__tan + _x39*i_t_stance__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new1, i_P_new2, i_P_new1__tan, i_P_new2__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan):
-    """loop body of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c_compression: value of the caller's variable
-        P_c_compression__tan: value of the caller's variable
-        P_c_decompression: value of the caller's variable
-        P_c_decompression__tan: value of the caller's variable
-        continuity: value of the caller's variable
-        g_s: value of the caller's variable
-        gravity: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        _next_P_c_compression: result for the caller
-        _next_P_c_decompression: result for the caller
-        _next_P_c_compression__tan: result for the caller
-        _next_P_c_decompression__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 429
-    # the first half's mean momentum as a touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = (0.5)*P_c_compression + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    i_q_thd_eff = _x0*_x2
-    i_q_thd_eff__tan = (0.5)*P_c_compression__tan*_x2 - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k_c__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c0[12])
-    i_ab_omega = _c0[0]
-    i_ab_omega0_hat = _c0[1]
-    i_ab_a = _c0[2]
-    i_ab_b = _c0[3]
-    i_ab_phase_td = _c0[4]
-    i_ab_s_td = _c0[5]
-    i_ab_omega__tan = _c0[6]
-    i_ab_omega0_hat__tan = _c0[7]
-    i_ab_a__tan = _c0[8]
-    i_ab_b__tan = _c0[9]
-    i_ab_phase_td__tan = _c0[10]
-    i_ab_s_td__tan = _c0[11]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x4 = (1.0/i_ab_omega0_hat)
-    _x30 = (1.0/l0)
-    _x5 = -i_ab_phase_td + (1.5)*math.pi
-    _x6 = _x4**2
-    _x7 = i_ab_a - i_ab_b
-    _x8 = _x7 + 1.0
-    _x29 = (1.0/_x8)
-    _x9 = i_ab_a__tan*l0 - i_ab_b__tan*l0
-    _x10 = (1.5)*math.pi
-    _x11 = _x4*i_ab_omega
-    _x12 = _x4*i_ab_phase_td
-    _x13 = 3.0*math.pi
-    _x14 = _x11*_x13
-    _x15 = _x12*i_ab_a
-    _x16 = math.sqrt(1.0 - i_ab_s_td**2)
-    _x17 = _x16*i_ab_b
-    _x18 = _x17*_x4
-    _x19 = 2.0*i_ab_omega
-    _x20 = 2.0*_x11
-    _x21 = _x13*i_ab_a
-    _x22 = _x6*i_ab_phase_td
-    _x23 = _x6*i_ab_omega
-    _x24 = P_c_compression + p_td
-    _x25 = P_c_compression__tan + p_td__tan
-    _x26 = (1.0/m)
-    _x27 = _x24*_x26
-    _x28 = _x29**2*_x30**2
-    i_t_bottom = _x4*_x5
-    i_t_bottom__tan = -_x4*i_ab_phase_td__tan - _x5*_x6*i_ab_omega0_hat__tan
-    i_bottom_q_r = _x8*l0
-    i_bottom_q_r__tan = _x9
-    i_bottom_q_rd = 0.0
-    i_bottom_q_th = _x10*_x11 - _x12*i_ab_omega - _x14*i_ab_a + _x19*(_x15 + _x18) + q_th_td
-    i_bottom_q_th__tan = _x16*_x20*i_ab_b__tan + i_ab_a__tan*(_x12*_x19 - _x14) + i_ab_omega0_hat__tan*(-_x10*_x23 + _x19*(-_x17*_x6 - _x22*i_ab_a) + _x21*_x23 + _x22*i_ab_omega) + i_ab_omega__tan*(_x10*_x4 - _x12 + 2.0*_x15 + 2.0*_x18 - _x21*_x4) + i_ab_phase_td__tan*(-_x11 + _x20*i_ab_a) + q_th_td__tan - _x20*i_ab_b*i_ab_s_td*i_ab_s_td__tan/_x16
-    i_p_b = _x24
-    i_p_b__tan = _x25
-    i_bottom_q_thd = _x27*_x28
-    i_bottom_q_thd__tan = _x25*_x26*_x28 - 2.0*_x27*_x29**3*_x30**3*_x9
-    i_rho_b = _x7
-    i_rho_b__tan = _x30*_x9
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x47 = (1.0/l0)
-    _x33 = (1.0/m)
-    _x31 = (0.5)*P_c_decompression + i_p_b
-    _x32 = _x47**2
-    _x34 = _x32*_x33
-    _x35 = (0.5)*P_c_decompression__tan*_x34 + _x34*i_p_b__tan
-    _x36 = (1.0/math.sqrt(m))
-    _x37 = _x31**2
-    _x38 = 3.0*_x33*_x37*_x47**4 + k_d
-    _x42 = (1.0/_x38)
-    _x39 = math.sqrt(_x38)
-    _x40 = _x36/_x39
-    _x41 = _x31*_x32
-    _x43 = _x47**3
-    _x44 = m*(_x33**2*_x37*_x43 - g_s)
-    _x45 = _x44*_x47
-    _x46 = _x42**2
-    i_ba_omega = _x31*_x34
-    i_ba_omega__tan = _x35
-    i_ba_omega0_hat = _x36*_x39
-    i_ba_omega0_hat__tan = 3.0*_x35*_x40*_x41 + (0.5)*_x40*k_d__tan
-    i_ba_a_free = _x42*_x45
-    i_ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((i_rho_b < i_ba_a_free)):
-        return (NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # branch continuity = 0
-        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
-        i_eps_ba = _c1[0]
-        i_eps_ba__tan = _c1[1]
-    elif continuity == 1.0:
-        # branch continuity = 1
-        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(E_td, E_td__tan, i_bottom_q_r, i_bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c2[2])
-        i_eps_ba = _c2[0]
-        i_eps_ba__tan = _c2[1]
-    elif continuity == 2.0:
-        # branch continuity = 2
-        _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, i_ba_omega, i_ba_omega__tan, i_bottom_q_r, i_bottom_q_r__tan, i_rho_b, i_rho_b__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c3[2])
-        i_eps_ba = _c3[0]
-        i_eps_ba__tan = _c3[1]
-    else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    _x48 = i_ba_omega**2
-    _x49 = 3.0*_x48*m + k_d
-    _x60 = (1.0/_x49)
-    _x50 = _x60**2*m
-    _x51 = l0**2
-    _x52 = (1.0/_x51)
-    _x53 = -_x48*l0 + g_s
-    _x54 = 2.0*g_s - l0*(-_x48 + i_eps_ba)
-    _x55 = _x54*l0
-    _x56 = _x49*_x55 - _x53**2*m
-    _x57 = _x52*_x56
-    _x58 = _x60**3
-    _x59 = i_ba_omega*m
-    i_ba_b2 = -_x50*_x57
-    i_ba_b2__tan = _x60*i_eps_ba__tan*m + i_ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*i_ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*i_ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
-    # eq (104): real amplitude b_ba
-    if not ((i_ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (104); eq (103), or (111) when constrained
-    _x61 = math.sqrt(i_ba_b2)
-    _x62 = (0.5)*i_ba_b2__tan/_x61
-    _x63 = (continuity == 1.0)
-    _x64 = ((1.0) if _x63 else (0.0))
-    i_ba_b = _x61
-    i_ba_b__tan = _x62
-    i_ba_a = ((_x61 + i_rho_b) if _x63 else (i_ba_a_free))
-    i_ba_a__tan = _x62*_x64 + _x64*i_rho_b__tan + i_ba_a_free__tan*((0.0) if _x63 else (1.0))
-    # eq (94): the liftoff phase of the second half
-    _c4 = geyer_liftoff_phase_jvp_a_b(i_ba_a, i_ba_b, l0, q_r_lo, i_ba_a__tan, i_ba_b__tan)
-    if _c4[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c4[4])
-    i_ba_phase_lo = _c4[0]
-    i_ba_s_lo = _c4[1]
-    i_ba_phase_lo__tan = _c4[2]
-    i_ba_s_lo__tan = _c4[3]
-    # eqs (90)-(94) at liftoff
-    _x65 = (1.0/i_ba_omega0_hat)
-    _x82 = (1.0/m)
-    _x66 = (1.5)*math.pi
-    _x67 = -_x66 + i_ba_phase_lo
-    _x68 = _x65**2
-    _x69 = _x65*i_ba_phase_lo
-    _x70 = _x65*i_ba_omega
-    _x71 = 3.0*math.pi
-    _x72 = _x69*i_ba_a
-    _x73 = math.sqrt(1.0 - i_ba_s_lo**2)
-    _x74 = _x65*_x73*i_ba_b
-    _x75 = 2.0*i_ba_omega
-    _x76 = -_x66*_x70 + _x69*i_ba_omega + _x70*_x71*i_ba_a - _x75*(_x72 - _x74) + i_bottom_q_th
-    _x77 = 2.0*_x70
-    _x78 = _x71*i_ba_a
-    _x79 = _x68*i_ba_phase_lo
-    _x80 = _x73*_x77*i_ba_b__tan + i_ba_a__tan*(3.0*math.pi*_x65*i_ba_omega - _x69*_x75) + i_ba_omega0_hat__tan*(-_x68*_x78*i_ba_omega + (1.5)*math.pi*_x68*i_ba_omega - _x75*(_x68*_x73*i_ba_b - _x79*i_ba_a) - _x79*i_ba_omega) + i_ba_omega__tan*(-_x65*_x66 + _x65*_x78 + _x69 - 2.0*_x72 + 2.0*_x74) + i_ba_phase_lo__tan*(_x65*i_ba_omega - _x77*i_ba_a) + i_bottom_q_th__tan - _x77*i_ba_b*i_ba_s_lo*i_ba_s_lo__tan/_x73
-    _x81 = P_c_decompression + i_p_b
-    _x83 = q_r_lo**2
-    _x84 = (1.0/_x83)
-    _x85 = _x82*_x84
-    _x86 = _x82*l0**2
-    _x87 = _x82*_x83
-    _x88 = _x82**2*_x84
-    _x89 = k_c - k_d
-    _x90 = (-i_bottom_q_r + l0)**2
-    _x91 = _x88*(2.0*P_c_decompression + 2.0*i_p_b)
-    i_t_stance = _x65*_x67 + i_t_bottom
-    i_t_stance__tan = _x65*i_ba_phase_lo__tan - _x67*_x68*i_ba_omega0_hat__tan + i_t_bottom__tan
-    i_liftoff_q_r = q_r_lo
-    i_liftoff_q_th = _x76
-    i_liftoff_q_th__tan = _x80
-    i_liftoff_q_thd = _x81*_x85
-    i_liftoff_q_thd__tan = P_c_decompression__tan*_x85 + _x85*i_p_b__tan
-    i_q_rd_lo_sq = -_x81**2*_x88 + 2.0*_x82*k_d*l0*q_r_lo + 2.0*_x82*(E_td - 0.5*_x89*_x90) - _x86*k_d - _x87*k_d - 2.0*g_s*q_r_lo*math.cos(_x76)
-    i_q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*i_bottom_q_r__tan*(2.0*i_bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*i_p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
-    # the leg stays above horizontal
-    if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    _x92 = math.sqrt(1.0 - i_ba_s_lo**2)
-    _x93 = _x92*l0
-    _x94 = _x93*i_ba_omega0_hat
-    _x95 = (gravity == 0.0)
-    _x96 = math.sqrt(i_q_rd_lo_sq)
-    i_liftoff_q_rd = ((_x94*i_ba_b) if _x95 else (_x96))
-    i_liftoff_q_rd__tan = i_ba_b__tan*((_x94) if _x95 else (0.0)) + i_ba_omega0_hat__tan*((_x93*i_ba_b) if _x95 else (0.0)) + i_ba_s_lo__tan*((-i_ba_b*i_ba_omega0_hat*i_ba_s_lo*l0/_x92) if _x95 else (0.0)) + i_q_rd_lo_sq__tan*((0.0) if _x95 else ((0.5)/_x96))
-    # the virtual gravity effect of each half
-    if gravity == 0.0:
-        # branch gravity = 0
-        _c5 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3()
-        if _c5[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c5[4])
-        i_P_new1 = _c5[0]
-        i_P_new2 = _c5[1]
-        i_P_new1__tan = _c5[2]
-        i_P_new2__tan = _c5[3]
-    elif gravity == 1.0:
-        # branch gravity = 1
-        _c6 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, i_bottom_q_r, i_bottom_q_r__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, m, q_r_lo, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan)
-        if _c6[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c6[4])
-        i_P_new1 = _c6[0]
-        i_P_new2 = _c6[1]
-        i_P_new1__tan = _c6[2]
-        i_P_new2__tan = _c6[3]
-    elif gravity == 2.0:
-        # branch gravity = 2
-        _c7 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, i_ab_a, i_ab_a__tan, i_ab_b, i_ab_b__tan, i_ab_omega0_hat, i_ab_omega0_hat__tan, i_ab_phase_td, i_ab_phase_td__tan, i_ba_a, i_ba_a__tan, i_ba_b, i_ba_b__tan, i_ba_omega0_hat, i_ba_omega0_hat__tan, i_ba_phase_lo, i_ba_phase_lo__tan, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_bottom, i_t_bottom__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
-        if _c7[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c7[4])
-        i_P_new1 = _c7[0]
-        i_P_new2 = _c7[1]
-        i_P_new1__tan = _c7[2]
-        i_P_new2__tan = _c7[3]
-    else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # next values
-    _next_P_c_compression = i_P_new1
-    _next_P_c_decompression = i_P_new2
-    _next_P_c_compression__tan = i_P_new1__tan
-    _next_P_c_decompression__tan = i_P_new2__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_P_c_compression, _next_P_c_decompression, _next_P_c_compression__tan, _next_P_c_decompression__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 0 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # eqs (97)-(99), E_ab the energy (27)
-    _x0 = k_c - k_d
-    _x1 = (-bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m):
-    """branch continuity = 1 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 24
-    # as report
-    _x0 = k_c - k_d
-    _x1 = (-bottom_q_r + l0)**2
-    _x2 = 1.0/(l0**2*m)
-    _x3 = _x1*_x2
-    eps_ba = _x2*(2.0*E_td - _x0*_x1)
-    eps_ba__tan = 2.0*E_td__tan*_x2 - _x0*_x2*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x3*k_c__tan + _x3*k_d__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(ba_omega, ba_omega__tan, bottom_q_r, bottom_q_r__tan, g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, rho_b, rho_b__tan):
-    """branch continuity = 2 of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        ba_omega: value of the caller's variable
-        ba_omega__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        rho_b: value of the caller's variable
-        rho_b__tan: value of the caller's variable
-
-    Returns a tuple:
-        eps_ba: result for the caller
-        eps_ba__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 53
-    # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
-    _x1 = (1.0/l0)
-    _x0 = ba_omega**2
-    _x2 = 2.0*_x1*g_s
-    _x3 = 2.0*_x0
-    _x4 = rho_b**2
-    _x5 = (1.0/m)
-    _x6 = 3.0*_x0 + _x5*k_c
-    _x7 = k_c - k_d
-    _x8 = _x1**2*_x5
-    _x9 = _x8*(-bottom_q_r + l0)**2
-    eps_ba = _x0 + _x2 + _x4*_x6 - _x7*_x9 + rho_b*(2.0*_x1*g_s - _x3)
-    eps_ba__tan = -_x7*_x8*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) + _x9*k_d__tan + ba_omega__tan*(6.0*_x4*ba_omega - 4.0*ba_omega*rho_b + 2.0*ba_omega) + k_c__tan*(_x4*_x5 - _x9) + rho_b__tan*(_x2 - _x3 + 2.0*_x6*rho_b)
-    # (internal helper: its callers check that their outputs are finite)
-    return (eps_ba, eps_ba__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan):
-    """continuation of geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c_compression: value of the caller's variable
-        P_c_compression__tan: value of the caller's variable
-        P_c_decompression: value of the caller's variable
-        P_c_decompression__tan: value of the caller's variable
-        continuity: value of the caller's variable
-        g_s: value of the caller's variable
-        gravity: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        t_bottom: result for the caller
-        t_stance: result for the caller
-        bottom_q_r: result for the caller
-        bottom_q_rd: result for the caller
-        bottom_q_th: result for the caller
-        bottom_q_thd: result for the caller
-        liftoff_q_r: result for the caller
-        liftoff_q_rd: result for the caller
-        liftoff_q_th: result for the caller
-        liftoff_q_thd: result for the caller
-        t_bottom__tan: result for the caller
-        t_stance__tan: result for the caller
-        bottom_q_r__tan: result for the caller
-        bottom_q_rd__tan: result for the caller
-        bottom_q_th__tan: result for the caller
-        bottom_q_thd__tan: result for the caller
-        liftoff_q_r__tan: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        liftoff_q_th__tan: result for the caller
-        liftoff_q_thd__tan: result for the caller
-        passes__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 429
-    # the first half's mean momentum as a touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = (0.5)*P_c_compression + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    q_thd_eff = _x0*_x2
-    q_thd_eff__tan = (0.5)*P_c_compression__tan*_x2 - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_eff, m, l0, k_c, g_s, q_r_td__tan, q_rd_td__tan, q_thd_eff__tan, k_c__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    ab_omega = _c0[0]
-    ab_omega0_hat = _c0[1]
-    ab_a = _c0[2]
-    ab_b = _c0[3]
-    ab_phase_td = _c0[4]
-    ab_s_td = _c0[5]
-    ab_omega__tan = _c0[6]
-    ab_omega0_hat__tan = _c0[7]
-    ab_a__tan = _c0[8]
-    ab_b__tan = _c0[9]
-    ab_phase_td__tan = _c0[10]
-    ab_s_td__tan = _c0[11]
-    # eqs (79)-(81): the bottom at phase 3 pi/2
-    _x4 = (1.0/ab_omega0_hat)
-    _x30 = (1.0/l0)
-    _x5 = -ab_phase_td + (1.5)*math.pi
-    _x6 = _x4**2
-    _x7 = ab_a - ab_b
-    _x8 = _x7 + 1.0
-    _x29 = (1.0/_x8)
-    _x9 = ab_a__tan*l0 - ab_b__tan*l0
-    _x10 = (1.5)*math.pi
-    _x11 = _x4*ab_omega
-    _x12 = _x4*ab_phase_td
-    _x13 = 3.0*math.pi
-    _x14 = _x11*_x13
-    _x15 = _x12*ab_a
-    _x16 = math.sqrt(1.0 - ab_s_td**2)
-    _x17 = _x16*ab_b
-    _x18 = _x17*_x4
-    _x19 = 2.0*ab_omega
-    _x20 = 2.0*_x11
-    _x21 = _x13*ab_a
-    _x22 = _x6*ab_phase_td
-    _x23 = _x6*ab_omega
-    _x24 = P_c_compression + p_td
-    _x25 = P_c_compression__tan + p_td__tan
-    _x26 = (1.0/m)
-    _x27 = _x24*_x26
-    _x28 = _x29**2*_x30**2
-    t_bottom = _x4*_x5
-    t_bottom__tan = -_x4*ab_phase_td__tan - _x5*_x6*ab_omega0_hat__tan
-    bottom_q_r = _x8*l0
-    bottom_q_r__tan = _x9
-    bottom_q_rd = 0.0
-    bottom_q_th = _x10*_x11 - _x12*ab_omega - _x14*ab_a + _x19*(_x15 + _x18) + q_th_td
-    bottom_q_th__tan = _x16*_x20*ab_b__tan + ab_a__tan*(_x12*_x19 - _x14) + ab_omega0_hat__tan*(-_x10*_x23 + _x19*(-_x17*_x6 - _x22*ab_a) + _x21*_x23 + _x22*ab_omega) + ab_omega__tan*(_x10*_x4 - _x12 + 2.0*_x15 + 2.0*_x18 - _x21*_x4) + ab_phase_td__tan*(-_x11 + _x20*ab_a) + q_th_td__tan - _x20*ab_b*ab_s_td*ab_s_td__tan/_x16
-    p_b = _x24
-    p_b__tan = _x25
-    bottom_q_thd = _x27*_x28
-    bottom_q_thd__tan = _x25*_x26*_x28 - 2.0*_x27*_x29**3*_x30**3*_x9
-    rho_b = _x7
-    rho_b__tan = _x30*_x9
-    # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
-    _x47 = (1.0/l0)
-    _x33 = (1.0/m)
-    _x31 = (0.5)*P_c_decompression + p_b
-    _x32 = _x47**2
-    _x34 = _x32*_x33
-    _x35 = (0.5)*P_c_decompression__tan*_x34 + _x34*p_b__tan
-    _x36 = (1.0/math.sqrt(m))
-    _x37 = _x31**2
-    _x38 = 3.0*_x33*_x37*_x47**4 + k_d
-    _x42 = (1.0/_x38)
-    _x39 = math.sqrt(_x38)
-    _x40 = _x36/_x39
-    _x41 = _x31*_x32
-    _x43 = _x47**3
-    _x44 = m*(_x33**2*_x37*_x43 - g_s)
-    _x45 = _x44*_x47
-    _x46 = _x42**2
-    ba_omega = _x31*_x34
-    ba_omega__tan = _x35
-    ba_omega0_hat = _x36*_x39
-    ba_omega0_hat__tan = 3.0*_x35*_x40*_x41 + (0.5)*_x40*k_d__tan
-    ba_a_free = _x42*_x45
-    ba_a_free__tan = _x35*(-6.0*_x31*_x43*_x44*_x46 + 2.0*_x41*_x42) - _x45*_x46*k_d__tan
-    # with k_d the bottom lies below the centre a_ba of (90): the leg extends
-    if not ((rho_b < ba_a_free)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_RECOMPRESSION)
-    # E_ab of (98)
-    if continuity == 0.0:
-        # branch continuity = 0
-        _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
-        eps_ba = _c1[0]
-        eps_ba__tan = _c1[1]
-    elif continuity == 1.0:
-        # branch continuity = 1
-        _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(E_td, E_td__tan, bottom_q_r, bottom_q_r__tan, k_c, k_c__tan, k_d, k_d__tan, l0, m)
-        if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
-        eps_ba = _c2[0]
-        eps_ba__tan = _c2[1]
-    elif continuity == 2.0:
-        # branch continuity = 2
-        _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(ba_omega, ba_omega__tan, bottom_q_r, bottom_q_r__tan, g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, rho_b, rho_b__tan)
-        if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
-        eps_ba = _c3[0]
-        eps_ba__tan = _c3[1]
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    _x48 = ba_omega**2
-    _x49 = 3.0*_x48*m + k_d
-    _x60 = (1.0/_x49)
-    _x50 = _x60**2*m
-    _x51 = l0**2
-    _x52 = (1.0/_x51)
-    _x53 = -_x48*l0 + g_s
-    _x54 = 2.0*g_s - l0*(-_x48 + eps_ba)
-    _x55 = _x54*l0
-    _x56 = _x49*_x55 - _x53**2*m
-    _x57 = _x52*_x56
-    _x58 = _x60**3
-    _x59 = ba_omega*m
-    ba_b2 = -_x50*_x57
-    ba_b2__tan = _x60*eps_ba__tan*m + ba_omega__tan*(-_x50*_x52*(2.0*_x49*_x51*ba_omega + 4.0*_x53*_x59*l0 + 6.0*_x55*_x59) + 12.0*_x57*_x58*ba_omega*m**2) + k_d__tan*(-_x50*_x54/l0 + 2.0*_x52*_x56*_x58*m)
-    # eq (104): real amplitude b_ba
-    if not ((ba_b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # eq (104); eq (103), or (111) when constrained
-    _x61 = math.sqrt(ba_b2)
-    _x62 = (0.5)*ba_b2__tan/_x61
-    _x63 = (continuity == 1.0)
-    _x64 = ((1.0) if _x63 else (0.0))
-    ba_b = _x61
-    ba_b__tan = _x62
-    ba_a = ((_x61 + rho_b) if _x63 else (ba_a_free))
-    ba_a__tan = _x62*_x64 + _x64*rho_b__tan + ba_a_free__tan*((0.0) if _x63 else (1.0))
-    # eq (94): the liftoff phase of the second half
-    _c4 = geyer_liftoff_phase_jvp_a_b(ba_a, ba_b, l0, q_r_lo, ba_a__tan, ba_b__tan)
-    if _c4[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[4])
-    ba_phase_lo = _c4[0]
-    ba_s_lo = _c4[1]
-    ba_phase_lo__tan = _c4[2]
-    ba_s_lo__tan = _c4[3]
-    # eqs (90)-(94) at liftoff
-    _x65 = (1.0/ba_omega0_hat)
-    _x82 = (1.0/m)
-    _x66 = (1.5)*math.pi
-    _x67 = -_x66 + ba_phase_lo
-    _x68 = _x65**2
-    _x69 = _x65*ba_phase_lo
-    _x70 = _x65*ba_omega
-    _x71 = 3.0*math.pi
-    _x72 = _x69*ba_a
-    _x73 = math.sqrt(1.0 - ba_s_lo**2)
-    _x74 = _x65*_x73*ba_b
-    _x75 = 2.0*ba_omega
-    _x76 = -_x66*_x70 + _x69*ba_omega + _x70*_x71*ba_a - _x75*(_x72 - _x74) + bottom_q_th
-    _x77 = 2.0*_x70
-    _x78 = _x71*ba_a
-    _x79 = _x68*ba_phase_lo
-    _x80 = _x73*_x77*ba_b__tan + ba_a__tan*(3.0*math.pi*_x65*ba_omega - _x69*_x75) + ba_omega0_hat__tan*(-_x68*_x78*ba_omega + (1.5)*math.pi*_x68*ba_omega - _x75*(_x68*_x73*ba_b - _x79*ba_a) - _x79*ba_omega) + ba_omega__tan*(-_x65*_x66 + _x65*_x78 + _x69 - 2.0*_x72 + 2.0*_x74) + ba_phase_lo__tan*(_x65*ba_omega - _x77*ba_a) + bottom_q_th__tan - _x77*ba_b*ba_s_lo*ba_s_lo__tan/_x73
-    _x81 = P_c_decompression + p_b
-    _x83 = q_r_lo**2
-    _x84 = (1.0/_x83)
-    _x85 = _x82*_x84
-    _x86 = _x82*l0**2
-    _x87 = _x82*_x83
-    _x88 = _x82**2*_x84
-    _x89 = k_c - k_d
-    _x90 = (-bottom_q_r + l0)**2
-    _x91 = _x88*(2.0*P_c_decompression + 2.0*p_b)
-    t_stance = _x65*_x67 + t_bottom
-    t_stance__tan = _x65*ba_phase_lo__tan - _x67*_x68*ba_omega0_hat__tan + t_bottom__tan
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = _x76
-    liftoff_q_th__tan = _x80
-    liftoff_q_thd = _x81*_x85
-    liftoff_q_thd__tan = P_c_decompression__tan*_x85 + _x85*p_b__tan
-    q_rd_lo_sq = -_x81**2*_x88 + 2.0*_x82*k_d*l0*q_r_lo + 2.0*_x82*(E_td - 0.5*_x89*_x90) - _x86*k_d - _x87*k_d - 2.0*g_s*q_r_lo*math.cos(_x76)
-    q_rd_lo_sq__tan = 2.0*E_td__tan*_x82 - P_c_decompression__tan*_x91 + 2.0*_x80*g_s*q_r_lo*math.sin(_x76) - _x82*_x89*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x82*_x90*k_c__tan - _x91*p_b__tan + k_d__tan*(_x82*_x90 + 2.0*_x82*l0*q_r_lo - _x86 - _x87)
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # q_rd_lo^2 from the energy
-    if not ((gravity == 0.0) or (q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo: (11) without a gravity correction, the energy with one
-    _x92 = math.sqrt(1.0 - ba_s_lo**2)
-    _x93 = _x92*l0
-    _x94 = _x93*ba_omega0_hat
-    _x95 = (gravity == 0.0)
-    _x96 = math.sqrt(q_rd_lo_sq)
-    liftoff_q_rd = ((_x94*ba_b) if _x95 else (_x96))
-    liftoff_q_rd__tan = ba_b__tan*((_x94) if _x95 else (0.0)) + ba_omega0_hat__tan*((_x93*ba_b) if _x95 else (0.0)) + ba_s_lo__tan*((-ba_b*ba_omega0_hat*ba_s_lo*l0/_x92) if _x95 else (0.0)) + q_rd_lo_sq__tan*((0.0) if _x95 else ((0.5)/_x96))
-    # derivatives that are identically zero
-    bottom_q_rd__tan = 0.0
-    liftoff_q_r__tan = 0.0
-    passes__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan):
-    """Simple variable-stiffness map (Geyer et al. per half): touchdown state -> bottom and liftoff states, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan).
-
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -1009,16 +54,14 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_th_td__tan: direction: its component along q_th_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k_c__tan: direction: its component along k_c
-        k_d__tan: direction: its component along k_d
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1034,576 +77,866 @@ def geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td,
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        t_bottom__tan: derivative of t_bottom along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        bottom_q_r__tan: derivative of bottom_q_r along the direction
-        bottom_q_rd__tan: derivative of bottom_q_rd along the direction
-        bottom_q_th__tan: derivative of bottom_q_th along the direction
-        bottom_q_thd__tan: derivative of bottom_q_thd along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        P_c_compression__tan: derivative of P_c_compression along the direction
-        P_c_decompression__tan: derivative of P_c_decompression along the direction
-        passes__tan: derivative of passes along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 52
+    # Total ops: 1472
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
+            and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0)
+            or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN91 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = _x1*q_thd_td
-    _x3 = l0*q_r_td
-    _x4 = (0.5)*l0**2
-    _x5 = (0.5)*_x0
-    _x6 = g_s*m
-    _x7 = _x6*math.cos(q_th_td)
-    _x8 = m*q_thd_td**2
     p_td = _x2
-    p_td__tan = _x1*q_thd_td__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td
-    E_td = -_x3*k_c + _x4*k_c + _x5*_x8 + _x5*k_c + _x7*q_r_td + (0.5)*m*q_rd_td**2
-    E_td__tan = _x2*q_thd_td__tan - _x6*q_r_td*q_th_td__tan*math.sin(q_th_td) + k_c__tan*(-_x3 + _x4 + _x5) + m*q_rd_td*q_rd_td__tan + q_r_td__tan*(_x7 + _x8*q_r_td - k_c*l0 + k_c*q_r_td)
+    _x3 = m*q_r_td
+    d_p_td__q_r_td = 2.0*_x3*q_thd_td
+    d_p_td__q_thd_td = _x1
+    _x4 = k_c*q_r_td
+    _x5 = (0.5)*l0**2
+    _x6 = (0.5)*_x0
+    _x7 = g_s*m
+    _x8 = _x7*math.cos(q_th_td)
+    _x9 = q_thd_td**2
+    E_td = (0.5)*_x1*_x9 - _x4*l0 + _x5*k_c + _x6*k_c + _x8*q_r_td + (0.5)*m*q_rd_td**2
+    d_E_td__q_r_td = _x3*_x9 + _x4 + _x8 - k_c*l0
+    d_E_td__q_rd_td = m*q_rd_td
+    d_E_td__q_th_td = -_x7*q_r_td*math.sin(q_th_td)
+    d_E_td__q_thd_td = _x2
+    d_E_td__k_c = _x5 + _x6 - l0*q_r_td
     # fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)
-    P_c_compression = 0.0
-    P_c_decompression = 0.0
-    P_c_compression__tan = 0.0
-    P_c_decompression__tan = 0.0
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
+    _pk0 = _pki0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(((0.0) if (gravity == 0.0) else (iterations)))):
-        # loop body
-        _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
-        if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
-        _next_P_c_compression = _c0[0]
-        _next_P_c_decompression = _c0[1]
-        _next_P_c_compression__tan = _c0[2]
-        _next_P_c_decompression__tan = _c0[3]
-        _n0_0 = _next_P_c_compression
-        _n0_1 = _next_P_c_decompression
-        _n0_2 = _next_P_c_compression__tan
-        _n0_3 = _next_P_c_decompression__tan
+    _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
+    for _it0 in range(_last0 + 1):
+        (P_c_compression, P_c_decompression, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td,
+            d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c,
+            d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
+            d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
+            d_P_c_decompression__k_d, ) = _pk0
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN91 + (STATUS_NOT_CONVERGED,)
+        # the first half's mean momentum as a touchdown rate
+        _x10 = (0.5)*P_c_compression + p_td
+        _x11 = (1.0/m)
+        _x13 = (1.0/q_r_td)
+        _x12 = _x11*_x13**2
+        i_q_thd_eff = _x10*_x12
+        _pd__0 = (0.5)*_x12
+        _pd__1 = _x12
+        d_i_q_thd_eff__q_r_td = (_pd__0*d_P_c_compression__q_r_td + _pd__1*d_p_td__q_r_td
+            - 2.0*_x10*_x11*_x13**3)
+        d_i_q_thd_eff__q_rd_td = _pd__0*d_P_c_compression__q_rd_td
+        d_i_q_thd_eff__q_th_td = _pd__0*d_P_c_compression__q_th_td
+        d_i_q_thd_eff__q_thd_td = _pd__0*d_P_c_compression__q_thd_td + _pd__1*d_p_td__q_thd_td
+        d_i_q_thd_eff__k_c = _pd__0*d_P_c_compression__k_c
+        d_i_q_thd_eff__k_d = _pd__0*d_P_c_compression__k_d
+        # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
+        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
+        if _c0[30] != STATUS_OK:
+            return _NAN91 + (_c0[30],)
+        (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, _j_i_ab_omega__q_r_td, _,
+            _j_i_ab_omega__q_thd_td, _, _j_i_ab_omega0_hat__q_r_td, _, _j_i_ab_omega0_hat__q_thd_td,
+            _j_i_ab_omega0_hat__k, _j_i_ab_a__q_r_td, _, _j_i_ab_a__q_thd_td, _j_i_ab_a__k, _j_i_ab_b__q_r_td,
+            _j_i_ab_b__q_rd_td, _j_i_ab_b__q_thd_td, _j_i_ab_b__k, _j_i_ab_phase_td__q_r_td,
+            _j_i_ab_phase_td__q_rd_td, _j_i_ab_phase_td__q_thd_td, _j_i_ab_phase_td__k, _j_i_ab_s_td__q_r_td,
+            _j_i_ab_s_td__q_rd_td, _j_i_ab_s_td__q_thd_td, _j_i_ab_s_td__k, _) = _c0
+        # chain rule through geyer_solution
+        d_i_ab_omega__q_r_td = _j_i_ab_omega__q_r_td + _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_omega__q_rd_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_omega__q_th_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_omega__q_thd_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_omega__k_c = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_omega__k_d = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__k_d
+        d_i_ab_omega0_hat__q_r_td = (_j_i_ab_omega0_hat__q_r_td
+            + _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_r_td)
+        d_i_ab_omega0_hat__q_rd_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_omega0_hat__q_th_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_omega0_hat__q_thd_td = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_omega0_hat__k_c = _j_i_ab_omega0_hat__k + _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_omega0_hat__k_d = _j_i_ab_omega0_hat__q_thd_td*d_i_q_thd_eff__k_d
+        d_i_ab_a__q_r_td = _j_i_ab_a__q_r_td + _j_i_ab_a__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_a__q_rd_td = _j_i_ab_a__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_a__q_th_td = _j_i_ab_a__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_a__q_thd_td = _j_i_ab_a__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_a__k_c = _j_i_ab_a__k + _j_i_ab_a__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_a__k_d = _j_i_ab_a__q_thd_td*d_i_q_thd_eff__k_d
+        d_i_ab_b__q_r_td = _j_i_ab_b__q_r_td + _j_i_ab_b__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_b__q_rd_td = _j_i_ab_b__q_rd_td + _j_i_ab_b__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_b__q_th_td = _j_i_ab_b__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_b__q_thd_td = _j_i_ab_b__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_b__k_c = _j_i_ab_b__k + _j_i_ab_b__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_b__k_d = _j_i_ab_b__q_thd_td*d_i_q_thd_eff__k_d
+        d_i_ab_phase_td__q_r_td = _j_i_ab_phase_td__q_r_td + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_phase_td__q_rd_td = (_j_i_ab_phase_td__q_rd_td
+            + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_rd_td)
+        d_i_ab_phase_td__q_th_td = _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_phase_td__q_thd_td = _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_phase_td__k_c = _j_i_ab_phase_td__k + _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_phase_td__k_d = _j_i_ab_phase_td__q_thd_td*d_i_q_thd_eff__k_d
+        d_i_ab_s_td__q_r_td = _j_i_ab_s_td__q_r_td + _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_ab_s_td__q_rd_td = _j_i_ab_s_td__q_rd_td + _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_ab_s_td__q_th_td = _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_ab_s_td__q_thd_td = _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_ab_s_td__k_c = _j_i_ab_s_td__k + _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__k_c
+        d_i_ab_s_td__k_d = _j_i_ab_s_td__q_thd_td*d_i_q_thd_eff__k_d
+        # eqs (79)-(81): the bottom at phase 3 pi/2
+        _x14 = (1.0/i_ab_omega0_hat)
+        _x15 = -i_ab_phase_td + (1.5)*math.pi
+        i_t_bottom = _x14*_x15
+        _x16 = _x14**2
+        _pd__2 = -_x15*_x16
+        _pd__3 = -_x14
+        d_i_t_bottom__q_r_td = _pd__2*d_i_ab_omega0_hat__q_r_td + _pd__3*d_i_ab_phase_td__q_r_td
+        d_i_t_bottom__q_rd_td = _pd__2*d_i_ab_omega0_hat__q_rd_td + _pd__3*d_i_ab_phase_td__q_rd_td
+        d_i_t_bottom__q_th_td = _pd__2*d_i_ab_omega0_hat__q_th_td + _pd__3*d_i_ab_phase_td__q_th_td
+        d_i_t_bottom__q_thd_td = _pd__2*d_i_ab_omega0_hat__q_thd_td + _pd__3*d_i_ab_phase_td__q_thd_td
+        d_i_t_bottom__k_c = _pd__2*d_i_ab_omega0_hat__k_c + _pd__3*d_i_ab_phase_td__k_c
+        d_i_t_bottom__k_d = _pd__2*d_i_ab_omega0_hat__k_d + _pd__3*d_i_ab_phase_td__k_d
+        _x17 = i_ab_a - i_ab_b
+        _x18 = _x17 + 1.0
+        i_bottom_q_r = _x18*l0
+        d_i_bottom_q_r__q_r_td = d_i_ab_a__q_r_td*l0 - d_i_ab_b__q_r_td*l0
+        d_i_bottom_q_r__q_rd_td = d_i_ab_a__q_rd_td*l0 - d_i_ab_b__q_rd_td*l0
+        d_i_bottom_q_r__q_th_td = d_i_ab_a__q_th_td*l0 - d_i_ab_b__q_th_td*l0
+        d_i_bottom_q_r__q_thd_td = d_i_ab_a__q_thd_td*l0 - d_i_ab_b__q_thd_td*l0
+        d_i_bottom_q_r__k_c = d_i_ab_a__k_c*l0 - d_i_ab_b__k_c*l0
+        d_i_bottom_q_r__k_d = d_i_ab_a__k_d*l0 - d_i_ab_b__k_d*l0
+        i_bottom_q_rd = 0.0
+        _x19 = (1.5)*math.pi
+        _x20 = _x14*i_ab_omega
+        _x21 = _x14*i_ab_phase_td
+        _x22 = 3.0*math.pi
+        _x23 = _x20*_x22
+        _x24 = _x21*i_ab_a
+        _x25 = math.sqrt(1.0 - i_ab_s_td**2)
+        _x26 = _x25*i_ab_b
+        _x27 = _x14*_x26
+        _x28 = 2.0*i_ab_omega
+        i_bottom_q_th = _x19*_x20 - _x21*i_ab_omega - _x23*i_ab_a + _x28*(_x24 + _x27) + q_th_td
+        _pd__4 = _x21*_x28 - _x23
+        _x29 = 2.0*_x20
+        _pd__5 = _x25*_x29
+        _x30 = _x22*i_ab_a
+        _pd__6 = _x14*_x19 - _x14*_x30 - _x21 + 2.0*_x24 + 2.0*_x27
+        _x31 = _x16*i_ab_phase_td
+        _x32 = _x16*i_ab_omega
+        _pd__7 = -_x19*_x32 + _x28*(-_x16*_x26 - _x31*i_ab_a) + _x30*_x32 + _x31*i_ab_omega
+        _pd__8 = -_x20 + _x29*i_ab_a
+        _pd__9 = -_x29*i_ab_b*i_ab_s_td/_x25
+        d_i_bottom_q_th__q_r_td = (_pd__4*d_i_ab_a__q_r_td + _pd__5*d_i_ab_b__q_r_td
+            + _pd__6*d_i_ab_omega__q_r_td + _pd__7*d_i_ab_omega0_hat__q_r_td + _pd__8*d_i_ab_phase_td__q_r_td
+            + _pd__9*d_i_ab_s_td__q_r_td)
+        d_i_bottom_q_th__q_rd_td = (_pd__4*d_i_ab_a__q_rd_td + _pd__5*d_i_ab_b__q_rd_td
+            + _pd__6*d_i_ab_omega__q_rd_td + _pd__7*d_i_ab_omega0_hat__q_rd_td
+            + _pd__8*d_i_ab_phase_td__q_rd_td + _pd__9*d_i_ab_s_td__q_rd_td)
+        d_i_bottom_q_th__q_th_td = (_pd__4*d_i_ab_a__q_th_td + _pd__5*d_i_ab_b__q_th_td
+            + _pd__6*d_i_ab_omega__q_th_td + _pd__7*d_i_ab_omega0_hat__q_th_td
+            + _pd__8*d_i_ab_phase_td__q_th_td + _pd__9*d_i_ab_s_td__q_th_td + 1.0)
+        d_i_bottom_q_th__q_thd_td = (_pd__4*d_i_ab_a__q_thd_td + _pd__5*d_i_ab_b__q_thd_td
+            + _pd__6*d_i_ab_omega__q_thd_td + _pd__7*d_i_ab_omega0_hat__q_thd_td
+            + _pd__8*d_i_ab_phase_td__q_thd_td + _pd__9*d_i_ab_s_td__q_thd_td)
+        d_i_bottom_q_th__k_c = (_pd__4*d_i_ab_a__k_c + _pd__5*d_i_ab_b__k_c + _pd__6*d_i_ab_omega__k_c
+            + _pd__7*d_i_ab_omega0_hat__k_c + _pd__8*d_i_ab_phase_td__k_c + _pd__9*d_i_ab_s_td__k_c)
+        d_i_bottom_q_th__k_d = (_pd__4*d_i_ab_a__k_d + _pd__5*d_i_ab_b__k_d + _pd__6*d_i_ab_omega__k_d
+            + _pd__7*d_i_ab_omega0_hat__k_d + _pd__8*d_i_ab_phase_td__k_d + _pd__9*d_i_ab_s_td__k_d)
+        _x33 = P_c_compression + p_td
+        i_p_b = _x33
+        d_i_p_b__q_r_td = d_P_c_compression__q_r_td + d_p_td__q_r_td
+        d_i_p_b__q_thd_td = d_P_c_compression__q_thd_td + d_p_td__q_thd_td
+        _x34 = (1.0/m)
+        _x36 = (1.0/_x18)
+        _x37 = (1.0/l0)
+        _x35 = _x34*_x36**2*_x37**2
+        i_bottom_q_thd = _x33*_x35
+        _pd__10 = -2.0*_x33*_x34*_x36**3*_x37**3
+        _pd__11 = _x35
+        d_i_bottom_q_thd__q_r_td = _pd__10*d_i_bottom_q_r__q_r_td + _pd__11*d_i_p_b__q_r_td
+        d_i_bottom_q_thd__q_rd_td = _pd__10*d_i_bottom_q_r__q_rd_td + _pd__11*d_P_c_compression__q_rd_td
+        d_i_bottom_q_thd__q_th_td = _pd__10*d_i_bottom_q_r__q_th_td + _pd__11*d_P_c_compression__q_th_td
+        d_i_bottom_q_thd__q_thd_td = _pd__10*d_i_bottom_q_r__q_thd_td + _pd__11*d_i_p_b__q_thd_td
+        d_i_bottom_q_thd__k_c = _pd__10*d_i_bottom_q_r__k_c + _pd__11*d_P_c_compression__k_c
+        d_i_bottom_q_thd__k_d = _pd__10*d_i_bottom_q_r__k_d + _pd__11*d_P_c_compression__k_d
+        i_rho_b = _x17
+        _pd__12 = _x37
+        d_i_rho_b__q_r_td = _pd__12*d_i_bottom_q_r__q_r_td
+        d_i_rho_b__q_rd_td = _pd__12*d_i_bottom_q_r__q_rd_td
+        d_i_rho_b__q_th_td = _pd__12*d_i_bottom_q_r__q_th_td
+        d_i_rho_b__q_thd_td = _pd__12*d_i_bottom_q_r__q_thd_td
+        d_i_rho_b__k_c = _pd__12*d_i_bottom_q_r__k_c
+        d_i_rho_b__k_d = _pd__12*d_i_bottom_q_r__k_d
+        # eqs (100)-(103): omega_ba from the momentum, omega0_ba^2 = k_d/m
+        _x38 = (0.5)*P_c_decompression + i_p_b
+        _x53 = (1.0/l0)
+        _x39 = _x53**2
+        _x40 = (1.0/m)
+        _x41 = _x39*_x40
+        i_ba_omega = _x38*_x41
+        _pd__13 = (0.5)*_x41
+        _pd__14 = _x41
+        d_i_ba_omega__q_r_td = _pd__13*d_P_c_decompression__q_r_td + _pd__14*d_i_p_b__q_r_td
+        d_i_ba_omega__q_rd_td = _pd__13*d_P_c_decompression__q_rd_td + _pd__14*d_P_c_compression__q_rd_td
+        d_i_ba_omega__q_th_td = _pd__13*d_P_c_decompression__q_th_td + _pd__14*d_P_c_compression__q_th_td
+        d_i_ba_omega__q_thd_td = _pd__13*d_P_c_decompression__q_thd_td + _pd__14*d_i_p_b__q_thd_td
+        d_i_ba_omega__k_c = _pd__13*d_P_c_decompression__k_c + _pd__14*d_P_c_compression__k_c
+        d_i_ba_omega__k_d = _pd__13*d_P_c_decompression__k_d + _pd__14*d_P_c_compression__k_d
+        _x42 = (1.0/math.sqrt(m))
+        _x43 = _x38**2
+        _x44 = 3.0*_x40*_x43*_x53**4 + k_d
+        _x45 = math.sqrt(_x44)
+        i_ba_omega0_hat = _x42*_x45
+        _x46 = _x42/_x45
+        _x47 = _x38*_x39
+        _pd__15 = 3.0*_x46*_x47
+        d_i_ba_omega0_hat__q_r_td = _pd__15*d_i_ba_omega__q_r_td
+        d_i_ba_omega0_hat__q_rd_td = _pd__15*d_i_ba_omega__q_rd_td
+        d_i_ba_omega0_hat__q_th_td = _pd__15*d_i_ba_omega__q_th_td
+        d_i_ba_omega0_hat__q_thd_td = _pd__15*d_i_ba_omega__q_thd_td
+        d_i_ba_omega0_hat__k_c = _pd__15*d_i_ba_omega__k_c
+        d_i_ba_omega0_hat__k_d = _pd__15*d_i_ba_omega__k_d + (0.5)*_x46
+        _x48 = (1.0/_x44)
+        _x49 = _x53**3
+        _x50 = m*(_x40**2*_x43*_x49 - g_s)
+        _x51 = _x50*_x53
+        i_ba_a_free = _x48*_x51
+        _x52 = _x48**2
+        _pd__16 = -6.0*_x38*_x49*_x50*_x52 + 2.0*_x47*_x48
+        d_i_ba_a_free__q_r_td = _pd__16*d_i_ba_omega__q_r_td
+        d_i_ba_a_free__q_rd_td = _pd__16*d_i_ba_omega__q_rd_td
+        d_i_ba_a_free__q_th_td = _pd__16*d_i_ba_omega__q_th_td
+        d_i_ba_a_free__q_thd_td = _pd__16*d_i_ba_omega__q_thd_td
+        d_i_ba_a_free__k_c = _pd__16*d_i_ba_omega__k_c
+        d_i_ba_a_free__k_d = _pd__16*d_i_ba_omega__k_d - _x51*_x52
+        # with k_d the bottom lies below the centre a_ba of (90): the leg extends
+        if not ((i_rho_b < i_ba_a_free)):
+            return _NAN91 + (STATUS_RECOMPRESSION,)
+        # E_ab of (98)
+        if continuity == 0.0:
+            # eqs (97)-(99), E_ab the energy (27)
+            _x54 = k_c - k_d
+            _x55 = (-i_bottom_q_r + l0)**2
+            _x56 = 1.0/(l0**2*m)
+            i_eps_ba = _x56*(2.0*E_td - _x54*_x55)
+            _pd__17 = 2.0*_x56
+            _pd__18 = -_x54*_x56*(2.0*i_bottom_q_r - 2.0*l0)
+            d_i_eps_ba__q_r_td = _pd__17*d_E_td__q_r_td + _pd__18*d_i_bottom_q_r__q_r_td
+            d_i_eps_ba__q_rd_td = _pd__17*d_E_td__q_rd_td + _pd__18*d_i_bottom_q_r__q_rd_td
+            d_i_eps_ba__q_th_td = _pd__17*d_E_td__q_th_td + _pd__18*d_i_bottom_q_r__q_th_td
+            d_i_eps_ba__q_thd_td = _pd__17*d_E_td__q_thd_td + _pd__18*d_i_bottom_q_r__q_thd_td
+            _x57 = _x55*_x56
+            d_i_eps_ba__k_c = _pd__17*d_E_td__k_c + _pd__18*d_i_bottom_q_r__k_c - _x57
+            d_i_eps_ba__k_d = _pd__18*d_i_bottom_q_r__k_d + _x57
+        elif continuity == 1.0:
+            # as report
+            _x58 = k_c - k_d
+            _x59 = (-i_bottom_q_r + l0)**2
+            _x60 = 1.0/(l0**2*m)
+            i_eps_ba = _x60*(2.0*E_td - _x58*_x59)
+            _pd__19 = 2.0*_x60
+            _pd__20 = -_x58*_x60*(2.0*i_bottom_q_r - 2.0*l0)
+            d_i_eps_ba__q_r_td = _pd__19*d_E_td__q_r_td + _pd__20*d_i_bottom_q_r__q_r_td
+            d_i_eps_ba__q_rd_td = _pd__19*d_E_td__q_rd_td + _pd__20*d_i_bottom_q_r__q_rd_td
+            d_i_eps_ba__q_th_td = _pd__19*d_E_td__q_th_td + _pd__20*d_i_bottom_q_r__q_th_td
+            d_i_eps_ba__q_thd_td = _pd__19*d_E_td__q_thd_td + _pd__20*d_i_bottom_q_r__q_thd_td
+            _x61 = _x59*_x60
+            d_i_eps_ba__k_c = _pd__19*d_E_td__k_c + _pd__20*d_i_bottom_q_r__k_c - _x61
+            d_i_eps_ba__k_d = _pd__20*d_i_bottom_q_r__k_d + _x61
+        elif continuity == 2.0:
+            # eqs (97)-(99) with E_ab Geyer's energy (8) at the bottom
+            _x62 = i_ba_omega**2
+            _x71 = (1.0/l0)
+            _x63 = 2.0*_x71*g_s
+            _x64 = -2.0*_x62 + _x63
+            _x65 = i_rho_b**2
+            _x66 = (1.0/m)
+            _x67 = 3.0*_x62 + _x66*k_c
+            _x68 = k_c - k_d
+            _x69 = _x66*_x71**2
+            _x70 = _x69*(-i_bottom_q_r + l0)**2
+            i_eps_ba = _x62 + _x63 + _x64*i_rho_b + _x65*_x67 - _x68*_x70
+            _pd__21 = 6.0*_x65*i_ba_omega - 4.0*i_ba_omega*i_rho_b + 2.0*i_ba_omega
+            _pd__22 = -_x68*_x69*(2.0*i_bottom_q_r - 2.0*l0)
+            _pd__23 = _x64 + 2.0*_x67*i_rho_b
+            d_i_eps_ba__q_r_td = (_pd__21*d_i_ba_omega__q_r_td + _pd__22*d_i_bottom_q_r__q_r_td
+                + _pd__23*d_i_rho_b__q_r_td)
+            d_i_eps_ba__q_rd_td = (_pd__21*d_i_ba_omega__q_rd_td + _pd__22*d_i_bottom_q_r__q_rd_td
+                + _pd__23*d_i_rho_b__q_rd_td)
+            d_i_eps_ba__q_th_td = (_pd__21*d_i_ba_omega__q_th_td + _pd__22*d_i_bottom_q_r__q_th_td
+                + _pd__23*d_i_rho_b__q_th_td)
+            d_i_eps_ba__q_thd_td = (_pd__21*d_i_ba_omega__q_thd_td + _pd__22*d_i_bottom_q_r__q_thd_td
+                + _pd__23*d_i_rho_b__q_thd_td)
+            d_i_eps_ba__k_c = (_pd__21*d_i_ba_omega__k_c + _pd__22*d_i_bottom_q_r__k_c
+                + _pd__23*d_i_rho_b__k_c + _x65*_x66 - _x70)
+            d_i_eps_ba__k_d = (_pd__21*d_i_ba_omega__k_d + _pd__22*d_i_bottom_q_r__k_d
+                + _pd__23*d_i_rho_b__k_d + _x70)
+        else:
+            return _NAN91 + (STATUS_INVALID_INPUT,)
+        _x72 = i_ba_omega**2
+        _x73 = 3.0*_x72*m + k_d
+        _x83 = (1.0/_x73)
+        _x74 = _x83**2*m
+        _x75 = l0**2
+        _x76 = (1.0/_x75)
+        _x77 = -_x72*l0 + g_s
+        _x78 = 2.0*g_s - l0*(-_x72 + i_eps_ba)
+        _x79 = _x78*l0
+        _x80 = _x76*(_x73*_x79 - _x77**2*m)
+        i_ba_b2 = -_x74*_x80
+        _x81 = _x80*_x83**3
+        _x82 = i_ba_omega*m
+        _pd__24 = (-_x74*_x76*(2.0*_x73*_x75*i_ba_omega + 4.0*_x77*_x82*l0 + 6.0*_x79*_x82)
+            + 12.0*_x81*i_ba_omega*m**2)
+        _pd__25 = _x83*m
+        d_i_ba_b2__q_r_td = _pd__24*d_i_ba_omega__q_r_td + _pd__25*d_i_eps_ba__q_r_td
+        d_i_ba_b2__q_rd_td = _pd__24*d_i_ba_omega__q_rd_td + _pd__25*d_i_eps_ba__q_rd_td
+        d_i_ba_b2__q_th_td = _pd__24*d_i_ba_omega__q_th_td + _pd__25*d_i_eps_ba__q_th_td
+        d_i_ba_b2__q_thd_td = _pd__24*d_i_ba_omega__q_thd_td + _pd__25*d_i_eps_ba__q_thd_td
+        d_i_ba_b2__k_c = _pd__24*d_i_ba_omega__k_c + _pd__25*d_i_eps_ba__k_c
+        d_i_ba_b2__k_d = _pd__24*d_i_ba_omega__k_d + _pd__25*d_i_eps_ba__k_d - _x74*_x78/l0 + 2.0*_x81*m
+        # eq (104): real amplitude b_ba
+        if not ((i_ba_b2 > 0.0)):
+            return _NAN91 + (STATUS_NO_REAL_SOLUTION,)
+        # eq (104); eq (103), or (111) when constrained
+        _x84 = math.sqrt(i_ba_b2)
+        i_ba_b = _x84
+        _pd__26 = (0.5)/_x84
+        d_i_ba_b__q_r_td = _pd__26*d_i_ba_b2__q_r_td
+        d_i_ba_b__q_rd_td = _pd__26*d_i_ba_b2__q_rd_td
+        d_i_ba_b__q_th_td = _pd__26*d_i_ba_b2__q_th_td
+        d_i_ba_b__q_thd_td = _pd__26*d_i_ba_b2__q_thd_td
+        d_i_ba_b__k_c = _pd__26*d_i_ba_b2__k_c
+        d_i_ba_b__k_d = _pd__26*d_i_ba_b2__k_d
+        _x85 = (continuity == 1.0)
+        i_ba_a = ((_x84 + i_rho_b) if _x85 else (i_ba_a_free))
+        _pd__27 = ((0.0) if _x85 else (1.0))
+        _x86 = ((1.0) if _x85 else (0.0))
+        _pd__28 = _x86
+        _pd__29 = _x86
+        d_i_ba_a__q_r_td = (_pd__27*d_i_ba_a_free__q_r_td + _pd__28*d_i_ba_b__q_r_td
+            + _pd__29*d_i_rho_b__q_r_td)
+        d_i_ba_a__q_rd_td = (_pd__27*d_i_ba_a_free__q_rd_td + _pd__28*d_i_ba_b__q_rd_td
+            + _pd__29*d_i_rho_b__q_rd_td)
+        d_i_ba_a__q_th_td = (_pd__27*d_i_ba_a_free__q_th_td + _pd__28*d_i_ba_b__q_th_td
+            + _pd__29*d_i_rho_b__q_th_td)
+        d_i_ba_a__q_thd_td = (_pd__27*d_i_ba_a_free__q_thd_td + _pd__28*d_i_ba_b__q_thd_td
+            + _pd__29*d_i_rho_b__q_thd_td)
+        d_i_ba_a__k_c = _pd__27*d_i_ba_a_free__k_c + _pd__28*d_i_ba_b__k_c + _pd__29*d_i_rho_b__k_c
+        d_i_ba_a__k_d = _pd__27*d_i_ba_a_free__k_d + _pd__28*d_i_ba_b__k_d + _pd__29*d_i_rho_b__k_d
+        # eq (94): the liftoff phase of the second half
+        _c1 = geyer_liftoff_phase_jac_a_b(i_ba_a, i_ba_b, l0, q_r_lo)
+        if _c1[6] != STATUS_OK:
+            return _NAN91 + (_c1[6],)
+        i_ba_phase_lo = _c1[0]
+        i_ba_s_lo = _c1[1]
+        _j_i_ba_phase_lo__a = _c1[2]
+        _j_i_ba_phase_lo__b = _c1[3]
+        _j_i_ba_s_lo__a = _c1[4]
+        _j_i_ba_s_lo__b = _c1[5]
+        # chain rule through geyer_liftoff_phase
+        d_i_ba_phase_lo__q_r_td = _j_i_ba_phase_lo__a*d_i_ba_a__q_r_td + _j_i_ba_phase_lo__b*d_i_ba_b__q_r_td
+        d_i_ba_phase_lo__q_rd_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_rd_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_rd_td)
+        d_i_ba_phase_lo__q_th_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_th_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_th_td)
+        d_i_ba_phase_lo__q_thd_td = (_j_i_ba_phase_lo__a*d_i_ba_a__q_thd_td
+            + _j_i_ba_phase_lo__b*d_i_ba_b__q_thd_td)
+        d_i_ba_phase_lo__k_c = _j_i_ba_phase_lo__a*d_i_ba_a__k_c + _j_i_ba_phase_lo__b*d_i_ba_b__k_c
+        d_i_ba_phase_lo__k_d = _j_i_ba_phase_lo__a*d_i_ba_a__k_d + _j_i_ba_phase_lo__b*d_i_ba_b__k_d
+        d_i_ba_s_lo__q_r_td = _j_i_ba_s_lo__a*d_i_ba_a__q_r_td + _j_i_ba_s_lo__b*d_i_ba_b__q_r_td
+        d_i_ba_s_lo__q_rd_td = _j_i_ba_s_lo__a*d_i_ba_a__q_rd_td + _j_i_ba_s_lo__b*d_i_ba_b__q_rd_td
+        d_i_ba_s_lo__q_th_td = _j_i_ba_s_lo__a*d_i_ba_a__q_th_td + _j_i_ba_s_lo__b*d_i_ba_b__q_th_td
+        d_i_ba_s_lo__q_thd_td = _j_i_ba_s_lo__a*d_i_ba_a__q_thd_td + _j_i_ba_s_lo__b*d_i_ba_b__q_thd_td
+        d_i_ba_s_lo__k_c = _j_i_ba_s_lo__a*d_i_ba_a__k_c + _j_i_ba_s_lo__b*d_i_ba_b__k_c
+        d_i_ba_s_lo__k_d = _j_i_ba_s_lo__a*d_i_ba_a__k_d + _j_i_ba_s_lo__b*d_i_ba_b__k_d
+        # eqs (90)-(94) at liftoff
+        _x87 = (1.0/i_ba_omega0_hat)
+        _x88 = (1.5)*math.pi
+        _x89 = -_x88 + i_ba_phase_lo
+        i_t_stance = _x87*_x89 + i_t_bottom
+        _x90 = _x87**2
+        _pd__30 = -_x89*_x90
+        _pd__31 = _x87
+        d_i_t_stance__q_r_td = (_pd__30*d_i_ba_omega0_hat__q_r_td + _pd__31*d_i_ba_phase_lo__q_r_td
+            + d_i_t_bottom__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__30*d_i_ba_omega0_hat__q_rd_td + _pd__31*d_i_ba_phase_lo__q_rd_td
+            + d_i_t_bottom__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__30*d_i_ba_omega0_hat__q_th_td + _pd__31*d_i_ba_phase_lo__q_th_td
+            + d_i_t_bottom__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__30*d_i_ba_omega0_hat__q_thd_td + _pd__31*d_i_ba_phase_lo__q_thd_td
+            + d_i_t_bottom__q_thd_td)
+        d_i_t_stance__k_c = _pd__30*d_i_ba_omega0_hat__k_c + _pd__31*d_i_ba_phase_lo__k_c + d_i_t_bottom__k_c
+        d_i_t_stance__k_d = _pd__30*d_i_ba_omega0_hat__k_d + _pd__31*d_i_ba_phase_lo__k_d + d_i_t_bottom__k_d
+        i_liftoff_q_r = q_r_lo
+        _x91 = _x87*i_ba_phase_lo
+        _x92 = _x87*i_ba_omega
+        _x93 = 3.0*math.pi
+        _x94 = _x91*i_ba_a
+        _x95 = math.sqrt(1.0 - i_ba_s_lo**2)
+        _x96 = _x87*_x95*i_ba_b
+        _x97 = 2.0*i_ba_omega
+        _x98 = -_x88*_x92 + _x91*i_ba_omega + _x92*_x93*i_ba_a - _x97*(_x94 - _x96) + i_bottom_q_th
+        i_liftoff_q_th = _x98
+        _pd__32 = 3.0*math.pi*_x87*i_ba_omega - _x91*_x97
+        _x99 = 2.0*_x92
+        _pd__33 = _x95*_x99
+        _x100 = _x93*i_ba_a
+        _pd__34 = _x100*_x87 - _x87*_x88 + _x91 - 2.0*_x94 + 2.0*_x96
+        _x101 = _x90*i_ba_phase_lo
+        _pd__35 = (-_x100*_x90*i_ba_omega - _x101*i_ba_omega + (1.5)*math.pi*_x90*i_ba_omega
+            - _x97*(-_x101*i_ba_a + _x90*_x95*i_ba_b))
+        _pd__36 = _x87*i_ba_omega - _x99*i_ba_a
+        _pd__37 = -_x99*i_ba_b*i_ba_s_lo/_x95
+        d_i_liftoff_q_th__q_r_td = (_pd__32*d_i_ba_a__q_r_td + _pd__33*d_i_ba_b__q_r_td
+            + _pd__34*d_i_ba_omega__q_r_td + _pd__35*d_i_ba_omega0_hat__q_r_td
+            + _pd__36*d_i_ba_phase_lo__q_r_td + _pd__37*d_i_ba_s_lo__q_r_td + d_i_bottom_q_th__q_r_td)
+        d_i_liftoff_q_th__q_rd_td = (_pd__32*d_i_ba_a__q_rd_td + _pd__33*d_i_ba_b__q_rd_td
+            + _pd__34*d_i_ba_omega__q_rd_td + _pd__35*d_i_ba_omega0_hat__q_rd_td
+            + _pd__36*d_i_ba_phase_lo__q_rd_td + _pd__37*d_i_ba_s_lo__q_rd_td + d_i_bottom_q_th__q_rd_td)
+        d_i_liftoff_q_th__q_th_td = (_pd__32*d_i_ba_a__q_th_td + _pd__33*d_i_ba_b__q_th_td
+            + _pd__34*d_i_ba_omega__q_th_td + _pd__35*d_i_ba_omega0_hat__q_th_td
+            + _pd__36*d_i_ba_phase_lo__q_th_td + _pd__37*d_i_ba_s_lo__q_th_td + d_i_bottom_q_th__q_th_td)
+        d_i_liftoff_q_th__q_thd_td = (_pd__32*d_i_ba_a__q_thd_td + _pd__33*d_i_ba_b__q_thd_td
+            + _pd__34*d_i_ba_omega__q_thd_td + _pd__35*d_i_ba_omega0_hat__q_thd_td
+            + _pd__36*d_i_ba_phase_lo__q_thd_td + _pd__37*d_i_ba_s_lo__q_thd_td + d_i_bottom_q_th__q_thd_td)
+        d_i_liftoff_q_th__k_c = (_pd__32*d_i_ba_a__k_c + _pd__33*d_i_ba_b__k_c + _pd__34*d_i_ba_omega__k_c
+            + _pd__35*d_i_ba_omega0_hat__k_c + _pd__36*d_i_ba_phase_lo__k_c + _pd__37*d_i_ba_s_lo__k_c
+            + d_i_bottom_q_th__k_c)
+        d_i_liftoff_q_th__k_d = (_pd__32*d_i_ba_a__k_d + _pd__33*d_i_ba_b__k_d + _pd__34*d_i_ba_omega__k_d
+            + _pd__35*d_i_ba_omega0_hat__k_d + _pd__36*d_i_ba_phase_lo__k_d + _pd__37*d_i_ba_s_lo__k_d
+            + d_i_bottom_q_th__k_d)
+        _x102 = P_c_decompression + i_p_b
+        _x103 = (1.0/m)
+        _x104 = q_r_lo**2
+        _x105 = (1.0/_x104)
+        _x106 = _x103*_x105
+        i_liftoff_q_thd = _x102*_x106
+        _pd__38 = _x106
+        _pd__39 = _x106
+        d_i_liftoff_q_thd__q_r_td = _pd__38*d_P_c_decompression__q_r_td + _pd__39*d_i_p_b__q_r_td
+        d_i_liftoff_q_thd__q_rd_td = _pd__38*d_P_c_decompression__q_rd_td + _pd__39*d_P_c_compression__q_rd_td
+        d_i_liftoff_q_thd__q_th_td = _pd__38*d_P_c_decompression__q_th_td + _pd__39*d_P_c_compression__q_th_td
+        d_i_liftoff_q_thd__q_thd_td = _pd__38*d_P_c_decompression__q_thd_td + _pd__39*d_i_p_b__q_thd_td
+        d_i_liftoff_q_thd__k_c = _pd__38*d_P_c_decompression__k_c + _pd__39*d_P_c_compression__k_c
+        d_i_liftoff_q_thd__k_d = _pd__38*d_P_c_decompression__k_d + _pd__39*d_P_c_compression__k_d
+        _x107 = _x103*l0**2
+        _x108 = _x103*_x104
+        _x109 = _x103**2*_x105
+        _x110 = k_c - k_d
+        _x111 = (-i_bottom_q_r + l0)**2
+        _x112 = 2.0*g_s*q_r_lo
+        i_q_rd_lo_sq = (-_x102**2*_x109 + 2.0*_x103*k_d*l0*q_r_lo + 2.0*_x103*(E_td - 0.5*_x110*_x111)
+            - _x107*k_d - _x108*k_d - _x112*math.cos(_x98))
+        _x113 = 2.0*_x103
+        _pd__40 = _x113
+        _x114 = -_x109*(2.0*P_c_decompression + 2.0*i_p_b)
+        _pd__41 = _x114
+        _pd__42 = -_x103*_x110*(2.0*i_bottom_q_r - 2.0*l0)
+        _pd__43 = _x112*math.sin(_x98)
+        _pd__44 = _x114
+        d_i_q_rd_lo_sq__q_r_td = (_pd__40*d_E_td__q_r_td + _pd__41*d_P_c_decompression__q_r_td
+            + _pd__42*d_i_bottom_q_r__q_r_td + _pd__43*d_i_liftoff_q_th__q_r_td + _pd__44*d_i_p_b__q_r_td)
+        d_i_q_rd_lo_sq__q_rd_td = (_pd__40*d_E_td__q_rd_td + _pd__41*d_P_c_decompression__q_rd_td
+            + _pd__42*d_i_bottom_q_r__q_rd_td + _pd__43*d_i_liftoff_q_th__q_rd_td
+            + _pd__44*d_P_c_compression__q_rd_td)
+        d_i_q_rd_lo_sq__q_th_td = (_pd__40*d_E_td__q_th_td + _pd__41*d_P_c_decompression__q_th_td
+            + _pd__42*d_i_bottom_q_r__q_th_td + _pd__43*d_i_liftoff_q_th__q_th_td
+            + _pd__44*d_P_c_compression__q_th_td)
+        d_i_q_rd_lo_sq__q_thd_td = (_pd__40*d_E_td__q_thd_td + _pd__41*d_P_c_decompression__q_thd_td
+            + _pd__42*d_i_bottom_q_r__q_thd_td + _pd__43*d_i_liftoff_q_th__q_thd_td
+            + _pd__44*d_i_p_b__q_thd_td)
+        _x115 = _x103*_x111
+        d_i_q_rd_lo_sq__k_c = (_pd__40*d_E_td__k_c + _pd__41*d_P_c_decompression__k_c
+            + _pd__42*d_i_bottom_q_r__k_c + _pd__43*d_i_liftoff_q_th__k_c + _pd__44*d_P_c_compression__k_c
+            - _x115)
+        d_i_q_rd_lo_sq__k_d = (_pd__41*d_P_c_decompression__k_d + _pd__42*d_i_bottom_q_r__k_d
+            + _pd__43*d_i_liftoff_q_th__k_d + _pd__44*d_P_c_compression__k_d - _x107 - _x108 + _x113*l0*q_r_lo
+            + _x115)
+        # the leg stays above horizontal
+        if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
+            return _NAN91 + (STATUS_FALL,)
+        # q_rd_lo^2 from the energy
+        if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
+            return _NAN91 + (STATUS_ENERGY_DEFICIT,)
+        # q_rd_lo: (11) without a gravity correction, the energy with one
+        _x116 = math.sqrt(1.0 - i_ba_s_lo**2)
+        _x117 = _x116*l0
+        _x118 = _x117*i_ba_omega0_hat
+        _x119 = (gravity == 0.0)
+        _x120 = math.sqrt(i_q_rd_lo_sq)
+        i_liftoff_q_rd = ((_x118*i_ba_b) if _x119 else (_x120))
+        _pd__45 = ((_x118) if _x119 else (0.0))
+        _pd__46 = ((_x117*i_ba_b) if _x119 else (0.0))
+        _pd__47 = ((-i_ba_b*i_ba_omega0_hat*i_ba_s_lo*l0/_x116) if _x119 else (0.0))
+        _pd__48 = ((0.0) if _x119 else ((0.5)/_x120))
+        d_i_liftoff_q_rd__q_r_td = (_pd__45*d_i_ba_b__q_r_td + _pd__46*d_i_ba_omega0_hat__q_r_td
+            + _pd__47*d_i_ba_s_lo__q_r_td + _pd__48*d_i_q_rd_lo_sq__q_r_td)
+        d_i_liftoff_q_rd__q_rd_td = (_pd__45*d_i_ba_b__q_rd_td + _pd__46*d_i_ba_omega0_hat__q_rd_td
+            + _pd__47*d_i_ba_s_lo__q_rd_td + _pd__48*d_i_q_rd_lo_sq__q_rd_td)
+        d_i_liftoff_q_rd__q_th_td = (_pd__45*d_i_ba_b__q_th_td + _pd__46*d_i_ba_omega0_hat__q_th_td
+            + _pd__47*d_i_ba_s_lo__q_th_td + _pd__48*d_i_q_rd_lo_sq__q_th_td)
+        d_i_liftoff_q_rd__q_thd_td = (_pd__45*d_i_ba_b__q_thd_td + _pd__46*d_i_ba_omega0_hat__q_thd_td
+            + _pd__47*d_i_ba_s_lo__q_thd_td + _pd__48*d_i_q_rd_lo_sq__q_thd_td)
+        d_i_liftoff_q_rd__k_c = (_pd__45*d_i_ba_b__k_c + _pd__46*d_i_ba_omega0_hat__k_c
+            + _pd__47*d_i_ba_s_lo__k_c + _pd__48*d_i_q_rd_lo_sq__k_c)
+        d_i_liftoff_q_rd__k_d = (_pd__45*d_i_ba_b__k_d + _pd__46*d_i_ba_omega0_hat__k_d
+            + _pd__47*d_i_ba_s_lo__k_d + _pd__48*d_i_q_rd_lo_sq__k_d)
+        if _conv0 or _it0 == _last0:
+            break
+        # the virtual gravity effect of each half
+        if gravity == 0.0:
+            i_P_new1 = 0.0
+            i_P_new2 = 0.0
+            # tangents as every branch names them
+            d_i_P_new1__q_r_td = 0.0
+            d_i_P_new1__q_rd_td = 0.0
+            d_i_P_new1__q_th_td = 0.0
+            d_i_P_new1__q_thd_td = 0.0
+            d_i_P_new1__k_c = 0.0
+            d_i_P_new1__k_d = 0.0
+            d_i_P_new2__q_r_td = 0.0
+            d_i_P_new2__q_rd_td = 0.0
+            d_i_P_new2__q_th_td = 0.0
+            d_i_P_new2__q_thd_td = 0.0
+            d_i_P_new2__k_c = 0.0
+            d_i_P_new2__k_d = 0.0
+        elif gravity == 1.0:
+            # eq (65) on each half
+            _x121 = g_s*m
+            _x122 = _x121*math.sin(i_bottom_q_th)
+            _x123 = _x122*i_bottom_q_r
+            _x124 = _x121*math.sin(q_th_td)
+            _x125 = _x124*q_r_td
+            _x126 = (0.5)*i_t_bottom
+            i_P_new1 = _x126*(_x123 + _x125)
+            _pd__49 = _x122*_x126
+            _x127 = _x121*_x126
+            _x128 = i_bottom_q_r*math.cos(i_bottom_q_th)
+            _pd__50 = _x127*_x128
+            _x129 = (0.5)*_x123
+            _pd__51 = (0.5)*_x125 + _x129
+            d_i_P_new1__q_r_td = (_pd__49*d_i_bottom_q_r__q_r_td + _pd__50*d_i_bottom_q_th__q_r_td
+                + _pd__51*d_i_t_bottom__q_r_td + _x124*_x126)
+            d_i_P_new1__q_rd_td = (_pd__49*d_i_bottom_q_r__q_rd_td + _pd__50*d_i_bottom_q_th__q_rd_td
+                + _pd__51*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_pd__49*d_i_bottom_q_r__q_th_td + _pd__50*d_i_bottom_q_th__q_th_td
+                + _pd__51*d_i_t_bottom__q_th_td + _x127*q_r_td*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_pd__49*d_i_bottom_q_r__q_thd_td + _pd__50*d_i_bottom_q_th__q_thd_td
+                + _pd__51*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = (_pd__49*d_i_bottom_q_r__k_c + _pd__50*d_i_bottom_q_th__k_c
+                + _pd__51*d_i_t_bottom__k_c)
+            d_i_P_new1__k_d = (_pd__49*d_i_bottom_q_r__k_d + _pd__50*d_i_bottom_q_th__k_d
+                + _pd__51*d_i_t_bottom__k_d)
+            _x130 = _x121*q_r_lo
+            _x131 = _x130*math.sin(i_liftoff_q_th)
+            _x132 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x132*(_x123 + _x131)
+            _pd__52 = _x122*_x132
+            _pd__53 = _x121*_x128*_x132
+            _pd__54 = _x130*_x132*math.cos(i_liftoff_q_th)
+            _x133 = _x129 + (0.5)*_x131
+            _pd__55 = -_x133
+            _pd__56 = _x133
+            d_i_P_new2__q_r_td = (_pd__52*d_i_bottom_q_r__q_r_td + _pd__53*d_i_bottom_q_th__q_r_td
+                + _pd__54*d_i_liftoff_q_th__q_r_td + _pd__55*d_i_t_bottom__q_r_td
+                + _pd__56*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_pd__52*d_i_bottom_q_r__q_rd_td + _pd__53*d_i_bottom_q_th__q_rd_td
+                + _pd__54*d_i_liftoff_q_th__q_rd_td + _pd__55*d_i_t_bottom__q_rd_td
+                + _pd__56*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_pd__52*d_i_bottom_q_r__q_th_td + _pd__53*d_i_bottom_q_th__q_th_td
+                + _pd__54*d_i_liftoff_q_th__q_th_td + _pd__55*d_i_t_bottom__q_th_td
+                + _pd__56*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_pd__52*d_i_bottom_q_r__q_thd_td + _pd__53*d_i_bottom_q_th__q_thd_td
+                + _pd__54*d_i_liftoff_q_th__q_thd_td + _pd__55*d_i_t_bottom__q_thd_td
+                + _pd__56*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_pd__52*d_i_bottom_q_r__k_c + _pd__53*d_i_bottom_q_th__k_c
+                + _pd__54*d_i_liftoff_q_th__k_c + _pd__55*d_i_t_bottom__k_c + _pd__56*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_pd__52*d_i_bottom_q_r__k_d + _pd__53*d_i_bottom_q_th__k_d
+                + _pd__54*d_i_liftoff_q_th__k_d + _pd__55*d_i_t_bottom__k_d + _pd__56*d_i_t_stance__k_d)
+        elif gravity == 2.0:
+            # eq (76) on each half, the average leg length of (11) on it
+            _x134 = math.cos(i_ab_phase_td)
+            _x135 = i_ab_a + 1.0
+            _x136 = (1.5)*math.pi
+            _x137 = l0*(_x134*i_ab_b + _x135*_x136 - _x135*i_ab_phase_td)
+            _x138 = (1.0/i_ab_omega0_hat)
+            _x139 = -_x138*i_ab_phase_td + (1.5)*math.pi*_x138
+            _x140 = (1.0/_x139)
+            _x141 = _x138*_x140
+            _x142 = _x137*_x141
+            _i_L1 = _x142
+            _x143 = -_x136
+            _x144 = _x141*l0
+            _pd__57 = _x144*(-_x143 - i_ab_phase_td)
+            _pd__58 = _x134*_x144
+            _x145 = _x138**2
+            _x146 = _x137*_x145
+            _x147 = _x140**2
+            _pd__59 = _x137*_x138*_x147*(-_x145*i_ab_phase_td + (1.5)*math.pi*_x145) - _x140*_x146
+            _pd__60 = _x144*(-_x135 - i_ab_b*math.sin(i_ab_phase_td)) + _x146*_x147
+            _d_i_L1__q_r_td = (_pd__57*d_i_ab_a__q_r_td + _pd__58*d_i_ab_b__q_r_td
+                + _pd__59*d_i_ab_omega0_hat__q_r_td + _pd__60*d_i_ab_phase_td__q_r_td)
+            _d_i_L1__q_rd_td = (_pd__57*d_i_ab_a__q_rd_td + _pd__58*d_i_ab_b__q_rd_td
+                + _pd__59*d_i_ab_omega0_hat__q_rd_td + _pd__60*d_i_ab_phase_td__q_rd_td)
+            _d_i_L1__q_th_td = (_pd__57*d_i_ab_a__q_th_td + _pd__58*d_i_ab_b__q_th_td
+                + _pd__59*d_i_ab_omega0_hat__q_th_td + _pd__60*d_i_ab_phase_td__q_th_td)
+            _d_i_L1__q_thd_td = (_pd__57*d_i_ab_a__q_thd_td + _pd__58*d_i_ab_b__q_thd_td
+                + _pd__59*d_i_ab_omega0_hat__q_thd_td + _pd__60*d_i_ab_phase_td__q_thd_td)
+            _d_i_L1__k_c = (_pd__57*d_i_ab_a__k_c + _pd__58*d_i_ab_b__k_c + _pd__59*d_i_ab_omega0_hat__k_c
+                + _pd__60*d_i_ab_phase_td__k_c)
+            _d_i_L1__k_d = (_pd__57*d_i_ab_a__k_d + _pd__58*d_i_ab_b__k_d + _pd__59*d_i_ab_omega0_hat__k_d
+                + _pd__60*d_i_ab_phase_td__k_d)
+            _x148 = math.cos(i_ba_phase_lo)
+            _x149 = i_ba_a + 1.0
+            _x150 = l0*(-_x136*_x149 - _x148*i_ba_b + _x149*i_ba_phase_lo)
+            _x151 = (1.0/i_ba_omega0_hat)
+            _x152 = -_x136*_x151 + _x151*i_ba_phase_lo
+            _x153 = (1.0/_x152)
+            _x154 = _x151*_x153
+            _x155 = _x150*_x154
+            _i_L2 = _x155
+            _x156 = _x154*l0
+            _pd__61 = _x156*(_x143 + i_ba_phase_lo)
+            _pd__62 = -_x148*_x156
+            _x157 = _x151**2
+            _x158 = _x150*_x157
+            _x159 = _x153**2
+            _pd__63 = _x150*_x151*_x159*(-_x136*_x157 + _x157*i_ba_phase_lo) - _x153*_x158
+            _pd__64 = _x156*(_x149 + i_ba_b*math.sin(i_ba_phase_lo)) - _x158*_x159
+            _d_i_L2__q_r_td = (_pd__61*d_i_ba_a__q_r_td + _pd__62*d_i_ba_b__q_r_td
+                + _pd__63*d_i_ba_omega0_hat__q_r_td + _pd__64*d_i_ba_phase_lo__q_r_td)
+            _d_i_L2__q_rd_td = (_pd__61*d_i_ba_a__q_rd_td + _pd__62*d_i_ba_b__q_rd_td
+                + _pd__63*d_i_ba_omega0_hat__q_rd_td + _pd__64*d_i_ba_phase_lo__q_rd_td)
+            _d_i_L2__q_th_td = (_pd__61*d_i_ba_a__q_th_td + _pd__62*d_i_ba_b__q_th_td
+                + _pd__63*d_i_ba_omega0_hat__q_th_td + _pd__64*d_i_ba_phase_lo__q_th_td)
+            _d_i_L2__q_thd_td = (_pd__61*d_i_ba_a__q_thd_td + _pd__62*d_i_ba_b__q_thd_td
+                + _pd__63*d_i_ba_omega0_hat__q_thd_td + _pd__64*d_i_ba_phase_lo__q_thd_td)
+            _d_i_L2__k_c = (_pd__61*d_i_ba_a__k_c + _pd__62*d_i_ba_b__k_c + _pd__63*d_i_ba_omega0_hat__k_c
+                + _pd__64*d_i_ba_phase_lo__k_c)
+            _d_i_L2__k_d = (_pd__61*d_i_ba_a__k_d + _pd__62*d_i_ba_b__k_d + _pd__63*d_i_ba_omega0_hat__k_d
+                + _pd__64*d_i_ba_phase_lo__k_d)
+            _x160 = g_s*m
+            _x161 = _x160*math.sin(i_bottom_q_th)
+            _x162 = _x142*_x161
+            _x163 = _x160*math.sin(q_th_td)
+            _x164 = _x142*_x163
+            _x165 = (0.5)*i_t_bottom
+            i_P_new1 = _x165*(_x162 + _x164)
+            _pd__65 = _x165*(_x161 + _x163)
+            _x166 = _x160*math.cos(i_bottom_q_th)
+            _x167 = _x142*_x165
+            _pd__66 = _x166*_x167
+            _pd__67 = (0.5)*_x162 + (0.5)*_x164
+            d_i_P_new1__q_r_td = (_d_i_L1__q_r_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_r_td
+                + _pd__67*d_i_t_bottom__q_r_td)
+            d_i_P_new1__q_rd_td = (_d_i_L1__q_rd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_rd_td
+                + _pd__67*d_i_t_bottom__q_rd_td)
+            d_i_P_new1__q_th_td = (_d_i_L1__q_th_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_th_td
+                + _pd__67*d_i_t_bottom__q_th_td + _x160*_x167*math.cos(q_th_td))
+            d_i_P_new1__q_thd_td = (_d_i_L1__q_thd_td*_pd__65 + _pd__66*d_i_bottom_q_th__q_thd_td
+                + _pd__67*d_i_t_bottom__q_thd_td)
+            d_i_P_new1__k_c = _d_i_L1__k_c*_pd__65 + _pd__66*d_i_bottom_q_th__k_c + _pd__67*d_i_t_bottom__k_c
+            d_i_P_new1__k_d = _d_i_L1__k_d*_pd__65 + _pd__66*d_i_bottom_q_th__k_d + _pd__67*d_i_t_bottom__k_d
+            _x168 = _x155*_x161
+            _x169 = _x160*math.sin(i_liftoff_q_th)
+            _x170 = _x155*_x169
+            _x171 = -0.5*i_t_bottom + (0.5)*i_t_stance
+            i_P_new2 = _x171*(_x168 + _x170)
+            _pd__68 = _x171*(_x161 + _x169)
+            _x172 = _x155*_x171
+            _pd__69 = _x166*_x172
+            _pd__70 = _x160*_x172*math.cos(i_liftoff_q_th)
+            _x173 = (0.5)*_x168 + (0.5)*_x170
+            _pd__71 = -_x173
+            _pd__72 = _x173
+            d_i_P_new2__q_r_td = (_d_i_L2__q_r_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_r_td
+                + _pd__70*d_i_liftoff_q_th__q_r_td + _pd__71*d_i_t_bottom__q_r_td
+                + _pd__72*d_i_t_stance__q_r_td)
+            d_i_P_new2__q_rd_td = (_d_i_L2__q_rd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_rd_td
+                + _pd__70*d_i_liftoff_q_th__q_rd_td + _pd__71*d_i_t_bottom__q_rd_td
+                + _pd__72*d_i_t_stance__q_rd_td)
+            d_i_P_new2__q_th_td = (_d_i_L2__q_th_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_th_td
+                + _pd__70*d_i_liftoff_q_th__q_th_td + _pd__71*d_i_t_bottom__q_th_td
+                + _pd__72*d_i_t_stance__q_th_td)
+            d_i_P_new2__q_thd_td = (_d_i_L2__q_thd_td*_pd__68 + _pd__69*d_i_bottom_q_th__q_thd_td
+                + _pd__70*d_i_liftoff_q_th__q_thd_td + _pd__71*d_i_t_bottom__q_thd_td
+                + _pd__72*d_i_t_stance__q_thd_td)
+            d_i_P_new2__k_c = (_d_i_L2__k_c*_pd__68 + _pd__69*d_i_bottom_q_th__k_c
+                + _pd__70*d_i_liftoff_q_th__k_c + _pd__71*d_i_t_bottom__k_c + _pd__72*d_i_t_stance__k_c)
+            d_i_P_new2__k_d = (_d_i_L2__k_d*_pd__68 + _pd__69*d_i_bottom_q_th__k_d
+                + _pd__70*d_i_liftoff_q_th__k_d + _pd__71*d_i_t_bottom__k_d + _pd__72*d_i_t_stance__k_d)
+        else:
+            return _NAN91 + (STATUS_INVALID_INPUT,)
+        # next values
+        P_c_compression__next = i_P_new1
+        P_c_decompression__next = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-        P_c_compression = _n0_0
-        P_c_decompression = _n0_1
-        P_c_compression__tan = _n0_2
-        P_c_decompression__tan = _n0_3
+        _conv0 = (tol > 0.0 and (abs(P_c_compression__next - P_c_compression)
+            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(P_c_decompression__next
+            - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
+        _pkn0 = (P_c_compression__next, P_c_decompression__next, d_i_P_new1__q_r_td, d_i_P_new1__q_rd_td,
+            d_i_P_new1__q_th_td, d_i_P_new1__q_thd_td, d_i_P_new1__k_c, d_i_P_new1__k_d, d_i_P_new2__q_r_td,
+            d_i_P_new2__q_rd_td, d_i_P_new2__q_th_td, d_i_P_new2__q_thd_td, d_i_P_new2__k_c, d_i_P_new2__k_d,
+            )
+        _pk0 = _pkn0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # continuation
-    _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_td, E_td__tan, P_c_compression, P_c_compression__tan, P_c_decompression, P_c_decompression__tan, continuity, g_s, gravity, k_c, k_c__tan, k_d, k_d__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan)
-    if _c1[21] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[21])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    t_bottom__tan = _c1[10]
-    t_stance__tan = _c1[11]
-    bottom_q_r__tan = _c1[12]
-    bottom_q_rd__tan = _c1[13]
-    bottom_q_th__tan = _c1[14]
-    bottom_q_thd__tan = _c1[15]
-    liftoff_q_r__tan = _c1[16]
-    liftoff_q_rd__tan = _c1[17]
-    liftoff_q_th__tan = _c1[18]
-    liftoff_q_thd__tan = _c1[19]
-    passes__tan = _c1[20]
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def bottom_quartic_jvp_p_E_ab_k_c_0(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, p, p__tan, qb, qb__tan):
-    """loop body of bottom_quartic_jvp_p_E_ab_k_c (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ab: value of the caller's variable
-        E_ab__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p: value of the caller's variable
-        p__tan: value of the caller's variable
-        qb: value of the caller's variable
-        qb__tan: value of the caller's variable
-
-    Returns a tuple:
-        _next_qb: result for the caller
-        _next_qb__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 75
-    _x3 = (1.0/qb)
-    _x0 = _x3**3
-    _x1 = (1.0/m)
-    _x2 = _x1*p**2
-    slope = -_x0*_x2 + g_s*m - k_c*l0 + k_c*qb
-    slope__tan = -2.0*_x0*_x1*p*p__tan + k_c__tan*(-l0 + qb) + qb__tan*(3.0*_x2*_x3**4 + k_c)
-    # V decreasing left of the root
-    if not ((slope < 0.0)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # next values
-    _x4 = (1.0/slope)
-    _x5 = g_s*m
-    _x6 = k_c*qb
-    _x7 = (0.5)*l0**2
-    _x8 = qb**2
-    _x9 = (0.5)*_x8
-    _x10 = (1.0/_x8)
-    _x11 = (1.0/m)
-    _x12 = _x11*p**2
-    _x13 = -E_ab + (0.5)*_x10*_x12 + _x5*qb - _x6*l0 + _x7*k_c + _x9*k_c
-    _next_qb = -_x13*_x4 + qb
-    _next_qb__tan = E_ab__tan*_x4 - _x10*_x11*_x4*p*p__tan + _x13*_x4**2*slope__tan - _x4*k_c__tan*(_x7 + _x9 - l0*qb) + qb__tan*(-_x4*(-_x12/qb**3 + _x5 + _x6 - k_c*l0) + 1.0)
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_qb, _next_qb__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def bottom_quartic_jvp_p_E_ab_k_c_1(l0, qb, qb__tan):
-    """continuation of bottom_quartic_jvp_p_E_ab_k_c (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        l0: value of the caller's variable
-        qb: value of the caller's variable
-        qb__tan: value of the caller's variable
-
-    Returns a tuple:
-        q_r_b: result for the caller
-        q_r_b__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    q_r_b = qb
-    q_r_b__tan = qb__tan
-    # the bottom root is at most l0
-    if not ((qb <= l0)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # (internal helper: its callers check that their outputs are finite)
-    return (q_r_b, q_r_b__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def bottom_quartic_jvp_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s, p__tan, E_ab__tan, k_c__tan):
-    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), with the derivative of every output along the direction (p__tan, E_ab__tan, k_c__tan).
-
-    Report equations: 153.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        p: angular momentum p_th [kg m^2/s]
-        E_ab: total energy E_ab [J]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        p__tan: direction: its component along p
-        E_ab__tan: direction: its component along E_ab
-        k_c__tan: direction: its component along k_c
-
-    Returns a tuple:
-        q_r_b: bottom leg length of (153) [m]
-        q_r_b__tan: derivative of q_r_b along the direction
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 237
-    # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(p__tan) and math.isfinite(E_ab__tan) and math.isfinite(k_c__tan) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))):
-        return (NAN, NAN, STATUS_INVALID_INPUT)
-    # a start left of the root: V >= E there
-    _x74 = (1.0/k_c)
-    _x0 = (0.5)*l0
-    _x1 = g_s*m
-    _x2 = _x1*_x74
-    _x3 = (0.5)*_x2
-    _x4 = (1.0/math.sqrt(k_c))
-    _x5 = _x2 - l0
-    _x6 = -_x5
-    _x7 = _x6**2
-    _x8 = _x7*k_c
-    _x9 = _x1*_x6
-    _x10 = l0**2
-    _x11 = _x10*k_c
-    _x12 = -2.0*E_ab + _x11
-    _x13 = -_x12 + 2.0*_x6*k_c*l0 - _x8 - 2.0*_x9
-    _x14 = math.sqrt(_x13)
-    _x15 = _x14*_x4
-    _x16 = -E_ab + (0.5)*_x11
-    _x17 = -_x16 + _x6*k_c*l0 - 0.5*_x8 - _x9
-    _x18 = (1.0/math.sqrt(_x17))
-    _x19 = math.sqrt(2.0)
-    _x20 = (1.0/math.sqrt(m))
-    _x21 = _x19*_x20
-    _x22 = _x21*abs(p)
-    _x23 = _x18*_x22
-    _x24 = _x15 + _x5
-    _x25 = (0.0 if p == 0 else math.copysign(1, p))
-    _x26 = _x18*_x21
-    _x27 = (0.5)*math.atan2(0.0, _x13)
-    _x28 = math.sin(_x27)
-    _x29 = _x5**2
-    _x30 = _x29*k_c
-    _x31 = _x1*_x5
-    _x32 = _x5*l0
-    _x33 = _x32*k_c
-    _x34 = _x12 + _x30 - 2.0*_x31 + 2.0*_x33
-    _x35 = (0.0 if _x34 == 0 else math.copysign(1, _x34))
-    _x36 = math.sqrt(_x34/_x35)
-    _x37 = (0.5)*math.atan2(0.0, _x17)
-    _x38 = math.sin(_x37)
-    _x39 = p/_x25
-    _x40 = (0.5)*_x39
-    _x41 = _x16 + (0.5)*_x30 - _x31 + _x33
-    _x42 = (0.0 if _x41 == 0 else math.copysign(1, _x41))
-    _x43 = _x41/_x42
-    _x44 = (1.0/math.sqrt(_x43))
-    _x45 = _x21*_x44
-    _x46 = _x40*_x45
-    _x47 = _x28*_x36*_x4 - _x38*_x46
-    _x48 = math.cos(_x37)
-    _x49 = math.cos(_x27)
-    _x50 = _x36*_x4*_x49 + _x46*_x48 + _x5
-    _x51 = _x24 + _x26*_x40
-    _x52 = (1.0/_x51)
-    _x53 = (0.0 if _x51 == 0 else math.copysign(1, _x51))
-    _x54 = (0.5)*_x52*_x53
-    _x55 = (0.5)*_x4
-    _x56 = _x55/_x14
-    _x57 = _x22/_x17**(1.5)
-    _x58 = (1.0/_x36)
-    _x59 = _x35*_x58
-    _x60 = _x4*_x59
-    _x61 = (0.25)*_x21*_x39*_x42/_x43**(1.5)
-    _x62 = _x38*_x61
-    _x63 = _x48*_x61
-    _x64 = _x74**2
-    _x65 = _x1*_x64
-    _x66 = k_c**(-1.5)
-    _x67 = _x64*g_s**2*m**2
-    _x68 = _x2*l0
-    _x69 = (0.5)*_x10 + _x67 - _x68
-    _x70 = (0.5)*_x36*_x66
-    _x71 = _x2*_x5
-    _x72 = _x10 + _x29 + 2.0*_x32 + 2.0*_x67 - 2.0*_x68 - 2.0*_x71
-    _x73 = (0.5)*_x29 + _x32 + _x69 - _x71
-    q_start = _x0 - 0.5*_x15 + (0.25)*_x23 - _x3 + (0.5)*abs((0.5)*_x23 + _x24)
-    q_start__tan = E_ab__tan*((0.5)*_x52*_x53*(_x47*(-_x28*_x60 - _x62) + _x50*(-_x49*_x60 + _x63)) - _x56 - 0.125*_x57) + k_c__tan*((0.25)*_x14*_x66 + _x54*(_x47*(_x28*_x55*_x59*_x72 - _x28*_x70 + _x62*_x73) + _x50*((0.5)*_x35*_x4*_x49*_x58*_x72 - _x49*_x70 - _x63*_x73 - _x65)) - _x56*(-_x2*_x6 + _x6*l0 - _x69 - 0.5*_x7) + (0.25)*_x57*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x67 + (0.25)*_x7) + (0.5)*_x65) + p__tan*((0.25)*_x25*_x26 + _x54*((0.5)*_x19*_x20*_x25*_x44*_x48*_x50 - 0.5*_x25*_x38*_x45*_x47))
-    # E_ab above the minimum of the potential
-    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0) + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
-        return (NAN, NAN, STATUS_NO_REAL_SOLUTION)
-    # Newton's method on V - E: monotone from the left
-    qb = q_start
-    qb__tan = q_start__tan
-    passes = 0.0
-    _conv0 = False
-    for _it0 in range(int(60.0)):
-        # loop body
-        _c0 = bottom_quartic_jvp_p_E_ab_k_c_0(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, p, p__tan, qb, qb__tan)
-        if _c0[2] != STATUS_OK:
-            return (NAN, NAN, _c0[2])
-        _next_qb = _c0[0]
-        _next_qb__tan = _c0[1]
-        _n0_0 = _next_qb
-        _n0_1 = _next_qb__tan
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
-        qb = _n0_0
-        qb__tan = _n0_1
-        passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-        return (NAN, NAN, STATUS_NOT_CONVERGED)
-    # continuation
-    _c1 = bottom_quartic_jvp_p_E_ab_k_c_1(l0, qb, qb__tan)
-    if _c1[2] != STATUS_OK:
-        return (NAN, NAN, _c1[2])
-    q_r_b = _c1[0]
-    q_r_b__tan = _c1[1]
-    # (internal helper: its callers check that their outputs are finite)
-    return (q_r_b, q_r_b__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol):
-    """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
-
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
-        iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
-        P_c_decompression: virtual gravity effect of the second half [N m s]
-        passes: fixed-point passes run (0 unless gravity)
-        d_t_bottom__q_r_td: d t_bottom / d q_r_td
-        d_t_bottom__q_rd_td: d t_bottom / d q_rd_td
-        d_t_bottom__q_th_td: d t_bottom / d q_th_td
-        d_t_bottom__q_thd_td: d t_bottom / d q_thd_td
-        d_t_bottom__k_c: d t_bottom / d k_c
-        d_t_bottom__k_d: d t_bottom / d k_d
-        d_t_stance__q_r_td: d t_stance / d q_r_td
-        d_t_stance__q_rd_td: d t_stance / d q_rd_td
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__q_thd_td: d t_stance / d q_thd_td
-        d_t_stance__k_c: d t_stance / d k_c
-        d_t_stance__k_d: d t_stance / d k_d
-        d_bottom_q_r__q_r_td: d bottom_q_r / d q_r_td
-        d_bottom_q_r__q_rd_td: d bottom_q_r / d q_rd_td
-        d_bottom_q_r__q_th_td: d bottom_q_r / d q_th_td
-        d_bottom_q_r__q_thd_td: d bottom_q_r / d q_thd_td
-        d_bottom_q_r__k_c: d bottom_q_r / d k_c
-        d_bottom_q_r__k_d: d bottom_q_r / d k_d
-        d_bottom_q_rd__q_r_td: d bottom_q_rd / d q_r_td
-        d_bottom_q_rd__q_rd_td: d bottom_q_rd / d q_rd_td
-        d_bottom_q_rd__q_th_td: d bottom_q_rd / d q_th_td
-        d_bottom_q_rd__q_thd_td: d bottom_q_rd / d q_thd_td
-        d_bottom_q_rd__k_c: d bottom_q_rd / d k_c
-        d_bottom_q_rd__k_d: d bottom_q_rd / d k_d
-        d_bottom_q_th__q_r_td: d bottom_q_th / d q_r_td
-        d_bottom_q_th__q_rd_td: d bottom_q_th / d q_rd_td
-        d_bottom_q_th__q_th_td: d bottom_q_th / d q_th_td
-        d_bottom_q_th__q_thd_td: d bottom_q_th / d q_thd_td
-        d_bottom_q_th__k_c: d bottom_q_th / d k_c
-        d_bottom_q_th__k_d: d bottom_q_th / d k_d
-        d_bottom_q_thd__q_r_td: d bottom_q_thd / d q_r_td
-        d_bottom_q_thd__q_rd_td: d bottom_q_thd / d q_rd_td
-        d_bottom_q_thd__q_th_td: d bottom_q_thd / d q_th_td
-        d_bottom_q_thd__q_thd_td: d bottom_q_thd / d q_thd_td
-        d_bottom_q_thd__k_c: d bottom_q_thd / d k_c
-        d_bottom_q_thd__k_d: d bottom_q_thd / d k_d
-        d_liftoff_q_r__q_r_td: d liftoff_q_r / d q_r_td
-        d_liftoff_q_r__q_rd_td: d liftoff_q_r / d q_rd_td
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__q_thd_td: d liftoff_q_r / d q_thd_td
-        d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
-        d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
-        d_liftoff_q_rd__q_r_td: d liftoff_q_rd / d q_r_td
-        d_liftoff_q_rd__q_rd_td: d liftoff_q_rd / d q_rd_td
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__q_thd_td: d liftoff_q_rd / d q_thd_td
-        d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
-        d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
-        d_liftoff_q_th__q_r_td: d liftoff_q_th / d q_r_td
-        d_liftoff_q_th__q_rd_td: d liftoff_q_th / d q_rd_td
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__q_thd_td: d liftoff_q_th / d q_thd_td
-        d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
-        d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
-        d_liftoff_q_thd__q_r_td: d liftoff_q_thd / d q_r_td
-        d_liftoff_q_thd__q_rd_td: d liftoff_q_thd / d q_rd_td
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__q_thd_td: d liftoff_q_thd / d q_thd_td
-        d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
-        d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
-        d_P_c_compression__q_r_td: d P_c_compression / d q_r_td
-        d_P_c_compression__q_rd_td: d P_c_compression / d q_rd_td
-        d_P_c_compression__q_th_td: d P_c_compression / d q_th_td
-        d_P_c_compression__q_thd_td: d P_c_compression / d q_thd_td
-        d_P_c_compression__k_c: d P_c_compression / d k_c
-        d_P_c_compression__k_d: d P_c_compression / d k_d
-        d_P_c_decompression__q_r_td: d P_c_decompression / d q_r_td
-        d_P_c_decompression__q_rd_td: d P_c_decompression / d q_rd_td
-        d_P_c_decompression__q_th_td: d P_c_decompression / d q_th_td
-        d_P_c_decompression__q_thd_td: d P_c_decompression / d q_thd_td
-        d_P_c_decompression__k_c: d P_c_decompression / d k_c
-        d_P_c_decompression__k_d: d P_c_decompression / d k_d
-        d_passes__q_r_td: d passes / d q_r_td
-        d_passes__q_rd_td: d passes / d q_rd_td
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__q_thd_td: d passes / d q_thd_td
-        d_passes__k_c: d passes / d k_c
-        d_passes__k_d: d passes / d k_d
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to q_r_td
-    _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-    d_t_bottom__q_r_td = _c0[13]
-    d_t_stance__q_r_td = _c0[14]
-    d_bottom_q_r__q_r_td = _c0[15]
-    d_bottom_q_rd__q_r_td = _c0[16]
-    d_bottom_q_th__q_r_td = _c0[17]
-    d_bottom_q_thd__q_r_td = _c0[18]
-    d_liftoff_q_r__q_r_td = _c0[19]
-    d_liftoff_q_rd__q_r_td = _c0[20]
-    d_liftoff_q_th__q_r_td = _c0[21]
-    d_liftoff_q_thd__q_r_td = _c0[22]
-    d_P_c_compression__q_r_td = _c0[23]
-    d_P_c_decompression__q_r_td = _c0[24]
-    d_passes__q_r_td = _c0[25]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    P_c_compression = _c0[10]
-    P_c_decompression = _c0[11]
-    passes = _c0[12]
-    # derivatives with respect to q_rd_td
-    _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c1[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
-    d_t_bottom__q_rd_td = _c1[13]
-    d_t_stance__q_rd_td = _c1[14]
-    d_bottom_q_r__q_rd_td = _c1[15]
-    d_bottom_q_rd__q_rd_td = _c1[16]
-    d_bottom_q_th__q_rd_td = _c1[17]
-    d_bottom_q_thd__q_rd_td = _c1[18]
-    d_liftoff_q_r__q_rd_td = _c1[19]
-    d_liftoff_q_rd__q_rd_td = _c1[20]
-    d_liftoff_q_th__q_rd_td = _c1[21]
-    d_liftoff_q_thd__q_rd_td = _c1[22]
-    d_P_c_compression__q_rd_td = _c1[23]
-    d_P_c_decompression__q_rd_td = _c1[24]
-    d_passes__q_rd_td = _c1[25]
-    # derivatives with respect to q_th_td
-    _c2 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c2[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[26])
-    d_t_bottom__q_th_td = _c2[13]
-    d_t_stance__q_th_td = _c2[14]
-    d_bottom_q_r__q_th_td = _c2[15]
-    d_bottom_q_rd__q_th_td = _c2[16]
-    d_bottom_q_th__q_th_td = _c2[17]
-    d_bottom_q_thd__q_th_td = _c2[18]
-    d_liftoff_q_r__q_th_td = _c2[19]
-    d_liftoff_q_rd__q_th_td = _c2[20]
-    d_liftoff_q_th__q_th_td = _c2[21]
-    d_liftoff_q_thd__q_th_td = _c2[22]
-    d_P_c_compression__q_th_td = _c2[23]
-    d_P_c_decompression__q_th_td = _c2[24]
-    d_passes__q_th_td = _c2[25]
-    # derivatives with respect to q_thd_td
-    _c3 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c3[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[26])
-    d_t_bottom__q_thd_td = _c3[13]
-    d_t_stance__q_thd_td = _c3[14]
-    d_bottom_q_r__q_thd_td = _c3[15]
-    d_bottom_q_rd__q_thd_td = _c3[16]
-    d_bottom_q_th__q_thd_td = _c3[17]
-    d_bottom_q_thd__q_thd_td = _c3[18]
-    d_liftoff_q_r__q_thd_td = _c3[19]
-    d_liftoff_q_rd__q_thd_td = _c3[20]
-    d_liftoff_q_th__q_thd_td = _c3[21]
-    d_liftoff_q_thd__q_thd_td = _c3[22]
-    d_P_c_compression__q_thd_td = _c3[23]
-    d_P_c_decompression__q_thd_td = _c3[24]
-    d_passes__q_thd_td = _c3[25]
-    # derivatives with respect to k_c
-    _c4 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c4[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[26])
-    d_t_bottom__k_c = _c4[13]
-    d_t_stance__k_c = _c4[14]
-    d_bottom_q_r__k_c = _c4[15]
-    d_bottom_q_rd__k_c = _c4[16]
-    d_bottom_q_th__k_c = _c4[17]
-    d_bottom_q_thd__k_c = _c4[18]
-    d_liftoff_q_r__k_c = _c4[19]
-    d_liftoff_q_rd__k_c = _c4[20]
-    d_liftoff_q_th__k_c = _c4[21]
-    d_liftoff_q_thd__k_c = _c4[22]
-    d_P_c_compression__k_c = _c4[23]
-    d_P_c_decompression__k_c = _c4[24]
-    d_passes__k_c = _c4[25]
-    # derivatives with respect to k_d
-    _c5 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c5[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[26])
-    d_t_bottom__k_d = _c5[13]
-    d_t_stance__k_d = _c5[14]
-    d_bottom_q_r__k_d = _c5[15]
-    d_bottom_q_rd__k_d = _c5[16]
-    d_bottom_q_th__k_d = _c5[17]
-    d_bottom_q_thd__k_d = _c5[18]
-    d_liftoff_q_r__k_d = _c5[19]
-    d_liftoff_q_rd__k_d = _c5[20]
-    d_liftoff_q_th__k_d = _c5[21]
-    d_liftoff_q_thd__k_d = _c5[22]
-    d_P_c_compression__k_d = _c5[23]
-    d_P_c_decompression__k_d = _c5[24]
-    d_passes__k_d = _c5[25]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k_c) and math.isfinite(d_t_bottom__k_d) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k_c) and math.isfinite(d_bottom_q_r__k_d) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k_c) and math.isfinite(d_bottom_q_rd__k_d) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k_c) and math.isfinite(d_bottom_q_th__k_d) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k_c) and math.isfinite(d_bottom_q_thd__k_d) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_P_c_compression__q_r_td) and math.isfinite(d_P_c_compression__q_rd_td) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__q_thd_td) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__q_r_td) and math.isfinite(d_P_c_decompression__q_rd_td) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__q_thd_td) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d, STATUS_OK)
+    # the stance outputs: the pass at the final iterate
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = i_bottom_q_rd
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = i_bottom_q_thd
+    liftoff_q_r = i_liftoff_q_r
+    liftoff_q_rd = i_liftoff_q_rd
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = i_liftoff_q_thd
+    # derivatives of the outputs
+    d_t_bottom__q_r_td = d_i_t_bottom__q_r_td
+    d_t_bottom__q_rd_td = d_i_t_bottom__q_rd_td
+    d_t_bottom__q_th_td = d_i_t_bottom__q_th_td
+    d_t_bottom__q_thd_td = d_i_t_bottom__q_thd_td
+    d_t_bottom__k_c = d_i_t_bottom__k_c
+    d_t_bottom__k_d = d_i_t_bottom__k_d
+    d_t_stance__q_r_td = d_i_t_stance__q_r_td
+    d_t_stance__q_rd_td = d_i_t_stance__q_rd_td
+    d_t_stance__q_th_td = d_i_t_stance__q_th_td
+    d_t_stance__q_thd_td = d_i_t_stance__q_thd_td
+    d_t_stance__k_c = d_i_t_stance__k_c
+    d_t_stance__k_d = d_i_t_stance__k_d
+    d_bottom_q_r__q_r_td = d_i_bottom_q_r__q_r_td
+    d_bottom_q_r__q_rd_td = d_i_bottom_q_r__q_rd_td
+    d_bottom_q_r__q_th_td = d_i_bottom_q_r__q_th_td
+    d_bottom_q_r__q_thd_td = d_i_bottom_q_r__q_thd_td
+    d_bottom_q_r__k_c = d_i_bottom_q_r__k_c
+    d_bottom_q_r__k_d = d_i_bottom_q_r__k_d
+    d_bottom_q_rd__q_r_td = 0.0
+    d_bottom_q_rd__q_rd_td = 0.0
+    d_bottom_q_rd__q_th_td = 0.0
+    d_bottom_q_rd__q_thd_td = 0.0
+    d_bottom_q_rd__k_c = 0.0
+    d_bottom_q_rd__k_d = 0.0
+    d_bottom_q_th__q_r_td = d_i_bottom_q_th__q_r_td
+    d_bottom_q_th__q_rd_td = d_i_bottom_q_th__q_rd_td
+    d_bottom_q_th__q_th_td = d_i_bottom_q_th__q_th_td
+    d_bottom_q_th__q_thd_td = d_i_bottom_q_th__q_thd_td
+    d_bottom_q_th__k_c = d_i_bottom_q_th__k_c
+    d_bottom_q_th__k_d = d_i_bottom_q_th__k_d
+    d_bottom_q_thd__q_r_td = d_i_bottom_q_thd__q_r_td
+    d_bottom_q_thd__q_rd_td = d_i_bottom_q_thd__q_rd_td
+    d_bottom_q_thd__q_th_td = d_i_bottom_q_thd__q_th_td
+    d_bottom_q_thd__q_thd_td = d_i_bottom_q_thd__q_thd_td
+    d_bottom_q_thd__k_c = d_i_bottom_q_thd__k_c
+    d_bottom_q_thd__k_d = d_i_bottom_q_thd__k_d
+    d_liftoff_q_r__q_r_td = 0.0
+    d_liftoff_q_r__q_rd_td = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__q_thd_td = 0.0
+    d_liftoff_q_r__k_c = 0.0
+    d_liftoff_q_r__k_d = 0.0
+    d_liftoff_q_rd__q_r_td = d_i_liftoff_q_rd__q_r_td
+    d_liftoff_q_rd__q_rd_td = d_i_liftoff_q_rd__q_rd_td
+    d_liftoff_q_rd__q_th_td = d_i_liftoff_q_rd__q_th_td
+    d_liftoff_q_rd__q_thd_td = d_i_liftoff_q_rd__q_thd_td
+    d_liftoff_q_rd__k_c = d_i_liftoff_q_rd__k_c
+    d_liftoff_q_rd__k_d = d_i_liftoff_q_rd__k_d
+    d_liftoff_q_th__q_r_td = d_i_liftoff_q_th__q_r_td
+    d_liftoff_q_th__q_rd_td = d_i_liftoff_q_th__q_rd_td
+    d_liftoff_q_th__q_th_td = d_i_liftoff_q_th__q_th_td
+    d_liftoff_q_th__q_thd_td = d_i_liftoff_q_th__q_thd_td
+    d_liftoff_q_th__k_c = d_i_liftoff_q_th__k_c
+    d_liftoff_q_th__k_d = d_i_liftoff_q_th__k_d
+    d_liftoff_q_thd__q_r_td = d_i_liftoff_q_thd__q_r_td
+    d_liftoff_q_thd__q_rd_td = d_i_liftoff_q_thd__q_rd_td
+    d_liftoff_q_thd__q_th_td = d_i_liftoff_q_thd__q_th_td
+    d_liftoff_q_thd__q_thd_td = d_i_liftoff_q_thd__q_thd_td
+    d_liftoff_q_thd__k_c = d_i_liftoff_q_thd__k_c
+    d_liftoff_q_thd__k_d = d_i_liftoff_q_thd__k_d
+    d_passes__q_r_td = 0.0
+    d_passes__q_rd_td = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__q_thd_td = 0.0
+    d_passes__k_c = 0.0
+    d_passes__k_d = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
+            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
+        return _NAN91 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td,
+        d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d,
+        d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c,
+        d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
+        d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
+        d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+        d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td,
+        d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c,
+        d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td,
+        d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c,
+        d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+        d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td,
+        d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c,
+        d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td,
+        d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c,
+        d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
+        d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
+        d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 91)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,
+    d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c,
+    d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td,
+    d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
+    d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
+    d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
+    d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td,
+    d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c,
+    d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td,
+    d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td,
+    d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c,
+    d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td,
+    d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c,
+    d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td,
+    d_P_c_compression__q_thd_td, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td,
+    d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td,
+    d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td,
+    d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c, d_passes__k_d.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s,
+            q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1699,148 +1032,202 @@ def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan):
-    """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan).
+def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
+    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the
+    derivatives of its outputs with respect to p, E_ab, k_c.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 153.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        p: angular momentum p_th [kg m^2/s]
+        E_ab: total energy E_ab [J]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
-        iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
-        k_c__tan: direction: its component along k_c
-        k_d__tan: direction: its component along k_d
 
     Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
-        P_c_decompression: virtual gravity effect of the second half [N m s]
-        passes: fixed-point passes run (0 unless gravity)
-        apex_height__tan: derivative of apex_height along the direction
-        apex_speed__tan: derivative of apex_speed along the direction
-        t_descent__tan: derivative of t_descent along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        t_ascent__tan: derivative of t_ascent along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        step_length__tan: derivative of step_length along the direction
-        foot_x__tan: derivative of foot_x along the direction
-        foot_y__tan: derivative of foot_y along the direction
-        P_c_compression__tan: derivative of P_c_compression along the direction
-        P_c_decompression__tan: derivative of P_c_decompression along the direction
-        passes__tan: derivative of passes along the direction
+        q_r_b: bottom leg length of (153) [m]
+        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c
+            (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 5
+    # Total ops: 309
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    td_q_r__tan = _c0[6]
-    td_q_rd__tan = _c0[7]
-    td_q_th__tan = _c0[8]
-    td_q_thd__tan = _c0[9]
-    t_descent__tan = _c0[10]
-    foot_x__tan = _c0[11]
-    # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
-    if _c1[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[26])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c_compression = _c1[10]
-    P_c_decompression = _c1[11]
-    passes = _c1[12]
-    t_stance__tan = _c1[14]
-    liftoff_q_r__tan = _c1[19]
-    liftoff_q_rd__tan = _c1[20]
-    liftoff_q_th__tan = _c1[21]
-    liftoff_q_thd__tan = _c1[22]
-    P_c_compression__tan = _c1[23]
-    P_c_decompression__tan = _c1[24]
-    passes__tan = _c1[25]
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    apex_height__tan = _c2[5]
-    apex_speed__tan = _c2[6]
-    t_ascent__tan = _c2[7]
-    next_apex_x__tan = _c2[9]
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    step_length__tan = foot_x__tan + next_apex_x__tan
-    foot_y = -b_y_apex + ground
-    foot_y__tan = -b_y_apex__tan + ground__tan
+    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((g_s > 0.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
+    # a start left of the root: V >= E there
+    _x0 = (0.5)*l0
+    _x1 = g_s*m
+    _x73 = (1.0/k_c)
+    _x2 = _x1*_x73
+    _x3 = (0.5)*_x2
+    _x4 = (1.0/math.sqrt(k_c))
+    _x5 = _x2 - l0
+    _x6 = -_x5
+    _x7 = _x6**2
+    _x8 = _x7*k_c
+    _x9 = _x1*_x6
+    _x10 = l0**2
+    _x11 = _x10*k_c
+    _x12 = -2.0*E_ab + _x11
+    _x13 = -_x12 + 2.0*_x6*k_c*l0 - _x8 - 2.0*_x9
+    _x14 = math.sqrt(_x13)
+    _x15 = _x14*_x4
+    _x16 = abs(p)
+    _x17 = -E_ab + (0.5)*_x11
+    _x18 = -_x17 + _x6*k_c*l0 - 0.5*_x8 - _x9
+    _x19 = math.sqrt(2.0)
+    _x20 = (1.0/math.sqrt(m))
+    _x21 = _x19*_x20
+    _x22 = _x21/math.sqrt(_x18)
+    _x23 = _x16*_x22
+    _x24 = _x15 + _x5
+    q_start = _x0 - 0.5*_x15 + (0.25)*_x23 - _x3 + (0.5)*abs((0.5)*_x23 + _x24)
+    _x25 = (0.0 if p == 0 else math.copysign(1, p))
+    _x28 = _x5**2
+    _x29 = _x28*k_c
+    _x30 = _x1*_x5
+    _x31 = _x5*l0
+    _x32 = _x31*k_c
+    _x40 = _x17 + (0.5)*_x29 - _x30 + _x32
+    _x41 = (0.0 if _x40 == 0 else math.copysign(1, _x40))
+    _x42 = _x40/_x41
+    _x43 = (1.0/math.sqrt(_x42))
+    _x38 = (0.5)*math.atan2(0.0, _x18)
+    _x39 = math.sin(_x38)
+    _x44 = _x21*_x43
+    _x45 = _x39*_x44
+    _x26 = (0.5)*math.atan2(0.0, _x13)
+    _x27 = math.sin(_x26)
+    _x33 = _x12 + _x29 - 2.0*_x30 + 2.0*_x32
+    _x34 = (0.0 if _x33 == 0 else math.copysign(1, _x33))
+    _x35 = math.sqrt(_x33/_x34)
+    _x36 = p/_x25
+    _x37 = (0.5)*_x36
+    _x46 = _x27*_x35*_x4 - _x37*_x45
+    _x47 = math.cos(_x38)
+    _x48 = math.cos(_x26)
+    _x49 = _x35*_x4*_x48 + _x37*_x44*_x47 + _x5
+    _x50 = _x22*_x37 + _x24
+    _x51 = (1.0/_x50)
+    _x52 = (0.0 if _x50 == 0 else math.copysign(1, _x50))
+    _x53 = (0.5)*_x51*_x52
+    d_q_start__p = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
+    _x54 = (0.5)*_x4
+    _x55 = _x54/_x14
+    _x56 = _x16*_x21/_x18**(1.5)
+    _x57 = (1.0/_x35)
+    _x58 = _x34*_x57
+    _x59 = _x4*_x58
+    _x60 = (0.25)*_x21*_x36*_x41/_x42**(1.5)
+    _x61 = _x39*_x60
+    _x62 = _x47*_x60
+    d_q_start__E_ab = ((0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55
+        - 0.125*_x56)
+    _x63 = _x73**2
+    _x64 = _x1*_x63
+    _x65 = k_c**(-1.5)
+    _x66 = _x63*g_s**2*m**2
+    _x67 = _x2*l0
+    _x68 = (0.5)*_x10 + _x66 - _x67
+    _x69 = (0.5)*_x35*_x65
+    _x70 = _x2*_x5
+    _x71 = _x10 + _x28 + 2.0*_x31 + 2.0*_x66 - 2.0*_x67 - 2.0*_x70
+    _x72 = (0.5)*_x28 + _x31 + _x68 - _x70
+    d_q_start__k_c = ((0.25)*_x14*_x65 + _x53*(_x46*(_x27*_x54*_x58*_x71 - _x27*_x69 + _x61*_x72)
+        + _x49*((0.5)*_x34*_x4*_x48*_x57*_x71 - _x48*_x69 - _x62*_x72 - _x64)) - _x55*(-_x2*_x6 + _x6*l0
+        - _x68 - 0.5*_x7) + (0.25)*_x56*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x66 + (0.25)*_x7)
+        + (0.5)*_x64)
+    # E_ab above the minimum of the potential
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
+            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+    # Newton's method on V - E: monotone from the left
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (q_start, d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
+    _pk0 = _pki0
+    passes = 0.0
+    _conv0 = False
+    _last0 = max(int(60.0), 0)
+    for _it0 in range(_last0 + 1):
+        (qb, d_qb__p, d_qb__E_ab, d_qb__k_c, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
+        if _conv0 or _it0 == _last0:
+            break
+        _x77 = (1.0/qb)
+        _x74 = _x77**3
+        _x75 = (1.0/m)
+        _x76 = _x75*p**2
+        slope = -_x74*_x76 + g_s*m - k_c*l0 + k_c*qb
+        _pd__0 = 3.0*_x76*_x77**4 + k_c
+        d_slope__p = _pd__0*d_qb__p - 2.0*_x74*_x75*p
+        d_slope__E_ab = _pd__0*d_qb__E_ab
+        d_slope__k_c = _pd__0*d_qb__k_c - l0 + qb
+        # V decreasing left of the root
+        if not ((slope < 0.0)):
+            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+        # next values
+        _x78 = (1.0/slope)
+        _x79 = g_s*m
+        _x80 = k_c*qb
+        _x81 = (0.5)*l0**2
+        _x82 = qb**2
+        _x83 = (0.5)*_x82
+        _x84 = (1.0/_x82)
+        _x85 = (1.0/m)
+        _x86 = _x85*p**2
+        _x87 = -E_ab + _x79*qb - _x80*l0 + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
+        qb__next = -_x78*_x87 + qb
+        _pd__1 = -_x78*(_x79 + _x80 - _x86/qb**3 - k_c*l0) + 1.0
+        _pd__2 = _x78**2*_x87
+        d_qb__next__p = _pd__1*d_qb__p + _pd__2*d_slope__p - _x78*_x84*_x85*p
+        d_qb__next__E_ab = _pd__1*d_qb__E_ab + _pd__2*d_slope__E_ab + _x78
+        d_qb__next__k_c = _pd__1*d_qb__k_c + _pd__2*d_slope__k_c - _x78*(_x81 + _x83 - l0*qb)
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = 1e-12 > 0.0 and (abs(qb__next - qb) <= 1e-12*(l0))
+        _pkn0 = (qb__next, d_qb__next__p, d_qb__next__E_ab, d_qb__next__k_c, )
+        _pk0 = _pkn0
+        passes += 1.0
+    q_r_b = qb
+    # the bottom root is at most l0
+    if not ((qb <= l0)):
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+    # derivatives of the outputs
+    d_q_r_b__p = d_qb__p
+    d_q_r_b__E_ab = d_qb__E_ab
+    d_q_r_b__k_c = d_qb__k_c
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, P_c_compression__tan, P_c_decompression__tan, passes__tan, STATUS_OK)
+    return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol):
-    """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
+def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, continuity, gravity, iterations, tol):
+    """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+    Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
+    101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -1849,10 +1236,14 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0 = report, 1 = constrained, 2 = energy
-        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant: 0 = none, 1 = type3, 2 = type4
+        continuity: option continuity: the second half's a_ba, b_ba: how the leg length joins at the bottom: 0
+            = report, 1 = constrained, 2 = energy
+        gravity: option gravity: virtual gravity effect on p_th per half (report 4.4-4.5 on [t_td, t_b] and
+            [t_b, t_lo]); each half runs with its mean momentum, the rates with the momentum at that instant:
+            0 = none, 1 = type3, 2 = type4
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1870,248 +1261,283 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        d_apex_height__b_y_apex: d apex_height / d b_y_apex
-        d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
-        d_apex_height__q_th_td: d apex_height / d q_th_td
-        d_apex_height__ground: d apex_height / d ground
-        d_apex_height__k_c: d apex_height / d k_c
-        d_apex_height__k_d: d apex_height / d k_d
-        d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
-        d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
-        d_apex_speed__q_th_td: d apex_speed / d q_th_td
-        d_apex_speed__ground: d apex_speed / d ground
-        d_apex_speed__k_c: d apex_speed / d k_c
-        d_apex_speed__k_d: d apex_speed / d k_d
-        d_t_descent__b_y_apex: d t_descent / d b_y_apex
-        d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
-        d_t_descent__q_th_td: d t_descent / d q_th_td
-        d_t_descent__ground: d t_descent / d ground
-        d_t_descent__k_c: d t_descent / d k_c
-        d_t_descent__k_d: d t_descent / d k_d
-        d_t_stance__b_y_apex: d t_stance / d b_y_apex
-        d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__ground: d t_stance / d ground
-        d_t_stance__k_c: d t_stance / d k_c
-        d_t_stance__k_d: d t_stance / d k_d
-        d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
-        d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
-        d_t_ascent__q_th_td: d t_ascent / d q_th_td
-        d_t_ascent__ground: d t_ascent / d ground
-        d_t_ascent__k_c: d t_ascent / d k_c
-        d_t_ascent__k_d: d t_ascent / d k_d
-        d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
-        d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__ground: d liftoff_q_r / d ground
-        d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
-        d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
-        d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
-        d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
-        d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
-        d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
-        d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
-        d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__ground: d liftoff_q_th / d ground
-        d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
-        d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
-        d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
-        d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
-        d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
-        d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
-        d_step_length__b_y_apex: d step_length / d b_y_apex
-        d_step_length__b_xd_apex: d step_length / d b_xd_apex
-        d_step_length__q_th_td: d step_length / d q_th_td
-        d_step_length__ground: d step_length / d ground
-        d_step_length__k_c: d step_length / d k_c
-        d_step_length__k_d: d step_length / d k_d
-        d_foot_x__b_y_apex: d foot_x / d b_y_apex
-        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
-        d_foot_x__q_th_td: d foot_x / d q_th_td
-        d_foot_x__ground: d foot_x / d ground
-        d_foot_x__k_c: d foot_x / d k_c
-        d_foot_x__k_d: d foot_x / d k_d
-        d_foot_y__b_y_apex: d foot_y / d b_y_apex
-        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
-        d_foot_y__q_th_td: d foot_y / d q_th_td
-        d_foot_y__ground: d foot_y / d ground
-        d_foot_y__k_c: d foot_y / d k_c
-        d_foot_y__k_d: d foot_y / d k_d
-        d_P_c_compression__b_y_apex: d P_c_compression / d b_y_apex
-        d_P_c_compression__b_xd_apex: d P_c_compression / d b_xd_apex
-        d_P_c_compression__q_th_td: d P_c_compression / d q_th_td
-        d_P_c_compression__ground: d P_c_compression / d ground
-        d_P_c_compression__k_c: d P_c_compression / d k_c
-        d_P_c_compression__k_d: d P_c_compression / d k_d
-        d_P_c_decompression__b_y_apex: d P_c_decompression / d b_y_apex
-        d_P_c_decompression__b_xd_apex: d P_c_decompression / d b_xd_apex
-        d_P_c_decompression__q_th_td: d P_c_decompression / d q_th_td
-        d_P_c_decompression__ground: d P_c_decompression / d ground
-        d_P_c_decompression__k_c: d P_c_decompression / d k_c
-        d_P_c_decompression__k_d: d P_c_decompression / d k_d
-        d_passes__b_y_apex: d passes / d b_y_apex
-        d_passes__b_xd_apex: d passes / d b_xd_apex
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__ground: d passes / d ground
-        d_passes__k_c: d passes / d k_c
-        d_passes__k_d: d passes / d k_d
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 0
+    # Total ops: 212
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to b_y_apex
-    _c0 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(continuity) and math.isfinite(gravity)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
+            > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
+            == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN105 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
     if _c0[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[30])
-    d_apex_height__b_y_apex = _c0[15]
-    d_apex_speed__b_y_apex = _c0[16]
-    d_t_descent__b_y_apex = _c0[17]
-    d_t_stance__b_y_apex = _c0[18]
-    d_t_ascent__b_y_apex = _c0[19]
-    d_liftoff_q_r__b_y_apex = _c0[20]
-    d_liftoff_q_rd__b_y_apex = _c0[21]
-    d_liftoff_q_th__b_y_apex = _c0[22]
-    d_liftoff_q_thd__b_y_apex = _c0[23]
-    d_step_length__b_y_apex = _c0[24]
-    d_foot_x__b_y_apex = _c0[25]
-    d_foot_y__b_y_apex = _c0[26]
-    d_P_c_compression__b_y_apex = _c0[27]
-    d_P_c_decompression__b_y_apex = _c0[28]
-    d_passes__b_y_apex = _c0[29]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    step_length = _c0[9]
-    foot_x = _c0[10]
-    foot_y = _c0[11]
-    P_c_compression = _c0[12]
-    P_c_decompression = _c0[13]
-    passes = _c0[14]
-    # derivatives with respect to b_xd_apex
-    _c1 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c1[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[30])
-    d_apex_height__b_xd_apex = _c1[15]
-    d_apex_speed__b_xd_apex = _c1[16]
-    d_t_descent__b_xd_apex = _c1[17]
-    d_t_stance__b_xd_apex = _c1[18]
-    d_t_ascent__b_xd_apex = _c1[19]
-    d_liftoff_q_r__b_xd_apex = _c1[20]
-    d_liftoff_q_rd__b_xd_apex = _c1[21]
-    d_liftoff_q_th__b_xd_apex = _c1[22]
-    d_liftoff_q_thd__b_xd_apex = _c1[23]
-    d_step_length__b_xd_apex = _c1[24]
-    d_foot_x__b_xd_apex = _c1[25]
-    d_foot_y__b_xd_apex = _c1[26]
-    d_P_c_compression__b_xd_apex = _c1[27]
-    d_P_c_decompression__b_xd_apex = _c1[28]
-    d_passes__b_xd_apex = _c1[29]
-    # derivatives with respect to q_th_td
-    _c2 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c2[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[30])
-    d_apex_height__q_th_td = _c2[15]
-    d_apex_speed__q_th_td = _c2[16]
-    d_t_descent__q_th_td = _c2[17]
-    d_t_stance__q_th_td = _c2[18]
-    d_t_ascent__q_th_td = _c2[19]
-    d_liftoff_q_r__q_th_td = _c2[20]
-    d_liftoff_q_rd__q_th_td = _c2[21]
-    d_liftoff_q_th__q_th_td = _c2[22]
-    d_liftoff_q_thd__q_th_td = _c2[23]
-    d_step_length__q_th_td = _c2[24]
-    d_foot_x__q_th_td = _c2[25]
-    d_foot_y__q_th_td = _c2[26]
-    d_P_c_compression__q_th_td = _c2[27]
-    d_P_c_decompression__q_th_td = _c2[28]
-    d_passes__q_th_td = _c2[29]
-    # derivatives with respect to ground
-    _c3 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c3[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[30])
-    d_apex_height__ground = _c3[15]
-    d_apex_speed__ground = _c3[16]
-    d_t_descent__ground = _c3[17]
-    d_t_stance__ground = _c3[18]
-    d_t_ascent__ground = _c3[19]
-    d_liftoff_q_r__ground = _c3[20]
-    d_liftoff_q_rd__ground = _c3[21]
-    d_liftoff_q_th__ground = _c3[22]
-    d_liftoff_q_thd__ground = _c3[23]
-    d_step_length__ground = _c3[24]
-    d_foot_x__ground = _c3[25]
-    d_foot_y__ground = _c3[26]
-    d_P_c_compression__ground = _c3[27]
-    d_P_c_decompression__ground = _c3[28]
-    d_passes__ground = _c3[29]
-    # derivatives with respect to k_c
-    _c4 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c4[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[30])
-    d_apex_height__k_c = _c4[15]
-    d_apex_speed__k_c = _c4[16]
-    d_t_descent__k_c = _c4[17]
-    d_t_stance__k_c = _c4[18]
-    d_t_ascent__k_c = _c4[19]
-    d_liftoff_q_r__k_c = _c4[20]
-    d_liftoff_q_rd__k_c = _c4[21]
-    d_liftoff_q_th__k_c = _c4[22]
-    d_liftoff_q_thd__k_c = _c4[23]
-    d_step_length__k_c = _c4[24]
-    d_foot_x__k_c = _c4[25]
-    d_foot_y__k_c = _c4[26]
-    d_P_c_compression__k_c = _c4[27]
-    d_P_c_decompression__k_c = _c4[28]
-    d_passes__k_c = _c4[29]
-    # derivatives with respect to k_d
-    _c5 = geyer_vs_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c5[30] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[30])
-    d_apex_height__k_d = _c5[15]
-    d_apex_speed__k_d = _c5[16]
-    d_t_descent__k_d = _c5[17]
-    d_t_stance__k_d = _c5[18]
-    d_t_ascent__k_d = _c5[19]
-    d_liftoff_q_r__k_d = _c5[20]
-    d_liftoff_q_rd__k_d = _c5[21]
-    d_liftoff_q_th__k_d = _c5[22]
-    d_liftoff_q_thd__k_d = _c5[23]
-    d_step_length__k_d = _c5[24]
-    d_foot_x__k_d = _c5[25]
-    d_foot_y__k_d = _c5[26]
-    d_P_c_compression__k_d = _c5[27]
-    d_P_c_decompression__k_d = _c5[28]
-    d_passes__k_d = _c5[29]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k_c) and math.isfinite(d_step_length__k_d) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k_c) and math.isfinite(d_foot_x__k_d) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k_c) and math.isfinite(d_foot_y__k_d) and math.isfinite(d_P_c_compression__b_y_apex) and math.isfinite(d_P_c_compression__b_xd_apex) and math.isfinite(d_P_c_compression__q_th_td) and math.isfinite(d_P_c_compression__ground) and math.isfinite(d_P_c_compression__k_c) and math.isfinite(d_P_c_compression__k_d) and math.isfinite(d_P_c_decompression__b_y_apex) and math.isfinite(d_P_c_decompression__b_xd_apex) and math.isfinite(d_P_c_decompression__q_th_td) and math.isfinite(d_P_c_decompression__ground) and math.isfinite(d_P_c_decompression__k_c) and math.isfinite(d_P_c_decompression__k_d) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__ground) and math.isfinite(d_passes__k_c) and math.isfinite(d_passes__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d, STATUS_OK)
+        return _NAN105 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+    # stance: Simple variable-stiffness map (Geyer et al. per half)
+    _c1 = (geyer_vs_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        continuity, gravity, iterations, tol))
+    if _c1[91] != STATUS_OK:
+        return _NAN105 + (_c1[91],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
+        P_c_decompression, passes, _, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td,
+        _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
+        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _,
+        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _, _j_P_c_compression__q_rd_td,
+        _j_P_c_compression__q_th_td, _j_P_c_compression__q_thd_td, _j_P_c_compression__k_c,
+        _j_P_c_compression__k_d, _, _j_P_c_decompression__q_rd_td, _j_P_c_decompression__q_th_td,
+        _j_P_c_decompression__q_thd_td, _j_P_c_decompression__k_c, _j_P_c_decompression__k_d, _, _, _, _, _,
+        _, _) = _c1
+    # chain rule through geyer_vs_stance
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+    d_P_c_compression__b_y_apex = (_j_P_c_compression__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_P_c_compression__b_xd_apex = (_j_P_c_compression__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_P_c_compression__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_P_c_compression__q_th_td = (_j_P_c_compression__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_P_c_compression__q_th_td*_j_td_q_th__q_th_td + _j_P_c_compression__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c_compression__ground = (_j_P_c_compression__q_rd_td*_j_td_q_rd__ground
+        + _j_P_c_compression__q_thd_td*_j_td_q_thd__ground)
+    d_P_c_decompression__b_y_apex = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_P_c_decompression__b_xd_apex = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_P_c_decompression__q_th_td = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_P_c_decompression__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c_decompression__ground = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__ground
+        + _j_P_c_decompression__q_thd_td*_j_td_q_thd__ground)
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+        direction))
+    if _c2[20] != STATUS_OK:
+        return _NAN105 + (_c2[20],)
+    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
+        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
+        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+    # chain rule through liftoff_to_apex
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
+    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
+    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
+    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
+        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
+        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
+    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
+        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
+    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
+    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
+    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
+    foot_y = -b_y_apex + ground
+    # derivatives of the outputs
+    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
+    d_t_descent__b_xd_apex = 0.0
+    d_t_descent__q_th_td = _j_t_descent__q_th_td
+    d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__k_c = 0.0
+    d_t_descent__k_d = 0.0
+    d_t_stance__k_c = _j_t_stance__k_c
+    d_t_stance__k_d = _j_t_stance__k_d
+    d_liftoff_q_r__b_y_apex = 0.0
+    d_liftoff_q_r__b_xd_apex = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__ground = 0.0
+    d_liftoff_q_r__k_c = 0.0
+    d_liftoff_q_r__k_d = 0.0
+    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
+    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
+    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
+    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
+    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
+    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
+    d_step_length__k_c = d_next_apex_x__k_c
+    d_step_length__k_d = d_next_apex_x__k_d
+    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
+    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
+    d_foot_x__q_th_td = _j_foot_x__q_th_td
+    d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__k_c = 0.0
+    d_foot_x__k_d = 0.0
+    d_foot_y__b_y_apex = -1.0
+    d_foot_y__b_xd_apex = 0.0
+    d_foot_y__q_th_td = 0.0
+    d_foot_y__ground = 1.0
+    d_foot_y__k_c = 0.0
+    d_foot_y__k_d = 0.0
+    d_P_c_compression__k_c = _j_P_c_compression__k_c
+    d_P_c_compression__k_d = _j_P_c_compression__k_d
+    d_P_c_decompression__k_c = _j_P_c_decompression__k_c
+    d_P_c_decompression__k_d = _j_P_c_decompression__k_d
+    d_passes__b_y_apex = 0.0
+    d_passes__b_xd_apex = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__ground = 0.0
+    d_passes__k_c = 0.0
+    d_passes__k_d = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
+            and math.isfinite(passes)):
+        return _NAN105 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes,
+        d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
+        d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+        d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d,
+        d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground,
+        d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex,
+        d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c,
+        d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex,
+        d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c,
+        d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
+        d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td,
+        d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex,
+        d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground,
+        d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex,
+        d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground,
+        d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
+def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
     """Parallel batch form of :func:`geyer_vs_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 105)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground, d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground, d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression,
+    P_c_decompression, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td,
+    d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex,
+    d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c,
+    d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
+    d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
+    d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex,
+    d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d,
+    d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground,
+    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
+    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
+    d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+    d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td,
+    d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex,
+    d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex,
+    d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground,
+    d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex,
+    d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground,
+    d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex,
+    d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d.
     """
     for i in prange(out.shape[0]):
-        res = geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol)
+        res = (geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c,
+            k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,584 +4,42 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:93735a9cd1eada3e
-#   geyer_jacobian.py sha256:2cc3bc7df9c66782
+#   flight_jacobian.py sha256:2e171e0cb588eb80
+#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for
+a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
-from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b, geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
+from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
+
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN72 = (NAN,) * 72
+_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0():
-    """branch reading = 0 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-
-    Returns a tuple:
-        share: result for the caller
-        ramp: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 1
-    share = 0.5
-    ramp = 1.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (share, ramp, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1():
-    """branch reading = 1 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-
-    Returns a tuple:
-        share: result for the caller
-        ramp: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    share = 1.0
-    ramp = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (share, ramp, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan):
-    """branch samples = 2 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new: result for the caller
-        i_P_new__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 22
-    _x0 = g_s*l0*m
-    _x1 = _x0*math.sin(i_liftoff_q_th)
-    _x2 = _x0*math.sin(q_th_td)
-    _x3 = (0.5)*i_t_stance
-    _x4 = _x0*_x3
-    i_P_new = _x3*(_x1 + _x2)
-    i_P_new__tan = _x4*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x4*q_th_td__tan*math.cos(q_th_td) + i_t_stance__tan*((0.5)*_x1 + (0.5)*_x2)
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, i_P_new__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan):
-    """branch samples = 3 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        i_bottom_q_th: value of the caller's variable
-        i_bottom_q_th__tan: value of the caller's variable
-        i_liftoff_q_th: value of the caller's variable
-        i_liftoff_q_th__tan: value of the caller's variable
-        i_t_stance: value of the caller's variable
-        i_t_stance__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        i_P_new: result for the caller
-        i_P_new__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 31
-    _x0 = g_s*l0*m
-    _x1 = _x0*math.sin(i_bottom_q_th)
-    _x2 = _x0*math.sin(i_liftoff_q_th)
-    _x3 = _x0*math.sin(q_th_td)
-    _x4 = (0.3333333333333333)*i_t_stance
-    _x5 = _x0*_x4
-    i_P_new = _x4*(_x1 + _x2 + _x3)
-    i_P_new__tan = _x5*i_bottom_q_th__tan*math.cos(i_bottom_q_th) + _x5*i_liftoff_q_th__tan*math.cos(i_liftoff_q_th) + _x5*q_th_td__tan*math.cos(q_th_td) + i_t_stance__tan*((0.3333333333333333)*_x1 + (0.3333333333333333)*_x2 + (0.3333333333333333)*_x3)
-    # (internal helper: its callers check that their outputs are finite)
-    return (i_P_new, i_P_new__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, samples, share):
-    """loop body of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        P_c: value of the caller's variable
-        P_c__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k: value of the caller's variable
-        k__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        samples: value of the caller's variable
-        share: value of the caller's variable
-
-    Returns a tuple:
-        _next_P_c: result for the caller
-        _next_P_c__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 194
-    # effective touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = P_c*share + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    i_q_thd_eff = _x0*_x2
-    i_q_thd_eff__tan = P_c__tan*_x2*share - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, i_q_thd_eff__tan, k__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, _c0[12])
-    i_omega = _c0[0]
-    i_omega0_hat = _c0[1]
-    i_a = _c0[2]
-    i_b = _c0[3]
-    i_phase_td = _c0[4]
-    i_s_td = _c0[5]
-    i_omega__tan = _c0[6]
-    i_omega0_hat__tan = _c0[7]
-    i_a__tan = _c0[8]
-    i_b__tan = _c0[9]
-    i_phase_td__tan = _c0[10]
-    i_s_td__tan = _c0[11]
-    _c1 = geyer_liftoff_phase_jvp_a_b(i_a, i_b, l0, q_r_lo, i_a__tan, i_b__tan)
-    if _c1[4] != STATUS_OK:
-        return (NAN, NAN, _c1[4])
-    i_phase_lo = _c1[0]
-    i_s_lo = _c1[1]
-    i_phase_lo__tan = _c1[2]
-    i_s_lo__tan = _c1[3]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x4 = (1.0/i_omega0_hat)
-    _x5 = -i_phase_td + (1.5)*math.pi
-    _x6 = _x4*i_phase_td__tan
-    _x7 = _x4**2
-    _x8 = _x7*i_omega0_hat__tan
-    _x9 = i_phase_lo - i_phase_td
-    _x10 = i_a + 1.0
-    _x11 = _x10 - i_b
-    _x48 = (1.0/_x11)
-    _x12 = i_b__tan*l0
-    _x13 = (1.5)*math.pi
-    _x14 = _x4*i_omega
-    _x15 = 3.0*math.pi
-    _x16 = _x14*_x15
-    _x17 = _x4*i_phase_td
-    _x18 = _x17*i_a
-    _x19 = math.sqrt(1.0 - i_s_td**2)
-    _x20 = _x19*i_b
-    _x21 = _x20*_x4
-    _x22 = 2.0*i_omega
-    _x23 = -_x17*i_omega + _x22*(_x18 + _x21) + q_th_td
-    _x24 = _x7*i_phase_td
-    _x25 = _x7*i_omega
-    _x26 = _x15*i_a
-    _x27 = -_x20*_x7 - _x24*i_a
-    _x28 = -_x17 + 2.0*_x18 + 2.0*_x21
-    _x29 = 2.0*_x14
-    _x30 = _x19*_x29
-    _x31 = -_x14 + _x29*i_a
-    _x32 = _x31*i_phase_td__tan + q_th_td__tan - _x29*i_b*i_s_td*i_s_td__tan/_x19
-    _x33 = _x48**2
-    _x34 = _x22*_x48**3
-    _x35 = math.sqrt(1.0 - i_s_lo**2)
-    _x36 = _x35*i_b
-    _x37 = _x36*l0
-    _x38 = i_b*i_s_lo
-    _x39 = _x38*i_s_lo__tan/_x35
-    _x40 = _x4*i_phase_lo
-    _x41 = _x40*i_a
-    _x42 = _x36*_x4
-    _x43 = _x14*i_phase_lo
-    _x44 = _x7*i_phase_lo
-    _x45 = _x10 + _x38
-    _x49 = (1.0/_x45)
-    _x46 = _x49**2
-    _x47 = _x22*_x49**3
-    i_t_bottom = _x4*_x5
-    i_t_bottom__tan = -_x5*_x8 - _x6
-    i_t_stance = _x4*_x9
-    i_t_stance__tan = _x4*i_phase_lo__tan - _x6 - _x8*_x9
-    i_bottom_q_r = _x11*l0
-    i_bottom_q_r__tan = -_x12 + i_a__tan*l0
-    i_bottom_q_rd = 0.0
-    i_bottom_q_th = _x13*_x14 - _x16*i_a + _x23
-    i_bottom_q_th__tan = _x30*i_b__tan + _x32 + i_a__tan*(-_x16 + _x17*_x22) + i_omega0_hat__tan*(-_x13*_x25 + _x22*_x27 + _x24*i_omega + _x25*_x26) + i_omega__tan*(_x13*_x4 - _x26*_x4 + _x28)
-    i_bottom_q_thd = _x33*i_omega
-    i_bottom_q_thd__tan = _x33*i_omega__tan - _x34*i_a__tan + _x34*i_b__tan
-    i_liftoff_q_r = q_r_lo
-    i_liftoff_q_rd = _x37*i_omega0_hat
-    i_liftoff_q_rd__tan = _x12*_x35*i_omega0_hat + _x37*i_omega0_hat__tan - _x39*i_omega0_hat*l0
-    i_liftoff_q_th = -_x22*(_x41 - _x42) + _x23 + _x43
-    i_liftoff_q_th__tan = -_x29*_x39 - _x31*i_phase_lo__tan + _x32 + i_a__tan*(2.0*_x4*i_omega*i_phase_td - 2.0*_x43) + i_b__tan*(_x29*_x35 + _x30) + i_omega0_hat__tan*(-_x22*(_x35*_x7*i_b - _x44*i_a) + 2.0*_x27*i_omega - _x44*i_omega + _x7*i_omega*i_phase_td) + i_omega__tan*(_x28 + _x40 - 2.0*_x41 + 2.0*_x42)
-    i_liftoff_q_thd = _x46*i_omega
-    i_liftoff_q_thd__tan = _x46*i_omega__tan - _x47*i_a__tan - _x47*i_b*i_s_lo__tan - _x47*i_b__tan*i_s_lo
-    # the leg stays above horizontal
-    if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, STATUS_FALL)
-    # eq (48) with 2 or 3 samples
-    if samples == 2.0:
-        # branch samples = 2
-        _c2 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_2(g_s, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
-        if _c2[2] != STATUS_OK:
-            return (NAN, NAN, _c2[2])
-        i_P_new = _c2[0]
-        i_P_new__tan = _c2[1]
-    elif samples == 3.0:
-        # branch samples = 3
-        _c3 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_3(g_s, i_bottom_q_th, i_bottom_q_th__tan, i_liftoff_q_th, i_liftoff_q_th__tan, i_t_stance, i_t_stance__tan, l0, m, q_th_td, q_th_td__tan)
-        if _c3[2] != STATUS_OK:
-            return (NAN, NAN, _c3[2])
-        i_P_new = _c3[0]
-        i_P_new__tan = _c3[1]
-    else:
-        return (NAN, NAN, STATUS_INVALID_INPUT)
-    # next values
-    _next_P_c = i_P_new
-    _next_P_c__tan = i_P_new__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_P_c, _next_P_c__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan, P_c, P_c__tan, f_liftoff_q_th, f_liftoff_q_th__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo):
-    """branch reading = 0 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c: value of the caller's variable
-        P_c__tan: value of the caller's variable
-        f_liftoff_q_th: value of the caller's variable
-        f_liftoff_q_th__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k: value of the caller's variable
-        k__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-
-    Returns a tuple:
-        liftoff_q_rd: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 52
-    _x0 = (1.0/m)
-    _x1 = 2.0*g_s*q_r_lo
-    _x2 = _x0*l0**2
-    _x3 = q_r_lo**2
-    _x4 = _x0*_x3
-    _x5 = _x0**2/_x3
-    _x6 = _x5*(2.0*P_c + 2.0*p_td)
-    _q_rd_lo_sq = 2.0*E_td*_x0 + 2.0*_x0*k*l0*q_r_lo - _x1*math.cos(f_liftoff_q_th) - _x2*k - _x4*k - _x5*(P_c + p_td)**2
-    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x0 - P_c__tan*_x6 + _x1*f_liftoff_q_th__tan*math.sin(f_liftoff_q_th) - _x6*p_td__tan + k__tan*(2.0*_x0*l0*q_r_lo - _x2 - _x4)
-    # q_rd_lo^2 from the energy (27)
-    if not ((_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo from the energy
-    _x7 = math.sqrt(_q_rd_lo_sq)
-    liftoff_q_rd = _x7
-    liftoff_q_rd__tan = (0.5)*_q_rd_lo_sq__tan/_x7
-    # (internal helper: its callers check that their outputs are finite)
-    return (liftoff_q_rd, liftoff_q_rd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(f_liftoff_q_rd, f_liftoff_q_rd__tan):
-    """branch reading = 1 of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        f_liftoff_q_rd: value of the caller's variable
-        f_liftoff_q_rd__tan: value of the caller's variable
-
-    Returns a tuple:
-        liftoff_q_rd: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # from (11)
-    liftoff_q_rd = f_liftoff_q_rd
-    liftoff_q_rd__tan = f_liftoff_q_rd__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (liftoff_q_rd, liftoff_q_rd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan, P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, ramp, reading, share):
-    """continuation of gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        P_c: value of the caller's variable
-        P_c__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k: value of the caller's variable
-        k__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        ramp: value of the caller's variable
-        reading: value of the caller's variable
-        share: value of the caller's variable
-
-    Returns a tuple:
-        t_bottom: result for the caller
-        t_stance: result for the caller
-        bottom_q_r: result for the caller
-        bottom_q_rd: result for the caller
-        bottom_q_th: result for the caller
-        bottom_q_thd: result for the caller
-        liftoff_q_r: result for the caller
-        liftoff_q_rd: result for the caller
-        liftoff_q_th: result for the caller
-        liftoff_q_thd: result for the caller
-        t_bottom__tan: result for the caller
-        t_stance__tan: result for the caller
-        bottom_q_r__tan: result for the caller
-        bottom_q_rd__tan: result for the caller
-        bottom_q_th__tan: result for the caller
-        bottom_q_thd__tan: result for the caller
-        liftoff_q_r__tan: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        liftoff_q_th__tan: result for the caller
-        liftoff_q_thd__tan: result for the caller
-        passes__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 233
-    # effective touchdown rate
-    _x3 = (1.0/q_r_td)
-    _x0 = P_c*share + p_td
-    _x1 = (1.0/m)
-    _x2 = _x1*_x3**2
-    f_q_thd_eff = _x0*_x2
-    f_q_thd_eff__tan = P_c__tan*_x2*share - 2.0*_x0*_x1*_x3**3*q_r_td__tan + _x2*p_td__tan
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c0 = geyer_solution_jvp_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s, q_r_td__tan, q_rd_td__tan, f_q_thd_eff__tan, k__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    f_omega = _c0[0]
-    f_omega0_hat = _c0[1]
-    f_a = _c0[2]
-    f_b = _c0[3]
-    f_phase_td = _c0[4]
-    f_s_td = _c0[5]
-    f_omega__tan = _c0[6]
-    f_omega0_hat__tan = _c0[7]
-    f_a__tan = _c0[8]
-    f_b__tan = _c0[9]
-    f_phase_td__tan = _c0[10]
-    f_s_td__tan = _c0[11]
-    _c1 = geyer_liftoff_phase_jvp_a_b(f_a, f_b, l0, q_r_lo, f_a__tan, f_b__tan)
-    if _c1[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-    f_phase_lo = _c1[0]
-    f_s_lo = _c1[1]
-    f_phase_lo__tan = _c1[2]
-    f_s_lo__tan = _c1[3]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x4 = (1.0/f_omega0_hat)
-    _x5 = -f_phase_td + (1.5)*math.pi
-    _x6 = _x4*f_phase_td__tan
-    _x7 = _x4**2
-    _x8 = _x7*f_omega0_hat__tan
-    _x9 = f_phase_lo - f_phase_td
-    _x10 = f_a + 1.0
-    _x11 = _x10 - f_b
-    _x48 = (1.0/_x11)
-    _x12 = f_b__tan*l0
-    _x13 = (1.5)*math.pi
-    _x14 = _x4*f_omega
-    _x15 = 3.0*math.pi
-    _x16 = _x14*_x15
-    _x17 = _x4*f_phase_td
-    _x18 = _x17*f_a
-    _x19 = math.sqrt(1.0 - f_s_td**2)
-    _x20 = _x19*f_b
-    _x21 = _x20*_x4
-    _x22 = 2.0*f_omega
-    _x23 = -_x17*f_omega + _x22*(_x18 + _x21) + q_th_td
-    _x24 = _x7*f_phase_td
-    _x25 = _x7*f_omega
-    _x26 = _x15*f_a
-    _x27 = -_x20*_x7 - _x24*f_a
-    _x28 = -_x17 + 2.0*_x18 + 2.0*_x21
-    _x29 = 2.0*_x14
-    _x30 = _x19*_x29
-    _x31 = -_x14 + _x29*f_a
-    _x32 = _x31*f_phase_td__tan + q_th_td__tan - _x29*f_b*f_s_td*f_s_td__tan/_x19
-    _x33 = _x48**2
-    _x34 = _x22*_x48**3
-    _x35 = math.sqrt(1.0 - f_s_lo**2)
-    _x36 = _x35*f_b
-    _x37 = _x36*l0
-    _x38 = f_b*f_s_lo
-    _x39 = _x38*f_s_lo__tan/_x35
-    _x40 = _x4*f_phase_lo
-    _x41 = _x40*f_a
-    _x42 = _x36*_x4
-    _x43 = _x14*f_phase_lo
-    _x44 = _x7*f_phase_lo
-    _x45 = _x10 + _x38
-    _x49 = (1.0/_x45)
-    _x46 = _x49**2
-    _x47 = _x22*_x49**3
-    f_t_bottom = _x4*_x5
-    f_t_bottom__tan = -_x5*_x8 - _x6
-    f_t_stance = _x4*_x9
-    f_t_stance__tan = _x4*f_phase_lo__tan - _x6 - _x8*_x9
-    f_bottom_q_r = _x11*l0
-    f_bottom_q_r__tan = -_x12 + f_a__tan*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = _x13*_x14 - _x16*f_a + _x23
-    f_bottom_q_th__tan = _x30*f_b__tan + _x32 + f_a__tan*(-_x16 + _x17*_x22) + f_omega0_hat__tan*(-_x13*_x25 + _x22*_x27 + _x24*f_omega + _x25*_x26) + f_omega__tan*(_x13*_x4 - _x26*_x4 + _x28)
-    f_bottom_q_thd = _x33*f_omega
-    f_bottom_q_thd__tan = _x33*f_omega__tan - _x34*f_a__tan + _x34*f_b__tan
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x37*f_omega0_hat
-    f_liftoff_q_rd__tan = _x12*_x35*f_omega0_hat + _x37*f_omega0_hat__tan - _x39*f_omega0_hat*l0
-    f_liftoff_q_th = -_x22*(_x41 - _x42) + _x23 + _x43
-    f_liftoff_q_th__tan = -_x29*_x39 - _x31*f_phase_lo__tan + _x32 + f_a__tan*(2.0*_x4*f_omega*f_phase_td - 2.0*_x43) + f_b__tan*(_x29*_x35 + _x30) + f_omega0_hat__tan*(-_x22*(_x35*_x7*f_b - _x44*f_a) + 2.0*_x27*f_omega - _x44*f_omega + _x7*f_omega*f_phase_td) + f_omega__tan*(_x28 + _x40 - 2.0*_x41 + 2.0*_x42)
-    f_liftoff_q_thd = _x46*f_omega
-    f_liftoff_q_thd__tan = _x46*f_omega__tan - _x47*f_a__tan - _x47*f_b*f_s_lo__tan - _x47*f_b__tan*f_s_lo
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
-    _x57 = (1.0/f_bottom_q_r)
-    _x58 = (1.0/f_t_stance)
-    _x50 = _x58*ramp
-    _x51 = _x50*f_t_bottom - ramp + 1.0
-    _x52 = P_c*_x51 + p_td
-    _x53 = (1.0/m)
-    _x54 = _x53*_x57**2
-    _x55 = P_c*_x54
-    _x56 = _x53/q_r_lo**2
-    t_bottom = f_t_bottom
-    t_bottom__tan = f_t_bottom__tan
-    t_stance = f_t_stance
-    t_stance__tan = f_t_stance__tan
-    bottom_q_r = f_bottom_q_r
-    bottom_q_r__tan = f_bottom_q_r__tan
-    bottom_q_rd = 0.0
-    bottom_q_th = f_bottom_q_th
-    bottom_q_th__tan = f_bottom_q_th__tan
-    bottom_q_thd = _x52*_x54
-    bottom_q_thd__tan = P_c__tan*_x51*_x54 + _x50*_x55*f_t_bottom__tan - 2.0*_x52*_x53*_x57**3*f_bottom_q_r__tan + _x54*p_td__tan - _x55*_x58**2*f_t_bottom*f_t_stance__tan*ramp
-    liftoff_q_r = q_r_lo
-    liftoff_q_th = f_liftoff_q_th
-    liftoff_q_th__tan = f_liftoff_q_th__tan
-    liftoff_q_thd = _x56*(P_c + p_td)
-    liftoff_q_thd__tan = P_c__tan*_x56 + _x56*p_td__tan
-    if reading == 0.0:
-        # branch reading = 0
-        _c2 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_5(E_td, E_td__tan, P_c, P_c__tan, f_liftoff_q_th, f_liftoff_q_th__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo)
-        if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
-        liftoff_q_rd = _c2[0]
-        liftoff_q_rd__tan = _c2[1]
-    elif reading == 1.0:
-        # branch reading = 1
-        _c3 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_6(f_liftoff_q_rd, f_liftoff_q_rd__tan)
-        if _c3[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
-        liftoff_q_rd = _c3[0]
-        liftoff_q_rd__tan = _c3[1]
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives that are identically zero
-    bottom_q_rd__tan = 0.0
-    liftoff_q_r__tan = 0.0
-    passes__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan):
-    """Gravity correction type 0 (leg length l0): touchdown state -> bottom and liftoff states, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan).
+def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
+        iterations, tol):
+    """Gravity correction type 0 (leg length l0): stance outputs and their derivatives with respect to the
+    touchdown state and the stiffness.
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -594,14 +52,11 @@ def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_th_td__tan: direction: its component along q_th_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k__tan: direction: its component along k
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -616,320 +71,491 @@ def gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        t_bottom__tan: derivative of t_bottom along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        bottom_q_r__tan: derivative of bottom_q_r along the direction
-        bottom_q_rd__tan: derivative of bottom_q_rd along the direction
-        bottom_q_th__tan: derivative of bottom_q_th along the direction
-        bottom_q_thd__tan: derivative of bottom_q_thd along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        P_c__tan: derivative of P_c along the direction
-        passes__tan: derivative of passes along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 52
+    # Total ops: 710
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td
+            <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0)
+            or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples
+            <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN72 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = _x1*q_thd_td
-    _x3 = l0*q_r_td
-    _x4 = (0.5)*l0**2
-    _x5 = (0.5)*_x0
-    _x6 = g_s*m
-    _x7 = _x6*math.cos(q_th_td)
-    _x8 = m*q_thd_td**2
     p_td = _x2
-    p_td__tan = _x1*q_thd_td__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td
-    E_td = -_x3*k + _x4*k + _x5*_x8 + _x5*k + _x7*q_r_td + (0.5)*m*q_rd_td**2
-    E_td__tan = _x2*q_thd_td__tan - _x6*q_r_td*q_th_td__tan*math.sin(q_th_td) + k__tan*(-_x3 + _x4 + _x5) + m*q_rd_td*q_rd_td__tan + q_r_td__tan*(_x7 + _x8*q_r_td - k*l0 + k*q_r_td)
+    _x3 = m*q_r_td
+    d_p_td__q_r_td = 2.0*_x3*q_thd_td
+    d_p_td__q_thd_td = _x1
+    _x4 = k*q_r_td
+    _x5 = (0.5)*l0**2
+    _x6 = (0.5)*_x0
+    _x7 = g_s*m
+    _x8 = _x7*math.cos(q_th_td)
+    _x9 = q_thd_td**2
+    E_td = (0.5)*_x1*_x9 - _x4*l0 + _x5*k + _x6*k + _x8*q_r_td + (0.5)*m*q_rd_td**2
+    d_E_td__q_r_td = _x3*_x9 + _x4 + _x8 - k*l0
+    d_E_td__q_rd_td = m*q_rd_td
+    d_E_td__q_th_td = -_x7*q_r_td*math.sin(q_th_td)
+    d_E_td__q_thd_td = _x2
+    d_E_td__k = _x5 + _x6 - l0*q_r_td
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
-        # branch reading = 0
-        _c0 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0()
-        if _c0[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[2])
-        share = _c0[0]
-        ramp = _c0[1]
+        share = 0.5
+        ramp = 1.0
     elif reading == 1.0:
-        # branch reading = 1
-        _c1 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1()
-        if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
-        share = _c1[0]
-        ramp = _c1[1]
+        share = 1.0
+        ramp = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN72 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
-    P_c = 0.0
-    P_c__tan = 0.0
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, )
+    _pk0 = _pki0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
-        _c2 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_4(P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, samples, share)
-        if _c2[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[2])
-        _next_P_c = _c2[0]
-        _next_P_c__tan = _c2[1]
-        _n0_0 = _next_P_c
-        _n0_1 = _next_P_c__tan
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        (P_c, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = _pk0
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN72 + (STATUS_NOT_CONVERGED,)
+        # effective touchdown rate
+        _x10 = P_c*share + p_td
+        _x11 = (1.0/m)
+        _x13 = (1.0/q_r_td)
+        _x12 = _x11*_x13**2
+        i_q_thd_eff = _x10*_x12
+        _pd__0 = _x12*share
+        _pd__1 = _x12
+        d_i_q_thd_eff__q_r_td = _pd__0*d_P_c__q_r_td + _pd__1*d_p_td__q_r_td - 2.0*_x10*_x11*_x13**3
+        d_i_q_thd_eff__q_rd_td = _pd__0*d_P_c__q_rd_td
+        d_i_q_thd_eff__q_th_td = _pd__0*d_P_c__q_th_td
+        d_i_q_thd_eff__q_thd_td = _pd__0*d_P_c__q_thd_td + _pd__1*d_p_td__q_thd_td
+        d_i_q_thd_eff__k = _pd__0*d_P_c__k
+        # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
+        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
+        if _c0[30] != STATUS_OK:
+            return _NAN72 + (_c0[30],)
+        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _,
+            _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _,
+            _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k,
+            _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k,
+            _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
+        # chain rule through geyer_solution
+        d_i_omega__q_r_td = _j_i_omega__q_r_td + _j_i_omega__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_omega__q_rd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_omega__q_th_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_omega__q_thd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_omega__k = _j_i_omega__q_thd_td*d_i_q_thd_eff__k
+        d_i_omega0_hat__q_r_td = _j_i_omega0_hat__q_r_td + _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_omega0_hat__q_rd_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_omega0_hat__q_th_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_omega0_hat__q_thd_td = _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_omega0_hat__k = _j_i_omega0_hat__k + _j_i_omega0_hat__q_thd_td*d_i_q_thd_eff__k
+        d_i_a__q_r_td = _j_i_a__q_r_td + _j_i_a__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_a__q_rd_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_a__q_th_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_a__q_thd_td = _j_i_a__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_a__k = _j_i_a__k + _j_i_a__q_thd_td*d_i_q_thd_eff__k
+        d_i_b__q_r_td = _j_i_b__q_r_td + _j_i_b__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_b__q_rd_td = _j_i_b__q_rd_td + _j_i_b__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_b__q_th_td = _j_i_b__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_b__q_thd_td = _j_i_b__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_b__k = _j_i_b__k + _j_i_b__q_thd_td*d_i_q_thd_eff__k
+        d_i_phase_td__q_r_td = _j_i_phase_td__q_r_td + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_phase_td__q_rd_td = _j_i_phase_td__q_rd_td + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_phase_td__q_th_td = _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_phase_td__q_thd_td = _j_i_phase_td__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_phase_td__k = _j_i_phase_td__k + _j_i_phase_td__q_thd_td*d_i_q_thd_eff__k
+        d_i_s_td__q_r_td = _j_i_s_td__q_r_td + _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_r_td
+        d_i_s_td__q_rd_td = _j_i_s_td__q_rd_td + _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_rd_td
+        d_i_s_td__q_th_td = _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_th_td
+        d_i_s_td__q_thd_td = _j_i_s_td__q_thd_td*d_i_q_thd_eff__q_thd_td
+        d_i_s_td__k = _j_i_s_td__k + _j_i_s_td__q_thd_td*d_i_q_thd_eff__k
+        _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
+        if _c1[6] != STATUS_OK:
+            return _NAN72 + (_c1[6],)
+        i_phase_lo = _c1[0]
+        i_s_lo = _c1[1]
+        _j_i_phase_lo__a = _c1[2]
+        _j_i_phase_lo__b = _c1[3]
+        _j_i_s_lo__a = _c1[4]
+        _j_i_s_lo__b = _c1[5]
+        # chain rule through geyer_liftoff_phase
+        d_i_phase_lo__q_r_td = _j_i_phase_lo__a*d_i_a__q_r_td + _j_i_phase_lo__b*d_i_b__q_r_td
+        d_i_phase_lo__q_rd_td = _j_i_phase_lo__a*d_i_a__q_rd_td + _j_i_phase_lo__b*d_i_b__q_rd_td
+        d_i_phase_lo__q_th_td = _j_i_phase_lo__a*d_i_a__q_th_td + _j_i_phase_lo__b*d_i_b__q_th_td
+        d_i_phase_lo__q_thd_td = _j_i_phase_lo__a*d_i_a__q_thd_td + _j_i_phase_lo__b*d_i_b__q_thd_td
+        d_i_phase_lo__k = _j_i_phase_lo__a*d_i_a__k + _j_i_phase_lo__b*d_i_b__k
+        d_i_s_lo__q_r_td = _j_i_s_lo__a*d_i_a__q_r_td + _j_i_s_lo__b*d_i_b__q_r_td
+        d_i_s_lo__q_rd_td = _j_i_s_lo__a*d_i_a__q_rd_td + _j_i_s_lo__b*d_i_b__q_rd_td
+        d_i_s_lo__q_th_td = _j_i_s_lo__a*d_i_a__q_th_td + _j_i_s_lo__b*d_i_b__q_th_td
+        d_i_s_lo__q_thd_td = _j_i_s_lo__a*d_i_a__q_thd_td + _j_i_s_lo__b*d_i_b__q_thd_td
+        d_i_s_lo__k = _j_i_s_lo__a*d_i_a__k + _j_i_s_lo__b*d_i_b__k
+        # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
+        _x14 = (1.0/i_omega0_hat)
+        _x15 = -i_phase_td + (1.5)*math.pi
+        i_t_bottom = _x14*_x15
+        _x16 = _x14**2
+        _pd__2 = -_x15*_x16
+        _x17 = -_x14
+        _pd__3 = _x17
+        d_i_t_bottom__q_r_td = _pd__2*d_i_omega0_hat__q_r_td + _pd__3*d_i_phase_td__q_r_td
+        d_i_t_bottom__q_rd_td = _pd__2*d_i_omega0_hat__q_rd_td + _pd__3*d_i_phase_td__q_rd_td
+        d_i_t_bottom__q_th_td = _pd__2*d_i_omega0_hat__q_th_td + _pd__3*d_i_phase_td__q_th_td
+        d_i_t_bottom__q_thd_td = _pd__2*d_i_omega0_hat__q_thd_td + _pd__3*d_i_phase_td__q_thd_td
+        d_i_t_bottom__k = _pd__2*d_i_omega0_hat__k + _pd__3*d_i_phase_td__k
+        _x18 = i_phase_lo - i_phase_td
+        i_t_stance = _x14*_x18
+        _pd__4 = -_x16*_x18
+        _pd__5 = _x14
+        _pd__6 = _x17
+        d_i_t_stance__q_r_td = (_pd__4*d_i_omega0_hat__q_r_td + _pd__5*d_i_phase_lo__q_r_td
+            + _pd__6*d_i_phase_td__q_r_td)
+        d_i_t_stance__q_rd_td = (_pd__4*d_i_omega0_hat__q_rd_td + _pd__5*d_i_phase_lo__q_rd_td
+            + _pd__6*d_i_phase_td__q_rd_td)
+        d_i_t_stance__q_th_td = (_pd__4*d_i_omega0_hat__q_th_td + _pd__5*d_i_phase_lo__q_th_td
+            + _pd__6*d_i_phase_td__q_th_td)
+        d_i_t_stance__q_thd_td = (_pd__4*d_i_omega0_hat__q_thd_td + _pd__5*d_i_phase_lo__q_thd_td
+            + _pd__6*d_i_phase_td__q_thd_td)
+        d_i_t_stance__k = _pd__4*d_i_omega0_hat__k + _pd__5*d_i_phase_lo__k + _pd__6*d_i_phase_td__k
+        i_bottom_q_r = l0*(i_a - i_b + 1.0)
+        d_i_bottom_q_r__q_r_td = d_i_a__q_r_td*l0 - d_i_b__q_r_td*l0
+        d_i_bottom_q_r__q_rd_td = d_i_a__q_rd_td*l0 - d_i_b__q_rd_td*l0
+        d_i_bottom_q_r__q_th_td = d_i_a__q_th_td*l0 - d_i_b__q_th_td*l0
+        d_i_bottom_q_r__q_thd_td = d_i_a__q_thd_td*l0 - d_i_b__q_thd_td*l0
+        d_i_bottom_q_r__k = d_i_a__k*l0 - d_i_b__k*l0
+        _x19 = (1.5)*math.pi
+        _x20 = _x14*i_omega
+        _x21 = 3.0*math.pi
+        _x22 = _x20*_x21
+        _x23 = _x14*i_phase_td
+        _x24 = _x23*i_a
+        _x25 = math.sqrt(1.0 - i_s_td**2)
+        _x26 = _x25*i_b
+        _x27 = _x14*_x26
+        _x28 = 2.0*i_omega
+        _x29 = -_x23*i_omega + _x28*(_x24 + _x27) + q_th_td
+        i_bottom_q_th = _x19*_x20 - _x22*i_a + _x29
+        _pd__7 = -_x22 + _x23*_x28
+        _x30 = 2.0*_x20
+        _x31 = _x25*_x30
+        _pd__8 = _x31
+        _x32 = _x21*i_a
+        _x33 = -_x23 + 2.0*_x24 + 2.0*_x27
+        _pd__9 = _x14*_x19 - _x14*_x32 + _x33
+        _x34 = _x16*i_phase_td
+        _x35 = _x16*i_omega
+        _x36 = -_x16*_x26 - _x34*i_a
+        _pd__10 = -_x19*_x35 + _x28*_x36 + _x32*_x35 + _x34*i_omega
+        _x37 = -_x20 + _x30*i_a
+        _pd__11 = _x37
+        _x38 = -_x30*i_b*i_s_td/_x25
+        _pd__12 = _x38
+        d_i_bottom_q_th__q_r_td = (_pd__10*d_i_omega0_hat__q_r_td + _pd__11*d_i_phase_td__q_r_td
+            + _pd__12*d_i_s_td__q_r_td + _pd__7*d_i_a__q_r_td + _pd__8*d_i_b__q_r_td
+            + _pd__9*d_i_omega__q_r_td)
+        d_i_bottom_q_th__q_rd_td = (_pd__10*d_i_omega0_hat__q_rd_td + _pd__11*d_i_phase_td__q_rd_td
+            + _pd__12*d_i_s_td__q_rd_td + _pd__7*d_i_a__q_rd_td + _pd__8*d_i_b__q_rd_td
+            + _pd__9*d_i_omega__q_rd_td)
+        d_i_bottom_q_th__q_th_td = (_pd__10*d_i_omega0_hat__q_th_td + _pd__11*d_i_phase_td__q_th_td
+            + _pd__12*d_i_s_td__q_th_td + _pd__7*d_i_a__q_th_td + _pd__8*d_i_b__q_th_td
+            + _pd__9*d_i_omega__q_th_td + 1.0)
+        d_i_bottom_q_th__q_thd_td = (_pd__10*d_i_omega0_hat__q_thd_td + _pd__11*d_i_phase_td__q_thd_td
+            + _pd__12*d_i_s_td__q_thd_td + _pd__7*d_i_a__q_thd_td + _pd__8*d_i_b__q_thd_td
+            + _pd__9*d_i_omega__q_thd_td)
+        d_i_bottom_q_th__k = (_pd__10*d_i_omega0_hat__k + _pd__11*d_i_phase_td__k + _pd__12*d_i_s_td__k
+            + _pd__7*d_i_a__k + _pd__8*d_i_b__k + _pd__9*d_i_omega__k)
+        _x39 = math.sqrt(1.0 - i_s_lo**2)
+        _x40 = _x39*l0
+        _x41 = _x40*i_omega0_hat
+        i_liftoff_q_rd = _x41*i_b
+        _pd__16 = _x41
+        _pd__17 = _x40*i_b
+        _x42 = i_b*i_s_lo/_x39
+        _pd__18 = -_x42*i_omega0_hat*l0
+        d_i_liftoff_q_rd__q_r_td = (_pd__16*d_i_b__q_r_td + _pd__17*d_i_omega0_hat__q_r_td
+            + _pd__18*d_i_s_lo__q_r_td)
+        d_i_liftoff_q_rd__q_rd_td = (_pd__16*d_i_b__q_rd_td + _pd__17*d_i_omega0_hat__q_rd_td
+            + _pd__18*d_i_s_lo__q_rd_td)
+        d_i_liftoff_q_rd__q_th_td = (_pd__16*d_i_b__q_th_td + _pd__17*d_i_omega0_hat__q_th_td
+            + _pd__18*d_i_s_lo__q_th_td)
+        d_i_liftoff_q_rd__q_thd_td = (_pd__16*d_i_b__q_thd_td + _pd__17*d_i_omega0_hat__q_thd_td
+            + _pd__18*d_i_s_lo__q_thd_td)
+        d_i_liftoff_q_rd__k = _pd__16*d_i_b__k + _pd__17*d_i_omega0_hat__k + _pd__18*d_i_s_lo__k
+        _x43 = _x14*i_phase_lo
+        _x44 = _x43*i_a
+        _x45 = _x14*_x39*i_b
+        _x46 = _x20*i_phase_lo
+        i_liftoff_q_th = -_x28*(_x44 - _x45) + _x29 + _x46
+        _pd__19 = 2.0*_x14*i_omega*i_phase_td - 2.0*_x46
+        _pd__20 = _x30*_x39 + _x31
+        _pd__21 = _x33 + _x43 - 2.0*_x44 + 2.0*_x45
+        _x47 = _x16*i_phase_lo
+        _pd__22 = _x16*i_omega*i_phase_td - _x28*(_x16*_x39*i_b - _x47*i_a) + 2.0*_x36*i_omega - _x47*i_omega
+        _pd__23 = -_x37
+        _pd__24 = _x37
+        _pd__25 = -_x30*_x42
+        _pd__26 = _x38
+        d_i_liftoff_q_th__q_r_td = (_pd__19*d_i_a__q_r_td + _pd__20*d_i_b__q_r_td + _pd__21*d_i_omega__q_r_td
+            + _pd__22*d_i_omega0_hat__q_r_td + _pd__23*d_i_phase_lo__q_r_td + _pd__24*d_i_phase_td__q_r_td
+            + _pd__25*d_i_s_lo__q_r_td + _pd__26*d_i_s_td__q_r_td)
+        d_i_liftoff_q_th__q_rd_td = (_pd__19*d_i_a__q_rd_td + _pd__20*d_i_b__q_rd_td
+            + _pd__21*d_i_omega__q_rd_td + _pd__22*d_i_omega0_hat__q_rd_td + _pd__23*d_i_phase_lo__q_rd_td
+            + _pd__24*d_i_phase_td__q_rd_td + _pd__25*d_i_s_lo__q_rd_td + _pd__26*d_i_s_td__q_rd_td)
+        d_i_liftoff_q_th__q_th_td = (_pd__19*d_i_a__q_th_td + _pd__20*d_i_b__q_th_td
+            + _pd__21*d_i_omega__q_th_td + _pd__22*d_i_omega0_hat__q_th_td + _pd__23*d_i_phase_lo__q_th_td
+            + _pd__24*d_i_phase_td__q_th_td + _pd__25*d_i_s_lo__q_th_td + _pd__26*d_i_s_td__q_th_td + 1.0)
+        d_i_liftoff_q_th__q_thd_td = (_pd__19*d_i_a__q_thd_td + _pd__20*d_i_b__q_thd_td
+            + _pd__21*d_i_omega__q_thd_td + _pd__22*d_i_omega0_hat__q_thd_td + _pd__23*d_i_phase_lo__q_thd_td
+            + _pd__24*d_i_phase_td__q_thd_td + _pd__25*d_i_s_lo__q_thd_td + _pd__26*d_i_s_td__q_thd_td)
+        d_i_liftoff_q_th__k = (_pd__19*d_i_a__k + _pd__20*d_i_b__k + _pd__21*d_i_omega__k
+            + _pd__22*d_i_omega0_hat__k + _pd__23*d_i_phase_lo__k + _pd__24*d_i_phase_td__k
+            + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k)
+        # the leg stays above horizontal
+        if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
+            return _NAN72 + (STATUS_FALL,)
+        if _conv0 or _it0 == _last0:
+            break
+        # eq (48) with 2 or 3 samples
+        if samples == 2.0:
+            _x48 = g_s*l0*m
+            _x49 = _x48*math.sin(i_liftoff_q_th)
+            _x50 = _x48*math.sin(q_th_td)
+            _x51 = (0.5)*i_t_stance
+            i_P_new = _x51*(_x49 + _x50)
+            _x52 = _x48*_x51
+            _pd__31 = _x52*math.cos(i_liftoff_q_th)
+            _pd__32 = (0.5)*_x49 + (0.5)*_x50
+            d_i_P_new__q_r_td = _pd__31*d_i_liftoff_q_th__q_r_td + _pd__32*d_i_t_stance__q_r_td
+            d_i_P_new__q_rd_td = _pd__31*d_i_liftoff_q_th__q_rd_td + _pd__32*d_i_t_stance__q_rd_td
+            d_i_P_new__q_th_td = (_pd__31*d_i_liftoff_q_th__q_th_td + _pd__32*d_i_t_stance__q_th_td
+                + _x52*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = _pd__31*d_i_liftoff_q_th__q_thd_td + _pd__32*d_i_t_stance__q_thd_td
+            d_i_P_new__k = _pd__31*d_i_liftoff_q_th__k + _pd__32*d_i_t_stance__k
+        elif samples == 3.0:
+            _x53 = g_s*l0*m
+            _x54 = _x53*math.sin(i_bottom_q_th)
+            _x55 = _x53*math.sin(i_liftoff_q_th)
+            _x56 = _x53*math.sin(q_th_td)
+            _x57 = (0.3333333333333333)*i_t_stance
+            i_P_new = _x57*(_x54 + _x55 + _x56)
+            _x58 = _x53*_x57
+            _pd__33 = _x58*math.cos(i_bottom_q_th)
+            _pd__34 = _x58*math.cos(i_liftoff_q_th)
+            _pd__35 = (0.3333333333333333)*_x54 + (0.3333333333333333)*_x55 + (0.3333333333333333)*_x56
+            d_i_P_new__q_r_td = (_pd__33*d_i_bottom_q_th__q_r_td + _pd__34*d_i_liftoff_q_th__q_r_td
+                + _pd__35*d_i_t_stance__q_r_td)
+            d_i_P_new__q_rd_td = (_pd__33*d_i_bottom_q_th__q_rd_td + _pd__34*d_i_liftoff_q_th__q_rd_td
+                + _pd__35*d_i_t_stance__q_rd_td)
+            d_i_P_new__q_th_td = (_pd__33*d_i_bottom_q_th__q_th_td + _pd__34*d_i_liftoff_q_th__q_th_td
+                + _pd__35*d_i_t_stance__q_th_td + _x58*math.cos(q_th_td))
+            d_i_P_new__q_thd_td = (_pd__33*d_i_bottom_q_th__q_thd_td + _pd__34*d_i_liftoff_q_th__q_thd_td
+                + _pd__35*d_i_t_stance__q_thd_td)
+            d_i_P_new__k = _pd__33*d_i_bottom_q_th__k + _pd__34*d_i_liftoff_q_th__k + _pd__35*d_i_t_stance__k
+        else:
+            return _NAN72 + (STATUS_INVALID_INPUT,)
+        # next values
+        P_c__next = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-        P_c = _n0_0
-        P_c__tan = _n0_1
+        _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td,
+            d_i_P_new__k, )
+        _pk0 = _pkn0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # continuation
-    _c3 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_7(E_td, E_td__tan, P_c, P_c__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, ramp, reading, share)
-    if _c3[21] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[21])
-    t_bottom = _c3[0]
-    t_stance = _c3[1]
-    bottom_q_r = _c3[2]
-    bottom_q_rd = _c3[3]
-    bottom_q_th = _c3[4]
-    bottom_q_thd = _c3[5]
-    liftoff_q_r = _c3[6]
-    liftoff_q_rd = _c3[7]
-    liftoff_q_th = _c3[8]
-    liftoff_q_thd = _c3[9]
-    t_bottom__tan = _c3[10]
-    t_stance__tan = _c3[11]
-    bottom_q_r__tan = _c3[12]
-    bottom_q_rd__tan = _c3[13]
-    bottom_q_th__tan = _c3[14]
-    bottom_q_thd__tan = _c3[15]
-    liftoff_q_r__tan = _c3[16]
-    liftoff_q_rd__tan = _c3[17]
-    liftoff_q_th__tan = _c3[18]
-    liftoff_q_thd__tan = _c3[19]
-    passes__tan = _c3[20]
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol):
-    """Gravity correction type 0 (leg length l0): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
-
-    Report equations: 46, 47, 48, 49, 50, 51.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
-        iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
-        passes: fixed-point passes run
-        d_t_bottom__q_r_td: d t_bottom / d q_r_td
-        d_t_bottom__q_rd_td: d t_bottom / d q_rd_td
-        d_t_bottom__q_th_td: d t_bottom / d q_th_td
-        d_t_bottom__q_thd_td: d t_bottom / d q_thd_td
-        d_t_bottom__k: d t_bottom / d k
-        d_t_stance__q_r_td: d t_stance / d q_r_td
-        d_t_stance__q_rd_td: d t_stance / d q_rd_td
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__q_thd_td: d t_stance / d q_thd_td
-        d_t_stance__k: d t_stance / d k
-        d_bottom_q_r__q_r_td: d bottom_q_r / d q_r_td
-        d_bottom_q_r__q_rd_td: d bottom_q_r / d q_rd_td
-        d_bottom_q_r__q_th_td: d bottom_q_r / d q_th_td
-        d_bottom_q_r__q_thd_td: d bottom_q_r / d q_thd_td
-        d_bottom_q_r__k: d bottom_q_r / d k
-        d_bottom_q_rd__q_r_td: d bottom_q_rd / d q_r_td
-        d_bottom_q_rd__q_rd_td: d bottom_q_rd / d q_rd_td
-        d_bottom_q_rd__q_th_td: d bottom_q_rd / d q_th_td
-        d_bottom_q_rd__q_thd_td: d bottom_q_rd / d q_thd_td
-        d_bottom_q_rd__k: d bottom_q_rd / d k
-        d_bottom_q_th__q_r_td: d bottom_q_th / d q_r_td
-        d_bottom_q_th__q_rd_td: d bottom_q_th / d q_rd_td
-        d_bottom_q_th__q_th_td: d bottom_q_th / d q_th_td
-        d_bottom_q_th__q_thd_td: d bottom_q_th / d q_thd_td
-        d_bottom_q_th__k: d bottom_q_th / d k
-        d_bottom_q_thd__q_r_td: d bottom_q_thd / d q_r_td
-        d_bottom_q_thd__q_rd_td: d bottom_q_thd / d q_rd_td
-        d_bottom_q_thd__q_th_td: d bottom_q_thd / d q_th_td
-        d_bottom_q_thd__q_thd_td: d bottom_q_thd / d q_thd_td
-        d_bottom_q_thd__k: d bottom_q_thd / d k
-        d_liftoff_q_r__q_r_td: d liftoff_q_r / d q_r_td
-        d_liftoff_q_r__q_rd_td: d liftoff_q_r / d q_rd_td
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__q_thd_td: d liftoff_q_r / d q_thd_td
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__q_r_td: d liftoff_q_rd / d q_r_td
-        d_liftoff_q_rd__q_rd_td: d liftoff_q_rd / d q_rd_td
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__q_thd_td: d liftoff_q_rd / d q_thd_td
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__q_r_td: d liftoff_q_th / d q_r_td
-        d_liftoff_q_th__q_rd_td: d liftoff_q_th / d q_rd_td
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__q_thd_td: d liftoff_q_th / d q_thd_td
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__q_r_td: d liftoff_q_thd / d q_r_td
-        d_liftoff_q_thd__q_rd_td: d liftoff_q_thd / d q_rd_td
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__q_thd_td: d liftoff_q_thd / d q_thd_td
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
-        d_P_c__q_r_td: d P_c / d q_r_td
-        d_P_c__q_rd_td: d P_c / d q_rd_td
-        d_P_c__q_th_td: d P_c / d q_th_td
-        d_P_c__q_thd_td: d P_c / d q_thd_td
-        d_P_c__k: d P_c / d k
-        d_passes__q_r_td: d passes / d q_r_td
-        d_passes__q_rd_td: d passes / d q_rd_td
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__q_thd_td: d passes / d q_thd_td
-        d_passes__k: d passes / d k
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to q_r_td
-    _c0 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_t_bottom__q_r_td = _c0[12]
-    d_t_stance__q_r_td = _c0[13]
-    d_bottom_q_r__q_r_td = _c0[14]
-    d_bottom_q_rd__q_r_td = _c0[15]
-    d_bottom_q_th__q_r_td = _c0[16]
-    d_bottom_q_thd__q_r_td = _c0[17]
-    d_liftoff_q_r__q_r_td = _c0[18]
-    d_liftoff_q_rd__q_r_td = _c0[19]
-    d_liftoff_q_th__q_r_td = _c0[20]
-    d_liftoff_q_thd__q_r_td = _c0[21]
-    d_P_c__q_r_td = _c0[22]
-    d_passes__q_r_td = _c0[23]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    P_c = _c0[10]
-    passes = _c0[11]
-    # derivatives with respect to q_rd_td
-    _c1 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_t_bottom__q_rd_td = _c1[12]
-    d_t_stance__q_rd_td = _c1[13]
-    d_bottom_q_r__q_rd_td = _c1[14]
-    d_bottom_q_rd__q_rd_td = _c1[15]
-    d_bottom_q_th__q_rd_td = _c1[16]
-    d_bottom_q_thd__q_rd_td = _c1[17]
-    d_liftoff_q_r__q_rd_td = _c1[18]
-    d_liftoff_q_rd__q_rd_td = _c1[19]
-    d_liftoff_q_th__q_rd_td = _c1[20]
-    d_liftoff_q_thd__q_rd_td = _c1[21]
-    d_P_c__q_rd_td = _c1[22]
-    d_passes__q_rd_td = _c1[23]
-    # derivatives with respect to q_th_td
-    _c2 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_t_bottom__q_th_td = _c2[12]
-    d_t_stance__q_th_td = _c2[13]
-    d_bottom_q_r__q_th_td = _c2[14]
-    d_bottom_q_rd__q_th_td = _c2[15]
-    d_bottom_q_th__q_th_td = _c2[16]
-    d_bottom_q_thd__q_th_td = _c2[17]
-    d_liftoff_q_r__q_th_td = _c2[18]
-    d_liftoff_q_rd__q_th_td = _c2[19]
-    d_liftoff_q_th__q_th_td = _c2[20]
-    d_liftoff_q_thd__q_th_td = _c2[21]
-    d_P_c__q_th_td = _c2[22]
-    d_passes__q_th_td = _c2[23]
-    # derivatives with respect to q_thd_td
-    _c3 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_t_bottom__q_thd_td = _c3[12]
-    d_t_stance__q_thd_td = _c3[13]
-    d_bottom_q_r__q_thd_td = _c3[14]
-    d_bottom_q_rd__q_thd_td = _c3[15]
-    d_bottom_q_th__q_thd_td = _c3[16]
-    d_bottom_q_thd__q_thd_td = _c3[17]
-    d_liftoff_q_r__q_thd_td = _c3[18]
-    d_liftoff_q_rd__q_thd_td = _c3[19]
-    d_liftoff_q_th__q_thd_td = _c3[20]
-    d_liftoff_q_thd__q_thd_td = _c3[21]
-    d_P_c__q_thd_td = _c3[22]
-    d_passes__q_thd_td = _c3[23]
-    # derivatives with respect to k
-    _c4 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_t_bottom__k = _c4[12]
-    d_t_stance__k = _c4[13]
-    d_bottom_q_r__k = _c4[14]
-    d_bottom_q_rd__k = _c4[15]
-    d_bottom_q_th__k = _c4[16]
-    d_bottom_q_thd__k = _c4[17]
-    d_liftoff_q_r__k = _c4[18]
-    d_liftoff_q_rd__k = _c4[19]
-    d_liftoff_q_th__k = _c4[20]
-    d_liftoff_q_thd__k = _c4[21]
-    d_P_c__k = _c4[22]
-    d_passes__k = _c4[23]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_P_c__q_r_td) and math.isfinite(d_P_c__q_rd_td) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__q_thd_td) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
+    # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
+    bottom_q_rd = 0.0
+    bottom_q_th = i_bottom_q_th
+    _x67 = (1.0/i_t_stance)
+    _x59 = _x67*ramp
+    _x60 = _x59*i_t_bottom - ramp + 1.0
+    _x61 = P_c*_x60 + p_td
+    _x62 = (1.0/m)
+    _x66 = (1.0/i_bottom_q_r)
+    _x63 = _x62*_x66**2
+    bottom_q_thd = _x61*_x63
+    _pd__36 = _x60*_x63
+    _pd__37 = -2.0*_x61*_x62*_x66**3
+    _x64 = P_c*_x63
+    _pd__38 = _x59*_x64
+    _pd__39 = -_x64*_x67**2*i_t_bottom*ramp
+    _pd__40 = _x63
+    d_bottom_q_thd__q_r_td = (_pd__36*d_P_c__q_r_td + _pd__37*d_i_bottom_q_r__q_r_td
+        + _pd__38*d_i_t_bottom__q_r_td + _pd__39*d_i_t_stance__q_r_td + _pd__40*d_p_td__q_r_td)
+    d_bottom_q_thd__q_rd_td = (_pd__36*d_P_c__q_rd_td + _pd__37*d_i_bottom_q_r__q_rd_td
+        + _pd__38*d_i_t_bottom__q_rd_td + _pd__39*d_i_t_stance__q_rd_td)
+    d_bottom_q_thd__q_th_td = (_pd__36*d_P_c__q_th_td + _pd__37*d_i_bottom_q_r__q_th_td
+        + _pd__38*d_i_t_bottom__q_th_td + _pd__39*d_i_t_stance__q_th_td)
+    d_bottom_q_thd__q_thd_td = (_pd__36*d_P_c__q_thd_td + _pd__37*d_i_bottom_q_r__q_thd_td
+        + _pd__38*d_i_t_bottom__q_thd_td + _pd__39*d_i_t_stance__q_thd_td + _pd__40*d_p_td__q_thd_td)
+    d_bottom_q_thd__k = (_pd__36*d_P_c__k + _pd__37*d_i_bottom_q_r__k + _pd__38*d_i_t_bottom__k
+        + _pd__39*d_i_t_stance__k)
+    liftoff_q_r = q_r_lo
+    liftoff_q_th = i_liftoff_q_th
+    _x65 = _x62/q_r_lo**2
+    liftoff_q_thd = _x65*(P_c + p_td)
+    _pd__41 = _x65
+    _pd__42 = _x65
+    d_liftoff_q_thd__q_r_td = _pd__41*d_P_c__q_r_td + _pd__42*d_p_td__q_r_td
+    d_liftoff_q_thd__q_rd_td = _pd__41*d_P_c__q_rd_td
+    d_liftoff_q_thd__q_th_td = _pd__41*d_P_c__q_th_td
+    d_liftoff_q_thd__q_thd_td = _pd__41*d_P_c__q_thd_td + _pd__42*d_p_td__q_thd_td
+    d_liftoff_q_thd__k = _pd__41*d_P_c__k
+    if reading == 0.0:
+        _x68 = (1.0/m)
+        _x69 = 2.0*g_s*q_r_lo
+        _x70 = _x68*l0**2
+        _x71 = q_r_lo**2
+        _x72 = _x68*_x71
+        _x73 = _x68**2/_x71
+        _q_rd_lo_sq = (2.0*E_td*_x68 + 2.0*_x68*k*l0*q_r_lo - _x69*math.cos(i_liftoff_q_th) - _x70*k - _x72*k
+            - _x73*(P_c + p_td)**2)
+        _x74 = 2.0*_x68
+        _pd__43 = _x74
+        _x75 = -_x73*(2.0*P_c + 2.0*p_td)
+        _pd__44 = _x75
+        _pd__45 = _x69*math.sin(i_liftoff_q_th)
+        _pd__46 = _x75
+        _d_q_rd_lo_sq__q_r_td = (_pd__43*d_E_td__q_r_td + _pd__44*d_P_c__q_r_td
+            + _pd__45*d_i_liftoff_q_th__q_r_td + _pd__46*d_p_td__q_r_td)
+        _d_q_rd_lo_sq__q_rd_td = (_pd__43*d_E_td__q_rd_td + _pd__44*d_P_c__q_rd_td
+            + _pd__45*d_i_liftoff_q_th__q_rd_td)
+        _d_q_rd_lo_sq__q_th_td = (_pd__43*d_E_td__q_th_td + _pd__44*d_P_c__q_th_td
+            + _pd__45*d_i_liftoff_q_th__q_th_td)
+        _d_q_rd_lo_sq__q_thd_td = (_pd__43*d_E_td__q_thd_td + _pd__44*d_P_c__q_thd_td
+            + _pd__45*d_i_liftoff_q_th__q_thd_td + _pd__46*d_p_td__q_thd_td)
+        _d_q_rd_lo_sq__k = (_pd__43*d_E_td__k + _pd__44*d_P_c__k + _pd__45*d_i_liftoff_q_th__k - _x70 - _x72
+            + _x74*l0*q_r_lo)
+        # q_rd_lo^2 from the energy (27)
+        if not ((_q_rd_lo_sq >= 0.0)):
+            return _NAN72 + (STATUS_ENERGY_DEFICIT,)
+        # q_rd_lo from the energy
+        _x76 = math.sqrt(_q_rd_lo_sq)
+        liftoff_q_rd = _x76
+        _pd__47 = (0.5)/_x76
+        d_liftoff_q_rd__q_r_td = _d_q_rd_lo_sq__q_r_td*_pd__47
+        d_liftoff_q_rd__q_rd_td = _d_q_rd_lo_sq__q_rd_td*_pd__47
+        d_liftoff_q_rd__q_th_td = _d_q_rd_lo_sq__q_th_td*_pd__47
+        d_liftoff_q_rd__q_thd_td = _d_q_rd_lo_sq__q_thd_td*_pd__47
+        d_liftoff_q_rd__k = _d_q_rd_lo_sq__k*_pd__47
+    elif reading == 1.0:
+        # from (11)
+        liftoff_q_rd = i_liftoff_q_rd
+        # tangents as every branch names them
+        d_liftoff_q_rd__q_r_td = d_i_liftoff_q_rd__q_r_td
+        d_liftoff_q_rd__q_rd_td = d_i_liftoff_q_rd__q_rd_td
+        d_liftoff_q_rd__q_th_td = d_i_liftoff_q_rd__q_th_td
+        d_liftoff_q_rd__q_thd_td = d_i_liftoff_q_rd__q_thd_td
+        d_liftoff_q_rd__k = d_i_liftoff_q_rd__k
+    else:
+        return _NAN72 + (STATUS_INVALID_INPUT,)
+    # derivatives of the outputs
+    d_t_bottom__q_r_td = d_i_t_bottom__q_r_td
+    d_t_bottom__q_rd_td = d_i_t_bottom__q_rd_td
+    d_t_bottom__q_th_td = d_i_t_bottom__q_th_td
+    d_t_bottom__q_thd_td = d_i_t_bottom__q_thd_td
+    d_t_bottom__k = d_i_t_bottom__k
+    d_t_stance__q_r_td = d_i_t_stance__q_r_td
+    d_t_stance__q_rd_td = d_i_t_stance__q_rd_td
+    d_t_stance__q_th_td = d_i_t_stance__q_th_td
+    d_t_stance__q_thd_td = d_i_t_stance__q_thd_td
+    d_t_stance__k = d_i_t_stance__k
+    d_bottom_q_r__q_r_td = d_i_bottom_q_r__q_r_td
+    d_bottom_q_r__q_rd_td = d_i_bottom_q_r__q_rd_td
+    d_bottom_q_r__q_th_td = d_i_bottom_q_r__q_th_td
+    d_bottom_q_r__q_thd_td = d_i_bottom_q_r__q_thd_td
+    d_bottom_q_r__k = d_i_bottom_q_r__k
+    d_bottom_q_rd__q_r_td = 0.0
+    d_bottom_q_rd__q_rd_td = 0.0
+    d_bottom_q_rd__q_th_td = 0.0
+    d_bottom_q_rd__q_thd_td = 0.0
+    d_bottom_q_rd__k = 0.0
+    d_bottom_q_th__q_r_td = d_i_bottom_q_th__q_r_td
+    d_bottom_q_th__q_rd_td = d_i_bottom_q_th__q_rd_td
+    d_bottom_q_th__q_th_td = d_i_bottom_q_th__q_th_td
+    d_bottom_q_th__q_thd_td = d_i_bottom_q_th__q_thd_td
+    d_bottom_q_th__k = d_i_bottom_q_th__k
+    d_liftoff_q_r__q_r_td = 0.0
+    d_liftoff_q_r__q_rd_td = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__q_thd_td = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_liftoff_q_th__q_r_td = d_i_liftoff_q_th__q_r_td
+    d_liftoff_q_th__q_rd_td = d_i_liftoff_q_th__q_rd_td
+    d_liftoff_q_th__q_th_td = d_i_liftoff_q_th__q_th_td
+    d_liftoff_q_th__q_thd_td = d_i_liftoff_q_th__q_thd_td
+    d_liftoff_q_th__k = d_i_liftoff_q_th__k
+    d_passes__q_r_td = 0.0
+    d_passes__q_rd_td = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__q_thd_td = 0.0
+    d_passes__k = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, out, status):
+def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        samples, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type0_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
+    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
+    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
+    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
+    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
+    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
+    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
+    d_passes__q_thd_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type0_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol)
+        res = (gravity_type0_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
+            q_r_lo, reading, samples, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1006,19 +632,23 @@ def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan):
-    """Apex-return map: exact flights, stance by Gravity correction type 0 (leg length l0), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan).
+def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
+        q_r_lo, reading, samples, iterations, tol):
+    """Apex-return map by Gravity correction type 0 (leg length l0), and its derivatives with respect to the
+    apex, the touchdown angle and the stiffness.
 
     Report equations: 46, 47, 48, 49, 50, 51.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -1027,14 +657,11 @@ def gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, 
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
+        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the
+            bottom) in [2, 3]
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
-        k__tan: direction: its component along k
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1051,321 +678,232 @@ def gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, 
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        apex_height__tan: derivative of apex_height along the direction
-        apex_speed__tan: derivative of apex_speed along the direction
-        t_descent__tan: derivative of t_descent along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        t_ascent__tan: derivative of t_ascent along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        step_length__tan: derivative of step_length along the direction
-        foot_x__tan: derivative of foot_x along the direction
-        foot_y__tan: derivative of foot_y along the direction
-        P_c__tan: derivative of P_c along the direction
-        passes__tan: derivative of passes along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 5
+    # Total ops: 178
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading
+            == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    td_q_r__tan = _c0[6]
-    td_q_rd__tan = _c0[7]
-    td_q_th__tan = _c0[8]
-    td_q_thd__tan = _c0[9]
-    t_descent__tan = _c0[10]
-    foot_x__tan = _c0[11]
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
+    if _c0[30] != STATUS_OK:
+        return _NAN84 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
     # stance: Gravity correction type 0 (leg length l0)
-    _c1 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k__tan)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c = _c1[10]
-    passes = _c1[11]
-    t_stance__tan = _c1[13]
-    liftoff_q_r__tan = _c1[18]
-    liftoff_q_rd__tan = _c1[19]
-    liftoff_q_th__tan = _c1[20]
-    liftoff_q_thd__tan = _c1[21]
-    P_c__tan = _c1[22]
-    passes__tan = _c1[23]
+    _c1 = (gravity_type0_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading,
+        samples, iterations, tol))
+    if _c1[72] != STATUS_OK:
+        return _NAN84 + (_c1[72],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
+        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    # chain rule through gravity_type0_stance
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+    d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
+    d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
+    d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c__ground = _j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_thd_td*_j_td_q_thd__ground
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    apex_height__tan = _c2[5]
-    apex_speed__tan = _c2[6]
-    t_ascent__tan = _c2[7]
-    next_apex_x__tan = _c2[9]
+    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+        direction))
+    if _c2[20] != STATUS_OK:
+        return _NAN84 + (_c2[20],)
+    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
+        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
+        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+    # chain rule through liftoff_to_apex
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
+    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
+    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
+        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__k = (_j_liftoff_q_rd__k*_j_next_apex_x__q_rd + _j_liftoff_q_th__k*_j_next_apex_x__q_th
+        + _j_liftoff_q_thd__k*_j_next_apex_x__q_thd)
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
-    step_length__tan = foot_x__tan + next_apex_x__tan
+    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
+    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
+    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
+    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     foot_y = -b_y_apex + ground
-    foot_y__tan = -b_y_apex__tan + ground__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, P_c__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol):
-    """Apex-return map by Gravity correction type 0 (leg length l0), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
-
-    Report equations: 46, 47, 48, 49, 50, 51.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
-        samples: option samples: number of torque samples in (48): 2 (touchdown, liftoff) or 3 (and the bottom) in [2, 3]
-        iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
-        passes: fixed-point passes run
-        d_apex_height__b_y_apex: d apex_height / d b_y_apex
-        d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
-        d_apex_height__q_th_td: d apex_height / d q_th_td
-        d_apex_height__ground: d apex_height / d ground
-        d_apex_height__k: d apex_height / d k
-        d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
-        d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
-        d_apex_speed__q_th_td: d apex_speed / d q_th_td
-        d_apex_speed__ground: d apex_speed / d ground
-        d_apex_speed__k: d apex_speed / d k
-        d_t_descent__b_y_apex: d t_descent / d b_y_apex
-        d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
-        d_t_descent__q_th_td: d t_descent / d q_th_td
-        d_t_descent__ground: d t_descent / d ground
-        d_t_descent__k: d t_descent / d k
-        d_t_stance__b_y_apex: d t_stance / d b_y_apex
-        d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__ground: d t_stance / d ground
-        d_t_stance__k: d t_stance / d k
-        d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
-        d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
-        d_t_ascent__q_th_td: d t_ascent / d q_th_td
-        d_t_ascent__ground: d t_ascent / d ground
-        d_t_ascent__k: d t_ascent / d k
-        d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
-        d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__ground: d liftoff_q_r / d ground
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
-        d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
-        d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__ground: d liftoff_q_th / d ground
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
-        d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
-        d_step_length__b_y_apex: d step_length / d b_y_apex
-        d_step_length__b_xd_apex: d step_length / d b_xd_apex
-        d_step_length__q_th_td: d step_length / d q_th_td
-        d_step_length__ground: d step_length / d ground
-        d_step_length__k: d step_length / d k
-        d_foot_x__b_y_apex: d foot_x / d b_y_apex
-        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
-        d_foot_x__q_th_td: d foot_x / d q_th_td
-        d_foot_x__ground: d foot_x / d ground
-        d_foot_x__k: d foot_x / d k
-        d_foot_y__b_y_apex: d foot_y / d b_y_apex
-        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
-        d_foot_y__q_th_td: d foot_y / d q_th_td
-        d_foot_y__ground: d foot_y / d ground
-        d_foot_y__k: d foot_y / d k
-        d_P_c__b_y_apex: d P_c / d b_y_apex
-        d_P_c__b_xd_apex: d P_c / d b_xd_apex
-        d_P_c__q_th_td: d P_c / d q_th_td
-        d_P_c__ground: d P_c / d ground
-        d_P_c__k: d P_c / d k
-        d_passes__b_y_apex: d passes / d b_y_apex
-        d_passes__b_xd_apex: d passes / d b_xd_apex
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__ground: d passes / d ground
-        d_passes__k: d passes / d k
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(samples) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to b_y_apex
-    _c0 = gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[28])
-    d_apex_height__b_y_apex = _c0[14]
-    d_apex_speed__b_y_apex = _c0[15]
-    d_t_descent__b_y_apex = _c0[16]
-    d_t_stance__b_y_apex = _c0[17]
-    d_t_ascent__b_y_apex = _c0[18]
-    d_liftoff_q_r__b_y_apex = _c0[19]
-    d_liftoff_q_rd__b_y_apex = _c0[20]
-    d_liftoff_q_th__b_y_apex = _c0[21]
-    d_liftoff_q_thd__b_y_apex = _c0[22]
-    d_step_length__b_y_apex = _c0[23]
-    d_foot_x__b_y_apex = _c0[24]
-    d_foot_y__b_y_apex = _c0[25]
-    d_P_c__b_y_apex = _c0[26]
-    d_passes__b_y_apex = _c0[27]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    step_length = _c0[9]
-    foot_x = _c0[10]
-    foot_y = _c0[11]
-    P_c = _c0[12]
-    passes = _c0[13]
-    # derivatives with respect to b_xd_apex
-    _c1 = gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[28])
-    d_apex_height__b_xd_apex = _c1[14]
-    d_apex_speed__b_xd_apex = _c1[15]
-    d_t_descent__b_xd_apex = _c1[16]
-    d_t_stance__b_xd_apex = _c1[17]
-    d_t_ascent__b_xd_apex = _c1[18]
-    d_liftoff_q_r__b_xd_apex = _c1[19]
-    d_liftoff_q_rd__b_xd_apex = _c1[20]
-    d_liftoff_q_th__b_xd_apex = _c1[21]
-    d_liftoff_q_thd__b_xd_apex = _c1[22]
-    d_step_length__b_xd_apex = _c1[23]
-    d_foot_x__b_xd_apex = _c1[24]
-    d_foot_y__b_xd_apex = _c1[25]
-    d_P_c__b_xd_apex = _c1[26]
-    d_passes__b_xd_apex = _c1[27]
-    # derivatives with respect to q_th_td
-    _c2 = gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[28])
-    d_apex_height__q_th_td = _c2[14]
-    d_apex_speed__q_th_td = _c2[15]
-    d_t_descent__q_th_td = _c2[16]
-    d_t_stance__q_th_td = _c2[17]
-    d_t_ascent__q_th_td = _c2[18]
-    d_liftoff_q_r__q_th_td = _c2[19]
-    d_liftoff_q_rd__q_th_td = _c2[20]
-    d_liftoff_q_th__q_th_td = _c2[21]
-    d_liftoff_q_thd__q_th_td = _c2[22]
-    d_step_length__q_th_td = _c2[23]
-    d_foot_x__q_th_td = _c2[24]
-    d_foot_y__q_th_td = _c2[25]
-    d_P_c__q_th_td = _c2[26]
-    d_passes__q_th_td = _c2[27]
-    # derivatives with respect to ground
-    _c3 = gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[28])
-    d_apex_height__ground = _c3[14]
-    d_apex_speed__ground = _c3[15]
-    d_t_descent__ground = _c3[16]
-    d_t_stance__ground = _c3[17]
-    d_t_ascent__ground = _c3[18]
-    d_liftoff_q_r__ground = _c3[19]
-    d_liftoff_q_rd__ground = _c3[20]
-    d_liftoff_q_th__ground = _c3[21]
-    d_liftoff_q_thd__ground = _c3[22]
-    d_step_length__ground = _c3[23]
-    d_foot_x__ground = _c3[24]
-    d_foot_y__ground = _c3[25]
-    d_P_c__ground = _c3[26]
-    d_passes__ground = _c3[27]
-    # derivatives with respect to k
-    _c4 = gravity_type0_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[28])
-    d_apex_height__k = _c4[14]
-    d_apex_speed__k = _c4[15]
-    d_t_descent__k = _c4[16]
-    d_t_stance__k = _c4[17]
-    d_t_ascent__k = _c4[18]
-    d_liftoff_q_r__k = _c4[19]
-    d_liftoff_q_rd__k = _c4[20]
-    d_liftoff_q_th__k = _c4[21]
-    d_liftoff_q_thd__k = _c4[22]
-    d_step_length__k = _c4[23]
-    d_foot_x__k = _c4[24]
-    d_foot_y__k = _c4[25]
-    d_P_c__k = _c4[26]
-    d_passes__k = _c4[27]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k) and math.isfinite(d_P_c__b_y_apex) and math.isfinite(d_P_c__b_xd_apex) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__ground) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__ground) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
+    # derivatives of the outputs
+    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
+    d_t_descent__b_xd_apex = 0.0
+    d_t_descent__q_th_td = _j_t_descent__q_th_td
+    d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__k = 0.0
+    d_t_stance__k = _j_t_stance__k
+    d_liftoff_q_r__b_y_apex = 0.0
+    d_liftoff_q_r__b_xd_apex = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__ground = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_liftoff_q_rd__k = _j_liftoff_q_rd__k
+    d_liftoff_q_th__k = _j_liftoff_q_th__k
+    d_liftoff_q_thd__k = _j_liftoff_q_thd__k
+    d_step_length__k = d_next_apex_x__k
+    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
+    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
+    d_foot_x__q_th_td = _j_foot_x__q_th_td
+    d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__k = 0.0
+    d_foot_y__b_y_apex = -1.0
+    d_foot_y__b_xd_apex = 0.0
+    d_foot_y__q_th_td = 0.0
+    d_foot_y__ground = 1.0
+    d_foot_y__k = 0.0
+    d_P_c__k = _j_P_c__k
+    d_passes__b_y_apex = 0.0
+    d_passes__b_xd_apex = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__ground = 0.0
+    d_passes__k = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
+        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
+        d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
+        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+        d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
+        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
+        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
+        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type0_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol, out, status):
+def gravity_type0_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
+        q_r_lo, reading, samples, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type0_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations,
+    tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes,
+    d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
+    d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+    d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
+    d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+    d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+    d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+    d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+    d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
+    d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
+    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex,
+    d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
+    d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground,
+    d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type0_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol)
+        res = (gravity_type0_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
+            g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

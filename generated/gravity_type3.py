@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:4d6fab274bba303b
-#   geyer.py sha256:26ff4a0183dca42d
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
 # ----------------------------------------------------------------------------------------------
-"""Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and apex-return kernels."""
+"""Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -17,27 +19,20 @@ from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN4 = (NAN,) * 4
+_NAN12 = (NAN,) * 12
+_NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol):
+def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
+        iterations, tol):
     """Gravity correction type 3 (trapezoid on [t_i, t_f]): touchdown state -> bottom and liftoff states.
 
     Report equations: 46, 47, 48, 50, 65, 66.
@@ -58,7 +53,8 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -75,16 +71,25 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 213
+    # Total ops: 154
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(interval) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td
+            <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0)
+            or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5
@@ -93,18 +98,23 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         share = 1.0
         ramp = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN12 + (STATUS_NOT_CONVERGED,)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN12 + (_c0[6],)
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -113,7 +123,7 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN12 + (_c1[2],)
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -139,7 +149,9 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN12 + (STATUS_FALL,)
+        if _conv0 or _it0 == _last0:
+            break
         # eq (65)
         if interval == 0.0:
             _x13 = g_s*m
@@ -147,103 +159,67 @@ def gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         elif interval == 1.0:
             _x14 = g_s*m
             _x15 = _x14*i_bottom_q_r*math.sin(i_bottom_q_th)
-            i_P_new = (0.5)*i_t_bottom*(_x14*q_r_td*math.sin(q_th_td) + _x15) + (0.5)*(-i_t_bottom + i_t_stance)*(_x14*q_r_lo*math.sin(i_liftoff_q_th) + _x15)
+            i_P_new = ((0.5)*i_t_bottom*(_x14*q_r_td*math.sin(q_th_td) + _x15) + (0.5)*(-i_t_bottom
+                + i_t_stance)*(_x14*q_r_lo*math.sin(i_liftoff_q_th) + _x15))
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN12 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # effective touchdown rate
-    f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
-    if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[6])
-    f_omega = _c2[0]
-    f_omega0_hat = _c2[1]
-    f_a = _c2[2]
-    f_b = _c2[3]
-    f_phase_td = _c2[4]
-    f_s_td = _c2[5]
-    _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[2])
-    f_phase_lo = _c3[0]
-    f_s_lo = _c3[1]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x16 = (1.0/f_omega0_hat)
-    _x17 = f_a + 1.0
-    _x18 = _x17 - f_b
-    _x19 = _x16*f_omega
-    _x20 = _x16*f_phase_td
-    _x21 = _x16*f_b
-    _x22 = 2.0*f_omega
-    _x23 = -_x20*f_omega + _x22*(_x20*f_a + _x21*math.sqrt(1.0 - f_s_td**2)) + q_th_td
-    _x24 = math.sqrt(1.0 - f_s_lo**2)
-    _x25 = _x16*f_phase_lo
-    f_t_bottom = _x16*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x16*(f_phase_lo - f_phase_td)
-    f_bottom_q_r = _x18*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = -3.0*math.pi*_x19*f_a + (1.5)*math.pi*_x19 + _x23
-    f_bottom_q_thd = f_omega/_x18**2
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x24*f_b*f_omega0_hat*l0
-    f_liftoff_q_th = -_x22*(-_x21*_x24 + _x25*f_a) + _x23 + _x25*f_omega
-    f_liftoff_q_thd = f_omega/(_x17 + f_b*f_s_lo)**2
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
-    _x26 = (1.0/m)
-    t_bottom = f_t_bottom
-    t_stance = f_t_stance
-    bottom_q_r = f_bottom_q_r
+    _x16 = (1.0/m)
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = i_bottom_q_r
     bottom_q_rd = 0.0
-    bottom_q_th = f_bottom_q_th
-    bottom_q_thd = _x26*(P_c*(f_t_bottom*ramp/f_t_stance - ramp + 1.0) + p_td)/f_bottom_q_r**2
+    bottom_q_th = i_bottom_q_th
+    bottom_q_thd = _x16*(P_c*(i_t_bottom*ramp/i_t_stance - ramp + 1.0) + p_td)/i_bottom_q_r**2
     liftoff_q_r = q_r_lo
-    liftoff_q_th = f_liftoff_q_th
-    liftoff_q_thd = _x26*(P_c + p_td)/q_r_lo**2
+    liftoff_q_th = i_liftoff_q_th
+    liftoff_q_thd = _x16*(P_c + p_td)/q_r_lo**2
     if reading == 0.0:
-        _x27 = (1.0/m)
-        _x28 = _x27*k
-        _x29 = q_r_lo**2
-        _q_rd_lo_sq = 2.0*E_td*_x27 - _x27**2*(P_c + p_td)**2/_x29 + 2.0*_x27*k*l0*q_r_lo - _x28*_x29 - _x28*l0**2 - 2.0*g_s*q_r_lo*math.cos(f_liftoff_q_th)
+        _x17 = (1.0/m)
+        _x18 = _x17*k
+        _x19 = q_r_lo**2
+        _q_rd_lo_sq = (2.0*E_td*_x17 - _x17**2*(P_c + p_td)**2/_x19 + 2.0*_x17*k*l0*q_r_lo - _x18*_x19
+            - _x18*l0**2 - 2.0*g_s*q_r_lo*math.cos(i_liftoff_q_th))
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+            return _NAN12 + (STATUS_ENERGY_DEFICIT,)
         # q_rd_lo from the energy
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)
-        liftoff_q_rd = f_liftoff_q_rd
+        liftoff_q_rd = i_liftoff_q_rd
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type3_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol, out, status):
+def gravity_type3_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
+        iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type3_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type3_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol)
+        res = (gravity_type3_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
+            reading, interval, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -260,7 +236,8 @@ def gravity_type3_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol):
+def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
+        iterations, tol):
     """Gravity correction type 3 (trapezoid on [t_i, t_f]): the polar state a time t after touchdown.
 
     Report equations: 46, 47, 48, 50, 65, 66.
@@ -279,7 +256,8 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -288,16 +266,25 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 182
+    # Total ops: 123
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(reading)
+            and math.isfinite(interval) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # trajectory momentum p_td + share P_c: the stance mean (P_c/2) or the report's
     if reading == 0.0:
         share = 0.5
@@ -306,18 +293,23 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         share = 1.0
         ramp = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[6])
+            return _NAN4 + (_c0[6],)
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -326,7 +318,7 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -352,7 +344,9 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return (NAN, NAN, NAN, NAN, STATUS_FALL)
+            return _NAN4 + (STATUS_FALL,)
+        if _conv0 or _it0 == _last0:
+            break
         # eq (65)
         if interval == 0.0:
             _x13 = g_s*m
@@ -360,84 +354,43 @@ def gravity_type3_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         elif interval == 1.0:
             _x14 = g_s*m
             _x15 = _x14*i_bottom_q_r*math.sin(i_bottom_q_th)
-            i_P_new = (0.5)*i_t_bottom*(_x14*q_r_td*math.sin(q_th_td) + _x15) + (0.5)*(-i_t_bottom + i_t_stance)*(_x14*q_r_lo*math.sin(i_liftoff_q_th) + _x15)
+            i_P_new = ((0.5)*i_t_bottom*(_x14*q_r_td*math.sin(q_th_td) + _x15) + (0.5)*(-i_t_bottom
+                + i_t_stance)*(_x14*q_r_lo*math.sin(i_liftoff_q_th) + _x15))
         else:
-            return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN4 + (STATUS_INVALID_INPUT,)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # effective touchdown rate
-    f_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
-    # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c2 = geyer_solution(q_r_td, q_rd_td, f_q_thd_eff, m, l0, k, g_s)
-    if _c2[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c2[6])
-    f_omega = _c2[0]
-    f_omega0_hat = _c2[1]
-    f_a = _c2[2]
-    f_b = _c2[3]
-    f_phase_td = _c2[4]
-    f_s_td = _c2[5]
-    _c3 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c3[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c3[2])
-    f_phase_lo = _c3[0]
-    f_s_lo = _c3[1]
-    # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
-    _x16 = (1.0/f_omega0_hat)
-    _x17 = f_a + 1.0
-    _x18 = _x17 - f_b
-    _x19 = _x16*f_omega
-    _x20 = _x16*f_phase_td
-    _x21 = _x16*f_b
-    _x22 = 2.0*f_omega
-    _x23 = -_x20*f_omega + _x22*(_x20*f_a + _x21*math.sqrt(1.0 - f_s_td**2)) + q_th_td
-    _x24 = math.sqrt(1.0 - f_s_lo**2)
-    _x25 = _x16*f_phase_lo
-    f_t_bottom = _x16*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x16*(f_phase_lo - f_phase_td)
-    f_bottom_q_r = _x18*l0
-    f_bottom_q_rd = 0.0
-    f_bottom_q_th = -3.0*math.pi*_x19*f_a + (1.5)*math.pi*_x19 + _x23
-    f_bottom_q_thd = f_omega/_x18**2
-    f_liftoff_q_r = q_r_lo
-    f_liftoff_q_rd = _x24*f_b*f_omega0_hat*l0
-    f_liftoff_q_th = -_x22*(-_x21*_x24 + _x25*f_a) + _x23 + _x25*f_omega
-    f_liftoff_q_thd = f_omega/(_x17 + f_b*f_s_lo)**2
-    # the leg stays above horizontal
-    if not ((abs(f_liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, STATUS_FALL)
-    phase_t = f_omega0_hat*t + f_phase_td
-    _c4 = geyer_state(phase_t, f_phase_td, q_th_td, f_omega, f_omega0_hat, f_a, f_b, l0)
-    q_r = _c4[0]
-    q_rd = _c4[1]
-    q_th = _c4[2]
+    phase_t = i_omega0_hat*t + i_phase_td
+    _c2 = geyer_state(phase_t, i_phase_td, q_th_td, i_omega, i_omega0_hat, i_a, i_b, l0)
+    q_r = _c2[0]
+    q_rd = _c2[1]
+    q_th = _c2[2]
     # the momentum at t
-    q_thd = (P_c*(-ramp + 1.0 + ramp*t/f_t_stance) + p_td)/(m*q_r**2)
+    q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type3_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol, out, status):
+def gravity_type3_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+        interval, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type3_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
+    interval, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type3_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol)
+        res = (gravity_type3_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+            reading, interval, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -446,16 +399,19 @@ def gravity_type3_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations, tol):
+def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, interval, iterations, tol):
     """Apex-return map: exact flights, stance by Gravity correction type 3 (trapezoid on [t_i, t_f]).
 
     Report equations: 46, 47, 48, 50, 65, 66.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -466,7 +422,8 @@ def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
         reading: option reading: how P_c enters Geyer's formulas, eq (50): 0 = mean, 1 = report
         interval: option interval: the intervals [t_i, t_f] of the correction: 0 = stance, 1 = halves
         iterations: option iterations: passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map) in [0, 1000]
-        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -487,14 +444,22 @@ def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(reading) and math.isfinite(interval) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((reading == 0.0) or (reading
+            == 1.0)) and ((interval == 0.0) or (interval == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN14 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN14 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -502,9 +467,10 @@ def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _c1 = gravity_type3_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol)
+    _c1 = (gravity_type3_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, interval,
+        iterations, tol))
     if _c1[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        return _NAN14 + (_c1[12],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -515,7 +481,7 @@ def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
+        return _NAN14 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -524,22 +490,31 @@ def gravity_type3_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN14 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type3_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations, tol, out, status):
+def gravity_type3_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        reading, interval, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type3_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations, tol.
+    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations,
+    tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 14)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type3_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations, tol)
+        res = (gravity_type3_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, reading, interval, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

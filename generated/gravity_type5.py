@@ -4,11 +4,13 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:4d6fab274bba303b
-#   geyer.py sha256:26ff4a0183dca42d
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
 # ----------------------------------------------------------------------------------------------
-"""Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and apex-return kernels."""
+"""Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -17,23 +19,17 @@ from numba import njit, prange
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN4 = (NAN,) * 4
+_NAN5 = (NAN,) * 5
+_NAN12 = (NAN,) * 12
+_NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
@@ -63,7 +59,7 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     # Total ops: 73
     omega0_sq = k/m
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # T5.4: the quadratic about r_c with g_eff
     _x0 = (r_c + 1.0)**-4
     _x1 = 4.0*omega0_sq
@@ -85,17 +81,17 @@ def type5_solution(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
     b2 = (0.25)*_x9**2*(-4.0*lam*nu + mu**2)
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN5 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x10 = math.sqrt(b2)
     b = _x10
     s_td = (-a - 1.0 + q_r_td/l0)/_x10
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN5 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN5 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     # (internal helper: its callers check that their outputs are finite)
@@ -159,7 +155,12 @@ def type5_leg_angle(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_
     _x29 = (0.5)*c1
     _x30 = _x22*_x9
     _x31 = (0.3333333333333333)*c2
-    q_th = q_th_td + (_x1*c0*k0 + (0.125)*_x10*_x16 - _x10*_x3 + (0.125)*_x12*_x14*k2 + 2.0*_x12*_x7*k1 - 0.25*_x14*_x15*_x6 + _x15*(_x23*_x28 + (0.25)*_x27) - 0.5*_x16*_x5 + (0.16666666666666666)*_x2*c1*k0 - _x20*k1*p_td + _x24*k2*p_td + _x29*k1*(-_x0*_x20 + 2.0*_x19*_x9 + 2.0*_x25*_x6*t) + _x29*k2*(_x1*_x23 + _x27*_x28 - 0.25*_x30) + _x3*_x5 + _x31*k1*(3.0*_x0*_x25*_x6 - 6.0*_x11*_x25 + 6.0*_x19*_x9*t - _x2*_x20) + _x31*k2*((0.75)*_x0*_x27 - 0.375*_x11*_x26 + _x2*_x24 - 0.75*_x30*t) - _x6*_x7*_x8 + _x8*(-_x20*t + _x25*_x6) + (0.08333333333333333)*c2*k0*t**4 + k0*p_td*t)/(l0**2*m)
+    q_th = (q_th_td + (_x1*c0*k0 + (0.125)*_x10*_x16 - _x10*_x3 + (0.125)*_x12*_x14*k2 + 2.0*_x12*_x7*k1
+        - 0.25*_x14*_x15*_x6 + _x15*(_x23*_x28 + (0.25)*_x27) - 0.5*_x16*_x5 + (0.16666666666666666)*_x2*c1*k0
+        - _x20*k1*p_td + _x24*k2*p_td + _x29*k1*(-_x0*_x20 + 2.0*_x19*_x9 + 2.0*_x25*_x6*t)
+        + _x29*k2*(_x1*_x23 + _x27*_x28 - 0.25*_x30) + _x3*_x5 + _x31*k1*(3.0*_x0*_x25*_x6 - 6.0*_x11*_x25
+        + 6.0*_x19*_x9*t - _x2*_x20) + _x31*k2*((0.75)*_x0*_x27 - 0.375*_x11*_x26 + _x2*_x24 - 0.75*_x30*t)
+        - _x6*_x7*_x8 + _x8*(-_x20*t + _x25*_x6) + (0.08333333333333333)*c2*k0*t**4 + k0*p_td*t)/(l0**2*m))
     return q_th
 
 
@@ -182,7 +183,8 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -199,16 +201,23 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         passes: fixed-point passes run
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 385
+    # Total ops: 238
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -218,20 +227,27 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     r_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN12 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
         _x4 = _x3*tau1
-        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c0 = (-0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1
+            - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3)
         i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
         i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
         # T5.3: omega of the stance-mean momentum
-        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        i_omega = (((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0
+            + p_td)/(l0**2*m))
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[5])
+            return _NAN12 + (_c0[5],)
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
@@ -239,7 +255,7 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN12 + (_c1[2],)
         i_phase_lo = _c1[0]
         # eqs (13)-(14) minus (12); T5.6: the rate factor
         _x6 = (1.0/i_omega0_hat)
@@ -255,11 +271,14 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
         i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
         i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
-        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c2 = (type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2,
+            i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th1 = _c2
-        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c3 = (type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+            i_omega0_hat, i_phase_td, m, l0))
         i_th2 = _c3
-        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c4 = (type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1,
+            i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th3 = _c4
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x14 = (0.2)*math.sqrt(15.0)
@@ -269,8 +288,11 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
         i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
-        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_g_eff = ((0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2)
+            + (0.5555555555555556)*math.cos(i_th3)))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = i_tau1
         _n0_1 = i_tau2
         _n0_2 = i_tau3
@@ -279,7 +301,10 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _n0_5 = i_r_c
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
         tau1 = _n0_0
         tau2 = _n0_1
         tau3 = _n0_2
@@ -287,109 +312,64 @@ def gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x20 = (1.0/T)
-    _x18 = math.sqrt(15.0)
-    _x19 = _x18*tau1
-    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
-    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
-    # T5.3: omega of the stance-mean momentum
-    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
-    # T5.4-T5.5: radial solution
-    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[5])
-    f_omega0_hat = _c5[0]
-    f_a = _c5[1]
-    f_b = _c5[2]
-    f_phase_td = _c5[3]
-    f_s_td = _c5[4]
-    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c6[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[2])
-    f_phase_lo = _c6[0]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x21 = (1.0/f_omega0_hat)
-    _x22 = r_c**4
-    _x23 = r_c**3
-    _x24 = r_c**2
-    _x25 = 4.0*r_c + 1.0
-    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
-    _x27 = 3.0*f_b**2
-    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
-    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x21*(f_phase_lo - f_phase_td)
-    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
-    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
-    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
-    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th1 = _c7
-    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th2 = _c8
-    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th3 = _c9
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x29 = (0.2)*math.sqrt(15.0)
-    _x30 = (0.5)*f_omega0_hat*f_t_stance
-    _x31 = f_a + 1.0
-    _x32 = g_s*l0*m
-    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
-    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
-    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
-    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
-    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
-    _c10 = type5_leg_angle(f_t_bottom, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    bottom_q_th = _c10
-    _c11 = type5_leg_angle(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    liftoff_q_th = _c11
+    _c5 = (type5_leg_angle(i_t_bottom, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+        i_phase_td, m, l0))
+    bottom_q_th = _c5
+    _c6 = (type5_leg_angle(i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+        i_phase_td, m, l0))
+    liftoff_q_th = _c6
     # T5.7: bottom and liftoff states
-    _x33 = f_a - f_b + 1.0
-    _x34 = (1.0/m)
-    _x35 = (0.5)*f_c1
-    _x36 = (0.3333333333333333)*f_c2
-    _x37 = _x35*f_t_stance**2 + _x36*f_t_stance**3 + f_c0*f_t_stance
-    t_bottom = f_t_bottom
-    t_stance = f_t_stance
-    bottom_q_r = _x33*l0
+    _x18 = i_a - i_b + 1.0
+    _x19 = (1.0/m)
+    _x20 = (0.5)*i_c1
+    _x21 = (0.3333333333333333)*i_c2
+    _x22 = _x20*i_t_stance**2 + _x21*i_t_stance**3 + i_c0*i_t_stance
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    bottom_q_r = _x18*l0
     bottom_q_rd = 0.0
-    bottom_q_thd = _x34*(_x35*f_t_bottom**2 + _x36*f_t_bottom**3 + f_c0*f_t_bottom + p_td)/(_x33**2*l0**2)
+    bottom_q_thd = _x19*(_x20*i_t_bottom**2 + _x21*i_t_bottom**3 + i_c0*i_t_bottom + p_td)/(_x18**2*l0**2)
     liftoff_q_r = q_r_lo
-    P_c = _x37
-    liftoff_q_thd = _x34*(_x37 + p_td)/q_r_lo**2
+    P_c = _x22
+    liftoff_q_thd = _x19*(_x22 + p_td)/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    _x38 = (1.0/m)
-    _x39 = _x38*k
-    _x40 = q_r_lo**2
-    _q_rd_lo_sq = 2.0*E_td*_x38 - _x38**2*(f_c0*f_t_stance + (0.5)*f_c1*f_t_stance**2 + (0.3333333333333333)*f_c2*f_t_stance**3 + p_td)**2/_x40 + 2.0*_x38*k*l0*q_r_lo - _x39*_x40 - _x39*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
+        return _NAN12 + (STATUS_FALL,)
+    _x23 = (1.0/m)
+    _x24 = _x23*k
+    _x25 = q_r_lo**2
+    _q_rd_lo_sq = (2.0*E_td*_x23 - _x23**2*(i_c0*i_t_stance + (0.5)*i_c1*i_t_stance**2
+        + (0.3333333333333333)*i_c2*i_t_stance**3 + p_td)**2/_x25 + 2.0*_x23*k*l0*q_r_lo - _x24*_x25
+        - _x24*l0**2 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th))
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
+        return _NAN12 + (STATUS_ENERGY_DEFICIT,)
     # q_rd_lo from the energy
     liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol,
+        out, status):
     """Parallel batch form of :func:`gravity_type5_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
+            iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -423,7 +403,8 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         q_r: leg length [m]
@@ -432,16 +413,23 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         q_thd: leg angle rate [rad/s]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 344
+    # Total ops: 197
     # inputs: finite and inside their domains
-    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = (0.5)*k
     p_td = _x1*q_thd_td
-    E_td = _x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td + (0.5)*m*q_rd_td**2
+    E_td = (_x0*_x2 + (0.5)*_x1*q_thd_td**2 + _x2*l0**2 + g_s*m*q_r_td*math.cos(q_th_td) - k*l0*q_r_td
+        + (0.5)*m*q_rd_td**2)
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -451,20 +439,27 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     r_c = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x5 = (1.0/T)
         _x3 = math.sqrt(15.0)
         _x4 = _x3*tau1
-        i_c0 = -0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
+        i_c0 = (-0.16666666666666666*_x3*tau3 + (0.16666666666666666)*_x4 + (0.8333333333333334)*tau1
+            - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3)
         i_c1 = (0.3333333333333333)*_x5*(_x3*tau3 - _x4 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
         i_c2 = (3.3333333333333335)*_x5**2*(tau1 - 2.0*tau2 + tau3)
         # T5.3: omega of the stance-mean momentum
-        i_omega = ((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0 + p_td)/(l0**2*m)
+        i_omega = (((0.08333333333333333)*T**3*i_c2 + (0.16666666666666666)*T**2*i_c1 + (0.5)*T*i_c0
+            + p_td)/(l0**2*m))
         # T5.4-T5.5: radial solution
         _c0 = type5_solution(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k)
         if _c0[5] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c0[5])
+            return _NAN4 + (_c0[5],)
         i_omega0_hat = _c0[0]
         i_a = _c0[1]
         i_b = _c0[2]
@@ -472,7 +467,7 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_s_td = _c0[4]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, _c1[2])
+            return _NAN4 + (_c1[2],)
         i_phase_lo = _c1[0]
         # eqs (13)-(14) minus (12); T5.6: the rate factor
         _x6 = (1.0/i_omega0_hat)
@@ -488,11 +483,14 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_k0 = (0.5)*_x11*(_x12 + _x13 + 6.0*i_a**2 - 16.0*i_a*r_c - 4.0*i_a)
         i_k1 = 2.0*_x11*i_b*(-_x10 + 3.0*i_a)
         i_k2 = -_x12/(_x13 + 2.0*_x7 + 8.0*_x8)
-        _c2 = type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c2 = (type5_leg_angle((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2,
+            i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th1 = _c2
-        _c3 = type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c3 = (type5_leg_angle((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2,
+            i_omega0_hat, i_phase_td, m, l0))
         i_th2 = _c3
-        _c4 = type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0)
+        _c4 = (type5_leg_angle((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1,
+            i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
         i_th3 = _c4
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x14 = (0.2)*math.sqrt(15.0)
@@ -502,8 +500,11 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_tau1 = _x17*(_x16 + i_b*math.sin(_x15*(1.0 - _x14) + i_phase_td))*math.sin(i_th1)
         i_tau2 = _x17*(_x16 + i_b*math.sin(_x15 + i_phase_td))*math.sin(i_th2)
         i_tau3 = _x17*(_x16 + i_b*math.sin(_x15*(_x14 + 1.0) + i_phase_td))*math.sin(i_th3)
-        i_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2) + (0.5555555555555556)*math.cos(i_th3))
+        i_g_eff = ((0.5)*g_s*((0.5555555555555556)*math.cos(i_th1) + (0.8888888888888888)*math.cos(i_th2)
+            + (0.5555555555555556)*math.cos(i_th3)))
         i_r_c = i_a - i_b*(math.cos(i_phase_lo) - math.cos(i_phase_td))/(i_phase_lo - i_phase_td)
+        if _conv0 or _it0 == _last0:
+            break
         _n0_0 = i_tau1
         _n0_1 = i_tau2
         _n0_2 = i_tau3
@@ -512,7 +513,10 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         _n0_5 = i_r_c
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
         tau1 = _n0_0
         tau2 = _n0_1
         tau3 = _n0_2
@@ -520,87 +524,35 @@ def gravity_type5_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         g_eff = _n0_4
         r_c = _n0_5
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x20 = (1.0/T)
-    _x18 = math.sqrt(15.0)
-    _x19 = _x18*tau1
-    f_c0 = -0.16666666666666666*_x18*tau3 + (0.16666666666666666)*_x19 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c1 = (0.3333333333333333)*_x20*(_x18*tau3 - _x19 - 10.0*tau1 + 20.0*tau2 - 10.0*tau3)
-    f_c2 = (3.3333333333333335)*_x20**2*(tau1 - 2.0*tau2 + tau3)
-    # T5.3: omega of the stance-mean momentum
-    f_omega = ((0.08333333333333333)*T**3*f_c2 + (0.16666666666666666)*T**2*f_c1 + (0.5)*T*f_c0 + p_td)/(l0**2*m)
-    # T5.4-T5.5: radial solution
-    _c5 = type5_solution(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k)
-    if _c5[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c5[5])
-    f_omega0_hat = _c5[0]
-    f_a = _c5[1]
-    f_b = _c5[2]
-    f_phase_td = _c5[3]
-    f_s_td = _c5[4]
-    _c6 = geyer_liftoff_phase(f_a, f_b, l0, q_r_lo)
-    if _c6[2] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, _c6[2])
-    f_phase_lo = _c6[0]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x21 = (1.0/f_omega0_hat)
-    _x22 = r_c**4
-    _x23 = r_c**3
-    _x24 = r_c**2
-    _x25 = 4.0*r_c + 1.0
-    _x26 = (1.0/(_x22 + 4.0*_x23 + 6.0*_x24 + _x25))
-    _x27 = 3.0*f_b**2
-    _x28 = 12.0*_x24 + 8.0*r_c + 2.0
-    f_t_bottom = _x21*(-f_phase_td + (1.5)*math.pi)
-    f_t_stance = _x21*(f_phase_lo - f_phase_td)
-    f_k0 = (0.5)*_x26*(_x27 + _x28 + 6.0*f_a**2 - 16.0*f_a*r_c - 4.0*f_a)
-    f_k1 = 2.0*_x26*f_b*(-_x25 + 3.0*f_a)
-    f_k2 = -_x27/(2.0*_x22 + 8.0*_x23 + _x28)
-    _c7 = type5_leg_angle((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th1 = _c7
-    _c8 = type5_leg_angle((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th2 = _c8
-    _c9 = type5_leg_angle((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    f_th3 = _c9
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x29 = (0.2)*math.sqrt(15.0)
-    _x30 = (0.5)*f_omega0_hat*f_t_stance
-    _x31 = f_a + 1.0
-    _x32 = g_s*l0*m
-    f_tau1 = _x32*(_x31 + f_b*math.sin(_x30*(1.0 - _x29) + f_phase_td))*math.sin(f_th1)
-    f_tau2 = _x32*(_x31 + f_b*math.sin(_x30 + f_phase_td))*math.sin(f_th2)
-    f_tau3 = _x32*(_x31 + f_b*math.sin(_x30*(_x29 + 1.0) + f_phase_td))*math.sin(f_th3)
-    f_g_eff = (0.5)*g_s*((0.5555555555555556)*math.cos(f_th1) + (0.8888888888888888)*math.cos(f_th2) + (0.5555555555555556)*math.cos(f_th3))
-    f_r_c = f_a - f_b*(math.cos(f_phase_lo) - math.cos(f_phase_td))/(f_phase_lo - f_phase_td)
-    _c10 = type5_leg_angle(t, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0)
-    q_th = _c10
+    _c5 = (type5_leg_angle(t, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m,
+        l0))
+    q_th = _c5
     # (11) with T5.5, T5.2
-    _x33 = f_omega0_hat*t + f_phase_td
-    _x34 = f_a + f_b*math.sin(_x33) + 1.0
-    q_r = _x34*l0
-    q_rd = f_b*f_omega0_hat*l0*math.cos(_x33)
-    q_thd = (f_c0*t + (0.5)*f_c1*t**2 + (0.3333333333333333)*f_c2*t**3 + p_td)/(_x34**2*l0**2*m)
+    _x18 = i_omega0_hat*t + i_phase_td
+    _x19 = i_a + i_b*math.sin(_x18) + 1.0
+    q_r = _x19*l0
+    q_rd = i_b*i_omega0_hat*l0*math.cos(_x18)
+    q_thd = (i_c0*t + (0.5)*i_c1*t**2 + (0.3333333333333333)*i_c2*t**3 + p_td)/(_x19**2*l0**2*m)
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return (NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
     return (q_r, q_rd, q_th, q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations,
+        tol, out, status):
     """Parallel batch form of :func:`gravity_type5_state_at`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol.
+    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+    iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
     ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
+            iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -609,16 +561,19 @@ def gravity_type5_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol):
+def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol):
     """Apex-return map: exact flights, stance by Gravity correction type 5 (time-varying momentum).
 
     Report equations: 46, 47, 48.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -627,7 +582,8 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -648,14 +604,21 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN14 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN14 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -665,7 +628,7 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     # stance: Gravity correction type 5 (time-varying momentum)
     _c1 = gravity_type5_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, iterations, tol)
     if _c1[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+        return _NAN14 + (_c1[12],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -676,7 +639,7 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
+        return _NAN14 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -685,22 +648,30 @@ def gravity_type5_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN14 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
+def gravity_type5_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type5_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 14)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol)
+        res = (gravity_type5_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f,
+            q_r_td, q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

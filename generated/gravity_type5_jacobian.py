@@ -4,46 +4,43 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:93735a9cd1eada3e
-#   geyer_jacobian.py sha256:2cc3bc7df9c66782
+#   flight_jacobian.py sha256:2e171e0cb588eb80
+#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
+a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
-from .geyer_jacobian import geyer_liftoff_phase_jvp_a_b
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
+from .geyer_jacobian import geyer_liftoff_phase_jac_a_b
+
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING,
+    STATUS_NO_REAL_SOLUTION, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN35 = (NAN,) * 35
+_NAN72 = (NAN,) * 72
+_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, q_r_td__tan, q_rd_td__tan, omega__tan, g_eff__tan, r_c__tan, k__tan):
-    """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, omega__tan, g_eff__tan, r_c__tan, k__tan).
+def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
+    """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, and the derivatives of
+    its outputs with respect to q_r_td, q_rd_td, omega, g_eff, r_c, k.
 
     Report equations: 9, 10, 11, 12.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -54,12 +51,6 @@ def type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        omega__tan: direction: its component along omega
-        g_eff__tan: direction: its component along g_eff
-        r_c__tan: direction: its component along r_c
-        k__tan: direction: its component along k
 
     Returns a tuple:
         omega0_hat: frequency [rad/s]
@@ -67,23 +58,20 @@ def type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
         b: amplitude of rho(t)
         phase_td: touchdown phase [rad]
         s_td: sin(phase_td)
-        omega0_hat__tan: derivative of omega0_hat along the direction
-        a__tan: derivative of a along the direction
-        b__tan: derivative of b along the direction
-        phase_td__tan: derivative of phase_td along the direction
-        s_td__tan: derivative of s_td along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            omega, g_eff, r_c, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 183
+    # Total ops: 218
     _x0 = (1.0/m)
     omega0_sq = _x0*k
-    omega0_sq__tan = _x0*k__tan
+    d_omega0_sq__k = _x0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN35 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # T5.4: the quadratic about r_c with g_eff
     _x1 = r_c + 1.0
-    _x24 = (1.0/_x1)
-    _x2 = _x24**4
+    _x23 = (1.0/_x1)
+    _x2 = _x23**4
     _x3 = 4.0*omega0_sq
     _x4 = omega**2
     _x5 = r_c**4
@@ -92,77 +80,135 @@ def type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     _x8 = r_c**3
     _x9 = _x3*_x8
     _x10 = _x3*r_c + 3.0*_x4 + _x5*omega0_sq + _x7*omega0_sq + _x9 + omega0_sq
-    _x11 = _x2*omega__tan
-    _x12 = 4.0*r_c
-    _x13 = 4.0*_x8
-    _x14 = _x12 + _x13 + _x5 + _x7 + 1.0
-    _x15 = 12.0*omega0_sq
-    _x16 = _x24**5
-    _x17 = (1.0/l0)
-    _x18 = _x13*g_eff
-    _x19 = _x17*(-_x12*g_eff - _x18 + 4.0*_x4*l0*r_c + _x4*l0 - _x5*g_eff - _x7*g_eff - g_eff)
-    _x20 = 2.0*_x2
-    _x21 = l0*omega
-    _x22 = _x17*_x20
-    _x23 = 12.0*g_eff
     lam = -_x10*_x2
-    lam__tan = -6.0*_x11*omega - _x14*_x2*omega0_sq__tan + r_c__tan*(4.0*_x10*_x16 - _x2*(_x15*_x6 + _x15*r_c + _x3 + _x9))
-    mu = _x19*_x20
-    mu__tan = 2.0*_x11*_x17*(8.0*_x21*r_c + 2.0*_x21) - _x14*_x22*g_eff__tan + r_c__tan*(-8.0*_x16*_x19 + _x22*(-_x18 - _x23*_x6 - _x23*r_c + 4.0*_x4*l0 - 4.0*g_eff))
+    d_lam__omega = -6.0*_x2*omega
+    _x11 = 12.0*omega0_sq
+    _x12 = _x23**5
+    d_lam__r_c = 4.0*_x10*_x12 - _x2*(_x11*_x6 + _x11*r_c + _x3 + _x9)
+    _x13 = 4.0*r_c
+    _x14 = 4.0*_x8
+    _x15 = _x13 + _x14 + _x5 + _x7 + 1.0
+    d_lam__k = -_x15*_x2*d_omega0_sq__k
+    _x16 = (1.0/l0)
+    _x17 = _x14*g_eff
+    _x18 = _x16*(-_x13*g_eff - _x17 + 4.0*_x4*l0*r_c + _x4*l0 - _x5*g_eff - _x7*g_eff - g_eff)
+    _x19 = 2.0*_x2
+    mu = _x18*_x19
+    _x20 = l0*omega
+    _x21 = _x16*_x19
+    d_mu__omega = _x21*(8.0*_x20*r_c + 2.0*_x20)
+    d_mu__g_eff = -_x15*_x21
+    _x22 = 12.0*g_eff
+    d_mu__r_c = -8.0*_x12*_x18 + _x21*(-_x17 - _x22*_x6 - _x22*r_c + 4.0*_x4*l0 - 4.0*g_eff)
     # T5.5: through the touchdown point
-    _x26 = (1.0/l0)
-    _x25 = _x26**2
-    _x27 = -_x26*q_r_td + 1.0
-    _x28 = -_x27
-    _x29 = _x28**2
-    nu = _x25*q_rd_td**2 - _x28*mu - _x29*lam
-    nu__tan = 2.0*_x25*q_rd_td*q_rd_td__tan + _x27*mu__tan - _x29*lam__tan + q_r_td__tan*(-2.0*_x26*_x28*lam - _x26*mu)
+    _x25 = (1.0/l0)
+    _x24 = _x25**2
+    _x26 = -_x25*q_r_td + 1.0
+    _x27 = -_x26
+    _x28 = _x27**2
+    nu = _x24*q_rd_td**2 - _x27*mu - _x28*lam
+    _pd__0 = -_x28
+    _pd__1 = _x26
+    d_nu__q_r_td = -2.0*_x25*_x27*lam - _x25*mu
+    d_nu__q_rd_td = 2.0*_x24*q_rd_td
+    d_nu__omega = _pd__0*d_lam__omega + _pd__1*d_mu__omega
+    d_nu__g_eff = _pd__1*d_mu__g_eff
+    d_nu__r_c = _pd__0*d_lam__r_c + _pd__1*d_mu__r_c
+    d_nu__k = _pd__0*d_lam__k
     # eq (10)-(11): omega0_hat, a and b^2 of rho = a + b sin(omega0_hat t)
-    _x31 = (1.0/lam)
-    _x30 = math.sqrt(-lam)
-    _x32 = (0.5)*_x31
-    _x33 = _x31**2
+    _x29 = math.sqrt(-lam)
+    omega0_hat = _x29
+    _x30 = (1.0/lam)
+    _x31 = (0.5)*_x30
+    _pd__2 = _x29*_x31
+    d_omega0_hat__omega = _pd__2*d_lam__omega
+    d_omega0_hat__r_c = _pd__2*d_lam__r_c
+    d_omega0_hat__k = _pd__2*d_lam__k
+    a = -_x31*mu
+    _x32 = _x30**2
+    _x33 = (0.5)*_x32*mu
+    _pd__3 = _x33
+    _pd__4 = -_x31
+    d_a__omega = _pd__3*d_lam__omega + _pd__4*d_mu__omega
+    d_a__g_eff = _pd__4*d_mu__g_eff
+    d_a__r_c = _pd__3*d_lam__r_c + _pd__4*d_mu__r_c
+    d_a__k = _pd__3*d_lam__k
     _x34 = -4.0*lam*nu + mu**2
-    omega0_hat = _x30
-    omega0_hat__tan = _x30*_x32*lam__tan
-    a = -_x32*mu
-    a__tan = -_x32*mu__tan + (0.5)*_x33*lam__tan*mu
-    b2 = (0.25)*_x33*_x34
-    b2__tan = -_x31*nu__tan + (0.5)*_x33*mu*mu__tan + lam__tan*(-0.5*_x31**3*_x34 - _x33*nu)
+    b2 = (0.25)*_x32*_x34
+    _pd__5 = -0.5*_x30**3*_x34 - _x32*nu
+    _pd__6 = _x33
+    _pd__7 = -_x30
+    d_b2__q_r_td = _pd__7*d_nu__q_r_td
+    d_b2__q_rd_td = _pd__7*d_nu__q_rd_td
+    d_b2__omega = _pd__5*d_lam__omega + _pd__6*d_mu__omega + _pd__7*d_nu__omega
+    d_b2__g_eff = _pd__6*d_mu__g_eff + _pd__7*d_nu__g_eff
+    d_b2__r_c = _pd__5*d_lam__r_c + _pd__6*d_mu__r_c + _pd__7*d_nu__r_c
+    d_b2__k = _pd__5*d_lam__k + _pd__7*d_nu__k
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_REAL_SOLUTION)
+        return _NAN35 + (STATUS_NO_REAL_SOLUTION,)
     # eq (12): sin(phase) at touchdown
     _x35 = math.sqrt(b2)
-    _x36 = (1.0/_x35)
-    _x37 = (0.5)*b2__tan
-    _x38 = (1.0/l0)
-    _x39 = _x38*q_r_td - a - 1.0
     b = _x35
-    b__tan = _x36*_x37
-    s_td = _x36*_x39
-    s_td__tan = _x36*_x38*q_r_td__tan - _x36*a__tan - _x37*_x39/b2**(1.5)
+    _x36 = (1.0/_x35)
+    _pd__8 = (0.5)*_x36
+    d_b__q_r_td = _pd__8*d_b2__q_r_td
+    d_b__q_rd_td = _pd__8*d_b2__q_rd_td
+    d_b__omega = _pd__8*d_b2__omega
+    d_b__g_eff = _pd__8*d_b2__g_eff
+    d_b__r_c = _pd__8*d_b2__r_c
+    d_b__k = _pd__8*d_b2__k
+    _x37 = (1.0/l0)
+    _x38 = _x37*q_r_td - a - 1.0
+    s_td = _x36*_x38
+    _pd__9 = -_x36
+    _pd__10 = -_x38/b2
+    d_s_td__q_r_td = _pd__10*d_b__q_r_td + _x36*_x37
+    d_s_td__q_rd_td = _pd__10*d_b__q_rd_td
+    d_s_td__omega = _pd__10*d_b__omega + _pd__9*d_a__omega
+    d_s_td__g_eff = _pd__10*d_b__g_eff + _pd__9*d_a__g_eff
+    d_s_td__r_c = _pd__10*d_b__r_c + _pd__9*d_a__r_c
+    d_s_td__k = _pd__10*d_b__k + _pd__9*d_a__k
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN35 + (STATUS_FALL,)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
+        return _NAN35 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
-    phase_td__tan = -s_td__tan/math.sqrt(1.0 - s_td**2)
+    _pd__11 = -1.0/math.sqrt(1.0 - s_td**2)
+    d_phase_td__q_r_td = _pd__11*d_s_td__q_r_td
+    d_phase_td__q_rd_td = _pd__11*d_s_td__q_rd_td
+    d_phase_td__omega = _pd__11*d_s_td__omega
+    d_phase_td__g_eff = _pd__11*d_s_td__g_eff
+    d_phase_td__r_c = _pd__11*d_s_td__r_c
+    d_phase_td__k = _pd__11*d_s_td__k
+    # derivatives of the outputs
+    d_omega0_hat__q_r_td = 0.0
+    d_omega0_hat__q_rd_td = 0.0
+    d_omega0_hat__g_eff = 0.0
+    d_a__q_r_td = 0.0
+    d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (omega0_hat, a, b, phase_td, s_td, omega0_hat__tan, a__tan, b__tan, phase_td__tan, s_td__tan, STATUS_OK)
+    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td,
+        d_omega0_hat__omega, d_omega0_hat__g_eff, d_omega0_hat__r_c, d_omega0_hat__k, d_a__q_r_td,
+        d_a__q_rd_td, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__omega,
+        d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
+        d_phase_td__g_eff, d_phase_td__r_c, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__omega,
+        d_s_td__g_eff, d_s_td__r_c, d_s_td__k, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td, m, l0, t__tan, q_th_td__tan, p_td__tan, c0__tan, c1__tan, c2__tan, k0__tan, k1__tan, k2__tan, omega0_hat__tan, phase_td__tan):
-    """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2), with the derivative of every output along the direction (t__tan, q_th_td__tan, p_td__tan, c0__tan, c1__tan, c2__tan, k0__tan, k1__tan, k2__tan, omega0_hat__tan, phase_td__tan).
+def type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, q_th_td, p_td, c0, c1, c2, k0,
+        k1, k2, omega0_hat, phase_td, m, l0):
+    """Type 5 leg angle T5.6: q_th_td + int_0^t P(u) (k0 + k1 sin + k2 cos 2(.)) du / (m l0^2), and the
+    derivatives of its outputs with respect to t, q_th_td, p_td, c0, c1, c2, k0, k1, k2, omega0_hat, phase_td.
 
     Report equations: 17, 18, 19.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         t: time since touchdown [s]
@@ -178,25 +224,14 @@ def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
         phase_td: touchdown phase [rad]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
-        t__tan: direction: its component along t
-        q_th_td__tan: direction: its component along q_th_td
-        p_td__tan: direction: its component along p_td
-        c0__tan: direction: its component along c0
-        c1__tan: direction: its component along c1
-        c2__tan: direction: its component along c2
-        k0__tan: direction: its component along k0
-        k1__tan: direction: its component along k1
-        k2__tan: direction: its component along k2
-        omega0_hat__tan: direction: its component along omega0_hat
-        phase_td__tan: direction: its component along phase_td
 
     Returns a tuple:
         q_th: leg angle [rad]
-        q_th__tan: derivative of q_th along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument t, q_th_td, p_td, c0,
+            c1, c2, k0, k1, k2, omega0_hat, phase_td (row-major)
     """
-    # Total ops: 444
-    _x10 = (1.0/omega0_hat)
-    _x0 = p_td*t
+    # Total ops: 421
+    _x0 = k0*p_td
     _x1 = t**2
     _x2 = (0.5)*_x1
     _x3 = _x2*k0
@@ -206,18 +241,19 @@ def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
     _x7 = t**4
     _x8 = (0.08333333333333333)*_x7
     _x9 = _x8*k0
-    _x11 = math.cos(phase_td)
-    _x12 = _x10*_x11
-    _x13 = _x12*p_td
-    _x14 = _x10**2
+    _x10 = k1*p_td
+    _x11 = (1.0/omega0_hat)
+    _x12 = math.cos(phase_td)
+    _x13 = _x11*_x12
+    _x14 = _x11**2
     _x15 = math.sin(phase_td)
     _x16 = _x14*_x15
     _x17 = _x16*k1
-    _x18 = _x10**3
-    _x19 = _x11*_x18
-    _x20 = _x19*k1
+    _x18 = _x11**3
+    _x19 = _x12*k1
+    _x20 = _x18*_x19
     _x21 = _x15*k1
-    _x22 = _x10**4
+    _x22 = _x11**4
     _x23 = 2.0*_x22
     _x24 = _x21*_x23
     _x25 = c0*k2
@@ -225,584 +261,116 @@ def type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
     _x27 = math.cos(_x26)
     _x28 = (0.25)*_x14
     _x29 = _x27*_x28
-    _x30 = math.sin(_x26)
-    _x31 = _x30*k2
-    _x32 = (0.125)*_x18
-    _x33 = _x31*_x32
+    _x30 = _x18*c1
+    _x31 = math.sin(_x26)
+    _x32 = (0.125)*_x31
+    _x33 = _x32*k2
     _x34 = _x27*k2
     _x35 = (0.125)*_x22
     _x36 = _x34*_x35
-    _x37 = (0.5)*_x30
-    _x38 = k2*p_td
-    _x39 = _x10*_x38
+    _x37 = _x11*k2
+    _x38 = (0.5)*_x31
+    _x39 = _x37*_x38
     _x40 = omega0_hat*t
     _x41 = _x40 + phase_td
     _x42 = math.cos(_x41)
-    _x43 = _x10*_x42
-    _x44 = _x43*p_td
-    _x45 = _x26 + 2.0*_x40
-    _x46 = math.sin(_x45)
-    _x47 = (0.5)*_x46
-    _x48 = _x10*_x47
-    _x49 = math.sin(_x41)
-    _x50 = _x14*_x49 - _x43*t
-    _x51 = _x50*k1
-    _x52 = math.cos(_x45)
-    _x53 = _x14*_x52
-    _x54 = _x10*t
-    _x55 = _x47*_x54 + (0.25)*_x53
-    _x56 = _x55*k2
-    _x57 = 2.0*_x18
-    _x58 = 2.0*t
-    _x59 = -0.5*_x1*_x43 + (0.5)*_x14*_x49*_x58 + (0.5)*_x42*_x57
-    _x60 = _x59*k1
-    _x61 = _x18*_x46
-    _x62 = (0.5)*_x10*_x2*_x46 + (0.25)*_x53*t - 0.125*_x61
-    _x63 = _x62*k2
-    _x64 = 6.0*_x22
-    _x65 = _x1*_x14*_x49 + 2.0*_x18*_x42*t - 0.3333333333333333*_x4*_x43 - 0.3333333333333333*_x49*_x64
-    _x66 = _x65*k1
-    _x67 = (0.375)*_x22
-    _x68 = _x10*_x4
-    _x69 = (0.25)*_x1*_x53 + (0.3333333333333333)*_x47*_x68 - 0.3333333333333333*_x52*_x67 - 0.25*_x61*t
-    _x70 = _x69*k2
-    _x71 = 1.0/(l0**2*m)
-    _x72 = k0*t
-    _x73 = (0.3333333333333333)*c2
-    _x74 = k1*p_td
-    _x75 = _x49*_x74
-    _x76 = c0*k1
-    _x77 = _x49*t
-    _x78 = _x38*_x52
-    _x79 = _x49*k1
-    _x80 = _x2*c1
-    _x81 = _x73*k1
-    _x82 = _x52*k2
-    _x83 = _x73*k2
-    _x84 = _x23*c2
-    _x85 = _x10*p_td
-    _x86 = _x18*c1
-    _x87 = _x11*_x14
-    _x88 = _x11*k1
-    _x89 = _x14*_x37
-    _x90 = _x14*_x42
-    _x91 = _x14*_x46
+    _x43 = _x11*_x42
+    _x44 = _x26 + 2.0*_x40
+    _x45 = math.sin(_x44)
+    _x46 = (0.5)*_x45
+    _x47 = _x37*_x46
+    _x48 = math.sin(_x41)
+    _x49 = _x14*_x48 - _x43*t
+    _x50 = _x49*k1
+    _x51 = math.cos(_x44)
+    _x52 = _x14*_x51
+    _x53 = _x11*t
+    _x54 = _x46*_x53 + (0.25)*_x52
+    _x55 = _x54*k2
+    _x56 = 2.0*_x18
+    _x57 = 2.0*t
+    _x58 = -0.5*_x1*_x43 + (0.5)*_x14*_x48*_x57 + (0.5)*_x42*_x56
+    _x59 = _x58*k1
+    _x60 = _x18*_x45
+    _x61 = (0.5)*_x11*_x2*_x45 + (0.25)*_x52*t - 0.125*_x60
+    _x62 = _x61*k2
+    _x63 = 6.0*_x22
+    _x64 = _x1*_x14*_x48 + 2.0*_x18*_x42*t - 0.3333333333333333*_x4*_x43 - 0.3333333333333333*_x48*_x63
+    _x65 = _x64*k1
+    _x66 = (0.375)*_x22
+    _x67 = _x11*_x4
+    _x68 = (0.25)*_x1*_x52 + (0.3333333333333333)*_x46*_x67 - 0.3333333333333333*_x51*_x66 - 0.25*_x60*t
+    _x69 = _x68*k2
+    _x70 = 1.0/(l0**2*m)
+    q_th = (_x70*(_x0*t + _x10*_x13 - _x10*_x43 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x30*_x33
+        + _x36*c2 - _x39*p_td + _x47*p_td + _x50*c0 + _x55*c0 + _x59*c1 + _x6*c1 + _x62*c1 + _x65*c2 + _x69*c2
+        + _x9*c2) + q_th_td)
+    _x71 = k0*t
+    _x72 = (0.3333333333333333)*c2
+    _x73 = _x4*_x72
+    _x74 = _x10*_x48
+    _x75 = c0*k1
+    _x76 = _x48*t
+    _x77 = _x51*k2
+    _x78 = _x77*p_td
+    _x79 = _x2*c1
+    _x80 = _x48*k1
+    d_q_th__t = (_x70*(_x0 + _x3*c1 + _x71*c0 + _x73*_x77 + _x73*_x80 + _x73*k0 + _x74 + _x75*_x76 + _x77*_x79
+        + _x77*c0*t + _x78 + _x79*_x80))
+    d_q_th__p_td = _x70*(_x11*_x19 - _x39 - _x43*k1 + _x47 + _x71)
+    d_q_th__c0 = _x70*(-_x17 - _x28*_x34 + _x3 + _x50 + _x55)
+    d_q_th__c1 = _x70*(_x18*_x33 - _x20 + _x59 + _x6 + _x62)
+    d_q_th__c2 = _x70*(_x24 + _x36 + _x65 + _x69 + _x9)
+    _x81 = p_td*t
+    d_q_th__k0 = _x70*(_x2*c0 + _x5*c1 + _x8*c2 + _x81)
+    _x82 = _x23*c2
+    d_q_th__k1 = _x70*(-_x12*_x30 + _x13*p_td + _x15*_x82 - _x16*c0 - _x43*p_td + _x49*c0 + _x58*c1 + _x64*c2)
+    _x83 = _x11*p_td
+    d_q_th__k2 = (_x70*(_x27*_x35*c2 - _x29*c0 + _x30*_x32 - _x38*_x83 + _x46*_x83 + _x54*c0 + _x61*c1
+        + _x68*c2))
+    _x84 = _x11**5
+    _x85 = _x84*c2
+    _x86 = _x31*k2
+    _x87 = k2*p_td
+    _x88 = _x14*_x38
+    _x89 = _x14*_x42
+    _x90 = _x11*_x81
+    _x91 = _x14*_x45
     _x92 = (0.5)*_x91
-    _x93 = _x1*_x10*_x49 - _x49*_x57 + _x58*_x90
-    _x94 = (0.5)*c1
-    _x95 = _x18*_x52
-    _x96 = _x1*_x10*_x52 - _x91*t - 0.5*_x95
-    _x97 = _x94*k2
-    _x98 = 3.0*_x1
-    _x99 = k1*(-6.0*_x18*_x77 - _x42*_x64 + _x49*_x68 + _x90*_x98)
-    _x100 = _x22*_x46
-    _x101 = -1.5*_x1*_x91 + (0.75)*_x100 + _x52*_x68 - 1.5*_x95*t
-    _x102 = _x10**5
-    _x103 = _x102*c2
-    _x104 = _x0*_x10
-    _x105 = _x10*_x7
-    q_th = _x71*(_x0*k0 + _x13*k1 - _x17*c0 - _x20*c1 + _x24*c2 - _x25*_x29 + _x3*c0 + _x33*c1 + _x36*c2 - _x37*_x39 + _x38*_x48 - _x44*k1 + _x51*c0 + _x56*c0 + _x6*c1 + _x60*c1 + _x63*c1 + _x66*c2 + _x70*c2 + _x9*c2) + q_th_td
-    q_th__tan = _x71*c0__tan*(-_x17 - _x28*_x34 + _x3 + _x51 + _x56) + _x71*c1__tan*(-_x20 + _x33 + _x6 + _x60 + _x63) + _x71*c2__tan*(_x24 + _x36 + _x66 + _x70 + _x9) + _x71*k0__tan*(_x0 + _x2*c0 + _x5*c1 + _x8*c2) + _x71*k1__tan*(_x13 + _x15*_x84 - _x16*c0 - _x19*c1 - _x44 + _x50*c0 + _x59*c1 + _x65*c2) + _x71*k2__tan*(_x27*_x35*c2 - _x29*c0 + _x30*_x32*c1 - _x37*_x85 + _x47*_x85 + _x55*c0 + _x62*c1 + _x69*c2) + _x71*omega0_hat__tan*(_x101*_x97 - 8.0*_x103*_x21 - 0.5*_x103*_x34 + _x104*_x79 + _x104*_x82 + _x15*_x57*_x76 + (0.5)*_x18*_x25*_x27 + 3.0*_x22*_x88*c1 + _x25*_x96 - _x31*_x67*c1 + _x38*_x89 - _x38*_x92 - _x74*_x87 + _x74*_x90 + _x76*_x93 + _x81*(-12.0*_x1*_x18*_x49 + 24.0*_x102*_x49 + _x105*_x49 - 24.0*_x22*_x42*t + 4.0*_x4*_x90) + _x83*(3.0*_x100*t + (1.5)*_x102*_x52 + _x105*_x52 - 2.0*_x4*_x91 - _x95*_x98) + _x94*_x99) + _x71*p_td__tan*(-0.5*_x10*_x31 + _x12*k1 - _x43*k1 + _x48*k2 + _x72) + _x71*phase_td__tan*(-_x10*_x15*_x74 + _x10*_x75 + _x10*_x78 + _x101*_x83 + _x21*_x86 - 0.25*_x22*_x31*c2 + _x25*_x89 + _x25*(_x52*_x54 - _x92) - _x27*_x39 + (0.25)*_x34*_x86 + _x73*_x99 - _x76*_x87 + _x76*(_x49*_x54 + _x90) + _x84*_x88 + _x93*_x94*k1 + _x96*_x97) + _x71*t__tan*(_x25*_x52*t + _x3*c1 + _x4*_x49*_x81 + _x4*_x52*_x83 + _x4*_x73*k0 + _x72*c0 + _x75 + _x76*_x77 + _x78 + _x79*_x80 + _x80*_x82 + k0*p_td) + q_th_td__tan
-    return (q_th, q_th__tan)
+    _x93 = _x1*_x11*_x48 - _x48*_x56 + _x57*_x89
+    _x94 = _x18*_x51
+    _x95 = _x1*_x11*_x51 - _x91*t - 0.5*_x94
+    _x96 = (0.5)*c1
+    _x97 = 3.0*_x1
+    _x98 = k1*(-6.0*_x18*_x76 - _x42*_x63 + _x48*_x67 + _x89*_x97)
+    _x99 = _x22*_x45
+    _x100 = -1.5*_x1*_x91 + _x51*_x67 - 1.5*_x94*t + (0.75)*_x99
+    _x101 = _x96*k2
+    _x102 = _x11*_x7
+    _x103 = _x72*k2
+    d_q_th__omega0_hat = (_x70*(-_x10*_x12*_x14 + _x10*_x89 + _x100*_x101 + _x103*(_x102*_x51 - 2.0*_x4*_x91
+        + (1.5)*_x51*_x84 - _x94*_x97 + 3.0*_x99*t) + _x15*_x56*_x75 + (0.5)*_x18*_x25*_x27 + 3.0*_x19*_x22*c1
+        - 8.0*_x21*_x85 + _x25*_x95 - 0.5*_x34*_x85 - _x66*_x86*c1 + _x72*k1*(-12.0*_x1*_x18*_x48 + _x102*_x48
+        - 24.0*_x22*_x42*t + 4.0*_x4*_x89 + 24.0*_x48*_x84) + _x75*_x93 + _x77*_x90 + _x80*_x90 + _x87*_x88
+        - _x87*_x92 + _x96*_x98))
+    d_q_th__phase_td = (_x70*(-_x10*_x11*_x15 + _x100*_x103 + _x101*_x95 + _x11*_x74 + _x11*_x78
+        - _x14*_x19*c0 + _x19*_x82 + _x21*_x30 - 0.25*_x22*_x86*c2 + _x25*_x88 + _x25*(_x51*_x53 - _x92)
+        - _x27*_x37*p_td + (0.25)*_x30*_x34 + _x72*_x98 + _x75*(_x48*_x53 + _x89) + _x93*_x96*k1))
+    # derivatives of the outputs
+    d_q_th__q_th_td = 1.0
+    return (q_th, d_q_th__t, d_q_th__q_th_td, d_q_th__p_td, d_q_th__c0, d_q_th__c1, d_q_th__c2, d_q_th__k0,
+        d_q_th__k1, d_q_th__k2, d_q_th__omega0_hat, d_q_th__phase_td)
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan):
-    """loop body of gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        T: value of the caller's variable
-        T__tan: value of the caller's variable
-        g_eff: value of the caller's variable
-        g_eff__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k: value of the caller's variable
-        k__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        r_c: value of the caller's variable
-        r_c__tan: value of the caller's variable
-        tau1: value of the caller's variable
-        tau1__tan: value of the caller's variable
-        tau2: value of the caller's variable
-        tau2__tan: value of the caller's variable
-        tau3: value of the caller's variable
-        tau3__tan: value of the caller's variable
-
-    Returns a tuple:
-        _next_tau1: result for the caller
-        _next_tau2: result for the caller
-        _next_tau3: result for the caller
-        _next_T: result for the caller
-        _next_g_eff: result for the caller
-        _next_r_c: result for the caller
-        _next_tau1__tan: result for the caller
-        _next_tau2__tan: result for the caller
-        _next_tau3__tan: result for the caller
-        _next_T__tan: result for the caller
-        _next_g_eff__tan: result for the caller
-        _next_r_c__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 362
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x2 = (1.0/T)
-    _x0 = math.sqrt(15.0)
-    _x1 = (0.16666666666666666)*_x0
-    _x3 = -0.3333333333333333*_x0*tau1 + (0.3333333333333333)*_x0*tau3 - 3.3333333333333335*tau1 + (6.666666666666667)*tau2 - 3.3333333333333335*tau3
-    _x4 = (6.666666666666667)*tau2__tan
-    _x5 = (0.3333333333333333)*_x2
-    _x6 = _x2**2
-    _x7 = tau1 - 2.0*tau2 + tau3
-    _x8 = (3.3333333333333335)*_x6
-    i_c0 = _x1*tau1 - _x1*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    i_c0__tan = tau1__tan*(_x1 + 0.8333333333333334) - 0.6666666666666666*tau2__tan + tau3__tan*(0.8333333333333334 - _x1)
-    i_c1 = _x2*_x3
-    i_c1__tan = -T__tan*_x3*_x6 + _x2*_x4 + _x5*tau1__tan*(-_x0 - 10.0) + _x5*tau3__tan*(_x0 - 10.0)
-    i_c2 = _x7*_x8
-    i_c2__tan = -6.666666666666667*T__tan*_x2**3*_x7 - _x4*_x6 + _x8*tau1__tan + _x8*tau3__tan
-    # T5.3: omega of the stance-mean momentum
-    _x9 = (0.5)*i_c0
-    _x10 = T**2
-    _x11 = (0.16666666666666666)*_x10
-    _x12 = (0.08333333333333333)*T**3
-    _x13 = 1.0/(l0**2*m)
-    i_omega = _x13*(T*_x9 + _x11*i_c1 + _x12*i_c2 + p_td)
-    i_omega__tan = (0.5)*T*_x13*i_c0__tan + T__tan*_x13*((0.3333333333333333)*T*i_c1 + (0.25)*_x10*i_c2 + _x9) + _x11*_x13*i_c1__tan + _x12*_x13*i_c2__tan + _x13*p_td__tan
-    # T5.4-T5.5: radial solution
-    _c0 = type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, i_omega, g_eff, r_c, m, l0, k, q_r_td__tan, q_rd_td__tan, i_omega__tan, g_eff__tan, r_c__tan, k__tan)
-    if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    i_omega0_hat = _c0[0]
-    i_a = _c0[1]
-    i_b = _c0[2]
-    i_phase_td = _c0[3]
-    i_s_td = _c0[4]
-    i_omega0_hat__tan = _c0[5]
-    i_a__tan = _c0[6]
-    i_b__tan = _c0[7]
-    i_phase_td__tan = _c0[8]
-    i_s_td__tan = _c0[9]
-    _c1 = geyer_liftoff_phase_jvp_a_b(i_a, i_b, l0, q_r_lo, i_a__tan, i_b__tan)
-    if _c1[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-    i_phase_lo = _c1[0]
-    i_phase_lo__tan = _c1[2]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x14 = (1.0/i_omega0_hat)
-    _x15 = -i_phase_td + (1.5)*math.pi
-    _x16 = _x14*i_phase_td__tan
-    _x17 = _x14**2*i_omega0_hat__tan
-    _x18 = i_phase_lo - i_phase_td
-    _x19 = 3.0*i_b**2
-    _x20 = 16.0*i_a
-    _x21 = r_c**2
-    _x22 = 12.0*_x21
-    _x23 = _x22 + 8.0*r_c + 2.0
-    _x24 = _x19 - _x20*r_c + _x23 + 6.0*i_a**2 - 4.0*i_a
-    _x25 = r_c**3
-    _x26 = 4.0*_x25
-    _x27 = r_c**4
-    _x28 = 4.0*r_c + 1.0
-    _x29 = 6.0*_x21 + _x26 + _x27 + _x28
-    _x30 = (1.0/_x29)
-    _x31 = (0.5)*_x30
-    _x32 = _x30*i_b
-    _x33 = 24.0*r_c + 8.0
-    _x34 = _x30**2*(-_x22 - _x26 - 12.0*r_c - 4.0)
-    _x35 = -2.0*_x28 + 6.0*i_a
-    _x36 = 8.0*_x25
-    _x37 = _x23 + 2.0*_x27 + _x36
-    _x38 = (1.0/_x37)
-    i_t_bottom = _x14*_x15
-    i_t_bottom__tan = -_x15*_x17 - _x16
-    i_t_stance = _x14*_x18
-    i_t_stance__tan = _x14*i_phase_lo__tan - _x16 - _x17*_x18
-    i_k0 = _x24*_x31
-    i_k0__tan = _x31*i_a__tan*(12.0*i_a - 16.0*r_c - 4.0) + 3.0*_x32*i_b__tan + r_c__tan*((0.5)*_x24*_x34 + _x31*(-_x20 + _x33))
-    i_k1 = _x32*_x35
-    i_k1__tan = _x30*_x35*i_b__tan + 6.0*_x32*i_a__tan + r_c__tan*(-8.0*_x32 + _x34*_x35*i_b)
-    i_k2 = -_x19*_x38
-    i_k2__tan = -_x19*_x38**2*r_c__tan*(-24.0*_x21 - _x33 - _x36) - 6.0*_x38*i_b*i_b__tan
-    _c2 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, i_t_stance__tan*(0.5 - 0.1*math.sqrt(15.0)), q_th_td__tan, p_td__tan, i_c0__tan, i_c1__tan, i_c2__tan, i_k0__tan, i_k1__tan, i_k2__tan, i_omega0_hat__tan, i_phase_td__tan)
-    i_th1 = _c2[0]
-    i_th1__tan = _c2[1]
-    _c3 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance, q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, (0.5)*i_t_stance__tan, q_th_td__tan, p_td__tan, i_c0__tan, i_c1__tan, i_c2__tan, i_k0__tan, i_k1__tan, i_k2__tan, i_omega0_hat__tan, i_phase_td__tan)
-    i_th2 = _c3[0]
-    i_th2__tan = _c3[1]
-    _c4 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0, i_t_stance__tan*((0.1)*math.sqrt(15.0) + 0.5), q_th_td__tan, p_td__tan, i_c0__tan, i_c1__tan, i_c2__tan, i_k0__tan, i_k1__tan, i_k2__tan, i_omega0_hat__tan, i_phase_td__tan)
-    i_th3 = _c4[0]
-    i_th3__tan = _c4[1]
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x39 = (0.2)*math.sqrt(15.0)
-    _x40 = 1.0 - _x39
-    _x41 = (0.5)*i_omega0_hat
-    _x42 = _x41*i_t_stance
-    _x43 = _x40*_x42 + i_phase_td
-    _x44 = math.sin(_x43)
-    _x45 = i_a + 1.0
-    _x46 = _x44*i_b + _x45
-    _x47 = math.sin(i_th1)
-    _x48 = l0*m
-    _x49 = _x48*g_s
-    _x50 = _x47*_x49
-    _x51 = i_b*i_phase_td__tan
-    _x52 = math.cos(_x43)
-    _x53 = _x50*_x52
-    _x54 = math.cos(i_th1)
-    _x55 = _x41*i_b*i_t_stance__tan
-    _x56 = (0.5)*g_s
-    _x57 = _x48*_x56*i_b*i_omega0_hat__tan*i_t_stance
-    _x58 = _x42 + i_phase_td
-    _x59 = math.sin(_x58)
-    _x60 = _x45 + _x59*i_b
-    _x61 = math.sin(i_th2)
-    _x62 = _x61*g_s
-    _x63 = _x48*_x62
-    _x64 = math.cos(_x58)
-    _x65 = _x63*_x64
-    _x66 = math.cos(i_th2)
-    _x67 = _x39 + 1.0
-    _x68 = _x42*_x67 + i_phase_td
-    _x69 = math.sin(_x68)
-    _x70 = _x45 + _x69*i_b
-    _x71 = math.sin(i_th3)
-    _x72 = _x49*_x71
-    _x73 = math.cos(_x68)
-    _x74 = _x72*_x73
-    _x75 = math.cos(i_th3)
-    _x76 = (0.2777777777777778)*g_s
-    _x77 = math.cos(i_phase_lo) - math.cos(i_phase_td)
-    _x78 = i_phase_lo - i_phase_td
-    _x79 = (1.0/_x78)
-    _x80 = _x79*i_b
-    _x81 = _x77*_x79**2*i_b
-    i_tau1 = _x46*_x50
-    i_tau1__tan = _x40*_x47*_x52*_x57 + _x40*_x53*_x55 + _x44*_x50*i_b__tan + _x46*_x49*_x54*i_th1__tan + _x50*i_a__tan + _x51*_x53
-    i_tau2 = _x60*_x63
-    i_tau2__tan = _x49*_x60*_x66*i_th2__tan + _x51*_x65 + _x55*_x65 + _x57*_x61*_x64 + _x59*_x63*i_b__tan + _x63*i_a__tan
-    i_tau3 = _x70*_x72
-    i_tau3__tan = _x49*_x70*_x75*i_th3__tan + _x51*_x74 + _x55*_x67*_x74 + _x57*_x67*_x71*_x73 + _x69*_x72*i_b__tan + _x72*i_a__tan
-    i_g_eff = _x56*((0.5555555555555556)*_x54 + (0.8888888888888888)*_x66 + (0.5555555555555556)*_x75)
-    i_g_eff__tan = -_x47*_x76*i_th1__tan - 0.4444444444444444*_x62*i_th2__tan - _x71*_x76*i_th3__tan
-    i_r_c = -_x77*_x80 + i_a
-    i_r_c__tan = -_x77*_x79*i_b__tan + i_a__tan + i_phase_lo__tan*(_x80*math.sin(i_phase_lo) + _x81) + i_phase_td__tan*(-_x80*math.sin(i_phase_td) - _x81)
-    # next values
-    _next_tau1 = i_tau1
-    _next_tau2 = i_tau2
-    _next_tau3 = i_tau3
-    _next_T = i_t_stance
-    _next_g_eff = i_g_eff
-    _next_r_c = i_r_c
-    _next_tau1__tan = i_tau1__tan
-    _next_tau2__tan = i_tau2__tan
-    _next_tau3__tan = i_tau3__tan
-    _next_T__tan = i_t_stance__tan
-    _next_g_eff__tan = i_g_eff__tan
-    _next_r_c__tan = i_r_c__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_tau1, _next_tau2, _next_tau3, _next_T, _next_g_eff, _next_r_c, _next_tau1__tan, _next_tau2__tan, _next_tau3__tan, _next_T__tan, _next_g_eff__tan, _next_r_c__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan):
-    """continuation of gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_td: value of the caller's variable
-        E_td__tan: value of the caller's variable
-        T: value of the caller's variable
-        T__tan: value of the caller's variable
-        g_eff: value of the caller's variable
-        g_eff__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k: value of the caller's variable
-        k__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        p_td: value of the caller's variable
-        p_td__tan: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        r_c: value of the caller's variable
-        r_c__tan: value of the caller's variable
-        tau1: value of the caller's variable
-        tau1__tan: value of the caller's variable
-        tau2: value of the caller's variable
-        tau2__tan: value of the caller's variable
-        tau3: value of the caller's variable
-        tau3__tan: value of the caller's variable
-
-    Returns a tuple:
-        t_bottom: result for the caller
-        t_stance: result for the caller
-        bottom_q_r: result for the caller
-        bottom_q_rd: result for the caller
-        bottom_q_th: result for the caller
-        bottom_q_thd: result for the caller
-        liftoff_q_r: result for the caller
-        liftoff_q_rd: result for the caller
-        liftoff_q_th: result for the caller
-        liftoff_q_thd: result for the caller
-        P_c: result for the caller
-        t_bottom__tan: result for the caller
-        t_stance__tan: result for the caller
-        bottom_q_r__tan: result for the caller
-        bottom_q_rd__tan: result for the caller
-        bottom_q_th__tan: result for the caller
-        bottom_q_thd__tan: result for the caller
-        liftoff_q_r__tan: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        liftoff_q_th__tan: result for the caller
-        liftoff_q_thd__tan: result for the caller
-        P_c__tan: result for the caller
-        passes__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 532
-    # T5.1: the torque quadratic through the nodal torques of the previous pass
-    _x2 = (1.0/T)
-    _x0 = math.sqrt(15.0)
-    _x1 = (0.16666666666666666)*_x0
-    _x3 = -0.3333333333333333*_x0*tau1 + (0.3333333333333333)*_x0*tau3 - 3.3333333333333335*tau1 + (6.666666666666667)*tau2 - 3.3333333333333335*tau3
-    _x4 = (6.666666666666667)*tau2__tan
-    _x5 = (0.3333333333333333)*_x2
-    _x6 = _x2**2
-    _x7 = tau1 - 2.0*tau2 + tau3
-    _x8 = (3.3333333333333335)*_x6
-    f_c0 = _x1*tau1 - _x1*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2 + (0.8333333333333334)*tau3
-    f_c0__tan = tau1__tan*(_x1 + 0.8333333333333334) - 0.6666666666666666*tau2__tan + tau3__tan*(0.8333333333333334 - _x1)
-    f_c1 = _x2*_x3
-    f_c1__tan = -T__tan*_x3*_x6 + _x2*_x4 + _x5*tau1__tan*(-_x0 - 10.0) + _x5*tau3__tan*(_x0 - 10.0)
-    f_c2 = _x7*_x8
-    f_c2__tan = -6.666666666666667*T__tan*_x2**3*_x7 - _x4*_x6 + _x8*tau1__tan + _x8*tau3__tan
-    # T5.3: omega of the stance-mean momentum
-    _x9 = (0.5)*f_c0
-    _x10 = T**2
-    _x11 = (0.16666666666666666)*_x10
-    _x12 = (0.08333333333333333)*T**3
-    _x13 = 1.0/(l0**2*m)
-    f_omega = _x13*(T*_x9 + _x11*f_c1 + _x12*f_c2 + p_td)
-    f_omega__tan = (0.5)*T*_x13*f_c0__tan + T__tan*_x13*((0.3333333333333333)*T*f_c1 + (0.25)*_x10*f_c2 + _x9) + _x11*_x13*f_c1__tan + _x12*_x13*f_c2__tan + _x13*p_td__tan
-    # T5.4-T5.5: radial solution
-    _c0 = type5_solution_jvp_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, f_omega, g_eff, r_c, m, l0, k, q_r_td__tan, q_rd_td__tan, f_omega__tan, g_eff__tan, r_c__tan, k__tan)
-    if _c0[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-    f_omega0_hat = _c0[0]
-    f_a = _c0[1]
-    f_b = _c0[2]
-    f_phase_td = _c0[3]
-    f_s_td = _c0[4]
-    f_omega0_hat__tan = _c0[5]
-    f_a__tan = _c0[6]
-    f_b__tan = _c0[7]
-    f_phase_td__tan = _c0[8]
-    f_s_td__tan = _c0[9]
-    _c1 = geyer_liftoff_phase_jvp_a_b(f_a, f_b, l0, q_r_lo, f_a__tan, f_b__tan)
-    if _c1[4] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-    f_phase_lo = _c1[0]
-    f_phase_lo__tan = _c1[2]
-    # eqs (13)-(14) minus (12); T5.6: the rate factor
-    _x14 = (1.0/f_omega0_hat)
-    _x15 = -f_phase_td + (1.5)*math.pi
-    _x16 = _x14*f_phase_td__tan
-    _x17 = _x14**2*f_omega0_hat__tan
-    _x18 = f_phase_lo - f_phase_td
-    _x19 = 3.0*f_b**2
-    _x20 = 16.0*f_a
-    _x21 = r_c**2
-    _x22 = 12.0*_x21
-    _x23 = _x22 + 8.0*r_c + 2.0
-    _x24 = _x19 - _x20*r_c + _x23 + 6.0*f_a**2 - 4.0*f_a
-    _x25 = r_c**3
-    _x26 = 4.0*_x25
-    _x27 = r_c**4
-    _x28 = 4.0*r_c + 1.0
-    _x29 = 6.0*_x21 + _x26 + _x27 + _x28
-    _x30 = (1.0/_x29)
-    _x31 = (0.5)*_x30
-    _x32 = _x30*f_b
-    _x33 = 24.0*r_c + 8.0
-    _x34 = _x30**2*(-_x22 - _x26 - 12.0*r_c - 4.0)
-    _x35 = -2.0*_x28 + 6.0*f_a
-    _x36 = 8.0*_x25
-    _x37 = _x23 + 2.0*_x27 + _x36
-    _x38 = (1.0/_x37)
-    f_t_bottom = _x14*_x15
-    f_t_bottom__tan = -_x15*_x17 - _x16
-    f_t_stance = _x14*_x18
-    f_t_stance__tan = _x14*f_phase_lo__tan - _x16 - _x17*_x18
-    f_k0 = _x24*_x31
-    f_k0__tan = _x31*f_a__tan*(12.0*f_a - 16.0*r_c - 4.0) + 3.0*_x32*f_b__tan + r_c__tan*((0.5)*_x24*_x34 + _x31*(-_x20 + _x33))
-    f_k1 = _x32*_x35
-    f_k1__tan = _x30*_x35*f_b__tan + 6.0*_x32*f_a__tan + r_c__tan*(-8.0*_x32 + _x34*_x35*f_b)
-    f_k2 = -_x19*_x38
-    f_k2__tan = -_x19*_x38**2*r_c__tan*(-24.0*_x21 - _x33 - _x36) - 6.0*_x38*f_b*f_b__tan
-    _c2 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance*(1.0 - 0.2*math.sqrt(15.0)), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan*(0.5 - 0.1*math.sqrt(15.0)), q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th1 = _c2[0]
-    f_th1__tan = _c2[1]
-    _c3 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, (0.5)*f_t_stance__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th2 = _c3[0]
-    f_th2__tan = _c3[1]
-    _c4 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*f_t_stance*((0.2)*math.sqrt(15.0) + 1.0), q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan*((0.1)*math.sqrt(15.0) + 0.5), q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    f_th3 = _c4[0]
-    f_th3__tan = _c4[1]
-    # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
-    _x39 = (0.2)*math.sqrt(15.0)
-    _x40 = 1.0 - _x39
-    _x41 = (0.5)*f_omega0_hat
-    _x42 = _x41*f_t_stance
-    _x43 = _x40*_x42 + f_phase_td
-    _x44 = math.sin(_x43)
-    _x45 = f_a + 1.0
-    _x46 = _x44*f_b + _x45
-    _x47 = math.sin(f_th1)
-    _x48 = l0*m
-    _x49 = _x48*g_s
-    _x50 = _x47*_x49
-    _x51 = f_b*f_phase_td__tan
-    _x52 = math.cos(_x43)
-    _x53 = _x50*_x52
-    _x54 = math.cos(f_th1)
-    _x55 = _x41*f_b*f_t_stance__tan
-    _x56 = (0.5)*g_s
-    _x57 = _x48*_x56*f_b*f_omega0_hat__tan*f_t_stance
-    _x58 = _x42 + f_phase_td
-    _x59 = math.sin(_x58)
-    _x60 = _x45 + _x59*f_b
-    _x61 = math.sin(f_th2)
-    _x62 = _x61*g_s
-    _x63 = _x48*_x62
-    _x64 = math.cos(_x58)
-    _x65 = _x63*_x64
-    _x66 = math.cos(f_th2)
-    _x67 = _x39 + 1.0
-    _x68 = _x42*_x67 + f_phase_td
-    _x69 = math.sin(_x68)
-    _x70 = _x45 + _x69*f_b
-    _x71 = math.sin(f_th3)
-    _x72 = _x49*_x71
-    _x73 = math.cos(_x68)
-    _x74 = _x72*_x73
-    _x75 = math.cos(f_th3)
-    _x76 = (0.2777777777777778)*g_s
-    _x77 = math.cos(f_phase_lo) - math.cos(f_phase_td)
-    _x78 = f_phase_lo - f_phase_td
-    _x79 = (1.0/_x78)
-    _x80 = _x79*f_b
-    _x81 = _x77*_x79**2*f_b
-    f_tau1 = _x46*_x50
-    f_tau1__tan = _x40*_x47*_x52*_x57 + _x40*_x53*_x55 + _x44*_x50*f_b__tan + _x46*_x49*_x54*f_th1__tan + _x50*f_a__tan + _x51*_x53
-    f_tau2 = _x60*_x63
-    f_tau2__tan = _x49*_x60*_x66*f_th2__tan + _x51*_x65 + _x55*_x65 + _x57*_x61*_x64 + _x59*_x63*f_b__tan + _x63*f_a__tan
-    f_tau3 = _x70*_x72
-    f_tau3__tan = _x49*_x70*_x75*f_th3__tan + _x51*_x74 + _x55*_x67*_x74 + _x57*_x67*_x71*_x73 + _x69*_x72*f_b__tan + _x72*f_a__tan
-    f_g_eff = _x56*((0.5555555555555556)*_x54 + (0.8888888888888888)*_x66 + (0.5555555555555556)*_x75)
-    f_g_eff__tan = -_x47*_x76*f_th1__tan - 0.4444444444444444*_x62*f_th2__tan - _x71*_x76*f_th3__tan
-    f_r_c = -_x77*_x80 + f_a
-    f_r_c__tan = -_x77*_x79*f_b__tan + f_a__tan + f_phase_lo__tan*(_x80*math.sin(f_phase_lo) + _x81) + f_phase_td__tan*(-_x80*math.sin(f_phase_td) - _x81)
-    _c5 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(f_t_bottom, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_bottom__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    bottom_q_th = _c5[0]
-    bottom_q_th__tan = _c5[1]
-    _c6 = type5_leg_angle_jvp_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(f_t_stance, q_th_td, p_td, f_c0, f_c1, f_c2, f_k0, f_k1, f_k2, f_omega0_hat, f_phase_td, m, l0, f_t_stance__tan, q_th_td__tan, p_td__tan, f_c0__tan, f_c1__tan, f_c2__tan, f_k0__tan, f_k1__tan, f_k2__tan, f_omega0_hat__tan, f_phase_td__tan)
-    liftoff_q_th = _c6[0]
-    liftoff_q_th__tan = _c6[1]
-    # T5.7: bottom and liftoff states
-    _x82 = f_a - f_b + 1.0
-    _x102 = (1.0/_x82)
-    _x83 = f_t_bottom**2
-    _x84 = (0.5)*f_c1
-    _x85 = f_t_bottom**3
-    _x86 = (0.3333333333333333)*f_c2
-    _x87 = _x83*_x84 + _x85*_x86 + f_c0*f_t_bottom + p_td
-    _x88 = (1.0/m)
-    _x89 = l0**-2
-    _x90 = _x102**2*_x88*_x89
-    _x91 = (0.5)*f_c1__tan
-    _x92 = (0.3333333333333333)*f_c2__tan
-    _x93 = 2.0*_x102**3*_x87*_x88*_x89
-    _x94 = f_t_stance**2
-    _x95 = f_t_stance**3
-    _x96 = _x84*_x94 + _x86*_x95 + f_c0*f_t_stance
-    _x97 = f_c0__tan*f_t_stance
-    _x98 = _x91*_x94
-    _x99 = _x92*_x95
-    _x100 = f_t_stance__tan*(_x94*f_c2 + f_c0 + f_c1*f_t_stance)
-    _x101 = _x88/q_r_lo**2
-    t_bottom = f_t_bottom
-    t_bottom__tan = f_t_bottom__tan
-    t_stance = f_t_stance
-    t_stance__tan = f_t_stance__tan
-    bottom_q_r = _x82*l0
-    bottom_q_r__tan = f_a__tan*l0 - f_b__tan*l0
-    bottom_q_rd = 0.0
-    bottom_q_thd = _x87*_x90
-    bottom_q_thd__tan = _x83*_x90*_x91 + _x85*_x90*_x92 + _x90*f_c0__tan*f_t_bottom + _x90*f_t_bottom__tan*(_x83*f_c2 + f_c0 + f_c1*f_t_bottom) + _x90*p_td__tan - _x93*f_a__tan + _x93*f_b__tan
-    liftoff_q_r = q_r_lo
-    P_c = _x96
-    P_c__tan = _x100 + _x97 + _x98 + _x99
-    liftoff_q_thd = _x101*(_x96 + p_td)
-    liftoff_q_thd__tan = _x100*_x101 + _x101*_x97 + _x101*_x98 + _x101*_x99 + _x101*p_td__tan
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    _x103 = (1.0/m)
-    _x104 = _x103*l0**2
-    _x105 = q_r_lo**2
-    _x106 = _x103*_x105
-    _x107 = f_c0*f_t_stance
-    _x108 = f_t_stance**2
-    _x109 = _x108*f_c1
-    _x110 = f_t_stance**3
-    _x111 = _x110*f_c2
-    _x112 = _x107 + (0.5)*_x109 + (0.3333333333333333)*_x111 + p_td
-    _x113 = _x103**2/_x105
-    _x114 = 2.0*f_t_stance
-    _x115 = _x112*_x113
-    _q_rd_lo_sq = 2.0*E_td*_x103 + 2.0*_x103*k*l0*q_r_lo - _x104*k - _x106*k - _x112**2*_x113 - 2.0*g_s*q_r_lo*math.cos(liftoff_q_th)
-    _q_rd_lo_sq__tan = 2.0*E_td__tan*_x103 - _x108*_x115*f_c1__tan - 0.6666666666666666*_x110*_x115*f_c2__tan - _x113*p_td__tan*(2.0*_x107 + _x109 + (0.6666666666666666)*_x111 + 2.0*p_td) - _x114*_x115*f_c0__tan - _x115*f_t_stance__tan*(2.0*_x108*f_c2 + _x114*f_c1 + 2.0*f_c0) + 2.0*g_s*liftoff_q_th__tan*q_r_lo*math.sin(liftoff_q_th) + k__tan*(2.0*_x103*l0*q_r_lo - _x104 - _x106)
-    # q_rd_lo^2 from the energy (27)
-    if not ((_q_rd_lo_sq >= 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_ENERGY_DEFICIT)
-    # q_rd_lo from the energy
-    _x116 = math.sqrt(_q_rd_lo_sq)
-    liftoff_q_rd = _x116
-    liftoff_q_rd__tan = (0.5)*_q_rd_lo_sq__tan/_x116
-    # derivatives that are identically zero
-    bottom_q_rd__tan = 0.0
-    liftoff_q_r__tan = 0.0
-    passes__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan):
-    """Gravity correction type 5 (time-varying momentum): touchdown state -> bottom and liftoff states, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k__tan).
+def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
+    """Gravity correction type 5 (time-varying momentum): stance outputs and their derivatives with respect to
+    the touchdown state and the stiffness.
 
     Report equations: 46, 47, 48.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -815,12 +383,8 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_th_td__tan: direction: its component along q_th_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k__tan: direction: its component along k
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -835,38 +399,56 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
         passes: fixed-point passes run
-        t_bottom__tan: derivative of t_bottom along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        bottom_q_r__tan: derivative of bottom_q_r along the direction
-        bottom_q_rd__tan: derivative of bottom_q_rd along the direction
-        bottom_q_th__tan: derivative of bottom_q_th along the direction
-        bottom_q_thd__tan: derivative of bottom_q_thd along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        P_c__tan: derivative of P_c along the direction
-        passes__tan: derivative of passes along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 52
+    # Total ops: 752
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN72 + (STATUS_INVALID_INPUT,)
+    # the tangents the loops compute once per direction: _T[row, direction]
+    _T = np.empty((38, 5))
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
     _x2 = _x1*q_thd_td
-    _x3 = l0*q_r_td
-    _x4 = (0.5)*l0**2
-    _x5 = (0.5)*_x0
-    _x6 = g_s*m
-    _x7 = _x6*math.cos(q_th_td)
-    _x8 = m*q_thd_td**2
     p_td = _x2
-    p_td__tan = _x1*q_thd_td__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td
-    E_td = -_x3*k + _x4*k + _x5*_x8 + _x5*k + _x7*q_r_td + (0.5)*m*q_rd_td**2
-    E_td__tan = _x2*q_thd_td__tan - _x6*q_r_td*q_th_td__tan*math.sin(q_th_td) + k__tan*(-_x3 + _x4 + _x5) + m*q_rd_td*q_rd_td__tan + q_r_td__tan*(_x7 + _x8*q_r_td - k*l0 + k*q_r_td)
+    _x3 = m*q_r_td
+    d_p_td__q_r_td = 2.0*_x3*q_thd_td
+    d_p_td__q_thd_td = _x1
+    _x4 = k*q_r_td
+    _x5 = (0.5)*l0**2
+    _x6 = (0.5)*_x0
+    _x7 = g_s*m
+    _x8 = _x7*math.cos(q_th_td)
+    _x9 = q_thd_td**2
+    E_td = (0.5)*_x1*_x9 - _x4*l0 + _x5*k + _x6*k + _x8*q_r_td + (0.5)*m*q_rd_td**2
+    d_E_td__q_r_td = _x3*_x9 + _x4 + _x8 - k*l0
+    d_E_td__q_rd_td = m*q_rd_td
+    d_E_td__q_th_td = -_x7*q_r_td*math.sin(q_th_td)
+    d_E_td__q_thd_td = _x2
+    d_E_td__k = _x5 + _x6 - l0*q_r_td
+    (_T[0, 0], _T[0, 1], _T[0, 2], _T[0, 3], _T[0, 4], ) = (d_E_td__q_r_td, d_E_td__q_rd_td, d_E_td__q_th_td,
+        d_E_td__q_thd_td, d_E_td__k, )
+    (_T[1, 0], _T[1, 1], _T[1, 2], _T[1, 3], _T[1, 4], ) = (0.0, 0.0, 0.0, 0.0, 1.0, )
+    (_T[2, 0], _T[2, 1], _T[2, 2], _T[2, 3], _T[2, 4], ) = (d_p_td__q_r_td, 0.0, 0.0, d_p_td__q_thd_td, 0.0, )
+    (_T[3, 0], _T[3, 1], _T[3, 2], _T[3, 3], _T[3, 4], ) = (1.0, 0.0, 0.0, 0.0, 0.0, )
+    (_T[4, 0], _T[4, 1], _T[4, 2], _T[4, 3], _T[4, 4], ) = (0.0, 1.0, 0.0, 0.0, 0.0, )
+    (_T[5, 0], _T[5, 1], _T[5, 2], _T[5, 3], _T[5, 4], ) = (0.0, 0.0, 1.0, 0.0, 0.0, )
+    for _j0 in range(5):
+        _T[6, _j0] = 0.0
+        _T[7, _j0] = 0.0
+        _T[8, _j0] = 0.0
+        _T[9, _j0] = 0.0
+        _T[10, _j0] = 0.0
+        _T[11, _j0] = 0.0
     # T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c
     tau1 = 0.0
     tau2 = 0.0
@@ -874,304 +456,541 @@ def gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, 
     T = 1.0
     g_eff = g_s
     r_c = 0.0
-    tau1__tan = 0.0
-    tau2__tan = 0.0
-    tau3__tan = 0.0
-    T__tan = 0.0
-    g_eff__tan = 0.0
-    r_c__tan = 0.0
     passes = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
-        _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_0(T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan)
-        if _c0[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-        _next_tau1 = _c0[0]
-        _next_tau2 = _c0[1]
-        _next_tau3 = _c0[2]
-        _next_T = _c0[3]
-        _next_g_eff = _c0[4]
-        _next_r_c = _c0[5]
-        _next_tau1__tan = _c0[6]
-        _next_tau2__tan = _c0[7]
-        _next_tau3__tan = _c0[8]
-        _next_T__tan = _c0[9]
-        _next_g_eff__tan = _c0[10]
-        _next_r_c__tan = _c0[11]
-        _n0_0 = _next_tau1
-        _n0_1 = _next_tau2
-        _n0_2 = _next_tau3
-        _n0_3 = _next_T
-        _n0_4 = _next_g_eff
-        _n0_5 = _next_r_c
-        _n0_6 = _next_tau1__tan
-        _n0_7 = _next_tau2__tan
-        _n0_8 = _next_tau3__tan
-        _n0_9 = _next_T__tan
-        _n0_10 = _next_g_eff__tan
-        _n0_11 = _next_r_c__tan
+    # a pass evaluates the current iterate, then (unless the loop stops there) updates it: the
+    # final iterate is evaluated too, so its values are visible after the loop
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
+            return _NAN72 + (STATUS_NOT_CONVERGED,)
+        # T5.1: the torque quadratic through the nodal torques of the previous pass
+        _x10 = math.sqrt(15.0)
+        _x11 = (0.16666666666666666)*_x10
+        i_c0 = (_x11*tau1 - _x11*tau3 + (0.8333333333333334)*tau1 - 0.6666666666666666*tau2
+            + (0.8333333333333334)*tau3)
+        _pd__0 = _x11 + 0.8333333333333334
+        _pd__1 = 0.8333333333333334 - _x11
+        _x12 = (1.0/T)
+        _x13 = (-0.3333333333333333*_x10*tau1 + (0.3333333333333333)*_x10*tau3 - 3.3333333333333335*tau1
+            + (6.666666666666667)*tau2 - 3.3333333333333335*tau3)
+        i_c1 = _x12*_x13
+        _x14 = _x12**2
+        _pd__2 = -_x13*_x14
+        _x15 = (0.3333333333333333)*_x12
+        _pd__3 = _x15*(-_x10 - 10.0)
+        _pd__4 = (6.666666666666667)*_x12
+        _pd__5 = _x15*(_x10 - 10.0)
+        _x16 = tau1 - 2.0*tau2 + tau3
+        _x17 = (3.3333333333333335)*_x14
+        i_c2 = _x16*_x17
+        _pd__6 = -6.666666666666667*_x12**3*_x16
+        _pd__7 = _x17
+        _pd__8 = -6.666666666666667*_x14
+        _pd__9 = _x17
+        # T5.3: omega of the stance-mean momentum
+        _x18 = (0.5)*i_c0
+        _x19 = T**2
+        _x20 = (0.16666666666666666)*_x19
+        _x21 = (0.08333333333333333)*T**3
+        _x22 = 1.0/(l0**2*m)
+        i_omega = _x22*(T*_x18 + _x20*i_c1 + _x21*i_c2 + p_td)
+        _pd__10 = _x22*((0.3333333333333333)*T*i_c1 + _x18 + (0.25)*_x19*i_c2)
+        _pd__11 = (0.5)*T*_x22
+        _pd__12 = _x20*_x22
+        _pd__13 = _x21*_x22
+        _pd__14 = _x22
+        # T5.4-T5.5: radial solution
+        _c0 = (type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, i_omega, g_eff, r_c, m,
+            l0, k))
+        if _c0[35] != STATUS_OK:
+            return _NAN72 + (_c0[35],)
+        (i_omega0_hat, i_a, i_b, i_phase_td, _, _, _, _j_i_omega0_hat__omega, _, _j_i_omega0_hat__r_c,
+            _j_i_omega0_hat__k, _, _, _j_i_a__omega, _j_i_a__g_eff, _j_i_a__r_c, _j_i_a__k, _j_i_b__q_r_td,
+            _j_i_b__q_rd_td, _j_i_b__omega, _j_i_b__g_eff, _j_i_b__r_c, _j_i_b__k, _j_i_phase_td__q_r_td,
+            _j_i_phase_td__q_rd_td, _j_i_phase_td__omega, _j_i_phase_td__g_eff, _j_i_phase_td__r_c,
+            _j_i_phase_td__k, _, _, _, _, _, _, _) = _c0
+        _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
+        if _c1[6] != STATUS_OK:
+            return _NAN72 + (_c1[6],)
+        i_phase_lo = _c1[0]
+        _j_i_phase_lo__a = _c1[2]
+        _j_i_phase_lo__b = _c1[3]
+        # eqs (13)-(14) minus (12); T5.6: the rate factor
+        _x23 = (1.0/i_omega0_hat)
+        _x24 = -i_phase_td + (1.5)*math.pi
+        i_t_bottom = _x23*_x24
+        _x25 = _x23**2
+        _pd__15 = -_x24*_x25
+        _x26 = -_x23
+        _pd__16 = _x26
+        _x27 = i_phase_lo - i_phase_td
+        i_t_stance = _x23*_x27
+        _pd__17 = -_x25*_x27
+        _pd__18 = _x23
+        _pd__19 = _x26
+        _x28 = 3.0*i_b**2
+        _x29 = 16.0*r_c
+        _x30 = r_c**2
+        _x31 = 12.0*_x30
+        _x32 = _x31 + 8.0*r_c + 2.0
+        _x33 = _x28 - _x29*i_a + _x32 + 6.0*i_a**2 - 4.0*i_a
+        _x34 = r_c**3
+        _x35 = 4.0*_x34
+        _x36 = r_c**4
+        _x37 = 4.0*r_c + 1.0
+        _x38 = 6.0*_x30 + _x35 + _x36 + _x37
+        _x39 = (1.0/_x38)
+        _x40 = (0.5)*_x39
+        i_k0 = _x33*_x40
+        _pd__20 = _x40*(-_x29 + 12.0*i_a - 4.0)
+        _x41 = _x39*i_b
+        _pd__21 = 3.0*_x41
+        _x42 = 24.0*r_c + 8.0
+        _x43 = _x39**2*(-_x31 - _x35 - 12.0*r_c - 4.0)
+        _pd__22 = (0.5)*_x33*_x43 + _x40*(_x42 - 16.0*i_a)
+        _x44 = -2.0*_x37 + 6.0*i_a
+        i_k1 = _x41*_x44
+        _pd__23 = 6.0*_x41
+        _pd__24 = _x39*_x44
+        _pd__25 = -8.0*_x41 + _x43*_x44*i_b
+        _x45 = 8.0*_x34
+        _x46 = _x32 + 2.0*_x36 + _x45
+        _x47 = (1.0/_x46)
+        i_k2 = -_x28*_x47
+        _pd__26 = -6.0*_x47*i_b
+        _pd__27 = -_x28*_x47**2*(-24.0*_x30 - _x42 - _x45)
+        _c2 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*(1.0
+            - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+            i_phase_td, m, l0))
+        (i_th1, _j_i_th1__t, _j_i_th1__q_th_td, _j_i_th1__p_td, _j_i_th1__c0, _j_i_th1__c1, _j_i_th1__c2,
+            _j_i_th1__k0, _j_i_th1__k1, _j_i_th1__k2, _j_i_th1__omega0_hat, _j_i_th1__phase_td) = _c2
+        _c3 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance,
+            q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+        (i_th2, _j_i_th2__t, _j_i_th2__q_th_td, _j_i_th2__p_td, _j_i_th2__c0, _j_i_th2__c1, _j_i_th2__c2,
+            _j_i_th2__k0, _j_i_th2__k1, _j_i_th2__k2, _j_i_th2__omega0_hat, _j_i_th2__phase_td) = _c3
+        _c4 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*((0.2
+            )*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
+            i_phase_td, m, l0))
+        (i_th3, _j_i_th3__t, _j_i_th3__q_th_td, _j_i_th3__p_td, _j_i_th3__c0, _j_i_th3__c1, _j_i_th3__c2,
+            _j_i_th3__k0, _j_i_th3__k1, _j_i_th3__k2, _j_i_th3__omega0_hat, _j_i_th3__phase_td) = _c4
+        # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+        _x48 = (0.2)*math.sqrt(15.0)
+        _x49 = 1.0 - _x48
+        _x50 = (0.5)*i_t_stance
+        _x51 = _x50*i_omega0_hat
+        _x52 = _x49*_x51 + i_phase_td
+        _x53 = math.sin(_x52)
+        _x54 = i_a + 1.0
+        _x55 = _x53*i_b + _x54
+        _x56 = math.sin(i_th1)
+        _x57 = l0*m
+        _x58 = _x57*g_s
+        _x59 = _x56*_x58
+        i_tau1 = _x55*_x59
+        _pd__28 = _x59
+        _pd__29 = _x53*_x59
+        _x60 = i_b*math.cos(_x52)
+        _x61 = _x59*_x60
+        _pd__30 = _x49*_x50*_x61
+        _pd__31 = _x61
+        _x62 = (0.5)*g_s
+        _x63 = _x57*_x62*i_omega0_hat
+        _pd__32 = _x49*_x56*_x60*_x63
+        _x64 = math.cos(i_th1)
+        _pd__33 = _x55*_x58*_x64
+        _x65 = _x51 + i_phase_td
+        _x66 = math.sin(_x65)
+        _x67 = _x54 + _x66*i_b
+        _x68 = math.sin(i_th2)
+        _x69 = _x68*g_s
+        _x70 = _x57*_x69
+        i_tau2 = _x67*_x70
+        _pd__34 = _x70
+        _pd__35 = _x66*_x70
+        _x71 = i_b*math.cos(_x65)
+        _x72 = _x70*_x71
+        _pd__36 = _x50*_x72
+        _pd__37 = _x72
+        _pd__38 = _x63*_x68*_x71
+        _x73 = math.cos(i_th2)
+        _pd__39 = _x58*_x67*_x73
+        _x74 = _x48 + 1.0
+        _x75 = _x51*_x74 + i_phase_td
+        _x76 = math.sin(_x75)
+        _x77 = _x54 + _x76*i_b
+        _x78 = math.sin(i_th3)
+        _x79 = _x58*_x78
+        i_tau3 = _x77*_x79
+        _pd__40 = _x79
+        _pd__41 = _x76*_x79
+        _x80 = i_b*math.cos(_x75)
+        _x81 = _x79*_x80
+        _pd__42 = _x50*_x74*_x81
+        _pd__43 = _x81
+        _pd__44 = _x63*_x74*_x78*_x80
+        _x82 = math.cos(i_th3)
+        _pd__45 = _x58*_x77*_x82
+        i_g_eff = _x62*((0.5555555555555556)*_x64 + (0.8888888888888888)*_x73 + (0.5555555555555556)*_x82)
+        _x83 = (0.2777777777777778)*g_s
+        _pd__46 = -_x56*_x83
+        _pd__47 = -0.4444444444444444*_x69
+        _pd__48 = -_x78*_x83
+        _x84 = i_phase_lo - i_phase_td
+        _x85 = (1.0/_x84)
+        _x86 = math.cos(i_phase_lo) - math.cos(i_phase_td)
+        _x87 = _x85*_x86
+        i_r_c = -_x87*i_b + i_a
+        _pd__49 = -_x87
+        _x88 = _x85*i_b
+        _x89 = _x85**2*_x86*i_b
+        _pd__50 = _x88*math.sin(i_phase_lo) + _x89
+        _pd__51 = -_x88*math.sin(i_phase_td) - _x89
+        # the evaluation's tangents, once per direction
+        for _j1 in range(5):
+            d_k__j = _T[1, _j1]
+            d_p_td__j = _T[2, _j1]
+            d_q_r_td__j = _T[3, _j1]
+            d_q_rd_td__j = _T[4, _j1]
+            d_q_th_td__j = _T[5, _j1]
+            d_tau1__j = _T[6, _j1]
+            d_tau2__j = _T[7, _j1]
+            d_tau3__j = _T[8, _j1]
+            d_T__j = _T[9, _j1]
+            d_g_eff__j = _T[10, _j1]
+            d_r_c__j = _T[11, _j1]
+            # T5.1: the torque quadratic through the nodal torques of the previous pass
+            d_i_c0__j = _pd__0*d_tau1__j + _pd__1*d_tau3__j - 0.6666666666666666*d_tau2__j
+            d_i_c1__j = _pd__2*d_T__j + _pd__3*d_tau1__j + _pd__4*d_tau2__j + _pd__5*d_tau3__j
+            d_i_c2__j = _pd__6*d_T__j + _pd__7*d_tau1__j + _pd__8*d_tau2__j + _pd__9*d_tau3__j
+            # T5.3: omega of the stance-mean momentum
+            d_i_omega__j = (_pd__10*d_T__j + _pd__11*d_i_c0__j + _pd__12*d_i_c1__j + _pd__13*d_i_c2__j
+                + _pd__14*d_p_td__j)
+            # chain rule through type5_solution
+            d_i_omega0_hat__j = (_j_i_omega0_hat__k*d_k__j + _j_i_omega0_hat__omega*d_i_omega__j
+                + _j_i_omega0_hat__r_c*d_r_c__j)
+            d_i_a__j = (_j_i_a__g_eff*d_g_eff__j + _j_i_a__k*d_k__j + _j_i_a__omega*d_i_omega__j
+                + _j_i_a__r_c*d_r_c__j)
+            d_i_b__j = (_j_i_b__g_eff*d_g_eff__j + _j_i_b__k*d_k__j + _j_i_b__omega*d_i_omega__j
+                + _j_i_b__q_r_td*d_q_r_td__j + _j_i_b__q_rd_td*d_q_rd_td__j + _j_i_b__r_c*d_r_c__j)
+            d_i_phase_td__j = (_j_i_phase_td__g_eff*d_g_eff__j + _j_i_phase_td__k*d_k__j
+                + _j_i_phase_td__omega*d_i_omega__j + _j_i_phase_td__q_r_td*d_q_r_td__j
+                + _j_i_phase_td__q_rd_td*d_q_rd_td__j + _j_i_phase_td__r_c*d_r_c__j)
+            # chain rule through geyer_liftoff_phase
+            d_i_phase_lo__j = _j_i_phase_lo__a*d_i_a__j + _j_i_phase_lo__b*d_i_b__j
+            # eqs (13)-(14) minus (12); T5.6: the rate factor
+            d_i_t_bottom__j = _pd__15*d_i_omega0_hat__j + _pd__16*d_i_phase_td__j
+            d_i_t_stance__j = _pd__17*d_i_omega0_hat__j + _pd__18*d_i_phase_lo__j + _pd__19*d_i_phase_td__j
+            d_i_k0__j = _pd__20*d_i_a__j + _pd__21*d_i_b__j + _pd__22*d_r_c__j
+            d_i_k1__j = _pd__23*d_i_a__j + _pd__24*d_i_b__j + _pd__25*d_r_c__j
+            d_i_k2__j = _pd__26*d_i_b__j + _pd__27*d_r_c__j
+            # chain rule through type5_leg_angle
+            d_i_th1__j = (_j_i_th1__c0*d_i_c0__j + _j_i_th1__c1*d_i_c1__j + _j_i_th1__c2*d_i_c2__j
+                + _j_i_th1__k0*d_i_k0__j + _j_i_th1__k1*d_i_k1__j + _j_i_th1__k2*d_i_k2__j
+                + _j_i_th1__omega0_hat*d_i_omega0_hat__j + _j_i_th1__p_td*d_p_td__j
+                + _j_i_th1__phase_td*d_i_phase_td__j + _j_i_th1__q_th_td*d_q_th_td__j
+                + _j_i_th1__t*d_i_t_stance__j*(0.5 - 0.1*math.sqrt(15.0)))
+            # chain rule through type5_leg_angle
+            d_i_th2__j = (_j_i_th2__c0*d_i_c0__j + _j_i_th2__c1*d_i_c1__j + _j_i_th2__c2*d_i_c2__j
+                + _j_i_th2__k0*d_i_k0__j + _j_i_th2__k1*d_i_k1__j + _j_i_th2__k2*d_i_k2__j
+                + _j_i_th2__omega0_hat*d_i_omega0_hat__j + _j_i_th2__p_td*d_p_td__j
+                + _j_i_th2__phase_td*d_i_phase_td__j + _j_i_th2__q_th_td*d_q_th_td__j
+                + (0.5)*_j_i_th2__t*d_i_t_stance__j)
+            # chain rule through type5_leg_angle
+            d_i_th3__j = (_j_i_th3__c0*d_i_c0__j + _j_i_th3__c1*d_i_c1__j + _j_i_th3__c2*d_i_c2__j
+                + _j_i_th3__k0*d_i_k0__j + _j_i_th3__k1*d_i_k1__j + _j_i_th3__k2*d_i_k2__j
+                + _j_i_th3__omega0_hat*d_i_omega0_hat__j + _j_i_th3__p_td*d_p_td__j
+                + _j_i_th3__phase_td*d_i_phase_td__j + _j_i_th3__q_th_td*d_q_th_td__j
+                + _j_i_th3__t*d_i_t_stance__j*((0.1)*math.sqrt(15.0) + 0.5))
+            # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
+            d_i_tau1__j = (_pd__28*d_i_a__j + _pd__29*d_i_b__j + _pd__30*d_i_omega0_hat__j
+                + _pd__31*d_i_phase_td__j + _pd__32*d_i_t_stance__j + _pd__33*d_i_th1__j)
+            d_i_tau2__j = (_pd__34*d_i_a__j + _pd__35*d_i_b__j + _pd__36*d_i_omega0_hat__j
+                + _pd__37*d_i_phase_td__j + _pd__38*d_i_t_stance__j + _pd__39*d_i_th2__j)
+            d_i_tau3__j = (_pd__40*d_i_a__j + _pd__41*d_i_b__j + _pd__42*d_i_omega0_hat__j
+                + _pd__43*d_i_phase_td__j + _pd__44*d_i_t_stance__j + _pd__45*d_i_th3__j)
+            d_i_g_eff__j = _pd__46*d_i_th1__j + _pd__47*d_i_th2__j + _pd__48*d_i_th3__j
+            d_i_r_c__j = _pd__49*d_i_b__j + _pd__50*d_i_phase_lo__j + _pd__51*d_i_phase_td__j + d_i_a__j
+            _T[12, _j1] = d_i_c0__j
+            _T[13, _j1] = d_i_c1__j
+            _T[14, _j1] = d_i_c2__j
+            _T[15, _j1] = d_i_omega0_hat__j
+            _T[16, _j1] = d_i_a__j
+            _T[17, _j1] = d_i_b__j
+            _T[18, _j1] = d_i_phase_td__j
+            _T[19, _j1] = d_i_t_bottom__j
+            _T[20, _j1] = d_i_t_stance__j
+            _T[21, _j1] = d_i_k0__j
+            _T[22, _j1] = d_i_k1__j
+            _T[23, _j1] = d_i_k2__j
+            _T[24, _j1] = d_i_tau1__j
+            _T[25, _j1] = d_i_tau2__j
+            _T[26, _j1] = d_i_tau3__j
+            _T[27, _j1] = d_i_g_eff__j
+            _T[28, _j1] = d_i_r_c__j
+        if _conv0 or _it0 == _last0:
+            break
+        # next values
+        tau1__next = i_tau1
+        tau2__next = i_tau2
+        tau3__next = i_tau3
+        T__next = i_t_stance
+        g_eff__next = i_g_eff
+        r_c__next = i_r_c
+        # the next state's tangents, once per direction
+        for _j2 in range(5):
+            d_i_t_stance__j = _T[20, _j2]
+            d_i_tau1__j = _T[24, _j2]
+            d_i_tau2__j = _T[25, _j2]
+            d_i_tau3__j = _T[26, _j2]
+            d_i_g_eff__j = _T[27, _j2]
+            d_i_r_c__j = _T[28, _j2]
+            _T[6, _j2] = d_i_tau1__j
+            _T[7, _j2] = d_i_tau2__j
+            _T[8, _j2] = d_i_tau3__j
+            _T[9, _j2] = d_i_t_stance__j
+            _T[10, _j2] = d_i_g_eff__j
+            _T[11, _j2] = d_i_r_c__j
+        _n0_0 = tau1__next
+        _n0_1 = tau2__next
+        _n0_2 = tau3__next
+        _n0_3 = T__next
+        _n0_4 = g_eff__next
+        _n0_5 = r_c__next
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2) <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T) <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c) <= tol*(1.0))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - tau1) <= tol*(g_s*l0*m)) and (abs(_n0_1 - tau2)
+            <= tol*(g_s*l0*m)) and (abs(_n0_2 - tau3) <= tol*(g_s*l0*m)) and (abs(_n0_3 - T)
+            <= tol*(math.sqrt(m)/math.sqrt(k))) and (abs(_n0_4 - g_eff) <= tol*(g_s)) and (abs(_n0_5 - r_c)
+            <= tol*(1.0)))
         tau1 = _n0_0
         tau2 = _n0_1
         tau3 = _n0_2
         T = _n0_3
         g_eff = _n0_4
         r_c = _n0_5
-        tau1__tan = _n0_6
-        tau2__tan = _n0_7
-        tau3__tan = _n0_8
-        T__tan = _n0_9
-        g_eff__tan = _n0_10
-        r_c__tan = _n0_11
         passes += 1.0
-        if _conv0:
-            break
-    if not _conv0 and tol > 0.0 and passes > 0.0:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NOT_CONVERGED)
-    # continuation
-    _c1 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_1(E_td, E_td__tan, T, T__tan, g_eff, g_eff__tan, g_s, k, k__tan, l0, m, p_td, p_td__tan, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, r_c, r_c__tan, tau1, tau1__tan, tau2, tau2__tan, tau3, tau3__tan)
-    if _c1[23] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[23])
-    t_bottom = _c1[0]
-    t_stance = _c1[1]
-    bottom_q_r = _c1[2]
-    bottom_q_rd = _c1[3]
-    bottom_q_th = _c1[4]
-    bottom_q_thd = _c1[5]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c = _c1[10]
-    t_bottom__tan = _c1[11]
-    t_stance__tan = _c1[12]
-    bottom_q_r__tan = _c1[13]
-    bottom_q_rd__tan = _c1[14]
-    bottom_q_th__tan = _c1[15]
-    bottom_q_thd__tan = _c1[16]
-    liftoff_q_r__tan = _c1[17]
-    liftoff_q_rd__tan = _c1[18]
-    liftoff_q_th__tan = _c1[19]
-    liftoff_q_thd__tan = _c1[20]
-    P_c__tan = _c1[21]
-    passes__tan = _c1[22]
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, P_c__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
-    """Gravity correction type 5 (time-varying momentum): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
-
-    Report equations: 46, 47, 48.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
-        passes: fixed-point passes run
-        d_t_bottom__q_r_td: d t_bottom / d q_r_td
-        d_t_bottom__q_rd_td: d t_bottom / d q_rd_td
-        d_t_bottom__q_th_td: d t_bottom / d q_th_td
-        d_t_bottom__q_thd_td: d t_bottom / d q_thd_td
-        d_t_bottom__k: d t_bottom / d k
-        d_t_stance__q_r_td: d t_stance / d q_r_td
-        d_t_stance__q_rd_td: d t_stance / d q_rd_td
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__q_thd_td: d t_stance / d q_thd_td
-        d_t_stance__k: d t_stance / d k
-        d_bottom_q_r__q_r_td: d bottom_q_r / d q_r_td
-        d_bottom_q_r__q_rd_td: d bottom_q_r / d q_rd_td
-        d_bottom_q_r__q_th_td: d bottom_q_r / d q_th_td
-        d_bottom_q_r__q_thd_td: d bottom_q_r / d q_thd_td
-        d_bottom_q_r__k: d bottom_q_r / d k
-        d_bottom_q_rd__q_r_td: d bottom_q_rd / d q_r_td
-        d_bottom_q_rd__q_rd_td: d bottom_q_rd / d q_rd_td
-        d_bottom_q_rd__q_th_td: d bottom_q_rd / d q_th_td
-        d_bottom_q_rd__q_thd_td: d bottom_q_rd / d q_thd_td
-        d_bottom_q_rd__k: d bottom_q_rd / d k
-        d_bottom_q_th__q_r_td: d bottom_q_th / d q_r_td
-        d_bottom_q_th__q_rd_td: d bottom_q_th / d q_rd_td
-        d_bottom_q_th__q_th_td: d bottom_q_th / d q_th_td
-        d_bottom_q_th__q_thd_td: d bottom_q_th / d q_thd_td
-        d_bottom_q_th__k: d bottom_q_th / d k
-        d_bottom_q_thd__q_r_td: d bottom_q_thd / d q_r_td
-        d_bottom_q_thd__q_rd_td: d bottom_q_thd / d q_rd_td
-        d_bottom_q_thd__q_th_td: d bottom_q_thd / d q_th_td
-        d_bottom_q_thd__q_thd_td: d bottom_q_thd / d q_thd_td
-        d_bottom_q_thd__k: d bottom_q_thd / d k
-        d_liftoff_q_r__q_r_td: d liftoff_q_r / d q_r_td
-        d_liftoff_q_r__q_rd_td: d liftoff_q_r / d q_rd_td
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__q_thd_td: d liftoff_q_r / d q_thd_td
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__q_r_td: d liftoff_q_rd / d q_r_td
-        d_liftoff_q_rd__q_rd_td: d liftoff_q_rd / d q_rd_td
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__q_thd_td: d liftoff_q_rd / d q_thd_td
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__q_r_td: d liftoff_q_th / d q_r_td
-        d_liftoff_q_th__q_rd_td: d liftoff_q_th / d q_rd_td
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__q_thd_td: d liftoff_q_th / d q_thd_td
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__q_r_td: d liftoff_q_thd / d q_r_td
-        d_liftoff_q_thd__q_rd_td: d liftoff_q_thd / d q_rd_td
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__q_thd_td: d liftoff_q_thd / d q_thd_td
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
-        d_P_c__q_r_td: d P_c / d q_r_td
-        d_P_c__q_rd_td: d P_c / d q_rd_td
-        d_P_c__q_th_td: d P_c / d q_th_td
-        d_P_c__q_thd_td: d P_c / d q_thd_td
-        d_P_c__k: d P_c / d k
-        d_passes__q_r_td: d passes / d q_r_td
-        d_passes__q_rd_td: d passes / d q_rd_td
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__q_thd_td: d passes / d q_thd_td
-        d_passes__k: d passes / d k
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to q_r_td
-    _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_t_bottom__q_r_td = _c0[12]
-    d_t_stance__q_r_td = _c0[13]
-    d_bottom_q_r__q_r_td = _c0[14]
-    d_bottom_q_rd__q_r_td = _c0[15]
-    d_bottom_q_th__q_r_td = _c0[16]
-    d_bottom_q_thd__q_r_td = _c0[17]
-    d_liftoff_q_r__q_r_td = _c0[18]
-    d_liftoff_q_rd__q_r_td = _c0[19]
-    d_liftoff_q_th__q_r_td = _c0[20]
-    d_liftoff_q_thd__q_r_td = _c0[21]
-    d_P_c__q_r_td = _c0[22]
-    d_passes__q_r_td = _c0[23]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    P_c = _c0[10]
-    passes = _c0[11]
-    # derivatives with respect to q_rd_td
-    _c1 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_t_bottom__q_rd_td = _c1[12]
-    d_t_stance__q_rd_td = _c1[13]
-    d_bottom_q_r__q_rd_td = _c1[14]
-    d_bottom_q_rd__q_rd_td = _c1[15]
-    d_bottom_q_th__q_rd_td = _c1[16]
-    d_bottom_q_thd__q_rd_td = _c1[17]
-    d_liftoff_q_r__q_rd_td = _c1[18]
-    d_liftoff_q_rd__q_rd_td = _c1[19]
-    d_liftoff_q_th__q_rd_td = _c1[20]
-    d_liftoff_q_thd__q_rd_td = _c1[21]
-    d_P_c__q_rd_td = _c1[22]
-    d_passes__q_rd_td = _c1[23]
-    # derivatives with respect to q_th_td
-    _c2 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_t_bottom__q_th_td = _c2[12]
-    d_t_stance__q_th_td = _c2[13]
-    d_bottom_q_r__q_th_td = _c2[14]
-    d_bottom_q_rd__q_th_td = _c2[15]
-    d_bottom_q_th__q_th_td = _c2[16]
-    d_bottom_q_thd__q_th_td = _c2[17]
-    d_liftoff_q_r__q_th_td = _c2[18]
-    d_liftoff_q_rd__q_th_td = _c2[19]
-    d_liftoff_q_th__q_th_td = _c2[20]
-    d_liftoff_q_thd__q_th_td = _c2[21]
-    d_P_c__q_th_td = _c2[22]
-    d_passes__q_th_td = _c2[23]
-    # derivatives with respect to q_thd_td
-    _c3 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_t_bottom__q_thd_td = _c3[12]
-    d_t_stance__q_thd_td = _c3[13]
-    d_bottom_q_r__q_thd_td = _c3[14]
-    d_bottom_q_rd__q_thd_td = _c3[15]
-    d_bottom_q_th__q_thd_td = _c3[16]
-    d_bottom_q_thd__q_thd_td = _c3[17]
-    d_liftoff_q_r__q_thd_td = _c3[18]
-    d_liftoff_q_rd__q_thd_td = _c3[19]
-    d_liftoff_q_th__q_thd_td = _c3[20]
-    d_liftoff_q_thd__q_thd_td = _c3[21]
-    d_P_c__q_thd_td = _c3[22]
-    d_passes__q_thd_td = _c3[23]
-    # derivatives with respect to k
-    _c4 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_t_bottom__k = _c4[12]
-    d_t_stance__k = _c4[13]
-    d_bottom_q_r__k = _c4[14]
-    d_bottom_q_rd__k = _c4[15]
-    d_bottom_q_th__k = _c4[16]
-    d_bottom_q_thd__k = _c4[17]
-    d_liftoff_q_r__k = _c4[18]
-    d_liftoff_q_rd__k = _c4[19]
-    d_liftoff_q_th__k = _c4[20]
-    d_liftoff_q_thd__k = _c4[21]
-    d_P_c__k = _c4[22]
-    d_passes__k = _c4[23]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_P_c__q_r_td) and math.isfinite(d_P_c__q_rd_td) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__q_thd_td) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__q_r_td) and math.isfinite(d_passes__q_rd_td) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__q_thd_td) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k, STATUS_OK)
+    _c5 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_bottom, q_th_td, p_td,
+        i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+    (bottom_q_th, _j_bottom_q_th__t, _j_bottom_q_th__q_th_td, _j_bottom_q_th__p_td, _j_bottom_q_th__c0,
+        _j_bottom_q_th__c1, _j_bottom_q_th__c2, _j_bottom_q_th__k0, _j_bottom_q_th__k1, _j_bottom_q_th__k2,
+        _j_bottom_q_th__omega0_hat, _j_bottom_q_th__phase_td) = _c5
+    _c6 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_stance, q_th_td, p_td,
+        i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
+    (liftoff_q_th, _j_liftoff_q_th__t, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__p_td, _j_liftoff_q_th__c0,
+        _j_liftoff_q_th__c1, _j_liftoff_q_th__c2, _j_liftoff_q_th__k0, _j_liftoff_q_th__k1,
+        _j_liftoff_q_th__k2, _j_liftoff_q_th__omega0_hat, _j_liftoff_q_th__phase_td) = _c6
+    # T5.7: bottom and liftoff states
+    t_bottom = i_t_bottom
+    t_stance = i_t_stance
+    _x90 = i_a - i_b + 1.0
+    bottom_q_r = _x90*l0
+    bottom_q_rd = 0.0
+    _x91 = i_t_bottom**2
+    _x92 = (0.5)*_x91
+    _x93 = (0.3333333333333333)*i_t_bottom**3
+    _x94 = _x92*i_c1 + _x93*i_c2 + i_c0*i_t_bottom + p_td
+    _x95 = (1.0/m)
+    _x96 = _x95/l0**2
+    _x105 = (1.0/_x90)
+    _x97 = _x105**2*_x96
+    bottom_q_thd = _x94*_x97
+    _x98 = 2.0*_x105**3*_x94*_x96
+    _pd__52 = -_x98
+    _pd__53 = _x98
+    _pd__54 = _x97*i_t_bottom
+    _pd__55 = _x92*_x97
+    _pd__56 = _x93*_x97
+    _pd__57 = _x97*(_x91*i_c2 + i_c0 + i_c1*i_t_bottom)
+    _pd__58 = _x97
+    liftoff_q_r = q_r_lo
+    _x99 = i_t_stance**2
+    _x100 = (0.5)*_x99
+    _x101 = (0.3333333333333333)*i_t_stance**3
+    _x102 = _x100*i_c1 + _x101*i_c2 + i_c0*i_t_stance
+    P_c = _x102
+    _pd__59 = _x100
+    _pd__60 = _x101
+    _x103 = _x99*i_c2 + i_c0 + i_c1*i_t_stance
+    _pd__61 = _x103
+    _x104 = _x95/q_r_lo**2
+    liftoff_q_thd = _x104*(_x102 + p_td)
+    _pd__62 = _x104*i_t_stance
+    _pd__63 = _x100*_x104
+    _pd__64 = _x101*_x104
+    _pd__65 = _x103*_x104
+    _pd__66 = _x104
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN72 + (STATUS_FALL,)
+    _x106 = (1.0/m)
+    _x107 = 2.0*g_s*q_r_lo
+    _x108 = _x106*l0**2
+    _x109 = q_r_lo**2
+    _x110 = _x106*_x109
+    _x111 = i_c0*i_t_stance
+    _x112 = i_t_stance**2
+    _x113 = _x112*i_c1
+    _x114 = i_t_stance**3
+    _x115 = _x114*i_c2
+    _x116 = _x111 + (0.5)*_x113 + (0.3333333333333333)*_x115 + p_td
+    _x117 = _x106**2/_x109
+    _q_rd_lo_sq = (2.0*E_td*_x106 + 2.0*_x106*k*l0*q_r_lo - _x107*math.cos(liftoff_q_th) - _x108*k - _x110*k
+        - _x116**2*_x117)
+    _pd__67 = 2.0*_x106
+    _x118 = 2.0*i_t_stance
+    _x119 = _x116*_x117
+    _pd__68 = -_x118*_x119
+    _pd__69 = -_x112*_x119
+    _pd__70 = -0.6666666666666666*_x114*_x119
+    _pd__71 = -_x119*(2.0*_x112*i_c2 + _x118*i_c1 + 2.0*i_c0)
+    _pd__72 = 2.0*_x106*l0*q_r_lo - _x108 - _x110
+    _pd__73 = _x107*math.sin(liftoff_q_th)
+    _pd__74 = -_x117*(2.0*_x111 + _x113 + (0.6666666666666666)*_x115 + 2.0*p_td)
+    # q_rd_lo^2 from the energy (27)
+    if not ((_q_rd_lo_sq >= 0.0)):
+        return _NAN72 + (STATUS_ENERGY_DEFICIT,)
+    # q_rd_lo from the energy
+    _x120 = math.sqrt(_q_rd_lo_sq)
+    liftoff_q_rd = _x120
+    _pd__75 = (0.5)/_x120
+    # their tangents, once per direction
+    for _j3 in range(5):
+        d_E_td__j = _T[0, _j3]
+        d_k__j = _T[1, _j3]
+        d_p_td__j = _T[2, _j3]
+        d_q_th_td__j = _T[5, _j3]
+        d_i_c0__j = _T[12, _j3]
+        d_i_c1__j = _T[13, _j3]
+        d_i_c2__j = _T[14, _j3]
+        d_i_omega0_hat__j = _T[15, _j3]
+        d_i_a__j = _T[16, _j3]
+        d_i_b__j = _T[17, _j3]
+        d_i_phase_td__j = _T[18, _j3]
+        d_i_t_bottom__j = _T[19, _j3]
+        d_i_t_stance__j = _T[20, _j3]
+        d_i_k0__j = _T[21, _j3]
+        d_i_k1__j = _T[22, _j3]
+        d_i_k2__j = _T[23, _j3]
+        # chain rule through type5_leg_angle
+        d_bottom_q_th__j = (_j_bottom_q_th__c0*d_i_c0__j + _j_bottom_q_th__c1*d_i_c1__j
+            + _j_bottom_q_th__c2*d_i_c2__j + _j_bottom_q_th__k0*d_i_k0__j + _j_bottom_q_th__k1*d_i_k1__j
+            + _j_bottom_q_th__k2*d_i_k2__j + _j_bottom_q_th__omega0_hat*d_i_omega0_hat__j
+            + _j_bottom_q_th__p_td*d_p_td__j + _j_bottom_q_th__phase_td*d_i_phase_td__j
+            + _j_bottom_q_th__q_th_td*d_q_th_td__j + _j_bottom_q_th__t*d_i_t_bottom__j)
+        # chain rule through type5_leg_angle
+        d_liftoff_q_th__j = (_j_liftoff_q_th__c0*d_i_c0__j + _j_liftoff_q_th__c1*d_i_c1__j
+            + _j_liftoff_q_th__c2*d_i_c2__j + _j_liftoff_q_th__k0*d_i_k0__j + _j_liftoff_q_th__k1*d_i_k1__j
+            + _j_liftoff_q_th__k2*d_i_k2__j + _j_liftoff_q_th__omega0_hat*d_i_omega0_hat__j
+            + _j_liftoff_q_th__p_td*d_p_td__j + _j_liftoff_q_th__phase_td*d_i_phase_td__j
+            + _j_liftoff_q_th__q_th_td*d_q_th_td__j + _j_liftoff_q_th__t*d_i_t_stance__j)
+        # T5.7: bottom and liftoff states
+        d_bottom_q_r__j = d_i_a__j*l0 - d_i_b__j*l0
+        d_bottom_q_thd__j = (_pd__52*d_i_a__j + _pd__53*d_i_b__j + _pd__54*d_i_c0__j + _pd__55*d_i_c1__j
+            + _pd__56*d_i_c2__j + _pd__57*d_i_t_bottom__j + _pd__58*d_p_td__j)
+        d_P_c__j = _pd__59*d_i_c1__j + _pd__60*d_i_c2__j + _pd__61*d_i_t_stance__j + d_i_c0__j*i_t_stance
+        d_liftoff_q_thd__j = (_pd__62*d_i_c0__j + _pd__63*d_i_c1__j + _pd__64*d_i_c2__j
+            + _pd__65*d_i_t_stance__j + _pd__66*d_p_td__j)
+        _d_q_rd_lo_sq__j = (_pd__67*d_E_td__j + _pd__68*d_i_c0__j + _pd__69*d_i_c1__j + _pd__70*d_i_c2__j
+            + _pd__71*d_i_t_stance__j + _pd__72*d_k__j + _pd__73*d_liftoff_q_th__j + _pd__74*d_p_td__j)
+        # q_rd_lo from the energy
+        d_liftoff_q_rd__j = _d_q_rd_lo_sq__j*_pd__75
+        _T[29, _j3] = d_bottom_q_th__j
+        _T[30, _j3] = d_liftoff_q_th__j
+        _T[31, _j3] = d_i_t_bottom__j
+        _T[32, _j3] = d_i_t_stance__j
+        _T[33, _j3] = d_bottom_q_r__j
+        _T[34, _j3] = d_bottom_q_thd__j
+        _T[35, _j3] = d_P_c__j
+        _T[36, _j3] = d_liftoff_q_thd__j
+        _T[37, _j3] = d_liftoff_q_rd__j
+    (d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, ) = (_T[29, 0], _T[29, 1], _T[29, 2], _T[29, 3], _T[29, 4], )
+    (d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, ) = (_T[30, 0], _T[30, 1], _T[30, 2], _T[30, 3], _T[30, 4], )
+    (d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k,
+        ) = (_T[31, 0], _T[31, 1], _T[31, 2], _T[31, 3], _T[31, 4], )
+    (d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k,
+        ) = (_T[32, 0], _T[32, 1], _T[32, 2], _T[32, 3], _T[32, 4], )
+    (d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+        d_bottom_q_r__k, ) = (_T[33, 0], _T[33, 1], _T[33, 2], _T[33, 3], _T[33, 4], )
+    (d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td,
+        d_bottom_q_thd__k, ) = (_T[34, 0], _T[34, 1], _T[34, 2], _T[34, 3], _T[34, 4], )
+    (d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = (_T[35, 0], _T[35, 1],
+        _T[35, 2], _T[35, 3], _T[35, 4], )
+    (d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td,
+        d_liftoff_q_thd__k, ) = (_T[36, 0], _T[36, 1], _T[36, 2], _T[36, 3], _T[36, 4], )
+    (d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+        d_liftoff_q_rd__k, ) = (_T[37, 0], _T[37, 1], _T[37, 2], _T[37, 3], _T[37, 4], )
+    # derivatives of the outputs
+    d_bottom_q_rd__q_r_td = 0.0
+    d_bottom_q_rd__q_rd_td = 0.0
+    d_bottom_q_rd__q_th_td = 0.0
+    d_bottom_q_rd__q_thd_td = 0.0
+    d_bottom_q_rd__k = 0.0
+    d_liftoff_q_r__q_r_td = 0.0
+    d_liftoff_q_r__q_rd_td = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__q_thd_td = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_passes__q_r_td = 0.0
+    d_passes__q_rd_td = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__q_thd_td = 0.0
+    d_passes__k = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
+        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
+        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
+        d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol, out, status):
+def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations,
+        tol, out, status):
     """Parallel batch form of :func:`gravity_type5_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
+    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
+    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
+    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
+    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
+    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
+    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
+    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
+    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
+    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
+    d_passes__q_thd_td, d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo, iterations, tol)
+        res = (gravity_type5_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
+            q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1248,19 +1067,23 @@ def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan):
-    """Apex-return map: exact flights, stance by Gravity correction type 5 (time-varying momentum), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k__tan).
+def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
+        q_r_lo, iterations, tol):
+    """Apex-return map by Gravity correction type 5 (time-varying momentum), and its derivatives with respect
+    to the apex, the touchdown angle and the stiffness.
 
     Report equations: 46, 47, 48.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
@@ -1269,12 +1092,8 @@ def gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, 
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
-        k__tan: direction: its component along k
+        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
+            1]
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1291,319 +1110,229 @@ def gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, 
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
         passes: fixed-point passes run
-        apex_height__tan: derivative of apex_height along the direction
-        apex_speed__tan: derivative of apex_speed along the direction
-        t_descent__tan: derivative of t_descent along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        t_ascent__tan: derivative of t_ascent along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        step_length__tan: derivative of step_length along the direction
-        foot_x__tan: derivative of foot_x along the direction
-        foot_y__tan: derivative of foot_y along the direction
-        P_c__tan: derivative of P_c along the direction
-        passes__tan: derivative of passes along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 5
+    # Total ops: 178
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
+            and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    td_q_r__tan = _c0[6]
-    td_q_rd__tan = _c0[7]
-    td_q_th__tan = _c0[8]
-    td_q_thd__tan = _c0[9]
-    t_descent__tan = _c0[10]
-    foot_x__tan = _c0[11]
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
+    if _c0[30] != STATUS_OK:
+        return _NAN84 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
     # stance: Gravity correction type 5 (time-varying momentum)
-    _c1 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, iterations, tol, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k__tan)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c = _c1[10]
-    passes = _c1[11]
-    t_stance__tan = _c1[13]
-    liftoff_q_r__tan = _c1[18]
-    liftoff_q_rd__tan = _c1[19]
-    liftoff_q_th__tan = _c1[20]
-    liftoff_q_thd__tan = _c1[21]
-    P_c__tan = _c1[22]
-    passes__tan = _c1[23]
+    _c1 = (gravity_type5_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo,
+        iterations, tol))
+    if _c1[72] != STATUS_OK:
+        return _NAN84 + (_c1[72],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
+        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
+        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
+        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
+        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    # chain rule through gravity_type5_stance
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
+    d_P_c__b_y_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_y_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_y_apex
+    d_P_c__b_xd_apex = _j_P_c__q_rd_td*_j_td_q_rd__b_xd_apex + _j_P_c__q_thd_td*_j_td_q_thd__b_xd_apex
+    d_P_c__q_th_td = (_j_P_c__q_rd_td*_j_td_q_rd__q_th_td + _j_P_c__q_th_td*_j_td_q_th__q_th_td
+        + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
+    d_P_c__ground = _j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_thd_td*_j_td_q_thd__ground
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    apex_height__tan = _c2[5]
-    apex_speed__tan = _c2[6]
-    t_ascent__tan = _c2[7]
-    next_apex_x__tan = _c2[9]
+    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+        direction))
+    if _c2[20] != STATUS_OK:
+        return _NAN84 + (_c2[20],)
+    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
+        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
+        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+    # chain rule through liftoff_to_apex
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__k = (_j_apex_height__q_rd*_j_liftoff_q_rd__k + _j_apex_height__q_th*_j_liftoff_q_th__k
+        + _j_apex_height__q_thd*_j_liftoff_q_thd__k)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__k = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k + _j_apex_speed__q_th*_j_liftoff_q_th__k
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__k = (_j_liftoff_q_rd__k*_j_t_ascent__q_rd + _j_liftoff_q_th__k*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k*_j_t_ascent__q_thd)
+    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
+    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
+        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__k = (_j_liftoff_q_rd__k*_j_next_apex_x__q_rd + _j_liftoff_q_th__k*_j_next_apex_x__q_th
+        + _j_liftoff_q_thd__k*_j_next_apex_x__q_thd)
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
-    step_length__tan = foot_x__tan + next_apex_x__tan
+    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
+    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
+    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
+    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     foot_y = -b_y_apex + ground
-    foot_y__tan = -b_y_apex__tan + ground__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, P_c__tan, passes__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol):
-    """Apex-return map by Gravity correction type 5 (time-varying momentum), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
-
-    Report equations: 46, 47, 48.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: fixed-point passes T5.8 from Geyer's map in [0, 1000]
-        tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0, 1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        P_c: stance impulse of the gravity torque P(t_lo) - p_td [N m s]
-        passes: fixed-point passes run
-        d_apex_height__b_y_apex: d apex_height / d b_y_apex
-        d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
-        d_apex_height__q_th_td: d apex_height / d q_th_td
-        d_apex_height__ground: d apex_height / d ground
-        d_apex_height__k: d apex_height / d k
-        d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
-        d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
-        d_apex_speed__q_th_td: d apex_speed / d q_th_td
-        d_apex_speed__ground: d apex_speed / d ground
-        d_apex_speed__k: d apex_speed / d k
-        d_t_descent__b_y_apex: d t_descent / d b_y_apex
-        d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
-        d_t_descent__q_th_td: d t_descent / d q_th_td
-        d_t_descent__ground: d t_descent / d ground
-        d_t_descent__k: d t_descent / d k
-        d_t_stance__b_y_apex: d t_stance / d b_y_apex
-        d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__ground: d t_stance / d ground
-        d_t_stance__k: d t_stance / d k
-        d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
-        d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
-        d_t_ascent__q_th_td: d t_ascent / d q_th_td
-        d_t_ascent__ground: d t_ascent / d ground
-        d_t_ascent__k: d t_ascent / d k
-        d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
-        d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__ground: d liftoff_q_r / d ground
-        d_liftoff_q_r__k: d liftoff_q_r / d k
-        d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
-        d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
-        d_liftoff_q_rd__k: d liftoff_q_rd / d k
-        d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
-        d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__ground: d liftoff_q_th / d ground
-        d_liftoff_q_th__k: d liftoff_q_th / d k
-        d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
-        d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
-        d_liftoff_q_thd__k: d liftoff_q_thd / d k
-        d_step_length__b_y_apex: d step_length / d b_y_apex
-        d_step_length__b_xd_apex: d step_length / d b_xd_apex
-        d_step_length__q_th_td: d step_length / d q_th_td
-        d_step_length__ground: d step_length / d ground
-        d_step_length__k: d step_length / d k
-        d_foot_x__b_y_apex: d foot_x / d b_y_apex
-        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
-        d_foot_x__q_th_td: d foot_x / d q_th_td
-        d_foot_x__ground: d foot_x / d ground
-        d_foot_x__k: d foot_x / d k
-        d_foot_y__b_y_apex: d foot_y / d b_y_apex
-        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
-        d_foot_y__q_th_td: d foot_y / d q_th_td
-        d_foot_y__ground: d foot_y / d ground
-        d_foot_y__k: d foot_y / d k
-        d_P_c__b_y_apex: d P_c / d b_y_apex
-        d_P_c__b_xd_apex: d P_c / d b_xd_apex
-        d_P_c__q_th_td: d P_c / d q_th_td
-        d_P_c__ground: d P_c / d ground
-        d_P_c__k: d P_c / d k
-        d_passes__b_y_apex: d passes / d b_y_apex
-        d_passes__b_xd_apex: d passes / d b_xd_apex
-        d_passes__q_th_td: d passes / d q_th_td
-        d_passes__ground: d passes / d ground
-        d_passes__k: d passes / d k
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to b_y_apex
-    _c0 = gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[28])
-    d_apex_height__b_y_apex = _c0[14]
-    d_apex_speed__b_y_apex = _c0[15]
-    d_t_descent__b_y_apex = _c0[16]
-    d_t_stance__b_y_apex = _c0[17]
-    d_t_ascent__b_y_apex = _c0[18]
-    d_liftoff_q_r__b_y_apex = _c0[19]
-    d_liftoff_q_rd__b_y_apex = _c0[20]
-    d_liftoff_q_th__b_y_apex = _c0[21]
-    d_liftoff_q_thd__b_y_apex = _c0[22]
-    d_step_length__b_y_apex = _c0[23]
-    d_foot_x__b_y_apex = _c0[24]
-    d_foot_y__b_y_apex = _c0[25]
-    d_P_c__b_y_apex = _c0[26]
-    d_passes__b_y_apex = _c0[27]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    step_length = _c0[9]
-    foot_x = _c0[10]
-    foot_y = _c0[11]
-    P_c = _c0[12]
-    passes = _c0[13]
-    # derivatives with respect to b_xd_apex
-    _c1 = gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c1[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[28])
-    d_apex_height__b_xd_apex = _c1[14]
-    d_apex_speed__b_xd_apex = _c1[15]
-    d_t_descent__b_xd_apex = _c1[16]
-    d_t_stance__b_xd_apex = _c1[17]
-    d_t_ascent__b_xd_apex = _c1[18]
-    d_liftoff_q_r__b_xd_apex = _c1[19]
-    d_liftoff_q_rd__b_xd_apex = _c1[20]
-    d_liftoff_q_th__b_xd_apex = _c1[21]
-    d_liftoff_q_thd__b_xd_apex = _c1[22]
-    d_step_length__b_xd_apex = _c1[23]
-    d_foot_x__b_xd_apex = _c1[24]
-    d_foot_y__b_xd_apex = _c1[25]
-    d_P_c__b_xd_apex = _c1[26]
-    d_passes__b_xd_apex = _c1[27]
-    # derivatives with respect to q_th_td
-    _c2 = gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c2[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[28])
-    d_apex_height__q_th_td = _c2[14]
-    d_apex_speed__q_th_td = _c2[15]
-    d_t_descent__q_th_td = _c2[16]
-    d_t_stance__q_th_td = _c2[17]
-    d_t_ascent__q_th_td = _c2[18]
-    d_liftoff_q_r__q_th_td = _c2[19]
-    d_liftoff_q_rd__q_th_td = _c2[20]
-    d_liftoff_q_th__q_th_td = _c2[21]
-    d_liftoff_q_thd__q_th_td = _c2[22]
-    d_step_length__q_th_td = _c2[23]
-    d_foot_x__q_th_td = _c2[24]
-    d_foot_y__q_th_td = _c2[25]
-    d_P_c__q_th_td = _c2[26]
-    d_passes__q_th_td = _c2[27]
-    # derivatives with respect to ground
-    _c3 = gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c3[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[28])
-    d_apex_height__ground = _c3[14]
-    d_apex_speed__ground = _c3[15]
-    d_t_descent__ground = _c3[16]
-    d_t_stance__ground = _c3[17]
-    d_t_ascent__ground = _c3[18]
-    d_liftoff_q_r__ground = _c3[19]
-    d_liftoff_q_rd__ground = _c3[20]
-    d_liftoff_q_th__ground = _c3[21]
-    d_liftoff_q_thd__ground = _c3[22]
-    d_step_length__ground = _c3[23]
-    d_foot_x__ground = _c3[24]
-    d_foot_y__ground = _c3[25]
-    d_P_c__ground = _c3[26]
-    d_passes__ground = _c3[27]
-    # derivatives with respect to k
-    _c4 = gravity_type5_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c4[28] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[28])
-    d_apex_height__k = _c4[14]
-    d_apex_speed__k = _c4[15]
-    d_t_descent__k = _c4[16]
-    d_t_stance__k = _c4[17]
-    d_t_ascent__k = _c4[18]
-    d_liftoff_q_r__k = _c4[19]
-    d_liftoff_q_rd__k = _c4[20]
-    d_liftoff_q_th__k = _c4[21]
-    d_liftoff_q_thd__k = _c4[22]
-    d_step_length__k = _c4[23]
-    d_foot_x__k = _c4[24]
-    d_foot_y__k = _c4[25]
-    d_P_c__k = _c4[26]
-    d_passes__k = _c4[27]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(P_c) and math.isfinite(passes) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k) and math.isfinite(d_P_c__b_y_apex) and math.isfinite(d_P_c__b_xd_apex) and math.isfinite(d_P_c__q_th_td) and math.isfinite(d_P_c__ground) and math.isfinite(d_P_c__k) and math.isfinite(d_passes__b_y_apex) and math.isfinite(d_passes__b_xd_apex) and math.isfinite(d_passes__q_th_td) and math.isfinite(d_passes__ground) and math.isfinite(d_passes__k)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
+    # derivatives of the outputs
+    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
+    d_t_descent__b_xd_apex = 0.0
+    d_t_descent__q_th_td = _j_t_descent__q_th_td
+    d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__k = 0.0
+    d_t_stance__k = _j_t_stance__k
+    d_liftoff_q_r__b_y_apex = 0.0
+    d_liftoff_q_r__b_xd_apex = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__ground = 0.0
+    d_liftoff_q_r__k = 0.0
+    d_liftoff_q_rd__k = _j_liftoff_q_rd__k
+    d_liftoff_q_th__k = _j_liftoff_q_th__k
+    d_liftoff_q_thd__k = _j_liftoff_q_thd__k
+    d_step_length__k = d_next_apex_x__k
+    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
+    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
+    d_foot_x__q_th_td = _j_foot_x__q_th_td
+    d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__k = 0.0
+    d_foot_y__b_y_apex = -1.0
+    d_foot_y__b_xd_apex = 0.0
+    d_foot_y__q_th_td = 0.0
+    d_foot_y__ground = 1.0
+    d_foot_y__k = 0.0
+    d_P_c__k = _j_P_c__k
+    d_passes__b_y_apex = 0.0
+    d_passes__b_xd_apex = 0.0
+    d_passes__q_th_td = 0.0
+    d_passes__ground = 0.0
+    d_passes__k = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(P_c) and math.isfinite(passes)):
+        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
+        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
+        d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
+        d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+        d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
+        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+        d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
+        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
+        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
+        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
+        d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
+def gravity_type5_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
+        q_r_lo, iterations, tol, out, status):
     """Parallel batch form of :func:`gravity_type5_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground, d_passes__k.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes,
+    d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
+    d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+    d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
+    d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+    d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
+    d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
+    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
+    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+    d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+    d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
+    d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
+    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex,
+    d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
+    d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground,
+    d_passes__k.
     """
     for i in prange(out.shape[0]):
-        res = gravity_type5_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol)
+        res = (gravity_type5_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
+            g_s, g_f, q_r_td, q_r_lo, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

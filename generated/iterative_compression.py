@@ -4,18 +4,20 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:26ff4a0183dca42d
-#   geyer_vs.py sha256:0592a5a2e1c70987
-#   gravity_type0.py sha256:04bbbc0de76e2706
-#   gravity_type1.py sha256:37299c1835198fd6
-#   gravity_type2.py sha256:ba6e5874bb098cda
-#   gravity_type3.py sha256:a1deffa577d0b912
-#   gravity_type4.py sha256:ea56cd04d2860d7d
-#   gravity_type5.py sha256:e95d34e96defb7c2
-#   iterative.py sha256:e860cb54cbb30f5a
+#   geyer.py sha256:b5f57629dafd4ce6
+#   geyer_vs.py sha256:a6ee89e186ef4bfc
+#   gravity_type0.py sha256:4ed141dc3f790aa7
+#   gravity_type1.py sha256:80cd2ce579117fc4
+#   gravity_type2.py sha256:58993d926f39c1da
+#   gravity_type3.py sha256:c3762bab48ece072
+#   gravity_type4.py sha256:dfdb6ca60108eea5
+#   gravity_type5.py sha256:802b0ef9c9c3aa72
+#   iterative.py sha256:b83092ee58fe80fb
 # ----------------------------------------------------------------------------------------------
-"""Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
+"""Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
+bottom."""
 
 import math
 
@@ -31,28 +33,19 @@ from .gravity_type4 import gravity_type4_stance
 from .gravity_type5 import gravity_type5_stance
 from .iterative import schwind_compression
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth):
-    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom state.
+def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
+        zeroth):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
@@ -65,10 +58,15 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -81,8 +79,17 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s
+            > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes
+            == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+            <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth
+            == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth
+            == 7.0) or (zeroth == 8.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -90,7 +97,8 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         _x1 = g_s*m*math.cos(q_th_td)
         _x2 = q_thd_td**2
         _x3 = m*q_rd_td**2
-        _x4 = -_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td + k_c*l0)**2)) + q_r_td
+        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+            + k_c*l0)**2)) + q_r_td)
         z_b_q_r = _x4
         z_b_q_th = q_th_td
         z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
@@ -100,7 +108,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN6 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -108,9 +116,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c0[9]
     elif zeroth == 2.0:
         # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0, 0.0)
+        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            1.0, 0.0))
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN6 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -118,9 +127,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c1[9]
     elif zeroth == 3.0:
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0, 1e-12)
+        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            100.0, 1e-12))
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN6 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -128,9 +138,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c2[9]
     elif zeroth == 4.0:
         # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
+            0.0, 100.0, 1e-12))
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN6 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -138,9 +149,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c3[9]
     elif zeroth == 5.0:
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0, 1e-12)
+        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
+            100.0, 1e-12))
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN6 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -148,9 +160,10 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c4[9]
     elif zeroth == 6.0:
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
+            0.0, 100.0, 1e-12))
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN6 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -160,7 +173,7 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN6 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -168,20 +181,22 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         z_lo_q_thd = _c6[9]
     elif zeroth == 8.0:
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0, 1e-12)
+        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0,
+            100.0, 1e-12))
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN6 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # compression half, k_c (report 5.2.1)
-    _c8 = schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, nodes, iterations, tol)
+    _c8 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
     if _c8[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c8[6])
+        return _NAN6 + (_c8[6],)
     t_half = _c8[0]
     end_q_r = _c8[1]
     end_q_rd = _c8[2]
@@ -189,13 +204,15 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     end_q_thd = _c8[4]
     passes = _c8[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol, zeroth, out, status):
+def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
+        zeroth, out, status):
     """Parallel batch form of :func:`iterative_compression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
@@ -204,7 +221,8 @@ def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, 
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
     """
     for i in prange(out.shape[0]):
-        res = iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes, iterations, tol, zeroth)
+        res = (iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes,
+            iterations, tol, zeroth))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

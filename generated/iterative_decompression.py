@@ -4,10 +4,12 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:e860cb54cbb30f5a
+#   iterative.py sha256:b83092ee58fe80fb
 # ----------------------------------------------------------------------------------------------
-"""Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom -> liftoff."""
+"""Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
+liftoff."""
 
 import math
 
@@ -15,23 +17,12 @@ import numpy as np
 from numba import njit, prange
 from .iterative import schwind_decompression
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
@@ -50,9 +41,11 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
         k_d: leg stiffness after the bottom k_d [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0, 1]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -65,12 +58,20 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b) and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0)
+            or (nodes == 3.0) or (nodes == 4.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
-    _c0 = schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b, q_r_b**2*q_thd_b/q_r_lo**2, nodes, iterations, tol)
+    _c0 = (schwind_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
+        q_r_b**2*q_thd_b/q_r_lo**2, nodes, iterations, tol))
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN6 + (_c0[6],)
     t_half = _c0[0]
     end_q_r = _c0[1]
     end_q_rd = _c0[2]
@@ -78,13 +79,15 @@ def iterative_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r
     end_q_thd = _c0[4]
     passes = _c0[5]
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol, out, status):
+def iterative_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, nodes, iterations,
+        tol, out, status):
     """Parallel batch form of :func:`iterative_decompression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
@@ -93,7 +96,8 @@ def iterative_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
     """
     for i in prange(out.shape[0]):
-        res = iterative_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s, q_r_lo, nodes, iterations, tol)
+        res = (iterative_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s, q_r_lo,
+            nodes, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

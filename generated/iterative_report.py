@@ -4,18 +4,20 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:4d6fab274bba303b
-#   geyer.py sha256:26ff4a0183dca42d
-#   geyer_vs.py sha256:0592a5a2e1c70987
-#   gravity_type0.py sha256:04bbbc0de76e2706
-#   gravity_type1.py sha256:37299c1835198fd6
-#   gravity_type2.py sha256:ba6e5874bb098cda
-#   gravity_type3.py sha256:a1deffa577d0b912
-#   gravity_type4.py sha256:ea56cd04d2860d7d
-#   gravity_type5.py sha256:e95d34e96defb7c2
+#   flight.py sha256:8b20bd5230ccfe19
+#   geyer.py sha256:b5f57629dafd4ce6
+#   geyer_vs.py sha256:a6ee89e186ef4bfc
+#   gravity_type0.py sha256:4ed141dc3f790aa7
+#   gravity_type1.py sha256:80cd2ce579117fc4
+#   gravity_type2.py sha256:58993d926f39c1da
+#   gravity_type3.py sha256:c3762bab48ece072
+#   gravity_type4.py sha256:dfdb6ca60108eea5
+#   gravity_type5.py sha256:802b0ef9c9c3aa72
 # ----------------------------------------------------------------------------------------------
-"""Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and apex-return kernels."""
+"""Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
+apex-return kernels."""
 
 import math
 
@@ -31,30 +33,25 @@ from .gravity_type3 import gravity_type3_stance
 from .gravity_type4 import gravity_type4_stance
 from .gravity_type5 import gravity_type5_stance
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF,
+    STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN10 = (NAN,) * 10
+_NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length):
-    """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff states.
+def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+        iterations, zeroth, bottom_length):
+    """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
+    states.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
     liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
@@ -73,8 +70,12 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -91,11 +92,21 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     """
     # Total ops: 310
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length)
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN10 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
         # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
@@ -103,7 +114,8 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         _x1 = g_s*m*math.cos(q_th_td)
         _x2 = q_thd_td**2
         _x3 = m*q_rd_td**2
-        _x4 = -_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td + k_c*l0)**2)) + q_r_td
+        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+            + k_c*l0)**2)) + q_r_td)
         z_b_q_r = _x4
         z_b_q_th = q_th_td
         z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
@@ -113,7 +125,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Geyer et al.'s approximate stance map
         _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
         if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
+            return _NAN10 + (_c0[10],)
         z_b_q_r = _c0[2]
         z_b_q_th = _c0[4]
         z_b_q_thd = _c0[5]
@@ -121,9 +133,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c0[9]
     elif zeroth == 2.0:
         # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0)
+        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
+            1.0, 0.0))
         if _c1[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[12])
+            return _NAN10 + (_c1[12],)
         z_b_q_r = _c1[2]
         z_b_q_th = _c1[4]
         z_b_q_thd = _c1[5]
@@ -131,9 +144,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c1[9]
     elif zeroth == 3.0:
         # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12)
+        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
+            100.0, 1e-12))
         if _c2[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[12])
+            return _NAN10 + (_c2[12],)
         z_b_q_r = _c2[2]
         z_b_q_th = _c2[4]
         z_b_q_thd = _c2[5]
@@ -141,9 +155,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c2[9]
     elif zeroth == 4.0:
         # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12)
+        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
+            0.0, 100.0, 1e-12))
         if _c3[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[12])
+            return _NAN10 + (_c3[12],)
         z_b_q_r = _c3[2]
         z_b_q_th = _c3[4]
         z_b_q_thd = _c3[5]
@@ -151,9 +166,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c3[9]
     elif zeroth == 5.0:
         # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12)
+        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0,
+            100.0, 1e-12))
         if _c4[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[12])
+            return _NAN10 + (_c4[12],)
         z_b_q_r = _c4[2]
         z_b_q_th = _c4[4]
         z_b_q_thd = _c4[5]
@@ -161,9 +177,10 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c4[9]
     elif zeroth == 6.0:
         # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12)
+        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0,
+            0.0, 100.0, 1e-12))
         if _c5[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[12])
+            return _NAN10 + (_c5[12],)
         z_b_q_r = _c5[2]
         z_b_q_th = _c5[4]
         z_b_q_thd = _c5[5]
@@ -173,7 +190,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # zeroth iterate: Gravity correction type 5 (time-varying momentum)
         _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
         if _c6[12] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[12])
+            return _NAN10 + (_c6[12],)
         z_b_q_r = _c6[2]
         z_b_q_th = _c6[4]
         z_b_q_thd = _c6[5]
@@ -181,21 +198,23 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         z_lo_q_thd = _c6[9]
     elif zeroth == 8.0:
         # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12)
+        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0,
+            100.0, 1e-12))
         if _c7[13] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[13])
+            return _NAN10 + (_c7[13],)
         z_b_q_r = _c7[2]
         z_b_q_th = _c7[4]
         z_b_q_thd = _c7[5]
         z_lo_q_th = _c7[8]
         z_lo_q_thd = _c7[9]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
     _x7 = (0.5)*m
-    E_ab = _x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td) - k_c*l0*q_r_td
+    E_ab = (_x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
     # bottom leg length
     if bottom_length == 0.0:
         bottom_q_r = z_b_q_r
@@ -203,16 +222,16 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         # (153): the vertical bottom's quartic
         _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
         if _c8[1] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[1])
+            return _NAN10 + (_c8[1],)
         bottom_q_r = _c8[0]
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN10 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # bottom below touchdown
     if not ((-bottom_q_r + q_r_td > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x8 = 4.0**(-iterations)
     _x9 = _x8*(bottom_q_r - q_r_td)
@@ -225,7 +244,8 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     _x16 = math.sqrt(1.0 - 0.25*_x8)
     _x17 = -_x15 + m*q_r_td**2*q_thd_td
     _x18 = q_th_td - z_b_q_th
-    _x19 = (2.0*E_ab*_x12*m - _x11**4*_x13 - _x12*_x13*l0**2 - 2.0*_x14*g_s*m**2*math.cos(_x16*_x18 + z_b_q_th) + 2.0*_x14*k_c*l0*m - (_x15 + _x16*_x17)**2)/_x12
+    _x19 = ((2.0*E_ab*_x12*m - _x11**4*_x13 - _x12*_x13*l0**2 - 2.0*_x14*g_s*m**2*math.cos(_x16*_x18
+        + z_b_q_th) + 2.0*_x14*k_c*l0*m - (_x15 + _x16*_x17)**2)/_x12)
     _x20 = math.sqrt(1.0 - _x8)
     c_e_n = _x9
     c_e_z = _x10
@@ -235,7 +255,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     c_T0 = ((-_x9*m/math.sqrt(_x19)) if (_x19 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     c_e = c_e_n
     c_Q = c_Q0
@@ -249,10 +269,11 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         _x23 = k_c*m
         _x24 = _x21**3
         c_x = _x21
-        c_rad = (2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q) + 2.0*_x24*k_c*l0*m - c_P**2)/_x22
+        c_rad = ((2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x24*k_c*l0*m - c_P**2)/_x22)
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((c_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
         c_h = math.sqrt(c_rad)
         c_e_next = 4.0*c_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -263,14 +284,16 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
             c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
             c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN10 + (STATUS_INVALID_INPUT,)
         _n0_0 = c_e_next
         _n0_1 = -c_P*c_wq/c_h + q_th_td
         _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
         _n0_3 = -c_e_next*m/c_h
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0)) and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
         c_P = _n0_2
@@ -291,7 +314,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x25 else (z_lo_q_thd))
     # bottom below q_r_lo
     if not ((-bottom_q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN10 + (STATUS_NO_LIFTOFF,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x26 = 4.0**(-iterations)*(-bottom_q_r + q_r_lo)
     _x27 = (0.25)*_x26
@@ -303,7 +326,8 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     _x33 = 4.0**(-0.5*iterations)
     _x34 = _x33*(-_x32 + g_lo_q_thd*m*q_r_lo**2)
     _x35 = _x33*(-bottom_q_th + g_lo_q_th)
-    _x36 = (2.0*E_ba*_x29*m - _x28**4*_x30 - _x29*_x30*l0**2 - 2.0*_x31*g_s*m**2*math.cos((0.5)*_x35 + bottom_q_th) + 2.0*_x31*k_d*l0*m - (_x32 + (0.5)*_x34)**2)/_x29
+    _x36 = ((2.0*E_ba*_x29*m - _x28**4*_x30 - _x29*_x30*l0**2 - 2.0*_x31*g_s*m**2*math.cos((0.5)*_x35
+        + bottom_q_th) + 2.0*_x31*k_d*l0*m - (_x32 + (0.5)*_x34)**2)/_x29)
     d_e_n = _x26
     d_e_z = _x27
     d_rad_z = _x36
@@ -312,7 +336,7 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     d_T0 = ((_x26*m/math.sqrt(_x36) + t_bottom) if (_x36 > 0.0) else (t_bottom))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -326,10 +350,11 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         _x39 = k_d*m
         _x40 = _x37**3
         d_x = _x37
-        d_rad = (2.0*E_ba*_x38*m - _x37**4*_x39 - _x38*_x39*l0**2 - 2.0*_x40*g_s*m**2*math.cos(d_Q) + 2.0*_x40*k_d*l0*m - d_P**2)/_x38
+        d_rad = ((2.0*E_ba*_x38*m - _x37**4*_x39 - _x38*_x39*l0**2 - 2.0*_x40*g_s*m**2*math.cos(d_Q)
+            + 2.0*_x40*k_d*l0*m - d_P**2)/_x38)
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
         d_h = math.sqrt(d_rad)
         d_e_next = 4.0*d_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -340,14 +365,16 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
             d_wq = d_e_next/(bottom_q_r*(bottom_q_r + d_e_next))
             d_wp = (0.5)*d_e_next*(2.0*bottom_q_r + d_e_next)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN10 + (STATUS_INVALID_INPUT,)
         _n1_0 = d_e_next
         _n1_1 = bottom_q_th + d_P*d_wq/d_h
         _n1_2 = bottom_q_r**2*bottom_q_thd*m + d_wp*g_s*m**2*math.sin(d_Q)/d_h
         _n1_3 = d_e_next*m/d_h + t_bottom
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv1 = 0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0)) and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
+        _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
         d_P = _n1_2
@@ -359,10 +386,11 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     _x41 = q_r_lo**2
     _x42 = k_d*m
     _x43 = q_r_lo**3
-    rad_lo = (2.0*E_ba*_x41*m - _x41*_x42*l0**2 - _x42*q_r_lo**4 - 2.0*_x43*g_s*m**2*math.cos(d_Q) + 2.0*_x43*k_d*l0*m - d_P**2)/_x41
+    rad_lo = ((2.0*E_ba*_x41*m - _x41*_x42*l0**2 - _x42*q_r_lo**4 - 2.0*_x43*g_s*m**2*math.cos(d_Q)
+        + 2.0*_x43*k_d*l0*m - d_P**2)/_x41)
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN10 + (STATUS_IMAGINARY_MOMENTUM,)
     # liftoff state
     _x44 = (1.0/m)
     t_stance = d_T
@@ -372,24 +400,32 @@ def iterative_report_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
     liftoff_q_thd = _x44*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN10 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, STATUS_OK)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+        iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_stance`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth,
+    bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s,
+            q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -404,16 +440,21 @@ def iterative_report_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
+def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, variant, iterations, zeroth, bottom_length):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed).
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -424,8 +465,12 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -444,14 +489,25 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
+        return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[6])
+        return _NAN12 + (_c0[6],)
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -459,9 +515,10 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _c1 = iterative_report_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
+    _c1 = (iterative_report_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+        iterations, zeroth, bottom_length))
     if _c1[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
+        return _NAN12 + (_c1[10],)
     t_stance = _c1[1]
     liftoff_q_r = _c1[6]
     liftoff_q_rd = _c1[7]
@@ -470,7 +527,7 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[5])
+        return _NAN12 + (_c2[5],)
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -479,22 +536,30 @@ def iterative_report_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, STATUS_OK)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
+        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_apex_return`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
+    zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d,
+            g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

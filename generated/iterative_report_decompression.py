@@ -4,35 +4,28 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
-"""Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom -> liftoff."""
+"""Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
+liftoff."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
 
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_LIFTOFF, STATUS_FALL, STATUS_NUMERICAL_RANGE,
+    STATUS_IMAGINARY_MOMENTUM)
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant, iterations):
+def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant,
+        iterations):
     """Iterative decompression half as printed (bottom to liftoff, k_d): bottom state -> liftoff state.
 
     Report equations: 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150.
@@ -60,15 +53,21 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     """
     # Total ops: 140
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b) and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
+            > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
     # E_ba (137)
     _x0 = (0.5)*k_d
     _x1 = q_r_b**2
     E_ba = _x0*_x1 + _x0*l0**2 + (0.5)*_x1*m*q_thd_b**2 + g_s*m*q_r_b*math.cos(q_th_b) - k_d*l0*q_r_b
     # bottom below q_r_lo
     if not ((-q_r_b + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
+        return _NAN5 + (STATUS_NO_LIFTOFF,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x2 = 4.0**(-iterations)*(-q_r_b + q_r_lo)
     _x3 = (0.25)*_x2
@@ -77,7 +76,8 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     _x6 = m**2
     _x7 = k_d*m
     _x8 = _x4**3
-    _x9 = (2.0*E_ba*_x5*m - _x4**4*_x7 - _x5*_x7*l0**2 - 2.0*_x6*_x8*g_s*math.cos(q_th_b) - _x6*q_r_b**4*q_thd_b**2 + 2.0*_x8*k_d*l0*m)/_x5
+    _x9 = ((2.0*E_ba*_x5*m - _x4**4*_x7 - _x5*_x7*l0**2 - 2.0*_x6*_x8*g_s*math.cos(q_th_b)
+        - _x6*q_r_b**4*q_thd_b**2 + 2.0*_x8*k_d*l0*m)/_x5)
     d_e_n = _x2
     d_e_z = _x3
     d_rad_z = _x9
@@ -86,7 +86,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     d_T0 = ((_x2*m/math.sqrt(_x9)) if (_x9 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -100,10 +100,11 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         _x12 = k_d*m
         _x13 = _x10**3
         d_x = _x10
-        d_rad = (2.0*E_ba*_x11*m - _x10**4*_x12 - _x11*_x12*l0**2 - 2.0*_x13*g_s*m**2*math.cos(d_Q) + 2.0*_x13*k_d*l0*m - d_P**2)/_x11
+        d_rad = ((2.0*E_ba*_x11*m - _x10**4*_x12 - _x11*_x12*l0**2 - 2.0*_x13*g_s*m**2*math.cos(d_Q)
+            + 2.0*_x13*k_d*l0*m - d_P**2)/_x11)
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
         d_h = math.sqrt(d_rad)
         d_e_next = 4.0*d_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -114,14 +115,16 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
             d_wq = d_e_next/(q_r_b*(d_e_next + q_r_b))
             d_wp = (0.5)*d_e_next*(d_e_next + 2.0*q_r_b)
         else:
-            return (NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+            return _NAN5 + (STATUS_INVALID_INPUT,)
         _n0_0 = d_e_next
         _n0_1 = d_P*d_wq/d_h + q_th_b
         _n0_2 = m*q_r_b**2*q_thd_b + d_wp*g_s*m**2*math.sin(d_Q)/d_h
         _n0_3 = d_e_next*m/d_h
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 0.0 > 0.0 and (abs(_n0_0 - d_e) <= 0.0*(l0)) and (abs(_n0_1 - d_Q) <= 0.0*(1.0)) and (abs(_n0_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - d_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - d_e) <= 0.0*(l0)) and (abs(_n0_1 - d_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - d_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n0_0
         d_Q = _n0_1
         d_P = _n0_2
@@ -133,10 +136,11 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     _x14 = q_r_lo**2
     _x15 = k_d*m
     _x16 = q_r_lo**3
-    rad_lo = (2.0*E_ba*_x14*m - _x14*_x15*l0**2 - _x15*q_r_lo**4 - 2.0*_x16*g_s*m**2*math.cos(d_Q) + 2.0*_x16*k_d*l0*m - d_P**2)/_x14
+    rad_lo = ((2.0*E_ba*_x14*m - _x14*_x15*l0**2 - _x15*q_r_lo**4 - 2.0*_x16*g_s*m**2*math.cos(d_Q)
+        + 2.0*_x16*k_d*l0*m - d_P**2)/_x14)
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
     # liftoff state
     _x17 = (1.0/m)
     t_stance = d_T
@@ -146,7 +150,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     liftoff_q_thd = _x17*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN5 + (STATUS_FALL,)
     # the liftoff state
     t_half = t_stance
     end_q_r = liftoff_q_r
@@ -154,13 +158,15 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     end_q_th = liftoff_q_th
     end_q_thd = liftoff_q_thd
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd) and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return (NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
     return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant, iterations, out, status):
+def iterative_report_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant,
+        iterations, out, status):
     """Parallel batch form of :func:`iterative_report_decompression`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
@@ -169,7 +175,8 @@ def iterative_report_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, 
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s, q_r_lo, variant, iterations)
+        res = (iterative_report_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
+            q_r_lo, variant, iterations))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -4,1256 +4,58 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:93735a9cd1eada3e
-#   geyer_jacobian.py sha256:2cc3bc7df9c66782
-#   geyer_vs_jacobian.py sha256:27c237b92fe478ab
-#   gravity_type0_jacobian.py sha256:82882201e605f9fc
-#   gravity_type1_jacobian.py sha256:3202f1b84c0ddf87
-#   gravity_type2_jacobian.py sha256:38cdb9055d649f09
-#   gravity_type3_jacobian.py sha256:d59af6c680c78d17
-#   gravity_type4_jacobian.py sha256:7ea1a5e7afabc60d
-#   gravity_type5_jacobian.py sha256:91b9dbe5f11a434e
+#   flight_jacobian.py sha256:2e171e0cb588eb80
+#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
+#   geyer_vs_jacobian.py sha256:485d502ad9d8b596
+#   gravity_type0_jacobian.py sha256:381ad3abfdae4a30
+#   gravity_type1_jacobian.py sha256:500d5ef6bcfcd94f
+#   gravity_type2_jacobian.py sha256:04d7012842f495cb
+#   gravity_type3_jacobian.py sha256:7db412339a2d98b2
+#   gravity_type4_jacobian.py sha256:e8c29083cd0e3b48
+#   gravity_type5_jacobian.py sha256:4fc284d5dd94c92d
 # ----------------------------------------------------------------------------------------------
-"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians."""
+"""Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
+for a map its stance and apex-return Jacobians."""
 
 import math
 
 import numpy as np
 from numba import njit, prange
-from .flight_jacobian import apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground, liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd
-from .geyer_jacobian import geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .geyer_vs_jacobian import bottom_quartic_jvp_p_E_ab_k_c, geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d
-from .gravity_type0_jacobian import gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .gravity_type1_jacobian import gravity_type1_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .gravity_type2_jacobian import gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .gravity_type3_jacobian import gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .gravity_type4_jacobian import gravity_type4_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
-from .gravity_type5_jacobian import gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k
+from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
+    liftoff_to_apex_jac_q_rd_q_th_q_thd)
+from .geyer_jacobian import geyer_stance_jacobian
+from .geyer_vs_jacobian import bottom_quartic_jac_p_E_ab_k_c, geyer_vs_stance_jacobian
+from .gravity_type0_jacobian import gravity_type0_stance_jacobian
+from .gravity_type1_jacobian import gravity_type1_stance_jacobian
+from .gravity_type2_jacobian import gravity_type2_stance_jacobian
+from .gravity_type3_jacobian import gravity_type3_stance_jacobian
+from .gravity_type4_jacobian import gravity_type4_stance_jacobian
+from .gravity_type5_jacobian import gravity_type5_stance_jacobian
+
+# The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
+# freeze them into this module's cached machine code although its cache does not see status.py.
+from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NO_LIFTOFF,
+    STATUS_FALL, STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM)
 
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
+_NAN70 = (NAN,) * 70
+_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 1 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 102
-    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
-    _x0 = -q_r_td
-    _x1 = k_c*q_r_td
-    _x2 = g_s*m
-    _x3 = _x2*math.cos(q_th_td)
-    _x4 = q_thd_td**2
-    _x5 = _x4*m
-    _x6 = m*q_rd_td**2
-    _x7 = -_x1 - _x3 + _x4*m*q_r_td + k_c*l0
-    _x8 = math.sqrt(_x6*k_c + _x7**2)
-    _x9 = -_x1 - _x3 + _x5*q_r_td + _x8 + k_c*l0
-    _x10 = (1.0/_x9)
-    _x11 = -_x0 - _x10*_x6
-    _x25 = (1.0/_x11)
-    _x12 = 2.0*q_r_td
-    _x13 = _x12*q_thd_td
-    _x14 = _x13*m
-    _x15 = (1.0/_x8)
-    _x16 = _x15*_x7
-    _x17 = _x10**2
-    _x18 = _x17*_x6
-    _x19 = _x2*math.sin(q_th_td)
-    _x20 = (0.5)*_x7
-    _x21 = -_x18*k_c__tan*(-_x0 - _x15*(_x20*(-_x12 + 2.0*l0) + (0.5)*_x6) - l0) - _x18*q_th_td__tan*(-_x16*_x19 - _x19) - _x18*q_thd_td__tan*(-_x14*_x16 - _x14) + q_r_td__tan*(-_x18*(-_x15*_x20*(2.0*_x4*m - 2.0*k_c) - _x5 + k_c) + 1.0) + q_rd_td__tan*(-2.0*_x10*m*q_rd_td + _x15*_x17*k_c*m**2*q_rd_td**3)
-    _x22 = q_r_td**2
-    _x23 = _x25**2
-    _x24 = _x22*_x23
-    z_b_q_r = _x11
-    z_b_q_r__tan = _x21
-    z_b_q_th = q_th_td
-    z_b_q_th__tan = q_th_td__tan
-    z_b_q_thd = _x24*q_thd_td
-    z_b_q_thd__tan = _x13*_x23*q_r_td__tan - 2.0*_x21*_x22*_x25**3*q_thd_td + _x24*q_thd_td__tan
-    z_lo_q_th = 0.0
-    z_lo_q_thd = 0.0
-    # tangents the other branches define
-    z_lo_q_th__tan = 0.0
-    z_lo_q_thd__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 0 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Geyer et al.'s approximate stance map
-    _c0 = geyer_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[12]
-    z_b_q_th__tan = _c0[14]
-    z_b_q_thd__tan = _c0[15]
-    z_lo_q_th__tan = _c0[18]
-    z_lo_q_thd__tan = _c0[19]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 2 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 0 (leg length l0)
-    _c0 = gravity_type0_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0, 0.0, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 3 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _c0 = gravity_type1_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 4 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 2 (average leg length)
-    _c0 = gravity_type2_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 5 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _c0 = gravity_type3_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 6 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _c0 = gravity_type4_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 7 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-    _c0 = gravity_type5_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[14]
-    z_b_q_th__tan = _c0[16]
-    z_b_q_thd__tan = _c0[17]
-    z_lo_q_th__tan = _c0[20]
-    z_lo_q_thd__tan = _c0[21]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan):
-    """branch zeroth = 8 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_rd_td: value of the caller's variable
-        q_rd_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        z_b_q_r: result for the caller
-        z_b_q_r__tan: result for the caller
-        z_b_q_th: result for the caller
-        z_b_q_th__tan: result for the caller
-        z_b_q_thd: result for the caller
-        z_b_q_thd__tan: result for the caller
-        z_lo_q_th: result for the caller
-        z_lo_q_thd: result for the caller
-        z_lo_q_th__tan: result for the caller
-        z_lo_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-    _c0 = geyer_vs_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0, 1e-12, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan)
-    if _c0[26] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[26])
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    z_b_q_r__tan = _c0[15]
-    z_b_q_th__tan = _c0[17]
-    z_b_q_thd__tan = _c0[18]
-    z_lo_q_th__tan = _c0[21]
-    z_lo_q_thd__tan = _c0[22]
-    # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_r__tan, z_b_q_th, z_b_q_th__tan, z_b_q_thd, z_b_q_thd__tan, z_lo_q_th, z_lo_q_thd, z_lo_q_th__tan, z_lo_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(z_b_q_r, z_b_q_r__tan):
-    """branch bottom_length = 0 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        z_b_q_r: value of the caller's variable
-        z_b_q_r__tan: value of the caller's variable
-
-    Returns a tuple:
-        bottom_q_r: result for the caller
-        bottom_q_r__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    bottom_q_r = z_b_q_r
-    bottom_q_r__tan = z_b_q_r__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (bottom_q_r, bottom_q_r__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_thd_td, q_thd_td__tan):
-    """branch bottom_length = 1 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ab: value of the caller's variable
-        E_ab__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        bottom_q_r: result for the caller
-        bottom_q_r__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # (153): the vertical bottom's quartic
-    _c0 = bottom_quartic_jvp_p_E_ab_k_c(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s, m*q_r_td**2*q_thd_td__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td, E_ab__tan, k_c__tan)
-    if _c0[2] != STATUS_OK:
-        return (NAN, NAN, _c0[2])
-    bottom_q_r = _c0[0]
-    bottom_q_r__tan = _c0[1]
-    # (internal helper: its callers check that their outputs are finite)
-    return (bottom_q_r, bottom_q_r__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_11(c_e_next, c_e_next__tan, c_x, c_x__tan):
-    """branch variant = 0 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        c_e_next: value of the caller's variable
-        c_e_next__tan: value of the caller's variable
-        c_x: value of the caller's variable
-        c_x__tan: value of the caller's variable
-
-    Returns a tuple:
-        c_wq: result for the caller
-        c_wq__tan: result for the caller
-        c_wp: result for the caller
-        c_wp__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 12
-    _x2 = (1.0/c_x)
-    _x0 = _x2**2
-    _x1 = c_e_next*c_x__tan
-    c_wq = _x0*c_e_next
-    c_wq__tan = _x0*c_e_next__tan - 2.0*_x1*_x2**3
-    c_wp = c_e_next*c_x
-    c_wp__tan = _x1 + c_e_next__tan*c_x
-    # (internal helper: its callers check that their outputs are finite)
-    return (c_wq, c_wq__tan, c_wp, c_wp__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_12(c_e_next, c_e_next__tan, q_r_td, q_r_td__tan):
-    """branch variant = 1 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        c_e_next: value of the caller's variable
-        c_e_next__tan: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-
-    Returns a tuple:
-        c_wq: result for the caller
-        c_wq__tan: result for the caller
-        c_wp: result for the caller
-        c_wp__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 25
-    _x0 = (1.0/q_r_td)
-    _x1 = c_e_next + q_r_td
-    _x2 = (1.0/_x1)
-    _x3 = _x0*_x2**2*c_e_next
-    c_wq = _x0*_x2*c_e_next
-    c_wq__tan = c_e_next__tan*(_x0*_x2 - _x3) + q_r_td__tan*(-_x0**2*_x2*c_e_next - _x3)
-    c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-    c_wp__tan = _x1*c_e_next__tan + c_e_next*q_r_td__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (c_wq, c_wq__tan, c_wp, c_wp__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab, E_ab__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_e, c_e__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan, variant):
-    """loop body of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ab: value of the caller's variable
-        E_ab__tan: value of the caller's variable
-        c_P: value of the caller's variable
-        c_P__tan: value of the caller's variable
-        c_Q: value of the caller's variable
-        c_Q__tan: value of the caller's variable
-        c_e: value of the caller's variable
-        c_e__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_td: value of the caller's variable
-        q_r_td__tan: value of the caller's variable
-        q_th_td: value of the caller's variable
-        q_th_td__tan: value of the caller's variable
-        q_thd_td: value of the caller's variable
-        q_thd_td__tan: value of the caller's variable
-        variant: value of the caller's variable
-
-    Returns a tuple:
-        _next_c_e: result for the caller
-        _next_c_Q: result for the caller
-        _next_c_P: result for the caller
-        _next_c_T: result for the caller
-        _next_c_e__tan: result for the caller
-        _next_c_Q__tan: result for the caller
-        _next_c_P__tan: result for the caller
-        _next_c_T__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 134
-    _x0 = c_e + q_r_td
-    _x1 = c_e__tan + q_r_td__tan
-    _x2 = _x0**2
-    _x3 = (1.0/_x2)
-    _x4 = _x0**4*m
-    _x5 = _x0**3
-    _x6 = l0**2
-    _x7 = _x2*_x6*m
-    _x8 = m**2
-    _x9 = _x8*g_s*math.cos(c_Q)
-    _x10 = 2.0*E_ab*_x2*m - _x4*k_c - 2.0*_x5*_x9 + 2.0*_x5*k_c*l0*m - _x7*k_c - c_P**2
-    _x11 = 2.0*m
-    c_x = _x0
-    c_x__tan = _x1
-    c_rad = _x10*_x3
-    c_rad__tan = E_ab__tan*_x11 + 2.0*_x0*_x8*c_Q__tan*g_s*math.sin(c_Q) + _x1*(-2.0*_x10/_x5 + _x3*(4.0*E_ab*_x0*m - _x0*_x11*_x6*k_c - 6.0*_x2*_x9 + 6.0*_x2*k_c*l0*m - 4.0*_x5*k_c*m)) - 2.0*_x3*c_P*c_P__tan + _x3*k_c__tan*(-_x4 + 2.0*_x5*l0*m - _x7)
-    # H^{-1} real at x_{j+1} on the current iterate
-    if not ((c_rad > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
-    _x12 = math.sqrt(c_rad)
-    c_h = _x12
-    c_h__tan = (0.5)*c_rad__tan/_x12
-    c_e_next = 4.0*c_e
-    c_e_next__tan = 4.0*c_e__tan
-    # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-    if variant == 0.0:
-        # branch variant = 0
-        _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_11(c_e_next, c_e_next__tan, c_x, c_x__tan)
-        if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
-        c_wq = _c0[0]
-        c_wq__tan = _c0[1]
-        c_wp = _c0[2]
-        c_wp__tan = _c0[3]
-    elif variant == 1.0:
-        # branch variant = 1
-        _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_12(c_e_next, c_e_next__tan, q_r_td, q_r_td__tan)
-        if _c1[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-        c_wq = _c1[0]
-        c_wq__tan = _c1[1]
-        c_wp = _c1[2]
-        c_wp__tan = _c1[3]
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # next values
-    _x13 = (1.0/c_h)
-    _x14 = _x13*c_P
-    _x15 = m*q_r_td**2
-    _x16 = m**2
-    _x17 = math.sin(c_Q)
-    _x18 = _x13*_x16*_x17*g_s
-    _x19 = _x13*m
-    _x20 = _x13**2
-    _x21 = _x20*c_h__tan
-    _x22 = _x16*c_wp*g_s
-    _next_c_e = c_e_next
-    _next_c_Q = -_x14*c_wq + q_th_td
-    _next_c_P = _x15*q_thd_td - _x18*c_wp
-    _next_c_T = -_x19*c_e_next
-    _next_c_e__tan = c_e_next__tan
-    _next_c_Q__tan = -_x13*c_P__tan*c_wq - _x14*c_wq__tan + _x20*c_P*c_h__tan*c_wq + q_th_td__tan
-    _next_c_P__tan = -_x13*_x22*c_Q__tan*math.cos(c_Q) + _x15*q_thd_td__tan + _x17*_x21*_x22 - _x18*c_wp__tan + 2.0*m*q_r_td*q_r_td__tan*q_thd_td
-    _next_c_T__tan = -_x19*c_e_next__tan + _x21*c_e_next*m
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_c_e, _next_c_Q, _next_c_P, _next_c_T, _next_c_e__tan, _next_c_Q__tan, _next_c_P__tan, _next_c_T__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_14(d_e_next, d_e_next__tan, d_x, d_x__tan):
-    """branch variant = 0 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        d_e_next: value of the caller's variable
-        d_e_next__tan: value of the caller's variable
-        d_x: value of the caller's variable
-        d_x__tan: value of the caller's variable
-
-    Returns a tuple:
-        d_wq: result for the caller
-        d_wq__tan: result for the caller
-        d_wp: result for the caller
-        d_wp__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 12
-    _x2 = (1.0/d_x)
-    _x0 = _x2**2
-    _x1 = d_e_next*d_x__tan
-    d_wq = _x0*d_e_next
-    d_wq__tan = _x0*d_e_next__tan - 2.0*_x1*_x2**3
-    d_wp = d_e_next*d_x
-    d_wp__tan = _x1 + d_e_next__tan*d_x
-    # (internal helper: its callers check that their outputs are finite)
-    return (d_wq, d_wq__tan, d_wp, d_wp__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_15(bottom_q_r, bottom_q_r__tan, d_e_next, d_e_next__tan):
-    """branch variant = 1 of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        d_e_next: value of the caller's variable
-        d_e_next__tan: value of the caller's variable
-
-    Returns a tuple:
-        d_wq: result for the caller
-        d_wq__tan: result for the caller
-        d_wp: result for the caller
-        d_wp__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 25
-    _x0 = (1.0/bottom_q_r)
-    _x1 = bottom_q_r + d_e_next
-    _x2 = (1.0/_x1)
-    _x3 = _x0*_x2**2*d_e_next
-    d_wq = _x0*_x2*d_e_next
-    d_wq__tan = bottom_q_r__tan*(-_x0**2*_x2*d_e_next - _x3) + d_e_next__tan*(_x0*_x2 - _x3)
-    d_wp = (0.5)*d_e_next*(2.0*bottom_q_r + d_e_next)
-    d_wp__tan = _x1*d_e_next__tan + bottom_q_r__tan*d_e_next
-    # (internal helper: its callers check that their outputs are finite)
-    return (d_wq, d_wq__tan, d_wp, d_wp__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba, E_ba__tan, bottom_q_r, bottom_q_r__tan, bottom_q_th, bottom_q_th__tan, bottom_q_thd, bottom_q_thd__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_e, d_e__tan, g_s, k_d, k_d__tan, l0, m, t_bottom, t_bottom__tan, variant):
-    """loop body of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ba: value of the caller's variable
-        E_ba__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        bottom_q_th: value of the caller's variable
-        bottom_q_th__tan: value of the caller's variable
-        bottom_q_thd: value of the caller's variable
-        bottom_q_thd__tan: value of the caller's variable
-        d_P: value of the caller's variable
-        d_P__tan: value of the caller's variable
-        d_Q: value of the caller's variable
-        d_Q__tan: value of the caller's variable
-        d_e: value of the caller's variable
-        d_e__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        t_bottom: value of the caller's variable
-        t_bottom__tan: value of the caller's variable
-        variant: value of the caller's variable
-
-    Returns a tuple:
-        _next_d_e: result for the caller
-        _next_d_Q: result for the caller
-        _next_d_P: result for the caller
-        _next_d_T: result for the caller
-        _next_d_e__tan: result for the caller
-        _next_d_Q__tan: result for the caller
-        _next_d_P__tan: result for the caller
-        _next_d_T__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 134
-    _x0 = bottom_q_r + d_e
-    _x1 = bottom_q_r__tan + d_e__tan
-    _x2 = _x0**2
-    _x3 = (1.0/_x2)
-    _x4 = _x0**4*m
-    _x5 = _x0**3
-    _x6 = l0**2
-    _x7 = _x2*_x6*m
-    _x8 = m**2
-    _x9 = _x8*g_s*math.cos(d_Q)
-    _x10 = 2.0*E_ba*_x2*m - _x4*k_d - 2.0*_x5*_x9 + 2.0*_x5*k_d*l0*m - _x7*k_d - d_P**2
-    _x11 = 2.0*m
-    d_x = _x0
-    d_x__tan = _x1
-    d_rad = _x10*_x3
-    d_rad__tan = E_ba__tan*_x11 + 2.0*_x0*_x8*d_Q__tan*g_s*math.sin(d_Q) + _x1*(-2.0*_x10/_x5 + _x3*(4.0*E_ba*_x0*m - _x0*_x11*_x6*k_d - 6.0*_x2*_x9 + 6.0*_x2*k_d*l0*m - 4.0*_x5*k_d*m)) - 2.0*_x3*d_P*d_P__tan + _x3*k_d__tan*(-_x4 + 2.0*_x5*l0*m - _x7)
-    # H^{-1} real at x_{j+1} on the current iterate
-    if not ((d_rad > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
-    _x12 = math.sqrt(d_rad)
-    d_h = _x12
-    d_h__tan = (0.5)*d_rad__tan/_x12
-    d_e_next = 4.0*d_e
-    d_e_next__tan = 4.0*d_e__tan
-    # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-    if variant == 0.0:
-        # branch variant = 0
-        _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_14(d_e_next, d_e_next__tan, d_x, d_x__tan)
-        if _c0[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[4])
-        d_wq = _c0[0]
-        d_wq__tan = _c0[1]
-        d_wp = _c0[2]
-        d_wp__tan = _c0[3]
-    elif variant == 1.0:
-        # branch variant = 1
-        _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_15(bottom_q_r, bottom_q_r__tan, d_e_next, d_e_next__tan)
-        if _c1[4] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[4])
-        d_wq = _c1[0]
-        d_wq__tan = _c1[1]
-        d_wp = _c1[2]
-        d_wp__tan = _c1[3]
-    else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # next values
-    _x13 = (1.0/d_h)
-    _x14 = _x13*d_P
-    _x15 = bottom_q_r**2*m
-    _x16 = m**2
-    _x17 = math.sin(d_Q)
-    _x18 = _x13*_x16*_x17*g_s
-    _x19 = _x13*m
-    _x20 = _x13**2*d_h__tan
-    _x21 = _x16*d_wp*g_s
-    _next_d_e = d_e_next
-    _next_d_Q = _x14*d_wq + bottom_q_th
-    _next_d_P = _x15*bottom_q_thd + _x18*d_wp
-    _next_d_T = _x19*d_e_next + t_bottom
-    _next_d_e__tan = d_e_next__tan
-    _next_d_Q__tan = _x13*d_P__tan*d_wq + _x14*d_wq__tan - _x20*d_P*d_wq + bottom_q_th__tan
-    _next_d_P__tan = _x13*_x21*d_Q__tan*math.cos(d_Q) + _x15*bottom_q_thd__tan - _x17*_x20*_x21 + _x18*d_wp__tan + 2.0*bottom_q_r*bottom_q_r__tan*bottom_q_thd*m
-    _next_d_T__tan = _x19*d_e_next__tan - _x20*d_e_next*m + t_bottom__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (_next_d_e, _next_d_Q, _next_d_P, _next_d_T, _next_d_e__tan, _next_d_Q__tan, _next_d_P__tan, _next_d_T__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_17(E_ba, E_ba__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_T, d_T__tan, g_s, k_d, k_d__tan, l0, m, q_r_lo):
-    """continuation of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ba: value of the caller's variable
-        E_ba__tan: value of the caller's variable
-        d_P: value of the caller's variable
-        d_P__tan: value of the caller's variable
-        d_Q: value of the caller's variable
-        d_Q__tan: value of the caller's variable
-        d_T: value of the caller's variable
-        d_T__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-
-    Returns a tuple:
-        t_stance: result for the caller
-        liftoff_q_r: result for the caller
-        liftoff_q_rd: result for the caller
-        liftoff_q_th: result for the caller
-        liftoff_q_thd: result for the caller
-        t_stance__tan: result for the caller
-        bottom_q_rd__tan: result for the caller
-        liftoff_q_r__tan: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        liftoff_q_th__tan: result for the caller
-        liftoff_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 60
-    # (45) corrected: p_r of the iterate at q_r_lo
-    _x0 = q_r_lo**2
-    _x1 = (1.0/_x0)
-    _x2 = m*q_r_lo**4
-    _x3 = q_r_lo**3
-    _x4 = _x0*l0**2*m
-    _x5 = 2.0*g_s*m**2
-    rad_lo = _x1*(2.0*E_ba*_x0*m - _x2*k_d - _x3*_x5*math.cos(d_Q) + 2.0*_x3*k_d*l0*m - _x4*k_d - d_P**2)
-    rad_lo__tan = 2.0*E_ba__tan*m - 2.0*_x1*d_P*d_P__tan + _x1*k_d__tan*(-_x2 + 2.0*_x3*l0*m - _x4) + _x5*d_Q__tan*q_r_lo*math.sin(d_Q)
-    # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
-    if not ((rad_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
-    # liftoff state
-    _x6 = (1.0/m)
-    _x7 = math.sqrt(rad_lo)
-    _x8 = _x6/q_r_lo**2
-    t_stance = d_T
-    t_stance__tan = d_T__tan
-    liftoff_q_r = q_r_lo
-    liftoff_q_rd = _x6*_x7
-    liftoff_q_rd__tan = (0.5)*_x6*rad_lo__tan/_x7
-    liftoff_q_th = d_Q
-    liftoff_q_th__tan = d_Q__tan
-    liftoff_q_thd = _x8*d_P
-    liftoff_q_thd__tan = _x8*d_P__tan
-    # the leg stays above horizontal
-    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
-    # derivatives that are identically zero
-    bottom_q_rd__tan = 0.0
-    liftoff_q_r__tan = 0.0
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_stance, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_stance__tan, bottom_q_rd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab, E_ab__tan, bottom_q_r, bottom_q_r__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_T, c_T__tan, g_s, iterations, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, variant, z_lo_q_th, z_lo_q_th__tan, z_lo_q_thd, z_lo_q_thd__tan, zeroth):
-    """continuation of iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d (outlined: derive/outline.py).
-
-    Report equations: .
-
-    Arguments:
-        E_ab: value of the caller's variable
-        E_ab__tan: value of the caller's variable
-        bottom_q_r: value of the caller's variable
-        bottom_q_r__tan: value of the caller's variable
-        c_P: value of the caller's variable
-        c_P__tan: value of the caller's variable
-        c_Q: value of the caller's variable
-        c_Q__tan: value of the caller's variable
-        c_T: value of the caller's variable
-        c_T__tan: value of the caller's variable
-        g_s: value of the caller's variable
-        iterations: value of the caller's variable
-        k_c: value of the caller's variable
-        k_c__tan: value of the caller's variable
-        k_d: value of the caller's variable
-        k_d__tan: value of the caller's variable
-        l0: value of the caller's variable
-        m: value of the caller's variable
-        q_r_lo: value of the caller's variable
-        variant: value of the caller's variable
-        z_lo_q_th: value of the caller's variable
-        z_lo_q_th__tan: value of the caller's variable
-        z_lo_q_thd: value of the caller's variable
-        z_lo_q_thd__tan: value of the caller's variable
-        zeroth: value of the caller's variable
-
-    Returns a tuple:
-        t_bottom: result for the caller
-        t_stance: result for the caller
-        bottom_q_rd: result for the caller
-        bottom_q_th: result for the caller
-        bottom_q_thd: result for the caller
-        liftoff_q_r: result for the caller
-        liftoff_q_rd: result for the caller
-        liftoff_q_th: result for the caller
-        liftoff_q_thd: result for the caller
-        t_bottom__tan: result for the caller
-        t_stance__tan: result for the caller
-        bottom_q_rd__tan: result for the caller
-        bottom_q_th__tan: result for the caller
-        bottom_q_thd__tan: result for the caller
-        liftoff_q_r__tan: result for the caller
-        liftoff_q_rd__tan: result for the caller
-        liftoff_q_th__tan: result for the caller
-        liftoff_q_thd__tan: result for the caller
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 240
-    # bottom state (p_r = 0)
-    _x2 = (1.0/bottom_q_r)
-    _x0 = (1.0/m)
-    _x1 = _x0*_x2**2
-    t_bottom = c_T
-    t_bottom__tan = c_T__tan
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_th__tan = c_Q__tan
-    bottom_q_thd = _x1*c_P
-    bottom_q_thd__tan = -2.0*_x0*_x2**3*bottom_q_r__tan*c_P + _x1*c_P__tan
-    # E_ba of (98): the energy jump of the stiffness switch
-    _x3 = (-bottom_q_r + l0)**2
-    _x4 = -0.5*k_c + (0.5)*k_d
-    _x5 = (0.5)*_x3
-    E_ba = E_ab + _x3*_x4
-    E_ba__tan = E_ab__tan + _x4*bottom_q_r__tan*(2.0*bottom_q_r - 2.0*l0) - _x5*k_c__tan + _x5*k_d__tan
-    # zeroth iterate at liftoff
-    _x6 = (zeroth == 1.0)
-    _x7 = ((0.0) if _x6 else (1.0))
-    _x8 = q_r_lo**-2
-    _x9 = _x8*bottom_q_r**2
-    g_lo_q_th = ((bottom_q_th) if _x6 else (z_lo_q_th))
-    g_lo_q_th__tan = _x7*z_lo_q_th__tan + bottom_q_th__tan*((1.0) if _x6 else (0.0))
-    g_lo_q_thd = ((_x9*bottom_q_thd) if _x6 else (z_lo_q_thd))
-    g_lo_q_thd__tan = _x7*z_lo_q_thd__tan + bottom_q_r__tan*((2.0*_x8*bottom_q_r*bottom_q_thd) if _x6 else (0.0)) + bottom_q_thd__tan*((_x9) if _x6 else (0.0))
-    # bottom below q_r_lo
-    if not ((-bottom_q_r + q_r_lo > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NO_LIFTOFF)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x10 = 4.0**(-iterations)
-    _x11 = -bottom_q_r + q_r_lo
-    _x12 = _x10*_x11
-    _x13 = _x10*bottom_q_r__tan
-    _x14 = (0.25)*_x12
-    _x15 = (0.25)*_x13
-    _x16 = _x14 + bottom_q_r
-    _x17 = _x16**2
-    _x18 = (1.0/_x17)
-    _x19 = _x16**4*m
-    _x20 = _x16**3
-    _x21 = l0**2*m
-    _x22 = _x17*_x21
-    _x23 = bottom_q_r**2*m
-    _x24 = _x23*bottom_q_thd
-    _x25 = q_r_lo**2
-    _x26 = -_x24 + _x25*g_lo_q_thd*m
-    _x27 = 4.0**((0.5)*iterations)
-    _x28 = (1.0/_x27)
-    _x29 = (0.5)*_x28
-    _x30 = _x26*_x29
-    _x31 = _x24 + _x30
-    _x32 = -bottom_q_th + g_lo_q_th
-    _x33 = _x29*_x32 + bottom_q_th
-    _x34 = m**2
-    _x35 = _x34*g_s
-    _x36 = _x35*math.cos(_x33)
-    _x37 = 2.0*E_ba*_x17*m - _x19*k_d - 2.0*_x20*_x36 + 2.0*_x20*k_d*l0*m - _x22*k_d - _x31**2
-    _x38 = _x18*_x37
-    _x39 = _x28*g_lo_q_th__tan
-    _x40 = math.sin(_x33)
-    _x41 = _x16*_x35*_x40
-    _x42 = _x18*_x31
-    _x43 = _x25*_x28*g_lo_q_thd__tan*m
-    _x44 = -_x23*_x28
-    _x45 = -2.0*_x37/_x20
-    _x46 = (1.0/_x11)
-    _x47 = 2.0*bottom_q_r
-    _x48 = (0.5)*_x12
-    _x49 = _x47 + _x48
-    _x50 = 4.0*m
-    _x51 = -2.0*E_ba*_x49*m + 6.0*_x17*_x36 - 6.0*_x17*k_d*l0*m + _x20*_x50*k_d + _x21*_x49*k_d
-    _x52 = _x30*_x46
-    _x53 = _x47*bottom_q_thd*m
-    _x54 = -_x28*_x53 + _x52
-    _x55 = 2.0*E_ba__tan*m - _x15*(_x18*(2.0*_x20*_x27*_x32*_x34*_x40*_x46*g_s - 2.0*_x26*_x27*_x31*_x46 - _x51) + _x45) + _x18*k_d__tan*(-_x19 + 2.0*_x20*l0*m - _x22) + _x39*_x41 + 2.0*_x41*bottom_q_th__tan*(1.0 - _x29) - _x42*_x43 - _x42*bottom_q_thd__tan*(2.0*_x23 + _x44) + bottom_q_r__tan*(_x18*((0.5)*_x20*_x28*_x32*_x34*_x40*_x46*g_s - _x31*(_x50*bottom_q_r*bottom_q_thd + _x54) - _x51) + _x45)
-    _x56 = m/math.sqrt(_x38)
-    _x57 = (_x38 > 0.0)
-    d_e_n = _x12
-    d_e_n__tan = -_x13
-    d_e_z = _x14
-    d_e_z__tan = -_x15
-    d_rad_z = _x38
-    d_rad_z__tan = _x55
-    d_Q0 = _x28*_x32 + bottom_q_th
-    d_Q0__tan = _x39 + bottom_q_th__tan*(1.0 - _x28)
-    d_P0 = _x24 + _x26*_x28
-    d_P0__tan = _x43 - _x52*bottom_q_r__tan + bottom_q_r__tan*(_x53 + _x54) + bottom_q_thd__tan*(_x23 + _x44)
-    d_T0 = ((_x12*_x56 + t_bottom) if _x57 else (t_bottom))
-    d_T0__tan = -_x13*((_x56) if _x57 else (0.0)) + _x55*((-_x48*m/_x38**(1.5)) if _x57 else (0.0)) + t_bottom__tan
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    d_e = d_e_n
-    d_Q = d_Q0
-    d_P = d_P0
-    d_T = d_T0
-    d_e__tan = d_e_n__tan
-    d_Q__tan = d_Q0__tan
-    d_P__tan = d_P0__tan
-    d_T__tan = d_T0__tan
-    d_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
-        _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_16(E_ba, E_ba__tan, bottom_q_r, bottom_q_r__tan, bottom_q_th, bottom_q_th__tan, bottom_q_thd, bottom_q_thd__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_e, d_e__tan, g_s, k_d, k_d__tan, l0, m, t_bottom, t_bottom__tan, variant)
-        if _c0[8] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[8])
-        _next_d_e = _c0[0]
-        _next_d_Q = _c0[1]
-        _next_d_P = _c0[2]
-        _next_d_T = _c0[3]
-        _next_d_e__tan = _c0[4]
-        _next_d_Q__tan = _c0[5]
-        _next_d_P__tan = _c0[6]
-        _next_d_T__tan = _c0[7]
-        _n0_0 = _next_d_e
-        _n0_1 = _next_d_Q
-        _n0_2 = _next_d_P
-        _n0_3 = _next_d_T
-        _n0_4 = _next_d_e__tan
-        _n0_5 = _next_d_Q__tan
-        _n0_6 = _next_d_P__tan
-        _n0_7 = _next_d_T__tan
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = 0.0 > 0.0 and (abs(_n0_0 - d_e) <= 0.0*(l0)) and (abs(_n0_1 - d_Q) <= 0.0*(1.0)) and (abs(_n0_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - d_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
-        d_e = _n0_0
-        d_Q = _n0_1
-        d_P = _n0_2
-        d_T = _n0_3
-        d_e__tan = _n0_4
-        d_Q__tan = _n0_5
-        d_P__tan = _n0_6
-        d_T__tan = _n0_7
-        d_steps += 1.0
-        if _conv0:
-            break
-    # continuation
-    _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_17(E_ba, E_ba__tan, d_P, d_P__tan, d_Q, d_Q__tan, d_T, d_T__tan, g_s, k_d, k_d__tan, l0, m, q_r_lo)
-    if _c1[11] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[11])
-    t_stance = _c1[0]
-    liftoff_q_r = _c1[1]
-    liftoff_q_rd = _c1[2]
-    liftoff_q_th = _c1[3]
-    liftoff_q_thd = _c1[4]
-    t_stance__tan = _c1[5]
-    bottom_q_rd__tan = _c1[6]
-    liftoff_q_r__tan = _c1[7]
-    liftoff_q_rd__tan = _c1[8]
-    liftoff_q_th__tan = _c1[9]
-    liftoff_q_thd__tan = _c1[10]
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan):
-    """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff states, with the derivative of every output along the direction (q_r_td__tan, q_rd_td__tan, q_th_td__tan, q_thd_td__tan, k_c__tan, k_d__tan).
-
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length):
+    """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
+    respect to the touchdown state and the stiffness.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -1268,14 +70,12 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-        q_r_td__tan: direction: its component along q_r_td
-        q_rd_td__tan: direction: its component along q_rd_td
-        q_th_td__tan: direction: its component along q_th_td
-        q_thd_td__tan: direction: its component along q_thd_td
-        k_c__tan: direction: its component along k_c
-        k_d__tan: direction: its component along k_d
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1288,554 +88,1317 @@ def iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, 
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
-        t_bottom__tan: derivative of t_bottom along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        bottom_q_r__tan: derivative of bottom_q_r along the direction
-        bottom_q_rd__tan: derivative of bottom_q_rd along the direction
-        bottom_q_th__tan: derivative of bottom_q_th along the direction
-        bottom_q_thd__tan: derivative of bottom_q_thd along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
+            q_th_td, q_thd_td, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 275
+    # Total ops: 1782
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(q_r_td__tan) and math.isfinite(q_rd_td__tan) and math.isfinite(q_th_td__tan) and math.isfinite(q_thd_td__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length)
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0)
+            and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
+        return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+        return _NAN70 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
     # zeroth iterate
     if zeroth == 1.0:
-        # branch zeroth = 1
-        _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_0(g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c0[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[10])
-        z_b_q_r = _c0[0]
-        z_b_q_r__tan = _c0[1]
-        z_b_q_th = _c0[2]
-        z_b_q_th__tan = _c0[3]
-        z_b_q_thd = _c0[4]
-        z_b_q_thd__tan = _c0[5]
-        z_lo_q_th = _c0[6]
-        z_lo_q_thd = _c0[7]
-        z_lo_q_th__tan = _c0[8]
-        z_lo_q_thd__tan = _c0[9]
+        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+        _x0 = -q_r_td
+        _x6 = m*q_rd_td**2
+        _x1 = k_c*q_r_td
+        _x2 = g_s*m
+        _x3 = _x2*math.cos(q_th_td)
+        _x4 = q_thd_td**2
+        _x5 = _x4*m
+        _x7 = -_x1 - _x3 + _x4*m*q_r_td + k_c*l0
+        _x8 = math.sqrt(_x6*k_c + _x7**2)
+        _x9 = -_x1 - _x3 + _x5*q_r_td + _x8 + k_c*l0
+        _x10 = (1.0/_x9)
+        _x11 = -_x0 - _x10*_x6
+        z_b_q_r = _x11
+        _x12 = (1.0/_x8)
+        _x13 = (0.5)*_x7
+        _x14 = _x10**2
+        _x15 = _x14*_x6
+        d_z_b_q_r__q_r_td = -_x15*(-_x12*_x13*(2.0*_x4*m - 2.0*k_c) - _x5 + k_c) + 1.0
+        d_z_b_q_r__q_rd_td = -2.0*_x10*m*q_rd_td + _x12*_x14*k_c*m**2*q_rd_td**3
+        _x16 = _x2*math.sin(q_th_td)
+        _x17 = _x12*_x7
+        d_z_b_q_r__q_th_td = -_x15*(-_x16*_x17 - _x16)
+        _x18 = 2.0*q_r_td
+        _x19 = _x18*q_thd_td
+        _x20 = _x19*m
+        d_z_b_q_r__q_thd_td = -_x15*(-_x17*_x20 - _x20)
+        d_z_b_q_r__k_c = -_x15*(-_x0 - _x12*(_x13*(-_x18 + 2.0*l0) + (0.5)*_x6) - l0)
+        z_b_q_th = q_th_td
+        _x21 = q_r_td**2
+        _x24 = (1.0/_x11)
+        _x22 = _x24**2
+        _x23 = _x21*_x22
+        z_b_q_thd = _x23*q_thd_td
+        _pd__0 = -2.0*_x21*_x24**3*q_thd_td
+        d_z_b_q_thd__q_r_td = _pd__0*d_z_b_q_r__q_r_td + _x19*_x22
+        d_z_b_q_thd__q_rd_td = _pd__0*d_z_b_q_r__q_rd_td
+        d_z_b_q_thd__q_th_td = _pd__0*d_z_b_q_r__q_th_td
+        d_z_b_q_thd__q_thd_td = _pd__0*d_z_b_q_r__q_thd_td + _x23
+        d_z_b_q_thd__k_c = _pd__0*d_z_b_q_r__k_c
+        z_lo_q_th = 0.0
+        z_lo_q_thd = 0.0
+        # tangents as every branch names them
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = 0.0
+        d_z_b_q_th__q_rd_td = 0.0
+        d_z_b_q_th__q_th_td = 1.0
+        d_z_b_q_th__q_thd_td = 0.0
+        d_z_b_q_th__k_c = 0.0
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = 0.0
+        d_z_lo_q_th__q_rd_td = 0.0
+        d_z_lo_q_th__q_th_td = 0.0
+        d_z_lo_q_th__q_thd_td = 0.0
+        d_z_lo_q_th__k_c = 0.0
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = 0.0
+        d_z_lo_q_thd__q_rd_td = 0.0
+        d_z_lo_q_thd__q_th_td = 0.0
+        d_z_lo_q_thd__q_thd_td = 0.0
+        d_z_lo_q_thd__k_c = 0.0
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 0.0:
-        # branch zeroth = 0
-        _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_1(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c1[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[10])
-        z_b_q_r = _c1[0]
-        z_b_q_r__tan = _c1[1]
-        z_b_q_th = _c1[2]
-        z_b_q_th__tan = _c1[3]
-        z_b_q_thd = _c1[4]
-        z_b_q_thd__tan = _c1[5]
-        z_lo_q_th = _c1[6]
-        z_lo_q_thd = _c1[7]
-        z_lo_q_th__tan = _c1[8]
-        z_lo_q_thd__tan = _c1[9]
+        # zeroth iterate: Geyer et al.'s approximate stance map
+        _c0 = geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
+        if _c0[60] != STATUS_OK:
+            return _NAN70 + (_c0[60],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _,
+            _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _, _j_z_b_q_r__q_thd_td, _j_z_b_q_r__k, _, _, _, _, _,
+            _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td,
+            _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _, _j_z_b_q_thd__q_thd_td,
+            _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td,
+            _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td,
+            _j_z_lo_q_thd__q_rd_td, _, _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _) = _c0
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = 0.0
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = 0.0
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = 0.0
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 2.0:
-        # branch zeroth = 2
-        _c2 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_2(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c2[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-        z_b_q_r = _c2[0]
-        z_b_q_r__tan = _c2[1]
-        z_b_q_th = _c2[2]
-        z_b_q_th__tan = _c2[3]
-        z_b_q_thd = _c2[4]
-        z_b_q_thd__tan = _c2[5]
-        z_lo_q_th = _c2[6]
-        z_lo_q_thd = _c2[7]
-        z_lo_q_th__tan = _c2[8]
-        z_lo_q_thd__tan = _c2[9]
+        # zeroth iterate: Gravity correction type 0 (leg length l0)
+        _c1 = (gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 1.0, 0.0))
+        if _c1[72] != STATUS_OK:
+            return _NAN70 + (_c1[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c1
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 3.0:
-        # branch zeroth = 3
-        _c3 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_3(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c3[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[10])
-        z_b_q_r = _c3[0]
-        z_b_q_r__tan = _c3[1]
-        z_b_q_th = _c3[2]
-        z_b_q_th__tan = _c3[3]
-        z_b_q_thd = _c3[4]
-        z_b_q_thd__tan = _c3[5]
-        z_lo_q_th = _c3[6]
-        z_lo_q_thd = _c3[7]
-        z_lo_q_th__tan = _c3[8]
-        z_lo_q_thd__tan = _c3[9]
+        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+        _c2 = (gravity_type1_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 100.0, 1e-12))
+        if _c2[72] != STATUS_OK:
+            return _NAN70 + (_c2[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c2
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 4.0:
-        # branch zeroth = 4
-        _c4 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_4(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c4[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[10])
-        z_b_q_r = _c4[0]
-        z_b_q_r__tan = _c4[1]
-        z_b_q_th = _c4[2]
-        z_b_q_th__tan = _c4[3]
-        z_b_q_thd = _c4[4]
-        z_b_q_thd__tan = _c4[5]
-        z_lo_q_th = _c4[6]
-        z_lo_q_thd = _c4[7]
-        z_lo_q_th__tan = _c4[8]
-        z_lo_q_thd__tan = _c4[9]
+        # zeroth iterate: Gravity correction type 2 (average leg length)
+        _c3 = (gravity_type2_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            2.0, 0.0, 100.0, 1e-12))
+        if _c3[72] != STATUS_OK:
+            return _NAN70 + (_c3[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c3
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 5.0:
-        # branch zeroth = 5
-        _c5 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_5(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c5[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[10])
-        z_b_q_r = _c5[0]
-        z_b_q_r__tan = _c5[1]
-        z_b_q_th = _c5[2]
-        z_b_q_th__tan = _c5[3]
-        z_b_q_thd = _c5[4]
-        z_b_q_thd__tan = _c5[5]
-        z_lo_q_th = _c5[6]
-        z_lo_q_thd = _c5[7]
-        z_lo_q_th__tan = _c5[8]
-        z_lo_q_thd__tan = _c5[9]
+        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+        _c4 = (gravity_type3_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            1.0, 100.0, 1e-12))
+        if _c4[72] != STATUS_OK:
+            return _NAN70 + (_c4[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c4
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 6.0:
-        # branch zeroth = 6
-        _c6 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_6(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c6[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c6[10])
-        z_b_q_r = _c6[0]
-        z_b_q_r__tan = _c6[1]
-        z_b_q_th = _c6[2]
-        z_b_q_th__tan = _c6[3]
-        z_b_q_thd = _c6[4]
-        z_b_q_thd__tan = _c6[5]
-        z_lo_q_th = _c6[6]
-        z_lo_q_thd = _c6[7]
-        z_lo_q_th__tan = _c6[8]
-        z_lo_q_thd__tan = _c6[9]
+        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+        _c5 = (gravity_type4_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0,
+            1.0, 0.0, 100.0, 1e-12))
+        if _c5[72] != STATUS_OK:
+            return _NAN70 + (_c5[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c5
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 7.0:
-        # branch zeroth = 7
-        _c7 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_7(g_s, k_c, k_c__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c7[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c7[10])
-        z_b_q_r = _c7[0]
-        z_b_q_r__tan = _c7[1]
-        z_b_q_th = _c7[2]
-        z_b_q_th__tan = _c7[3]
-        z_b_q_thd = _c7[4]
-        z_b_q_thd__tan = _c7[5]
-        z_lo_q_th = _c7[6]
-        z_lo_q_thd = _c7[7]
-        z_lo_q_th__tan = _c7[8]
-        z_lo_q_thd__tan = _c7[9]
+        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+        _c6 = (gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo,
+            100.0, 1e-12))
+        if _c6[72] != STATUS_OK:
+            return _NAN70 + (_c6[72],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td, _j_z_b_q_th__q_th_td,
+            _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k, _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td,
+            _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td, _j_z_b_q_thd__k, _, _, _, _, _, _, _, _, _, _,
+            _j_z_lo_q_th__q_r_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td,
+            _j_z_lo_q_th__k, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k, _, _, _, _, _, _, _, _, _, _, _) = _c6
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k
+        d_z_b_q_r__k_d = 0.0
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k
+        d_z_b_q_th__k_d = 0.0
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k
+        d_z_b_q_thd__k_d = 0.0
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k
+        d_z_lo_q_th__k_d = 0.0
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k
+        d_z_lo_q_thd__k_d = 0.0
     elif zeroth == 8.0:
-        # branch zeroth = 8
-        _c8 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_8(g_s, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, q_r_td, q_r_td__tan, q_rd_td, q_rd_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan)
-        if _c8[10] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c8[10])
-        z_b_q_r = _c8[0]
-        z_b_q_r__tan = _c8[1]
-        z_b_q_th = _c8[2]
-        z_b_q_th__tan = _c8[3]
-        z_b_q_thd = _c8[4]
-        z_b_q_thd__tan = _c8[5]
-        z_lo_q_th = _c8[6]
-        z_lo_q_thd = _c8[7]
-        z_lo_q_th__tan = _c8[8]
-        z_lo_q_thd__tan = _c8[9]
+        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+        _c7 = (geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0,
+            0.0, 100.0, 1e-12))
+        if _c7[91] != STATUS_OK:
+            return _NAN70 + (_c7[91],)
+        (_, _, z_b_q_r, _, z_b_q_th, z_b_q_thd, _, _, z_lo_q_th, z_lo_q_thd, _, _, _, _, _, _, _, _, _, _, _,
+            _, _, _, _, _j_z_b_q_r__q_r_td, _j_z_b_q_r__q_rd_td, _j_z_b_q_r__q_th_td, _j_z_b_q_r__q_thd_td,
+            _j_z_b_q_r__k_c, _j_z_b_q_r__k_d, _, _, _, _, _, _, _j_z_b_q_th__q_r_td, _j_z_b_q_th__q_rd_td,
+            _j_z_b_q_th__q_th_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_th__k_c, _j_z_b_q_th__k_d,
+            _j_z_b_q_thd__q_r_td, _j_z_b_q_thd__q_rd_td, _j_z_b_q_thd__q_th_td, _j_z_b_q_thd__q_thd_td,
+            _j_z_b_q_thd__k_c, _j_z_b_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _j_z_lo_q_th__q_r_td,
+            _j_z_lo_q_th__q_rd_td, _j_z_lo_q_th__q_th_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_th__k_c,
+            _j_z_lo_q_th__k_d, _j_z_lo_q_thd__q_r_td, _j_z_lo_q_thd__q_rd_td, _j_z_lo_q_thd__q_th_td,
+            _j_z_lo_q_thd__q_thd_td, _j_z_lo_q_thd__k_c, _j_z_lo_q_thd__k_d, _, _, _, _, _, _, _, _, _, _, _,
+            _, _, _, _, _, _, _, _) = _c7
+        # tangents as every branch names them
+        d_z_b_q_r__q_r_td = _j_z_b_q_r__q_r_td
+        d_z_b_q_r__q_rd_td = _j_z_b_q_r__q_rd_td
+        d_z_b_q_r__q_th_td = _j_z_b_q_r__q_th_td
+        d_z_b_q_r__q_thd_td = _j_z_b_q_r__q_thd_td
+        d_z_b_q_r__k_c = _j_z_b_q_r__k_c
+        d_z_b_q_r__k_d = _j_z_b_q_r__k_d
+        d_z_b_q_th__q_r_td = _j_z_b_q_th__q_r_td
+        d_z_b_q_th__q_rd_td = _j_z_b_q_th__q_rd_td
+        d_z_b_q_th__q_th_td = _j_z_b_q_th__q_th_td
+        d_z_b_q_th__q_thd_td = _j_z_b_q_th__q_thd_td
+        d_z_b_q_th__k_c = _j_z_b_q_th__k_c
+        d_z_b_q_th__k_d = _j_z_b_q_th__k_d
+        d_z_b_q_thd__q_r_td = _j_z_b_q_thd__q_r_td
+        d_z_b_q_thd__q_rd_td = _j_z_b_q_thd__q_rd_td
+        d_z_b_q_thd__q_th_td = _j_z_b_q_thd__q_th_td
+        d_z_b_q_thd__q_thd_td = _j_z_b_q_thd__q_thd_td
+        d_z_b_q_thd__k_c = _j_z_b_q_thd__k_c
+        d_z_b_q_thd__k_d = _j_z_b_q_thd__k_d
+        d_z_lo_q_th__q_r_td = _j_z_lo_q_th__q_r_td
+        d_z_lo_q_th__q_rd_td = _j_z_lo_q_th__q_rd_td
+        d_z_lo_q_th__q_th_td = _j_z_lo_q_th__q_th_td
+        d_z_lo_q_th__q_thd_td = _j_z_lo_q_th__q_thd_td
+        d_z_lo_q_th__k_c = _j_z_lo_q_th__k_c
+        d_z_lo_q_th__k_d = _j_z_lo_q_th__k_d
+        d_z_lo_q_thd__q_r_td = _j_z_lo_q_thd__q_r_td
+        d_z_lo_q_thd__q_rd_td = _j_z_lo_q_thd__q_rd_td
+        d_z_lo_q_thd__q_th_td = _j_z_lo_q_thd__q_th_td
+        d_z_lo_q_thd__q_thd_td = _j_z_lo_q_thd__q_thd_td
+        d_z_lo_q_thd__k_c = _j_z_lo_q_thd__k_c
+        d_z_lo_q_thd__k_d = _j_z_lo_q_thd__k_d
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN70 + (STATUS_INVALID_INPUT,)
     # E_ab (114) of the touchdown state
-    _x0 = l0*q_r_td
-    _x1 = (0.5)*l0**2
-    _x2 = q_r_td**2
-    _x3 = (0.5)*_x2
-    _x4 = g_s*m
-    _x5 = _x4*math.cos(q_th_td)
-    _x6 = m*q_thd_td**2
-    E_ab = -_x0*k_c + _x1*k_c + _x3*_x6 + _x3*k_c + _x5*q_r_td + (0.5)*m*q_rd_td**2
-    E_ab__tan = _x2*m*q_thd_td*q_thd_td__tan - _x4*q_r_td*q_th_td__tan*math.sin(q_th_td) + k_c__tan*(-_x0 + _x1 + _x3) + m*q_rd_td*q_rd_td__tan + q_r_td__tan*(_x5 + _x6*q_r_td - k_c*l0 + k_c*q_r_td)
+    _x25 = k_c*q_r_td
+    _x26 = (0.5)*l0**2
+    _x27 = q_r_td**2
+    _x28 = (0.5)*_x27
+    _x29 = g_s*m
+    _x30 = _x29*math.cos(q_th_td)
+    _x31 = m*q_thd_td**2
+    E_ab = -_x25*l0 + _x26*k_c + _x28*_x31 + _x28*k_c + _x30*q_r_td + (0.5)*m*q_rd_td**2
+    d_E_ab__q_r_td = _x25 + _x30 + _x31*q_r_td - k_c*l0
+    d_E_ab__q_rd_td = m*q_rd_td
+    d_E_ab__q_th_td = -_x29*q_r_td*math.sin(q_th_td)
+    d_E_ab__q_thd_td = _x27*m*q_thd_td
+    d_E_ab__k_c = _x26 + _x28 - l0*q_r_td
     # bottom leg length
     if bottom_length == 0.0:
-        # branch bottom_length = 0
-        _c9 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_9(z_b_q_r, z_b_q_r__tan)
-        if _c9[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c9[2])
-        bottom_q_r = _c9[0]
-        bottom_q_r__tan = _c9[1]
+        bottom_q_r = z_b_q_r
+        # tangents as every branch names them
+        d_bottom_q_r__q_r_td = d_z_b_q_r__q_r_td
+        d_bottom_q_r__q_rd_td = d_z_b_q_r__q_rd_td
+        d_bottom_q_r__q_th_td = d_z_b_q_r__q_th_td
+        d_bottom_q_r__q_thd_td = d_z_b_q_r__q_thd_td
+        d_bottom_q_r__k_c = d_z_b_q_r__k_c
+        d_bottom_q_r__k_d = d_z_b_q_r__k_d
     elif bottom_length == 1.0:
-        # branch bottom_length = 1
-        _c10 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_10(E_ab, E_ab__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_thd_td, q_thd_td__tan)
-        if _c10[2] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c10[2])
-        bottom_q_r = _c10[0]
-        bottom_q_r__tan = _c10[1]
+        # (153): the vertical bottom's quartic
+        _c8 = bottom_quartic_jac_p_E_ab_k_c(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c8[4] != STATUS_OK:
+            return _NAN70 + (_c8[4],)
+        bottom_q_r = _c8[0]
+        _j_bottom_q_r__p = _c8[1]
+        _j_bottom_q_r__E_ab = _c8[2]
+        _j_bottom_q_r__k_c = _c8[3]
+        # chain rule through bottom_quartic
+        _x32 = _j_bottom_q_r__p*m
+        d_bottom_q_r__q_r_td = _j_bottom_q_r__E_ab*d_E_ab__q_r_td + 2.0*_x32*q_r_td*q_thd_td
+        d_bottom_q_r__q_rd_td = _j_bottom_q_r__E_ab*d_E_ab__q_rd_td
+        d_bottom_q_r__q_th_td = _j_bottom_q_r__E_ab*d_E_ab__q_th_td
+        d_bottom_q_r__q_thd_td = _j_bottom_q_r__E_ab*d_E_ab__q_thd_td + _x32*q_r_td**2
+        d_bottom_q_r__k_c = _j_bottom_q_r__E_ab*d_E_ab__k_c + _j_bottom_q_r__k_c
+        # tangents as every branch names them
+        d_bottom_q_r__k_d = 0.0
     else:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+        return _NAN70 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
     if not ((bottom_q_r > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_FALL)
+        return _NAN70 + (STATUS_FALL,)
     # bottom below touchdown
     if not ((-bottom_q_r + q_r_td > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
+        return _NAN70 + (STATUS_NUMERICAL_RANGE,)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x7 = 4.0**(-iterations)
-    _x8 = bottom_q_r - q_r_td
-    _x9 = _x7*_x8
-    _x10 = _x7*bottom_q_r__tan
-    _x11 = _x7*q_r_td__tan
-    _x12 = _x10 - _x11
-    _x13 = (0.25)*_x9
-    _x14 = (0.25)*_x10 - 0.25*_x11
-    _x15 = _x13 + q_r_td
-    _x16 = _x15**2
-    _x17 = (1.0/_x16)
-    _x18 = _x15**4*m
-    _x19 = _x15**3
-    _x20 = l0**2*m
-    _x21 = _x16*_x20
-    _x22 = z_b_q_r**2
-    _x23 = _x22*m
-    _x24 = _x23*z_b_q_thd
-    _x25 = (0.25)*_x7
-    _x26 = math.sqrt(1.0 - _x25)
-    _x27 = m*q_r_td**2
-    _x28 = -_x24 + _x27*q_thd_td
-    _x29 = _x24 + _x26*_x28
-    _x30 = m**2
-    _x31 = q_th_td - z_b_q_th
-    _x32 = _x26*_x31 + z_b_q_th
-    _x33 = _x30*g_s*math.cos(_x32)
-    _x34 = 2.0*E_ab*_x16*m - _x18*k_c - 2.0*_x19*_x33 + 2.0*_x19*k_c*l0*m - _x21*k_c - _x29**2
-    _x35 = _x17*_x34
-    _x36 = 2.0*m
-    _x37 = 2.0*_x26
-    _x38 = _x30*g_s*math.sin(_x32)
-    _x39 = _x15*_x38
-    _x40 = _x17*_x29
-    _x41 = _x27*q_thd_td__tan
-    _x42 = 4.0*m
-    _x43 = z_b_q_r*z_b_q_thd
-    _x44 = (1.0/_x26)
-    _x45 = (1.0/_x8)
-    _x46 = _x31*_x45
-    _x47 = _x19*_x38*_x44*_x46
-    _x48 = _x25*_x47
-    _x49 = _x28*_x45
-    _x50 = _x44*_x49
-    _x51 = -2.0*_x34/_x19
-    _x52 = 2.0*q_r_td
-    _x53 = (0.5)*_x9
-    _x54 = _x52 + _x53
-    _x55 = -2.0*E_ab*_x54*m + 6.0*_x16*_x33 - 6.0*_x16*k_c*l0*m + _x19*_x42*k_c + _x20*_x54*k_c
-    _x56 = E_ab__tan*_x36 + _x14*(_x17*(_x28*_x29*_x44*_x45 - _x47 - _x55) + _x51) + _x17*bottom_q_r__tan*(-_x25*_x29*_x50 + _x48) + _x17*k_c__tan*(-_x18 + 2.0*_x19*l0*m - _x21) + _x37*_x39*q_th_td__tan - _x37*_x40*_x41 + 2.0*_x39*z_b_q_th__tan*(1.0 - _x26) - _x40*z_b_q_r__tan*(-_x26*_x42*_x43 + 4.0*m*z_b_q_r*z_b_q_thd) - _x40*z_b_q_thd__tan*(2.0*_x22*m - 2.0*_x23*_x26) + q_r_td__tan*(_x17*(-_x29*(-_x25*_x50 + _x26*_x42*q_r_td*q_thd_td) - _x48 - _x55) + _x51)
-    _x57 = math.sqrt(1.0 - _x7)
-    _x58 = (0.5)/_x57
-    _x59 = _x46*_x58
-    _x60 = _x12*_x58
-    _x61 = _x49*_x58
-    _x62 = m/math.sqrt(_x35)
-    _x63 = (_x35 > 0.0)
-    c_e_n = _x9
-    c_e_n__tan = _x12
-    c_e_z = _x13
-    c_e_z__tan = _x14
-    c_rad_z = _x35
-    c_rad_z__tan = _x56
-    c_Q0 = _x31*_x57 + z_b_q_th
-    c_Q0__tan = _x10*_x59 - _x11*_x59 - _x46*_x60 + _x57*q_th_td__tan + z_b_q_th__tan*(1.0 - _x57)
-    c_P0 = _x24 + _x28*_x57
-    c_P0__tan = _x10*_x61 + _x41*_x57 - _x49*_x60 + q_r_td__tan*(_x52*_x57*m*q_thd_td - _x61*_x7) + z_b_q_r__tan*(-_x36*_x43*_x57 + 2.0*m*z_b_q_r*z_b_q_thd) + z_b_q_thd__tan*(_x22*m - _x23*_x57)
-    c_T0 = ((-_x62*_x9) if _x63 else (0.0))
-    c_T0__tan = _x12*((-_x62) if _x63 else (0.0)) + _x56*((_x53*m/_x35**(1.5)) if _x63 else (0.0))
+    _x33 = 4.0**(-iterations)
+    _x34 = bottom_q_r - q_r_td
+    _x35 = _x33*_x34
+    c_e_n = _x35
+    _pd__1 = _x33
+    _x36 = -_x33
+    d_c_e_n__q_r_td = _pd__1*d_bottom_q_r__q_r_td + _x36
+    d_c_e_n__q_rd_td = _pd__1*d_bottom_q_r__q_rd_td
+    d_c_e_n__q_th_td = _pd__1*d_bottom_q_r__q_th_td
+    d_c_e_n__q_thd_td = _pd__1*d_bottom_q_r__q_thd_td
+    d_c_e_n__k_c = _pd__1*d_bottom_q_r__k_c
+    d_c_e_n__k_d = _pd__1*d_bottom_q_r__k_d
+    _x37 = (0.25)*_x35
+    c_e_z = _x37
+    _x38 = _x37 + q_r_td
+    _x39 = _x38**2
+    _x40 = (1.0/_x39)
+    _x41 = _x38**4*m
+    _x42 = _x38**3
+    _x43 = l0**2*m
+    _x44 = _x39*_x43
+    _x45 = z_b_q_r**2
+    _x46 = _x45*m
+    _x47 = _x46*z_b_q_thd
+    _x48 = (0.25)*_x33
+    _x49 = math.sqrt(1.0 - _x48)
+    _x50 = m*q_r_td**2
+    _x51 = -_x47 + _x50*q_thd_td
+    _x52 = _x47 + _x49*_x51
+    _x53 = m**2
+    _x54 = q_th_td - z_b_q_th
+    _x55 = _x49*_x54 + z_b_q_th
+    _x56 = _x53*g_s*math.cos(_x55)
+    _x57 = 2.0*E_ab*_x39*m - _x41*k_c - 2.0*_x42*_x56 + 2.0*_x42*k_c*l0*m - _x44*k_c - _x52**2
+    _x58 = _x40*_x57
+    c_rad_z = _x58
+    _x59 = (1.0/_x49)
+    _x60 = (1.0/_x34)
+    _x61 = _x54*_x60
+    _x62 = _x53*g_s*math.sin(_x55)
+    _x63 = _x42*_x59*_x61*_x62
+    _x64 = _x48*_x63
+    _x65 = _x51*_x60
+    _x66 = _x59*_x65
+    _pd__2 = _x40*(-_x48*_x52*_x66 + _x64)
+    _x67 = -2.0*_x57/_x42
+    _x68 = 2.0*q_r_td
+    _x69 = (0.5)*_x35
+    _x70 = _x68 + _x69
+    _x71 = 4.0*m
+    _x72 = -2.0*E_ab*_x70*m + 6.0*_x39*_x56 - 6.0*_x39*k_c*l0*m + _x42*_x71*k_c + _x43*_x70*k_c
+    _pd__3 = _x40*(_x51*_x52*_x59*_x60 - _x63 - _x72) + _x67
+    _x73 = z_b_q_r*z_b_q_thd
+    _x74 = _x40*_x52
+    _pd__4 = -_x74*(-_x49*_x71*_x73 + 4.0*m*z_b_q_r*z_b_q_thd)
+    _x75 = 2.0*_x38*_x62
+    _pd__5 = _x75*(1.0 - _x49)
+    _pd__6 = -_x74*(2.0*_x45*m - 2.0*_x46*_x49)
+    _x76 = (0.25)*_pd__3
+    _x77 = 2.0*m
+    d_c_rad_z__q_r_td = (_pd__2*d_bottom_q_r__q_r_td + _pd__4*d_z_b_q_r__q_r_td + _pd__5*d_z_b_q_th__q_r_td
+        + _pd__6*d_z_b_q_thd__q_r_td + _x40*(-_x52*(-_x48*_x66 + _x49*_x71*q_r_td*q_thd_td) - _x64 - _x72)
+        + _x67 + _x76*d_c_e_n__q_r_td + _x77*d_E_ab__q_r_td)
+    d_c_rad_z__q_rd_td = (_pd__2*d_bottom_q_r__q_rd_td + _pd__4*d_z_b_q_r__q_rd_td
+        + _pd__5*d_z_b_q_th__q_rd_td + _pd__6*d_z_b_q_thd__q_rd_td + _x76*d_c_e_n__q_rd_td
+        + _x77*d_E_ab__q_rd_td)
+    d_c_rad_z__q_th_td = (_pd__2*d_bottom_q_r__q_th_td + _pd__4*d_z_b_q_r__q_th_td
+        + _pd__5*d_z_b_q_th__q_th_td + _pd__6*d_z_b_q_thd__q_th_td + _x49*_x75 + _x76*d_c_e_n__q_th_td
+        + _x77*d_E_ab__q_th_td)
+    d_c_rad_z__q_thd_td = (_pd__2*d_bottom_q_r__q_thd_td + _pd__4*d_z_b_q_r__q_thd_td
+        + _pd__5*d_z_b_q_th__q_thd_td + _pd__6*d_z_b_q_thd__q_thd_td - 2.0*_x49*_x50*_x74
+        + _x76*d_c_e_n__q_thd_td + _x77*d_E_ab__q_thd_td)
+    d_c_rad_z__k_c = (_pd__2*d_bottom_q_r__k_c + _pd__4*d_z_b_q_r__k_c + _pd__5*d_z_b_q_th__k_c
+        + _pd__6*d_z_b_q_thd__k_c + _x40*(-_x41 + 2.0*_x42*l0*m - _x44) + _x76*d_c_e_n__k_c
+        + _x77*d_E_ab__k_c)
+    d_c_rad_z__k_d = (_pd__2*d_bottom_q_r__k_d + _pd__4*d_z_b_q_r__k_d + _pd__5*d_z_b_q_th__k_d
+        + _pd__6*d_z_b_q_thd__k_d + _x76*d_c_e_n__k_d)
+    _x78 = math.sqrt(_x36 + 1.0)
+    c_Q0 = _x54*_x78 + z_b_q_th
+    _x79 = (0.5)/_x78
+    _x80 = _x61*_x79
+    _x81 = _x33*_x80
+    _pd__7 = _x81
+    _pd__8 = -_x80
+    _pd__9 = 1.0 - _x78
+    d_c_Q0__q_r_td = _pd__7*d_bottom_q_r__q_r_td + _pd__8*d_c_e_n__q_r_td + _pd__9*d_z_b_q_th__q_r_td - _x81
+    d_c_Q0__q_rd_td = _pd__7*d_bottom_q_r__q_rd_td + _pd__8*d_c_e_n__q_rd_td + _pd__9*d_z_b_q_th__q_rd_td
+    d_c_Q0__q_th_td = (_pd__7*d_bottom_q_r__q_th_td + _pd__8*d_c_e_n__q_th_td + _pd__9*d_z_b_q_th__q_th_td
+        + _x78)
+    d_c_Q0__q_thd_td = _pd__7*d_bottom_q_r__q_thd_td + _pd__8*d_c_e_n__q_thd_td + _pd__9*d_z_b_q_th__q_thd_td
+    d_c_Q0__k_c = _pd__7*d_bottom_q_r__k_c + _pd__8*d_c_e_n__k_c + _pd__9*d_z_b_q_th__k_c
+    d_c_Q0__k_d = _pd__7*d_bottom_q_r__k_d + _pd__8*d_c_e_n__k_d + _pd__9*d_z_b_q_th__k_d
+    c_P0 = _x47 + _x51*_x78
+    _x82 = _x65*_x79
+    _x83 = _x33*_x82
+    _pd__10 = _x83
+    _pd__11 = -_x82
+    _pd__12 = -_x73*_x77*_x78 + 2.0*m*z_b_q_r*z_b_q_thd
+    _pd__13 = _x45*m - _x46*_x78
+    d_c_P0__q_r_td = (_pd__10*d_bottom_q_r__q_r_td + _pd__11*d_c_e_n__q_r_td + _pd__12*d_z_b_q_r__q_r_td
+        + _pd__13*d_z_b_q_thd__q_r_td + _x68*_x78*m*q_thd_td - _x83)
+    d_c_P0__q_rd_td = (_pd__10*d_bottom_q_r__q_rd_td + _pd__11*d_c_e_n__q_rd_td + _pd__12*d_z_b_q_r__q_rd_td
+        + _pd__13*d_z_b_q_thd__q_rd_td)
+    d_c_P0__q_th_td = (_pd__10*d_bottom_q_r__q_th_td + _pd__11*d_c_e_n__q_th_td + _pd__12*d_z_b_q_r__q_th_td
+        + _pd__13*d_z_b_q_thd__q_th_td)
+    d_c_P0__q_thd_td = (_pd__10*d_bottom_q_r__q_thd_td + _pd__11*d_c_e_n__q_thd_td
+        + _pd__12*d_z_b_q_r__q_thd_td + _pd__13*d_z_b_q_thd__q_thd_td + _x50*_x78)
+    d_c_P0__k_c = (_pd__10*d_bottom_q_r__k_c + _pd__11*d_c_e_n__k_c + _pd__12*d_z_b_q_r__k_c
+        + _pd__13*d_z_b_q_thd__k_c)
+    d_c_P0__k_d = (_pd__10*d_bottom_q_r__k_d + _pd__11*d_c_e_n__k_d + _pd__12*d_z_b_q_r__k_d
+        + _pd__13*d_z_b_q_thd__k_d)
+    _x84 = m/math.sqrt(_x58)
+    _x85 = (_x58 > 0.0)
+    c_T0 = ((-_x35*_x84) if _x85 else (0.0))
+    _pd__14 = ((-_x84) if _x85 else (0.0))
+    _pd__15 = ((_x69*m/_x58**(1.5)) if _x85 else (0.0))
+    d_c_T0__q_r_td = _pd__14*d_c_e_n__q_r_td + _pd__15*d_c_rad_z__q_r_td
+    d_c_T0__q_rd_td = _pd__14*d_c_e_n__q_rd_td + _pd__15*d_c_rad_z__q_rd_td
+    d_c_T0__q_th_td = _pd__14*d_c_e_n__q_th_td + _pd__15*d_c_rad_z__q_th_td
+    d_c_T0__q_thd_td = _pd__14*d_c_e_n__q_thd_td + _pd__15*d_c_rad_z__q_thd_td
+    d_c_T0__k_c = _pd__14*d_c_e_n__k_c + _pd__15*d_c_rad_z__k_c
+    d_c_T0__k_d = _pd__14*d_c_e_n__k_d + _pd__15*d_c_rad_z__k_d
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_IMAGINARY_MOMENTUM)
+        return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_e__tan = c_e_n__tan
-    c_Q__tan = c_Q0__tan
-    c_P__tan = c_P0__tan
-    c_T__tan = c_T0__tan
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (c_e_n, c_Q0, c_P0, c_T0, d_c_e_n__q_r_td, d_c_e_n__q_rd_td, d_c_e_n__q_th_td, d_c_e_n__q_thd_td,
+        d_c_e_n__k_c, d_c_e_n__k_d, d_c_Q0__q_r_td, d_c_Q0__q_rd_td, d_c_Q0__q_th_td, d_c_Q0__q_thd_td,
+        d_c_Q0__k_c, d_c_Q0__k_d, d_c_P0__q_r_td, d_c_P0__q_rd_td, d_c_P0__q_th_td, d_c_P0__q_thd_td,
+        d_c_P0__k_c, d_c_P0__k_d, d_c_T0__q_r_td, d_c_T0__q_rd_td, d_c_T0__q_th_td, d_c_T0__q_thd_td,
+        d_c_T0__k_c, d_c_T0__k_d, )
+    _pk0 = _pki0
     c_steps = 0.0
     _conv0 = False
-    for _it0 in range(int(iterations)):
-        # loop body
-        _c11 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_13(E_ab, E_ab__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_e, c_e__tan, g_s, k_c, k_c__tan, l0, m, q_r_td, q_r_td__tan, q_th_td, q_th_td__tan, q_thd_td, q_thd_td__tan, variant)
-        if _c11[8] != STATUS_OK:
-            return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c11[8])
-        _next_c_e = _c11[0]
-        _next_c_Q = _c11[1]
-        _next_c_P = _c11[2]
-        _next_c_T = _c11[3]
-        _next_c_e__tan = _c11[4]
-        _next_c_Q__tan = _c11[5]
-        _next_c_P__tan = _c11[6]
-        _next_c_T__tan = _c11[7]
-        _n0_0 = _next_c_e
-        _n0_1 = _next_c_Q
-        _n0_2 = _next_c_P
-        _n0_3 = _next_c_T
-        _n0_4 = _next_c_e__tan
-        _n0_5 = _next_c_Q__tan
-        _n0_6 = _next_c_P__tan
-        _n0_7 = _next_c_T__tan
+    _last0 = max(int(iterations), 0)
+    for _it0 in range(_last0 + 1):
+        (c_e, c_Q, c_P, c_T, d_c_e__q_r_td, d_c_e__q_rd_td, d_c_e__q_th_td, d_c_e__q_thd_td, d_c_e__k_c,
+            d_c_e__k_d, d_c_Q__q_r_td, d_c_Q__q_rd_td, d_c_Q__q_th_td, d_c_Q__q_thd_td, d_c_Q__k_c,
+            d_c_Q__k_d, d_c_P__q_r_td, d_c_P__q_rd_td, d_c_P__q_th_td, d_c_P__q_thd_td, d_c_P__k_c,
+            d_c_P__k_d, d_c_T__q_r_td, d_c_T__q_rd_td, d_c_T__q_th_td, d_c_T__q_thd_td, d_c_T__k_c,
+            d_c_T__k_d, ) = _pk0
+        if _conv0 or _it0 == _last0:
+            break
+        _x86 = c_e + q_r_td
+        c_x = _x86
+        d_c_x__q_r_td = d_c_e__q_r_td + 1.0
+        _x87 = _x86**2
+        _x88 = (1.0/_x87)
+        _x89 = _x86**4*m
+        _x90 = _x86**3
+        _x91 = l0**2
+        _x92 = _x87*_x91*m
+        _x93 = math.cos(c_Q)
+        _x94 = m**2
+        _x95 = 2.0*_x94*g_s
+        _x96 = 2.0*E_ab*_x87*m - _x89*k_c - _x90*_x93*_x95 + 2.0*_x90*k_c*l0*m - _x92*k_c - c_P**2
+        c_rad = _x88*_x96
+        _pd__16 = -2.0*_x88*c_P
+        _pd__17 = _x86*_x95*math.sin(c_Q)
+        _x97 = 2.0*m
+        _pd__18 = (_x88*(4.0*E_ab*_x86*m - _x86*_x91*_x97*k_c - 6.0*_x87*_x93*_x94*g_s + 6.0*_x87*k_c*l0*m
+            - 4.0*_x90*k_c*m) - 2.0*_x96/_x90)
+        d_c_rad__q_r_td = (_pd__16*d_c_P__q_r_td + _pd__17*d_c_Q__q_r_td + _pd__18*d_c_x__q_r_td
+            + _x97*d_E_ab__q_r_td)
+        d_c_rad__q_rd_td = (_pd__16*d_c_P__q_rd_td + _pd__17*d_c_Q__q_rd_td + _pd__18*d_c_e__q_rd_td
+            + _x97*d_E_ab__q_rd_td)
+        d_c_rad__q_th_td = (_pd__16*d_c_P__q_th_td + _pd__17*d_c_Q__q_th_td + _pd__18*d_c_e__q_th_td
+            + _x97*d_E_ab__q_th_td)
+        d_c_rad__q_thd_td = (_pd__16*d_c_P__q_thd_td + _pd__17*d_c_Q__q_thd_td + _pd__18*d_c_e__q_thd_td
+            + _x97*d_E_ab__q_thd_td)
+        d_c_rad__k_c = (_pd__16*d_c_P__k_c + _pd__17*d_c_Q__k_c + _pd__18*d_c_e__k_c + _x88*(-_x89
+            + 2.0*_x90*l0*m - _x92) + _x97*d_E_ab__k_c)
+        d_c_rad__k_d = _pd__16*d_c_P__k_d + _pd__17*d_c_Q__k_d + _pd__18*d_c_e__k_d
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
+        _x98 = math.sqrt(c_rad)
+        c_h = _x98
+        _pd__19 = (0.5)/_x98
+        d_c_h__q_r_td = _pd__19*d_c_rad__q_r_td
+        d_c_h__q_rd_td = _pd__19*d_c_rad__q_rd_td
+        d_c_h__q_th_td = _pd__19*d_c_rad__q_th_td
+        d_c_h__q_thd_td = _pd__19*d_c_rad__q_thd_td
+        d_c_h__k_c = _pd__19*d_c_rad__k_c
+        d_c_h__k_d = _pd__19*d_c_rad__k_d
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            _x102 = (1.0/c_x)
+            _x99 = _x102**2
+            c_wq = _x99*c_e_next
+            _pd__20 = _x99
+            _pd__21 = -2.0*_x102**3*c_e_next
+            _x100 = 4.0*_pd__20
+            d_c_wq__q_r_td = _pd__21*d_c_x__q_r_td + _x100*d_c_e__q_r_td
+            d_c_wq__q_rd_td = _pd__21*d_c_e__q_rd_td + _x100*d_c_e__q_rd_td
+            d_c_wq__q_th_td = _pd__21*d_c_e__q_th_td + _x100*d_c_e__q_th_td
+            d_c_wq__q_thd_td = _pd__21*d_c_e__q_thd_td + _x100*d_c_e__q_thd_td
+            d_c_wq__k_c = _pd__21*d_c_e__k_c + _x100*d_c_e__k_c
+            d_c_wq__k_d = _pd__21*d_c_e__k_d + _x100*d_c_e__k_d
+            c_wp = c_e_next*c_x
+            _x101 = 4.0*c_x
+            d_c_wp__q_r_td = _x101*d_c_e__q_r_td + c_e_next*d_c_x__q_r_td
+            d_c_wp__q_rd_td = _x101*d_c_e__q_rd_td + c_e_next*d_c_e__q_rd_td
+            d_c_wp__q_th_td = _x101*d_c_e__q_th_td + c_e_next*d_c_e__q_th_td
+            d_c_wp__q_thd_td = _x101*d_c_e__q_thd_td + c_e_next*d_c_e__q_thd_td
+            d_c_wp__k_c = _x101*d_c_e__k_c + c_e_next*d_c_e__k_c
+            d_c_wp__k_d = _x101*d_c_e__k_d + c_e_next*d_c_e__k_d
+        elif variant == 1.0:
+            _x103 = (1.0/q_r_td)
+            _x104 = c_e_next + q_r_td
+            _x105 = (1.0/_x104)
+            c_wq = _x103*_x105*c_e_next
+            _x106 = _x103*_x105**2*c_e_next
+            _pd__22 = _x103*_x105 - _x106
+            d_c_wq__q_r_td = 4.0*_pd__22*d_c_e__q_r_td - _x103**2*_x105*c_e_next - _x106
+            _x107 = 4.0*_pd__22
+            d_c_wq__q_rd_td = _x107*d_c_e__q_rd_td
+            d_c_wq__q_th_td = _x107*d_c_e__q_th_td
+            d_c_wq__q_thd_td = _x107*d_c_e__q_thd_td
+            d_c_wq__k_c = _x107*d_c_e__k_c
+            d_c_wq__k_d = _x107*d_c_e__k_d
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+            _pd__23 = _x104
+            _x108 = 4.0*_pd__23
+            d_c_wp__q_r_td = _x108*d_c_e__q_r_td + c_e_next
+            d_c_wp__q_rd_td = _x108*d_c_e__q_rd_td
+            d_c_wp__q_th_td = _x108*d_c_e__q_th_td
+            d_c_wp__q_thd_td = _x108*d_c_e__q_thd_td
+            d_c_wp__k_c = _x108*d_c_e__k_c
+            d_c_wp__k_d = _x108*d_c_e__k_d
+        else:
+            return _NAN70 + (STATUS_INVALID_INPUT,)
+        # next values
+        c_e__next = c_e_next
+        _x109 = (1.0/c_h)
+        _x110 = _x109*c_wq
+        c_Q__next = -_x110*c_P + q_th_td
+        _pd__24 = -_x110
+        _x111 = _x109**2
+        _pd__25 = _x111*c_P*c_wq
+        _pd__26 = -_x109*c_P
+        d_c_Q__next__q_r_td = _pd__24*d_c_P__q_r_td + _pd__25*d_c_h__q_r_td + _pd__26*d_c_wq__q_r_td
+        d_c_Q__next__q_rd_td = _pd__24*d_c_P__q_rd_td + _pd__25*d_c_h__q_rd_td + _pd__26*d_c_wq__q_rd_td
+        d_c_Q__next__q_th_td = _pd__24*d_c_P__q_th_td + _pd__25*d_c_h__q_th_td + _pd__26*d_c_wq__q_th_td + 1.0
+        d_c_Q__next__q_thd_td = _pd__24*d_c_P__q_thd_td + _pd__25*d_c_h__q_thd_td + _pd__26*d_c_wq__q_thd_td
+        d_c_Q__next__k_c = _pd__24*d_c_P__k_c + _pd__25*d_c_h__k_c + _pd__26*d_c_wq__k_c
+        d_c_Q__next__k_d = _pd__24*d_c_P__k_d + _pd__25*d_c_h__k_d + _pd__26*d_c_wq__k_d
+        _x112 = m*q_r_td**2
+        _x113 = math.sin(c_Q)
+        _x114 = m**2
+        _x115 = _x109*_x114*g_s
+        _x116 = _x113*_x115
+        c_P__next = _x112*q_thd_td - _x116*c_wp
+        _pd__27 = -_x115*c_wp*math.cos(c_Q)
+        _pd__28 = _x111*_x113*_x114*c_wp*g_s
+        _pd__29 = -_x116
+        d_c_P__next__q_r_td = (_pd__27*d_c_Q__q_r_td + _pd__28*d_c_h__q_r_td + _pd__29*d_c_wp__q_r_td
+            + 2.0*m*q_r_td*q_thd_td)
+        d_c_P__next__q_rd_td = _pd__27*d_c_Q__q_rd_td + _pd__28*d_c_h__q_rd_td + _pd__29*d_c_wp__q_rd_td
+        d_c_P__next__q_th_td = _pd__27*d_c_Q__q_th_td + _pd__28*d_c_h__q_th_td + _pd__29*d_c_wp__q_th_td
+        d_c_P__next__q_thd_td = (_pd__27*d_c_Q__q_thd_td + _pd__28*d_c_h__q_thd_td + _pd__29*d_c_wp__q_thd_td
+            + _x112)
+        d_c_P__next__k_c = _pd__27*d_c_Q__k_c + _pd__28*d_c_h__k_c + _pd__29*d_c_wp__k_c
+        d_c_P__next__k_d = _pd__27*d_c_Q__k_d + _pd__28*d_c_h__k_d + _pd__29*d_c_wp__k_d
+        _x117 = _x109*m
+        c_T__next = -_x117*c_e_next
+        _pd__30 = -_x117
+        _pd__31 = _x111*c_e_next*m
+        _x118 = 4.0*_pd__30
+        d_c_T__next__q_r_td = _pd__31*d_c_h__q_r_td + _x118*d_c_e__q_r_td
+        d_c_T__next__q_rd_td = _pd__31*d_c_h__q_rd_td + _x118*d_c_e__q_rd_td
+        d_c_T__next__q_th_td = _pd__31*d_c_h__q_th_td + _x118*d_c_e__q_th_td
+        d_c_T__next__q_thd_td = _pd__31*d_c_h__q_thd_td + _x118*d_c_e__q_thd_td
+        d_c_T__next__k_c = _pd__31*d_c_h__k_c + _x118*d_c_e__k_c
+        d_c_T__next__k_d = _pd__31*d_c_h__k_d + _x118*d_c_e__k_d
+        _n0_4 = 4.0*d_c_e__q_r_td
+        _n0_5 = 4.0*d_c_e__q_rd_td
+        _n0_6 = 4.0*d_c_e__q_th_td
+        _n0_7 = 4.0*d_c_e__q_thd_td
+        _n0_8 = 4.0*d_c_e__k_c
+        _n0_9 = 4.0*d_c_e__k_d
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = 0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0)) and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T) <= 0.0*(math.sqrt(l0)/math.sqrt(g_s)))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_e__tan = _n0_4
-        c_Q__tan = _n0_5
-        c_P__tan = _n0_6
-        c_T__tan = _n0_7
+        _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
+            d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
+            d_c_Q__next__k_c, d_c_Q__next__k_d, d_c_P__next__q_r_td, d_c_P__next__q_rd_td,
+            d_c_P__next__q_th_td, d_c_P__next__q_thd_td, d_c_P__next__k_c, d_c_P__next__k_d,
+            d_c_T__next__q_r_td, d_c_T__next__q_rd_td, d_c_T__next__q_th_td, d_c_T__next__q_thd_td,
+            d_c_T__next__k_c, d_c_T__next__k_d, )
+        _pk0 = _pkn0
         c_steps += 1.0
-        if _conv0:
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    _x119 = (1.0/m)
+    _x121 = (1.0/bottom_q_r)
+    _x120 = _x119*_x121**2
+    bottom_q_thd = _x120*c_P
+    _pd__32 = -2.0*_x119*_x121**3*c_P
+    _pd__33 = _x120
+    d_bottom_q_thd__q_r_td = _pd__32*d_bottom_q_r__q_r_td + _pd__33*d_c_P__q_r_td
+    d_bottom_q_thd__q_rd_td = _pd__32*d_bottom_q_r__q_rd_td + _pd__33*d_c_P__q_rd_td
+    d_bottom_q_thd__q_th_td = _pd__32*d_bottom_q_r__q_th_td + _pd__33*d_c_P__q_th_td
+    d_bottom_q_thd__q_thd_td = _pd__32*d_bottom_q_r__q_thd_td + _pd__33*d_c_P__q_thd_td
+    d_bottom_q_thd__k_c = _pd__32*d_bottom_q_r__k_c + _pd__33*d_c_P__k_c
+    d_bottom_q_thd__k_d = _pd__32*d_bottom_q_r__k_d + _pd__33*d_c_P__k_d
+    # E_ba of (98): the energy jump of the stiffness switch
+    _x122 = (-bottom_q_r + l0)**2
+    _x123 = -0.5*k_c + (0.5)*k_d
+    E_ba = E_ab + _x122*_x123
+    _pd__34 = _x123*(2.0*bottom_q_r - 2.0*l0)
+    d_E_ba__q_r_td = _pd__34*d_bottom_q_r__q_r_td + d_E_ab__q_r_td
+    d_E_ba__q_rd_td = _pd__34*d_bottom_q_r__q_rd_td + d_E_ab__q_rd_td
+    d_E_ba__q_th_td = _pd__34*d_bottom_q_r__q_th_td + d_E_ab__q_th_td
+    d_E_ba__q_thd_td = _pd__34*d_bottom_q_r__q_thd_td + d_E_ab__q_thd_td
+    _x124 = (0.5)*_x122
+    d_E_ba__k_c = _pd__34*d_bottom_q_r__k_c - _x124 + d_E_ab__k_c
+    d_E_ba__k_d = _pd__34*d_bottom_q_r__k_d + _x124
+    # zeroth iterate at liftoff
+    _x125 = (zeroth == 1.0)
+    g_lo_q_th = ((bottom_q_th) if _x125 else (z_lo_q_th))
+    _pd__35 = ((1.0) if _x125 else (0.0))
+    _x126 = ((0.0) if _x125 else (1.0))
+    _pd__36 = _x126
+    d_g_lo_q_th__q_r_td = _pd__35*d_c_Q__q_r_td + _pd__36*d_z_lo_q_th__q_r_td
+    d_g_lo_q_th__q_rd_td = _pd__35*d_c_Q__q_rd_td + _pd__36*d_z_lo_q_th__q_rd_td
+    d_g_lo_q_th__q_th_td = _pd__35*d_c_Q__q_th_td + _pd__36*d_z_lo_q_th__q_th_td
+    d_g_lo_q_th__q_thd_td = _pd__35*d_c_Q__q_thd_td + _pd__36*d_z_lo_q_th__q_thd_td
+    d_g_lo_q_th__k_c = _pd__35*d_c_Q__k_c + _pd__36*d_z_lo_q_th__k_c
+    d_g_lo_q_th__k_d = _pd__35*d_c_Q__k_d + _pd__36*d_z_lo_q_th__k_d
+    _x127 = q_r_lo**-2
+    _x128 = _x127*bottom_q_r**2
+    g_lo_q_thd = ((_x128*bottom_q_thd) if _x125 else (z_lo_q_thd))
+    _pd__37 = ((2.0*_x127*bottom_q_r*bottom_q_thd) if _x125 else (0.0))
+    _pd__38 = ((_x128) if _x125 else (0.0))
+    _pd__39 = _x126
+    d_g_lo_q_thd__q_r_td = (_pd__37*d_bottom_q_r__q_r_td + _pd__38*d_bottom_q_thd__q_r_td
+        + _pd__39*d_z_lo_q_thd__q_r_td)
+    d_g_lo_q_thd__q_rd_td = (_pd__37*d_bottom_q_r__q_rd_td + _pd__38*d_bottom_q_thd__q_rd_td
+        + _pd__39*d_z_lo_q_thd__q_rd_td)
+    d_g_lo_q_thd__q_th_td = (_pd__37*d_bottom_q_r__q_th_td + _pd__38*d_bottom_q_thd__q_th_td
+        + _pd__39*d_z_lo_q_thd__q_th_td)
+    d_g_lo_q_thd__q_thd_td = (_pd__37*d_bottom_q_r__q_thd_td + _pd__38*d_bottom_q_thd__q_thd_td
+        + _pd__39*d_z_lo_q_thd__q_thd_td)
+    d_g_lo_q_thd__k_c = _pd__37*d_bottom_q_r__k_c + _pd__38*d_bottom_q_thd__k_c + _pd__39*d_z_lo_q_thd__k_c
+    d_g_lo_q_thd__k_d = _pd__37*d_bottom_q_r__k_d + _pd__38*d_bottom_q_thd__k_d + _pd__39*d_z_lo_q_thd__k_d
+    # bottom below q_r_lo
+    if not ((-bottom_q_r + q_r_lo > 0.0)):
+        return _NAN70 + (STATUS_NO_LIFTOFF,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x129 = 4.0**(-iterations)
+    _x130 = -bottom_q_r + q_r_lo
+    _x131 = _x129*_x130
+    d_e_n = _x131
+    _pd__40 = -_x129
+    d_d_e_n__q_r_td = _pd__40*d_bottom_q_r__q_r_td
+    d_d_e_n__q_rd_td = _pd__40*d_bottom_q_r__q_rd_td
+    d_d_e_n__q_th_td = _pd__40*d_bottom_q_r__q_th_td
+    d_d_e_n__q_thd_td = _pd__40*d_bottom_q_r__q_thd_td
+    d_d_e_n__k_c = _pd__40*d_bottom_q_r__k_c
+    d_d_e_n__k_d = _pd__40*d_bottom_q_r__k_d
+    _x132 = (0.25)*_x131
+    d_e_z = _x132
+    _x133 = _x132 + bottom_q_r
+    _x134 = _x133**2
+    _x135 = (1.0/_x134)
+    _x136 = _x133**4*m
+    _x137 = _x133**3
+    _x138 = l0**2*m
+    _x139 = _x134*_x138
+    _x140 = bottom_q_r**2*m
+    _x141 = _x140*bottom_q_thd
+    _x142 = q_r_lo**2
+    _x143 = -_x141 + _x142*g_lo_q_thd*m
+    _x144 = 4.0**((0.5)*iterations)
+    _x145 = (1.0/_x144)
+    _x146 = (0.5)*_x145
+    _x147 = _x143*_x146
+    _x148 = _x141 + _x147
+    _x149 = -bottom_q_th + g_lo_q_th
+    _x150 = _x146*_x149
+    _x151 = _x150 + bottom_q_th
+    _x152 = m**2
+    _x153 = _x152*g_s
+    _x154 = _x153*math.cos(_x151)
+    _x155 = 2.0*E_ba*_x134*m - _x136*k_d - 2.0*_x137*_x154 + 2.0*_x137*k_d*l0*m - _x139*k_d - _x148**2
+    _x156 = _x135*_x155
+    d_rad_z = _x156
+    _x157 = -2.0*_x155/_x137
+    _x158 = 4.0*m
+    _x159 = (1.0/_x130)
+    _x160 = 2.0*bottom_q_r
+    _x161 = _x160*bottom_q_thd*m
+    _x162 = -_x145*_x161 + _x147*_x159
+    _x163 = math.sin(_x151)
+    _x164 = (0.5)*_x131
+    _x165 = _x160 + _x164
+    _x166 = -2.0*E_ba*_x165*m + 6.0*_x134*_x154 - 6.0*_x134*k_d*l0*m + _x137*_x158*k_d + _x138*_x165*k_d
+    _pd__41 = (_x135*((0.5)*_x137*_x145*_x149*_x152*_x159*_x163*g_s - _x148*(_x158*bottom_q_r*bottom_q_thd
+        + _x162) - _x166) + _x157)
+    _x167 = _x133*_x153*_x163
+    _pd__42 = 2.0*_x167*(1.0 - _x146)
+    _x168 = -_x140*_x145
+    _x169 = _x135*_x148
+    _pd__43 = -_x169*(2.0*_x140 + _x168)
+    _x170 = _x144*_x159
+    _pd__44 = _x135*(2.0*_x137*_x144*_x149*_x152*_x159*_x163*g_s - 2.0*_x143*_x148*_x170 - _x166) + _x157
+    _pd__45 = _x145*_x167
+    _x171 = _x142*_x145*m
+    _pd__46 = -_x169*_x171
+    _x172 = (0.25)*_pd__44
+    _x173 = 2.0*m
+    d_d_rad_z__q_r_td = (_pd__41*d_bottom_q_r__q_r_td + _pd__42*d_c_Q__q_r_td + _pd__43*d_bottom_q_thd__q_r_td
+        + _pd__45*d_g_lo_q_th__q_r_td + _pd__46*d_g_lo_q_thd__q_r_td + _x172*d_d_e_n__q_r_td
+        + _x173*d_E_ba__q_r_td)
+    d_d_rad_z__q_rd_td = (_pd__41*d_bottom_q_r__q_rd_td + _pd__42*d_c_Q__q_rd_td
+        + _pd__43*d_bottom_q_thd__q_rd_td + _pd__45*d_g_lo_q_th__q_rd_td + _pd__46*d_g_lo_q_thd__q_rd_td
+        + _x172*d_d_e_n__q_rd_td + _x173*d_E_ba__q_rd_td)
+    d_d_rad_z__q_th_td = (_pd__41*d_bottom_q_r__q_th_td + _pd__42*d_c_Q__q_th_td
+        + _pd__43*d_bottom_q_thd__q_th_td + _pd__45*d_g_lo_q_th__q_th_td + _pd__46*d_g_lo_q_thd__q_th_td
+        + _x172*d_d_e_n__q_th_td + _x173*d_E_ba__q_th_td)
+    d_d_rad_z__q_thd_td = (_pd__41*d_bottom_q_r__q_thd_td + _pd__42*d_c_Q__q_thd_td
+        + _pd__43*d_bottom_q_thd__q_thd_td + _pd__45*d_g_lo_q_th__q_thd_td + _pd__46*d_g_lo_q_thd__q_thd_td
+        + _x172*d_d_e_n__q_thd_td + _x173*d_E_ba__q_thd_td)
+    d_d_rad_z__k_c = (_pd__41*d_bottom_q_r__k_c + _pd__42*d_c_Q__k_c + _pd__43*d_bottom_q_thd__k_c
+        + _pd__45*d_g_lo_q_th__k_c + _pd__46*d_g_lo_q_thd__k_c + _x172*d_d_e_n__k_c + _x173*d_E_ba__k_c)
+    d_d_rad_z__k_d = (_pd__41*d_bottom_q_r__k_d + _pd__42*d_c_Q__k_d + _pd__43*d_bottom_q_thd__k_d
+        + _pd__45*d_g_lo_q_th__k_d + _pd__46*d_g_lo_q_thd__k_d + _x135*(-_x136 + 2.0*_x137*l0*m - _x139)
+        + _x172*d_d_e_n__k_d + _x173*d_E_ba__k_d)
+    d_Q0 = _x145*_x149 + bottom_q_th
+    _pd__47 = _x150*_x159
+    _pd__48 = 1.0 - _x145
+    _x174 = (0.5)*_x170
+    _pd__49 = _x149*_x174
+    _pd__50 = _x145
+    d_d_Q0__q_r_td = (_pd__47*d_bottom_q_r__q_r_td + _pd__48*d_c_Q__q_r_td + _pd__49*d_d_e_n__q_r_td
+        + _pd__50*d_g_lo_q_th__q_r_td)
+    d_d_Q0__q_rd_td = (_pd__47*d_bottom_q_r__q_rd_td + _pd__48*d_c_Q__q_rd_td + _pd__49*d_d_e_n__q_rd_td
+        + _pd__50*d_g_lo_q_th__q_rd_td)
+    d_d_Q0__q_th_td = (_pd__47*d_bottom_q_r__q_th_td + _pd__48*d_c_Q__q_th_td + _pd__49*d_d_e_n__q_th_td
+        + _pd__50*d_g_lo_q_th__q_th_td)
+    d_d_Q0__q_thd_td = (_pd__47*d_bottom_q_r__q_thd_td + _pd__48*d_c_Q__q_thd_td + _pd__49*d_d_e_n__q_thd_td
+        + _pd__50*d_g_lo_q_th__q_thd_td)
+    d_d_Q0__k_c = (_pd__47*d_bottom_q_r__k_c + _pd__48*d_c_Q__k_c + _pd__49*d_d_e_n__k_c
+        + _pd__50*d_g_lo_q_th__k_c)
+    d_d_Q0__k_d = (_pd__47*d_bottom_q_r__k_d + _pd__48*d_c_Q__k_d + _pd__49*d_d_e_n__k_d
+        + _pd__50*d_g_lo_q_th__k_d)
+    d_P0 = _x141 + _x143*_x145
+    _pd__51 = _x161 + _x162
+    _pd__52 = _x140 + _x168
+    _pd__53 = _x143*_x174
+    _pd__54 = _x171
+    d_d_P0__q_r_td = (_pd__51*d_bottom_q_r__q_r_td + _pd__52*d_bottom_q_thd__q_r_td + _pd__53*d_d_e_n__q_r_td
+        + _pd__54*d_g_lo_q_thd__q_r_td)
+    d_d_P0__q_rd_td = (_pd__51*d_bottom_q_r__q_rd_td + _pd__52*d_bottom_q_thd__q_rd_td
+        + _pd__53*d_d_e_n__q_rd_td + _pd__54*d_g_lo_q_thd__q_rd_td)
+    d_d_P0__q_th_td = (_pd__51*d_bottom_q_r__q_th_td + _pd__52*d_bottom_q_thd__q_th_td
+        + _pd__53*d_d_e_n__q_th_td + _pd__54*d_g_lo_q_thd__q_th_td)
+    d_d_P0__q_thd_td = (_pd__51*d_bottom_q_r__q_thd_td + _pd__52*d_bottom_q_thd__q_thd_td
+        + _pd__53*d_d_e_n__q_thd_td + _pd__54*d_g_lo_q_thd__q_thd_td)
+    d_d_P0__k_c = (_pd__51*d_bottom_q_r__k_c + _pd__52*d_bottom_q_thd__k_c + _pd__53*d_d_e_n__k_c
+        + _pd__54*d_g_lo_q_thd__k_c)
+    d_d_P0__k_d = (_pd__51*d_bottom_q_r__k_d + _pd__52*d_bottom_q_thd__k_d + _pd__53*d_d_e_n__k_d
+        + _pd__54*d_g_lo_q_thd__k_d)
+    _x175 = m/math.sqrt(_x156)
+    _x176 = (_x156 > 0.0)
+    d_T0 = ((_x131*_x175 + t_bottom) if _x176 else (t_bottom))
+    _pd__55 = ((_x175) if _x176 else (0.0))
+    _pd__56 = ((-_x164*m/_x156**(1.5)) if _x176 else (0.0))
+    d_d_T0__q_r_td = _pd__55*d_d_e_n__q_r_td + _pd__56*d_d_rad_z__q_r_td + d_c_T__q_r_td
+    d_d_T0__q_rd_td = _pd__55*d_d_e_n__q_rd_td + _pd__56*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
+    d_d_T0__q_th_td = _pd__55*d_d_e_n__q_th_td + _pd__56*d_d_rad_z__q_th_td + d_c_T__q_th_td
+    d_d_T0__q_thd_td = _pd__55*d_d_e_n__q_thd_td + _pd__56*d_d_rad_z__q_thd_td + d_c_T__q_thd_td
+    d_d_T0__k_c = _pd__55*d_d_e_n__k_c + _pd__56*d_d_rad_z__k_c + d_c_T__k_c
+    d_d_T0__k_d = _pd__55*d_d_e_n__k_d + _pd__56*d_d_rad_z__k_d + d_c_T__k_d
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((d_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki1 = (d_e_n, d_Q0, d_P0, d_T0, d_d_e_n__q_r_td, d_d_e_n__q_rd_td, d_d_e_n__q_th_td, d_d_e_n__q_thd_td,
+        d_d_e_n__k_c, d_d_e_n__k_d, d_d_Q0__q_r_td, d_d_Q0__q_rd_td, d_d_Q0__q_th_td, d_d_Q0__q_thd_td,
+        d_d_Q0__k_c, d_d_Q0__k_d, d_d_P0__q_r_td, d_d_P0__q_rd_td, d_d_P0__q_th_td, d_d_P0__q_thd_td,
+        d_d_P0__k_c, d_d_P0__k_d, d_d_T0__q_r_td, d_d_T0__q_rd_td, d_d_T0__q_th_td, d_d_T0__q_thd_td,
+        d_d_T0__k_c, d_d_T0__k_d, )
+    _pk1 = _pki1
+    d_steps = 0.0
+    _conv1 = False
+    _last1 = max(int(iterations), 0)
+    for _it1 in range(_last1 + 1):
+        (d_e, d_Q, d_P, d_T, d_d_e__q_r_td, d_d_e__q_rd_td, d_d_e__q_th_td, d_d_e__q_thd_td, d_d_e__k_c,
+            d_d_e__k_d, d_d_Q__q_r_td, d_d_Q__q_rd_td, d_d_Q__q_th_td, d_d_Q__q_thd_td, d_d_Q__k_c,
+            d_d_Q__k_d, d_d_P__q_r_td, d_d_P__q_rd_td, d_d_P__q_th_td, d_d_P__q_thd_td, d_d_P__k_c,
+            d_d_P__k_d, d_d_T__q_r_td, d_d_T__q_rd_td, d_d_T__q_th_td, d_d_T__q_thd_td, d_d_T__k_c,
+            d_d_T__k_d, ) = _pk1
+        if _conv1 or _it1 == _last1:
             break
-    # continuation
-    _c12 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d_18(E_ab, E_ab__tan, bottom_q_r, bottom_q_r__tan, c_P, c_P__tan, c_Q, c_Q__tan, c_T, c_T__tan, g_s, iterations, k_c, k_c__tan, k_d, k_d__tan, l0, m, q_r_lo, variant, z_lo_q_th, z_lo_q_th__tan, z_lo_q_thd, z_lo_q_thd__tan, zeroth)
-    if _c12[18] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c12[18])
-    t_bottom = _c12[0]
-    t_stance = _c12[1]
-    bottom_q_rd = _c12[2]
-    bottom_q_th = _c12[3]
-    bottom_q_thd = _c12[4]
-    liftoff_q_r = _c12[5]
-    liftoff_q_rd = _c12[6]
-    liftoff_q_th = _c12[7]
-    liftoff_q_thd = _c12[8]
-    t_bottom__tan = _c12[9]
-    t_stance__tan = _c12[10]
-    bottom_q_rd__tan = _c12[11]
-    bottom_q_th__tan = _c12[12]
-    bottom_q_thd__tan = _c12[13]
-    liftoff_q_r__tan = _c12[14]
-    liftoff_q_rd__tan = _c12[15]
-    liftoff_q_th__tan = _c12[16]
-    liftoff_q_thd__tan = _c12[17]
-    # (internal helper: its callers check that their outputs are finite)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, t_bottom__tan, t_stance__tan, bottom_q_r__tan, bottom_q_rd__tan, bottom_q_th__tan, bottom_q_thd__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length):
-    """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with respect to the touchdown state and the stiffness.
-
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_t_bottom__q_r_td: d t_bottom / d q_r_td
-        d_t_bottom__q_rd_td: d t_bottom / d q_rd_td
-        d_t_bottom__q_th_td: d t_bottom / d q_th_td
-        d_t_bottom__q_thd_td: d t_bottom / d q_thd_td
-        d_t_bottom__k_c: d t_bottom / d k_c
-        d_t_bottom__k_d: d t_bottom / d k_d
-        d_t_stance__q_r_td: d t_stance / d q_r_td
-        d_t_stance__q_rd_td: d t_stance / d q_rd_td
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__q_thd_td: d t_stance / d q_thd_td
-        d_t_stance__k_c: d t_stance / d k_c
-        d_t_stance__k_d: d t_stance / d k_d
-        d_bottom_q_r__q_r_td: d bottom_q_r / d q_r_td
-        d_bottom_q_r__q_rd_td: d bottom_q_r / d q_rd_td
-        d_bottom_q_r__q_th_td: d bottom_q_r / d q_th_td
-        d_bottom_q_r__q_thd_td: d bottom_q_r / d q_thd_td
-        d_bottom_q_r__k_c: d bottom_q_r / d k_c
-        d_bottom_q_r__k_d: d bottom_q_r / d k_d
-        d_bottom_q_rd__q_r_td: d bottom_q_rd / d q_r_td
-        d_bottom_q_rd__q_rd_td: d bottom_q_rd / d q_rd_td
-        d_bottom_q_rd__q_th_td: d bottom_q_rd / d q_th_td
-        d_bottom_q_rd__q_thd_td: d bottom_q_rd / d q_thd_td
-        d_bottom_q_rd__k_c: d bottom_q_rd / d k_c
-        d_bottom_q_rd__k_d: d bottom_q_rd / d k_d
-        d_bottom_q_th__q_r_td: d bottom_q_th / d q_r_td
-        d_bottom_q_th__q_rd_td: d bottom_q_th / d q_rd_td
-        d_bottom_q_th__q_th_td: d bottom_q_th / d q_th_td
-        d_bottom_q_th__q_thd_td: d bottom_q_th / d q_thd_td
-        d_bottom_q_th__k_c: d bottom_q_th / d k_c
-        d_bottom_q_th__k_d: d bottom_q_th / d k_d
-        d_bottom_q_thd__q_r_td: d bottom_q_thd / d q_r_td
-        d_bottom_q_thd__q_rd_td: d bottom_q_thd / d q_rd_td
-        d_bottom_q_thd__q_th_td: d bottom_q_thd / d q_th_td
-        d_bottom_q_thd__q_thd_td: d bottom_q_thd / d q_thd_td
-        d_bottom_q_thd__k_c: d bottom_q_thd / d k_c
-        d_bottom_q_thd__k_d: d bottom_q_thd / d k_d
-        d_liftoff_q_r__q_r_td: d liftoff_q_r / d q_r_td
-        d_liftoff_q_r__q_rd_td: d liftoff_q_r / d q_rd_td
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__q_thd_td: d liftoff_q_r / d q_thd_td
-        d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
-        d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
-        d_liftoff_q_rd__q_r_td: d liftoff_q_rd / d q_r_td
-        d_liftoff_q_rd__q_rd_td: d liftoff_q_rd / d q_rd_td
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__q_thd_td: d liftoff_q_rd / d q_thd_td
-        d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
-        d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
-        d_liftoff_q_th__q_r_td: d liftoff_q_th / d q_r_td
-        d_liftoff_q_th__q_rd_td: d liftoff_q_th / d q_rd_td
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__q_thd_td: d liftoff_q_th / d q_thd_td
-        d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
-        d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
-        d_liftoff_q_thd__q_r_td: d liftoff_q_thd / d q_r_td
-        d_liftoff_q_thd__q_rd_td: d liftoff_q_thd / d q_rd_td
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__q_thd_td: d liftoff_q_thd / d q_thd_td
-        d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
-        d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td) and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to q_r_td
-    _c0 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[20])
-    d_t_bottom__q_r_td = _c0[10]
-    d_t_stance__q_r_td = _c0[11]
-    d_bottom_q_r__q_r_td = _c0[12]
-    d_bottom_q_rd__q_r_td = _c0[13]
-    d_bottom_q_th__q_r_td = _c0[14]
-    d_bottom_q_thd__q_r_td = _c0[15]
-    d_liftoff_q_r__q_r_td = _c0[16]
-    d_liftoff_q_rd__q_r_td = _c0[17]
-    d_liftoff_q_th__q_r_td = _c0[18]
-    d_liftoff_q_thd__q_r_td = _c0[19]
-    t_bottom = _c0[0]
-    t_stance = _c0[1]
-    bottom_q_r = _c0[2]
-    bottom_q_rd = _c0[3]
-    bottom_q_th = _c0[4]
-    bottom_q_thd = _c0[5]
-    liftoff_q_r = _c0[6]
-    liftoff_q_rd = _c0[7]
-    liftoff_q_th = _c0[8]
-    liftoff_q_thd = _c0[9]
-    # derivatives with respect to q_rd_td
-    _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    d_t_bottom__q_rd_td = _c1[10]
-    d_t_stance__q_rd_td = _c1[11]
-    d_bottom_q_r__q_rd_td = _c1[12]
-    d_bottom_q_rd__q_rd_td = _c1[13]
-    d_bottom_q_th__q_rd_td = _c1[14]
-    d_bottom_q_thd__q_rd_td = _c1[15]
-    d_liftoff_q_r__q_rd_td = _c1[16]
-    d_liftoff_q_rd__q_rd_td = _c1[17]
-    d_liftoff_q_th__q_rd_td = _c1[18]
-    d_liftoff_q_thd__q_rd_td = _c1[19]
-    # derivatives with respect to q_th_td
-    _c2 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c2[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[20])
-    d_t_bottom__q_th_td = _c2[10]
-    d_t_stance__q_th_td = _c2[11]
-    d_bottom_q_r__q_th_td = _c2[12]
-    d_bottom_q_rd__q_th_td = _c2[13]
-    d_bottom_q_th__q_th_td = _c2[14]
-    d_bottom_q_thd__q_th_td = _c2[15]
-    d_liftoff_q_r__q_th_td = _c2[16]
-    d_liftoff_q_rd__q_th_td = _c2[17]
-    d_liftoff_q_th__q_th_td = _c2[18]
-    d_liftoff_q_thd__q_th_td = _c2[19]
-    # derivatives with respect to q_thd_td
-    _c3 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c3[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[20])
-    d_t_bottom__q_thd_td = _c3[10]
-    d_t_stance__q_thd_td = _c3[11]
-    d_bottom_q_r__q_thd_td = _c3[12]
-    d_bottom_q_rd__q_thd_td = _c3[13]
-    d_bottom_q_th__q_thd_td = _c3[14]
-    d_bottom_q_thd__q_thd_td = _c3[15]
-    d_liftoff_q_r__q_thd_td = _c3[16]
-    d_liftoff_q_rd__q_thd_td = _c3[17]
-    d_liftoff_q_th__q_thd_td = _c3[18]
-    d_liftoff_q_thd__q_thd_td = _c3[19]
-    # derivatives with respect to k_c
-    _c4 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c4[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[20])
-    d_t_bottom__k_c = _c4[10]
-    d_t_stance__k_c = _c4[11]
-    d_bottom_q_r__k_c = _c4[12]
-    d_bottom_q_rd__k_c = _c4[13]
-    d_bottom_q_th__k_c = _c4[14]
-    d_bottom_q_thd__k_c = _c4[15]
-    d_liftoff_q_r__k_c = _c4[16]
-    d_liftoff_q_rd__k_c = _c4[17]
-    d_liftoff_q_th__k_c = _c4[18]
-    d_liftoff_q_thd__k_c = _c4[19]
-    # derivatives with respect to k_d
-    _c5 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c5[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[20])
-    d_t_bottom__k_d = _c5[10]
-    d_t_stance__k_d = _c5[11]
-    d_bottom_q_r__k_d = _c5[12]
-    d_bottom_q_rd__k_d = _c5[13]
-    d_bottom_q_th__k_d = _c5[14]
-    d_bottom_q_thd__k_d = _c5[15]
-    d_liftoff_q_r__k_d = _c5[16]
-    d_liftoff_q_rd__k_d = _c5[17]
-    d_liftoff_q_th__k_d = _c5[18]
-    d_liftoff_q_thd__k_d = _c5[19]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(d_t_bottom__q_r_td) and math.isfinite(d_t_bottom__q_rd_td) and math.isfinite(d_t_bottom__q_th_td) and math.isfinite(d_t_bottom__q_thd_td) and math.isfinite(d_t_bottom__k_c) and math.isfinite(d_t_bottom__k_d) and math.isfinite(d_t_stance__q_r_td) and math.isfinite(d_t_stance__q_rd_td) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__q_thd_td) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_bottom_q_r__q_r_td) and math.isfinite(d_bottom_q_r__q_rd_td) and math.isfinite(d_bottom_q_r__q_th_td) and math.isfinite(d_bottom_q_r__q_thd_td) and math.isfinite(d_bottom_q_r__k_c) and math.isfinite(d_bottom_q_r__k_d) and math.isfinite(d_bottom_q_rd__q_r_td) and math.isfinite(d_bottom_q_rd__q_rd_td) and math.isfinite(d_bottom_q_rd__q_th_td) and math.isfinite(d_bottom_q_rd__q_thd_td) and math.isfinite(d_bottom_q_rd__k_c) and math.isfinite(d_bottom_q_rd__k_d) and math.isfinite(d_bottom_q_th__q_r_td) and math.isfinite(d_bottom_q_th__q_rd_td) and math.isfinite(d_bottom_q_th__q_th_td) and math.isfinite(d_bottom_q_th__q_thd_td) and math.isfinite(d_bottom_q_th__k_c) and math.isfinite(d_bottom_q_th__k_d) and math.isfinite(d_bottom_q_thd__q_r_td) and math.isfinite(d_bottom_q_thd__q_rd_td) and math.isfinite(d_bottom_q_thd__q_th_td) and math.isfinite(d_bottom_q_thd__q_thd_td) and math.isfinite(d_bottom_q_thd__k_c) and math.isfinite(d_bottom_q_thd__k_d) and math.isfinite(d_liftoff_q_r__q_r_td) and math.isfinite(d_liftoff_q_r__q_rd_td) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__q_thd_td) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__q_r_td) and math.isfinite(d_liftoff_q_rd__q_rd_td) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__q_thd_td) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__q_r_td) and math.isfinite(d_liftoff_q_th__q_rd_td) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__q_thd_td) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__q_r_td) and math.isfinite(d_liftoff_q_thd__q_rd_td) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__q_thd_td) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
+        _x177 = bottom_q_r + d_e
+        d_x = _x177
+        d_d_x__q_r_td = d_bottom_q_r__q_r_td + d_d_e__q_r_td
+        d_d_x__q_rd_td = d_bottom_q_r__q_rd_td + d_d_e__q_rd_td
+        d_d_x__q_th_td = d_bottom_q_r__q_th_td + d_d_e__q_th_td
+        d_d_x__q_thd_td = d_bottom_q_r__q_thd_td + d_d_e__q_thd_td
+        d_d_x__k_c = d_bottom_q_r__k_c + d_d_e__k_c
+        d_d_x__k_d = d_bottom_q_r__k_d + d_d_e__k_d
+        _x178 = _x177**2
+        _x179 = (1.0/_x178)
+        _x180 = _x177**4*m
+        _x181 = _x177**3
+        _x182 = l0**2
+        _x183 = _x178*_x182*m
+        _x184 = math.cos(d_Q)
+        _x185 = m**2
+        _x186 = 2.0*_x185*g_s
+        _x187 = 2.0*E_ba*_x178*m - _x180*k_d - _x181*_x184*_x186 + 2.0*_x181*k_d*l0*m - _x183*k_d - d_P**2
+        d_rad = _x179*_x187
+        _pd__57 = -2.0*_x179*d_P
+        _pd__58 = _x177*_x186*math.sin(d_Q)
+        _x188 = 2.0*m
+        _pd__59 = (_x179*(4.0*E_ba*_x177*m - _x177*_x182*_x188*k_d - 6.0*_x178*_x184*_x185*g_s
+            + 6.0*_x178*k_d*l0*m - 4.0*_x181*k_d*m) - 2.0*_x187/_x181)
+        d_d_rad__q_r_td = (_pd__57*d_d_P__q_r_td + _pd__58*d_d_Q__q_r_td + _pd__59*d_d_x__q_r_td
+            + _x188*d_E_ba__q_r_td)
+        d_d_rad__q_rd_td = (_pd__57*d_d_P__q_rd_td + _pd__58*d_d_Q__q_rd_td + _pd__59*d_d_x__q_rd_td
+            + _x188*d_E_ba__q_rd_td)
+        d_d_rad__q_th_td = (_pd__57*d_d_P__q_th_td + _pd__58*d_d_Q__q_th_td + _pd__59*d_d_x__q_th_td
+            + _x188*d_E_ba__q_th_td)
+        d_d_rad__q_thd_td = (_pd__57*d_d_P__q_thd_td + _pd__58*d_d_Q__q_thd_td + _pd__59*d_d_x__q_thd_td
+            + _x188*d_E_ba__q_thd_td)
+        d_d_rad__k_c = _pd__57*d_d_P__k_c + _pd__58*d_d_Q__k_c + _pd__59*d_d_x__k_c + _x188*d_E_ba__k_c
+        d_d_rad__k_d = (_pd__57*d_d_P__k_d + _pd__58*d_d_Q__k_d + _pd__59*d_d_x__k_d + _x179*(-_x180
+            + 2.0*_x181*l0*m - _x183) + _x188*d_E_ba__k_d)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((d_rad > 0.0)):
+            return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
+        _x189 = math.sqrt(d_rad)
+        d_h = _x189
+        _pd__60 = (0.5)/_x189
+        d_d_h__q_r_td = _pd__60*d_d_rad__q_r_td
+        d_d_h__q_rd_td = _pd__60*d_d_rad__q_rd_td
+        d_d_h__q_th_td = _pd__60*d_d_rad__q_th_td
+        d_d_h__q_thd_td = _pd__60*d_d_rad__q_thd_td
+        d_d_h__k_c = _pd__60*d_d_rad__k_c
+        d_d_h__k_d = _pd__60*d_d_rad__k_d
+        d_e_next = 4.0*d_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            _x193 = (1.0/d_x)
+            _x190 = _x193**2
+            d_wq = _x190*d_e_next
+            _pd__61 = _x190
+            _pd__62 = -2.0*_x193**3*d_e_next
+            _x191 = 4.0*_pd__61
+            d_d_wq__q_r_td = _pd__62*d_d_x__q_r_td + _x191*d_d_e__q_r_td
+            d_d_wq__q_rd_td = _pd__62*d_d_x__q_rd_td + _x191*d_d_e__q_rd_td
+            d_d_wq__q_th_td = _pd__62*d_d_x__q_th_td + _x191*d_d_e__q_th_td
+            d_d_wq__q_thd_td = _pd__62*d_d_x__q_thd_td + _x191*d_d_e__q_thd_td
+            d_d_wq__k_c = _pd__62*d_d_x__k_c + _x191*d_d_e__k_c
+            d_d_wq__k_d = _pd__62*d_d_x__k_d + _x191*d_d_e__k_d
+            d_wp = d_e_next*d_x
+            _x192 = 4.0*d_x
+            d_d_wp__q_r_td = _x192*d_d_e__q_r_td + d_d_x__q_r_td*d_e_next
+            d_d_wp__q_rd_td = _x192*d_d_e__q_rd_td + d_d_x__q_rd_td*d_e_next
+            d_d_wp__q_th_td = _x192*d_d_e__q_th_td + d_d_x__q_th_td*d_e_next
+            d_d_wp__q_thd_td = _x192*d_d_e__q_thd_td + d_d_x__q_thd_td*d_e_next
+            d_d_wp__k_c = _x192*d_d_e__k_c + d_d_x__k_c*d_e_next
+            d_d_wp__k_d = _x192*d_d_e__k_d + d_d_x__k_d*d_e_next
+        elif variant == 1.0:
+            _x194 = (1.0/bottom_q_r)
+            _x195 = bottom_q_r + d_e_next
+            _x196 = (1.0/_x195)
+            d_wq = _x194*_x196*d_e_next
+            _x197 = _x194*_x196**2*d_e_next
+            _pd__63 = -_x194**2*_x196*d_e_next - _x197
+            _pd__64 = _x194*_x196 - _x197
+            _x198 = 4.0*_pd__64
+            d_d_wq__q_r_td = _pd__63*d_bottom_q_r__q_r_td + _x198*d_d_e__q_r_td
+            d_d_wq__q_rd_td = _pd__63*d_bottom_q_r__q_rd_td + _x198*d_d_e__q_rd_td
+            d_d_wq__q_th_td = _pd__63*d_bottom_q_r__q_th_td + _x198*d_d_e__q_th_td
+            d_d_wq__q_thd_td = _pd__63*d_bottom_q_r__q_thd_td + _x198*d_d_e__q_thd_td
+            d_d_wq__k_c = _pd__63*d_bottom_q_r__k_c + _x198*d_d_e__k_c
+            d_d_wq__k_d = _pd__63*d_bottom_q_r__k_d + _x198*d_d_e__k_d
+            d_wp = (0.5)*d_e_next*(2.0*bottom_q_r + d_e_next)
+            _pd__65 = _x195
+            _x199 = 4.0*_pd__65
+            d_d_wp__q_r_td = _x199*d_d_e__q_r_td + d_bottom_q_r__q_r_td*d_e_next
+            d_d_wp__q_rd_td = _x199*d_d_e__q_rd_td + d_bottom_q_r__q_rd_td*d_e_next
+            d_d_wp__q_th_td = _x199*d_d_e__q_th_td + d_bottom_q_r__q_th_td*d_e_next
+            d_d_wp__q_thd_td = _x199*d_d_e__q_thd_td + d_bottom_q_r__q_thd_td*d_e_next
+            d_d_wp__k_c = _x199*d_d_e__k_c + d_bottom_q_r__k_c*d_e_next
+            d_d_wp__k_d = _x199*d_d_e__k_d + d_bottom_q_r__k_d*d_e_next
+        else:
+            return _NAN70 + (STATUS_INVALID_INPUT,)
+        # next values
+        d_e__next = d_e_next
+        _x200 = (1.0/d_h)
+        _x201 = _x200*d_wq
+        d_Q__next = _x201*d_P + bottom_q_th
+        _pd__66 = _x201
+        _x202 = _x200**2
+        _pd__67 = -_x202*d_P*d_wq
+        _pd__68 = _x200*d_P
+        d_d_Q__next__q_r_td = (_pd__66*d_d_P__q_r_td + _pd__67*d_d_h__q_r_td + _pd__68*d_d_wq__q_r_td
+            + d_c_Q__q_r_td)
+        d_d_Q__next__q_rd_td = (_pd__66*d_d_P__q_rd_td + _pd__67*d_d_h__q_rd_td + _pd__68*d_d_wq__q_rd_td
+            + d_c_Q__q_rd_td)
+        d_d_Q__next__q_th_td = (_pd__66*d_d_P__q_th_td + _pd__67*d_d_h__q_th_td + _pd__68*d_d_wq__q_th_td
+            + d_c_Q__q_th_td)
+        d_d_Q__next__q_thd_td = (_pd__66*d_d_P__q_thd_td + _pd__67*d_d_h__q_thd_td + _pd__68*d_d_wq__q_thd_td
+            + d_c_Q__q_thd_td)
+        d_d_Q__next__k_c = _pd__66*d_d_P__k_c + _pd__67*d_d_h__k_c + _pd__68*d_d_wq__k_c + d_c_Q__k_c
+        d_d_Q__next__k_d = _pd__66*d_d_P__k_d + _pd__67*d_d_h__k_d + _pd__68*d_d_wq__k_d + d_c_Q__k_d
+        _x203 = bottom_q_r**2*m
+        _x204 = math.sin(d_Q)
+        _x205 = m**2
+        _x206 = _x200*_x205*g_s
+        _x207 = _x204*_x206
+        d_P__next = _x203*bottom_q_thd + _x207*d_wp
+        _pd__69 = 2.0*bottom_q_r*bottom_q_thd*m
+        _pd__70 = _x203
+        _pd__71 = _x206*d_wp*math.cos(d_Q)
+        _pd__72 = -_x202*_x204*_x205*d_wp*g_s
+        _pd__73 = _x207
+        d_d_P__next__q_r_td = (_pd__69*d_bottom_q_r__q_r_td + _pd__70*d_bottom_q_thd__q_r_td
+            + _pd__71*d_d_Q__q_r_td + _pd__72*d_d_h__q_r_td + _pd__73*d_d_wp__q_r_td)
+        d_d_P__next__q_rd_td = (_pd__69*d_bottom_q_r__q_rd_td + _pd__70*d_bottom_q_thd__q_rd_td
+            + _pd__71*d_d_Q__q_rd_td + _pd__72*d_d_h__q_rd_td + _pd__73*d_d_wp__q_rd_td)
+        d_d_P__next__q_th_td = (_pd__69*d_bottom_q_r__q_th_td + _pd__70*d_bottom_q_thd__q_th_td
+            + _pd__71*d_d_Q__q_th_td + _pd__72*d_d_h__q_th_td + _pd__73*d_d_wp__q_th_td)
+        d_d_P__next__q_thd_td = (_pd__69*d_bottom_q_r__q_thd_td + _pd__70*d_bottom_q_thd__q_thd_td
+            + _pd__71*d_d_Q__q_thd_td + _pd__72*d_d_h__q_thd_td + _pd__73*d_d_wp__q_thd_td)
+        d_d_P__next__k_c = (_pd__69*d_bottom_q_r__k_c + _pd__70*d_bottom_q_thd__k_c + _pd__71*d_d_Q__k_c
+            + _pd__72*d_d_h__k_c + _pd__73*d_d_wp__k_c)
+        d_d_P__next__k_d = (_pd__69*d_bottom_q_r__k_d + _pd__70*d_bottom_q_thd__k_d + _pd__71*d_d_Q__k_d
+            + _pd__72*d_d_h__k_d + _pd__73*d_d_wp__k_d)
+        _x208 = _x200*m
+        d_T__next = _x208*d_e_next + t_bottom
+        _pd__74 = _x208
+        _pd__75 = -_x202*d_e_next*m
+        _x209 = 4.0*_pd__74
+        d_d_T__next__q_r_td = _pd__75*d_d_h__q_r_td + _x209*d_d_e__q_r_td + d_c_T__q_r_td
+        d_d_T__next__q_rd_td = _pd__75*d_d_h__q_rd_td + _x209*d_d_e__q_rd_td + d_c_T__q_rd_td
+        d_d_T__next__q_th_td = _pd__75*d_d_h__q_th_td + _x209*d_d_e__q_th_td + d_c_T__q_th_td
+        d_d_T__next__q_thd_td = _pd__75*d_d_h__q_thd_td + _x209*d_d_e__q_thd_td + d_c_T__q_thd_td
+        d_d_T__next__k_c = _pd__75*d_d_h__k_c + _x209*d_d_e__k_c + d_c_T__k_c
+        d_d_T__next__k_d = _pd__75*d_d_h__k_d + _x209*d_d_e__k_d + d_c_T__k_d
+        _n1_4 = 4.0*d_d_e__q_r_td
+        _n1_5 = 4.0*d_d_e__q_rd_td
+        _n1_6 = 4.0*d_d_e__q_th_td
+        _n1_7 = 4.0*d_d_e__q_thd_td
+        _n1_8 = 4.0*d_d_e__k_c
+        _n1_9 = 4.0*d_d_e__k_d
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
+            d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
+            d_d_Q__next__k_c, d_d_Q__next__k_d, d_d_P__next__q_r_td, d_d_P__next__q_rd_td,
+            d_d_P__next__q_th_td, d_d_P__next__q_thd_td, d_d_P__next__k_c, d_d_P__next__k_d,
+            d_d_T__next__q_r_td, d_d_T__next__q_rd_td, d_d_T__next__q_th_td, d_d_T__next__q_thd_td,
+            d_d_T__next__k_c, d_d_T__next__k_d, )
+        _pk1 = _pkn1
+        d_steps += 1.0
+    # (45) corrected: p_r of the iterate at q_r_lo
+    _x210 = q_r_lo**2
+    _x211 = (1.0/_x210)
+    _x212 = m*q_r_lo**4
+    _x213 = q_r_lo**3
+    _x214 = _x210*l0**2*m
+    _x215 = 2.0*g_s*m**2
+    rad_lo = (_x211*(2.0*E_ba*_x210*m - _x212*k_d - _x213*_x215*math.cos(d_Q) + 2.0*_x213*k_d*l0*m - _x214*k_d
+        - d_P**2))
+    _pd__76 = -2.0*_x211*d_P
+    _pd__77 = _x215*q_r_lo*math.sin(d_Q)
+    _x216 = 2.0*m
+    d_rad_lo__q_r_td = _pd__76*d_d_P__q_r_td + _pd__77*d_d_Q__q_r_td + _x216*d_E_ba__q_r_td
+    d_rad_lo__q_rd_td = _pd__76*d_d_P__q_rd_td + _pd__77*d_d_Q__q_rd_td + _x216*d_E_ba__q_rd_td
+    d_rad_lo__q_th_td = _pd__76*d_d_P__q_th_td + _pd__77*d_d_Q__q_th_td + _x216*d_E_ba__q_th_td
+    d_rad_lo__q_thd_td = _pd__76*d_d_P__q_thd_td + _pd__77*d_d_Q__q_thd_td + _x216*d_E_ba__q_thd_td
+    d_rad_lo__k_c = _pd__76*d_d_P__k_c + _pd__77*d_d_Q__k_c + _x216*d_E_ba__k_c
+    d_rad_lo__k_d = (_pd__76*d_d_P__k_d + _pd__77*d_d_Q__k_d + _x211*(-_x212 + 2.0*_x213*l0*m - _x214)
+        + _x216*d_E_ba__k_d)
+    # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
+    if not ((rad_lo > 0.0)):
+        return _NAN70 + (STATUS_IMAGINARY_MOMENTUM,)
+    # liftoff state
+    t_stance = d_T
+    liftoff_q_r = q_r_lo
+    _x217 = (1.0/m)
+    _x218 = math.sqrt(rad_lo)
+    liftoff_q_rd = _x217*_x218
+    _pd__78 = (0.5)*_x217/_x218
+    d_liftoff_q_rd__q_r_td = _pd__78*d_rad_lo__q_r_td
+    d_liftoff_q_rd__q_rd_td = _pd__78*d_rad_lo__q_rd_td
+    d_liftoff_q_rd__q_th_td = _pd__78*d_rad_lo__q_th_td
+    d_liftoff_q_rd__q_thd_td = _pd__78*d_rad_lo__q_thd_td
+    d_liftoff_q_rd__k_c = _pd__78*d_rad_lo__k_c
+    d_liftoff_q_rd__k_d = _pd__78*d_rad_lo__k_d
+    liftoff_q_th = d_Q
+    _x219 = _x217/q_r_lo**2
+    liftoff_q_thd = _x219*d_P
+    _pd__79 = _x219
+    d_liftoff_q_thd__q_r_td = _pd__79*d_d_P__q_r_td
+    d_liftoff_q_thd__q_rd_td = _pd__79*d_d_P__q_rd_td
+    d_liftoff_q_thd__q_th_td = _pd__79*d_d_P__q_th_td
+    d_liftoff_q_thd__q_thd_td = _pd__79*d_d_P__q_thd_td
+    d_liftoff_q_thd__k_c = _pd__79*d_d_P__k_c
+    d_liftoff_q_thd__k_d = _pd__79*d_d_P__k_d
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN70 + (STATUS_FALL,)
+    # derivatives of the outputs
+    d_t_bottom__q_r_td = d_c_T__q_r_td
+    d_t_bottom__q_rd_td = d_c_T__q_rd_td
+    d_t_bottom__q_th_td = d_c_T__q_th_td
+    d_t_bottom__q_thd_td = d_c_T__q_thd_td
+    d_t_bottom__k_c = d_c_T__k_c
+    d_t_bottom__k_d = d_c_T__k_d
+    d_t_stance__q_r_td = d_d_T__q_r_td
+    d_t_stance__q_rd_td = d_d_T__q_rd_td
+    d_t_stance__q_th_td = d_d_T__q_th_td
+    d_t_stance__q_thd_td = d_d_T__q_thd_td
+    d_t_stance__k_c = d_d_T__k_c
+    d_t_stance__k_d = d_d_T__k_d
+    d_bottom_q_rd__q_r_td = 0.0
+    d_bottom_q_rd__q_rd_td = 0.0
+    d_bottom_q_rd__q_th_td = 0.0
+    d_bottom_q_rd__q_thd_td = 0.0
+    d_bottom_q_rd__k_c = 0.0
+    d_bottom_q_rd__k_d = 0.0
+    d_bottom_q_th__q_r_td = d_c_Q__q_r_td
+    d_bottom_q_th__q_rd_td = d_c_Q__q_rd_td
+    d_bottom_q_th__q_th_td = d_c_Q__q_th_td
+    d_bottom_q_th__q_thd_td = d_c_Q__q_thd_td
+    d_bottom_q_th__k_c = d_c_Q__k_c
+    d_bottom_q_th__k_d = d_c_Q__k_d
+    d_liftoff_q_r__q_r_td = 0.0
+    d_liftoff_q_r__q_rd_td = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__q_thd_td = 0.0
+    d_liftoff_q_r__k_c = 0.0
+    d_liftoff_q_r__k_d = 0.0
+    d_liftoff_q_th__q_r_td = d_d_Q__q_r_td
+    d_liftoff_q_th__q_rd_td = d_d_Q__q_rd_td
+    d_liftoff_q_th__q_th_td = d_d_Q__q_th_td
+    d_liftoff_q_th__q_thd_td = d_d_Q__q_thd_td
+    d_liftoff_q_th__k_c = d_d_Q__k_c
+    d_liftoff_q_th__k_d = d_d_Q__k_d
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd)):
+        return _NAN70 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td,
+        d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td,
+        d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c,
+        d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td,
+        d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td,
+        d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c,
+        d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td,
+        d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c,
+        d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td,
+        d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_stance_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth,
+    bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
+    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
+    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
+    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
+    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
+    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
+    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
+    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c,
+            k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1910,19 +1473,25 @@ def iterative_report_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan):
-    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, as printed), with the derivative of every output along the direction (b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan, k_c__tan, k_d__tan).
+def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
+    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
 
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
         q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
@@ -1933,14 +1502,12 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-        b_y_apex__tan: direction: its component along b_y_apex
-        b_xd_apex__tan: direction: its component along b_xd_apex
-        q_th_td__tan: direction: its component along q_th_td
-        ground__tan: direction: its component along ground
-        k_c__tan: direction: its component along k_c
-        k_d__tan: direction: its component along k_d
+        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
+            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
+            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
+            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1955,320 +1522,241 @@ def iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        apex_height__tan: derivative of apex_height along the direction
-        apex_speed__tan: derivative of apex_speed along the direction
-        t_descent__tan: derivative of t_descent along the direction
-        t_stance__tan: derivative of t_stance along the direction
-        t_ascent__tan: derivative of t_ascent along the direction
-        liftoff_q_r__tan: derivative of liftoff_q_r along the direction
-        liftoff_q_rd__tan: derivative of liftoff_q_rd along the direction
-        liftoff_q_th__tan: derivative of liftoff_q_th along the direction
-        liftoff_q_thd__tan: derivative of liftoff_q_thd along the direction
-        step_length__tan: derivative of step_length along the direction
-        foot_x__tan: derivative of foot_x along the direction
-        foot_y__tan: derivative of foot_y along the direction
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 5
+    # Total ops: 184
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and math.isfinite(b_y_apex__tan) and math.isfinite(b_xd_apex__tan) and math.isfinite(q_th_td__tan) and math.isfinite(ground__tan) and math.isfinite(k_c__tan) and math.isfinite(k_d__tan) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
+            <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0)
+            or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0)
+            or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0)
+            or (bottom_length == 1.0))):
+        return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = apex_to_touchdown_jvp_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground, b_y_apex__tan, b_xd_apex__tan, q_th_td__tan, ground__tan)
-    if _c0[12] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[12])
-    td_q_r = _c0[0]
-    td_q_rd = _c0[1]
-    td_q_th = _c0[2]
-    td_q_thd = _c0[3]
-    t_descent = _c0[4]
-    foot_x = _c0[5]
-    td_q_r__tan = _c0[6]
-    td_q_rd__tan = _c0[7]
-    td_q_th__tan = _c0[8]
-    td_q_thd__tan = _c0[9]
-    t_descent__tan = _c0[10]
-    foot_x__tan = _c0[11]
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
+    if _c0[30] != STATUS_OK:
+        return _NAN84 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _c1 = iterative_report_stance_jvp_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c_k_d(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, zeroth, bottom_length, td_q_r__tan, td_q_rd__tan, td_q_th__tan, td_q_thd__tan, k_c__tan, k_d__tan)
-    if _c1[20] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[20])
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    t_stance__tan = _c1[11]
-    liftoff_q_r__tan = _c1[16]
-    liftoff_q_rd__tan = _c1[17]
-    liftoff_q_th__tan = _c1[18]
-    liftoff_q_thd__tan = _c1[19]
+    _c1 = (iterative_report_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        variant, iterations, zeroth, bottom_length))
+    if _c1[70] != STATUS_OK:
+        return _NAN84 + (_c1[70],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _,
+        _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c,
+        _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
+        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
+        _) = _c1
+    # chain rule through iterative_report_stance
+    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
+        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
+    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
+    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
+    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
+    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
+    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
+        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
+    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
+        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = liftoff_to_apex_jvp_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan)
-    if _c2[10] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[10])
-    apex_height = _c2[0]
-    apex_speed = _c2[1]
-    t_ascent = _c2[2]
-    next_apex_x = _c2[4]
-    apex_height__tan = _c2[5]
-    apex_speed__tan = _c2[6]
-    t_ascent__tan = _c2[7]
-    next_apex_x__tan = _c2[9]
+    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+        direction))
+    if _c2[20] != STATUS_OK:
+        return _NAN84 + (_c2[20],)
+    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
+        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
+        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+    # chain rule through liftoff_to_apex
+    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
+    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
+        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
+    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
+    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
+        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
+    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
+    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
+        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
+    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
+    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
+        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
+    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
+    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
+        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
+    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
+    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
+        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
+    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
+        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
+    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
+        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
+    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
+        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
+    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
+        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
-    step_length__tan = foot_x__tan + next_apex_x__tan
+    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
+    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
+    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
+    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
     foot_y = -b_y_apex + ground
-    foot_y__tan = -b_y_apex__tan + ground__tan
-    # (internal helper: its callers check that their outputs are finite)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, apex_height__tan, apex_speed__tan, t_descent__tan, t_stance__tan, t_ascent__tan, liftoff_q_r__tan, liftoff_q_rd__tan, liftoff_q_th__tan, liftoff_q_thd__tan, step_length__tan, foot_x__tan, foot_y__tan, STATUS_OK)
-
-
-@njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length):
-    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with respect to the apex, the touchdown angle and the stiffness.
-
-    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py); through
-    an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 = gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 = geyer-vs
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section 5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_apex_height__b_y_apex: d apex_height / d b_y_apex
-        d_apex_height__b_xd_apex: d apex_height / d b_xd_apex
-        d_apex_height__q_th_td: d apex_height / d q_th_td
-        d_apex_height__ground: d apex_height / d ground
-        d_apex_height__k_c: d apex_height / d k_c
-        d_apex_height__k_d: d apex_height / d k_d
-        d_apex_speed__b_y_apex: d apex_speed / d b_y_apex
-        d_apex_speed__b_xd_apex: d apex_speed / d b_xd_apex
-        d_apex_speed__q_th_td: d apex_speed / d q_th_td
-        d_apex_speed__ground: d apex_speed / d ground
-        d_apex_speed__k_c: d apex_speed / d k_c
-        d_apex_speed__k_d: d apex_speed / d k_d
-        d_t_descent__b_y_apex: d t_descent / d b_y_apex
-        d_t_descent__b_xd_apex: d t_descent / d b_xd_apex
-        d_t_descent__q_th_td: d t_descent / d q_th_td
-        d_t_descent__ground: d t_descent / d ground
-        d_t_descent__k_c: d t_descent / d k_c
-        d_t_descent__k_d: d t_descent / d k_d
-        d_t_stance__b_y_apex: d t_stance / d b_y_apex
-        d_t_stance__b_xd_apex: d t_stance / d b_xd_apex
-        d_t_stance__q_th_td: d t_stance / d q_th_td
-        d_t_stance__ground: d t_stance / d ground
-        d_t_stance__k_c: d t_stance / d k_c
-        d_t_stance__k_d: d t_stance / d k_d
-        d_t_ascent__b_y_apex: d t_ascent / d b_y_apex
-        d_t_ascent__b_xd_apex: d t_ascent / d b_xd_apex
-        d_t_ascent__q_th_td: d t_ascent / d q_th_td
-        d_t_ascent__ground: d t_ascent / d ground
-        d_t_ascent__k_c: d t_ascent / d k_c
-        d_t_ascent__k_d: d t_ascent / d k_d
-        d_liftoff_q_r__b_y_apex: d liftoff_q_r / d b_y_apex
-        d_liftoff_q_r__b_xd_apex: d liftoff_q_r / d b_xd_apex
-        d_liftoff_q_r__q_th_td: d liftoff_q_r / d q_th_td
-        d_liftoff_q_r__ground: d liftoff_q_r / d ground
-        d_liftoff_q_r__k_c: d liftoff_q_r / d k_c
-        d_liftoff_q_r__k_d: d liftoff_q_r / d k_d
-        d_liftoff_q_rd__b_y_apex: d liftoff_q_rd / d b_y_apex
-        d_liftoff_q_rd__b_xd_apex: d liftoff_q_rd / d b_xd_apex
-        d_liftoff_q_rd__q_th_td: d liftoff_q_rd / d q_th_td
-        d_liftoff_q_rd__ground: d liftoff_q_rd / d ground
-        d_liftoff_q_rd__k_c: d liftoff_q_rd / d k_c
-        d_liftoff_q_rd__k_d: d liftoff_q_rd / d k_d
-        d_liftoff_q_th__b_y_apex: d liftoff_q_th / d b_y_apex
-        d_liftoff_q_th__b_xd_apex: d liftoff_q_th / d b_xd_apex
-        d_liftoff_q_th__q_th_td: d liftoff_q_th / d q_th_td
-        d_liftoff_q_th__ground: d liftoff_q_th / d ground
-        d_liftoff_q_th__k_c: d liftoff_q_th / d k_c
-        d_liftoff_q_th__k_d: d liftoff_q_th / d k_d
-        d_liftoff_q_thd__b_y_apex: d liftoff_q_thd / d b_y_apex
-        d_liftoff_q_thd__b_xd_apex: d liftoff_q_thd / d b_xd_apex
-        d_liftoff_q_thd__q_th_td: d liftoff_q_thd / d q_th_td
-        d_liftoff_q_thd__ground: d liftoff_q_thd / d ground
-        d_liftoff_q_thd__k_c: d liftoff_q_thd / d k_c
-        d_liftoff_q_thd__k_d: d liftoff_q_thd / d k_d
-        d_step_length__b_y_apex: d step_length / d b_y_apex
-        d_step_length__b_xd_apex: d step_length / d b_xd_apex
-        d_step_length__q_th_td: d step_length / d q_th_td
-        d_step_length__ground: d step_length / d ground
-        d_step_length__k_c: d step_length / d k_c
-        d_step_length__k_d: d step_length / d k_d
-        d_foot_x__b_y_apex: d foot_x / d b_y_apex
-        d_foot_x__b_xd_apex: d foot_x / d b_xd_apex
-        d_foot_x__q_th_td: d foot_x / d q_th_td
-        d_foot_x__ground: d foot_x / d ground
-        d_foot_x__k_c: d foot_x / d k_c
-        d_foot_x__k_d: d foot_x / d k_d
-        d_foot_y__b_y_apex: d foot_y / d b_y_apex
-        d_foot_y__b_xd_apex: d foot_y / d b_xd_apex
-        d_foot_y__q_th_td: d foot_y / d q_th_td
-        d_foot_y__ground: d foot_y / d ground
-        d_foot_y__k_c: d foot_y / d k_c
-        d_foot_y__k_d: d foot_y / d k_d
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 0
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td) and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td) and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations) and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_INVALID_INPUT)
-    # derivatives with respect to b_y_apex
-    _c0 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if _c0[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c0[24])
-    d_apex_height__b_y_apex = _c0[12]
-    d_apex_speed__b_y_apex = _c0[13]
-    d_t_descent__b_y_apex = _c0[14]
-    d_t_stance__b_y_apex = _c0[15]
-    d_t_ascent__b_y_apex = _c0[16]
-    d_liftoff_q_r__b_y_apex = _c0[17]
-    d_liftoff_q_rd__b_y_apex = _c0[18]
-    d_liftoff_q_th__b_y_apex = _c0[19]
-    d_liftoff_q_thd__b_y_apex = _c0[20]
-    d_step_length__b_y_apex = _c0[21]
-    d_foot_x__b_y_apex = _c0[22]
-    d_foot_y__b_y_apex = _c0[23]
-    apex_height = _c0[0]
-    apex_speed = _c0[1]
-    t_descent = _c0[2]
-    t_stance = _c0[3]
-    t_ascent = _c0[4]
-    liftoff_q_r = _c0[5]
-    liftoff_q_rd = _c0[6]
-    liftoff_q_th = _c0[7]
-    liftoff_q_thd = _c0[8]
-    step_length = _c0[9]
-    foot_x = _c0[10]
-    foot_y = _c0[11]
-    # derivatives with respect to b_xd_apex
-    _c1 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
-    if _c1[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c1[24])
-    d_apex_height__b_xd_apex = _c1[12]
-    d_apex_speed__b_xd_apex = _c1[13]
-    d_t_descent__b_xd_apex = _c1[14]
-    d_t_stance__b_xd_apex = _c1[15]
-    d_t_ascent__b_xd_apex = _c1[16]
-    d_liftoff_q_r__b_xd_apex = _c1[17]
-    d_liftoff_q_rd__b_xd_apex = _c1[18]
-    d_liftoff_q_th__b_xd_apex = _c1[19]
-    d_liftoff_q_thd__b_xd_apex = _c1[20]
-    d_step_length__b_xd_apex = _c1[21]
-    d_foot_x__b_xd_apex = _c1[22]
-    d_foot_y__b_xd_apex = _c1[23]
-    # derivatives with respect to q_th_td
-    _c2 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-    if _c2[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c2[24])
-    d_apex_height__q_th_td = _c2[12]
-    d_apex_speed__q_th_td = _c2[13]
-    d_t_descent__q_th_td = _c2[14]
-    d_t_stance__q_th_td = _c2[15]
-    d_t_ascent__q_th_td = _c2[16]
-    d_liftoff_q_r__q_th_td = _c2[17]
-    d_liftoff_q_rd__q_th_td = _c2[18]
-    d_liftoff_q_th__q_th_td = _c2[19]
-    d_liftoff_q_thd__q_th_td = _c2[20]
-    d_step_length__q_th_td = _c2[21]
-    d_foot_x__q_th_td = _c2[22]
-    d_foot_y__q_th_td = _c2[23]
-    # derivatives with respect to ground
-    _c3 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    if _c3[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c3[24])
-    d_apex_height__ground = _c3[12]
-    d_apex_speed__ground = _c3[13]
-    d_t_descent__ground = _c3[14]
-    d_t_stance__ground = _c3[15]
-    d_t_ascent__ground = _c3[16]
-    d_liftoff_q_r__ground = _c3[17]
-    d_liftoff_q_rd__ground = _c3[18]
-    d_liftoff_q_th__ground = _c3[19]
-    d_liftoff_q_thd__ground = _c3[20]
-    d_step_length__ground = _c3[21]
-    d_foot_x__ground = _c3[22]
-    d_foot_y__ground = _c3[23]
-    # derivatives with respect to k_c
-    _c4 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0)
-    if _c4[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c4[24])
-    d_apex_height__k_c = _c4[12]
-    d_apex_speed__k_c = _c4[13]
-    d_t_descent__k_c = _c4[14]
-    d_t_stance__k_c = _c4[15]
-    d_t_ascent__k_c = _c4[16]
-    d_liftoff_q_r__k_c = _c4[17]
-    d_liftoff_q_rd__k_c = _c4[18]
-    d_liftoff_q_th__k_c = _c4[19]
-    d_liftoff_q_thd__k_c = _c4[20]
-    d_step_length__k_c = _c4[21]
-    d_foot_x__k_c = _c4[22]
-    d_foot_y__k_c = _c4[23]
-    # derivatives with respect to k_d
-    _c5 = iterative_report_apex_return_jvp_b_y_apex_b_xd_apex_q_th_td_ground_k_c_k_d(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
-    if _c5[24] != STATUS_OK:
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, _c5[24])
-    d_apex_height__k_d = _c5[12]
-    d_apex_speed__k_d = _c5[13]
-    d_t_descent__k_d = _c5[14]
-    d_t_stance__k_d = _c5[15]
-    d_t_ascent__k_d = _c5[16]
-    d_liftoff_q_r__k_d = _c5[17]
-    d_liftoff_q_rd__k_d = _c5[18]
-    d_liftoff_q_th__k_d = _c5[19]
-    d_liftoff_q_thd__k_d = _c5[20]
-    d_step_length__k_d = _c5[21]
-    d_foot_x__k_d = _c5[22]
-    d_foot_y__k_d = _c5[23]
-    # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent) and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd) and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y) and math.isfinite(d_apex_height__b_y_apex) and math.isfinite(d_apex_height__b_xd_apex) and math.isfinite(d_apex_height__q_th_td) and math.isfinite(d_apex_height__ground) and math.isfinite(d_apex_height__k_c) and math.isfinite(d_apex_height__k_d) and math.isfinite(d_apex_speed__b_y_apex) and math.isfinite(d_apex_speed__b_xd_apex) and math.isfinite(d_apex_speed__q_th_td) and math.isfinite(d_apex_speed__ground) and math.isfinite(d_apex_speed__k_c) and math.isfinite(d_apex_speed__k_d) and math.isfinite(d_t_descent__b_y_apex) and math.isfinite(d_t_descent__b_xd_apex) and math.isfinite(d_t_descent__q_th_td) and math.isfinite(d_t_descent__ground) and math.isfinite(d_t_descent__k_c) and math.isfinite(d_t_descent__k_d) and math.isfinite(d_t_stance__b_y_apex) and math.isfinite(d_t_stance__b_xd_apex) and math.isfinite(d_t_stance__q_th_td) and math.isfinite(d_t_stance__ground) and math.isfinite(d_t_stance__k_c) and math.isfinite(d_t_stance__k_d) and math.isfinite(d_t_ascent__b_y_apex) and math.isfinite(d_t_ascent__b_xd_apex) and math.isfinite(d_t_ascent__q_th_td) and math.isfinite(d_t_ascent__ground) and math.isfinite(d_t_ascent__k_c) and math.isfinite(d_t_ascent__k_d) and math.isfinite(d_liftoff_q_r__b_y_apex) and math.isfinite(d_liftoff_q_r__b_xd_apex) and math.isfinite(d_liftoff_q_r__q_th_td) and math.isfinite(d_liftoff_q_r__ground) and math.isfinite(d_liftoff_q_r__k_c) and math.isfinite(d_liftoff_q_r__k_d) and math.isfinite(d_liftoff_q_rd__b_y_apex) and math.isfinite(d_liftoff_q_rd__b_xd_apex) and math.isfinite(d_liftoff_q_rd__q_th_td) and math.isfinite(d_liftoff_q_rd__ground) and math.isfinite(d_liftoff_q_rd__k_c) and math.isfinite(d_liftoff_q_rd__k_d) and math.isfinite(d_liftoff_q_th__b_y_apex) and math.isfinite(d_liftoff_q_th__b_xd_apex) and math.isfinite(d_liftoff_q_th__q_th_td) and math.isfinite(d_liftoff_q_th__ground) and math.isfinite(d_liftoff_q_th__k_c) and math.isfinite(d_liftoff_q_th__k_d) and math.isfinite(d_liftoff_q_thd__b_y_apex) and math.isfinite(d_liftoff_q_thd__b_xd_apex) and math.isfinite(d_liftoff_q_thd__q_th_td) and math.isfinite(d_liftoff_q_thd__ground) and math.isfinite(d_liftoff_q_thd__k_c) and math.isfinite(d_liftoff_q_thd__k_d) and math.isfinite(d_step_length__b_y_apex) and math.isfinite(d_step_length__b_xd_apex) and math.isfinite(d_step_length__q_th_td) and math.isfinite(d_step_length__ground) and math.isfinite(d_step_length__k_c) and math.isfinite(d_step_length__k_d) and math.isfinite(d_foot_x__b_y_apex) and math.isfinite(d_foot_x__b_xd_apex) and math.isfinite(d_foot_x__q_th_td) and math.isfinite(d_foot_x__ground) and math.isfinite(d_foot_x__k_c) and math.isfinite(d_foot_x__k_d) and math.isfinite(d_foot_y__b_y_apex) and math.isfinite(d_foot_y__b_xd_apex) and math.isfinite(d_foot_y__q_th_td) and math.isfinite(d_foot_y__ground) and math.isfinite(d_foot_y__k_c) and math.isfinite(d_foot_y__k_d)):
-        return (NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, STATUS_NUMERICAL_RANGE)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, STATUS_OK)
+    # derivatives of the outputs
+    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
+    d_t_descent__b_xd_apex = 0.0
+    d_t_descent__q_th_td = _j_t_descent__q_th_td
+    d_t_descent__ground = _j_t_descent__ground
+    d_t_descent__k_c = 0.0
+    d_t_descent__k_d = 0.0
+    d_t_stance__k_c = _j_t_stance__k_c
+    d_t_stance__k_d = _j_t_stance__k_d
+    d_liftoff_q_r__b_y_apex = 0.0
+    d_liftoff_q_r__b_xd_apex = 0.0
+    d_liftoff_q_r__q_th_td = 0.0
+    d_liftoff_q_r__ground = 0.0
+    d_liftoff_q_r__k_c = 0.0
+    d_liftoff_q_r__k_d = 0.0
+    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
+    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
+    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
+    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
+    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
+    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
+    d_step_length__k_c = d_next_apex_x__k_c
+    d_step_length__k_d = d_next_apex_x__k_d
+    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
+    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
+    d_foot_x__q_th_td = _j_foot_x__q_th_td
+    d_foot_x__ground = _j_foot_x__ground
+    d_foot_x__k_c = 0.0
+    d_foot_x__k_d = 0.0
+    d_foot_y__b_y_apex = -1.0
+    d_foot_y__b_xd_apex = 0.0
+    d_foot_y__q_th_td = 0.0
+    d_foot_y__ground = 1.0
+    d_foot_y__k_c = 0.0
+    d_foot_y__k_d = 0.0
+    # every value output finite, or the inputs were far outside a physical range (the
+    # derivatives are checked by their users: runtime/api/jacobian.py)
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
+        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
+        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
+        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
+        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
+        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
+        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
+        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
+        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
+        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
+        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
+        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
+        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
+        d_foot_y__k_d, STATUS_OK)
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
+def iterative_report_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length, out, status):
     """Parallel batch form of :func:`iterative_report_apex_return_jacobian`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
+    zeroth, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
+    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
+    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
+    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
+    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
+    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
+    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
+    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
+    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
+    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
+    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
+    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
+    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
+    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
+    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
+    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
     """
     for i in prange(out.shape[0]):
-        res = iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length)
+        res = (iterative_report_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0,
+            k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, zeroth, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

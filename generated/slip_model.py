@@ -4,6 +4,7 @@
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # ----------------------------------------------------------------------------------------------
 """SLIP stance equations of motion, energy and polar <-> Cartesian maps (report eqs 1-3, 27, sec 2.2)."""
 
@@ -12,23 +13,8 @@ import math
 import numpy as np
 from numba import njit, prange
 
+
 NAN = math.nan
-STATUS_OK = 0
-STATUS_INVALID_INPUT = 1
-STATUS_APEX_TOO_LOW = 2
-STATUS_TOUCHDOWN_NOT_COMPRESSING = 3
-STATUS_NO_REAL_SOLUTION = 4
-STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION = 5
-STATUS_NO_LIFTOFF = 6
-STATUS_FALL = 7
-STATUS_LIFTOFF_DOWNWARD = 8
-STATUS_LIFTOFF_BACKWARD = 9
-STATUS_RECOMPRESSION = 10
-STATUS_INTEGRATION_FAILED = 11
-STATUS_NUMERICAL_RANGE = 12
-STATUS_NOT_CONVERGED = 13
-STATUS_ENERGY_DEFICIT = 14
-STATUS_IMAGINARY_MOMENTUM = 15
 
 
 @njit(cache=True, error_model="numpy")
@@ -127,7 +113,10 @@ def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
     d_q_rdd_d_k = _x0*l0 - _x0*q_r
     d_q_thd_d_k = 0.0
     d_q_thdd_d_k = 0.0
-    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd, d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd, d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k, d_q_thd_d_k, d_q_thdd_d_k)
+    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd,
+        d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd,
+        d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k,
+        d_q_thd_d_k, d_q_thdd_d_k)
 
 
 @njit(cache=True, error_model="numpy")

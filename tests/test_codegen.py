@@ -157,15 +157,15 @@ def test_check_detects_hand_edit(checkout_copy):
     root, files = checkout_copy
     path = root / "generated" / "geyer.py"
     text = path.read_text()
-    edited = text.replace("\nSTATUS_OK = 0\n", "\nSTATUS_OK = 0  # tweaked\n", 1)
+    edited = text.replace("\nNAN = math.nan\n", "\nNAN = math.nan  # tweaked\n", 1)
     assert edited != text
     path.write_text(edited)
     problems = generate.check(files=files)
     assert len(problems) == 1
     assert "a/generated/geyer.py (committed)" in problems[0]
     assert "b/generated/geyer.py (from sources)" in problems[0]
-    assert "-STATUS_OK = 0  # tweaked\n" in problems[0]
-    assert "+STATUS_OK = 0\n" in problems[0]
+    assert "-NAN = math.nan  # tweaked\n" in problems[0]
+    assert "+NAN = math.nan\n" in problems[0]
 
 
 def test_check_detects_edited_docs_tables(checkout_copy):
@@ -274,9 +274,11 @@ def test_generated_header(built, rel):
 @pytest.mark.parametrize("rel", GENERATED_PY)
 def test_header_hashes_every_imported_generated_module(built, rel):
     """A module that calls another's kernels records that module's content hash (numba's cache of the
-    caller does not see the callee's file change otherwise)."""
+    caller does not see the callee's file change otherwise). Not status.py: the codes it imports
+    from there are fixed (append-only), so a cached kernel stays valid whatever else changes there
+    (a message)."""
     text = built[rel]
-    imports, depends = _imports(text), _depends(text)
+    imports, depends = [m for m in _imports(text) if m != "status"], _depends(text)
     assert set(depends) == {f"{m}.py" for m in imports}
     for m in imports:
         assert depends[f"{m}.py"] == hashlib.sha256(built[f"generated/{m}.py"].encode()).hexdigest()[:16]
@@ -301,6 +303,63 @@ def test_pinned_tool_versions_used():
     assert generate.VERSIONS["sympy"] == sp.__version__
 
 
+def test_no_generated_line_is_longer_than_the_limit(built):
+    """The limit the templates state (derive/wrap.py, the project's line length): every generated
+    Python line, code, comments and docstrings, is at most 110 characters."""
+    from slipmaps.derive.wrap import LIMIT
+
+    assert LIMIT == 110
+    for rel, text in built.items():
+        if rel.endswith(".py"):
+            long = [(i + 1, len(ln)) for i, ln in enumerate(text.splitlines()) if len(ln) > LIMIT]
+            assert not long, (rel, long[:5])
+
+
+def _without_docstrings(source: str) -> str:
+    import ast
+
+    tree = ast.parse(source)
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if isinstance(body, list) and body and isinstance(body[0], ast.Expr):
+            if isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str):
+                body[0].value.value = ""
+    return ast.dump(tree)
+
+
+def test_line_breaking_keeps_the_code():
+    """derive/wrap.py breaks lines between tokens inside brackets (or puts a right-hand side in
+    parentheses): the statements' syntax trees are unchanged, the result is its own fixed point."""
+    from slipmaps.derive.wrap import wrap
+
+    terms = " + ".join(f"{i}.5*_x{i}*math.sqrt(q_r_td)" for i in range(40))
+    source = "\n".join(
+        [
+            "from .status import " + ", ".join(f"STATUS_NAME_{i}" for i in range(20)),
+            "",
+            "",
+            "def f(" + ", ".join(f"argument_{i}" for i in range(30)) + "):",
+            '    """' + " ".join(["word"] * 60) + "',",
+            "",
+            "    Returns a tuple:",
+            "        name: " + " ".join(["text"] * 50),
+            '    """',
+            "    # " + " ".join(["comment"] * 30),
+            f"    y = {terms}",
+            f"    if not (math.isfinite(y) and {terms} > 0.0):",
+            "        return _NAN3 + (STATUS_FALL,)",
+            "    (" + ", ".join(f"a{i}" for i in range(40)) + ", _) = _c0",
+            "    return (" + ", ".join(f"a{i}" for i in range(40)) + ", STATUS_OK)",
+            "",
+        ]
+    )
+    out = wrap(source)
+    assert max(map(len, out.splitlines())) <= 110
+    assert _without_docstrings(out) == _without_docstrings(source)
+    assert wrap(out) == out
+    assert len(out.splitlines()) < 2 * len(source) / 110 + len(source.splitlines())
+
+
 def test_docs_table_header(built):
     for rel in ("docs/equations.md", "docs/maps.md"):
         first = built[rel].splitlines()[0]
@@ -316,10 +375,29 @@ def test_status_enum_matches_source():
     assert STATUS_CODES[0][:2] == ("OK", 0)
 
 
-@pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
-def test_module_status_constants_match(mod):
+def _all_kernel_modules():
+    """Every generated kernel module (the maps', the model's and the Jacobians')."""
+    names = sorted(p.stem for p in (generate.ROOT / "generated").glob("*.py"))
+    skip = {"__init__", "status", "maps_index"}
+    return [importlib.import_module(f"slipmaps.generated.{n}") for n in names if n not in skip]
+
+
+@pytest.mark.parametrize("mod", _all_kernel_modules(), ids=_mod_id)
+def test_module_status_constants_come_from_status_py(mod):
+    """The status codes a module names are imported from generated/status.py (one definition, the
+    values of derive/status.py), not copied into it."""
+    from slipmaps.generated import status
+
+    text = Path(mod.__file__).read_text()
+    assert not re.search(r"^STATUS_\w+ =", text, re.MULTILINE), "a status constant defined in the module"
+    used = set(re.findall(r"\bSTATUS_(\w+)\b", text))
     consts = {n[len("STATUS_") :]: v for n, v in vars(mod).items() if n.startswith("STATUS_")}
-    assert consts == {n: c for n, c, _ in STATUS_CODES}
+    assert set(consts) == used
+    codes = {n: c for n, c, _ in STATUS_CODES}
+    assert consts == {n: codes[n] for n in consts}
+    assert all(getattr(status, f"STATUS_{n}") == c for n, c in codes.items())
+    if consts:
+        assert re.search(r"^from \.status import", text, re.MULTILINE)
 
 
 # ----------------------------------------------------------------------------------------------

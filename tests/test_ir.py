@@ -94,6 +94,7 @@ def _kernel(name, args, steps, outputs, **kw) -> Kernel:
 # Rendering and loading a module of test kernels, the way derive/generate.py does
 # ----------------------------------------------------------------------------------------------
 def render_module(kernels) -> str:
+    lowered = [lower(k) for k in kernels]
     return render(
         "kernels.py.j2",
         source="tests/test_ir.py",
@@ -101,9 +102,10 @@ def render_module(kernels) -> str:
         depends=[],
         module_doc="Kernels of tests/test_ir.py.",
         imports=[],
-        kernels=[lower(k) for k in kernels],
+        kernels=lowered,
         versions=generate.VERSIONS,
-        statuses=[{"name": nm, "code": cd, "message": msg} for nm, cd, msg in STATUS_CODES],
+        statuses=[nm for nm, _, _ in STATUS_CODES if any(nm in k["statuses"] for k in lowered)],
+        status_module="slipmaps.generated.status",
     )
 
 
@@ -935,3 +937,349 @@ def test_every_function_is_a_numba_dispatcher_and_compiles(gen):
         disp = getattr(gen, kern.name)
         disp(*([1.0] * len(kern.args)))
         assert disp.signatures, kern.name
+
+
+# ----------------------------------------------------------------------------------------------
+# The status codes: imported from generated/status.py, not copied into each module
+# ----------------------------------------------------------------------------------------------
+def test_status_codes_are_imported_not_copied(gen):
+    from slipmaps.generated import status as g_status
+
+    text = render_module(_all_kernels())
+    assert not re.search(r"^STATUS_\w+ = ", text, re.MULTILINE)
+    (line,) = re.findall(r"^from slipmaps\.generated\.status import .*$", text, re.MULTILINE)
+    names = set(re.findall(r"STATUS_(\w+)", line))
+    # exactly the codes the kernels name, with the values of derive/status.py
+    assert names == set(re.findall(r"\bSTATUS_(\w+)\b", text.replace(line, "")))
+    assert all(
+        getattr(gen, f"STATUS_{nm}") == STATUS[nm] == getattr(g_status, f"STATUS_{nm}") for nm in names
+    )
+    assert gen.guarded(0.5, 1.0)[-1] == g_status.STATUS_FALL
+
+
+# ----------------------------------------------------------------------------------------------
+# Jacobians in one pass (derive/tangent.py): synthetic kernels against central differences
+# ----------------------------------------------------------------------------------------------
+a_, b_, k_, m_, t_ = sym("a"), sym("b"), sym("k"), sym("m"), sym("t")
+
+
+def _d_stages():
+    """Stages: shared subexpressions, a later assignment using earlier ones, a guard, Abs and a
+    Piecewise (almost-everywhere derivatives), an output identically independent of b."""
+    steps = (
+        Stage(((u, sp.sin(a_ * b_) + sp.exp(-(a_**2)) / b_), (v, u**2 * sp.sqrt(b_) + sp.Abs(a_ - 3)))),
+        Stage(
+            ((w, sp.Piecewise((v * a_, a_ > 1), (v + a_, True)) + sp.atan2(b_, 2)),),
+            (Guard(real(b_) > 0, "FALL"),),
+        ),
+        Stage(((r, 7 * a_**3),)),
+    )
+    return _kernel("d_stages", _args(a_, b_), steps, _out("u", "v", "w", "r"))
+
+
+def _d_inner():
+    """A callee with more active arguments than its caller has directions (a vector JVP)."""
+    steps = (Stage(((u, p * sp.cos(q) + x * y), (v, sp.exp(p - q) * y / (1 + x**2)))),)
+    return _kernel("d_inner", _args(p, q, x, y), steps, _out("u", "v"))
+
+
+def _d_small():
+    """A callee with fewer active arguments than its caller's directions (its own Jacobian)."""
+    steps = (Stage(((w, sp.log(1 + p**2) * q),), (Guard(real(q) > -10, "NO_LIFTOFF"),)),)
+    return _kernel("d_small", _args(p, q, m_), steps, _out("w"))
+
+
+def _d_calls():
+    steps = (
+        Call(_d_inner(), {"p": a_, "q": 2 * b_, "x": a_ * b_, "y": sp.sin(a_)}, {"u": "iu", "v": "iv"}),
+        Call(_d_small(), {"p": sym("iu"), "q": sym("iv"), "m": sp.Float(3.0)}, {"w": "sw"}),
+        Stage(((r, sym("sw") * a_ + sym("iv")),)),
+    )
+    return _kernel("d_calls", _args(a_, b_), steps, _out("iu", "iv", "sw", "r"))
+
+
+def _d_loop(evaluate: bool):
+    """u <- u - (u^3 - a u - b) / (3 u^2 - a) (Newton, tol > 0) with a value evaluated at every
+    iterate (``evaluate``) or in the body; iterations as an argument (0: the start value)."""
+    f, fp = sym("f"), sym("fp")
+    ev = (Stage(((f, u**3 - a_ * u - b_), (fp, 3 * u**2 - a_)), (Guard(real(fp) > 0, "FALL"),)),)
+    step = Iterate(
+        ((u, 1 + b_ / 4),),
+        () if evaluate else ev,
+        (u - f / fp,),
+        n_it,
+        tol,
+        (sp.S.One,),
+        passes,
+        evaluate=ev if evaluate else (),
+    )
+    after = (Stage(((v, u * a_ + (f if evaluate else 0)),)),)
+    name = "d_loop_evaluate" if evaluate else "d_loop_body"
+    return _kernel(name, _args(a_, b_, n_it, tol), (step,) + after, _out("u", "v", "passes"))
+
+
+def _d_picard():
+    """A contraction with tol = 0 (exactly n passes) whose state is two variables."""
+    step = Iterate(
+        ((u, a_), (v, b_)),
+        (),
+        (sp.cos(v) / 2 + a_ / 3, sp.sin(u) * b_ / 3 + 1),
+        n_it,
+        sp.S.Zero,
+        (sp.S.One, sp.S.One),
+        passes,
+        fail_status=None,
+        evaluate=(Stage(((w, u * v),)),),
+    )
+    return _kernel("d_picard", _args(a_, b_, n_it), (step, Stage(((r, w + u),))), _out("u", "v", "w", "r"))
+
+
+def _d_tail():
+    """A loop that reads only a, then a tail (stages right after it, differentiated per direction
+    with the loop) that reads b too."""
+    step = Iterate(
+        ((u, a_),), (), (sp.cos(u) / 2 + a_ / 3,), n_it, sp.S.Zero, (sp.S.One,), passes, fail_status=None
+    )
+    tail = (Stage(((v, u * b_ + b_**2),)), Stage(((w, sp.exp(v) * a_),)))
+    return _kernel("d_tail", _args(a_, b_, n_it), (step, *tail), _out("u", "v", "w"))
+
+
+def _d_loop_switch():
+    """A loop whose evaluation and body branch on an option, a call in a branch, a switch after it."""
+    h_, g_ = sym("h"), sym("g")
+    evaluate = (
+        Switch(
+            k_,
+            (
+                (0, (Stage(((h_, sp.sin(u) * a_ + b_),)),)),
+                (1, (Stage(((sym("_e"), sp.exp(-u * b_)),)), Stage(((h_, sym("_e") * a_ + u**2 / 3),)))),
+            ),
+        ),
+    )
+    body = (
+        Switch(
+            k_,
+            (
+                (0, (Stage(((g_, h_ / 2 + u / 4),)),)),
+                (
+                    1,
+                    (
+                        Call(_d_small(), {"p": h_, "q": b_, "m": a_}, {"w": "_sw"}),
+                        Stage(((g_, sym("_sw") / 3 + u / 5),)),
+                    ),
+                ),
+            ),
+        ),
+    )
+    step = Iterate(
+        ((u, b_ / 2),), body, (g_,), n_it, sp.S.Zero, (sp.S.One,), passes, fail_status=None, evaluate=evaluate
+    )
+    tail = (Switch(k_, ((0, (Stage(((v, h_ * b_),)),)), (1, (Stage(((v, h_ + a_),)),)))),)
+    return _kernel("d_loop_switch", _args(a_, b_, k_, n_it), (step, *tail), _out("u", "h", "v"))
+
+
+def _d_switch():
+    """Branches defining the same outputs differently, one of them through a call and a loop."""
+    s_, count = sym("_s"), sym("_count")
+    inner = Iterate(
+        ((s_, a_),), (), (sp.sqrt(s_ + b_ * b_),), n_it, sp.S.Zero, (sp.S.One,), count, fail_status=None
+    )
+    cases = (
+        (
+            0,
+            (
+                Stage(
+                    ((u, a_ * b_), (v, sp.S(2))),
+                ),
+            ),
+        ),
+        (
+            1,
+            (
+                Call(_d_inner(), {"p": a_, "q": b_, "x": b_, "y": a_}, {"u": "u", "v": "_iv"}),
+                Stage(((v, sym("_iv") + a_),)),
+            ),
+        ),
+        (2, (inner, Stage(((u, s_), (v, s_ * a_))))),
+    )
+    return _kernel(
+        "d_switch", _args(a_, b_, k_, n_it), (Switch(k_, cases), Stage(((w, u * v),))), _out("u", "v", "w")
+    )
+
+
+def _d_nested():
+    """A loop in a loop: the outer one runs the inner Picard loop from its current state."""
+    inner = Iterate(
+        ((s, u),),
+        (),
+        (sp.cos(s) * a_ / 2 + u / 4,),
+        n_it,
+        sp.S.Zero,
+        (sp.S.One,),
+        sym("_ip"),
+        fail_status=None,
+    )
+    outer = Iterate(
+        ((u, b_),),
+        (inner,),
+        (s * b_ / 2 + sp.sin(u) / 5,),
+        sym("n2"),
+        sp.S.Zero,
+        (sp.S.One,),
+        passes,
+        fail_status=None,
+    )
+    return _kernel("d_nested", _args(a_, b_, n_it, sym("n2")), (outer,), _out("u", "passes"))
+
+
+#: kernel, the arguments to differentiate with respect to, points (argument values), steps h
+D_CASES = {
+    "d_stages": (_d_stages, ("a", "b"), [(0.7, 1.3), (2.5, 0.4)]),
+    "d_calls": (_d_calls, ("a", "b"), [(0.7, 1.3), (1.1, -0.4)]),
+    "d_loop_evaluate": (
+        _d_loop,
+        ("a", "b"),
+        [(2.0, 1.0, 30.0, 1e-14), (2.0, 1.0, 0.0, 1e-14), (1.5, 3.0, 2.0, 0.0)],
+    ),
+    "d_loop_body": (
+        _d_loop,
+        ("a", "b"),
+        [(2.0, 1.0, 30.0, 1e-14), (2.0, 1.0, 0.0, 1e-14), (1.5, 3.0, 2.0, 0.0)],
+    ),
+    "d_picard": (_d_picard, ("a", "b"), [(0.6, 0.9, 7.0), (0.6, 0.9, 0.0), (1.2, -0.3, 1.0)]),
+    "d_tail": (_d_tail, ("a", "b"), [(0.6, 0.9, 5.0), (0.6, 0.9, 0.0)]),
+    "d_loop_switch": (
+        _d_loop_switch,
+        ("a", "b"),
+        [(0.7, 0.8, 0.0, 4.0), (0.7, 0.8, 1.0, 4.0), (0.7, 0.8, 1.0, 0.0)],
+    ),
+    "d_switch": (
+        _d_switch,
+        ("a", "b"),
+        [(0.8, 1.4, 0.0, 3.0), (0.8, 1.4, 1.0, 3.0), (0.8, 1.4, 2.0, 3.0), (0.8, 1.4, 2.0, 0.0)],
+    ),
+    "d_nested": (_d_nested, ("a", "b"), [(0.9, 0.5, 4.0, 3.0), (0.9, 0.5, 0.0, 3.0), (0.9, 0.5, 4.0, 0.0)]),
+}
+
+
+def _d_kernel(name):
+    make = D_CASES[name][0]
+    return make(name == "d_loop_evaluate") if make is _d_loop else make()
+
+
+def dgen_kernels(looped_size: int = 1):
+    """Every synthetic kernel and its Jacobian (one kernel, every direction in one pass) with the
+    kernels the differentiation generates: (primal and callee kernels, the Differentiator). Loops
+    of at least ``looped_size`` assignments get their tangent code once, run per direction."""
+    from slipmaps.derive import tangent
+
+    default, tangent.LOOPED_SIZE = tangent.LOOPED_SIZE, looped_size
+    try:
+        diff = tangent.Differentiator()
+        primal = {}
+        for name, (_, wrt, _) in D_CASES.items():
+            kern = _d_kernel(name)
+            primal[name] = kern
+            diff.jacobian(kern, wrt, name=f"{name}_jacobian", summary=f"Jacobian of {name}.")
+        diff.build()
+    finally:
+        tangent.LOOPED_SIZE = default
+    return list(primal.values()) + [_d_inner(), _d_small()], diff
+
+
+@pytest.fixture(scope="module", params=[1, 10**6], ids=["loops per direction", "loops unrolled"])
+def dgen(request, tmp_path_factory):
+    """The module of :func:`dgen_kernels` and its Differentiator: every loop's tangent code per
+    direction, or every loop's unrolled."""
+    kernels, diff = dgen_kernels(request.param)
+    directory = tmp_path_factory.mktemp("ir_jacobians")
+    return load_module(directory, "ir_jacobians", kernels + list(diff.kernels.values())), diff
+
+
+def _central(fn, point, j, h):
+    up, down = list(point), list(point)
+    up[j] += h
+    down[j] -= h
+    a, b = fn(*up), fn(*down)
+    assert a[-1] == OK and b[-1] == OK, (a, b)
+    return (np.array(a[:-1]) - np.array(b[:-1])) / (2 * h)
+
+
+@pytest.mark.parametrize("name", sorted(D_CASES))
+def test_jacobian_in_one_pass_matches_central_differences(dgen, name):
+    """The Jacobian kernel's values are the kernel's, its derivatives (outputs, then d output_i /
+    d input_j row-major) the central differences' within their truncation and round-off (h = 1e-6:
+    measured <= 1e-8 relative to the column's scale)."""
+    mod, _ = dgen
+    _, wrt, points = D_CASES[name]
+    primal, jac = getattr(mod, name), getattr(mod, f"{name}_jacobian")
+    n_out = len(_d_kernel(name).outputs.names())
+    args = [a.name for a in _d_kernel(name).args]
+    for point in points:
+        res = jac(*point)
+        ref = primal(*point)
+        assert res[-1] == OK == ref[-1], (point, res, ref)
+        np.testing.assert_allclose(res[:n_out], ref[:-1], rtol=1e-13, atol=1e-13)
+        got = np.array(res[n_out:-1]).reshape(n_out, len(wrt))
+        for j, w_ in enumerate(wrt):
+            fd = _central(primal, point, args.index(w_), 1e-6)
+            scale = max(1.0, float(np.abs(fd).max()))
+            np.testing.assert_allclose(
+                got[:, j], fd, rtol=0, atol=2e-8 * scale, err_msg=f"{name} d/d{w_} at {point}"
+            )
+
+
+def test_jacobian_kernels_share_callee_derivatives(dgen):
+    """One derivative kernel per callee and set of active arguments: the calls differentiate
+    d_inner along the caller's directions (a vector JVP: 4 active arguments, 2 directions) and
+    d_small by its own Jacobian (2 active arguments), each generated once; no loop body is
+    outlined, the switch branches that hold a loop are."""
+    _, diff = dgen
+    names = sorted(diff.kernels)
+    assert sum(nm.startswith("d_inner_jvp2_") for nm in names) == 2  # d_calls' and d_switch's directions
+    assert "d_small_jac_p_q" in names
+    assert any(nm.startswith("d_switch_jacobian_") for nm in names)  # the branches (one holds a loop)
+    assert not any(nm.startswith(("d_loop", "d_picard", "d_nested")) and nm[-1].isdigit() for nm in names)
+
+
+def test_loop_tangents_are_computed_once_per_direction_in_a_loop():
+    """A loop whose steps are stages (and calls) computes its values once per pass and runs its
+    tangent code, written once, per direction on the direction array; a loop holding another loop
+    carries a variable per tangent and direction."""
+    _, diff = dgen_kernels(1)
+    derived = diff.kernels
+    src = render_module(list(derived.values()))
+    picard = src.split("def d_picard_jacobian(", 1)[1].split("\ndef ", 1)[0]
+    assert "for _j0 in range(2):" in picard and "_T = np.empty((" in picard
+    assert "d_u__j" in picard and "d_u__a" in picard  # per direction in the loop, loaded after it
+    branching = src.split("def d_loop_switch_jacobian(", 1)[1].split("\ndef ", 1)[0]
+    assert "for _j" not in branching  # a loop holding a switch: a variable per tangent and direction
+    nested = lower(derived["d_nested_jacobian"])
+    assert any(n["kind"] == "loop" and n["packed"] for n in nested["body"])
+    _, unrolled = dgen_kernels(10**6)
+    assert "for _j" not in render_module(list(unrolled.kernels.values()))
+
+
+def test_jacobian_of_zero_iterations_is_the_start_values(dgen):
+    """max_iter = 0: no pass, the derivative is the start value's (d u / d b = 1/4 for u = 1 + b/4)."""
+    mod, _ = dgen
+    res = mod.d_loop_evaluate_jacobian(2.0, 1.0, 0.0, 1e-14)
+    n_out = 3
+    d = np.array(res[n_out:-1]).reshape(n_out, 2)
+    assert res[0] == 1.25 and d[0].tolist() == [0.0, 0.25]
+    assert res[2] == 0.0 and d[2].tolist() == [0.0, 0.0]  # passes: a count, no derivative
+
+
+def test_jacobian_status_and_refused_derivatives(dgen):
+    """A failing guard fails the Jacobian with the kernel's status and NaN outputs; an expression
+    SymPy cannot differentiate in closed form is refused at generation."""
+    from slipmaps.derive.tangent import Differentiator
+
+    mod, _ = dgen
+    res = mod.d_stages_jacobian(0.7, -1.0)
+    assert res[-1] == FALL and all(math.isnan(val) for val in res[:-1])
+    bad = _kernel("bad", _args(a_), (Stage(((u, sp.Function("g")(a_)),)),), _out("u"))
+    diff = Differentiator()
+    diff.jacobian(bad, ("a",), name="bad_jacobian", summary="refused")
+    with pytest.raises(ValueError, match="not differentiable in closed form"):
+        diff.build()

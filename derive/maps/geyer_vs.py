@@ -490,7 +490,9 @@ def _build(inp: MapInputs) -> MapBuild:
         touchdown_invariants(k_c),
         Iterate(
             state=((P1, sp.S.Zero), (P2, sp.S.Zero)),
-            body=_pass(inp, trial, P1, P2) + (_impulses(inp, trial),),
+            # one pass at every iterate, the final one included (visible after the loop)
+            evaluate=_pass(inp, trial, P1, P2),
+            body=(_impulses(inp, trial),),
             update=(trial("P_new1"), trial("P_new2")),
             max_iter=sp.Piecewise((0, gravity.is_("none")), (inp.opt("iterations"), True)),
             tol=inp.opt("tol"),
@@ -499,14 +501,17 @@ def _build(inp: MapInputs) -> MapBuild:
             fail_status="NOT_CONVERGED",
             comment="fixed point of the two halves' virtual gravity effects, from 0 (none: no pass)",
         ),
-        *_pass(inp, _Names(), P1, P2),
+        Stage(
+            tuple((sym(f.name), trial(f.name)) for f in catalog.STANCE.fields()),
+            comment="the stance outputs: the pass at the final iterate",
+        ),
     )
 
     def state_at(time: sp.Symbol) -> tuple[Step, ...]:
         first = geyer.state_kernel()
-        n = _Names()
+        n = trial
         ab = {x: n.ab(x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
-        second = second_state(BOTTOM_PHASE + n.ba("omega0_hat") * (time - n("t_bottom")))
+        second = second_state(BOTTOM_PHASE + n.ba("omega0_hat") * (time - n("t_bottom")), n)
         t_b, t_s = n("t_bottom"), n("t_stance")
         rates = (
             (sym("p_td") + P1 * time / t_b) / (m * sym("c_q_r") ** 2),

@@ -378,7 +378,9 @@ def _constant_correction(kind: int):
             ),
             Iterate(
                 state=((P_c, sp.S.Zero),),
-                body=_trajectory("i_", p_td + share * P_c) + _impulse_steps(kind, inp, "i_"),
+                # the trajectory at every iterate, the final one included (visible after the loop)
+                evaluate=_trajectory("i_", p_td + share * P_c),
+                body=_impulse_steps(kind, inp, "i_"),
                 update=(sym("i_P_new"),),
                 max_iter=inp.opt("iterations"),
                 tol=inp.opt("tol"),
@@ -386,20 +388,19 @@ def _constant_correction(kind: int):
                 count=sym("passes"),
                 comment="fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)",
             ),
-            *_trajectory("f_", p_td + share * P_c),
         )
-        f_t_b, f_t_s = sym("f_t_bottom"), sym("f_t_stance")
+        f_t_b, f_t_s = sym("i_t_bottom"), sym("i_t_stance")
         outputs = (
             Stage(
                 (
                     (sym("t_bottom"), f_t_b),
                     (sym("t_stance"), f_t_s),
-                    (sym("bottom_q_r"), sym("f_bottom_q_r")),
+                    (sym("bottom_q_r"), sym("i_bottom_q_r")),
                     (sym("bottom_q_rd"), sp.S.Zero),
-                    (sym("bottom_q_th"), sym("f_bottom_q_th")),
-                    (sym("bottom_q_thd"), momentum(f_t_b, f_t_s) / (m * sym("f_bottom_q_r") ** 2)),
+                    (sym("bottom_q_th"), sym("i_bottom_q_th")),
+                    (sym("bottom_q_thd"), momentum(f_t_b, f_t_s) / (m * sym("i_bottom_q_r") ** 2)),
                     (sym("liftoff_q_r"), q_r_lo),
-                    (sym("liftoff_q_th"), sym("f_liftoff_q_th")),
+                    (sym("liftoff_q_th"), sym("i_liftoff_q_th")),
                     (sym("liftoff_q_thd"), (p_td + P_c) / (m * q_r_lo**2)),
                 ),
                 comment="the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)",
@@ -409,11 +410,11 @@ def _constant_correction(kind: int):
                 (
                     (
                         reading.code("mean"),
-                        liftoff_speed_from_energy(sym("f_liftoff_q_th"), p_td + P_c),
+                        liftoff_speed_from_energy(sym("i_liftoff_q_th"), p_td + P_c),
                     ),
                     (
                         reading.code("report"),
-                        (Stage(((sym("liftoff_q_rd"), sym("f_liftoff_q_rd")),), comment="from (11)"),),
+                        (Stage(((sym("liftoff_q_rd"), sym("i_liftoff_q_rd")),), comment="from (11)"),),
                     ),
                 ),
             ),
@@ -421,7 +422,7 @@ def _constant_correction(kind: int):
 
         def state_at(time: sp.Symbol) -> tuple[Step, ...]:
             st = geyer.state_kernel()
-            f = {x: sym("f_" + x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
+            f = {x: sym("i_" + x) for x in ("omega", "omega0_hat", "a", "b", "phase_td")}
             return setup + (
                 Stage(((sym("phase_t"), f["phase_td"] + f["omega0_hat"] * time),)),
                 Call(

@@ -308,7 +308,9 @@ def _build(inp: MapInputs) -> MapBuild:
         touchdown_invariants(),
         Iterate(
             state=tuple((s, sp.sympify(v)) for s, v in state),
-            body=_trajectory("i_"),
+            # the trajectory at every iterate, the final one included (visible after the loop)
+            evaluate=_trajectory("i_"),
+            body=(),
             update=(*(sym(f"i_tau{i}") for i in (1, 2, 3)), sym("i_t_stance"), sym("i_g_eff"), sym("i_r_c")),
             max_iter=inp.opt("iterations"),
             tol=inp.opt("tol"),
@@ -316,16 +318,15 @@ def _build(inp: MapInputs) -> MapBuild:
             count=sym("passes"),
             comment="T5.8: fixed point on the nodal torques, the stance time, g_eff and r_c",
         ),
-        *_trajectory("f_"),
     )
     f = {
-        name: sym("f_" + name)
+        name: sym("i_" + name)
         for name in ("a", "b", "omega0_hat", "phase_td", "t_bottom", "t_stance", "c0", "c1", "c2")
     }
     p_of = momentum(U).subs({C[0]: f["c0"], C[1]: f["c1"], C[2]: f["c2"]})
 
     def angle_at(time, out):
-        return _angle_call("f_", time, out)
+        return _angle_call("i_", time, out)
 
     q_r_b = l0 * (1 + f["a"] - f["b"])
     outputs = (

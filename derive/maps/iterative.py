@@ -148,7 +148,8 @@ def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step,
     scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
     iterate = Iterate(
         state=((D, d0), *zip(Q, start_q, strict=True), *zip(P, start_p, strict=True)),
-        body=(_evaluate("_i", rule, stiffness, base, D, Q, P),),
+        evaluate=(_evaluate("_i", rule, stiffness, base, D, Q, P),),
+        body=(),
         update=(new_d, *new_q, *new_p),
         max_iter=sym("iterations"),
         tol=sym("tol"),
@@ -156,17 +157,16 @@ def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step,
         count=sym("_passes"),
         comment=f"Picard passes on the {n} node values (collocation in u)",
     )
-    final = _evaluate("_f", rule, stiffness, base, D, Q, P)
+    # The node values at the final iterate are the loop's last evaluation (Iterate.evaluate).
     # Both halves: y_end = y_anchor + int_0^1 (the compression half runs toward u = 0 in time, the
     # decompression half toward u = 1; in both the u-rates point along the motion).
-    q_th_end = th0 + _dot(rule.w, _rates("_f", rule, "fq"))
-    p_th_end = pth0 + _dot(rule.w, _rates("_f", rule, "fp"))
-    common = ((sym("t_half"), _dot(rule.w, _rates("_f", rule, "ft"))), (sym("end_q_th"), q_th_end))
+    q_th_end = th0 + _dot(rule.w, _rates("_i", rule, "fq"))
+    p_th_end = pth0 + _dot(rule.w, _rates("_i", rule, "fp"))
+    common = ((sym("t_half"), _dot(rule.w, _rates("_i", rule, "ft"))), (sym("end_q_th"), q_th_end))
     if compress:
         q_r_b = sym("end_q_r")
         return (
             iterate,
-            final,
             Stage(
                 (
                     *common,
@@ -182,9 +182,8 @@ def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step,
     work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
     return (
         iterate,
-        final,
         Stage(
-            ((work, _dot(rule.w1, _rates("_f", rule, "F"))),),
+            ((work, _dot(rule.w1, _rates("_i", rule, "F"))),),
             (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),),
         ),
         Stage(
