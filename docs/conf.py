@@ -17,6 +17,7 @@ from __future__ import annotations
 from importlib.metadata import version as _version
 
 import slipmaps
+from sphinx.pycode import ModuleAnalyzer
 
 project = "slipmaps"
 author = "the slipmaps authors"
@@ -59,7 +60,41 @@ nitpicky = True
 #: (no intersphinx inventories), so these would be unresolved references; nothing of slipmaps is here.
 nitpick_ignore_regex = [
     ("py:class", r"(numpy|np)\..*"),
-    ("py:class", r"(scipy|distributed|dask|pathlib|os)\..*"),
+    ("py:class", r"(scipy|distributed|dask|pathlib|os|collections\.abc)\..*"),
 ]
 
-assert slipmaps.__all__  # the API reference documents these (tests/test_docs.py)
+
+def _reexported_data_doc(app, what, name, obj, options, lines):
+    """A constant re-exported by ``slipmaps`` (``slipmaps.HUMAN_RUNNER``) is documented by the ``#:``
+    comment where it is defined; autodoc would otherwise show its type's docstring."""
+    public = name.removeprefix("slipmaps.")
+    if what != "data" or public not in slipmaps.__all__:
+        return
+    comment = ModuleAnalyzer.for_module(slipmaps._EXPORTS[public]).find_attr_docs().get(("", public))
+    if comment:
+        lines[:] = list(comment)
+
+
+def _resolve_public(app, env, node, contnode):
+    """A reference by a name's defining module (``slipmaps.runtime.api.results.Result``, from a type
+    hint) or by its bare name (``FixedPoints``, in the docstring of a re-exported function, read in
+    module ``slipmaps``) goes to where the site documents it: ``slipmaps.NAME`` for a public name,
+    else the one documented object of that name. Ambiguous or undocumented names stay warnings."""
+    if node.get("refdomain") != "py":
+        return None
+    target = node["reftarget"].lstrip(".~")
+    name = target.rsplit(".", 1)[-1]
+    domain = env.get_domain("py")
+    if name in slipmaps.__all__ and (target == name or target.startswith("slipmaps.")):
+        resolved = f"slipmaps.{name}"
+    else:
+        found = [full for full in domain.objects if full.endswith(f".{target}")]
+        if len(found) != 1:
+            return None
+        resolved = found[0]
+    return domain.resolve_xref(env, node["refdoc"], app.builder, node["reftype"], resolved, node, contnode)
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", _reexported_data_doc)
+    app.connect("missing-reference", _resolve_public)
