@@ -14,9 +14,10 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     gaits = slipmaps.fixed_points("exact", params, apex_height=1.0, speed=5.0)  # periodic gaits
     gaits[0].touchdown_angle, gaits[0].eigenvalue, gaits[0].stable
 
-Conventions: SI units; leg angle from the vertical, counterclockwise positive; polar state
-``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
-top-level package ``slipmaps`` (``pyproject.toml``, ``package-dir``).
+Conventions (all of them: docs/conventions.md): SI units; leg angle from the vertical,
+counterclockwise positive; polar state ``(q_r, q_rd, q_th, q_thd)``; times in a stance from
+touchdown. This file is installed as the top-level package ``slipmaps`` (``pyproject.toml``,
+``package-dir``).
 
 numba caches the compiled kernels in ``NUMBA_CACHE_DIR`` when it is set, else in
 ``~/.cache/slipmaps/numba`` (``$XDG_CACHE_HOME``), never inside the installed package; importing
