@@ -38,8 +38,6 @@ SKIPPED = {
     "python3 -m pip install -e '.[derive]'": "installs slipmaps with the derive extra",
     "slipmaps generate": "rewrites the checkout's generated/ and docs",
     "slipmaps accuracy": "rewrites the checkout's docs/ and takes minutes",
-    "python3 -m pip install -e '.[docs]'": "installs slipmaps with the docs extra (Documentation)",
-    "python3 -m sphinx -W --keep-going -n -b html docs docs/_build/html": "builds the site (CI runs it)",
 }
 PREFIXES = (("python3", "-m", "slipmaps"), ("python", "-m", "slipmaps"), ("slipmaps",))
 
