@@ -159,7 +159,7 @@ class FixedPoint:
 
     @property
     def stable(self) -> bool:
-        """Self-stable: |eigenvalue| < 1 (False for a failed point)."""
+        """True when self-stable, ``abs(eigenvalue) < 1`` (False for a failed point)."""
         return self.ok and bool(abs(self.eigenvalue) < 1.0)
 
     @property

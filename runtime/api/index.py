@@ -144,7 +144,7 @@ class MapInfo:
     #: Role -> the kernel's calling convention (:class:`KernelSpec`).
     kernels: Mapping[str, KernelSpec] = field(default_factory=dict)
     extras: tuple[str, ...] = ()
-    #: Reproduces the report's printed formulas, errors included: no accuracy claim.
+    #: True when the map reproduces the report's printed formulas, errors included (no accuracy claim).
     as_printed: bool = False
     #: Statuses the approximation itself returns on gaits the exact stance completes.
     approximation_statuses: tuple[str, ...] = ()

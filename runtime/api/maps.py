@@ -22,7 +22,7 @@ Every call fills the kernels' arguments by name (:mod:`.calls`): no function her
 argument order or branches on a map; the exact map is one like the others. Options are keywords
 (``iterations=20``, ``reading="mean"``; ``slipmaps maps`` lists them). A scalar call raises
 ValueError for an invalid argument (naming it); a state outside the map's domain is a result with a
-status, never an exception. Conventions (README): SI units, leg angle from the vertical,
+status, never an exception. Conventions (docs/conventions.md): SI units, leg angle from the vertical,
 counterclockwise positive.
 """
 

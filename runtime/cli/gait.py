@@ -40,10 +40,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
         "gait",
         help="periodic gaits: fixed points of the apex-return map and their eigenvalues",
         description="Every fixed point of the apex-return map (a periodic one-step gait) with its "
-        "eigenvalue on the energy level (self-stable when |eigenvalue| < 1) and the Floquet multipliers, "
-        "by the exact map and every --map. Default: the human runner at apex height 1 m, apex speeds 3-7 "
-        "m/s, the touchdown angle unknown. With --energy or --energy-speed and --angle: the apex heights "
-        "unknown. Angles in rad from the vertical (angle of attack from the ground: 90 deg - angle). "
+        "eigenvalue on the energy level (self-stable when its magnitude is below 1) and the Floquet "
+        "multipliers, by the exact map and every --map. Default: the human runner at apex height 1 m, "
+        "apex speeds 3-7 m/s, the touchdown angle unknown. With --energy or --energy-speed and --angle: "
+        "the apex heights unknown. Angles in rad from the vertical (angle of attack from the ground: 90 "
+        "deg - angle). "
         "lambda (the eigenvalue) is of the one-dimensional apex-height return map on the energy level; "
         "the multipliers are the eigenvalues of the 2x2 apex-return Jacobian, (1, lambda) only for a "
         "step that conserves the flight energy.",

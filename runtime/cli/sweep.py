@@ -33,7 +33,8 @@ def _epilog() -> str:
         width=100,
     )
     return f"""\
-examples:
+examples::
+
   slipmaps sweep --map geyer --fixed apex_height=1.0 --axis apex_speed=3:7:41 \\
       --axis touchdown_angle=0.25:0.45:21 --out sweep_geyer
   slipmaps sweep examples/sweep.toml --scheduler local:2
@@ -42,7 +43,7 @@ examples:
 
 {text}
 
-output: OUT/manifest.json (definition, units), OUT/chunks/part-*.csv|parquet, with --combine
+output: OUT/manifest.json (definition, units), OUT/chunks/part-NNNNN.csv|parquet, with --combine
 OUT/sweep.csv|parquet; columns: the inputs, the swept parameters, the map's outputs (the next
 apex as next_apex_height, next_apex_speed), status and status_name. Interrupted? Run the same
 command again: it resumes from the chunks written (a different sweep into the same OUT is refused).

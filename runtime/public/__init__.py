@@ -17,9 +17,10 @@ checked against numerical integration (``slipmaps.runtime``). The public API, ge
     plan.touchdown_angle, plan.k_d, plan.status                          # REACHED
     trip = slipmaps.run("examples/stairs.toml")                          # steps on the exact plant
 
-Conventions: SI units; leg angle from the vertical, counterclockwise positive; polar state
-``(q_r, q_rd, q_th, q_thd)``; times in a stance from touchdown. This file is installed as the
-top-level package ``slipmaps`` (``pyproject.toml``, ``package-dir``).
+Conventions (all of them: docs/conventions.md): SI units; leg angle from the vertical,
+counterclockwise positive; polar state ``(q_r, q_rd, q_th, q_thd)``; times in a stance from
+touchdown. This file is installed as the top-level package ``slipmaps`` (``pyproject.toml``,
+``package-dir``).
 
 numba caches the compiled kernels in ``NUMBA_CACHE_DIR`` when it is set, else in
 ``~/.cache/slipmaps/numba`` (``$XDG_CACHE_HOME``), never inside the installed package; importing

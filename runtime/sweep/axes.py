@@ -187,7 +187,7 @@ class Axis:
 
     @property
     def grid_size(self) -> int | None:
-        """The number of grid points (None: a range without ``num``, usable only in a random sweep)."""
+        """The number of grid points, or None for a range without ``num`` (usable only in a random sweep)."""
         return len(self.values) if self.values is not None else self.num
 
     def bounds(self) -> tuple[float, float]:

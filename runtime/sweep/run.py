@@ -18,10 +18,10 @@ are the defaults of the arguments): ``slipmaps.sweep("examples/sweep.toml")``; o
 ``slipmaps sweep examples/sweep.toml``.
 
 The rows are :func:`slipmaps.apex_return_batch` (``kind="apex_return"``) or
-:func:`slipmaps.stance_batch` (``kind="stance"``) rows, chunk by chunk (:mod:`.sweep_compute`); the
-quantities, units and row order are :mod:`.sweep_axes`'s, the definition :mod:`.sweep_spec`'s, the
-files :mod:`.sweep_files`'s and the directory layout and resuming :mod:`.sweep_store`'s; where the
-chunks run is :mod:`.sweep_schedulers`'s. Memory holds a few chunks, never the whole sweep: a grid
+:func:`slipmaps.stance_batch` (``kind="stance"``) rows, chunk by chunk (:mod:`.compute`); the
+quantities, units and row order are :mod:`.axes`'s, the definition :mod:`.spec`'s, the
+files :mod:`.files`'s and the directory layout and resuming :mod:`.store`'s; where the
+chunks run is :mod:`.schedulers`'s. Memory holds a few chunks, never the whole sweep: a grid
 point is computed from its row index. Running the same sweep into the same directory again
 resumes it: the chunks already written are kept, the others computed.
 """
@@ -159,11 +159,11 @@ def sweep(
     ``out``, resuming what is already there.
 
     ``format``: "csv" (default) or "parquet" (needs pyarrow). ``scheduler``: None / "inprocess"
-    (default), "local:N" or a dask address / Client (:mod:`.sweep_schedulers`). ``progress``: a bar
-    on standard error (None: on a terminal, after a second). ``combine``: also write all rows to
-    ``out/sweep.<format>`` once every chunk is written. ``max_chunks``: compute at most this many
-    chunks in this call (the rest on a later call). ``on_chunk(index)``: called after each chunk
-    is written. ValueError for a bad definition or directory, before anything is computed.
+    (default), "local:N" or a dask address / Client (``slipmaps.runtime.sweep.schedulers``).
+    ``progress``: a bar on standard error (None: on a terminal, after a second). ``combine``: also
+    write all rows to ``out/sweep.<format>`` once every chunk is written. ``max_chunks``: compute at
+    most this many chunks in this call (the rest on a later call). ``on_chunk(index)``: called after
+    each chunk is written. ValueError for a bad definition or directory, before anything is computed.
     """
     run: dict = {}
     if isinstance(definition, (str, Path)):

@@ -3,7 +3,7 @@ and how the rows fall into chunks; validated on construction, identified by a ha
 
 ``Sweep(map, axes, fixed, params=..., kind=..., options=..., mode=..., samples=..., seed=...,
 chunk_rows=...)``; ``Sweep.from_dict`` reads the same from a TOML table or JSON (:func:`read_toml`).
-The quantities, their units and the row order are :mod:`.sweep_axes`'s. The parameters of a row are
+The quantities, their units and the row order are :mod:`.axes`'s. The parameters of a row are
 ``params`` (default the human runner), overridden by ``fixed``, overridden by the row's parameter
 axes; ``k`` sets both stiffnesses, ``k_d_over_k_c`` sets ``k_d = k_c * ratio``; ``q_r_td`` and
 ``q_r_lo`` equal to ``l0`` in ``params`` follow a swept ``l0``. A row whose parameters are invalid
@@ -276,7 +276,7 @@ class Sweep:
         return start, min(start + self.chunk_rows, self.rows)
 
     def points(self, start: int, stop: int) -> dict[str, np.ndarray]:
-        """The swept values of rows ``start..stop-1``, by axis name (:mod:`.sweep_axes`)."""
+        """The swept values of rows ``start..stop-1``, by axis name (``slipmaps.runtime.sweep.axes``)."""
         if not 0 <= start <= stop <= self.rows:
             raise ValueError(f"rows {start}..{stop} out of range 0..{self.rows}")
         if self.mode == "random":
@@ -299,7 +299,7 @@ class Sweep:
 
     @property
     def output_columns(self) -> tuple[str, ...]:
-        """The output names as written: ``next_`` before a name that is also an input's."""
+        """The output names as written, with ``next_`` before a name that is also an input's."""
         return tuple(f"next_{n}" if n in self.input_names else n for n in self.output_names)
 
     @property

@@ -380,7 +380,8 @@ def check_eq129_131() -> None:
     "sigma (s = 0 at both ends, computed) (35) again gives 1/2 at touchdown and 1/4 from the bottom, "
     "so the text's 'the same as previous one' holds, and the same correction applies: xi = 3/4 q_r_b "
     "+ 1/4 q_r_td for the whole half, the iterate anchored at the bottom, x(q_r) = x_td + D(q_r) - "
-    "D(q_r_td) with D(x) = [state part/H_ab^{-1}](xi(x)) int_{q_r_b}^{x} g, xi(x) = 3/4 q_r_b + 1/4 x.",
+    "D(q_r_td) with D(x) = [state part/H_ab^{-1}] at xi(x) times int_{q_r_b}^{x} g, "
+    "xi(x) = 3/4 q_r_b + 1/4 x.",
 )
 def check_eq132() -> None:
     """Printed: xi_hat_x = 3/4 q_r_td + 1/4 q_r (for f = 1/H_ab^{-1} of (128))."""

@@ -1,0 +1,78 @@
+"""The documentation site's sources (docs/, built by docs/conf.py): fast checks on the text, no build
+(CI builds the site with warnings as errors after the tests; the README says how).
+
+- every public name of ``slipmaps.__all__`` is documented in the API reference, at ``slipmaps.NAME``;
+- every page in docs/ is in the site (a toctree entry), the pages that commands write included as
+  they are, never copied;
+- the README sections that the site includes (``{include} ../README.md`` between two headings) are
+  there, each heading once, so a README edit that renames one fails here, not only in the build.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+import slipmaps
+
+ROOT = Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
+#: The pages of the API reference.
+API_PAGES = ("api.md",)
+#: An ``{include}`` of the README, its options the group.
+INCLUDE = r"^```\{include\} \.\./README\.md\n(.*?)^```"
+
+
+def _documented() -> list[str]:
+    """The names the API pages document at the top level (``.. autoclass:: slipmaps.NAME``...)."""
+    text = "\n".join((DOCS / page).read_text() for page in API_PAGES)
+    return re.findall(r"^\.\. auto(?:class|function|data)::\s+slipmaps\.(\w+)\s*$", text, flags=re.M)
+
+
+def test_every_public_name_is_in_the_api_reference():
+    documented = _documented()
+    assert sorted(set(slipmaps.__all__) - set(documented)) == []
+    # and nothing else at the top level, each name once
+    assert sorted(set(documented) - set(slipmaps.__all__)) == []
+    assert len(documented) == len(set(documented))
+
+
+def _toctree_entries() -> set[str]:
+    entries = set()
+    for page in DOCS.glob("*.md"):
+        for block in re.findall(r"^```\{toctree\}\n(.*?)^```", page.read_text(), flags=re.S | re.M):
+            entries |= {line.strip() for line in block.splitlines() if line.strip() and line[0] != ":"}
+    return entries
+
+
+def test_every_page_is_in_the_site():
+    pages = {p.stem for p in DOCS.glob("*.md")} - {"index"}
+    assert sorted(pages - _toctree_entries()) == []
+    assert sorted(_toctree_entries() - pages) == []
+
+
+@pytest.mark.parametrize("page", ["maps", "equations", "accuracy", "convergence", "stiffness", "stability"])
+def test_a_generated_page_is_a_page_of_the_site(page):
+    head = "\n".join((DOCS / f"{page}.md").read_text().splitlines()[:3])
+    assert "do not edit" in head, f"docs/{page}.md is no longer written by a command"
+    assert page in _toctree_entries()
+
+
+def _readme_includes() -> list[tuple[str, str, str]]:
+    out = []
+    for page in sorted(DOCS.glob("*.md")):
+        for block in re.findall(INCLUDE, page.read_text(), flags=re.S | re.M):
+            options = dict(re.findall(r'^:([\w-]+): "(.*)"$', block, flags=re.M))
+            out += [(page.name, key, options[key]) for key in ("start-after", "end-before")]
+    return out
+
+
+def test_the_site_includes_readme_sections():
+    assert len(_readme_includes()) >= 10
+
+
+@pytest.mark.parametrize("page, option, heading", _readme_includes())
+def test_an_included_readme_heading_is_there_once(page, option, heading):
+    readme = (ROOT / "README.md").read_text()
+    assert re.findall(rf"^{re.escape(heading)}$", readme, flags=re.M) == [heading], (page, option)
