@@ -125,7 +125,7 @@ STANCE_FRACTION = 0.8
 
 def default_angle(params: SlipParams, apex_speed, k_c: float | None = None):
     """The starting touchdown angle: the neutral angle whose foot lands half a stance ahead,
-    asin(v t_s / (2 q_r_td)) with t_s = 0.8 pi sqrt(m / k_c) (clipped to |q_th| <= 1 rad); a float
+    ``asin(v t_s / (2 q_r_td))`` with ``t_s = 0.8 pi sqrt(m / k_c)`` (clipped to ``|q_th| <= 1`` rad); a float
     for a float, an array for an array (the same numbers: the batch starts where the scalar does)."""
     k = params.k_c if k_c is None else k_c
     t_s = STANCE_FRACTION * math.pi * math.sqrt(params.m / k)
@@ -458,9 +458,10 @@ class Deadbeat:
 
     ``plan(h, v, H, V, ground=0.0)`` solves one step; ``plan_batch`` many (arrays broadcast, in
     parallel). ``touchdown_angle=``, ``k_c=``, ``k_d=``, ``k=`` of a call give the starting values of
-    the controls (the angle's default: :func:`default_angle`; the stiffness's: ``params``, which are
-    also the nominal values of the least-change preference) and the fixed value of a quantity that is
-    not a control (the touchdown angle when only stiffnesses are controlled).
+    the controls (the angle's default: :func:`~slipmaps.runtime.control.deadbeat.default_angle`; the
+    stiffness's: ``params``, which are also the nominal values of the least-change preference) and
+    the fixed value of a quantity that is not a control (the touchdown angle when only stiffnesses
+    are controlled).
     """
 
     def __init__(
@@ -621,8 +622,8 @@ class Deadbeat:
         self, apex_height, apex_speed, target_height, target_speed, *, ground=0.0, touchdown_angle=None
     ) -> DeadbeatBatch:
         """Many steps in parallel: the inputs broadcast (``touchdown_angle``: starting angles, default
-        :func:`default_angle` of each apex speed); a plan status per row (an invalid row, e.g. a NaN
-        apex, is MAP_FAILED with the map's INVALID_INPUT)."""
+        :func:`~slipmaps.runtime.control.deadbeat.default_angle` of each apex speed); a plan status
+        per row (an invalid row, e.g. a NaN apex, is MAP_FAILED with the map's INVALID_INPUT)."""
         tgt = self._targeted(target_height, target_speed)
         given = {
             "apex_height": apex_height,

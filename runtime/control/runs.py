@@ -243,7 +243,7 @@ class Run:
         }
 
     def path(self, samples: int = 40):
-        """The continuous body and foot path (:func:`~.motion.path`)."""
+        """The continuous body and foot path (:func:`~slipmaps.runtime.control.motion.path`)."""
         from .motion import path
 
         return path(self, samples)

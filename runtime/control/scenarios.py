@@ -92,8 +92,10 @@ TERRAINS = ("flat", "steps", "stairs", "random")
 
 @dataclass(frozen=True)
 class Scenario:
-    """A run's definition (module docstring); build it with :func:`from_dict`, :func:`load` or
-    directly (arrays per step as tuples of floats)."""
+    """A run's definition (module docstring); build it with
+    :func:`~slipmaps.runtime.control.scenarios.from_dict`,
+    :func:`~slipmaps.runtime.control.scenarios.load` or directly (arrays per step as tuples of
+    floats)."""
 
     name: str = "run"
     description: str = ""
@@ -398,5 +400,5 @@ def load(path: str | Path) -> Scenario:
     return from_dict(read_toml(path), where=str(path))
 
 
-#: :func:`load` under its public name (``slipmaps.load_scenario``).
+#: :func:`~slipmaps.runtime.control.scenarios.load` under its public name (``slipmaps.load_scenario``).
 load_scenario = load
