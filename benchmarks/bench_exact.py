@@ -41,7 +41,7 @@ from numba import njit
 from slipmaps.runtime.exact import compiled as ec
 from slipmaps.runtime.exact import dop853
 from slipmaps.runtime.exact import kernels as ek
-from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import best_of, machine, states  # noqa: E402
@@ -161,7 +161,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     p4, p2 = types.UniTuple(f8, 4), types.UniTuple(f8, 2)
     rhs_sig, ev_sig = types.void(f8, arr, p4, arr), types.void(f8, arr, p2, arr)
     rhs, ev = njit(rhs_sig)(ec.polar_field.py_func), njit(ev_sig)(ec.stance_events.py_func)
-    out_ty = types.Tuple((types.int64, f8, types.int64, types.int64))
+    out_ty = types.Tuple((types.int64, f8, types.int64, types.int64, types.int64))
     solve_fc = njit(
         out_ty(
             types.FunctionType(rhs_sig),
@@ -236,7 +236,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     rows = np.ascontiguousarray(td[:2000])
     p, pe = (P.m, P.l0, P.k_c, P.g_s), (P.q_r_lo, 1e-3 * P.l0)
     direction = np.array(ec.COMPRESSION_DIRECTIONS)
-    cap, y_end = max_step(P.m, P.l0, P.k_c, P.g_s), np.empty(4)
+    cap, y_end = ec.step_cap(P.m, P.l0, P.k_c, P.g_s, DEFAULT_RTOL), np.empty(4)
     fc = (rows, rhs, ev, p, pe, direction, cap, y_end)
     disp = (rows, ec.polar_field, ec.stance_events, p, pe, direction, cap, y_end)
     same = run_fc(*fc) == run_disp(*disp)
