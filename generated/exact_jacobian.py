@@ -8,10 +8,10 @@
 #   flight_jacobian.py sha256:93735a9cd1eada3e
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
 #   runtime/exact/compiled.py sha256:06f337539a4bc386
-#   runtime/exact/dop853.py sha256:2f9489373a19bf9d
+#   runtime/exact/dop853.py sha256:7cd47043700e95d7
 #   runtime/exact/jacobian.py sha256:c33ac507e7dd844f
 #   runtime/exact/kernels.py sha256:2bd1ad174519234a
-#   runtime/exact/reference.py sha256:dacc315bc18f31ea
+#   runtime/exact/reference.py sha256:1a2d2771848fe471
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map its stance and apex-return Jacobians."""
 

@@ -12,9 +12,8 @@ an integration costs microseconds instead of milliseconds:
   ``t_bound``; initial step: scipy's ``select_initial_step``;
 * the step itself: the tableau's sums written out as source with literal coefficients and its
   zeros left out (:func:`_step_source`, compiled once at import; the polar state's 4 components
-  written out too), summed pairwise with the newest stage last: the same values as scipy's to
-  round-off (not bitwise; tests/test_exact_compiled.py bounds the difference), about 1.3x faster
-  per step than the loops over the tableau (benchmarks/bench_exact.py);
+  written out too), summed in scipy's order: the values of the loops over the tableau, bitwise,
+  with fewer operations (benchmarks/bench_exact.py measures the step);
 * dense output: the 7th-order interpolant of scipy's ``DOP853._dense_output_impl`` (three extra
   stages per interpolated step) evaluated as ``Dop853DenseOutput``;
 * events: evaluated at the end of every step; an event whose function changes sign in the
@@ -133,27 +132,17 @@ def static(fn):
 
 
 def _sum(coefficients: np.ndarray, stages: int, term) -> str:
-    """The source of sum_j term(j) * coefficients[j] over the first ``stages`` stages, the tableau's
-    zeros left out, summed pairwise (a balanced tree: its additions take log2 of the terms' count
-    in sequence)."""
-    terms = [f"{term(j)} * {float(c)!r}" for j, c in enumerate(coefficients[:stages]) if c != 0.0]
-    while len(terms) > 1:
-        pairs = [f"({terms[i]} + {terms[i + 1]})" for i in range(0, len(terms) - 1, 2)]
-        terms = pairs + (terms[-1:] if len(terms) % 2 else [])
-    return terms[0]
+    """The source of sum_j term(j) * coefficients[j] over the first ``stages`` stages in stage order
+    (scipy's, ``K.T @ a``), the tableau's zeros left out (a zero term adds nothing to a finite sum:
+    the same value bitwise). The order matters: an error estimate below round-off (the first steps
+    from a state with zero components) is round-off, and the steps it chooses must be scipy's."""
+    return " + ".join(f"{term(j)} * {float(c)!r}" for j, c in enumerate(coefficients[:stages]) if c != 0.0)
 
 
 def _advance(y: str, coefficients: np.ndarray, stages: int, term) -> str:
-    """The source of y + h sum_j coefficients[j] term(j) over the first ``stages`` stages, arranged
-    so that the last stage (the one just evaluated) enters last, through one multiplication by the
-    precomputed h c_last and one addition: the earlier stages' part is summed while the last is
-    still being evaluated (the steps' chain of dependent operations is the right-hand side's and
-    two more per stage). The same value as scipy's y + h (K^T a) to round-off."""
-    last = max(j for j in range(stages) if coefficients[j] != 0.0)
-    c_last = float(coefficients[last])
-    if not any(coefficients[j] != 0.0 for j in range(last)):
-        return f"{y} + {term(last)} * (h * {c_last!r})"
-    return f"({y} + h * ({_sum(coefficients, last, term)})) + {term(last)} * (h * {c_last!r})"
+    """The source of y + (sum_j coefficients[j] term(j)) * h over the first ``stages`` stages
+    (scipy's ``y + h * (K.T @ a)``)."""
+    return f"{y} + ({_sum(coefficients, stages, term)}) * h"
 
 
 #: A state of this length (the polar stance) runs its loops over the components with a constant
@@ -165,7 +154,7 @@ def _step_source() -> str:
     """Python source of the Runge-Kutta step, the error norm and the interpolant's coefficients:
     every coefficient a literal, every loop over the stages unrolled, the tableau's zeros left out
     (:func:`_sum`, :func:`_advance`). A state of length :data:`UNROLLED` and any other run the
-    same expressions (bitwise the same values)."""
+    same expressions (bitwise the same values), those of the loops over the tableau before."""
 
     def arr(j):
         return f"K[{j}, i]"
@@ -287,18 +276,39 @@ def _rms(x, scale, n):
     return math.sqrt(s) / math.sqrt(n)
 
 
+@njit(**_JIT)
+def _rms_where_nonzero(x, y0, scale, n):
+    """The RMS norm of x / scale over the first n components where y0 is not 0 (0 when none is)."""
+    s = 0.0
+    count = 0
+    for i in range(n):
+        if y0[i] != 0.0:
+            v = x[i] / scale[i]
+            s += v * v
+            count += 1
+    return math.sqrt(s) / math.sqrt(count) if count > 0 else 0.0
+
+
 @njit(**_GENERIC)
 def initial_step(rhs, p, t0, y0, f0, t_bound, max_step, rtol, atol, n_control, y1, f1, scale):
     """scipy's ``select_initial_step`` (forward in time, error estimator order 7) on the first
-    ``n_control`` components."""
+    ``n_control`` components, except that its first guess (the time over which the state moves by
+    1 % of itself, ``0.01 d0 / d1``) leaves out the components that are exactly 0 (scipy's guess
+    over all of them when the others do not move: a vertical hop's bottom). One such (q_rd at the
+    bottom) has the scale atol alone, and scipy's guess 3.6e-11 s there makes the controller
+    (growth 10x per step at most) take about ten steps, 110 evaluations, to reach its own step at
+    every tolerance. ``reference.first_step`` is the same rule for solve_ivp."""
     n = y0.shape[0]
     interval = abs(t_bound - t0)
     if interval == 0.0:
         return 0.0
     for i in range(n_control):
         scale[i] = atol + abs(y0[i]) * rtol
-    d0 = _rms(y0, scale, n_control)
-    d1 = _rms(f0, scale, n_control)
+    d0 = _rms_where_nonzero(y0, y0, scale, n_control)
+    d1 = _rms_where_nonzero(f0, y0, scale, n_control)
+    if d0 < 1e-5 or d1 < 1e-5:  # the nonzero components do not move: scipy's guess over all
+        d0 = _rms(y0, scale, n_control)
+        d1 = _rms(f0, scale, n_control)
     h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
     h0 = min(h0, interval)
     for i in range(n):
