@@ -18,7 +18,12 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
 (e) the external kernels of ``runtime/exact/kernels.py`` (the map ``"exact"``'s generated code
     calls them), per state in an njit loop on one thread: ``stance``, ``compression`` then
     ``decompression`` (the same stance in two calls), ``state_at`` at mid-stance, each relative
-    to ``stance``.
+    to ``stance``;
+(f) the stance against its floor (issue 19 item 3): the right-hand side's evaluations per stance
+    (``compiled.stance_evaluations``) times the cost of one evaluation (an njit loop of
+    evaluations, each from the state the one before moved: the latency a Runge-Kutta stage waits
+    for; independent evaluations' throughput printed too), against the stance's time from (e);
+    target: within 2.5x.
 
 Best of ``--repeat`` after a warm-up call (compilation excluded); ratios are measured in one run,
 absolute times move with the machine and its load (printed). Usage::
@@ -41,7 +46,7 @@ from numba import njit
 from slipmaps.runtime.exact import compiled as ec
 from slipmaps.runtime.exact import dop853
 from slipmaps.runtime.exact import kernels as ek
-from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance, stance_time_limit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import best_of, machine, states  # noqa: E402
@@ -135,6 +140,58 @@ def external(td: np.ndarray, repeat: int) -> dict:
         "state_at_us": 1e6 * times["state_at"],
         "halves_ratio": times["halves"] / times["stance"],
         "state_at_ratio": times["state_at"] / times["stance"],
+    }
+
+
+@njit
+def _rhs_chain(y0, p, reps):
+    """``reps`` evaluations of the stance field, each from a state moved along the previous one's
+    slope (each evaluation waits for the one before, as a Runge-Kutta stage does)."""
+    y = y0.copy()
+    dy = np.empty(4)
+    for _ in range(reps):
+        ec.polar_field(0.0, y, p, dy)
+        for i in range(4):
+            y[i] += 1e-7 * dy[i]
+    return y[0]
+
+
+@njit
+def _rhs_independent(rows, p):
+    """One evaluation of the stance field per row (independent: as many in flight as the CPU can)."""
+    dy = np.empty(4)
+    acc = 0.0
+    for i in range(rows.shape[0]):
+        ec.polar_field(0.0, rows[i], p, dy)
+        acc += dy[1] + dy[3]
+    return acc
+
+
+def floor(td: np.ndarray, repeat: int) -> dict:
+    """The stance against its floor: (right-hand side evaluations per stance) x (cost of one
+    evaluation), both measured here, against the stance's own time (the external kernel in an njit
+    loop on one thread, as (e)); target: within 2.5x."""
+    rows = np.ascontiguousarray(td[:20_000])
+    t_max = stance_time_limit(P.m, P.l0, P.k_c, P.k_d, P.g_s)
+    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
+    counts = [ec.stance_evaluations(*row, *args, t_max) for row in rows[:2000]]
+    evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
+    p = (P.m, P.l0, P.k_c, P.g_s)
+    reps = 1_000_000
+    _rhs_chain(rows[0], p, 10)
+    _rhs_independent(rows[:10], p)
+    t_chain = best_of(lambda: _rhs_chain(rows[0], p, reps), repeat) / reps
+    t_indep = best_of(lambda: _rhs_independent(rows, p), repeat) / len(rows)
+    _kernel_loop(0, rows[:10], *args)
+    t_stance = best_of(lambda: _kernel_loop(0, rows, *args), repeat) / len(rows)
+    return {
+        "evaluations": evaluations,
+        "rhs_chain_ns": 1e9 * t_chain,
+        "rhs_independent_ns": 1e9 * t_indep,
+        "stance_us": 1e6 * t_stance,
+        "ratio": t_stance / (evaluations * t_chain),
+        "ratio_independent": t_stance / (evaluations * t_indep),
+        "target": 2.5,
     }
 
 
@@ -252,6 +309,7 @@ def run(n: int, repeat: int, with_first_class: bool) -> dict:
     out["throughput"] = throughput(h, v, th, td, repeat)
     out["jacobian"] = jacobian(td, repeat)
     out["external"] = external(td, repeat)
+    out["floor"] = floor(td, repeat)
     if with_first_class:
         out["first_class"] = first_class(td, repeat)
     return out
@@ -292,6 +350,17 @@ def report(r: dict) -> str:
         f"stance {e['stance_us']:.2f} us, compression + decompression {e['halves_us']:.2f} us "
         f"({e['halves_ratio']:.2f}x), "
         f"state_at mid-stance {e['state_at_us']:.2f} us ({e['state_at_ratio']:.2f}x)",
+    ]
+    f = r["floor"]
+    met = "met" if f["ratio"] <= f["target"] else "NOT met"
+    lines += [
+        "",
+        f"(f) the stance against its floor (rtol {r['rtol']:g}): {f['evaluations']:.1f} right-hand side "
+        f"evaluations per stance x {f['rhs_chain_ns']:.1f} ns per evaluation (each waiting for the one "
+        f"before, as a stage does) = {f['evaluations'] * f['rhs_chain_ns'] / 1e3:.2f} us; the stance "
+        f"{f['stance_us']:.2f} us: {f['ratio']:.2f}x its floor (target <= {f['target']:g}x: {met}); "
+        f"against independent evaluations ({f['rhs_independent_ns']:.1f} ns each) "
+        f"{f['ratio_independent']:.2f}x",
     ]
     if "first_class" in r:
         f = r["first_class"]

@@ -71,7 +71,7 @@ def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
     h, v, th = rng.uniform(1.0, 1.1, n), rng.uniform(3.0, 7.0, n), rng.uniform(0.30, 0.50, n)
     unique = min(n, 20_000)
     td = np.array(
-        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f)[:4] for i in range(unique)]
+        [gen_flight.apex_to_touchdown(h[i], v[i], th[i], P.q_r_td, P.g_f, 0.0)[:4] for i in range(unique)]
     )
     return h, v, th, np.ascontiguousarray(np.resize(td, (n, 4)))
 

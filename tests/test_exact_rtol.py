@@ -40,6 +40,7 @@ OK = int(Status.OK)
 
 
 def _apex(params, h, v, th, rtol):
+    h, v, th = (np.array(x, dtype=float) for x in (h, v, th))
     return slipmaps.apex_return_batch("exact", params, h, v, th, rtol=rtol)
 
 

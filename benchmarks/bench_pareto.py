@@ -1,0 +1,287 @@
+"""Benchmark: the cost-accuracy front of every map, its variants and the exact map's tolerances.
+
+Every map and variant worth listing (``VARIANTS``: each map at its defaults, the iterative maps'
+passes, the exact map at rtol 1e-3 ... 1e-11) runs its public batch API
+``slipmaps.apex_return_batch(name, params, h, v, th, **options)`` in one process on the same
+states: the points of two grids of the accuracy study (runtime/studies/grids.py, read only), Yu,
+Li and Cai's protocol (k l0 / (m g) = 10) and the human runner's nonsymmetric grid. Per variant:
+
+* ns per apex return on one numba thread and on all of them (best of ``--repeat``, the grids'
+  points tiled to a batch of about ``--seconds`` per call, compilation excluded) and their ratio
+  (the batch kernels' scaling, issue 19 item 6);
+* the mean and max next-apex error ``|(dh, dv)| / |(h, v)|`` (the accuracy study's) against the
+  exact map at rtol 1e-11, over the points where both complete the step, both grids pooled, and
+  the points where the variant fails and the exact map does not;
+* whether another variant dominates it (no more costly on one thread, no larger mean and max
+  error, better in one of them).
+
+The exact rows also give the cost at each rtol relative to rtol 1e-11 (item 2's target: at most
+0.4 at 1e-6). A figure (log cost against log mean error, max error as the bar's top, the front
+drawn) is written to ``--figure`` (default docs/pareto.png). Absolute times move with the machine
+and its load (printed); the ratios are measured side by side in one run. Usage::
+
+    python benchmarks/bench_pareto.py [--repeat R] [--seconds S] [--figure PATH] [--json] [--quick]
+
+``--quick`` (a smoke run that CI can afford: every 7th point of each grid, one timed run of short
+batches, no figure unless ``--figure`` is given) checks that every variant runs and prints the
+table; its times and dominance are too noisy to quote.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from pathlib import Path
+
+import numba
+import numpy as np
+import slipmaps
+from slipmaps.runtime.studies.grids import GRIDS
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_maps import machine  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+#: The two grids, by name in runtime/studies/grids.py.
+GRID_NAMES = ("Yu, Li and Cai protocol", "human runner, nonsymmetric")
+EXACT_RTOLS = (1e-3, 1e-4, 1e-6, 1e-8, 1e-11)
+REFERENCE = ("exact", {"rtol": 1e-11})
+
+def _rtol(r: float) -> str:
+    return f"1e{round(math.log10(r))}"
+
+
+#: (label, map, options): each map at its defaults, the iterative maps' passes, the exact map's
+#: tolerances (the last is the reference of the errors).
+VARIANTS: tuple[tuple[str, str, dict], ...] = (
+    ("geyer", "geyer", {}),
+    ("geyer-vs", "geyer-vs", {}),
+    ("iterative-report", "iterative-report", {}),
+    *((f"gravity-type{i}", f"gravity-type{i}", {}) for i in range(6)),
+    *(
+        (f"iterative, {n} pass{'' if n == 1 else 'es'}", "iterative", {"iterations": n})
+        for n in (0, 1, 2, 3, 4)
+    ),
+    ("iterative (default, 6 passes)", "iterative", {}),
+    *((f"exact, rtol {_rtol(r)}", "exact", {"rtol": r}) for r in EXACT_RTOLS),
+)
+
+
+def _grids():
+    by_name = {g.name: g for g in GRIDS}
+    return [by_name[n] for n in GRID_NAMES]
+
+
+def _with_threads(n: int, fn):
+    before = numba.get_num_threads()
+    numba.set_num_threads(n)
+    try:
+        return fn()
+    finally:
+        numba.set_num_threads(before)
+
+
+def _best(fn, repeat: int) -> float:
+    best = math.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def _errors(got, ref) -> tuple[np.ndarray, int]:
+    """Next-apex relative errors where both complete the step; the variant's own failures."""
+    both = (got["status"] == 0) & (ref["status"] == 0)
+    dh = got["apex_height"] - ref["apex_height"]
+    dv = got["apex_speed"] - ref["apex_speed"]
+    err = np.hypot(dh, dv) / np.hypot(ref["apex_height"], ref["apex_speed"])
+    return err[both], int(((got["status"] != 0) & (ref["status"] == 0)).sum())
+
+
+def _timed(name: str, options: dict, params, pt: list[np.ndarray], repeat: int, seconds: float):
+    """(batch size, best time on one thread, best time on all threads): the points tiled to a batch
+    of about ``seconds`` on one thread, the two thread counts alternated ``repeat`` times."""
+
+    def one(arrays):
+        return slipmaps.apex_return_batch(name, params, *arrays, **options)
+
+    pilot = _with_threads(1, lambda: _best(lambda: one(pt), 1))
+    reps = int(np.clip(seconds / max(pilot, 1e-9), 1, 2000))
+    batch = [np.ascontiguousarray(np.tile(a, reps)) for a in pt]
+    t1 = tn = math.inf
+    for _ in range(repeat):  # alternated, so that both see the machine's load alike
+        t1 = min(t1, _with_threads(1, lambda: _best(lambda: one(batch), 1)))
+        tn = min(tn, _best(lambda: one(batch), 1))
+    return batch[0].shape[0], t1, tn
+
+
+def measure(repeat: int, seconds: float, every: int = 1) -> dict:
+    grids = _grids()
+    points = [[np.ascontiguousarray(a[::every]) for a in g.points().T] for g in grids]
+    refs = [
+        slipmaps.apex_return_batch(REFERENCE[0], g.params, *pt, **REFERENCE[1])
+        for g, pt in zip(grids, points, strict=True)
+    ]
+    threads = numba.get_num_threads()
+    rows = []
+    for label, name, options in VARIANTS:
+        errs, fails, t1, tn, n_total = [], 0, 0.0, 0.0, 0
+        for g, pt, ref in zip(grids, points, refs, strict=True):
+            got = slipmaps.apex_return_batch(name, g.params, *pt, **options)  # compiles or loads
+            e, f = _errors(got, ref)
+            errs.append(e)
+            fails += f
+            n, a, b = _timed(name, options, g.params, pt, repeat, seconds)
+            n_total += n
+            t1 += a
+            tn += b
+        err = np.concatenate(errs)
+        rows.append(
+            {
+                "label": label,
+                "map": name,
+                "options": options,
+                "ns_1_thread": 1e9 * t1 / n_total,
+                "ns_all_threads": 1e9 * tn / n_total,
+                "scaling": t1 / tn,
+                "mean_error": float(err.mean()) if err.size else math.nan,
+                "max_error": float(err.max()) if err.size else math.nan,
+                "compared": int(err.size),
+                "failures": fails,
+            }
+        )
+    for r in rows:
+        r["dominated_by"] = next(
+            (
+                o["label"]
+                for o in rows
+                if o is not r
+                and o["ns_1_thread"] <= r["ns_1_thread"]
+                and o["mean_error"] <= r["mean_error"]
+                and o["max_error"] <= r["max_error"]
+                and o["failures"] <= r["failures"]
+                and (
+                    o["ns_1_thread"] < r["ns_1_thread"]
+                    or o["mean_error"] < r["mean_error"]
+                    or o["max_error"] < r["max_error"]
+                )
+            ),
+            None,
+        )
+    exact = {r["options"]["rtol"]: r for r in rows if r["map"] == "exact"}
+    base = exact[1e-11]["ns_1_thread"]
+    return {
+        "machine": machine(),
+        "threads": threads,
+        "grids": [f"{g.name} ({len(pt[0])} points)" for g, pt in zip(grids, points, strict=True)],
+        "rows": rows,
+        "exact_cost_ratio": {_rtol(r): exact[r]["ns_1_thread"] / base for r in EXACT_RTOLS},
+    }
+
+
+def _pct(x: float) -> str:
+    if not math.isfinite(x):
+        return "-"
+    if x == 0.0:
+        return "0"
+    return f"{100 * x:.2g} %" if x >= 1e-5 else f"{100 * x:.1e} %"
+
+
+def report(r: dict) -> str:
+    m = r["machine"]
+    lines = [
+        f"machine: {m['cpu']}, {m['cpus']} CPUs, numba {m['numba']} ({r['threads']} threads), "
+        f"Python {m['python']}, 1-min load {m['load_1min']}",
+        "states: " + "; ".join(r["grids"]) + "; errors against the exact map at rtol 1e-11",
+        "",
+        f"| variant | ns per apex return, 1 thread | {r['threads']} threads | scaling | mean error | "
+        "max error | failures | dominated by |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- |",
+    ]
+    for row in r["rows"]:
+        lines.append(
+            f"| {row['label']} | {row['ns_1_thread']:,.0f} | {row['ns_all_threads']:,.0f} | "
+            f"{row['scaling']:.2f}x | {_pct(row['mean_error'])} | {_pct(row['max_error'])} | "
+            f"{row['failures']} | {row['dominated_by'] or '-'} |"
+        )
+    ratio = r["exact_cost_ratio"]
+    met = "met" if ratio["1e-6"] <= 0.4 else "NOT met"
+    lines += [
+        "",
+        "exact map, cost relative to rtol 1e-11 (1 thread): "
+        + ", ".join(f"rtol {k}: {v:.2f}" for k, v in ratio.items())
+        + f" (target at 1e-6: <= 0.4, {met})",
+        f"scaling on {r['threads']} threads (target >= 1.8x): lowest "
+        f"{min(x['scaling'] for x in r['rows']):.2f}x, highest {max(x['scaling'] for x in r['rows']):.2f}x",
+    ]
+    return "\n".join(lines)
+
+
+def figure(r: dict, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = [x for x in r["rows"] if x["mean_error"] > 0.0 and math.isfinite(x["mean_error"])]
+    # the front in the figure's plane: each variant with a lower mean error than every cheaper one
+    front, best = [], math.inf
+    for x in sorted(rows, key=lambda x: (x["ns_1_thread"], x["mean_error"])):
+        if x["mean_error"] < best:
+            front.append(x)
+            best = x["mean_error"]
+    fig, ax = plt.subplots(figsize=(8.5, 6.0))
+    for x in rows:
+        exact = x["map"] == "exact"
+        color = "tab:red" if exact else ("tab:blue" if x in front else "tab:gray")
+        ax.plot([x["mean_error"], x["max_error"]], [x["ns_1_thread"]] * 2, color=color, lw=1, alpha=0.5)
+        ax.plot(x["mean_error"], x["ns_1_thread"], "s" if exact else "o", color=color)
+        ax.annotate(x["label"], (x["mean_error"], x["ns_1_thread"]), fontsize=7, xytext=(4, 3),
+                    textcoords="offset points")  # fmt: skip
+    front.sort(key=lambda x: x["mean_error"])
+    ax.step([x["mean_error"] for x in front], [x["ns_1_thread"] for x in front], where="post", color="k",
+            lw=1, ls="--", label="front: the cheapest variant at or below each mean error")  # fmt: skip
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("next-apex error against exact rtol 1e-11 (mean: marker; line to the max)")
+    ax.set_ylabel("ns per apex return (1 thread)")
+    ax.set_title(
+        "Cost against accuracy: Yu, Li and Cai grid and human runner, "
+        + f"load {r['machine']['load_1min']:.1f}"
+    )
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--repeat", type=int, default=5, help="timed runs, best kept (default %(default)s)")
+    parser.add_argument(
+        "--seconds", type=float, default=0.1, help="about this long a batch (default %(default)s)"
+    )
+    parser.add_argument("--figure", type=Path, default=None, help="figure path (default docs/pareto.png)")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
+    parser.add_argument("--quick", action="store_true", help="a smoke run: few points, one short timing")
+    args = parser.parse_args()
+    if args.quick:
+        r = measure(1, 0.002, every=7)
+    else:
+        r = measure(args.repeat, args.seconds)
+    path = args.figure if args.figure is not None or args.quick else ROOT / "docs" / "pareto.png"
+    if path is not None:
+        figure(r, path)
+        print(f"figure: {path}", file=sys.stderr)
+    print(json.dumps(r, indent=2) if args.json else report(r))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
