@@ -140,12 +140,13 @@ def run(n: int, repeat: int) -> dict:
     # (d) cost against the number of passes of the iterative maps (tol = 0: exactly n passes)
     from slipmaps.runtime.api import index
     from slipmaps.runtime.studies import convergence
+    from slipmaps.runtime.studies.accuracy import options_with
 
     out["passes"] = []
     for name in convergence.study_maps():
-        has_tol = any(o.name == "tol" for o in index.get(name).options)
+        tolerance = {o.name: 0.0 for o in options_with(index.get(name), "tolerance")}
         for k in convergence.PASSES:
-            opts = {"iterations": k, **({"tol": 0.0} if has_tol else {})}
+            opts = {convergence.pass_option(name): k, **tolerance}
             t = best_of(lambda name=name, opts=opts: slipmaps.stance_batch(name, P, td, **opts), repeat)
             out["passes"].append({"map": name, "n": k, "stance_ns": 1e9 * t / len(td)})
     # (e) every map's apex-return Jacobian (batch, N/10 states) against its apex-return map

@@ -17,14 +17,14 @@ state and ignores q_rd.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import sympy as sp
 
 from . import catalog
+from .declaration import Declaration, Inputs
 from .ir import Arg, Batch, Field, Group, Kernel, Module, Step, positive, sym
-from .mapspec import Option
 
 __all__ = ["HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
 
@@ -54,80 +54,44 @@ def start_args(start: str) -> tuple[Arg, ...]:
     )
 
 
-@dataclass(frozen=True)
-class HalfInputs:
-    """The symbols a half declaration's ``build`` works with."""
-
-    state: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]
-    params: Mapping[str, sp.Symbol]
-    options: Mapping[str, Option]
-
-    def opt(self, name: str) -> sp.Symbol:
-        return self.options[name].symbol
+#: The build's inputs of a half (the start state: the touchdown or the bottom state).
+HalfInputs = Inputs
 
 
-@dataclass(frozen=True)
-class HalfSpec:
-    """One half-stance map, declared once."""
+@dataclass(frozen=True, kw_only=True)
+class HalfSpec(Declaration):
+    """One half-stance map, declared once (``build`` gives the steps defining ``t_half``, ``end_q_r``
+    ... ``end_q_thd`` and the extras)."""
 
-    name: str  # user-facing, e.g. "iterative-compression"
-    title: str
-    section: str  # report subsection, e.g. "5.2.1"
-    equations: tuple[str, ...]
     whole: str  # the whole-stance map it composes into
     start: str  # "touchdown" or "bottom"
-    params: tuple[str, ...]  # names in catalog.PARAMS
-    #: -> steps defining ``t_half``, ``end_q_r`` ... ``end_q_thd`` and the extras
     build: Callable[[HalfInputs], tuple[Step, ...]]
-    options: tuple[Option, ...] = ()
-    extras: tuple[Field, ...] = ()
-    summary: str = ""
-    _cache: dict = field(default_factory=dict, compare=False, repr=False)
+
+    kind = "half map"
 
     def __post_init__(self):
         if self.start not in START:
             raise ValueError(
                 f"half map {self.name}: start must be one of {sorted(START)}, got {self.start!r}"
             )
-        unknown = [p for p in self.params if p not in catalog.PARAMS]
-        if unknown:
-            raise ValueError(f"half map {self.name}: unknown parameter(s) {unknown}")
+        super().__post_init__()
 
     @property
     def end(self) -> str:
         return START[self.start]
 
-    @property
-    def ident(self) -> str:
-        return self.name.replace("-", "_")
-
-    @property
-    def source(self) -> str:
-        mod = self.build.__module__.removeprefix("slipmaps.")
-        return mod.replace(".", "/") + ".py"
-
     def args(self) -> tuple[Arg, ...]:
-        state = start_args(self.start)
-        return (
-            state
-            + tuple(catalog.PARAMS[p] for p in self.params)
-            + tuple(o.arg() for o in self.options if o.kernel)
-        )
+        return start_args(self.start) + self.param_args() + self.option_args()
 
     def kernel(self) -> Kernel:
         if "kernel" not in self._cache:
             state = start_args(self.start)
-            inputs = HalfInputs(
-                state=tuple(a.symbol for a in state),
-                params={p: catalog.PARAMS[p].symbol for p in self.params},
-                options={o.name: o for o in self.options},
-            )
             self._cache["kernel"] = Kernel(
                 name=self.ident,
                 summary=f"{self.title}: {self.start} state -> {self.end} state.",
                 equations=self.equations,
                 args=self.args(),
-                steps=self.build(inputs),
+                steps=self.build(self.inputs(state, self.params)),
                 outputs=HALF_OUTPUTS + Group("", self.extras),
                 batch=Batch(tuple(a.name for a in state)),
                 module=self.ident,
@@ -143,20 +107,10 @@ class HalfSpec:
         )
 
     def index_row(self) -> dict:
-        kernel = self.kernel()
-        return {
-            "name": self.name,
-            "title": self.title,
-            "section": self.section,
-            "equations": list(self.equations),
-            "whole": self.whole,
-            "start": self.start,
-            "end": self.end,
-            "requires": [],
-            "params": list(self.params),
-            "options": [o.index_row() for o in self.options],
-            "module": self.ident,
-            "summary": self.summary,
-            "kernels": {"half": kernel.signature()},
-            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
-        }
+        return self.row(
+            whole=self.whole,
+            start=self.start,
+            end=self.end,
+            requires=[],
+            kernels={"half": self.kernel().signature()},
+        )

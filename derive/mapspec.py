@@ -14,144 +14,26 @@ outputs). From the declaration follow, with no second list anywhere:
 - the map's row of ``generated/maps_index.py`` (which the runtime API, the CLI choices, the
   tests over every map, the benchmark rows and the README map table all read).
 
-Options are kernel arguments (float64): a choice is passed as the index of its value, an integer
-option as a whole number; each gets a domain check (INVALID_INPUT outside it).
+What a map shares with a half map (options, the build's inputs, the common index fields) is their
+base :class:`~.declaration.Declaration`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import sympy as sp
 
 from . import catalog
-from .ir import STATUS, Arg, Batch, Call, Field, Group, Guard, Kernel, Module, Stage, Step, real, sym
+from .declaration import Declaration, Inputs, Option
+from .ir import STATUS, Arg, Batch, Call, Group, Kernel, Module, Stage, Step, sym
 from .tangent import Differentiator
 
+__all__ = ["MapBuild", "MapInputs", "MapSpec", "Option"]
 
-@dataclass(frozen=True)
-class Option:
-    """A map option: a choice among named values, an integer or a float, with its default."""
-
-    name: str
-    doc: str
-    default: float | int | str
-    choices: tuple[tuple[str, str], ...] = ()  # (value, what it means); passed as its index
-    low: float | None = None
-    high: float | None = None
-    integer: bool = False
-    #: Choices that assume touchdown at the rest length (q_r_td = l0): with another touchdown leg
-    #: length the kernels return INVALID_INPUT.
-    at_rest_length: tuple[str, ...] = ()
-    #: Choices that run the map by another implementation than its generated kernels: (choice, the
-    #: Python module whose ``BACKEND`` runs it), e.g. the exact map's ``method="scipy"`` (solve_ivp).
-    #: Such an option selects the implementation and is not a kernel argument.
-    backends: tuple[tuple[str, str], ...] = ()
-
-    def __post_init__(self):
-        if self.choices and self.default not in self.values:
-            raise ValueError(f"option {self.name}: default {self.default!r} is not one of {self.values}")
-        unknown = {c for c, _ in self.backends} - set(self.values)
-        if unknown:
-            raise ValueError(f"option {self.name}: backends name unknown choices {sorted(unknown)}")
-        unknown = set(self.at_rest_length) - set(self.values)
-        if unknown:
-            raise ValueError(f"option {self.name}: at_rest_length names unknown choices {sorted(unknown)}")
-
-    @property
-    def symbol(self) -> sp.Symbol:
-        return sym(self.name)
-
-    @property
-    def kernel(self) -> bool:
-        """Whether the kernels take this option as an argument (an option choosing the
-        implementation, :attr:`backends`, is not one)."""
-        return not self.backends
-
-    @property
-    def kind(self) -> str:
-        return "choice" if self.choices else ("int" if self.integer else "float")
-
-    @property
-    def values(self) -> tuple[str, ...]:
-        return tuple(v for v, _ in self.choices)
-
-    def code(self, value: str) -> int:
-        """The integer a kernel receives for the choice ``value``."""
-        return self.values.index(value)
-
-    def is_(self, value: str) -> sp.Basic:
-        """Condition: this choice option equals ``value`` (for expressions that select by option)."""
-        return sp.Eq(self.symbol, self.code(value))
-
-    def domain(self) -> sp.Basic:
-        x = real(self.symbol)
-        if self.choices:
-            return sp.Or(*(sp.Eq(x, i) for i in range(len(self.choices))))
-        conds = []
-        if self.low is not None:
-            conds.append(x >= self.low)
-        if self.high is not None:
-            conds.append(x <= self.high)
-        if self.integer:
-            conds.append(sp.Eq(x, sp.floor(x)))
-        return sp.And(*conds) if conds else sp.true
-
-    def arg(self) -> Arg:
-        if self.choices:
-            doc = f"{self.doc}: " + ", ".join(f"{i} = {v}" for i, v in enumerate(self.values))
-        else:
-            rng = (
-                f" in [{self.low:g}, {self.high:g}]" if self.low is not None and self.high is not None else ""
-            )
-            doc = f"{self.doc}{rng}"
-        dom = self.domain()
-        return Arg(self.symbol, f"option {self.name}: {doc}", None if dom is sp.true else dom)
-
-    @property
-    def default_code(self) -> float | int:
-        """The value a kernel receives for the default (a choice's index)."""
-        return self.code(self.default) if self.choices else self.default
-
-    def index_row(self) -> dict:
-        return {
-            "name": self.name,
-            "kind": self.kind,
-            "default": self.default,
-            "doc": self.doc,
-            "choices": [{"value": v, "doc": d} for v, d in self.choices],
-            "low": self.low,
-            "high": self.high,
-            "at_rest_length": list(self.at_rest_length),
-            "kernel": self.kernel,
-            "backends": dict(self.backends),
-        }
-
-    def domain_guard(self) -> Guard | None:
-        """The run-time check of :attr:`at_rest_length` (None when no choice needs it)."""
-        if not self.at_rest_length:
-            return None
-        q_r_td, l0 = catalog.PARAMS["q_r_td"].symbol, catalog.PARAMS["l0"].symbol
-        at_rest = sp.Abs(real(q_r_td) - real(l0)) <= catalog.REST_LENGTH_TOLERANCE * real(l0)
-        others = [self.is_(v) for v in self.values if v not in self.at_rest_length]
-        return Guard(
-            sp.Or(*others, at_rest),
-            "INVALID_INPUT",
-            f"{self.name} {'/'.join(self.at_rest_length)} need q_r_td = l0",
-        )
-
-
-@dataclass(frozen=True)
-class MapInputs:
-    """The symbols a declaration's ``build`` works with: touchdown state, parameters, options."""
-
-    touchdown: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]
-    params: Mapping[str, sp.Symbol]
-    options: Mapping[str, Option]
-
-    def opt(self, name: str) -> sp.Symbol:
-        return self.options[name].symbol
+#: The build's inputs of a whole stance (the start state is the touchdown state).
+MapInputs = Inputs
 
 
 @dataclass(frozen=True)
@@ -169,20 +51,12 @@ class MapBuild:
     helpers: tuple[Kernel, ...] = ()
 
 
-@dataclass(frozen=True)
-class MapSpec:
-    """One approximate stance map, declared once."""
+@dataclass(frozen=True, kw_only=True)
+class MapSpec(Declaration):
+    """One whole-stance map, declared once (``build`` gives a :class:`MapBuild`)."""
 
-    name: str  # user-facing name, e.g. "geyer", "gravity-type2"
-    title: str
-    section: str  # report subsection, e.g. "3.1", "4.3"
-    equations: tuple[str, ...]
-    params: tuple[str, ...]  # names in catalog.PARAMS, e.g. ("m", "l0", "k", "g_s")
     build: Callable[[MapInputs], MapBuild]
     requires: tuple[str, ...] = ()
-    options: tuple[Option, ...] = ()
-    extras: tuple[Field, ...] = ()
-    summary: str = ""
     notes: str = ""
     #: Inline the stance kernel into its batch and apex-return kernels (numba IR inlining): 10-25 %
     #: faster batches for a small body, but every caller compiles it again (measured: 2-3x the
@@ -194,12 +68,9 @@ class MapSpec:
     #: The map reproduces the report's printed formulas, errors included, to measure them: it makes
     #: no accuracy claim (the tests over every map check its contract, not its accuracy).
     as_printed: bool = False
-    _cache: dict = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self):
-        unknown = [p for p in self.params if p not in catalog.PARAMS]
-        if unknown:
-            raise ValueError(f"map {self.name}: unknown parameter(s) {unknown}")
+        super().__post_init__()
         unknown = [s for s in self.approximation_statuses if s not in STATUS]
         if unknown:
             raise ValueError(f"map {self.name}: unknown status(es) {unknown}")
@@ -208,28 +79,11 @@ class MapSpec:
                 f"map {self.name}: a map with the single stiffness k requires constant_stiffness"
             )
 
-    @property
-    def ident(self) -> str:
-        """The Python identifier of the map (module and kernel name prefix)."""
-        return self.name.replace("-", "_")
-
     def kernel_name(self, role: str) -> str:
         """The generated function of ``role`` ("stance", "state_at", "apex_return")."""
         return f"{self.ident}_{role}"
 
-    @property
-    def source(self) -> str:
-        """The derivation module, named in generated headers."""
-        mod = self.build.__module__.removeprefix("slipmaps.")
-        return mod.replace(".", "/") + ".py"
-
     # -- arguments -----------------------------------------------------------------------------
-    def param_args(self) -> tuple[Arg, ...]:
-        return tuple(catalog.PARAMS[p] for p in self.params)
-
-    def option_args(self) -> tuple[Arg, ...]:
-        return tuple(o.arg() for o in self.options if o.kernel)
-
     def stance_args(self) -> tuple[Arg, ...]:
         return catalog.TOUCHDOWN + self.param_args() + (catalog.PARAMS["q_r_lo"],) + self.option_args()
 
@@ -245,12 +99,7 @@ class MapSpec:
 
     def built(self) -> MapBuild:
         if "build" not in self._cache:
-            inputs = MapInputs(
-                touchdown=tuple(a.symbol for a in catalog.TOUCHDOWN),
-                params={p: catalog.PARAMS[p].symbol for p in self.params + ("q_r_lo",)},
-                options={o.name: o for o in self.options},
-            )
-            self._cache["build"] = self.build(inputs)
+            self._cache["build"] = self.build(self.inputs(catalog.TOUCHDOWN, self.params + ("q_r_lo",)))
         return self._cache["build"]
 
     def stance_kernel(self) -> Kernel:
@@ -442,18 +291,9 @@ class MapSpec:
                 "module": jac_module,
                 "name": self.kernel_name(f"{role}_jacobian"),
             }
-        return {
-            "name": self.name,
-            "title": self.title,
-            "section": self.section,
-            "equations": list(self.equations),
-            "requires": list(self.requires),
-            "params": list(self.params),
-            "options": [o.index_row() for o in self.options],
-            "module": self.ident,
-            "summary": self.summary,
-            "as_printed": self.as_printed,
-            "approximation_statuses": list(self.approximation_statuses),
-            "kernels": kernels,
-            "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
-        }
+        return self.row(
+            requires=list(self.requires),
+            as_printed=self.as_printed,
+            approximation_statuses=list(self.approximation_statuses),
+            kernels=kernels,
+        )

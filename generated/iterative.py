@@ -1,13 +1,13 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:4d6fab274bba303b
 #   geyer.py sha256:26ff4a0183dca42d
-#   geyer_vs.py sha256:a9f15f8604543316
+#   geyer_vs.py sha256:0592a5a2e1c70987
 #   gravity_type0.py sha256:04bbbc0de76e2706
 #   gravity_type1.py sha256:37299c1835198fd6
 #   gravity_type2.py sha256:ba6e5874bb098cda

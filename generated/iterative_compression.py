@@ -1,19 +1,19 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:26ff4a0183dca42d
-#   geyer_vs.py sha256:a9f15f8604543316
+#   geyer_vs.py sha256:0592a5a2e1c70987
 #   gravity_type0.py sha256:04bbbc0de76e2706
 #   gravity_type1.py sha256:37299c1835198fd6
 #   gravity_type2.py sha256:ba6e5874bb098cda
 #   gravity_type3.py sha256:a1deffa577d0b912
 #   gravity_type4.py sha256:ea56cd04d2860d7d
 #   gravity_type5.py sha256:e95d34e96defb7c2
-#   iterative.py sha256:f9f2103394a85ab5
+#   iterative.py sha256:e860cb54cbb30f5a
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown -> bottom."""
 

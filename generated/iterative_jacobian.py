@@ -1,13 +1,13 @@
 # ----------------------------------------------------------------------------------------------
 # GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
-# Source:    derive/maps/schwind.py
+# Source:    derive/maps/iterative.py
 # Template:  derive/templates/kernels.py.j2
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:93735a9cd1eada3e
 #   geyer_jacobian.py sha256:2cc3bc7df9c66782
-#   geyer_vs_jacobian.py sha256:341d8a6698f0710d
+#   geyer_vs_jacobian.py sha256:27c237b92fe478ab
 #   gravity_type0_jacobian.py sha256:82882201e605f9fc
 #   gravity_type1_jacobian.py sha256:3202f1b84c0ddf87
 #   gravity_type2_jacobian.py sha256:38cdb9055d649f09

@@ -15,8 +15,15 @@ import pytest
 from records import assert_close
 from slipmaps.generated import maps_index
 from slipmaps.runtime.studies import convergence
+from slipmaps.runtime.studies import study as pipeline
 from slipmaps.runtime.studies.accuracy import measure_all, variants
-from slipmaps.runtime.studies.accuracy_report import SYMMETRIC_RATIO, from_json, render_markdown, summarize
+from slipmaps.runtime.studies.accuracy_report import (
+    SYMMETRIC_RATIO,
+    figure_record,
+    from_json,
+    render_markdown,
+    summarize,
+)
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 
@@ -46,6 +53,16 @@ def test_accuracy_record_is_current(measured, record):
     assert_close(measured, record, "grids")
 
 
+def test_accuracy_figure_record_is_current(runs):
+    """docs/accuracy.json's "figure": the heatmaps' next-apex errors (maps with the role
+    accuracy-figure, human runner, middle apex height), re-measured; docs/accuracy.png draws it."""
+    recorded = pipeline.from_json((DOCS / "accuracy.json").read_text())["figure"]
+    assert recorded["apex_error"], recorded
+    assert_close(
+        pipeline.from_json(pipeline.to_json({"figure": figure_record(runs)}))["figure"], recorded, "figure"
+    )
+
+
 def test_accuracy_markdown_renders_the_record(record):
     assert (DOCS / "accuracy.md").read_text() == render_markdown(record)
 
@@ -61,7 +78,9 @@ def test_convergence_markdown_renders_the_record(study):
 
 def _passes(study: list[dict], grid_kind: str, name: str) -> list[dict]:
     grid = next(g for g in study if g["kind"] == grid_kind)
-    return sorted((v for v in grid["variants"] if v["map"] == name), key=lambda v: v["options"]["iterations"])
+    rows = sorted((v for v in grid["variants"] if v["map"] == name), key=lambda v: v["options"]["iterations"])
+    assert rows, (grid["name"], name)
+    return rows
 
 
 def test_eq42_eq151_iterative_map_improves_with_every_pass_up_to_its_default(study):
@@ -73,6 +92,7 @@ def test_eq42_eq151_iterative_map_improves_with_every_pass_up_to_its_default(stu
     for grid in study:
         rows = _passes(study, grid["kind"], "iterative")
         means = [r["apex_error"]["mean"] for r in rows][: default + 1]
+        assert len(means) == default + 1, (grid["name"], means)
         assert all(b < a for a, b in zip(means, means[1:], strict=False)), (grid["name"], means)
 
 
@@ -110,27 +130,29 @@ def _mean(grid: dict, label: str) -> float:
 def test_eq46_eq77_every_gravity_type_beats_geyer_on_nonsymmetric_steps(record):
     """Finding: every type at its defaults has a smaller mean next-apex error than Geyer's map on the
     nonsymmetric grids and the Yu protocol (measured: 0.06x-0.42x)."""
-    for grid in record:
-        if grid["kind"] == "symmetric":
-            continue
-        for v in grid["variants"]:
-            if v["default"] and v["map"].startswith("gravity"):
-                assert v["apex_error"]["mean"] < _mean(grid, "geyer"), (grid["name"], v["label"])
+    grids = [grid for grid in record if grid["kind"] != "symmetric"]
+    assert grids
+    for grid in grids:
+        types = [v for v in grid["variants"] if v["default"] and v["map"].startswith("gravity")]
+        assert len(types) == 6, (grid["name"], [v["label"] for v in types])
+        for v in types:
+            assert v["apex_error"]["mean"] < _mean(grid, "geyer"), (grid["name"], v["label"])
 
 
 def test_eq46_eq77_no_gravity_type_reaches_geyer_on_symmetric_steps(record):
     """Finding (the docs state it): on symmetric steps, where the exact impulse is 0, every type is
     more than 1.1x Geyer's error (measured 1.16x-1.51x): P_c is computed from the map's own sweep,
     which is wrong by Geyer's angle error, so the correction adds an error of the same size."""
-    for grid in record:
-        if grid["kind"] != "symmetric":
-            continue
-        for v in grid["variants"]:
-            if v["default"] and v["map"].startswith("gravity"):
-                assert v["apex_error"]["mean"] > SYMMETRIC_RATIO * _mean(grid, "geyer"), (
-                    grid["name"],
-                    v["label"],
-                )
+    grids = [grid for grid in record if grid["kind"] == "symmetric"]
+    assert grids
+    for grid in grids:
+        types = [v for v in grid["variants"] if v["default"] and v["map"].startswith("gravity")]
+        assert len(types) == 6, (grid["name"], [v["label"] for v in types])
+        for v in types:
+            assert v["apex_error"]["mean"] > SYMMETRIC_RATIO * _mean(grid, "geyer"), (
+                grid["name"],
+                v["label"],
+            )
 
 
 def test_yu_protocol_target_met_by_type5(record):
@@ -150,15 +172,17 @@ def test_fixed_points_converge_within_their_bound(record):
     """Every default fixed-point variant converges on every grid (no NOT_CONVERGED); the report's
     literal reading iterated does not always (measured: 4-7 of the Yu steps need over 100 passes)."""
     for grid in record:
-        for v in grid["variants"]:
-            if v["default"]:
-                assert "NOT_CONVERGED" not in v["failures"], (grid["name"], v["label"])
+        defaults = [v for v in grid["variants"] if v["default"]]
+        assert len(defaults) == len(maps_index.MAPS), grid["name"]
+        for v in defaults:
+            assert "NOT_CONVERGED" not in v["failures"], (grid["name"], v["label"])
 
 
 def test_eq42_eq151_printed_iteration_does_not_converge_to_the_exact_stance(study):
     """Finding: the report's recursion as printed (both variants) is worse after two iterations than
     its zeroth iterate on every grid (measured: 0.22-11.4 % at n = 0, 10.5-23.3 % at n = 2) and
     stays above 5 % at n = 8, where H^{-1} of (33) is imaginary on some Yu steps (19 and 62 of 340)."""
+    assert any(grid["kind"] == "yu" for grid in study)
     for grid in study:
         for variant in ("integrand", "factor"):
             rows = [
@@ -166,6 +190,7 @@ def test_eq42_eq151_printed_iteration_does_not_converge_to_the_exact_stance(stud
                 for r in _passes(study, grid["kind"], "iterative-report")
                 if r["options"]["variant"] == variant
             ]
+            assert len(rows) == len(convergence.PASSES), (grid["name"], variant)
             means = [r["apex_error"]["mean"] for r in rows]
             assert means[2] > means[0] and means[8] > 0.05, (grid["name"], variant, means)
             if grid["kind"] == "yu":

@@ -386,6 +386,28 @@ def test_index_lists_every_declared_map():
     assert len(set(MAP_IDS)) == len(MAP_IDS)
 
 
+def test_a_map_is_declared_in_the_module_named_after_it_or_its_family():
+    """derive/maps/<name>.py declares the map <name> (or, a family module, the maps <name>-...): the
+    check all_maps() runs names the module a misplaced declaration belongs in; a module that declares
+    no map is named *_helpers.py."""
+    from slipmaps.derive import maps
+
+    specs = {spec.name: spec for spec in all_maps()}
+    maps._check_layout([("geyer", specs["geyer"]), ("gravity", specs["gravity-type2"])], "map")
+    with pytest.raises(
+        ValueError, match=r"geyer-vs is declared in derive/maps/geyer\.py: it belongs in .*/geyer_vs\.py"
+    ):
+        maps._check_layout([("geyer", specs["geyer-vs"])], "map")
+    with pytest.raises(ValueError, match=r"gravity-type5 .* belongs in derive/maps/gravity_type5\.py"):
+        maps._check_layout([("gravity", specs["gravity-type5"])], "map")
+    # derive/maps/<module>.py of every declaration
+    sources = {spec.source for spec in (*all_maps(), *maps.all_halves(), maps.ground_truth())}
+    modules = [m.__name__.rsplit(".", 1)[-1] for m in maps._modules()]
+    assert any(m.endswith(maps.HELPERS_SUFFIX) for m in modules)
+    for m in modules:
+        assert (f"derive/maps/{m}.py" in sources) != m.endswith(maps.HELPERS_SUFFIX), m
+
+
 @pytest.mark.parametrize("row", [*MAPS, maps_index.EXACT], ids=[*MAP_IDS, "exact"])
 def test_map_module_exports_kernels_with_index_signatures(row):
     """The index publishes every kernel's calling convention (what the runtime fills by name): each

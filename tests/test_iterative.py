@@ -1,4 +1,4 @@
-"""The converging form of Schwind and Koditschek's iteration (map ``iterative``, derive/maps/schwind.py).
+"""The converging form of Schwind and Koditschek's iteration (map ``iterative``, derive/maps/iterative.py).
 
 Tolerances are measured (see each docstring).
 """
@@ -8,7 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import slipmaps
-from slipmaps.derive.maps import quadrature, schwind
+from slipmaps.derive.maps import iterative as d_iterative
+from slipmaps.derive.maps import quadrature_helpers
 from slipmaps.derive.symbols import k_c, k_d
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api import index
@@ -23,7 +24,7 @@ def _apex_points():
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 6])
 def test_eq41_gauss_rule_in_u_integrates_polynomials(n):
     """The n-node rule on [0, 1] is exact to degree 2n - 1; the collocation matrices to degree n - 1."""
-    r = quadrature.rule(n)
+    r = quadrature_helpers.rule(n)
     u = np.array(r.nodes, dtype=float)
     for deg in range(2 * n):
         assert abs(np.dot(np.array(r.w, dtype=float), u**deg) - 1 / (deg + 1)) < 1e-15
@@ -35,15 +36,15 @@ def test_eq41_gauss_rule_in_u_integrates_polynomials(n):
 
 def test_eq41_one_node_is_the_mean_value_point():
     """One node: u = 1/2, weight 1, i.e. sigma = q_r_b + (x - q_r_b)/4 = 3/4 q_r_b + 1/4 x of (41)."""
-    r = quadrature.rule(1)
+    r = quadrature_helpers.rule(1)
     assert float(r.nodes[0]) == 0.5 and float(r.w[0]) == 1.0
 
 
 @pytest.mark.parametrize("stiffness", [k_c, k_d])
 def test_eq30_eq32_u_rates_are_regular_at_the_bottom(stiffness):
     """(30)-(32) in u with the work form of p_r: no negative power of u is left."""
-    for rate in schwind.u_rates(stiffness):
-        assert schwind._U not in rate.free_symbols
+    for rate in d_iterative.u_rates(stiffness):
+        assert d_iterative._U not in rate.free_symbols
 
 
 @pytest.mark.parametrize("ratio", [0.8, 1.0, 1.25])
@@ -80,9 +81,11 @@ def _zeroth_choices() -> tuple[str, ...]:
 
 def test_zeroth_iterate_choices_are_every_map_not_itself_iterated_from_one():
     """Any declared map can start the iteration: every map without a ``zeroth`` option is a choice
-    (a new map that is not listed in schwind.ZEROTH_MAPS fails here), plus the held state."""
+    (derived from the declarations, derive/maps/__init__.py's starting_maps: a new map is one with
+    no edit elsewhere), plus the held state."""
     maps = {m.name for m in slipmaps.maps() if m.name != "exact"}
     starters = {n for n in maps if "zeroth" not in {o.name for o in index.lookup(n).options}}
+    assert starters and starters < maps, (starters, maps)
     for name in ("iterative", "iterative-report", "iterative-compression", "iterative-report-compression"):
         assert set(index.lookup(name).option("zeroth").choices) == starters | {"held"}, name
 

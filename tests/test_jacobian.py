@@ -143,6 +143,7 @@ def _stance_error(name: str, params, touchdown, options: dict) -> float:
                 )
             )
         steps.append(h)
+    assert keep, (name, options)
     values = np.array([jac.values[o] for o in jac.outputs])
     kept = dataclasses.replace(jac, matrix=jac.matrix[:, keep], inputs=tuple(jac.inputs[j] for j in keep))
     return _compare(name, kept, np.array(columns).T, values, steps)
@@ -171,6 +172,12 @@ def _option_cases() -> list:
                 with_tol = any(t.name == "tol" for t in info.options)
                 cases.append((info.name, {o.name: 3, **({"tol": 0} if with_tol else {})}))
     return cases
+
+
+def test_option_cases_cover_every_generated_map_with_options():
+    """The parametrization below is a filtered list: it must hold every generated map with options."""
+    with_options = {m.name for m in slipmaps.maps() if not m.ground_truth and m.options}
+    assert with_options and {name for name, _ in _option_cases()} == with_options
 
 
 @pytest.mark.parametrize(("name", "options"), _option_cases(), ids=lambda x: str(x))

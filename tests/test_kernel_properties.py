@@ -135,6 +135,12 @@ KERNELS = MAP_KERNELS + FLIGHT_KERNELS
 ROLE = {role: [k for k in MAP_KERNELS if k.role == role] for role in ("stance", "state_at", "apex_return")}
 
 
+def test_kernel_sets_by_role_are_not_empty():
+    """The tests below are parametrized over kernels filtered by role: an empty set would run none."""
+    assert FLIGHT_KERNELS and all(ROLE[role] for role in ROLE), {r: len(k) for r, k in ROLE.items()}
+    assert len(ROLE["stance"]) == len(ROLE["apex_return"]) == len(maps_index.MAPS)
+
+
 def _ids(kernels):
     return [k.name for k in kernels]
 
@@ -489,6 +495,11 @@ REST_LENGTH_CHOICES = [
 ]
 
 
+def test_some_choices_need_touchdown_at_l0():
+    """The parametrization below is filtered (choices in ``at_rest_length``): it must not be empty."""
+    assert REST_LENGTH_CHOICES
+
+
 @pytest.mark.parametrize(("kernel", "option", "code"), REST_LENGTH_CHOICES)
 def test_choice_needing_touchdown_at_l0_rejects_a_shorter_touchdown(kernel, option, code):
     """A choice the index documents as needing the touchdown at l0 (the other options at their
@@ -751,6 +762,7 @@ def test_batch_bad_rows_do_not_spoil_good_rows(kernel):
                 rows += [row, good[len(rows) // 2 % 2]]
                 is_bad += [True, False]
     rows, is_bad = np.array(rows), np.array(is_bad)
+    assert is_bad.any() and (~is_bad).any(), kernel.name
     out, status = run_batch(kernel, env, rows)
     assert np.all(status[is_bad] == INVALID) and np.all(np.isnan(out[is_bad]))
     assert np.all(status[~is_bad] == OK) and np.all(np.isfinite(out[~is_bad]))

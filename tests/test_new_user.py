@@ -491,12 +491,10 @@ def test_readme_names_importable_modules_and_cites_the_report_by_title():
 @pytest.fixture
 def no_measuring(monkeypatch):
     """Record where `slipmaps accuracy` would write instead of measuring (about 40 s of CPU)."""
-    from slipmaps.runtime.studies import accuracy_report
+    from slipmaps.runtime.studies import runner
 
     calls = []
-    monkeypatch.setattr(
-        accuracy_report, "write", lambda out, names, show_progress=None: calls.append(out) or []
-    )
+    monkeypatch.setattr(runner, "run", lambda out, names, show_progress=None: calls.append(out) or [])
     return calls
 
 
@@ -539,13 +537,13 @@ def _refuse(monkeypatch, module, name):
 def nothing_runs(monkeypatch):
     """Every command's work fails the test: compare, sweep, the fixed points and the accuracy study."""
     from slipmaps.runtime.analysis import gait
-    from slipmaps.runtime.studies import accuracy_report
+    from slipmaps.runtime.studies import runner
     from slipmaps.runtime.sweep import run as sweep
 
     _refuse(monkeypatch, compare_module, "compare")
     _refuse(monkeypatch, sweep, "sweep")
     _refuse(monkeypatch, gait, "fixed_points")
-    _refuse(monkeypatch, accuracy_report, "write")
+    _refuse(monkeypatch, runner, "run")
 
 
 SWEEP = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--axis", "apex_speed=3:7:5"]

@@ -123,6 +123,7 @@ def test_the_plan_runs_almost_everything():
     assert len(run) >= 10, run
     assert len(skipped) <= len(SKIPPED) <= 10 and set(skipped) == {_displayed(k) for k in SKIPPED}
     assert any(a[:3] == ["compare", "--map", "gravity-type2"] for a in run), run  # the options example
+    assert named
     for argv in named:
         assert not argv or argv[0] in SUBCOMMANDS, argv
 

@@ -106,15 +106,18 @@ def test_issue_target_met_by_the_iterative_map(record):
     best = rows["iterative"]
     assert best["met"] and best["all"]["failures"] == 0
     assert all(best["all"][k] < t for k, t in TARGET.items())
-    assert not any(r["met"] for label, r in rows.items() if label != "iterative")
+    others = [r for label, r in rows.items() if label != "iterative"]
+    assert others and not any(r["met"] for r in others)
 
 
 def _bottom(record: list[dict], kind: str, key: str) -> list[dict]:
-    return [
+    rows = [
         next(e for e in g["bottom"]["estimates"] if e["equation"] == key)
         for g in record
         if (g["kind"] == "symmetric") == (kind == "symmetric")
     ]
+    assert rows, (kind, key)
+    return rows
 
 
 def test_eq153_with_the_touchdown_momentum_misses_the_bottom_and_eq154_is_closer(record):
@@ -133,9 +136,13 @@ def test_eq153_quartic_root_is_the_exact_bottom_of_symmetric_gaits():
     (bottom at q_th = 0). Measured on the 30 symmetric gaits of the study: within 2.4e-12 of q_r_b
     and 1.43e-11 of the compression l0 - q_r_b (the exact simulator's precision); tolerance 1e-9 of
     the compression. The exact bottom depends on k_c only, so the check holds for any k_d."""
-    for grid in (g for g in stiffness.grids() if g.kind == "symmetric"):
+    symmetric = [g for g in stiffness.grids() if g.kind == "symmetric"]
+    assert symmetric
+    for grid in symmetric:
         p = grid.params.with_(k_d=0.8 * grid.params.k_c)
-        for h, v, angle in grid.points()[::4]:
+        points = grid.points()[::4]
+        assert len(points), grid.name
+        for h, v, angle in points:
             step = simulate_step(p, h, v, angle)
             q_r, _, q_th, q_thd = step.bottom
             assert abs(q_th) < 1e-12

@@ -1,4 +1,4 @@
-"""The simple variable-stiffness map ``geyer-vs`` (report section 5.1, derive/maps/variable.py) and the
+"""The simple variable-stiffness map ``geyer-vs`` (report section 5.1, derive/maps/geyer_vs.py) and the
 bottom leg length of (153) (kernel ``bottom_quartic``).
 
 Tolerances are measured (see each docstring). Accuracy over k_d/k_c is measured by

@@ -2,7 +2,9 @@
 
 The report is "SLIP: Approximate Stance Map for Nonsymmetric Motions and Variable Stiffness". One
 module per report section (:data:`SECTION_MODULES`) transcribes its printed displays and registers,
-next to each check, the entry's metadata with :func:`equation` or :func:`definition`.
+next to each check, the entry's metadata with :func:`equation` or :func:`definition`; a long
+section is a package with a module per subsection (``sec5/``: ``sec5_1`` ... ``sec5_2_bottom``),
+whose entries are the section's, in the order the package imports them.
 
 Status per entry:
 
@@ -54,7 +56,8 @@ __all__ = [
 
 STATUSES = ("verified", "corrected", "definition")
 
-#: Section modules of this package, in report order. Adding a section is appending its name here.
+#: Section modules (or packages) of this package, in report order. Adding a section is appending its
+#: name here.
 SECTION_MODULES = ("sec2", "sec3", "sec4", "sec5")
 
 _MESSAGE_CHARS = 160
@@ -133,7 +136,10 @@ _REGISTRY: dict[str, list[Entry]] = {}
 
 
 def _section_name(module: str) -> str:
-    return module.rsplit(".", 1)[-1]
+    """The section module that ``module`` belongs to: itself (``...equations.sec3``), or the
+    section package it lies in (``...equations.sec5.sec5_2_1`` is in ``sec5``)."""
+    inside = module.partition(f"{__name__}.")[2]
+    return inside.split(".")[0] if inside else module.rsplit(".", 1)[-1]
 
 
 def _register(entry: Entry, before: str | None = None) -> None:

@@ -2,7 +2,7 @@
 
 Each check compares a transcription of a printed display, typed as printed (errors included),
 with the derivation of :mod:`slipmaps.derive.model.mechanics` (eqs 1-3, 27-29),
-:mod:`slipmaps.derive.maps.geyer` (eqs 4-26) or :mod:`slipmaps.derive.maps.iterative`
+:mod:`slipmaps.derive.maps.geyer` (eqs 4-26) or :mod:`slipmaps.derive.maps.iterative_helpers`
 (eqs 30-45); corrected forms are built from the derivation or stated next to the error.
 """
 
@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..maps import geyer, iterative
-from ..maps.iterative import (
+from ..maps import geyer, iterative_helpers
+from ..maps.iterative_helpers import (
     H_INV,
     P_TH_N,
     P_TH_NEXT,
@@ -579,7 +579,7 @@ def check_eq30_32() -> None:
     """Printed: (30) dt_s/dq_r = m/p_r; (31) dq_th/dq_r = p_th/(q_r^2 p_r);
     (32) dp_th/dq_r = m^2 g_s q_r sin(q_th)/p_r (each a function of q_r, q_th, p_th via p_r of (33)).
     """
-    dt, dq_th, dp_th = iterative.leg_length_derivatives(k_d)
+    dt, dq_th, dp_th = iterative_helpers.leg_length_derivatives(k_d)
     expect_zero(m / p_r - dt, "eq 30 printed dt/dq_r equals 1/(dq_r/dt) of (29)")
     expect_zero(p_th / (q_r**2 * p_r) - dq_th, "eq 31 printed dq_th/dq_r equals (dq_th/dt)/(dq_r/dt) of (29)")
     expect_zero(
@@ -599,7 +599,7 @@ def check_eq33() -> None:
     printed = sp.sqrt(
         2 * m * (E - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
     )
-    derived = iterative.radial_momentum(k_d)
+    derived = iterative_helpers.radial_momentum(k_d)
     expect_zero(printed - derived, "eq 33 printed H^{-1} equals the positive root of H = E for p_r")
     expect_zero(
         mechanics.hamiltonian(k_d).subs(p_r, printed) - E, "eq 33 H of (27) at p_r = printed H^{-1} equals E"
@@ -687,26 +687,26 @@ def check_eq41() -> None:
     """Printed: xi_hat_x = 3/4 q_r_b + 1/4 q_r."""
     at_bottom = {q_r: q_r_b, q_th: q_th_b, p_th: p_th_b}
     dp_r_b = mechanics.hamiltonian_vector_field(k_d)[2].subs(at_bottom)  # (dp_r/dt)_b of (29)
-    momentum = iterative.near_bottom(p_r, k_d)
+    momentum = iterative_helpers.near_bottom(p_r, k_d)
     expect_zero(momentum.subs(delta, 0), "eq 41 H^{-1} vanishes at the bottom q_r = q_r_b")
     coeff, power = momentum.leadterm(delta)
     expect_zero(power - sp.Rational(1, 2), "eq 41 H^{-1} ~ (sigma - q_r_b)^(1/2) at the bottom")
     expect_zero(coeff**2 - 2 * m * dp_r_b, "eq 41 leading coefficient of H^{-1} equals sqrt(2 m (dp_r/dt)_b)")
     # Along the actual trajectory of (29) from the bottom (q_th, p_th varying too): p_r^2 = 2 m
     # (dp_r/dt)_b (q_r - q_r_b) up to O(t^3) while q_r - q_r_b ~ t^2, i.e. the same leading term.
-    trajectory = iterative.taylor_from_bottom(p_r**2 - 2 * m * dp_r_b * (q_r - q_r_b), 2, k_d)
+    trajectory = iterative_helpers.taylor_from_bottom(p_r**2 - 2 * m * dp_r_b * (q_r - q_r_b), 2, k_d)
     expect_zero(trajectory, "eq 41 p_r^2 = 2 m (dp_r/dt)_b (q_r - q_r_b) + O(t^3) along the flow of (29)")
-    exponents = iterative.integrand_exponents(k_d)
+    exponents = iterative_helpers.integrand_exponents(k_d)
     quarter = sp.Rational(1, 4)
-    for key, fraction in iterative.mean_value_fractions(k_d).items():
+    for key, fraction in iterative_helpers.mean_value_fractions(k_d).items():
         expect_zero(
             exponents[key] + sp.Rational(1, 2), f"eq 41 integrand of ({key}) ~ (sigma - q_r_b)^(-1/2)"
         )
         expect_zero(fraction - quarter, f"eq 41 (35) with f = integrand of ({key}), g = 1 gives 1/4")
     for key in ("q_th", "p_th"):
-        fraction = iterative.theorem1_fraction(exponents[key], -exponents["p_r"])
+        fraction = iterative_helpers.theorem1_fraction(exponents[key], -exponents["p_r"])
         expect_zero(fraction - quarter, f"eq 41 (35) with f = {key}(sigma), g = 1/H^{{-1}} gives 1/4")
-    xi = iterative.mean_value_point(k_d)
+    xi = iterative_helpers.mean_value_point(k_d)
     printed = sp.Rational(3, 4) * q_r_b + quarter * q_r
     expect_zero(printed - xi, "eq 41 printed xi equals q_r_b + (1/4)(q_r - q_r_b) of (35)")
     # (38) with this xi is exact on the leading term c (sigma - q_r_b)^(-1/2) of its integrand.
@@ -759,7 +759,7 @@ def check_eq42_44() -> None:
     (43) q_th_(n+1)(q_r) = q_th_b + p_th_n(xi)/(xi^2 H^{-1}_n) (q_r - q_r_b);
     (44) p_th_(n+1)(q_r) = p_th_b + m^2 g_s xi sin(q_th_n(xi))/H^{-1}_n (q_r - q_r_b).
     """
-    derived = iterative.iteration_step(k_d)
+    derived = iterative_helpers.iteration_step(k_d)
     for key, printed, built in zip(("42", "43", "44"), _printed_eq42_44(), derived, strict=True):
         expect_zero(
             printed - built, f"eq {key} printed iterate equals (30)-(32) integrated with (37) at xi of (41)"
@@ -784,11 +784,11 @@ def check_eq45() -> None:
         2 * m * (E - k_d / 2 * (l0 - xi) ** 2 - m * g_s * xi * sp.cos(Q_TH_NEXT(xi)))
         - P_TH_NEXT(xi) ** 2 / xi**2
     )
-    h_inv = iterative.radial_momentum(k_d)
+    h_inv = iterative_helpers.radial_momentum(k_d)
     at_xi = h_inv.subs({q_r: xi, q_th: Q_TH_NEXT(xi), p_th: P_TH_NEXT(xi)}, simultaneous=True)
     expect_zero(printed - at_xi, "eq 45 printed p_r is (33) at the leg length xi on the (n+1)-th iterate")
     printed = printed.subs(xi, sp.Rational(3, 4) * q_r_b + sp.Rational(1, 4) * q_r)
-    derived = iterative.next_radial_momentum(k_d)  # (33) at q_r on the (n+1)-th iterate
+    derived = iterative_helpers.next_radial_momentum(k_d)  # (33) at q_r on the (n+1)-th iterate
     corrected = sp.sqrt(
         2 * m * (E - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(Q_TH_NEXT(q_r)))
         - P_TH_NEXT(q_r) ** 2 / q_r**2

@@ -566,6 +566,7 @@ MAPS = (
         requires=("constant_stiffness",),
         build=_build,
         inline=True,
+        roles=("baseline", "accuracy-figure", "region", "default"),
         summary="angular momentum conserved (small sweep), 1/(1+rho)^2 by its Taylor polynomial (small "
         "compression)",
         notes="Assumption 1 (small sweep: angular momentum conserved), Assumption 2 (small compression: "

@@ -24,6 +24,9 @@ P_c = 0 (Geyer's map), stopping early when P_c moves by less than ``tol`` times 
 
 Every formula below is derived here (SymPy) from the model and from Geyer's derivation; the
 registry (:mod:`slipmaps.derive.equations.sec4`) compares the printed equations with them.
+
+A family module: it declares the maps ``gravity-type0`` ... ``gravity-type4``; type 5, a design of
+its own, is declared in :mod:`.gravity_type5` (which builds on this module's torque and energy).
 """
 
 from __future__ import annotations
@@ -140,6 +143,7 @@ _READING = Option(
         ),
         ("report", "p_th + P_c everywhere in Geyer's formulas, liftoff radial speed from Geyer's (11)"),
     ),
+    roles=("accuracy-readings",),
 )
 _SAMPLES = Option(
     "samples",
@@ -148,6 +152,7 @@ _SAMPLES = Option(
     low=2,
     high=3,
     integer=True,
+    roles=("accuracy-variants",),
 )
 _LEG_LENGTH = Option(
     "leg_length",
@@ -159,6 +164,7 @@ _LEG_LENGTH = Option(
         ("eq23", "(23), eqs (60)-(61) and (73)-(75); touchdown at l0 only"),
     ),
     at_rest_length=("eq21", "eq23"),
+    roles=("accuracy-variants",),
 )
 _INTERVAL = Option(
     "interval",
@@ -172,10 +178,13 @@ _INTERVAL = Option(
             "the split maps of section 5)",
         ),
     ),
+    roles=("accuracy-variants",),
 )
 
 
-def iterations_option(default: int) -> Option:
+def iterations_option(default: int, roles: tuple[str, ...] = ("accuracy-passes",)) -> Option:
+    """The pass count of P_c; ``roles``: which studies vary it (the accuracy study, one pass and the
+    fixed point, by default)."""
     return Option(
         "iterations",
         "passes of P_c <- P_c(map(P_c)) from P_c = 0 (Geyer's map)",
@@ -183,6 +192,7 @@ def iterations_option(default: int) -> Option:
         low=0,
         high=1000,
         integer=True,
+        roles=roles,
     )
 
 
@@ -193,6 +203,7 @@ def tol_option(default: float) -> Option:
         default,
         low=0.0,
         high=1.0,
+        roles=("tolerance",),
     )
 
 
@@ -436,7 +447,14 @@ _NOTES = (
 )
 
 
-def _spec(kind: int, title: str, eqs: tuple[str, ...], options: tuple[Option, ...], summary: str) -> MapSpec:
+def _spec(
+    kind: int,
+    title: str,
+    eqs: tuple[str, ...],
+    options: tuple[Option, ...],
+    summary: str,
+    roles: tuple[str, ...] = (),
+) -> MapSpec:
     return MapSpec(
         name=f"gravity-type{kind}",
         title=title,
@@ -449,6 +467,7 @@ def _spec(kind: int, title: str, eqs: tuple[str, ...], options: tuple[Option, ..
         extras=_EXTRAS,
         summary=summary,
         notes=_NOTES,
+        roles=("yu-target",) + roles,
     )
 
 
@@ -473,6 +492,7 @@ MAPS = (
         ("55", "56", "57", "58", "59", "60", "61", "62", "63", "64"),
         (_READING, _SAMPLES, _LEG_LENGTH, iterations_option(100), tol_option(1e-12)),
         "P_c from the torque at the stance-average leg length (62), (64)",
+        roles=("accuracy-figure",),
     ),
     _spec(
         3,

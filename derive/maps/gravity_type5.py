@@ -379,7 +379,13 @@ MAPS = (
         build=_build,
         options=(
             Option(
-                "iterations", "fixed-point passes T5.8 from Geyer's map", 100, low=0, high=1000, integer=True
+                "iterations",
+                "fixed-point passes T5.8 from Geyer's map",
+                100,
+                low=0,
+                high=1000,
+                integer=True,
+                roles=("accuracy-passes", "convergence-passes"),
             ),
             Option(
                 "tol",
@@ -387,6 +393,7 @@ MAPS = (
                 1e-12,
                 low=0.0,
                 high=1.0,
+                roles=("tolerance",),
             ),
         ),
         extras=(
@@ -396,5 +403,6 @@ MAPS = (
         summary="the gravity torque at the 3 Gauss-Legendre nodes of the stance, interpolated: a cubic "
         "momentum P(t); radial solution about the mean compression; leg angle in closed form (docs/type5.md)",
         notes="Designed in slipmaps (the report stops mid-sentence): docs/type5.md, equations T5.1-T5.8.",
+        roles=("yu-target", "accuracy-figure", "region"),
     ),
 )

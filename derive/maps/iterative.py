@@ -1,28 +1,26 @@
-"""Schwind and Koditschek's iterative stance map (report sections 3.2 and 5.2), derived step by step.
+"""Schwind and Koditschek's iterative stance map in a converging form (report sections 3.2 and 5.2).
 
-From the Hamiltonian vector field (29) with the decompression stiffness k_d: the leg length q_r is
-the independent variable of the decompression phase (p_r > 0), so each rate is divided by
-dq_r/dt = p_r/m, giving (30)-(32); energy conservation H = E of (27) gives p_r = H^{-1} (33).
-Integrating (30)-(32) from the bottom (q_r = q_r_b, p_r = 0) needs the mean-value approximation of
-Theorem 1 (34)-(37): near the bottom p_r vanishes like (sigma - q_r_b)^(1/2), which fixes the
-mean-value point (41); evaluating the integrands there gives the iteration (42)-(45).
+The report integrates (30)-(32) over the leg length from the turning point (the bottom), with one
+mean-value point per half-stance ((38)-(45), (120)-(151)). Measured, that iteration does not
+converge to the exact stance (docs/iterative.md). Two changes make it converge:
 
-Section 5.2 applies the same steps to each half of a stance with variable stiffness: the
-compression half (stiffness k_c, energy E_ab, p_r = -H^{-1} < 0, integrated from touchdown, eqs
-114-136) and the decompression half (k_d, E_ba, from the bottom, eqs 137-151). The helpers take the
-stiffness, the energy, the sign of p_r and the starting state (:data:`BOTTOM`, :data:`TOUCHDOWN`).
-Section 5.2 also uses a second mean-value variant ("weighted", (128)-(136), (144)-(151)): f = 1/H^{-1}
-goes to the mean-value point together with the factors that depend on the state (p_th, sin q_th),
-and the weight g(sigma) (1, 1/sigma^2 or sigma) is integrated exactly.
+1. **Radial momentum from the work of the radial force** instead of the energy inverse (33):
+   p_r(sigma)^2 = 2 m int_{q_r_b}^{sigma} F_r ds with F_r = dp_r/dt of (29) (p_r dp_r/dq_r =
+   m dp_r/dt). On the exact trajectory both are equal; on an approximate iterate, (33) loses the
+   cancellation of the O((sigma - q_r_b)^(1/2)) terms between the potential and the angular
+   kinetic energy, so near the bottom its square root goes negative; the work form stays
+   O(sigma - q_r_b) and positive whatever the iterate.
+2. **N-node Gauss-Legendre collocation in u = sqrt((sigma - q_r_b)/(x - q_r_b))**, whose one-node
+   rule is the report's mean value xi = 3/4 q_r_b + 1/4 x of (41) (module :mod:`.quadrature_helpers`). The
+   integrands of (30)-(32) in u are regular at the bottom; the iterates are the values at the
+   nodes and each pass is a Picard step of Schwind and Koditschek's integral operator.
 
-Near the bottom the integrands are singular, near touchdown they are regular
-(:func:`integrand_exponents` with ``end``); Theorem 1 gives the fraction 1/4 at the first and 1/2 at
-the second. A compression-half integral from touchdown is therefore written as the difference of two
-integrals anchored at the bottom (:func:`compression_step`).
-
-The report's H^{-1}(q_r, q_th, p_th, E) appears in (42)-(44) as the unevaluated function
-:data:`H_INV`, the iterates q_th_n, p_th_n as undefined functions; :func:`radial_momentum` is its
-closed form. Results are cached.
+Each half (:func:`half_kernel`): the compression half runs from the touchdown state with k_c;
+its bottom leg length q_r_b = q_r_td - D comes from p_r_td^2 = 2 m int F_r, the spring part
+integrated exactly (a quadratic in D) each pass. The decompression half runs from that bottom
+state with k_d to q_r = q_r_lo, where p_r_lo^2 = 2 m int F_r. The zeroth iterate is a declared
+map's bottom and liftoff states (or the held touchdown/bottom state), linear in u between the
+half's ends: the leading behaviour q_th - q_th_b ~ (sigma - q_r_b)^(1/2) of (41).
 """
 
 from __future__ import annotations
@@ -31,276 +29,427 @@ from functools import cache
 
 import sympy as sp
 
+from .. import catalog
+from ..halfspec import HalfInputs, HalfSpec
+from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
+from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
-from ..symbols import E, k_c, k_d, m, p_r, p_th, q_r, q_r_td, q_th, q_th_td, t
+from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
+from . import quadrature_helpers
+from .iterative_helpers import (
+    held_liftoff,
+    leg_length_derivatives,
+    radial_force,
+    zeroth_bottom,
+    zeroth_liftoff,
+    zeroth_option,
+)
 
-__all__ = [
-    "sigma",
-    "delta",
-    "q_r_b",
-    "q_th_b",
-    "p_th_b",
-    "t_b",
-    "E_ab",
-    "E_ba",
-    "t_td",
-    "p_th_td",
-    "p_r_td",
-    "BOTTOM",
-    "TOUCHDOWN",
-    "H_INV",
-    "Q_TH_N",
-    "P_TH_N",
-    "Q_TH_NEXT",
-    "P_TH_NEXT",
-    "leg_length_derivatives",
-    "radial_momentum",
-    "bottom_energy",
-    "touchdown_energy",
-    "near_bottom",
-    "near_touchdown",
-    "taylor_from_bottom",
-    "theorem1_fraction",
-    "integrand_exponents",
-    "mean_value_fractions",
-    "mean_value_point",
-    "weight_split",
-    "iteration_step",
-    "compression_step",
-    "next_radial_momentum",
-]
+__all__ = ["NODE_COUNTS", "u_rates", "half_kernel", "declare_maps", "declare_halves"]
 
-sigma = sp.Symbol("sigma", positive=True)  # leg length as the integration variable
-delta = sp.Symbol("delta", positive=True)  # distance from an end: sigma - q_r_b, or q_r_td - sigma
-q_r_b = sp.Symbol("q_r_b", positive=True)  # bottom state: leg length, angle, angular momentum, time
-q_th_b, p_th_b, t_b = sp.symbols("q_th_b p_th_b t_b", real=True)
-E_ab, E_ba = sp.symbols("E_ab E_ba", real=True)  # energies of the compression and decompression halves
-t_td, p_th_td = sp.symbols("t_td p_th_td", real=True)  # touchdown time and angular momentum
-p_r_td = sp.Symbol("p_r_td", negative=True)  # touchdown radial momentum (compression: p_r < 0)
-BOTTOM = (q_r_b, t_b, q_th_b, p_th_b)  # (q_r, t, q_th, p_th) where an integration starts
-TOUCHDOWN = (q_r_td, t_td, q_th_td, p_th_td)
+#: Node counts a kernel is generated for (option ``nodes``).
+NODE_COUNTS = (1, 2, 3, 4, 6)
 
-H_INV = sp.Function("H_inv")  # H^{-1}(q_r, q_th, p_th, E) of (33), unevaluated
-Q_TH_N, P_TH_N = sp.Function("q_th_n", real=True), sp.Function("p_th_n", real=True)  # n-th iterate
-Q_TH_NEXT, P_TH_NEXT = sp.Function("q_th_n1", real=True), sp.Function("p_th_n1", real=True)  # (n+1)-th
+_D, _PSI, _U = sp.symbols("D Psi u", positive=True)
 
 
 @cache
-def leg_length_derivatives(stiffness=k_d):
-    """Eqs (30)-(32): (dt/dq_r, dq_th/dq_r, dp_th/dq_r), the rates of (29) divided by dq_r/dt = p_r/m."""
-    dq_r, dq_th, _, dp_th = mechanics.hamiltonian_vector_field(stiffness)
-    return tuple(sp.simplify(rate / dq_r) for rate in (sp.Integer(1), dq_th, dp_th))
+def u_rates(stiffness: sp.Symbol) -> tuple[sp.Basic, sp.Basic, sp.Basic]:
+    """(dt/du, dq_th/du, dp_th/du) for sigma = q_r_b + D u^2, going away from the bottom.
 
-
-@cache
-def radial_momentum(stiffness=k_d, energy=E, sign=1):
-    """Eq (33) (sign +1) and (119) (sign -1): p_r = sign H^{-1}(q_r, q_th, p_th, energy), H of (27) = energy.
-
-    H is p_r^2/(2 m) plus terms free of p_r, so H^{-1} = sqrt(2 m (energy - H|_{p_r = 0})).
+    (30)-(32) times dsigma/du = 2 D u, with p_r = u sqrt(4 m D Psi) (the work form: p_r^2 =
+    2 m int_{q_r_b}^{sigma} F_r = 4 m D int_0^u F_r v dv = 4 m D Psi u^2, Psi the F_r-weighted
+    mean (1/u^2) int_0^u F_r v dv). The result has no 1/u: regular at the bottom.
     """
-    hamiltonian = mechanics.hamiltonian(stiffness)
-    rest = hamiltonian.subs(p_r, 0)
-    if sp.expand(hamiltonian - rest - p_r**2 / (2 * m)) != 0:
-        raise RuntimeError(f"H is not p_r^2/(2 m) plus terms free of p_r: {hamiltonian}")
-    numerator, denominator = sp.fraction(sp.together(2 * m * (energy - rest)))  # denominator q_r^2
-    return sign * sp.sqrt(sp.expand(numerator)) / sp.sqrt(denominator)
+    p_r = mechanics.p_r
+    momentum = _U * sp.sqrt(4 * m * _D * _PSI)
+    rates = leg_length_derivatives(stiffness)
+    return tuple(sp.simplify((r * 2 * _D * _U).subs(p_r, momentum)) for r in rates)
 
 
-@cache
-def bottom_energy(stiffness=k_d):
-    """E of a bottom state: H of (27) at q_r = q_r_b, q_th = q_th_b, p_th = p_th_b and p_r = 0."""
-    at_bottom = {q_r: q_r_b, q_th: q_th_b, p_th: p_th_b, p_r: 0}
-    return sp.expand(mechanics.hamiltonian(stiffness).subs(at_bottom))
+def _n(prefix: str, name: str, j: int | None = None) -> sp.Symbol:
+    return sym(f"{prefix}{name}" if j is None else f"{prefix}{name}{j}")
 
 
-@cache
-def touchdown_energy(stiffness=k_c):
-    """E of a touchdown state: H of (27) at q_r_td, q_th_td, p_th_td and p_r = p_r_td < 0."""
-    at_touchdown = {q_r: q_r_td, q_th: q_th_td, p_th: p_th_td, p_r: p_r_td}
-    return sp.expand(mechanics.hamiltonian(stiffness).subs(at_touchdown))
+def _dot(row, values) -> sp.Basic:
+    return sp.Add(*(c * v for c, v in zip(row, values, strict=True)))
 
 
-def near_touchdown(expr, stiffness=k_c):
-    """``expr`` at sigma = q_r_td - delta (delta > 0 into the compression), on a touchdown energy level.
-
-    As :func:`near_bottom`, with H^{-1} at the touchdown angle and angular momentum; H^{-1} = |p_r_td|
-    at delta = 0.
-    """
-    expr = sp.sympify(expr).subs(p_r, radial_momentum(stiffness))
-    at = {q_r: q_r_td - delta, q_th: q_th_td, p_th: p_th_td, E: touchdown_energy(stiffness)}
-    return expr.subs(at, simultaneous=True)
-
-
-def near_bottom(expr, stiffness=k_d):
-    """``expr`` (in q_r, q_th, p_th, p_r, E) at sigma = q_r_b + delta on the energy level of a bottom state.
-
-    p_r becomes H^{-1}(q_r_b + delta, q_th_b, p_th_b, E_b): the angle and angular momentum are held at
-    their bottom values, as in the integrands of (38)-(40), where H^{-1}(sigma, q_th, p_th, E) is
-    integrated over sigma alone. Along the actual trajectory they vary too, but p_r^2 has the same
-    leading term 2 m (dp_r/dt)_b delta either way (see :func:`taylor_from_bottom`).
-    """
-    expr = sp.sympify(expr).subs(p_r, radial_momentum(stiffness))
-    at = {q_r: q_r_b + delta, q_th: q_th_b, p_th: p_th_b, E: bottom_energy(stiffness)}
-    return expr.subs(at, simultaneous=True)
-
-
-def taylor_from_bottom(expr, order, stiffness=k_d):
-    """Taylor polynomial in t, to t^order, of ``expr`` along the flow of (29) from the bottom state at t = 0.
-
-    The bottom state is (q_r_b, q_th_b, p_r = 0, p_th_b); the n-th coefficient is the n-th Lie
-    derivative of ``expr`` along the vector field (29) there, divided by n!.
-    """
-    field = mechanics.hamiltonian_vector_field(stiffness)
-    state = (q_r, q_th, p_r, p_th)
-    at_bottom = {q_r: q_r_b, q_th: q_th_b, p_r: 0, p_th: p_th_b}
-    term, total = sp.sympify(expr), sp.S.Zero
-    for n in range(order + 1):
-        total += term.subs(at_bottom) * t**n / sp.factorial(n)
-        term = sum(term.diff(x) * rate for x, rate in zip(state, field, strict=True))
-    return sp.expand(total)
-
-
-def theorem1_fraction(r, s):
-    """Eq (35)'s limit of (xi_x - a)/(x - a): ((s + 1)/(r + s + 1))^(1/r), under Theorem 1's conditions.
-
-    ``r`` and ``s`` are the exponents of f(t) - K ~ (t - a)^r and g(t) ~ (t - a)^s at t -> a.
-    """
-    r, s = sp.nsimplify(r), sp.nsimplify(s)
-    if r == 0 or not s > -1 or not r + s > -1:
-        raise ValueError(f"Theorem 1 needs r != 0, s > -1, r + s > -1; got r = {r}, s = {s}")
-    return ((s + 1) / (r + s + 1)) ** (1 / r)
-
-
-_INTEGRANDS = {"p_r": p_r, "38": 1 / p_r, "39": 1 / (q_r**2 * p_r), "40": q_r / p_r}
-
-
-@cache
-def integrand_exponents(stiffness=k_d, end="bottom"):
-    """Exponents e of the leading terms c delta^e at an end of the stance half (delta -> 0).
-
-    ``end="bottom"`` (delta = sigma - q_r_b): keys ``"p_r"`` for H^{-1} itself; ``"38"``, ``"39"``,
-    ``"40"`` for the integrands 1/H^{-1}, 1/(sigma^2 H^{-1}), sigma/H^{-1}; ``"q_th"`` and ``"p_th"``
-    for q_th(sigma) - q_th_b and p_th(sigma) - p_th_b, the integrals of (31) and (32) from the bottom
-    (generic bottom: p_th_b != 0, sin q_th_b != 0).
-
-    ``end="touchdown"`` (delta = q_r_td - sigma): the same keys, for F(sigma) - F(q_r_td), the
-    increments that Theorem 1 takes as f - K; H^{-1} is finite there, so they are regular.
-    """
-    if end == "bottom":
-        exponents = {key: near_bottom(f, stiffness).leadterm(delta)[1] for key, f in _INTEGRANDS.items()}
-        _, dq_th, dp_th = leg_length_derivatives(stiffness)
-        for key, rate in (("q_th", dq_th), ("p_th", dp_th)):
-            coeff, power = near_bottom(rate, stiffness).leadterm(delta)
-            integral = sp.integrate(coeff * sigma**power, (sigma, 0, delta))  # leading term of the increment
-            exponents[key] = integral.leadterm(delta)[1]
-        return exponents
-    if end == "touchdown":
-        exponents = {}
-        for key, f in _INTEGRANDS.items():
-            near = near_touchdown(f, stiffness)  # analytic at delta = 0: the first nonzero Taylor term
-            exponents[key] = next(
-                n for n in range(1, 4) if sp.factor(near.diff(delta, n).subs(delta, 0)) != 0
-            )
-        return exponents
-    raise ValueError(f"end must be 'bottom' or 'touchdown', got {end!r}")
-
-
-@cache
-def mean_value_fractions(stiffness=k_d, end="bottom", weighted=False):
-    """(xi - a)/(x - a) from (35) for each of the integrals (38)-(40), a the ``end`` (q_r_b or q_r_td).
-
-    As printed, (38)-(40) are (37) with f the whole integrand (r = its exponent, -1/2 at the bottom)
-    and g = 1 (s = 0): the right sides are f(xi) times int_a^x dsigma = x - a. ``weighted`` is the
-    variant of (128)/(144): f = 1/H^{-1} for all three, g = 1, 1/sigma^2, sigma (each with s = 0,
-    computed).
-    """
-    exponents = integrand_exponents(stiffness, end)
-    anchor = q_r_b if end == "bottom" else q_r_td
-    fractions = {}
-    weights = [weight_split(rate)[1] for rate in leg_length_derivatives(stiffness)]
-    for key, weight in zip(("38", "39", "40"), weights, strict=True):
-        if weighted:
-            s = weight.subs(q_r, anchor + delta).leadterm(delta)[1]
-            fractions[key] = theorem1_fraction(exponents["38"], s)
-        else:
-            fractions[key] = theorem1_fraction(exponents[key], 0)
-    return fractions
-
-
-@cache
-def mean_value_point(stiffness=k_d, end=q_r):
-    """Eq (41): xi = q_r_b + F (end - q_r_b), F the fraction of (35) at the bottom for the integral (38).
-
-    ``end = q_r`` gives (41), the point of int_{q_r_b}^{q_r}; ``end = q_r_td`` the point of the whole
-    compression half.
-    """
-    return sp.expand(q_r_b + mean_value_fractions(stiffness)["38"] * (end - q_r_b))
-
-
-def weight_split(rate):
-    """A rate of (30)-(32) as (state part, weight g(q_r)) with rate = state part / p_r * g(q_r).
-
-    g collects the factors of rate * p_r that depend on q_r alone (1, 1/q_r^2, q_r); the state part
-    the rest (constants and factors in q_th, p_th), which goes to the mean-value point with 1/p_r.
-    """
-    state, weight = sp.S.One, sp.S.One
-    for factor in sp.Mul.make_args(sp.factor(rate * p_r)):
-        if factor.free_symbols & {q_th, p_th, p_r} or q_r not in factor.free_symbols:
-            state *= factor
-        else:
-            weight *= factor
-    return state, weight
-
-
-@cache
-def iteration_step(stiffness=k_d, xi=None, sign=1, start=BOTTOM, energy=E, weighted=False):
-    """Eqs (42)-(44): the (n+1)-th iterate (t, q_th, p_th as functions of q_r) from the n-th.
-
-    Each of (30)-(32) is integrated from ``start`` = (q_r_0, t_0, q_th_0, p_th_0) (default the bottom),
-    x(q_r) = x_0 + int_{q_r_0}^{q_r} F(sigma) dsigma, with the integrand F evaluated on the n-th
-    iterate (q_th = q_th_n(sigma), p_th = p_th_n(sigma), p_r = sign H^{-1}(sigma, q_th_n(sigma),
-    p_th_n(sigma), energy)) and the integral replaced by (37): F(xi) int_{q_r_0}^{q_r} dsigma, xi of
-    (41) unless given. ``weighted``: the variant of (128)-(136)/(144)-(151), F = [state part / p_r](xi)
-    g(sigma) with int g dsigma exact (:func:`weight_split`). ``sign = -1``, ``start = TOUCHDOWN``,
-    ``energy = E_ab``: the compression half (124)-(126), (133)-(135).
-    """
-    xi = mean_value_point(stiffness) if xi is None else xi
-    on_iterate = {q_r: xi, q_th: Q_TH_N(xi), p_th: P_TH_N(xi)}
-    on_iterate[p_r] = sign * H_INV(xi, Q_TH_N(xi), P_TH_N(xi), energy)
-    q_r_0, *values_0 = start
-    steps = []
-    for x_0, rate in zip(values_0, leg_length_derivatives(stiffness), strict=True):
-        if weighted:
-            state, weight = weight_split(rate)
-            at_xi = (state / p_r).subs(on_iterate, simultaneous=True)
-            steps.append(x_0 + at_xi * sp.integrate(weight.subs(q_r, sigma), (sigma, q_r_0, q_r)))
-        else:
-            length = sp.integrate(sp.Integer(1), (sigma, q_r_0, q_r))
-            steps.append(x_0 + rate.subs(on_iterate, simultaneous=True) * length)
-    return tuple(steps)
-
-
-@cache
-def compression_step(stiffness=k_c, energy=E_ab, weighted=False):
-    """Corrected (124)-(126) (``weighted``: (133)-(135)): the compression iterate anchored at the bottom.
-
-    The integrals from touchdown are singular at the bottom, where Theorem 1 fixes the point, not at
-    touchdown; so int_{q_r_td}^{q_r} F = int_{q_r_b}^{q_r} F - int_{q_r_b}^{q_r_td} F, each by (37)
-    at the point (41) of its own upper limit: x(q_r) = x_td + D(q_r) - D(q_r_td), D(x) =
-    F(xi(x)) (x - q_r_b), xi(x) = 3/4 q_r_b + 1/4 x, F on the n-th iterate with p_r = -H^{-1}.
-    """
-    from_bottom = iteration_step(
-        stiffness, mean_value_point(stiffness), -1, (q_r_b, 0, 0, 0), energy, weighted
+def _evaluate(prefix: str, rule: quadrature_helpers.Rule, stiffness, base, D, Q, P) -> Stage:
+    """Node quantities of one pass: sigma, F_r, Psi and the u-rates (t, q_th, p_th) at each node."""
+    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
+    rows, guards = [], []
+    F = [_n(prefix, "F", j) for j in range(rule.n)]
+    for j, u in enumerate(rule.nodes):
+        sigma = _n(prefix, "sigma", j)
+        rows += [(sigma, base + D * u**2), (F[j], F_r.subs({q_r: sigma, q_th: Q[j], p_th: P[j]}))]
+    for j, u in enumerate(rule.nodes):
+        psi, sigma = _n(prefix, "Psi", j), _n(prefix, "sigma", j)
+        rows.append((psi, _dot(rule.S1[j], F) / u**2))
+        guards.append(Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"))
+        at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q[j], p_th: P[j]}
+        rows += [
+            (_n(prefix, "ft", j), dt.subs(at)),
+            (_n(prefix, "fq", j), dq.subs(at)),
+            (_n(prefix, "fp", j), dp.subs(at)),
+        ]
+    return Stage(
+        tuple(rows), tuple(guards), comment="node values: sigma, F_r (29), Psi, u-rates of (30)-(32)"
     )
-    return tuple(x_td + d - d.subs(q_r, q_r_td) for x_td, d in zip(TOUCHDOWN[1:], from_bottom, strict=True))
+
+
+def _rates(prefix: str, rule: quadrature_helpers.Rule, name: str) -> list[sp.Symbol]:
+    return [_n(prefix, name, j) for j in range(rule.n)]
+
+
+def _bottom_quadratic(rule, prefix, stiffness, top, p_r_top, D) -> sp.Basic:
+    """D = q_r_td - q_r_b from p_r_td^2/(2 m) = k (l0 - q_r_td) D + k D^2/2 + D Rbar, Rbar the mean
+    of F_r minus the spring term (2 int_0^1 (F_r - k (l0 - sigma)) u du); its positive root."""
+    spring = [stiffness * (l0 - _n(prefix, "sigma", j)) for j in range(rule.n)]
+    rbar = 2 * _dot(rule.w1, [f - s for f, s in zip(_rates(prefix, rule, "F"), spring, strict=True)])
+    b, c = stiffness * (l0 - top) + rbar, p_r_top**2 / (2 * m)
+    return 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
+
+
+def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step, ...]:
+    """Steps of one half-stance with ``rule``; ``kind`` "compression" or "decompression"."""
+    n = rule.n
+    compress = kind == "compression"
+    stiffness = k_c if compress else k_d
+    th0, pth0 = a["q_th"], m * a["q_r"] ** 2 * a["q_thd"]
+    # zeroth iterate: linear in u between the bottom (u = 0) and the far end (u = 1)
+    if compress:
+        guess_b = m * a["guess_q_r"] ** 2 * a["guess_q_thd"]
+        start_q = [a["guess_q_th"] + (th0 - a["guess_q_th"]) * u for u in rule.nodes]
+        start_p = [guess_b + (pth0 - guess_b) * u for u in rule.nodes]
+    else:
+        guess_lo = m * catalog.PARAMS["q_r_lo"].symbol ** 2 * a["guess_q_thd"]
+        start_q = [th0 + (a["guess_q_th"] - th0) * u for u in rule.nodes]
+        start_p = [pth0 + (guess_lo - pth0) * u for u in rule.nodes]
+    Q = [_n("_", "Q", j) for j in range(n)]
+    P = [_n("_", "P", j) for j in range(n)]
+    D = sym("_D")
+    top = a["q_r"]
+    if compress:
+        d0 = top - a["guess_q_r"]
+        base = top - D
+    else:
+        d0 = catalog.PARAMS["q_r_lo"].symbol - top
+        base = top
+    fq, fp = _rates("_i", rule, "fq"), _rates("_i", rule, "fp")
+    if compress:  # from the touchdown end: y(u_j) = y_td + int_{u_j}^1
+        new_q = [th0 + _dot(rule.w, fq) - _dot(rule.S[j], fq) for j in range(n)]
+        new_p = [pth0 + _dot(rule.w, fp) - _dot(rule.S[j], fp) for j in range(n)]
+        new_d = _bottom_quadratic(rule, "_i", stiffness, top, m * a["q_rd"], D)
+    else:  # from the bottom: y(u_j) = y_b + int_0^{u_j}
+        new_q = [th0 + _dot(rule.S[j], fq) for j in range(n)]
+        new_p = [pth0 + _dot(rule.S[j], fp) for j in range(n)]
+        new_d = D
+    scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
+    iterate = Iterate(
+        state=((D, d0), *zip(Q, start_q, strict=True), *zip(P, start_p, strict=True)),
+        body=(_evaluate("_i", rule, stiffness, base, D, Q, P),),
+        update=(new_d, *new_q, *new_p),
+        max_iter=sym("iterations"),
+        tol=sym("tol"),
+        scales=(l0,) + (sp.S.One,) * n + (scale_p,) * n,
+        count=sym("_passes"),
+        comment=f"Picard passes on the {n} node values (collocation in u)",
+    )
+    final = _evaluate("_f", rule, stiffness, base, D, Q, P)
+    # Both halves: y_end = y_anchor + int_0^1 (the compression half runs toward u = 0 in time, the
+    # decompression half toward u = 1; in both the u-rates point along the motion).
+    q_th_end = th0 + _dot(rule.w, _rates("_f", rule, "fq"))
+    p_th_end = pth0 + _dot(rule.w, _rates("_f", rule, "fp"))
+    common = ((sym("t_half"), _dot(rule.w, _rates("_f", rule, "ft"))), (sym("end_q_th"), q_th_end))
+    if compress:
+        q_r_b = sym("end_q_r")
+        return (
+            iterate,
+            final,
+            Stage(
+                (
+                    *common,
+                    (q_r_b, top - D),
+                    (sym("end_q_rd"), sp.S.Zero),
+                    (sym("end_q_thd"), p_th_end / (m * q_r_b**2)),
+                    (sym("passes"), sym("_passes")),
+                ),
+                (Guard(q_r_b > 0, "FALL", "bottom leg length q_r_b > 0"),),
+                comment="bottom state",
+            ),
+        )
+    work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
+    return (
+        iterate,
+        final,
+        Stage(
+            ((work, _dot(rule.w1, _rates("_f", rule, "F"))),),
+            (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),),
+        ),
+        Stage(
+            (
+                *common,
+                (sym("end_q_r"), q_r_lo),
+                (sym("end_q_rd"), sp.sqrt(4 * m * D * work) / m),
+                (sym("end_q_thd"), p_th_end / (m * q_r_lo**2)),
+                (sym("passes"), sym("_passes")),
+            ),
+            comment="liftoff state: p_r_lo^2 = 2 m int F_r (work form)",
+        ),
+    )
+
+
+NODES = Option(
+    "nodes",
+    "Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point (41))",
+    "4",
+    tuple((str(n), f"{n} node{'s' if n > 1 else ''}") for n in NODE_COUNTS),
+    roles=("accuracy-variants",),
+)
+ITERATIONS = Option(
+    "iterations",
+    "Picard passes per half-stance (0 = the zeroth iterate)",
+    6,
+    low=0,
+    high=100,
+    integer=True,
+    roles=("accuracy-passes", "convergence-passes"),
+)
+TOL = Option(
+    "tol",
+    "stop when no node value moves by more than tol (relative; 0 = run every pass)",
+    0.0,
+    low=0.0,
+    high=1.0,
+    roles=("tolerance",),
+)
+
+
+def _polar_args(prefix: str, what: str) -> tuple[Arg, ...]:
+    return tuple(Arg(sym(f"{prefix}{f.name}"), f"{what}: {f.doc} [{f.unit}]", None) for f in catalog.POLAR)
 
 
 @cache
-def next_radial_momentum(stiffness=k_d, energy=E, sign=1):
-    """Eq (45), corrected: p_r of the (n+1)-th iterate at q_r, i.e. (33) on that iterate.
+def half_kernel(kind: str) -> Kernel:
+    """The compression half (touchdown -> bottom, k_c; report 5.2.1) or the decompression half
+    (bottom -> liftoff at q_r_lo, k_d; report 3.2 and 5.2.2), collocation with NODES nodes."""
+    compress = kind == "compression"
+    anchor = _polar_args("", "touchdown state" if compress else "bottom state")
+    names = {f.name: a.symbol for f, a in zip(catalog.POLAR, anchor, strict=True)}
+    guess_fields = ("q_r", "q_th", "q_thd") if compress else ("q_th", "q_thd")
+    end = "bottom" if compress else "liftoff"
+    guess = tuple(Arg(sym(f"guess_{f}"), f"zeroth iterate's {end} {f}", None) for f in guess_fields)
+    a = {**names, **{f"guess_{f}": g.symbol for f, g in zip(guess_fields, guess, strict=True)}}
+    stiffness = catalog.PARAMS["k_c" if compress else "k_d"]
+    params = (catalog.PARAMS["m"], catalog.PARAMS["l0"], stiffness, catalog.PARAMS["g_s"])
+    if not compress:
+        params += (catalog.PARAMS["q_r_lo"],)
+    q_r_lo = catalog.PARAMS["q_r_lo"].symbol
+    at_start = {q_r: names["q_r"], q_th: names["q_th"], p_th: m * names["q_r"] ** 2 * names["q_thd"]}
+    first = (
+        (Guard(names["q_rd"] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)
+        if compress
+        else (
+            Guard(q_r_lo - names["q_r"] > 0, "NO_LIFTOFF", "bottom below q_r_lo"),
+            # as the exact simulator: the k_d spring must start extending the leg at the bottom
+            Guard(radial_force(k_d).subs(at_start) > 0, "RECOMPRESSION", "F_r > 0 at the bottom with k_d"),
+        )
+    )
+    cases = tuple((NODES.code(str(n)), _half_case(quadrature_helpers.rule(n), kind, a)) for n in NODE_COUNTS)
+    outputs = Group(
+        "",
+        (
+            Field("t_half", f"time of the {kind} half", "s"),
+            Group("end", catalog.POLAR, f"state at the {end}"),
+            Field("passes", "Picard passes run", "1"),
+        ),
+    )
+    return Kernel(
+        name=f"schwind_{kind}",
+        summary=f"Schwind and Koditschek's iteration, {kind} half, converging form (collocation in u, "
+        "work form of p_r).",
+        equations=("29", "30", "31", "32", "37", "41")
+        if not compress
+        else ("115", "116", "117", "118", "123"),
+        args=anchor + params + guess + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
+        steps=(
+            Stage((), first),
+            Switch(NODES.symbol, cases, comment="node count"),
+        ),
+        outputs=outputs,
+        module="iterative",
+    )
 
-    p_r_(n+1)(q_r) = sign H^{-1}(q_r, q_th_(n+1)(q_r), p_th_(n+1)(q_r), energy); sign -1 and E_ab for
-    the compression half, (127) and (136).
-    """
-    on_iterate = {q_th: Q_TH_NEXT(q_r), p_th: P_TH_NEXT(q_r)}
-    return radial_momentum(stiffness, energy, sign).subs(on_iterate, simultaneous=True)
+
+_POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
+    p = inp.params
+    options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
+    before, after = zeroth_bottom(inp.touchdown, p, p["q_r_lo"]), zeroth_liftoff(p["q_r_lo"])
+    compression, decompression = half_kernel("compression"), half_kernel("decompression")
+    physical = {q: p[q] for q in ("m", "l0", "g_s")}
+    steps = (
+        Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
+        before,
+        Call(
+            compression,
+            {
+                "q_r": q_r_td,
+                "q_rd": q_rd_td,
+                "q_th": q_th_td,
+                "q_thd": q_thd_td,
+                **physical,
+                "k_c": p["k_c"],
+                **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
+                **options,
+            },
+            {
+                "t_half": "t_bottom",
+                **{f"end_{q}": f"bottom_{q}" for q in _POLAR_NAMES},
+                "passes": "c_passes",
+            },
+            comment="compression half, k_c (report 5.2.1)",
+        ),
+        after,
+        Call(
+            decompression,
+            {
+                **{q: sym(f"bottom_{q}") for q in _POLAR_NAMES},
+                **physical,
+                "k_d": p["k_d"],
+                "q_r_lo": p["q_r_lo"],
+                "guess_q_th": sym("g_lo_q_th"),
+                "guess_q_thd": sym("g_lo_q_thd"),
+                **options,
+            },
+            {
+                "t_half": "t_decompression",
+                **{f"end_{q}": f"liftoff_{q}" for q in _POLAR_NAMES},
+                "passes": "d_passes",
+            },
+            comment="decompression half, k_d (report 3.2, 5.2.2)",
+        ),
+        Stage(
+            (
+                (sym("t_stance"), sym("t_bottom") + sym("t_decompression")),
+                # the larger of the two halves' pass counts: at most the option iterations
+                (
+                    sym("passes"),
+                    (sym("c_passes") + sym("d_passes") + sp.Abs(sym("c_passes") - sym("d_passes"))) / 2,
+                ),
+            ),
+            (Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
+        ),
+    )
+    return MapBuild(steps=steps, helpers=(compression, decompression))
+
+
+_EQUATIONS = ("27", "29", "30", "31", "32", "33", "35", "37", "41", "114", "115", "116", "117", "118", "137")
+
+
+@cache
+def declare_maps() -> tuple[MapSpec, ...]:
+    """This module's ``MAPS``: declared once every map that can be a zeroth iterate is known (the
+    choices of option ``zeroth``, :func:`~.iterative_helpers.zeroth_option`)."""
+    return (
+        MapSpec(
+            name="iterative",
+            title="Iterative stance map (Schwind and Koditschek, converging form)",
+            section="5.2",
+            equations=tuple(sorted(_EQUATIONS, key=int)),
+            params=("m", "l0", "k_c", "k_d", "g_s"),
+            build=_build,
+            options=(NODES, ITERATIONS, TOL, zeroth_option()),
+            extras=(Field("passes", "Picard passes run (the larger of the two halves)", "1"),),
+            summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the "
+            "radial work; k_c before the bottom, k_d after",
+            notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead "
+            "of (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
+            "p_r_td^2 = 2 m int F_r.",
+            roles=("region",),
+        ),
+    )
+
+
+_HALF_OUTPUTS = {"t_half": "t_half", **{f"end_{q}": f"end_{q}" for q in _POLAR_NAMES}, "passes": "passes"}
+_PASSES = Field("passes", "Picard passes run", "1")
+
+
+def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    """Touchdown -> bottom with k_c; the zeroth iterate from the touchdown state (its Geyer call
+    takes q_r_lo = q_r_td: only its bottom is used)."""
+    p = inp.params
+    options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
+    return (
+        zeroth_bottom(inp.state, p, inp.state[0]),
+        Call(
+            half_kernel("compression"),
+            {
+                **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
+                **{q: p[q] for q in ("m", "l0", "k_c", "g_s")},
+                **{f"guess_{q}": sym(f"z_b_{q}") for q in ("q_r", "q_th", "q_thd")},
+                **options,
+            },
+            _HALF_OUTPUTS,
+            comment="compression half, k_c (report 5.2.1)",
+        ),
+    )
+
+
+def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
+    """Bottom -> liftoff with k_d; zeroth iterate: the bottom's angle and angular momentum held."""
+    p = inp.params
+    guess_q_th, guess_q_thd = held_liftoff(inp.state, p["q_r_lo"])
+    return (
+        Call(
+            half_kernel("decompression"),
+            {
+                **dict(zip(_POLAR_NAMES, inp.state, strict=True)),
+                **{q: p[q] for q in ("m", "l0", "k_d", "g_s", "q_r_lo")},
+                "guess_q_th": guess_q_th,
+                "guess_q_thd": guess_q_thd,
+                **{o: inp.opt(o) for o in ("nodes", "iterations", "tol")},
+            },
+            _HALF_OUTPUTS,
+            comment="decompression half, k_d (report 5.2.2)",
+        ),
+    )
+
+
+@cache
+def declare_halves() -> tuple[HalfSpec, ...]:
+    """This module's ``HALVES`` (the compression half takes option ``zeroth`` too)."""
+    return (
+        HalfSpec(
+            name="iterative-compression",
+            title="Iterative compression half (touchdown to bottom, k_c; converging form)",
+            section="5.2.1",
+            equations=("29", "30", "31", "32", "114", "115", "116", "117", "118", "123"),
+            whole="iterative",
+            start="touchdown",
+            params=("m", "l0", "k_c", "g_s"),
+            build=_compression_half,
+            options=(NODES, ITERATIONS, TOL, zeroth_option()),
+            extras=(_PASSES,),
+            summary="the compression half of `iterative`: bottom leg length from the radial work, Picard "
+            "passes on Gauss nodes in u",
+        ),
+        HalfSpec(
+            name="iterative-decompression",
+            title="Iterative decompression half (bottom to liftoff, k_d; converging form)",
+            section="5.2.2",
+            equations=("29", "30", "31", "32", "37", "41", "137", "138", "139", "140", "141", "143"),
+            whole="iterative",
+            start="bottom",
+            params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+            build=_decompression_half,
+            options=(NODES, ITERATIONS, TOL),
+            extras=(_PASSES,),
+            summary="the decompression half of `iterative` from any bottom state: zeroth iterate the "
+            "bottom's angle and angular momentum held, liftoff p_r from the radial work",
+        ),
+    )

@@ -87,6 +87,8 @@ class Option:
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
     kernel: bool = True  # a kernel argument (else it selects the implementation: ``backends``)
     backends: Mapping[str, str] = field(default_factory=dict)  # choice -> module with a BACKEND
+    #: Which of its values the studies measure (derive/maps/__init__.py's OPTION_ROLES).
+    roles: tuple[str, ...] = ()
 
     def encode(self, map_name: str, value: object) -> float:
         """The kernel argument for ``value`` (a choice's index); ValueError naming the valid values,
@@ -146,6 +148,8 @@ class MapInfo:
     as_printed: bool = False
     #: Statuses the approximation itself returns on gaits the exact stance completes.
     approximation_statuses: tuple[str, ...] = ()
+    #: What the studies and the command line do with the map (derive/maps/__init__.py's MAP_ROLES).
+    roles: tuple[str, ...] = ()
 
     @property
     def ground_truth(self) -> bool:
@@ -242,6 +246,7 @@ def _option(row: dict) -> Option:
         at_rest_length=tuple(row.get("at_rest_length", ())),
         kernel=row["kernel"],
         backends=dict(row["backends"]),
+        roles=tuple(row.get("roles", ())),
     )
 
 
@@ -261,6 +266,7 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         extras=tuple(e["name"] for e in r["extras"]),
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),
+        roles=tuple(r.get("roles", ())),
         **extra,
     )
 

@@ -341,13 +341,13 @@ def _accuracy_out(args: argparse.Namespace) -> Path:
 
 def _cmd_accuracy(args: argparse.Namespace) -> int:
     from ..api.index import get
-    from ..studies.accuracy_report import write
+    from ..studies.runner import run
 
     names = None if args.map == "all" else [get(args.map).name]
     if names is not None and get(names[0]).ground_truth:
         raise ValueError("accuracy compares maps against the exact simulator; choose an approximate map")
     out = _accuracy_out(args)  # before any work
-    for path in write(out, names, show_progress=False if args.no_progress else None):
+    for path in run(out, names, show_progress=False if args.no_progress else None):
         print(f"wrote {path}")
     return 0
 

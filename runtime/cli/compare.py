@@ -169,13 +169,20 @@ def _side(name: str, params: SlipParams, td, options: dict) -> Side:
     return Side(name, options, res, status, (h, v))
 
 
-#: The map compared by default: Geyer et al.'s (report 3.1), or its split form (5.1) when k_c != k_d.
-DEFAULT_MAP, DEFAULT_VS_MAP = "geyer", "geyer-vs"
+#: The role (``MapInfo.roles``) of the maps compared by default: Geyer et al.'s (report 3.1), and
+#: its split form (5.1) that accepts k_c != k_d.
+DEFAULT_ROLE = "default"
 
 
 def default_map(params: SlipParams) -> str:
-    """Geyer et al.'s map for a constant stiffness, the simple variable-stiffness map otherwise."""
-    return DEFAULT_MAP if params.constant_stiffness else DEFAULT_VS_MAP
+    """The first map with the role :data:`DEFAULT_ROLE` (index order) whose requirements ``params``
+    meet: Geyer et al.'s map for a constant stiffness, the simple variable-stiffness map otherwise."""
+    for info in index.maps():
+        if DEFAULT_ROLE in info.roles and (
+            params.constant_stiffness or "constant_stiffness" not in info.requires
+        ):
+            return info.name
+    raise ValueError("no map with the role 'default' accepts these parameters")
 
 
 def compare(

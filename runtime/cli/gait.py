@@ -144,9 +144,9 @@ def _format(rows: list[tuple[dict, str, tuple]]) -> str:
 
 def run(args: argparse.Namespace) -> int:
     from ..analysis.gait import DEFINITIONS, fixed_points
-    from ..api.index import get
+    from ..api.index import EXACT, get
     from ..api.params import HUMAN_RUNNER
-    from ..studies.stability import EXACT, REGION_MAPS, region_record
+    from ..studies.stability import region_maps, region_record
     from .args import image_path, map_options, params_of
 
     params = params_of(args)
@@ -170,7 +170,7 @@ def run(args: argparse.Namespace) -> int:
     if args.figure:
         from ..studies.stability_report import figure as draw
 
-        chosen = [n for n in REGION_MAPS if n != EXACT or not args.no_exact] if args.map is None else names
+        chosen = [n for n in region_maps() if n != EXACT or not args.no_exact] if args.map is None else names
         figure = str(draw({"region": region_record(chosen, show)}, args.figure))
     if args.json:
         data = {

@@ -14,14 +14,18 @@ are absolute and relative to a named scale. A point counts when both sides compl
 the others are counted by status: exact failures (including exact liftoffs that run backward,
 left out as the protocol asks) and map failures where the exact step succeeds.
 
-Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps),
-:func:`measure_all`, :func:`compared`, :func:`map_failures`, :func:`exact_failures` and the statistics
-objects that :mod:`.accuracy_report` renders to docs/accuracy.md, docs/accuracy.json and
-docs/accuracy.png.
+The maps and variants measured come from the index: every map, and the values of its options
+that the option roles mark (:func:`variants`); :func:`maps_with` lists the maps of a map role.
+
+Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps,
+:func:`exact_steps` the grid's, simulated once per process), :func:`measure_all`, :func:`compared`,
+:func:`map_failures`, :func:`exact_failures` and the statistics that :mod:`.accuracy_report`
+records and renders (docs/accuracy.json, .md, .png).
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import statistics
 from collections import Counter
@@ -41,10 +45,17 @@ from .quantities import QUANTITIES
 
 __all__ = [
     "Variant",
+    "ONE_PASS",
+    "FIXED_POINT",
+    "maps_with",
+    "baseline",
+    "options_with",
+    "other_values",
     "variants",
     "GridRun",
     "VariantStats",
     "measure",
+    "exact_steps",
     "run_maps",
     "measure_all",
     "apex_errors",
@@ -78,49 +89,72 @@ class Variant:
         return dict(self.options)
 
 
-#: The pass counts compared for maps with an iterated correction: one pass, or the fixed point.
-ONE_PASS = {"iterations": 1, "tol": 0.0}
-FIXED_POINT = {"iterations": 100, "tol": 1e-12}
+#: The pass counts compared for maps with an iterated correction, by option role (the options with
+#: roles "accuracy-passes" and "tolerance"): one pass, or the fixed point.
+ONE_PASS = {"accuracy-passes": 1, "tolerance": 0.0}
+FIXED_POINT = {"accuracy-passes": 100, "tolerance": 1e-12}
+
+
+def maps_with(role: str) -> list[str]:
+    """The maps of the index with the map role ``role`` (``MapInfo.roles``), in index order."""
+    return [m.name for m in index.maps() if role in m.roles]
+
+
+def baseline() -> str:
+    """The accuracy study's reference (the map role "baseline": Geyer et al.'s map): the findings
+    compare every map with it, and it is measured beside any chosen map."""
+    (name,) = maps_with("baseline")
+    return name
+
+
+def options_with(info: index.MapInfo, role: str) -> list[index.Option]:
+    """The options of map ``info`` that have ``role`` (the option roles of the index), in order."""
+    return [o for o in info.options if role in o.roles]
+
+
+def other_values(option: index.Option) -> list:
+    """Every value of ``option`` but its default: a choice's other choices, an integer option's other
+    whole numbers in [low, high]."""
+    if option.kind == "choice":
+        return [c for c in option.choices if c != option.default]
+    if option.kind == "int" and option.low is not None and option.high is not None:
+        return [v for v in range(int(option.low), int(option.high) + 1) if v != option.default]
+    raise ValueError(f"option {option.name}: no values to vary (a float, or an integer without bounds)")
+
+
+def _passes(info: index.MapInfo) -> list[dict]:
+    """The pass-count settings of the accuracy study for ``info``: one pass and the fixed point
+    (option name -> value), or a single empty setting for a map without an accuracy pass count."""
+    if not options_with(info, "accuracy-passes"):
+        return [{}]
+    return [
+        {o.name: passes[role] for role in passes for o in options_with(info, role)}
+        for passes in (ONE_PASS, FIXED_POINT)
+    ]
 
 
 def variants(map_names: Iterable[str] | None = None) -> list[Variant]:
-    """The measured variants of each map, derived from its options in the index.
+    """The measured variants of each map, derived from its options' roles in the index.
 
-    Every map at its defaults; a map with ``reading`` and ``iterations`` options also with every
-    reading at one pass and at the fixed point, one with ``iterations`` only at both (unless its
-    iterated ``gravity`` correction is off by default); every other choice option (and
-    ``samples``) once at a non-default value, the rest at defaults.
+    Every map at its defaults; then every combination of the values of its "accuracy-readings"
+    options at one pass and at the fixed point of its "accuracy-passes" option (with its "tolerance"
+    option in step; the default combination left out); then each value but the default of each of
+    its "accuracy-variants" options, the other options at their defaults.
     """
     names = [m.name for m in index.maps() if m.name != index.EXACT] if map_names is None else list(map_names)
     out: list[Variant] = []
     for name in names:
         info = index.get(name)
         out.append(Variant(name))
-        opts = {o.name: o for o in info.options}
-        if "reading" in opts and "iterations" in opts:
-            for reading in opts["reading"].choices:
-                for passes in (ONE_PASS, FIXED_POINT):
-                    chosen = {"reading": reading, **passes}
-                    if all(info.resolve({})[k] == v for k, v in chosen.items()):
-                        continue  # the default variant
+        defaults = info.resolve({})
+        readings = options_with(info, "accuracy-readings")
+        for combo in itertools.product(*(o.choices for o in readings)):
+            for passes in _passes(info):
+                chosen = {**{o.name: v for o, v in zip(readings, combo, strict=True)}, **passes}
+                if any(defaults[k] != v for k, v in chosen.items()):
                     out.append(Variant(name, tuple(chosen.items()), default=False))
-        elif "iterations" in opts and not (opts.get("gravity") and opts["gravity"].default == "none"):
-            # (a map whose iterated correction is off by default, geyer-vs, is measured with it on
-            # through its gravity choices below)
-            for passes in (ONE_PASS, FIXED_POINT):
-                chosen = {k: v for k, v in passes.items() if k in opts}
-                if any(info.resolve({})[k] != v for k, v in chosen.items()):
-                    out.append(Variant(name, tuple(chosen.items()), default=False))
-        for o in info.options:
-            if o.name in ("reading", "iterations", "tol"):
-                continue
-            if o.kind == "choice":
-                alternatives = [c for c in o.choices if c != o.default]
-            elif o.kind == "int" and o.low is not None and o.high is not None and o.high - o.low <= 4:
-                alternatives = [v for v in range(int(o.low), int(o.high) + 1) if v != o.default]
-            else:
-                alternatives = []
-            out.extend(Variant(name, ((o.name, alt),), default=False) for alt in alternatives)
+        for o in options_with(info, "accuracy-variants"):
+            out.extend(Variant(name, ((o.name, alt),), default=False) for alt in other_values(o))
     return out
 
 
@@ -143,13 +177,25 @@ class GridRun:
         return self.exact_columns[key]
 
 
+#: The exact steps of each grid, simulated once per process (the accuracy and the convergence
+#: studies run on the same steps).
+_EXACT_STEPS: dict[Grid, tuple[StepResult | None, ...]] = {}
+
+
+def exact_steps(grid: Grid, show_progress: bool | None = None) -> tuple[StepResult | None, ...]:
+    """The exact step of every point of ``grid`` (None where a symmetric point has no symmetric gait)."""
+    if grid not in _EXACT_STEPS:
+        points = grid.points(show_progress)
+        _EXACT_STEPS[grid] = tuple(
+            simulate_step(grid.params, h, v, a) if math.isfinite(a) else None
+            for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress)
+        )
+    return _EXACT_STEPS[grid]
+
+
 def measure(grid: Grid, chosen: Sequence[Variant], show_progress: bool | None = None) -> GridRun:
     """The exact steps of ``grid`` and every variant of ``chosen`` on it."""
-    points = grid.points(show_progress)
-    exact: list[StepResult | None] = []
-    for h, v, a in progress(points, len(points), f"exact steps ({grid.name})", show_progress):
-        exact.append(simulate_step(grid.params, h, v, a) if math.isfinite(a) else None)
-    return run_maps(grid, points, exact, chosen)
+    return run_maps(grid, grid.points(show_progress), exact_steps(grid, show_progress), chosen)
 
 
 def run_maps(

@@ -1,29 +1,51 @@
-"""``slipmaps accuracy``: docs/accuracy.md (tables and findings), docs/accuracy.json, docs/accuracy.png.
+"""The accuracy study reported: docs/accuracy.json (the record), docs/accuracy.md (tables and
+findings) and docs/accuracy.png, through the pipeline of :mod:`.study` (:class:`AccuracyStudy`);
+:mod:`.accuracy` measures.
 
-Deterministic output: numbers to 3 significant digits in the markdown, 6 in the JSON (which the
-tests re-measure against), no timings. The findings paragraphs are computed from the numbers, so
-they cannot drift from the tables.
+The record has, per grid, the statistics of every variant (:func:`summarize`) and, for the figure,
+the next-apex errors of the maps with the role "accuracy-figure" on the human runner's middle apex
+height (:func:`figure_record`). Deterministic output: numbers to 3 significant digits in the
+markdown, 6 in the JSON (which the tests re-measure against), no timings. The findings paragraphs
+are computed from the numbers, so they cannot drift from the tables.
 """
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
-from ..api.index import get
-from .accuracy import GridRun, apex_errors, exact_failures, measure_all, variant_stats, variants
+from . import study as pipeline
+from .accuracy import (
+    GridRun,
+    apex_errors,
+    baseline,
+    exact_failures,
+    maps_with,
+    measure_all,
+    variant_stats,
+    variants,
+)
 from .quantities import QUANTITIES
 from .report_format import fails, pct, rounded, sig
 
-__all__ = ["summarize", "render_markdown", "to_json", "figure", "write"]
+__all__ = [
+    "SYMMETRIC_RATIO",
+    "YU_TARGET",
+    "AccuracyStudy",
+    "summarize",
+    "figure_record",
+    "from_json",
+    "findings",
+    "render_markdown",
+    "figure",
+]
 
 #: A map "is not worse than Geyer's on symmetric steps" when its mean error is at most this ratio.
 SYMMETRIC_RATIO = 1.10
 #: The targets of the gravity family on the Yu protocol (issue: mean < 2 % at 60 and 65 degrees,
-#: < 5 % at every angle, max < 10 %).
+#: < 5 % at every angle, max < 10 %), for the maps with the role "yu-target".
 YU_TARGET = {"mean_60_65": 0.02, "mean_all": 0.05, "max": 0.10}
 
 
@@ -55,12 +77,33 @@ def summarize(runs: list[GridRun], study: str = "") -> list[dict]:
     return rounded(out)
 
 
-def to_json(summary: list[dict]) -> str:
-    return json.dumps({"version": 1, "grids": summary}, indent=1) + "\n"
+def figure_record(runs: list[GridRun]) -> dict:
+    """What the heatmaps of :func:`figure` draw: on the first nonsymmetric grid (the human runner's)
+    at its middle apex height, the next-apex error of each measured map with the role
+    "accuracy-figure", per touchdown angle (rows) and apex speed (columns); NaN where a side fails."""
+    human = next(r for r in runs if r.grid.kind == "nonsymmetric")
+    heights = sorted(set(human.points[:, 0]))
+    height = heights[len(heights) // 2]
+    sel = np.isclose(human.points[:, 0], height)
+    speeds, angles = np.unique(human.points[sel, 1]), np.unique(human.points[sel, 2])
+    errors = {}
+    for label in (m for m in maps_with("accuracy-figure") if m in human.results):
+        grid = np.full((len(angles), len(speeds)), np.nan)
+        for (v, a), e in zip(human.points[sel, 1:], apex_errors(human, label)[sel], strict=True):
+            grid[np.searchsorted(angles, a), np.searchsorted(speeds, v)] = e
+        errors[label] = grid.tolist()
+    return {
+        "grid": human.grid.name,
+        "apex_height": float(height),
+        "speeds": speeds.tolist(),
+        "angles": angles.tolist(),
+        "apex_error": errors,
+    }
 
 
 def from_json(text: str) -> list[dict]:
-    return json.loads(text)["grids"]
+    """The grids of docs/accuracy.json (:func:`summarize`'s list)."""
+    return pipeline.from_json(text)["grids"]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -147,7 +190,7 @@ def _ratio(a: float, b: float) -> float:
 def findings(summary: list[dict]) -> list[str]:
     """Statements computed from the numbers: per map, against Geyer's on each kind of grid."""
     lines = []
-    geyer = "geyer"
+    geyer = baseline()
     defaults = [v["label"] for v in summary[0]["variants"] if v["default"] and v["map"] != geyer]
     for label in defaults:
         parts = []
@@ -172,7 +215,7 @@ def findings(summary: list[dict]) -> list[str]:
     yu = _grid(summary, "yu")
     if yu is not None:
         best = min(
-            (v for v in yu["variants"] if v["map"].startswith("gravity")),
+            (v for v in yu["variants"] if v["map"] in maps_with("yu-target")),
             key=lambda v: v["apex_error"]["mean"],
             default=None,
         )
@@ -280,29 +323,29 @@ def render_markdown(summary: list[dict], figure_name: str = "accuracy.png") -> s
 # ----------------------------------------------------------------------------------------------
 # Figure
 # ----------------------------------------------------------------------------------------------
-def figure(runs: list[GridRun], path: str | Path) -> Path:
-    """Next-apex error against touchdown angle and speed (heatmaps) and on the Yu protocol."""
+def _nan(x) -> float:
+    return math.nan if x is None else float(x)
+
+
+def figure(record: dict, path: str | Path) -> Path:
+    """Next-apex error against touchdown angle and speed (heatmaps of the record's ``figure``) and,
+    per angle of attack, the mean on the Yu protocol of every map at its defaults."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.colors import LogNorm
 
-    human = next(r for r in runs if r.grid.kind == "nonsymmetric")
-    yu = next((r for r in runs if r.grid.kind == "yu"), None)
-    shown = [label for label in ("geyer", "gravity-type2", "gravity-type5") if label in human.results]
+    heat = record["figure"]
+    yu = _grid(record["grids"], "yu")
+    shown = list(heat["apex_error"])
     fig = plt.figure(figsize=(12, 9), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=(1.0, 1.0))
-    height = sorted(set(human.points[:, 0]))[len(set(human.points[:, 0])) // 2]
-    sel = np.isclose(human.points[:, 0], height)
-    speeds, angles = np.unique(human.points[sel, 1]), np.unique(human.points[sel, 2])
+    speeds, angles = np.array(heat["speeds"]), np.array(heat["angles"])
     norm = LogNorm(vmin=1e-4, vmax=0.3)
     axes = top.subplots(1, len(shown), sharey=True)
     for ax, label in zip(np.atleast_1d(axes), shown, strict=True):
-        err = apex_errors(human, label)[sel]
-        grid = np.full((len(angles), len(speeds)), np.nan)
-        for (v, a), e in zip(human.points[sel, 1:], err, strict=True):
-            grid[np.searchsorted(angles, a), np.searchsorted(speeds, v)] = e
+        grid = np.array(heat["apex_error"][label], dtype=float)
         im = ax.pcolormesh(
             speeds, angles, np.ma.masked_invalid(grid), norm=norm, cmap="viridis", shading="nearest"
         )
@@ -311,21 +354,20 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
     np.atleast_1d(axes)[0].set_ylabel("touchdown angle q_th_td [rad]")
     top.colorbar(im, ax=axes, label="next-apex error (white: a side fails)")
     top.suptitle(
-        f"{human.grid.name}, apex height {height:g} m: next-apex error |(dh, dv)| / |(h, v)|", fontsize=11
+        f"{heat['grid']}, apex height {heat['apex_height']:g} m: next-apex error |(dh, dv)| / |(h, v)|",
+        fontsize=11,
     )
     if yu is not None:
         ax = bottom.subplots()
-        aoa = [90.0 - math.degrees(a) for a in yu.grid.angles]
-        for label, (var, _, _) in yu.results.items():
-            if not var.default:
+        for v in yu["variants"]:
+            if not v["default"]:
                 continue
-            err = apex_errors(yu, label)
-            means = [np.nanmean(err[np.isclose(yu.points[:, 2], a)]) for a in yu.grid.angles]
-            ax.plot(aoa, 100 * np.array(means), "o-", label=label)
+            aoa = [a["angle_of_attack_deg"] for a in v["by_angle"]]
+            ax.plot(aoa, 100 * np.array([_nan(a["mean"]) for a in v["by_angle"]]), "o-", label=v["label"])
         ax.set_yscale("log")
         ax.set_xlabel("angle of attack from the ground [deg]")
         ax.set_ylabel("mean next-apex error [%]")
-        bottom.suptitle(f"{yu.grid.name}: mean over apex heights 0.95-1.05 m and speeds 2-6 m/s", fontsize=11)
+        bottom.suptitle(f"{yu['name']}: mean over apex heights 0.95-1.05 m and speeds 2-6 m/s", fontsize=11)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8, ncol=2)
     fig.savefig(path, dpi=100)
@@ -333,41 +375,21 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
     return Path(path)
 
 
-def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
-    """Measure (all maps, or ``map_names`` with Geyer's for reference) and write the report files:
-    ``out`` (+ .json, .png) and beside it, where iterative maps are measured, the convergence study
-    (convergence.md, .json, .png; runtime/studies/convergence.py) and, where maps that accept k_c != k_d are
-    measured, the variable-stiffness study (stiffness.md, .json, .png; runtime/studies/stiffness.py), and the
-    periodic-gait study (stability.md, .json, .png; runtime/studies/stability.py)."""
-    from . import convergence, stability, stiffness
+class AccuracyStudy(pipeline.Study):
+    """docs/accuracy.*: every map of ``map_names`` (default: all) and its variants against the exact
+    simulator on the grids of :mod:`.grids`."""
 
-    names = None
-    if map_names is not None:
-        names = ["geyer", *[n for n in map_names if n != "geyer"]]
-        for n in names:
-            get(n)
-    study = convergence.variants(names)
-    runs = measure_all(variants(names) + study, show_progress=show_progress)
-    md = Path(out)
-    md.parent.mkdir(parents=True, exist_ok=True)
-    written = []
-    for stem, summary_of, render, draw in (
-        (md, "", render_markdown, figure),
-        (
-            md.with_name("convergence.md" if map_names is None else f"convergence_{md.stem}.md"),
-            convergence.STUDY,
-            convergence.render_markdown,
-            convergence.figure,
-        ),
-    ):
-        if summary_of and not study:
-            continue
-        text = to_json(summarize(runs, summary_of))
-        js = stem.with_suffix(".json")
-        js.write_text(text, encoding="utf-8")
-        stem.write_text(render(from_json(text), stem.with_suffix(".png").name), encoding="utf-8")
-        written += [stem, js, draw(runs, stem.with_suffix(".png"))]
-    stiff = md.with_name("stiffness.md" if map_names is None else f"stiffness_{md.stem}.md")
-    written += stiffness.write(stiff, names, show_progress=show_progress)
-    gaits = md.with_name("stability.md" if map_names is None else f"stability_{md.stem}.md")
-    return written + stability.write(gaits, names, show_progress=show_progress)
+    name = "accuracy"
+
+    def __init__(self, map_names=None):
+        self.map_names = map_names
+
+    def measure(self, show_progress=None) -> dict:
+        runs = measure_all(variants(self.map_names), show_progress=show_progress)
+        return {"grids": summarize(runs), "figure": figure_record(runs)}
+
+    def markdown(self, record: dict, figure_name: str) -> str:
+        return render_markdown(record["grids"], figure_name)
+
+    def figure(self, record: dict, path: Path) -> Path:
+        return figure(record, path)

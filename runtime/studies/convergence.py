@@ -1,10 +1,12 @@
 """The convergence study of the iterative maps: error against the exact stance for n = 0..8 passes.
 
-A map takes part when its options have an integer ``iterations`` and no ``reading`` (the gravity
-family's fixed points are studied in docs/accuracy.md), once per value of its option ``variant``
-(the report's mean-value variants) if it has one. Each pass count runs at the map's other
-defaults with ``tol = 0`` (exactly n passes) on the accuracy grids; ``slipmaps accuracy`` writes
-docs/convergence.md (+ .json, .png) from the same exact steps as docs/accuracy.md.
+A map takes part when one of its options has the role "convergence-passes" in the index (its pass
+count; the gravity family's fixed points are studied in docs/accuracy.md), once per value of its
+option with the role "convergence-series" (the report's mean-value variants) if it has one. Each
+pass count runs at the map's other defaults with its "tolerance" option at 0 (exactly n passes) on
+the accuracy grids; ``slipmaps accuracy`` writes docs/convergence.json, .md and .png
+(:class:`ConvergenceStudy`, through :mod:`.study`) from the same exact steps as docs/accuracy.md;
+the record is :func:`.accuracy_report.summarize` of the study's variants.
 """
 
 from __future__ import annotations
@@ -15,9 +17,22 @@ from pathlib import Path
 import numpy as np
 
 from ..api import index
-from .accuracy import GridRun, Variant, apex_errors
+from . import study as pipeline
+from .accuracy import Variant, measure_all, options_with
+from .accuracy_report import from_json, summarize
 
-__all__ = ["PASSES", "study_maps", "variants", "render_markdown", "figure"]
+__all__ = [
+    "PASSES",
+    "STUDY",
+    "ConvergenceStudy",
+    "study_maps",
+    "pass_option",
+    "series_option",
+    "variants",
+    "from_json",
+    "render_markdown",
+    "figure",
+]
 
 #: Pass counts of the study.
 PASSES = tuple(range(9))
@@ -25,35 +40,46 @@ STUDY = "convergence"
 
 
 def study_maps(map_names=None) -> list[str]:
+    """The maps of ``map_names`` (default: all) with a "convergence-passes" option, in index order."""
     names = [m.name for m in index.maps() if m.name != index.EXACT] if map_names is None else list(map_names)
-    out = []
-    for name in names:
-        opts = {o.name: o for o in index.get(name).options}
-        if "iterations" in opts and opts["iterations"].kind == "int" and "reading" not in opts:
-            out.append(name)
-    return out
+    return [name for name in names if pass_option(name) is not None]
 
 
-#: The option whose every value is a series of its own (the report's mean-value variants).
-SERIES_OPTION = "variant"
+def _role_option(name: str, role: str) -> str | None:
+    found = [o.name for o in options_with(index.get(name), role)]
+    if len(found) > 1:
+        raise ValueError(f"map {name!r}: more than one option with the role {role!r}: {found}")
+    return found[0] if found else None
+
+
+def pass_option(name: str) -> str | None:
+    """The option the study varies, n = 0..8 (role "convergence-passes"), or None."""
+    return _role_option(name, "convergence-passes")
+
+
+def series_option(name: str) -> str | None:
+    """The option whose every value is a series of its own (role "convergence-series"), or None."""
+    return _role_option(name, "convergence-series")
 
 
 def variants(map_names=None) -> list[Variant]:
     out = []
     for name in study_maps(map_names):
-        opts = {o.name: o for o in index.get(name).options}
-        series = opts[SERIES_OPTION].choices if SERIES_OPTION in opts else (None,)
+        info, series_name = index.get(name), series_option(name)
+        series = info.option(series_name).choices if series_name else (None,)
+        tolerance = [(o.name, 0.0) for o in options_with(info, "tolerance")]
         for value in series:
-            fixed = ((SERIES_OPTION, value),) if value is not None else ()
+            fixed = ((series_name, value),) if value is not None else ()
             for n in PASSES:
-                chosen = fixed + (("iterations", n),) + ((("tol", 0.0),) if "tol" in opts else ())
+                chosen = fixed + ((pass_option(name), n),) + tuple(tolerance)
                 out.append(Variant(name, chosen, default=False, study=STUDY))
     return out
 
 
 def _series(name: str, options: dict) -> str:
-    """A study series: the map, and its variant when it has several."""
-    return f"{name} ({SERIES_OPTION} = {options[SERIES_OPTION]})" if SERIES_OPTION in options else name
+    """A study series: the map, and its series option's value when it has one."""
+    key = series_option(name)
+    return f"{name} ({key} = {options[key]})" if key in options else name
 
 
 def _pct(x) -> str:
@@ -61,7 +87,7 @@ def _pct(x) -> str:
 
 
 def _n(v: dict) -> int:
-    return int(v["options"]["iterations"])
+    return int(v["options"][pass_option(v["map"])])
 
 
 def _by_map(grid: dict) -> dict[str, list[dict]]:
@@ -159,10 +185,9 @@ def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -
     ]
     for name, first in series.items():
         info = index.get(first["map"])
+        varied = ("convergence-passes", "tolerance", "convergence-series")
         defaults = ", ".join(
-            f"{o.name} = {o.default}"
-            for o in info.options
-            if o.name not in ("iterations", "tol", SERIES_OPTION)
+            f"{o.name} = {o.default}" for o in info.options if not set(o.roles) & set(varied)
         )
         out += [
             "",
@@ -177,44 +202,32 @@ def render_markdown(summary: list[dict], figure_name: str = "convergence.png") -
     return "\n".join(out) + "\n"
 
 
-def _mean(errors: np.ndarray) -> float:
-    """Mean over the compared steps; NaN (a gap in the line) when every step failed."""
-    finite = errors[np.isfinite(errors)]
-    return float(finite.mean()) if finite.size else math.nan
+def _means(rows: list[dict], angle: int | None = None) -> np.ndarray:
+    """Each row's mean next-apex error (of the Yu protocol's ``angle``-th angle), NaN (a gap in the
+    line) where every step failed."""
+    means = [r["apex_error"]["mean"] if angle is None else r["by_angle"][angle]["mean"] for r in rows]
+    return np.array([math.nan if m is None else m for m in means], dtype=float)
 
 
-def figure(runs: list[GridRun], path: str | Path) -> Path:
-    """Mean next-apex error against n, one panel per map, one line per grid (Yu: per angle)."""
+def figure(summary: list[dict], path: str | Path) -> Path:
+    """Mean next-apex error against n, one panel per series, one line per grid (Yu: per angle)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    names = list(
-        dict.fromkeys(
-            _series(v.map, v.kwargs) for r in runs for v, _, _ in r.results.values() if v.study == STUDY
-        )
-    )
+    names = list(dict.fromkeys(name for g in summary for name in _by_map(g)))
     fig, axes = plt.subplots(1, max(len(names), 1), figsize=(6 * max(len(names), 1), 4.5), squeeze=False)
     for ax, name in zip(axes[0], names, strict=False):
-        for run in runs:
-            labels = [
-                lab
-                for lab, (v, _, _) in run.results.items()
-                if v.study == STUDY and _series(v.map, v.kwargs) == name
-            ]
-            labels.sort(key=lambda lab: dict(run.results[lab][0].options)["iterations"])
-            ns = [dict(run.results[lab][0].options)["iterations"] for lab in labels]
-            if run.grid.kind == "yu":
-                for angle in run.grid.angles:
-                    sel = np.isclose(run.points[:, 2], angle)
-                    means = [_mean(apex_errors(run, lab)[sel]) for lab in labels]
-                    ax.plot(
-                        ns, 100 * np.array(means), "o--", ms=3, label=f"Yu {90 - math.degrees(angle):.0f} deg"
-                    )
+        for g in summary:
+            rows = _by_map(g).get(name, [])
+            ns = [_n(r) for r in rows]
+            if g["kind"] == "yu":
+                for i, a in enumerate(rows[0]["by_angle"] if rows else ()):
+                    label = f"Yu {a['angle_of_attack_deg']:.0f} deg"
+                    ax.plot(ns, 100 * _means(rows, i), "o--", ms=3, label=label)
             else:
-                means = [_mean(apex_errors(run, lab)) for lab in labels]
-                ax.plot(ns, 100 * np.array(means), "o-", ms=3, label=run.grid.name)
+                ax.plot(ns, 100 * _means(rows), "o-", ms=3, label=g["name"])
         ax.set_yscale("log")
         ax.set_xlabel("passes n")
         ax.set_ylabel("mean next-apex error [%]")
@@ -225,3 +238,25 @@ def figure(runs: list[GridRun], path: str | Path) -> Path:
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return Path(path)
+
+
+class ConvergenceStudy(pipeline.Study):
+    """docs/convergence.*: the maps of ``map_names`` (default: all) with a pass count, n = 0..8."""
+
+    name = STUDY
+
+    def __init__(self, map_names=None):
+        self.map_names = map_names
+
+    def applies(self) -> bool:
+        return bool(study_maps(self.map_names))
+
+    def measure(self, show_progress=None) -> dict:
+        runs = measure_all(variants(self.map_names), show_progress=show_progress)
+        return {"grids": summarize(runs, STUDY)}
+
+    def markdown(self, record: dict, figure_name: str) -> str:
+        return render_markdown(record["grids"], figure_name)
+
+    def figure(self, record: dict, path: Path) -> Path:
+        return figure(record["grids"], path)

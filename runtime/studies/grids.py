@@ -27,7 +27,7 @@ from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.progress import progress
 from ..exact.reference import simulate_step
 
-__all__ = ["Grid", "GRIDS", "YU_PARAMS", "YU_ANGLES_DEG", "symmetric_angle"]
+__all__ = ["Grid", "GRIDS", "YU_PARAMS", "YU_ANGLES_DEG", "equispaced", "symmetric_angle"]
 
 #: Yu, Li and Cai (ICRA 2012): k l0 / (m g) = 10.
 YU_PARAMS = SlipParams(m=80.0, l0=1.0, k=10.0 * 80.0 * 9.81 / 1.0)
@@ -35,7 +35,7 @@ YU_PARAMS = SlipParams(m=80.0, l0=1.0, k=10.0 * 80.0 * 9.81 / 1.0)
 YU_ANGLES_DEG = (60.0, 65.0, 68.0, 72.0)
 
 
-def _steps(start: float, step: float, n: int) -> tuple[float, ...]:
+def equispaced(start: float, step: float, n: int) -> tuple[float, ...]:
     """``n`` equispaced values, rounded so that they print exactly (0.30, not 0.30000000000000004)."""
     return tuple(round(start + i * step, 10) for i in range(n))
 
@@ -97,8 +97,8 @@ def symmetric_angle(params: SlipParams, h: float, v: float, lo: float = 0.02, hi
 def _human_and_hopper() -> tuple[Grid, ...]:
     out = []
     for label, p, angles in (
-        ("human runner", HUMAN_RUNNER, _steps(0.30, 0.025, 9)),
-        ("robot hopper", ROBOT_HOPPER, _steps(0.40, 0.025, 9)),
+        ("human runner", HUMAN_RUNNER, equispaced(0.30, 0.025, 9)),
+        ("robot hopper", ROBOT_HOPPER, equispaced(0.40, 0.025, 9)),
     ):
         scale = p.l0 / HUMAN_RUNNER.l0
         froude = math.sqrt(scale)
@@ -108,7 +108,7 @@ def _human_and_hopper() -> tuple[Grid, ...]:
                 "nonsymmetric",
                 p,
                 heights=tuple(round(f * p.l0, 10) for f in (1.0, 1.05, 1.15)),
-                speeds=tuple(round(v * froude, 10) for v in _steps(3.0, 0.5, 9)),
+                speeds=tuple(round(v * froude, 10) for v in equispaced(3.0, 0.5, 9)),
                 angles=angles,
                 description="apex height (1.0, 1.05, 1.15) l0, 9 apex speeds, 9 touchdown angles",
             )
@@ -119,7 +119,7 @@ def _human_and_hopper() -> tuple[Grid, ...]:
                 "symmetric",
                 p,
                 heights=tuple(round(f * p.l0, 10) for f in (1.0, 1.05, 1.1)),
-                speeds=tuple(round(v * froude, 10) for v in _steps(3.0, 1.0, 5)),
+                speeds=tuple(round(v * froude, 10) for v in equispaced(3.0, 1.0, 5)),
                 description="apex height (1.0, 1.05, 1.1) l0, 5 apex speeds, the touchdown angle of the "
                 "symmetric exact stance",
             )
@@ -134,8 +134,8 @@ GRIDS: tuple[Grid, ...] = (
         "Yu, Li and Cai protocol",
         "yu",
         YU_PARAMS,
-        heights=_steps(0.95, 0.025, 5),
-        speeds=_steps(2.0, 0.25, 17),
+        heights=equispaced(0.95, 0.025, 5),
+        speeds=equispaced(2.0, 0.25, 17),
         angles=tuple(round(math.radians(90.0 - a), 12) for a in YU_ANGLES_DEG),
         description="m = 80 kg, l0 = 1 m, k = 7848 N/m (k l0/(m g) = 10); apex height 0.95-1.05 m (5), apex "
         "speed 2-6 m/s (17), angle of attack 60, 65, 68, 72 deg from the ground",

@@ -1,11 +1,13 @@
 """The periodic-gait study (measurements): each map's fixed points and eigenvalues against the exact
-ones, and the self-stable region. ``slipmaps accuracy`` writes docs/stability.md, .json, .png from
-it (:func:`write`; rendering in :mod:`.stability_report`).
+ones, and the self-stable region. ``slipmaps accuracy`` writes docs/stability.json, .md, .png from
+it (:func:`measure` is the record; :class:`.stability_report.StabilityStudy` renders it, through
+:mod:`.study`).
 
 * Fixed points (:data:`GRIDS`, small: the exact simulator finds each line's fixed points in about
   0.2-0.5 s with ``solve_ivp``): on every line of every grid, :func:`.gait.fixed_points` of the
   exact map and of every approximate map at its defaults (all of them accept k_c == k_d).
-* Self-stable region (:data:`REGION_SPEEDS` x :data:`REGION_AOA`, the maps of :data:`REGION_MAPS`):
+* Self-stable region (:data:`REGION_SPEEDS` x :data:`REGION_AOA`, the maps of :func:`region_maps`:
+  the exact one and every map with the role "region" in the index):
   Seyfarth et al.'s setting (J Biomech 35 (2002) 649-655): the human runner, the system energy
   given as the speed v0 at apex height l0 (E = m (g_f l0 + v0^2/2)) and the angle of attack from the
   ground alpha0 = 90 deg - q_th_td; every fixed point of the apex height on that energy level, the
@@ -15,25 +17,23 @@ it (:func:`write`; rendering in :mod:`.stability_report`).
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..analysis.gait import FixedPoint, fixed_points
 from ..api import index
+from ..api.index import EXACT
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.progress import progress
-from .grids import _steps
-from .report_format import rounded
+from . import study as pipeline
+from .grids import equispaced
 
 __all__ = [
-    "EXACT",
     "GRIDS",
     "REGION_SPEEDS",
     "REGION_AOA",
-    "REGION_MAPS",
+    "REGION_ROLE",
     "GaitGrid",
     "energy_at_rest_height",
     "cell_class",
@@ -43,19 +43,16 @@ __all__ = [
     "region_maps",
     "region_record",
     "measure",
-    "to_json",
     "from_json",
-    "write",
 ]
 
-EXACT = "exact"
 #: Speeds v0 [m/s] at apex height l0 that set the energy of the region's rows ...
-REGION_SPEEDS = _steps(2.0, 0.25, 37)
+REGION_SPEEDS = equispaced(2.0, 0.25, 37)
 #: ... and its angles of attack alpha0 = 90 deg - q_th_td [deg].
-REGION_AOA = _steps(44.0, 0.5, 73)
-#: The maps of the region figure (when measured): the exact one, Geyer et al.'s, the best gravity
-#: correction and the converging iterative map.
-REGION_MAPS = (EXACT, "geyer", "gravity-type5", "iterative")
+REGION_AOA = equispaced(44.0, 0.5, 73)
+#: The role (``MapInfo.roles``) of the maps of the region figure, beside the exact one (Geyer et
+#: al.'s, the best gravity correction and the converging iterative map).
+REGION_ROLE = "region"
 
 
 def energy_at_rest_height(params: SlipParams, v0: float) -> float:
@@ -91,14 +88,14 @@ GRIDS: tuple[GaitGrid, ...] = (
         "human runner, apex height 1 m",
         "angle",
         HUMAN_RUNNER,
-        tuple({"apex_height": 1.0, "speed": v} for v in _steps(3.0, 1.0, 5)),
+        tuple({"apex_height": 1.0, "speed": v} for v in equispaced(3.0, 1.0, 5)),
         "apex height 1 m, apex speeds 3-7 m/s; the unknown is the touchdown angle",
     ),
     GaitGrid(
         "robot hopper, apex height l0",
         "angle",
         ROBOT_HOPPER,
-        tuple({"apex_height": ROBOT_HOPPER.l0, "speed": v} for v in _steps(1.5, 0.5, 5)),
+        tuple({"apex_height": ROBOT_HOPPER.l0, "speed": v} for v in equispaced(1.5, 0.5, 5)),
         "apex height l0 = 0.25 m, apex speeds 1.5-3.5 m/s (the human runner's Froude numbers); the "
         "unknown is the touchdown angle",
     ),
@@ -178,9 +175,10 @@ def measure_region(
 
 
 def region_maps(map_names: Sequence[str] | None = None) -> list[str]:
-    """The maps of the region: :data:`REGION_MAPS` (all measured) or the exact one and ``map_names``."""
+    """The maps of the region: the exact one and, all maps measured, every map with the role
+    :data:`REGION_ROLE` (index order), else ``map_names``."""
     if map_names is None:
-        return list(REGION_MAPS)
+        return [EXACT, *(m.name for m in index.maps() if REGION_ROLE in m.roles)]
     return [EXACT, *(n for n in map_names if n != EXACT)]
 
 
@@ -210,23 +208,7 @@ def measure(
     }
 
 
-def to_json(record: dict) -> str:
-    return json.dumps({"version": 1, **rounded(record)}, indent=1) + "\n"
-
-
 def from_json(text: str) -> dict:
-    data = json.loads(text)
+    """The record of docs/stability.json: ``grids`` and ``region``."""
+    data = pipeline.from_json(text)
     return {"grids": data["grids"], "region": data["region"]}
-
-
-def write(out: str | Path = "docs/stability.md", map_names=None, show_progress=None) -> list[Path]:
-    """Measure (all maps, or ``map_names``) and write ``out`` (+ .json, .png)."""
-    from .stability_report import figure, render_markdown
-
-    md = Path(out)
-    text = to_json(measure(map_names, show_progress=show_progress))
-    js, png = md.with_suffix(".json"), md.with_suffix(".png")
-    js.write_text(text, encoding="utf-8")
-    record = from_json(text)
-    md.write_text(render_markdown(record, png.name), encoding="utf-8")
-    return [md, js, figure(record, png)]

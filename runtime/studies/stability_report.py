@@ -1,6 +1,7 @@
 """The periodic-gait study rendered: docs/stability.md (fixed points against the exact ones, the
 self-stable region, the comparison with Seyfarth et al.) and docs/stability.png, both from the
-record docs/stability.json (:mod:`.stability` measures it).
+record docs/stability.json (:mod:`.stability` measures it; :class:`StabilityStudy` writes the three
+through :mod:`.study`).
 
 Deterministic: numbers to 3 significant digits, every statement computed from the record.
 """
@@ -12,10 +13,21 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.index import EXACT
+from . import study as pipeline
 from .report_format import sig
-from .stability import EXACT
+from .stability import measure
 
-__all__ = ["matches", "grid_rows", "region_facts", "render_markdown", "figure"]
+__all__ = [
+    "REGION_TITLE",
+    "REGION_MARKS",
+    "StabilityStudy",
+    "matches",
+    "grid_rows",
+    "region_facts",
+    "render_markdown",
+    "figure",
+]
 
 #: The speeds v0 [m/s] of the region table (every other metre per second of the grid).
 TABLE_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
@@ -464,3 +476,22 @@ def figure(record: dict, path: str | Path) -> Path:
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return Path(path)
+
+
+class StabilityStudy(pipeline.Study):
+    """docs/stability.*: the fixed points of every map of ``map_names`` (default: all) against the
+    exact ones, and the self-stable region of :func:`.stability.region_maps`."""
+
+    name = "stability"
+
+    def __init__(self, map_names=None):
+        self.map_names = map_names
+
+    def measure(self, show_progress=None) -> dict:
+        return measure(self.map_names, show_progress=show_progress)
+
+    def markdown(self, record: dict, figure_name: str) -> str:
+        return render_markdown(record, figure_name)
+
+    def figure(self, record: dict, path: Path) -> Path:
+        return figure(record, path)

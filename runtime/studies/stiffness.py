@@ -1,15 +1,16 @@
 """The variable-stiffness study (measurements): every map that accepts k_c != k_d against the exact
 simulator over k_d/k_c, and the bottom leg length estimates (153) and (154).
 
-``slipmaps accuracy`` writes docs/stiffness.md, .json, .png from it (:func:`write`; rendering in
-:mod:`.stiffness_report`). For every grid of :func:`grids` (the human runner's and the robot
-hopper's of docs/accuracy.md, the nonsymmetric ones subsampled) and every k_d/k_c of
-:data:`RATIOS` (k_c the parameter set's k):
+``slipmaps accuracy`` writes docs/stiffness.json, .md, .png from it (:func:`summarize` is the
+record; :class:`.stiffness_report.StiffnessStudy` renders it, through :mod:`.study`). For every
+grid of :func:`grids` (the human runner's and the robot hopper's of docs/accuracy.md, the
+nonsymmetric ones subsampled) and every k_d/k_c of :data:`RATIOS` (k_c the parameter set's k):
 
 * exact: :func:`~slipmaps.runtime.exact.reference.simulate_step` with (k_c, k_d);
 * each variant of :func:`variants` (every map whose parameters include k_d but the exact one, at
-  its defaults, and once per other value of its option ``continuity``): its stance from the same
-  exact touchdown and its apex-return map from the same apex (:func:`.accuracy.run_maps`).
+  its defaults, and once per other value of each of its options with the role
+  "stiffness-variants" in the index): its stance from the same exact touchdown and its apex-return
+  map from the same apex (:func:`.accuracy.run_maps`).
 
 Errors (:data:`ERRORS`) are absolute differences to the exact step, scaled: the next apex height by
 l0, its speed by the exact one; the liftoff velocity |d(b_xd, b_yd)| by the exact |(b_xd, b_yd)|, the
@@ -29,12 +30,10 @@ during the compression); and (154), Geyer et al.'s bottom l0 (1 + a_ab - b_ab) (
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 import numpy as np
 from slipmaps.generated import slip_model
@@ -47,7 +46,17 @@ from ..api.params import SlipParams
 from ..api.progress import progress
 from ..api.results import GROUPS
 from ..exact.reference import simulate_step
-from .accuracy import GridRun, Variant, compared, exact_failures, map_failures, run_maps
+from . import study as pipeline
+from .accuracy import (
+    GridRun,
+    Variant,
+    compared,
+    exact_failures,
+    map_failures,
+    options_with,
+    other_values,
+    run_maps,
+)
 from .grids import GRIDS, Grid
 from .report_format import rounded
 
@@ -60,15 +69,11 @@ __all__ = [
     "measure",
     "errors",
     "summarize",
-    "to_json",
     "from_json",
-    "write",
 ]
 
 #: The stiffness ratios k_d/k_c of the study (k_c = the parameter set's k).
 RATIOS = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.5)
-#: The options whose every value is a variant of its own (``geyer-vs``: how q_r joins at the bottom).
-SERIES_OPTIONS = ("continuity", "gravity")
 #: The nonsymmetric grids keep every SUBSAMPLE-th apex speed and touchdown angle (all heights; with 9
 #: of each, both ends stay): the study then adds seconds, not minutes, to ``slipmaps accuracy``.
 SUBSAMPLE = 2
@@ -116,7 +121,8 @@ ERRORS: tuple[Error, ...] = (
 
 def variants(map_names: Sequence[str] | None = None) -> list[Variant]:
     """Every map of ``map_names`` (default: all) whose parameters include k_d, except the exact one,
-    at its defaults and at every other value of each of its options in :data:`SERIES_OPTIONS`."""
+    at its defaults and at every other value of each of its options with the role
+    "stiffness-variants" (``geyer-vs``: how q_r joins at the bottom, its gravity correction)."""
     names = [m.name for m in index.maps()] if map_names is None else list(map_names)
     out: list[Variant] = []
     for name in names:
@@ -124,9 +130,8 @@ def variants(map_names: Sequence[str] | None = None) -> list[Variant]:
         if name == index.EXACT or "k_d" not in info.params:
             continue
         out.append(Variant(name))
-        for o in info.options:
-            if o.name in SERIES_OPTIONS:
-                out += [Variant(name, ((o.name, c),), default=False) for c in o.choices if c != o.default]
+        for o in options_with(info, "stiffness-variants"):
+            out += [Variant(name, ((o.name, c),), default=False) for c in other_values(o)]
     return out
 
 
@@ -346,26 +351,6 @@ def summarize(studies: Sequence[GridStudy]) -> list[dict]:
     return rounded(out)
 
 
-def to_json(summary: list[dict]) -> str:
-    return json.dumps({"version": 1, "grids": summary}, indent=1) + "\n"
-
-
 def from_json(text: str) -> list[dict]:
-    return json.loads(text)["grids"]
-
-
-def write(out: str | Path, map_names=None, show_progress=None) -> list[Path]:
-    """Measure the variants of ``map_names`` (default: all) and write ``out`` (+ .json, .png); nothing
-    when no map of ``map_names`` accepts k_c != k_d."""
-    from .stiffness_report import figure, render_markdown
-
-    chosen = variants(map_names)
-    if not chosen:
-        return []
-    md = Path(out)
-    text = to_json(summarize(measure(chosen, show_progress=show_progress)))
-    js, png = md.with_suffix(".json"), md.with_suffix(".png")
-    js.write_text(text, encoding="utf-8")
-    record = from_json(text)
-    md.write_text(render_markdown(record, png.name), encoding="utf-8")
-    return [md, js, figure(record, png)]
+    """The grids of docs/stiffness.json (:func:`summarize`'s list)."""
+    return pipeline.from_json(text)["grids"]

@@ -1,5 +1,6 @@
 """The variable-stiffness study rendered: docs/stiffness.md (tables, the target, findings) and
-docs/stiffness.png, both from the record docs/stiffness.json (:mod:`.stiffness` measures it).
+docs/stiffness.png, both from the record docs/stiffness.json (:mod:`.stiffness` measures it;
+:class:`StiffnessStudy` writes the three through :mod:`.study`).
 
 Deterministic: numbers to 3 significant digits, every statement computed from the record.
 """
@@ -9,10 +10,19 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from . import study as pipeline
 from .report_format import fails, pct, sig
-from .stiffness import BOTTOM_MAP, ERRORS, SUBSAMPLED
+from .stiffness import BOTTOM_MAP, ERRORS, SUBSAMPLED, measure, summarize, variants
 
-__all__ = ["TARGET", "TARGET_RANGE", "TARGET_GRIDS", "target_rows", "render_markdown", "figure"]
+__all__ = [
+    "TARGET",
+    "TARGET_RANGE",
+    "TARGET_GRIDS",
+    "StiffnessStudy",
+    "target_rows",
+    "render_markdown",
+    "figure",
+]
 
 #: The issue's target: the next apex height within 1 % of l0 and its speed within 2 % ...
 TARGET = {"apex_height": 0.01, "apex_speed": 0.02}
@@ -346,3 +356,24 @@ def figure(record: list[dict], path: str | Path) -> Path:
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return Path(path)
+
+
+class StiffnessStudy(pipeline.Study):
+    """docs/stiffness.*: the maps of ``map_names`` (default: all) that accept k_c != k_d, over k_d/k_c."""
+
+    name = "stiffness"
+
+    def __init__(self, map_names=None):
+        self.map_names = map_names
+
+    def applies(self) -> bool:
+        return bool(variants(self.map_names))
+
+    def measure(self, show_progress=None) -> dict:
+        return {"grids": summarize(measure(variants(self.map_names), show_progress=show_progress))}
+
+    def markdown(self, record: dict, figure_name: str) -> str:
+        return render_markdown(record["grids"], figure_name)
+
+    def figure(self, record: dict, path: Path) -> Path:
+        return figure(record["grids"], path)

@@ -38,17 +38,20 @@ printed they evaluate it at xi).
 
 Zeroth iterate of a half: linear in u = sqrt((sigma - q_r_b)/(x_far - q_r_b)) between the bottom
 (u = 0) and the far end (u = 1: touchdown, or the zeroth iterate's liftoff state), as in
-:mod:`.schwind`: Geyer et al.'s map (section 3.1, with k_c) or the held touchdown state.
+:mod:`.iterative`: a map's (:func:`.iterative_helpers.zeroth_option`; Geyer et al.'s by default, with
+k_c) or the held touchdown state.
 
 Not done: the compression half anchored at the bottom (the corrected (124)-(126) of
-:func:`.iterative.compression_step`, points 3/4 q_r_b + 1/4 x). There the bottom values themselves
+:func:`.iterative_helpers.compression_step`, points 3/4 q_r_b + 1/4 x). There the bottom values themselves
 change with every iterate (q_th_b = q_th_td - int_{q_r_b}^{q_r_td}), so the n-th iterate needs the
 (n-1)-th at the points x_1 ... x_{n} of every level: n(n+1)/2 evaluations on a state that grows
-with n, not a chain with a fixed loop state. The converging map :mod:`.schwind` anchors that half
+with n, not a chain with a fixed loop state. The converging map :mod:`.iterative` anchors that half
 at the bottom.
 """
 
 from __future__ import annotations
+
+from functools import cache
 
 import sympy as sp
 
@@ -57,11 +60,10 @@ from ..ir import Call, Guard, Iterate, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
-from . import variable
-from .iterative import radial_momentum
-from .schwind import ZEROTH, _held_liftoff, _zeroth_bottom, _zeroth_liftoff
+from . import geyer_vs
+from .iterative_helpers import held_liftoff, radial_momentum, zeroth_bottom, zeroth_liftoff, zeroth_option
 
-__all__ = ["HALVES", "VARIANT", "ITERATIONS", "radicand", "chain_steps", "MAPS"]
+__all__ = ["VARIANT", "ITERATIONS", "radicand", "chain_steps", "declare_maps", "declare_halves"]
 
 VARIANT = Option(
     "variant",
@@ -75,6 +77,7 @@ VARIANT = Option(
             "(148)-(150), with (134)/(149) keeping p_th",
         ),
     ),
+    roles=("accuracy-variants", "convergence-series"),
 )
 BOTTOM_LENGTH = Option(
     "bottom_length",
@@ -84,6 +87,7 @@ BOTTOM_LENGTH = Option(
         ("zeroth", "the zeroth iterate's bottom (with Geyer's map: (154), l0 (1 + a_ab - b_ab))"),
         ("eq153", "the quartic (153) of a vertical bottom with the touchdown's energy and momentum"),
     ),
+    roles=("accuracy-variants",),
 )
 ITERATIONS = Option(
     "iterations",
@@ -92,6 +96,7 @@ ITERATIONS = Option(
     low=0,
     high=100,
     integer=True,
+    roles=("accuracy-passes", "convergence-passes"),
 )
 
 
@@ -188,7 +193,7 @@ def chain_steps(
 
 def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) -> tuple[Step, ...]:
     """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``,
-    after the zeroth iterate's bottom (:func:`.schwind._zeroth_bottom`; its Geyer call takes
+    after the zeroth iterate's bottom (:func:`.iterative_helpers.zeroth_bottom`; its Geyer call takes
     ``geyer_q_r_lo``)."""
     q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
     q_r_b, e_ab = sym("bottom_q_r"), sym("E_ab")
@@ -200,10 +205,10 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
         u = sp.sqrt(1 - e / (q_r_b - q_r_td))  # sqrt((x - q_r_b)/(q_r_td - q_r_b)), x = q_r_td + e
         return sym("z_b_q_th") + (q_th_td - sym("z_b_q_th")) * u, z_p_b + (p_td - z_p_b) * u
 
-    quartic = variable.quartic_kernel()
+    quartic = geyer_vs.quartic_kernel()
     return (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
-        _zeroth_bottom(touchdown, p, geyer_q_r_lo),
+        zeroth_bottom(touchdown, p, geyer_q_r_lo),
         Stage(
             ((e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True)),),
             comment="E_ab (114) of the touchdown state",
@@ -311,7 +316,7 @@ def _build(inp: MapInputs) -> MapBuild:
             ((e_ba, sym("E_ab") + (k_d - k_c) / 2 * (l0 - bottom[0]) ** 2),),
             comment="E_ba of (98): the energy jump of the stiffness switch",
         ),
-        _zeroth_liftoff(p["q_r_lo"]),
+        zeroth_liftoff(p["q_r_lo"]),
         *_decompression_steps(
             bottom,
             sym("t_bottom"),
@@ -346,7 +351,7 @@ def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:
         bottom,
         sp.S.Zero,
         e_ba,
-        _held_liftoff(bottom, p["q_r_lo"]),
+        held_liftoff(bottom, p["q_r_lo"]),
         p["q_r_lo"],
         inp.opt("iterations"),
         inp.opt("variant"),
@@ -368,51 +373,60 @@ _EQUATIONS = (
     + ("154",)
 )  # not (127), (136), (142), (151): p_r at xi; the liftoff p_r is (45) corrected
 
-MAPS = (
-    MapSpec(
-        name="iterative-report",
-        title="Iterative stance map (Schwind and Koditschek, as printed)",
-        section="3.2",
-        equations=_EQUATIONS,
-        params=("m", "l0", "k_c", "k_d", "g_s"),
-        build=_build,
-        options=(VARIANT, ITERATIONS, ZEROTH, BOTTOM_LENGTH),
-        as_printed=True,
-        approximation_statuses=("IMAGINARY_MOMENTUM", "LIFTOFF_BACKWARD", "LIFTOFF_DOWNWARD"),
-        summary="the report's iteration: n-th iterate at the end of each half from the zeroth at the n-fold "
-        "mean-value point, stepping outward; compression anchored at touchdown (123), decompression at "
-        "the bottom (41); bottom leg length of the zeroth iterate",
-        notes="(42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th; "
-        "liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever H^{-1} "
-        "of an iterate is imaginary.",
-    ),
-)
 
-HALVES = (
-    HalfSpec(
-        name="iterative-report-compression",
-        title="Iterative compression half as printed (touchdown to bottom, k_c)",
-        section="5.2.1",
-        equations=tuple(str(i) for i in (*range(114, 127), *range(128, 136))) + ("154",),
-        whole="iterative-report",
-        start="touchdown",
-        params=("m", "l0", "k_c", "g_s"),
-        build=_compression_half,
-        options=(VARIANT, ITERATIONS, ZEROTH, BOTTOM_LENGTH),
-        summary="the compression half of `iterative-report`: the chain anchored at touchdown, the printed "
-        "point (123), bottom leg length of the zeroth iterate",
-    ),
-    HalfSpec(
-        name="iterative-report-decompression",
-        title="Iterative decompression half as printed (bottom to liftoff, k_d)",
-        section="5.2.2",
-        equations=("137", "138", "139", "140", "141", "143", "144", "145", "146", "147", "148", "149", "150"),
-        whole="iterative-report",
-        start="bottom",
-        params=("m", "l0", "k_d", "g_s", "q_r_lo"),
-        build=_decompression_half,
-        options=(VARIANT, ITERATIONS),
-        summary="the decompression half of `iterative-report` from any bottom state: E_ba the bottom state's "
-        "energy with k_d, zeroth iterate the bottom's angle and angular momentum held",
-    ),
-)
+@cache
+def declare_maps() -> tuple[MapSpec, ...]:
+    """This module's ``MAPS``: declared once every map that can be a zeroth iterate is known (the
+    choices of option ``zeroth``, :func:`~.iterative_helpers.zeroth_option`)."""
+    return (
+        MapSpec(
+            name="iterative-report",
+            title="Iterative stance map (Schwind and Koditschek, as printed)",
+            section="3.2",
+            equations=_EQUATIONS,
+            params=("m", "l0", "k_c", "k_d", "g_s"),
+            build=_build,
+            options=(VARIANT, ITERATIONS, zeroth_option(), BOTTOM_LENGTH),
+            as_printed=True,
+            approximation_statuses=("IMAGINARY_MOMENTUM", "LIFTOFF_BACKWARD", "LIFTOFF_DOWNWARD"),
+            summary="the report's iteration: n-th iterate at the end of each half from the zeroth at the "
+            "n-fold mean-value point, stepping outward; compression anchored at touchdown (123), "
+            "decompression at the bottom (41); bottom leg length of the zeroth iterate",
+            notes="(42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping "
+            "p_th; liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM "
+            "wherever H^{-1} of an iterate is imaginary.",
+        ),
+    )
+
+
+@cache
+def declare_halves() -> tuple[HalfSpec, ...]:
+    """This module's ``HALVES`` (the compression half takes option ``zeroth`` too)."""
+    return (
+        HalfSpec(
+            name="iterative-report-compression",
+            title="Iterative compression half as printed (touchdown to bottom, k_c)",
+            section="5.2.1",
+            equations=tuple(str(i) for i in (*range(114, 127), *range(128, 136))) + ("154",),
+            whole="iterative-report",
+            start="touchdown",
+            params=("m", "l0", "k_c", "g_s"),
+            build=_compression_half,
+            options=(VARIANT, ITERATIONS, zeroth_option(), BOTTOM_LENGTH),
+            summary="the compression half of `iterative-report`: the chain anchored at touchdown, the "
+            "printed point (123), bottom leg length of the zeroth iterate",
+        ),
+        HalfSpec(
+            name="iterative-report-decompression",
+            title="Iterative decompression half as printed (bottom to liftoff, k_d)",
+            section="5.2.2",
+            equations=tuple(str(i) for i in (*range(137, 142), *range(143, 151))),
+            whole="iterative-report",
+            start="bottom",
+            params=("m", "l0", "k_d", "g_s", "q_r_lo"),
+            build=_decompression_half,
+            options=(VARIANT, ITERATIONS),
+            summary="the decompression half of `iterative-report` from any bottom state: E_ba the bottom "
+            "state's energy with k_d, zeroth iterate the bottom's angle and angular momentum held",
+        ),
+    )

@@ -4,7 +4,8 @@ Near the bottom p_r vanishes like (sigma - q_r_b)^(1/2), so the integrands of (3
 (sigma - q_r_b)^(-1/2). With sigma = q_r_b + D u^2 (D = x - q_r_b) the integrals become
 int_0^1 f(sigma(u)) 2 D u du with a regular integrand, and the one-node Gauss-Legendre rule on
 u in [0, 1] (node 1/2, weight 1) is exactly the mean-value rule of (37) with xi = 3/4 q_r_b + 1/4 x
-of (41). N nodes are its refinement (docs/mean_value_point.md).
+of (41). N nodes are its refinement (docs/mean_value_point.md). A helper of the map ``iterative``
+(:mod:`.iterative`); this module declares no map.
 
 :func:`rule` gives, for N nodes u_j in (0, 1), the weights and the integration matrices of the
 Lagrange interpolant through the nodes (collocation): ``S[j][k] = int_0^{u_j} L_k(v) dv`` and

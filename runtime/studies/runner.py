@@ -1,0 +1,64 @@
+"""``slipmaps accuracy``: every study of runtime/studies/, through the one writer of :mod:`.study`.
+
+The studies, in the order they are written: accuracy (every map and its variants against the exact
+simulator), convergence (the maps with a pass count, n = 0..8), stiffness (the maps that accept
+k_c != k_d, over k_d/k_c) and stability (periodic gaits and the self-stable region). A study with
+nothing to measure among the chosen maps writes nothing (:meth:`.study.Study.applies`).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..api import index
+from .accuracy import baseline
+from .accuracy_report import AccuracyStudy
+from .convergence import ConvergenceStudy
+from .stability_report import StabilityStudy
+from .stiffness_report import StiffnessStudy
+from .study import Study, write
+
+__all__ = ["STUDIES", "chosen_maps", "studies", "report_path", "run"]
+
+#: The studies of ``slipmaps accuracy``, in the order they are written; the first one's report is
+#: the path the command is given.
+STUDIES: tuple[type[Study], ...] = (AccuracyStudy, ConvergenceStudy, StiffnessStudy, StabilityStudy)
+
+
+def chosen_maps(map_names=None) -> list[str] | None:
+    """The maps the studies measure: all (None), or ``map_names`` after the baseline map (role
+    "baseline", the accuracy study's reference); ValueError for an unknown name."""
+    if map_names is None:
+        return None
+    names = [baseline(), *[n for n in map_names if n != baseline()]]
+    for n in names:
+        index.get(n)
+    return names
+
+
+def studies(map_names=None) -> list[Study]:
+    """The studies of ``slipmaps accuracy`` that apply to ``map_names`` (default: all maps; given, the
+    baseline map is measured with them)."""
+    names = chosen_maps(map_names)
+    return [s for s in (cls(names) for cls in STUDIES) if s.applies()]
+
+
+def report_path(out: str | Path, study: Study, all_maps: bool = True) -> Path:
+    """Where ``study``'s report goes when the accuracy report is ``out``: ``out`` itself for the first
+    study, else beside it ``<name>.md`` (all maps) or ``<name>_<out's stem>.md`` (chosen maps)."""
+    md = Path(out)
+    if study.name == STUDIES[0].name:
+        return md
+    return md.with_name(f"{study.name}.md" if all_maps else f"{study.name}_{md.stem}.md")
+
+
+def run(out: str | Path, map_names=None, show_progress: bool | None = None) -> list[Path]:
+    """Measure and write every study (:func:`studies`) of all maps, or of ``map_names`` with the
+    baseline map for reference: the accuracy report ``out`` (+ .json, .png) and beside it the others
+    (:func:`report_path`). Returns the written paths: per study its report, record and figure."""
+    chosen = studies(map_names)
+    Path(out).parent.mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+    for study in chosen:
+        written += write(study, report_path(out, study, map_names is None), show_progress)
+    return written
