@@ -50,6 +50,7 @@ GRID_NAMES = ("Yu, Li and Cai protocol", "human runner, nonsymmetric")
 EXACT_RTOLS = (1e-3, 1e-4, 1e-6, 1e-8, 1e-11)
 REFERENCE = ("exact", {"rtol": 1e-11})
 
+
 def _rtol(r: float) -> str:
     return f"1e{round(math.log10(r))}"
 
