@@ -167,6 +167,33 @@ def _rhs_independent(rows, p):
     return acc
 
 
+@njit
+def _step_chain(y0, p, h, reps):
+    """``reps`` Runge-Kutta steps of the stance field with their error norm (what an accepted step
+    of :func:`.dop853.solve` costs before its event checks), each from the one before's end."""
+    n = y0.shape[0]
+    K = np.empty((dop853.N_STAGES_EXTENDED, n))
+    y = y0.copy()
+    y_new = np.empty(n)
+    f = np.empty(n)
+    ys = np.empty(n)
+    dy = np.empty(n)
+    ec.polar_field(0.0, y, p, f)
+    acc = 0.0
+    t = 0.0
+    for _ in range(reps):
+        dop853._rk_step(ec.POLAR_FIELD(), p, t, y, f, h, K, y_new, ys, dy)
+        acc += dop853._error_norm(K, h, y, y_new, 1e-11, 1e-12, n)
+        for i in range(n):
+            y[i] = y_new[i]
+            f[i] = K[dop853.N_STAGES, i]
+        t += h
+        if y[0] < 0.5 * y0[0] or y[0] > y0[0]:  # keep the state in the stance's range
+            y[:] = y0
+            ec.polar_field(0.0, y, p, f)
+    return acc
+
+
 def floor(td: np.ndarray, repeat: int) -> dict:
     """The stance against its floor: (right-hand side evaluations per stance) x (cost of one
     evaluation), both measured here, against the stance's own time (the external kernel in an njit
@@ -184,7 +211,15 @@ def floor(td: np.ndarray, repeat: int) -> dict:
     t_indep = best_of(lambda: _rhs_independent(rows, p), repeat) / len(rows)
     _kernel_loop(0, rows[:10], *args)
     t_stance = best_of(lambda: _kernel_loop(0, rows, *args), repeat) / len(rows)
+    # where the rest goes: the steps (12 evaluations each; 2 per subphase start and 3 per event's
+    # interpolant are the others) at the cost of one step with its error norm, measured the same way
+    steps = (evaluations - 2 * (2 + 3)) / dop853.N_STAGES
+    _step_chain(rows[0], p, 1e-4, 10)
+    t_step = best_of(lambda: _step_chain(rows[0], p, 1e-4, reps // 20), repeat) / (reps // 20)
     return {
+        "steps": steps,
+        "step_ns": 1e9 * t_step,
+        "steps_us": 1e6 * steps * t_step,
         "evaluations": evaluations,
         "rhs_chain_ns": 1e9 * t_chain,
         "rhs_independent_ns": 1e9 * t_indep,
@@ -361,6 +396,10 @@ def report(r: dict) -> str:
         f"{f['stance_us']:.2f} us: {f['ratio']:.2f}x its floor (target <= {f['target']:g}x: {met}); "
         f"against independent evaluations ({f['rhs_independent_ns']:.1f} ns each) "
         f"{f['ratio_independent']:.2f}x",
+        f"    where it goes: {f['steps']:.1f} steps tried per stance x {f['step_ns']:.0f} ns per step with "
+        f"its error norm ({f['step_ns'] / (dop853.N_STAGES * f['rhs_chain_ns']):.2f}x its 12 evaluations) = "
+        f"{f['steps_us']:.2f} us; the rest (subphase starts, event checks at each step end, event "
+        f"location on the interpolant, flights of the kernel's call) {f['stance_us'] - f['steps_us']:.2f} us",
     ]
     if "first_class" in r:
         f = r["first_class"]
