@@ -49,20 +49,11 @@ from slipmaps.runtime.exact import kernels as ek
 from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance, stance_time_limit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_maps import best_of, machine, states  # noqa: E402
+from bench_maps import best_of, machine, states, with_threads  # noqa: E402
 
 P = slipmaps.HUMAN_RUNNER
 TARGET_SPEEDUP = 100.0
 N_SCIPY = 50
-
-
-def _with_threads(n: int, fn):
-    before = numba.get_num_threads()
-    numba.set_num_threads(n)
-    try:
-        return fn()
-    finally:
-        numba.set_num_threads(before)
 
 
 def _stance_rows(rows: np.ndarray):
@@ -75,7 +66,7 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
     few = td[:N_SCIPY]
     t_scipy = best_of(lambda: [simulate_stance(P, row) for row in few], 3) / len(few)
     _stance_rows(td[:10])  # warm-up (cache load or compilation)
-    t_one = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
+    t_one = with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     slipmaps.stance("exact", P, few[0])
     t_api = best_of(lambda: [slipmaps.stance("exact", P, row) for row in few], repeat) / len(few)
     ref = [simulate_stance(P, row) for row in few]
@@ -101,10 +92,10 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
 def jacobian(td: np.ndarray, repeat: int) -> dict:
     """The stance with its Jacobian (variational equations), batch kernel on one thread."""
     slipmaps.stance_jacobian_batch("exact", P, td[:10])
-    t_jac = _with_threads(
+    t_jac = with_threads(
         1, lambda: best_of(lambda: slipmaps.stance_jacobian_batch("exact", P, td), repeat)
     ) / len(td)
-    t_st = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
+    t_st = with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     return {"jacobian_us": 1e6 * t_jac, "ratio_to_stance": t_jac / t_st}
 
 
@@ -236,7 +227,7 @@ def throughput(h, v, th, td, repeat: int) -> dict:
     slipmaps.apex_return_batch("exact", P, h[:10], v[:10], th[:10])
     t_st = best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat)
     t_ap = best_of(lambda: slipmaps.apex_return_batch("exact", P, h, v, th), repeat)
-    t_st1 = _with_threads(1, lambda: best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat))
+    t_st1 = with_threads(1, lambda: best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat))
     return {
         "threads": threads,
         "stance_per_s": len(td) / t_st,

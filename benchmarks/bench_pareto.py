@@ -48,7 +48,7 @@ from slipmaps.runtime.api.front import FRONT_FILE, dominated_by, errors_on
 from slipmaps.runtime.studies.grids import GRIDS
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_maps import machine  # noqa: E402
+from bench_maps import best_of, machine, with_threads  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 #: The two grids, by name in runtime/studies/grids.py.
@@ -85,24 +85,6 @@ def _grids():
     return [by_name[n] for n in GRID_NAMES]
 
 
-def _with_threads(n: int, fn):
-    before = numba.get_num_threads()
-    numba.set_num_threads(n)
-    try:
-        return fn()
-    finally:
-        numba.set_num_threads(before)
-
-
-def _best(fn, repeat: int) -> float:
-    best = math.inf
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
-
-
 def _timed(name: str, options: dict, params, pt: list[np.ndarray], repeat: int, seconds: float):
     """(batch size, best time on one thread, best time on all threads): the points tiled to a batch
     of about ``seconds`` on one thread, the two thread counts alternated ``repeat`` times."""
@@ -110,13 +92,13 @@ def _timed(name: str, options: dict, params, pt: list[np.ndarray], repeat: int, 
     def one(arrays):
         return slipmaps.apex_return_batch(name, params, *arrays, **options)
 
-    pilot = _with_threads(1, lambda: _best(lambda: one(pt), 1))
+    pilot = with_threads(1, lambda: best_of(lambda: one(pt), 1))
     reps = int(np.clip(seconds / max(pilot, 1e-9), 1, 2000))
     batch = [np.ascontiguousarray(np.tile(a, reps)) for a in pt]
     t1 = tn = math.inf
     for _ in range(repeat):  # alternated, so that both see the machine's load alike
-        t1 = min(t1, _with_threads(1, lambda: _best(lambda: one(batch), 1)))
-        tn = min(tn, _best(lambda: one(batch), 1))
+        t1 = min(t1, with_threads(1, lambda: best_of(lambda: one(batch), 1)))
+        tn = min(tn, best_of(lambda: one(batch), 1))
     return batch[0].shape[0], t1, tn
 
 
