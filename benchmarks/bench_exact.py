@@ -390,7 +390,8 @@ def report(r: dict) -> str:
         f"    where it goes: {f['steps']:.1f} steps tried per stance x {f['step_ns']:.0f} ns per step with "
         f"its error norm ({f['step_ns'] / (dop853.N_STAGES * f['rhs_chain_ns']):.2f}x its 12 evaluations) = "
         f"{f['steps_us']:.2f} us; the rest (subphase starts, event checks at each step end, event "
-        f"location on the interpolant, flights of the kernel's call) {f['stance_us'] - f['steps_us']:.2f} us",
+        f"location on the interpolant, the kernel call and its arrays) "
+        f"{f['stance_us'] - f['steps_us']:.2f} us",
     ]
     if "first_class" in r:
         f = r["first_class"]
