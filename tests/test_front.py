@@ -58,7 +58,14 @@ def recomputed():
             errors_on(slipmaps.apex_return_batch(r["map"], g.params, *pt, **r["options"]), ref)
             for g, pt, ref in zip(grids, points, refs, strict=True)
         ]
-        out.append({"label": r["label"], "ns_1_thread": r["ns_1_thread"], "by_grid": by_grid})
+        out.append(
+            {
+                "label": r["label"],
+                "ns_1_thread": r["ns_1_thread"],
+                "requires": index.lookup(r["map"]).requires,
+                "by_grid": by_grid,
+            }
+        )
     return out
 
 
@@ -73,6 +80,15 @@ def test_the_recorded_errors_are_todays(recomputed):
 
 def test_the_dominance_follows_from_the_costs_and_todays_errors(recomputed):
     assert dominated_by(recomputed) == [r["dominated_by"] for r in measurement()["rows"]]
+
+
+def test_a_map_is_dominated_only_by_one_that_runs_wherever_it_does():
+    rows = measurement()["rows"]
+    by_label = {r["label"]: r for r in rows}
+    for r in rows:
+        assert r["requires"] == list(index.lookup(r["map"]).requires)
+        if r["dominated_by"] is not None:
+            assert set(by_label[r["dominated_by"]]["requires"]) <= set(r["requires"])
 
 
 def test_maps_marks_every_dominated_map_with_what_dominates_it(capsys):
