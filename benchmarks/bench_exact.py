@@ -18,7 +18,12 @@ heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps
 (e) the external kernels of ``runtime/exact/kernels.py`` (the map ``"exact"``'s generated code
     calls them), per state in an njit loop on one thread: ``stance``, ``compression`` then
     ``decompression`` (the same stance in two calls), ``state_at`` at mid-stance, each relative
-    to ``stance``.
+    to ``stance``;
+(f) the stance against its floor (issue 19 item 3): the right-hand side's evaluations per stance
+    (``compiled.stance_evaluations``) times the cost of one evaluation (an njit loop of
+    evaluations, each from the state the one before moved: the latency a Runge-Kutta stage waits
+    for; independent evaluations' throughput printed too), against the stance's time from (e);
+    target: within 2.5x.
 
 Best of ``--repeat`` after a warm-up call (compilation excluded); ratios are measured in one run,
 absolute times move with the machine and its load (printed). Usage::
@@ -41,23 +46,14 @@ from numba import njit
 from slipmaps.runtime.exact import compiled as ec
 from slipmaps.runtime.exact import dop853
 from slipmaps.runtime.exact import kernels as ek
-from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, max_step, simulate_stance
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance, stance_time_limit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_maps import best_of, machine, states  # noqa: E402
+from bench_maps import best_of, machine, states, with_threads  # noqa: E402
 
 P = slipmaps.HUMAN_RUNNER
 TARGET_SPEEDUP = 100.0
 N_SCIPY = 50
-
-
-def _with_threads(n: int, fn):
-    before = numba.get_num_threads()
-    numba.set_num_threads(n)
-    try:
-        return fn()
-    finally:
-        numba.set_num_threads(before)
 
 
 def _stance_rows(rows: np.ndarray):
@@ -70,7 +66,7 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
     few = td[:N_SCIPY]
     t_scipy = best_of(lambda: [simulate_stance(P, row) for row in few], 3) / len(few)
     _stance_rows(td[:10])  # warm-up (cache load or compilation)
-    t_one = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
+    t_one = with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     slipmaps.stance("exact", P, few[0])
     t_api = best_of(lambda: [slipmaps.stance("exact", P, row) for row in few], repeat) / len(few)
     ref = [simulate_stance(P, row) for row in few]
@@ -96,10 +92,10 @@ def per_stance(td: np.ndarray, repeat: int) -> dict:
 def jacobian(td: np.ndarray, repeat: int) -> dict:
     """The stance with its Jacobian (variational equations), batch kernel on one thread."""
     slipmaps.stance_jacobian_batch("exact", P, td[:10])
-    t_jac = _with_threads(
+    t_jac = with_threads(
         1, lambda: best_of(lambda: slipmaps.stance_jacobian_batch("exact", P, td), repeat)
     ) / len(td)
-    t_st = _with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
+    t_st = with_threads(1, lambda: best_of(lambda: _stance_rows(td), repeat)) / len(td)
     return {"jacobian_us": 1e6 * t_jac, "ratio_to_stance": t_jac / t_st}
 
 
@@ -138,13 +134,100 @@ def external(td: np.ndarray, repeat: int) -> dict:
     }
 
 
+@njit
+def _rhs_chain(y0, p, reps):
+    """``reps`` evaluations of the stance field, each from a state moved along the previous one's
+    slope (each evaluation waits for the one before, as a Runge-Kutta stage does)."""
+    y = y0.copy()
+    dy = np.empty(4)
+    for _ in range(reps):
+        ec.polar_field(0.0, y, p, dy)
+        for i in range(4):
+            y[i] += 1e-7 * dy[i]
+    return y[0]
+
+
+@njit
+def _rhs_independent(rows, p):
+    """One evaluation of the stance field per row (independent: as many in flight as the CPU can)."""
+    dy = np.empty(4)
+    acc = 0.0
+    for i in range(rows.shape[0]):
+        ec.polar_field(0.0, rows[i], p, dy)
+        acc += dy[1] + dy[3]
+    return acc
+
+
+@njit
+def _step_chain(y0, p, h, reps):
+    """``reps`` Runge-Kutta steps of the stance field with their error norm (what an accepted step
+    of :func:`.dop853.solve` costs before its event checks), each from the one before's end."""
+    n = y0.shape[0]
+    K = np.empty((dop853.N_STAGES_EXTENDED, n))
+    y = y0.copy()
+    y_new = np.empty(n)
+    f = np.empty(n)
+    ys = np.empty(n)
+    dy = np.empty(n)
+    ec.polar_field(0.0, y, p, f)
+    acc = 0.0
+    t = 0.0
+    for _ in range(reps):
+        dop853._rk_step(ec.POLAR_FIELD(), p, t, y, f, h, K, y_new, ys, dy)
+        acc += dop853._error_norm(K, h, y, y_new, 1e-11, 1e-12, n)
+        for i in range(n):
+            y[i] = y_new[i]
+            f[i] = K[dop853.N_STAGES, i]
+        t += h
+        if y[0] < 0.5 * y0[0] or y[0] > y0[0]:  # keep the state in the stance's range
+            y[:] = y0
+            ec.polar_field(0.0, y, p, f)
+    return acc
+
+
+def floor(td: np.ndarray, repeat: int) -> dict:
+    """The stance against its floor: (right-hand side evaluations per stance) x (cost of one
+    evaluation), both measured here, against the stance's own time (the external kernel in an njit
+    loop on one thread, as (e)); target: within 2.5x."""
+    rows = np.ascontiguousarray(td[:20_000])
+    t_max = stance_time_limit(P.m, P.l0, P.k_c, P.k_d, P.g_s)
+    args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
+    counts = [ec.stance_evaluations(*row, *args, t_max) for row in rows[:2000]]
+    evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
+    p = (P.m, P.l0, P.k_c, P.g_s)
+    reps = 1_000_000
+    _rhs_chain(rows[0], p, 10)
+    _rhs_independent(rows[:10], p)
+    t_chain = best_of(lambda: _rhs_chain(rows[0], p, reps), repeat) / reps
+    t_indep = best_of(lambda: _rhs_independent(rows, p), repeat) / len(rows)
+    _kernel_loop(0, rows[:10], *args)
+    t_stance = best_of(lambda: _kernel_loop(0, rows, *args), repeat) / len(rows)
+    # where the rest goes: the steps (12 evaluations each; 2 per subphase start and 3 per event's
+    # interpolant are the others) at the cost of one step with its error norm, measured the same way
+    steps = (evaluations - 2 * (2 + 3)) / dop853.N_STAGES
+    _step_chain(rows[0], p, 1e-4, 10)
+    t_step = best_of(lambda: _step_chain(rows[0], p, 1e-4, reps // 20), repeat) / (reps // 20)
+    return {
+        "steps": steps,
+        "step_ns": 1e9 * t_step,
+        "steps_us": 1e6 * steps * t_step,
+        "evaluations": evaluations,
+        "rhs_chain_ns": 1e9 * t_chain,
+        "rhs_independent_ns": 1e9 * t_indep,
+        "stance_us": 1e6 * t_stance,
+        "ratio": t_stance / (evaluations * t_chain),
+        "ratio_independent": t_stance / (evaluations * t_indep),
+        "target": 2.5,
+    }
+
+
 def throughput(h, v, th, td, repeat: int) -> dict:
     threads = numba.get_num_threads()
     slipmaps.stance_batch("exact", P, td[:10])
     slipmaps.apex_return_batch("exact", P, h[:10], v[:10], th[:10])
     t_st = best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat)
     t_ap = best_of(lambda: slipmaps.apex_return_batch("exact", P, h, v, th), repeat)
-    t_st1 = _with_threads(1, lambda: best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat))
+    t_st1 = with_threads(1, lambda: best_of(lambda: slipmaps.stance_batch("exact", P, td), repeat))
     return {
         "threads": threads,
         "stance_per_s": len(td) / t_st,
@@ -161,7 +244,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     p4, p2 = types.UniTuple(f8, 4), types.UniTuple(f8, 2)
     rhs_sig, ev_sig = types.void(f8, arr, p4, arr), types.void(f8, arr, p2, arr)
     rhs, ev = njit(rhs_sig)(ec.polar_field.py_func), njit(ev_sig)(ec.stance_events.py_func)
-    out_ty = types.Tuple((types.int64, f8, types.int64, types.int64))
+    out_ty = types.Tuple((types.int64, f8, types.int64, types.int64, types.int64))
     solve_fc = njit(
         out_ty(
             types.FunctionType(rhs_sig),
@@ -236,7 +319,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
     rows = np.ascontiguousarray(td[:2000])
     p, pe = (P.m, P.l0, P.k_c, P.g_s), (P.q_r_lo, 1e-3 * P.l0)
     direction = np.array(ec.COMPRESSION_DIRECTIONS)
-    cap, y_end = max_step(P.m, P.l0, P.k_c, P.g_s), np.empty(4)
+    cap, y_end = ec.step_cap(P.m, P.l0, P.k_c, P.g_s, DEFAULT_RTOL), np.empty(4)
     fc = (rows, rhs, ev, p, pe, direction, cap, y_end)
     disp = (rows, ec.polar_field, ec.stance_events, p, pe, direction, cap, y_end)
     same = run_fc(*fc) == run_disp(*disp)
@@ -252,6 +335,7 @@ def run(n: int, repeat: int, with_first_class: bool) -> dict:
     out["throughput"] = throughput(h, v, th, td, repeat)
     out["jacobian"] = jacobian(td, repeat)
     out["external"] = external(td, repeat)
+    out["floor"] = floor(td, repeat)
     if with_first_class:
         out["first_class"] = first_class(td, repeat)
     return out
@@ -292,6 +376,22 @@ def report(r: dict) -> str:
         f"stance {e['stance_us']:.2f} us, compression + decompression {e['halves_us']:.2f} us "
         f"({e['halves_ratio']:.2f}x), "
         f"state_at mid-stance {e['state_at_us']:.2f} us ({e['state_at_ratio']:.2f}x)",
+    ]
+    f = r["floor"]
+    met = "met" if f["ratio"] <= f["target"] else "NOT met"
+    lines += [
+        "",
+        f"(f) the stance against its floor (rtol {r['rtol']:g}): {f['evaluations']:.1f} right-hand side "
+        f"evaluations per stance x {f['rhs_chain_ns']:.1f} ns per evaluation (each waiting for the one "
+        f"before, as a stage does) = {f['evaluations'] * f['rhs_chain_ns'] / 1e3:.2f} us; the stance "
+        f"{f['stance_us']:.2f} us: {f['ratio']:.2f}x its floor (target <= {f['target']:g}x: {met}); "
+        f"against independent evaluations ({f['rhs_independent_ns']:.1f} ns each) "
+        f"{f['ratio_independent']:.2f}x",
+        f"    where it goes: {f['steps']:.1f} steps tried per stance x {f['step_ns']:.0f} ns per step with "
+        f"its error norm ({f['step_ns'] / (dop853.N_STAGES * f['rhs_chain_ns']):.2f}x its 12 evaluations) = "
+        f"{f['steps_us']:.2f} us; the rest (subphase starts, event checks at each step end, event "
+        f"location on the interpolant, the kernel call and its arrays) "
+        f"{f['stance_us'] - f['steps_us']:.2f} us",
     ]
     if "first_class" in r:
         f = r["first_class"]

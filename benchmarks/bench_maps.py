@@ -100,6 +100,16 @@ def states(n: int, seed: int = 0) -> tuple[np.ndarray, ...]:
     return h, v, th, np.ascontiguousarray(np.resize(td, (n, 4)))
 
 
+def with_threads(n: int, fn):
+    """fn() on n numba threads (the count restored after)."""
+    before = numba.get_num_threads()
+    numba.set_num_threads(n)
+    try:
+        return fn()
+    finally:
+        numba.set_num_threads(before)
+
+
 def best_of(fn, repeat: int) -> float:
     best = math.inf
     for _ in range(repeat):

@@ -247,16 +247,56 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _percent(x: float) -> str:
+    p = 100.0 * x
+    return f"{p:.2g} %" if p < 10.0 else f"{p:.0f} %"
+
+
+def _front_column(name: str) -> tuple[str, list[str]]:
+    """``slipmaps maps``'s cost-accuracy column for a map at its defaults (``front``, ``dominated``
+    or ``-``: not measured) and its line (runtime/api/pareto.json, benchmarks/bench_pareto.py)."""
+    from ..api.front import at_defaults, front
+
+    v = at_defaults(name)
+    if v is None:
+        return "-", []
+    text = (
+        f"cost-accuracy: {v.ns_per_apex_return:,.0f} ns per apex return, next-apex error mean "
+        f"{_percent(v.mean_error)}, max {_percent(v.max_error)}, {v.failures} failures"
+    )
+    if v.dominated_by is None:
+        return "front", [text + "; on the front (no variant measured dominates it)"]
+    by = front()[v.dominated_by]
+    return "dominated", [
+        text + f"; dominated by {by.label} ({by.command}: {by.ns_per_apex_return:,.0f} ns, mean "
+        f"{_percent(by.mean_error)}, max {_percent(by.max_error)}, {by.failures} failures)"
+    ]
+
+
 def _cmd_maps(args: argparse.Namespace) -> int:
+    from ..api.front import at_defaults, measurement
     from ..api.index import HalfInfo, halves, maps
 
     rows = maps() + halves()
     if args.json:
-        print(json.dumps([m.as_dict() for m in rows], indent=2))
+        out = []
+        for m in rows:
+            d = m.as_dict()
+            v = at_defaults(m.name)
+            d["dominated_by"] = None if v is None else v.dominated_by
+            d["on_front"] = None if v is None else v.dominated_by is None
+            out.append(d)
+        print(json.dumps(out, indent=2))
         return 0
     w = max(len(m.name) for m in rows) + 1
+    meta = measurement()
+    print(
+        f"{'map':<{w}} {'sec':<6} {'front':<9} title  (front: the map at its defaults on the measured "
+        f"cost-accuracy front, or dominated; {meta['measured_by']}, {meta['date']})"
+    )
     for m in rows:
-        print(f"{m.name:<{w}} {m.section:<6} {m.title}")
+        column, lines = _front_column(m.name)
+        print(f"{m.name:<{w}} {m.section:<6} {column:<9} {m.title}")
         if isinstance(m, HalfInfo):
             where = f"half of {m.whole}: {m.start} -> {m.end} (slipmaps.half_stance)"
         else:
@@ -265,6 +305,8 @@ def _cmd_maps(args: argparse.Namespace) -> int:
         for o in m.options:
             kind = "|".join(o.choices) if o.kind == "choice" else o.kind
             print(f"{'':<{w}} --option {o.name}=<{kind}> (default {o.default}): {o.doc}")
+        for line in lines:
+            print(f"{'':<{w}} {line}")
     return 0
 
 

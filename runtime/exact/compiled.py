@@ -15,8 +15,11 @@ and the statuses; they are not restated differently here), integrated by the com
   ``INTEGRATION_FAILED`` (the flights, with ``APEX_TOO_LOW``, ``LIFTOFF_DOWNWARD`` and
   ``LIFTOFF_BACKWARD``, are the generated composition every map's apex return is:
   ``generated/exact.py``);
-* the same tolerances (``DEFAULT_RTOL``, ``DEFAULT_ATOL``), step cap (:func:`.reference.max_step`)
-  and time limit (:func:`.reference.default_t_max`) as the solve_ivp reference.
+* the same tolerances (``DEFAULT_RTOL``, ``DEFAULT_ATOL``) and time limit
+  (:func:`.reference.default_t_max`) as the solve_ivp reference, and at the default rtol the same
+  step cap (:func:`.reference.max_step`, so the two take the same steps); at other tolerances the
+  cap scales with the tolerance (:func:`step_cap`) and the events inside a step are found by the
+  integrator's own checks (:mod:`.dop853`): the tolerance is what sets the cost.
 
 One driver, :func:`hybrid_stance`, holds the hybrid stance (the events, the touchdown and bottom
 checks, the failure statuses) once for every exact kernel: it takes the vector field as an
@@ -62,7 +65,7 @@ from slipmaps.generated.status import Status
 from ..api.results import GROUPS, columns
 from ..api.validate import POLAR_NAMES
 from . import dop853
-from .reference import COLLAPSE_FRACTION, max_step
+from .reference import COLLAPSE_FRACTION, DEFAULT_RTOL, max_step
 
 __all__ = [
     "STANCE_NAMES",
@@ -149,6 +152,23 @@ def no_bottom_step(z_b, m, l0, k_c, k_d, g_s, work):
 POLAR_FIELD = dop853.static(polar_field)
 STANCE_EVENTS = dop853.static(stance_events)
 NO_BOTTOM_STEP = dop853.static(no_bottom_step)
+
+
+#: The tolerance at which the compiled stance's step cap is the solve_ivp reference's
+#: (:func:`.reference.max_step`): at the default, both take the same steps.
+CAP_RTOL = DEFAULT_RTOL
+
+
+@njit(**_JIT)
+def step_cap(m, l0, k, g_s, rtol):
+    """The step cap of a subphase with stiffness k [s]: the reference's (1/16 of the shorter natural
+    period) at rtol :data:`CAP_RTOL`, scaled as the step of an 8th-order method scales with its
+    tolerance, (rtol / CAP_RTOL) ** (1/8). It binds where the error control would take steps longer
+    than that fraction of the period (a slowly varying stance), by the same proportion at every
+    tolerance, so that the cost follows the tolerance: at 1e-6 the cap is 4.2x the reference's, at
+    1e-3 10x. The events are found by the integrator's sign checks at the steps' ends and inside
+    them (:func:`.dop853.solve`), not by the cap."""
+    return max_step(m, l0, k, g_s) * (rtol / CAP_RTOL) ** 0.125
 
 
 @njit(**_JIT)
@@ -257,26 +277,28 @@ def hybrid_stance(
       ``p_d`` until q_r crosses q_r_lo upward, watching the recompression, the fall and the
       collapse.
 
-    Each subphase's step cap is :func:`.reference.max_step` of its stiffness; both have the time
+    Each subphase's step cap is :func:`step_cap` of its stiffness and rtol; both have the time
     limit ``t_max`` (from touchdown, or from the bottom given) and the first four components of z
     as the step control (``N_POLAR``: the events read only those); the sample ``t_sample``
     (:func:`.dop853.solve`) goes into ``y_sample`` from the subphase it falls in (``inf``: none).
     Writes the bottom into ``z_b`` and the liftoff into ``z_lo``; returns ``(status, t_bottom,
-    t_end)``, ``t_end`` the liftoff time (the bottom's when stopping there). The parameters are
+    t_end, evaluations)``, ``t_end`` the liftoff time (the bottom's when stopping there),
+    ``evaluations`` the field's evaluations (0 when nothing was integrated). The parameters are
     checked (:func:`valid_parameters`), the states by :func:`touchdown_status` or
     :func:`valid_polar`: INVALID_INPUT, nothing integrated.
     """
     nan = math.nan
     if not valid_parameters(m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
-        return INVALID_INPUT, nan, nan
+        return INVALID_INPUT, nan, nan, 0
     r_min = COLLAPSE_FRACTION * l0
     pe = (q_r_lo, r_min)
     t_bottom = 0.0
+    evaluations = 0
     if from_touchdown:
         status = touchdown_status(z_start[Q_R], z_start[Q_RD], z_start[Q_TH], z_start[Q_THD], l0)
         if status != OK:
-            return status, nan, nan
-        code, t_bottom, event, _ = dop853.solve(
+            return status, nan, nan, 0
+        code, t_bottom, event, _, evaluations = dop853.solve(
             field,
             p_c,
             STANCE_EVENTS(),
@@ -287,7 +309,7 @@ def hybrid_stance(
             t_max,
             rtol,
             atol,
-            max_step(m, l0, k_c, g_s),
+            step_cap(m, l0, k_c, g_s, rtol),
             N_POLAR,
             z_b,
             t_sample,
@@ -295,21 +317,21 @@ def hybrid_stance(
             False,
         )
         if code != dop853.EVENT or event != EV_RADIAL:
-            return failure_status(code, event), nan, nan
+            return failure_status(code, event), nan, nan, evaluations
         z_b[Q_RD] = 0.0
         if not to_liftoff:
-            return OK, t_bottom, t_bottom
+            return OK, t_bottom, t_bottom, evaluations
     else:
         if not valid_polar(z_start[Q_R], z_start[Q_RD], z_start[Q_TH], z_start[Q_THD], l0):
-            return INVALID_INPUT, nan, nan
+            return INVALID_INPUT, nan, nan, 0
         for i in range(z_b.shape[0]):
             z_b[i] = z_start[i]
         z_b[Q_RD] = 0.0
     status = bottom_status(z_b[Q_R], z_b[Q_TH], z_b[Q_THD], m, l0, k_d, g_s, q_r_lo, t_bottom, t_max)
     if status != OK:
-        return status, t_bottom, nan
+        return status, t_bottom, nan, evaluations
     bottom_step(z_b, m, l0, k_c, k_d, g_s, work)
-    code, t_lo, event, _ = dop853.solve(
+    code, t_lo, event, _, more = dop853.solve(
         field,
         p_d,
         STANCE_EVENTS(),
@@ -320,16 +342,17 @@ def hybrid_stance(
         t_max,
         rtol,
         atol,
-        max_step(m, l0, k_d, g_s),
+        step_cap(m, l0, k_d, g_s, rtol),
         N_POLAR,
         z_lo,
         t_sample,
         y_sample,
         False,
     )
+    evaluations += more
     if code != dop853.EVENT or event != EV_LIFTOFF:
-        return failure_status(code, event), t_bottom, nan
-    return OK, t_bottom, t_lo
+        return failure_status(code, event), t_bottom, nan, evaluations
+    return OK, t_bottom, t_lo, evaluations
 
 
 @njit(**_JIT)
@@ -340,17 +363,26 @@ def _nan(out):
 
 @njit(**_JIT)
 def _polar(q_r, q_rd, q_th, q_thd):
-    return np.array((q_r, q_rd, q_th, q_thd))
+    """One array for a stance's three polar states (one allocation): the start in [0:4], then room
+    for the bottom and the liftoff (:func:`_plain`)."""
+    z = np.empty(3 * N_POLAR)
+    z[Q_R] = q_r
+    z[Q_RD] = q_rd
+    z[Q_TH] = q_th
+    z[Q_THD] = q_thd
+    return z
 
 
 @njit(**_JIT)
 def _plain(
-    y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, from_touchdown, to_liftoff, t_sample, y_sample
+    z, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, from_touchdown, to_liftoff, t_sample, y_sample
 ):
-    """:func:`hybrid_stance` of the polar state alone: (status, t_bottom, t_end, bottom, liftoff)."""
-    y_b = np.empty(N_POLAR)
-    y_lo = np.empty(N_POLAR)
-    status, t_bottom, t_end = hybrid_stance(
+    """:func:`hybrid_stance` of the polar state alone from z[:4] (z from :func:`_polar`): (status,
+    t_bottom, t_end, bottom, liftoff, right-hand side evaluations), the states views of z."""
+    y0 = z[:N_POLAR]
+    y_b = z[N_POLAR : 2 * N_POLAR]
+    y_lo = z[2 * N_POLAR :]
+    status, t_bottom, t_end, evaluations = hybrid_stance(
         POLAR_FIELD(),
         (m, l0, k_c, g_s),
         (m, l0, k_d, g_s),
@@ -373,7 +405,18 @@ def _plain(
         y_b,
         y_lo,
     )
-    return status, t_bottom, t_end, y_b, y_lo
+    return status, t_bottom, t_end, y_b, y_lo, evaluations
+
+
+@njit(**_JIT)
+def stance_evaluations(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max):
+    """(status, the right-hand side's evaluations) of :func:`stance_into`'s stance: what
+    benchmarks/bench_exact.py multiplies by the cost of one evaluation (the stance's floor)."""
+    z = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
+    status, _, _, _, _, evaluations = _plain(  # no sample (t = inf): z is never written
+        z, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, math.inf, z
+    )
+    return status, evaluations
 
 
 @njit(**_JIT)
@@ -381,9 +424,9 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     """The exact stance from a polar touchdown state: writes the :data:`STANCE_NAMES` row into
     ``out[:N_STANCE]`` (NaN unless OK) and returns the status. Times from touchdown [s]."""
     _nan(out[:N_STANCE])
-    y0 = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
-    status, t_bottom, t_stance, y_b, y_lo = _plain(  # no sample (t = inf): y0 is never written
-        y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, math.inf, y0
+    z = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
+    status, t_bottom, t_stance, y_b, y_lo, _ = _plain(  # no sample (t = inf): z is never written
+        z, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, math.inf, z
     )
     if status != OK:
         return status
@@ -402,9 +445,9 @@ def half_into(q_r, q_rd, q_th, q_thd, m, l0, k, g_s, q_r_lo, rtol, atol, t_max, 
     bottom). Writes ``(t_half, end state)`` into ``out[:5]`` (NaN unless OK), returns the status;
     ``t_half`` is the time from the half's start, ``t_max`` its own time limit."""
     _nan(out[:5])
-    y0 = _polar(q_r, q_rd, q_th, q_thd)
-    status, t_bottom, t_end, y_b, y_lo = _plain(  # no sample (t = inf): y0 is never written
-        y0, m, l0, k, k, g_s, q_r_lo, rtol, atol, t_max, compression, not compression, math.inf, y0
+    z = _polar(q_r, q_rd, q_th, q_thd)
+    status, t_bottom, t_end, y_b, y_lo, _ = _plain(  # no sample (t = inf): z is never written
+        z, m, l0, k, k, g_s, q_r_lo, rtol, atol, t_max, compression, not compression, math.inf, z
     )
     if status != OK:
         return status
@@ -431,15 +474,15 @@ def state_at_into(
     _nan(out[:N_POLAR])
     if not (math.isfinite(t) and 0.0 <= t <= t_max):
         return INVALID_INPUT
-    y0 = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
+    z = _polar(q_r_td, q_rd_td, q_th_td, q_thd_td)
     y_at = np.full(N_POLAR, math.nan)
-    status, t_bottom, t_stance, y_b, y_lo = _plain(
-        y0, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, t, y_at
+    status, t_bottom, t_stance, y_b, y_lo, _ = _plain(
+        z, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, True, True, t, y_at
     )
     if status != OK:
         return status
     if t >= t_stance:  # beyond liftoff: the stance equations continued
-        code, _, _, _ = dop853.solve(
+        code, _, _, _, _ = dop853.solve(
             POLAR_FIELD(),
             (m, l0, k_d, g_s),
             STANCE_EVENTS(),
@@ -450,9 +493,9 @@ def state_at_into(
             t_max,
             rtol,
             atol,
-            max_step(m, l0, k_d, g_s),
+            step_cap(m, l0, k_d, g_s, rtol),
             N_POLAR,
-            y0,
+            z[:N_POLAR],  # the end state (the sample's, unread): over the touchdown state
             t,
             y_at,
             True,

@@ -10,6 +10,10 @@ an integration costs microseconds instead of milliseconds:
 * step-size controller: scipy's ``RungeKutta._step_impl`` (safety 0.9, factors 0.2 to 10, no growth
   after a rejection, failure below ``10 ulp(t)``), the step capped at ``max_step`` and clipped at
   ``t_bound``; initial step: scipy's ``select_initial_step``;
+* the step itself: the tableau's sums written out as source with literal coefficients and its
+  zeros left out (:func:`_step_source`, compiled once at import; the polar state's 4 components
+  written out too), summed in scipy's order: the values of the loops over the tableau, bitwise,
+  with fewer operations (benchmarks/bench_exact.py measures the step);
 * dense output: the 7th-order interpolant of scipy's ``DOP853._dense_output_impl`` (three extra
   stages per interpolated step) evaluated as ``Dop853DenseOutput``;
 * events: evaluated at the end of every step; an event whose function changes sign in the
@@ -17,6 +21,17 @@ an integration costs microseconds instead of milliseconds:
   ``g >= 0 >= g_new`` downward) is located on the dense output by Brent's method (scipy's
   ``brentq``, ``xtol = rtol = 4 eps`` as in ``solve_ivp``). Every event is terminal: the earliest
   root ends the integration and its state is the interpolant's there.
+* events inside a step (not in scipy: what lets a step be longer than the events' own time
+  scale): a function on the same side of 0 at both ends of a step may have crossed 0 twice inside
+  it (a grazing liftoff: the leg reaches the liftoff length and shortens again within one step).
+  The events' rates dg/dt at every step's end (a forward difference along the slope, one more
+  events call per step) flag a valley toward 0 (moving toward 0 at the start, away at the end);
+  when the cubic through the ends' values and rates dips below half the nearer end's distance to
+  0 (:func:`valley_reaches`), the step's interpolant is built and searched for the valley's bottom
+  (:func:`valley_crossing`, golden section); if it reaches 0, the crossing in the watched
+  direction (the first, into the valley, or the second, out of it) is located by Brent's method
+  like any other. The premise is at most one extremum of an event function per step (true of
+  functions that oscillate no faster than the step: tests/test_exact_rtol.py's hard cases).
 
 Interfaces (every function ``@njit``; nothing raises):
 
@@ -29,7 +44,8 @@ Interfaces (every function ``@njit``; nothing raises):
   ``direction[e]``: +1 a root where g[e] increases, -1 where it decreases, 0 either, NaN: event ``e``
   is not watched (one events function can serve several phases: one compiled integrator).
 * :func:`solve`: integrates ``y0`` from ``t0`` until ``t_bound`` or the first event; returns
-  ``(code, t_end, event, steps)`` and writes the end state into ``y_end``. ``code`` is
+  ``(code, t_end, event, steps, evaluations)`` (accepted steps, right-hand side evaluations) and
+  writes the end state into ``y_end``. ``code`` is
   :data:`FINISHED` (``t_bound`` reached), :data:`EVENT` (``event`` is its index) or :data:`FAILED`
   (step size below ``10 ulp(t)``, or a non-finite state), as ``solve_ivp``'s status 0 / 1 / -1;
   :data:`SAMPLED` when asked to stop at the sample (below).
@@ -72,9 +88,12 @@ D = np.ascontiguousarray(_coef.D, dtype=np.float64)
 SAFETY = float(_rk.SAFETY)
 MIN_FACTOR = float(_rk.MIN_FACTOR)
 MAX_FACTOR = float(_rk.MAX_FACTOR)
-#: scipy's DOP853 controls the error of its 7th-order estimator: exponent -1/(7 + 1).
+#: scipy's DOP853 controls the error of its 7th-order estimator: exponent -1/(7 + 1), taken here
+#: as three square roots (err ** (-1/8) to round-off, a few times cheaper than the power).
 ERROR_ESTIMATOR_ORDER = int(_rk.DOP853.error_estimator_order)
 ERROR_EXPONENT = -1.0 / (ERROR_ESTIMATOR_ORDER + 1)
+if ERROR_EXPONENT != -0.125:
+    raise RuntimeError(f"the step-size control's roots assume the exponent -1/8, not {ERROR_EXPONENT}")
 #: Event roots: ``solve_ivp`` calls brentq with xtol = rtol = 4 eps (brentq's default maxiter 100).
 ROOT_TOL = 4.0 * float(np.finfo(np.float64).eps)
 ROOT_MAXITER = 100
@@ -112,6 +131,141 @@ def static(fn):
     return handle
 
 
+def _sum(coefficients: np.ndarray, stages: int, term) -> str:
+    """The source of sum_j term(j) * coefficients[j] over the first ``stages`` stages in stage order
+    (scipy's, ``K.T @ a``), the tableau's zeros left out (a zero term adds nothing to a finite sum:
+    the same value bitwise). The order matters: an error estimate below round-off (the first steps
+    from a state with zero components) is round-off, and the steps it chooses must be scipy's."""
+    return " + ".join(f"{term(j)} * {float(c)!r}" for j, c in enumerate(coefficients[:stages]) if c != 0.0)
+
+
+def _advance(y: str, coefficients: np.ndarray, stages: int, term) -> str:
+    """The source of y + (sum_j coefficients[j] term(j)) * h over the first ``stages`` stages
+    (scipy's ``y + h * (K.T @ a)``)."""
+    return f"{y} + ({_sum(coefficients, stages, term)}) * h"
+
+
+#: A state of this length (the polar stance) runs its loops over the components with a constant
+#: count (compiled unrolled); any other length loops over its own.
+UNROLLED = 4
+
+
+def _step_source() -> str:
+    """Python source of the Runge-Kutta step, the error norm and the interpolant's coefficients:
+    every coefficient a literal, every loop over the stages unrolled, the tableau's zeros left out
+    (:func:`_sum`, :func:`_advance`). A state of length :data:`UNROLLED` and any other run the
+    same expressions (bitwise the same values), those of the loops over the tableau before."""
+
+    def arr(j):
+        return f"K[{j}, i]"
+
+    def step(n: str, indent: str) -> list[str]:
+        """The step's body: loops over the n components, or (n an int) the components written
+        out, every component's value computed before any is stored (no store comes between the
+        loads of a stage's combination: the four components are combined side by side)."""
+        if n.isdigit():
+            comps = range(int(n))
+
+            def assign(target: str, coefficients: np.ndarray, stages: int, y: str) -> list[str]:
+                values = [
+                    _advance(f"{y}[{c}]", coefficients, stages, lambda j, c=c: f"K[{j}, {c}]") for c in comps
+                ]
+                return [f"{indent}v{c} = {v}" for c, v in enumerate(values)] + [
+                    f"{indent}{target}[{c}] = v{c}" for c in comps
+                ]
+
+            out = [f"{indent}K[0, {c}] = f[{c}]" for c in comps]
+            for st in range(1, N_STAGES):
+                out += assign("ys", A[st], st, "y")
+                out.append(f"{indent}rhs(t + {float(C[st])!r} * h, ys, p, K[{st}])")
+            out += assign("y_new", B, N_STAGES, "y")
+            out.append(f"{indent}rhs(t + h, y_new, p, K[{N_STAGES}])")
+            return out
+        out = [f"{indent}for i in range({n}):", f"{indent}    K[0, i] = f[i]"]
+        for st in range(1, N_STAGES):
+            out += [
+                f"{indent}for i in range({n}):",
+                f"{indent}    ys[i] = {_advance('y[i]', A[st], st, arr)}",
+                f"{indent}rhs(t + {float(C[st])!r} * h, ys, p, K[{st}])",
+            ]
+        out += [
+            f"{indent}for i in range({n}):",
+            f"{indent}    y_new[i] = {_advance('y[i]', B, N_STAGES, arr)}",
+            f"{indent}rhs(t + h, y_new, p, K[{N_STAGES}])",
+        ]
+        return out
+
+    def norm(n: str, indent: str) -> list[str]:
+        return [
+            f"{indent}for i in range({n}):",
+            f"{indent}    scale = atol + max(abs(y[i]), abs(y_new[i])) * rtol",
+            f"{indent}    e5 = ({_sum(E5, N_STAGES + 1, arr)}) / scale",
+            f"{indent}    e3 = ({_sum(E3, N_STAGES + 1, arr)}) / scale",
+            f"{indent}    s5 += e5 * e5",
+            f"{indent}    s3 += e3 * e3",
+        ]
+
+    lines = [
+        "def _rk_step(rhs, p, t, y, f, h, K, y_new, ys, dy):",
+        "    n = y.shape[0]",
+        f"    if n == {UNROLLED}:",
+        *step(str(UNROLLED), "        "),
+        "    else:",
+        *step("n", "        "),
+        "",
+        "",
+        "def _error_norm(K, h, y, y_new, rtol, atol, n):",
+        "    s5 = 0.0",
+        "    s3 = 0.0",
+        f"    if n == {UNROLLED}:",
+        *norm(str(UNROLLED), "        "),
+        "    else:",
+        *norm("n", "        "),
+        "    e5_2 = math.sqrt(s5) ** 2",
+        "    e3_2 = math.sqrt(s3) ** 2",
+        "    if e5_2 == 0.0 and e3_2 == 0.0:",
+        "        return 0.0",
+        "    return abs(h) * e5_2 / math.sqrt((e5_2 + 0.01 * e3_2) * n)",
+        "",
+        "",
+        "def _dense_coefficients(rhs, p, t_old, h, y_old, y, K, F, ys, dy):",
+        "    n = y.shape[0]",
+    ]
+    for st in range(N_STAGES + 1, N_STAGES_EXTENDED):
+        lines += [
+            "    for i in range(n):",
+            f"        ys[i] = {_advance('y_old[i]', A[st], st, arr)}",
+            f"    rhs(t_old + {float(C[st])!r} * h, ys, p, K[{st}])",
+        ]
+    lines += [
+        "    for i in range(n):",
+        "        d = y[i] - y_old[i]",
+        "        F[0, i] = d",
+        "        F[1, i] = h * K[0, i] - d",
+        f"        F[2, i] = 2.0 * d - h * (K[{N_STAGES}, i] + K[0, i])",
+    ]
+    for r in range(INTERPOLATOR_POWER - 3):
+        lines.append(f"        F[{3 + r}, i] = h * ({_sum(D[r], N_STAGES_EXTENDED, arr)})")
+    return "\n".join(lines) + "\n"
+
+
+_namespace = {"math": math}
+exec(compile(_step_source(), f"<{__name__} step>", "exec"), _namespace)
+#: One 8th-order step from (t, y) with slope f: y_new, and f_new in K[N_STAGES] (scipy's rk_step);
+#: ``dy`` is scratch (the right-hand side writes there; copied into K's rows).
+_rk_step = njit(**_GENERIC)(_namespace["_rk_step"])
+#: scipy's ``DOP853._estimate_error_norm`` (scale atol + rtol max(|y|, |y_new|)) over the first n
+#: components; ``math.sqrt(s5) ** 2`` is np.linalg.norm(err5) ** 2, as scipy computes it.
+_error_norm = njit(**_GENERIC)(_namespace["_error_norm"])
+#: The interpolant of the step (t_old, y_old) -> (t_old + h, y): F (7, n), scipy's
+#: ``DOP853._dense_output_impl`` (K holds the step's 13 stages; 3 more are evaluated into it).
+_dense_coefficients = njit(**_GENERIC)(_namespace["_dense_coefficients"])
+
+
+#: A finite difference along the slope f over this fraction of the step gives the events' rates.
+RATE_STEP = 1e-6
+
+
 @njit(**_JIT)
 def _rms(x, scale, n):
     """scipy's ``norm(x / scale)`` over the first n components: the RMS norm."""
@@ -123,27 +277,38 @@ def _rms(x, scale, n):
 
 
 @njit(**_JIT)
-def _stage_states(K, s, y, h, ys):
-    """ys = y + h * (K[:s].T @ A[s, :s]): the state at which stage ``s`` is evaluated."""
-    for i in range(y.shape[0]):
-        acc = 0.0
-        for j in range(s):
-            acc += K[j, i] * A[s, j]
-        ys[i] = y[i] + acc * h
+def _rms_where_nonzero(x, y0, scale, n):
+    """The RMS norm of x / scale over the first n components where y0 is not 0 (0 when none is)."""
+    s = 0.0
+    count = 0
+    for i in range(n):
+        if y0[i] != 0.0:
+            v = x[i] / scale[i]
+            s += v * v
+            count += 1
+    return math.sqrt(s) / math.sqrt(count) if count > 0 else 0.0
 
 
 @njit(**_GENERIC)
 def initial_step(rhs, p, t0, y0, f0, t_bound, max_step, rtol, atol, n_control, y1, f1, scale):
     """scipy's ``select_initial_step`` (forward in time, error estimator order 7) on the first
-    ``n_control`` components."""
+    ``n_control`` components, except that its first guess (the time over which the state moves by
+    1 % of itself, ``0.01 d0 / d1``) leaves out the components that are exactly 0 (scipy's guess
+    over all of them when the others do not move: a vertical hop's bottom). One such (q_rd at the
+    bottom) has the scale atol alone, and scipy's guess 3.6e-11 s there makes the controller
+    (growth 10x per step at most) take about ten steps, 110 evaluations, to reach its own step at
+    every tolerance. ``reference.first_step`` is the same rule for solve_ivp."""
     n = y0.shape[0]
     interval = abs(t_bound - t0)
     if interval == 0.0:
         return 0.0
     for i in range(n_control):
         scale[i] = atol + abs(y0[i]) * rtol
-    d0 = _rms(y0, scale, n_control)
-    d1 = _rms(f0, scale, n_control)
+    d0 = _rms_where_nonzero(y0, y0, scale, n_control)
+    d1 = _rms_where_nonzero(f0, y0, scale, n_control)
+    if d0 < 1e-5 or d1 < 1e-5:  # the nonzero components do not move: scipy's guess over all
+        d0 = _rms(y0, scale, n_control)
+        d1 = _rms(f0, scale, n_control)
     h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
     h0 = min(h0, interval)
     for i in range(n):
@@ -157,69 +322,8 @@ def initial_step(rhs, p, t0, y0, f0, t_bound, max_step, rtol, atol, n_control, y
     if d1 <= 1e-15 and d2 <= 1e-15:
         h1 = max(1e-6, h0 * 1e-3)
     else:
-        h1 = (0.01 / max(d1, d2)) ** (1.0 / (ERROR_ESTIMATOR_ORDER + 1))
+        h1 = math.sqrt(math.sqrt(math.sqrt(0.01 / max(d1, d2))))  # ** (1 / (7 + 1))
     return min(100.0 * h0, h1, interval, max_step)
-
-
-@njit(**_GENERIC)
-def _rk_step(rhs, p, t, y, f, h, K, y_new, ys):
-    """One 8th-order step from (t, y) with slope f: y_new, and f_new in K[N_STAGES] (scipy's rk_step)."""
-    n = y.shape[0]
-    for i in range(n):
-        K[0, i] = f[i]
-    for s in range(1, N_STAGES):
-        _stage_states(K, s, y, h, ys)
-        rhs(t + C[s] * h, ys, p, K[s])
-    for i in range(n):
-        acc = 0.0
-        for j in range(N_STAGES):
-            acc += K[j, i] * B[j]
-        y_new[i] = y[i] + h * acc
-    rhs(t + h, y_new, p, K[N_STAGES])
-
-
-@njit(**_JIT)
-def _error_norm(K, h, y, y_new, rtol, atol, n):
-    """scipy's ``DOP853._estimate_error_norm`` with scale atol + rtol max(|y|, |y_new|), over the
-    first n components."""
-    s5 = 0.0
-    s3 = 0.0
-    for i in range(n):
-        scale = atol + max(abs(y[i]), abs(y_new[i])) * rtol
-        e5 = 0.0
-        e3 = 0.0
-        for j in range(N_STAGES + 1):
-            e5 += K[j, i] * E5[j]
-            e3 += K[j, i] * E3[j]
-        e5 /= scale
-        e3 /= scale
-        s5 += e5 * e5
-        s3 += e3 * e3
-    e5_2 = math.sqrt(s5) ** 2  # np.linalg.norm(err5) ** 2, as scipy computes it
-    e3_2 = math.sqrt(s3) ** 2
-    if e5_2 == 0.0 and e3_2 == 0.0:
-        return 0.0
-    return abs(h) * e5_2 / math.sqrt((e5_2 + 0.01 * e3_2) * n)
-
-
-@njit(**_GENERIC)
-def dense_coefficients(rhs, p, t_old, h, y_old, y, K, F, ys):
-    """The interpolant of the step (t_old, y_old) -> (t_old + h, y): F (7, n), scipy's
-    ``DOP853._dense_output_impl`` (K holds the step's 13 stages; 3 more are evaluated into it)."""
-    n = y.shape[0]
-    for s in range(N_STAGES + 1, N_STAGES_EXTENDED):
-        _stage_states(K, s, y_old, h, ys)
-        rhs(t_old + C[s] * h, ys, p, K[s])
-    for i in range(n):
-        dy = y[i] - y_old[i]
-        F[0, i] = dy
-        F[1, i] = h * K[0, i] - dy
-        F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
-        for r in range(INTERPOLATOR_POWER - 3):
-            acc = 0.0
-            for j in range(N_STAGES_EXTENDED):
-                acc += D[r, j] * K[j, i]
-            F[3 + r, i] = h * acc
 
 
 @njit(**_JIT)
@@ -303,6 +407,85 @@ def event_root(events, pe, i, F, t_old, h, y_old, xa, xb, ys, g, n_control):
     return xcur
 
 
+#: Golden-section search for an event function's extremum inside a step: the bracket shrinks by
+#: this factor per evaluation, to VALLEY_XTOL of the step (at most VALLEY_MAXITER evaluations).
+GOLDEN = 0.5 * (3.0 - math.sqrt(5.0))
+VALLEY_XTOL = 1e-12
+VALLEY_MAXITER = 80
+
+
+@njit(**_JIT)
+def valley_reaches(g0, g1, s0, s1):
+    """Whether the cubic through a positive function's values g0, g1 at the ends of a step and its
+    slopes s0 < 0, s1 > 0 there (per unit step) dips below the lower end by at least half that end's
+    height: a valley that may cross 0 once the cubic's own error (far smaller than the dip: its
+    ratio to the dip falls as the step squared) is allowed for. The minimum of
+    p(x) = g0 + s0 x + a x^2 + b x^3 on (0, 1) is at the root of p' = s0 + 2 a x + 3 b x^2 there."""
+    a = 3.0 * (g1 - g0) - 2.0 * s0 - s1
+    b = 2.0 * (g0 - g1) + s0 + s1
+    if b == 0.0:
+        x = -s0 / (2.0 * a)
+    else:
+        disc = a * a - 3.0 * b * s0
+        if disc < 0.0:
+            disc = 0.0
+        x = (-a + math.sqrt(disc)) / (3.0 * b)  # the root where p' goes from - to +
+    if not 0.0 <= x <= 1.0:
+        x = 0.5
+    lowest = g0 + x * (s0 + x * (a + x * b))
+    low_end = min(g0, g1)
+    return not lowest > 0.5 * low_end
+
+
+@njit(**_GENERIC)
+def valley_crossing(events, pe, i, F, t_old, h, y_old, sign, ys, g, n_control):
+    """A point of the step (t_old, t_old + h) where event ``i``'s function, ``sign`` times it
+    positive at both ends and moving toward 0 at the start and away from it at the end, is at or
+    past 0 on the interpolant: a golden-section search for the minimum of ``sign * g_i``, stopped
+    at the first point where it is <= 0. Returns that time, or NaN when the valley stays above 0
+    (no crossing within the step)."""
+    a = t_old
+    b = t_old + h
+    x1 = a + GOLDEN * (b - a)
+    x2 = b - GOLDEN * (b - a)
+    f1 = sign * _event_value(events, pe, i, F, t_old, h, y_old, x1, ys, g, n_control)
+    if not f1 > 0.0:
+        return x1
+    f2 = sign * _event_value(events, pe, i, F, t_old, h, y_old, x2, ys, g, n_control)
+    if not f2 > 0.0:
+        return x2
+    for _ in range(VALLEY_MAXITER):
+        if b - a <= VALLEY_XTOL * h:
+            break
+        if f1 < f2:
+            b = x2
+            x2 = x1
+            f2 = f1
+            x1 = a + GOLDEN * (b - a)
+            f1 = sign * _event_value(events, pe, i, F, t_old, h, y_old, x1, ys, g, n_control)
+            if not f1 > 0.0:
+                return x1
+        else:
+            a = x1
+            x1 = x2
+            f1 = f2
+            x2 = b - GOLDEN * (b - a)
+            f2 = sign * _event_value(events, pe, i, F, t_old, h, y_old, x2, ys, g, n_control)
+            if not f2 > 0.0:
+                return x2
+    return math.nan
+
+
+@njit(**_GENERIC)
+def _event_rates(events, pe, t, y, f, delta, g, ys, g_step, rate, n_control):
+    """The events' rates dg/dt at (t, y) with slope f: a forward difference over ``delta`` along f."""
+    for i in range(n_control):
+        ys[i] = y[i] + delta * f[i]
+    events(t + delta, ys, pe, g_step)
+    for e in range(g.shape[0]):
+        rate[e] = (g_step[e] - g[e]) / delta
+
+
 @njit(**_JIT)
 def _finite(y):
     for i in range(y.shape[0]):
@@ -334,31 +517,44 @@ def solve(
 
     The first ``n_control`` components of y choose the steps (error norm, initial step); the others
     are carried along with the same steps (``n_control = len(y0)``: scipy's DOP853). Returns
-    ``(code, t_end, event, steps)``; the state at ``t_end`` is written into ``y_end`` (the
-    interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps`` counts
-    accepted steps. The interpolant at ``t_sample`` goes into ``y_sample`` (module docstring: a
-    sample); with ``sample_ends`` the integration stops there.
+    ``(code, t_end, event, steps, evaluations)``; the state at ``t_end`` is written into ``y_end``
+    (the interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps``
+    counts accepted steps, ``evaluations`` the right-hand side's evaluations. The interpolant at
+    ``t_sample`` goes into ``y_sample`` (module docstring: a sample); with ``sample_ends`` the
+    integration stops there.
     """
     n = y0.shape[0]
     n_ev = direction.shape[0]
-    K = np.empty((N_STAGES_EXTENDED, n))
-    F = np.empty((INTERPOLATOR_POWER, n))
-    y = y0.copy()
-    y_new = np.empty(n)
-    f = np.empty(n)
-    ys = np.empty(n)
-    work = np.empty(n)
-    g = np.empty(n_ev)
-    g_new = np.empty(n_ev)
-    g_root = np.empty(n_ev)
+    # One allocation for every work array (the stages, the interpolant, states, event values).
+    buf = np.empty((N_STAGES_EXTENDED + INTERPOLATOR_POWER + 6) * n + 6 * n_ev)
+    K = buf[: N_STAGES_EXTENDED * n].reshape((N_STAGES_EXTENDED, n))
+    o = N_STAGES_EXTENDED * n
+    F = buf[o : o + INTERPOLATOR_POWER * n].reshape((INTERPOLATOR_POWER, n))
+    o += INTERPOLATOR_POWER * n
+    y = buf[o : o + n]
+    y_new = buf[o + n : o + 2 * n]
+    f = buf[o + 2 * n : o + 3 * n]
+    ys = buf[o + 3 * n : o + 4 * n]
+    work = buf[o + 4 * n : o + 5 * n]
+    dy = buf[o + 5 * n : o + 6 * n]
+    o += 6 * n
+    g = buf[o : o + n_ev]
+    g_new = buf[o + n_ev : o + 2 * n_ev]
+    g_root = buf[o + 2 * n_ev : o + 3 * n_ev]
+    rate = buf[o + 3 * n_ev : o + 4 * n_ev]
+    rate_new = buf[o + 4 * n_ev : o + 5 * n_ev]
+    g_step = buf[o + 5 * n_ev : o + 6 * n_ev]
     for i in range(n):
+        y[i] = y0[i]
         y_end[i] = math.nan
     if not _finite(y0):
-        return FAILED, t0, -1, 0
+        return FAILED, t0, -1, 0, 0
     rhs(t0, y, p, f)
     events(t0, y, pe, g)
     t = t0
     h_abs = initial_step(rhs, p, t0, y, f, t_bound, max_step, rtol, atol, n_control, ys, work, y_new)
+    evaluations = 2
+    _event_rates(events, pe, t, y, f, RATE_STEP * h_abs, g, ys, g_step, rate, n_control)
     steps = 0
     sampled = False
     while t < t_bound:
@@ -370,29 +566,30 @@ def solve(
         rejected = False
         while True:
             if h_abs < min_step:
-                return FAILED, t, -1, steps
+                return FAILED, t, -1, steps, evaluations
             t_new = t + h_abs
             if t_new - t_bound > 0.0:
                 t_new = t_bound
             h = t_new - t
             h_abs = abs(h)
-            _rk_step(rhs, p, t, y, f, h, K, y_new, ys)
+            _rk_step(rhs, p, t, y, f, h, K, y_new, ys, dy)
+            evaluations += N_STAGES
             err = _error_norm(K, h, y, y_new, rtol, atol, n_control)
             if err < 1.0:
                 if err == 0.0:
                     factor = MAX_FACTOR
                 else:
-                    factor = SAFETY * err**ERROR_EXPONENT
+                    factor = SAFETY / math.sqrt(math.sqrt(math.sqrt(err)))
                     factor = factor if factor < MAX_FACTOR else MAX_FACTOR
                 if rejected and factor > 1.0:
                     factor = 1.0
                 h_abs *= factor
                 break
-            factor = SAFETY * err**ERROR_EXPONENT
+            factor = SAFETY / math.sqrt(math.sqrt(math.sqrt(err)))
             h_abs *= factor if factor > MIN_FACTOR else MIN_FACTOR  # also when err is NaN
             rejected = True
         if not _finite(y_new):
-            return FAILED, t, -1, steps
+            return FAILED, t, -1, steps, evaluations
         steps += 1
         t_old = t
         t = t_new
@@ -402,38 +599,69 @@ def solve(
             y[i] = y_new[i]
             f[i] = K[N_STAGES, i]
         events(t, y, pe, g_new)
+        _event_rates(events, pe, t, y, f, RATE_STEP * h, g_new, ys, g_step, rate_new, n_control)
         first = -1
         t_first = math.inf
         built = False
         for e in range(n_ev):
+            d = direction[e]
+            if not (d == d):
+                continue  # NaN: not watched
             up = g[e] <= 0.0 and g_new[e] >= 0.0
             down = g[e] >= 0.0 and g_new[e] <= 0.0
-            d = direction[e]
             if (up and d > 0.0) or (down and d < 0.0) or ((up or down) and d == 0.0):
                 if not built:
-                    dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys)
+                    _dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys, dy)
+                    evaluations += N_STAGES_EXTENDED - N_STAGES - 1
                     built = True
                 root = event_root(events, pe, e, F, t_old, h, work, t_old, t, ys, g_root, n_control)
                 if root < t_first:
                     t_first = root
                     first = e
+            elif not (up or down):
+                # Both ends on the same side of 0: a valley toward 0 inside the step (the function
+                # moves toward 0 at the start and away from it at the end) may cross it twice.
+                sign = 1.0 if g[e] > 0.0 else -1.0
+                if (
+                    sign * rate[e] < 0.0
+                    and sign * rate_new[e] > 0.0
+                    and valley_reaches(
+                        sign * g[e], sign * g_new[e], sign * rate[e] * h, sign * rate_new[e] * h
+                    )
+                ):
+                    if not built:
+                        _dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys, dy)
+                        evaluations += N_STAGES_EXTENDED - N_STAGES - 1
+                        built = True
+                    x = valley_crossing(events, pe, e, F, t_old, h, work, sign, ys, g_root, n_control)
+                    if x == x:
+                        # the first crossing (t_old, x) goes against sign, the second (x, t) with it
+                        first_crossing = d == 0.0 or d * sign < 0.0
+                        xa = t_old if first_crossing else x
+                        xb = x if first_crossing else t
+                        root = event_root(events, pe, e, F, t_old, h, work, xa, xb, ys, g_root, n_control)
+                        if root < t_first:
+                            t_first = root
+                            first = e
         if not sampled and t0 <= t_sample and (t_sample < t_first if first >= 0 else t_sample <= t):
             if not built:
-                dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys)
+                _dense_coefficients(rhs, p, t_old, h, work, y, K, F, ys, dy)
+                evaluations += N_STAGES_EXTENDED - N_STAGES - 1
                 built = True
             dense_eval(F, t_old, h, work, t_sample, y_sample, y_sample.shape[0])
             sampled = True
             if sample_ends:
                 for i in range(y_sample.shape[0]):
                     y_end[i] = y_sample[i]
-                return SAMPLED, t_sample, -1, steps
+                return SAMPLED, t_sample, -1, steps, evaluations
         if first >= 0:
             dense_eval(F, t_old, h, work, t_first, y_end, n)
             if not _finite(y_end):
-                return FAILED, t_first, -1, steps
-            return EVENT, t_first, first, steps
+                return FAILED, t_first, -1, steps, evaluations
+            return EVENT, t_first, first, steps, evaluations
         for e in range(n_ev):
             g[e] = g_new[e]
+            rate[e] = rate_new[e]
     for i in range(n):
         y_end[i] = y[i]
-    return FINISHED, t, -1, steps
+    return FINISHED, t, -1, steps, evaluations

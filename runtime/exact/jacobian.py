@@ -176,7 +176,7 @@ def jacobian_into(
     z_b = np.empty(N_AUG)
     z_lo = np.empty(N_AUG)
     work = np.empty(N_WORK)
-    status, t_bottom, t_stance = ec.hybrid_stance(
+    status, t_bottom, t_stance, _ = ec.hybrid_stance(
         AUGMENTED_FIELD(),
         (m, l0, k_c, g_s, float(K_C)),
         (m, l0, k_d, g_s, float(K_D)),

@@ -42,9 +42,14 @@ Numerics
 Each stance subphase is integrated with ``scipy.integrate.solve_ivp`` (DOP853), default
 ``rtol = 1e-11`` and ``atol = 1e-12``, the step capped at 1/16 of the shorter of the spring period
 ``2 pi sqrt(m/k)`` and the pendulum period ``2 pi sqrt(l0/g_s)`` so that a sign change of an
-event function is not stepped over. Events are located by solve_ivp's root finder on the dense
-output (to ~1e-15 in time). The default stance time limit is :func:`default_t_max`. The
-right-hand sides, the energy and the coordinate maps are the generated kernels of
+event function is not stepped over (solve_ivp checks the signs at the steps' ends only). The cap
+is kept at every tolerance: this module is the reference, meant for the default tolerance, where
+the cap rarely binds (40 steps each of the human-runner and Yu grids took the same evaluations
+with and without it; a slow vertical hop with a soft k_d is a case where it binds); the compiled
+simulator takes the same cap at the default and scales it with the tolerance elsewhere, finding
+the events inside a step by its own checks (:mod:`.dop853`). Events are located by solve_ivp's
+root finder on the dense output (to ~1e-15 in time). The default stance time limit is
+:func:`default_t_max`. The right-hand sides, the energy and the coordinate maps are the generated kernels of
 ``slipmaps.generated.slip_model``, the flight maps those of ``slipmaps.generated.flight``;
 :func:`simulate_stance_cartesian` integrates the same stance in Cartesian coordinates as an
 independent check of the polar integration. :mod:`.compiled` runs the same stance through
@@ -329,6 +334,7 @@ def _integrate_phase(
                 rtol=rtol,
                 atol=atol,
                 max_step=max_step,
+                first_step=first_step(fun, t0, y0, t_end, max_step, rtol, atol),
                 dense_output=dense is not False,
             )
     except (ArithmeticError, ValueError, RuntimeError, ZeroDivisionError) as exc:
@@ -349,6 +355,40 @@ def _integrate_phase(
         return _Phase(events[i].__name__, t_ev, y_ev, t, y)
     t, y = _samples(sol, dense, t0, float(sol.t[-1]))
     return _Phase(None, float(sol.t[-1]), None, t, y)
+
+
+def first_step(
+    fun, t0: float, y0: np.ndarray, t_bound: float, max_step: float, rtol: float, atol: float
+) -> float:
+    """The first step of a subphase: scipy's ``select_initial_step`` for DOP853 (forward, error
+    estimator order 7), except that its first guess leaves out the components that are exactly 0
+    unless the others do not move (the compiled simulator's rule, :func:`.dop853.initial_step`,
+    which says why: at the bottom, q_rd = 0 made scipy's first step 3.6e-11 s). A state with no
+    zero component gets scipy's step (to round-off: h ** (1/8) as three square roots)."""
+    y0 = np.asarray(y0, dtype=float)
+    interval = abs(t_bound - t0)
+    if interval == 0.0:
+        return 0.0
+    f0 = np.asarray(fun(t0, y0), dtype=float)
+    scale = atol + np.abs(y0) * rtol
+    nonzero = y0 != 0.0
+
+    def rms(x: np.ndarray) -> float:
+        return float(np.sqrt(np.sum(x[nonzero] ** 2)) / math.sqrt(nonzero.sum())) if nonzero.any() else 0.0
+
+    d0, d1 = rms(y0 / scale), rms(f0 / scale)
+    if d0 < 1e-5 or d1 < 1e-5:  # the nonzero components do not move: scipy's guess over all
+        nonzero = np.ones_like(nonzero)
+        d0, d1 = rms(y0 / scale), rms(f0 / scale)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h0 = min(h0, interval)
+    f1 = np.asarray(fun(t0 + h0, y0 + h0 * f0), dtype=float)
+    d2 = float(np.sqrt(np.sum(((f1 - f0) / scale) ** 2)) / math.sqrt(y0.size)) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = math.sqrt(math.sqrt(math.sqrt(0.01 / max(d1, d2))))
+    return min(100.0 * h0, h1, interval, max_step)
 
 
 def _samples(sol, dense: bool | np.ndarray, t0: float, t1: float) -> tuple[np.ndarray, np.ndarray]:
@@ -384,7 +424,8 @@ def natural_periods(m: float, l0: float, k: float, g_s: float) -> tuple[float, f
 @njit(cache=True, error_model="numpy")
 def max_step(m: float, l0: float, k: float, g_s: float) -> float:
     """The step cap of a stance subphase with stiffness k: 1/16 of the shorter of the spring period
-    and the pendulum period [s] (shared with the compiled simulator)."""
+    and the pendulum period [s] (the compiled simulator's at the default rtol:
+    :func:`.compiled.step_cap`)."""
     spring, pendulum = natural_periods(m, l0, k, g_s)
     return _MAX_STEP_FRACTION * min(spring, pendulum)
 

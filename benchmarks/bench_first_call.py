@@ -1,0 +1,74 @@
+"""Benchmark: time to first result on an empty numba cache (issue 19 item 5).
+
+Each map's first ``slipmaps.apex_return`` (and with ``--jacobian`` its first
+``slipmaps.apex_return_jacobian``) runs in a fresh Python process whose ``NUMBA_CACHE_DIR`` is a new
+empty directory, as a new user's first call does: the time printed is the call's own (numba
+compiling the kernels it needs, then the step), ``import slipmaps`` timed apart. The processes run
+one after another (one core each); on a shared machine the load is printed with each. Targets: the
+first apex return of any map within 5 s, its Jacobian within 15 s. Usage::
+
+    python benchmarks/bench_first_call.py [--maps NAME ...] [--jacobian] [--json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+CHILD = r"""
+import json, sys, time
+t0 = time.perf_counter()
+import slipmaps
+t1 = time.perf_counter()
+name, role = sys.argv[1], sys.argv[2]
+call = slipmaps.apex_return if role == "apex_return" else slipmaps.apex_return_jacobian
+r = call(name, slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35)
+t2 = time.perf_counter()
+print(json.dumps({"import_s": t1 - t0, "first_call_s": t2 - t1}))
+"""
+
+
+def first_call(name: str, role: str) -> dict:
+    with tempfile.TemporaryDirectory(prefix="slipmaps-first-call-") as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+        load = os.getloadavg()[0]
+        out = subprocess.run(
+            [sys.executable, "-c", CHILD, name, role], env=env, capture_output=True, text=True, check=True
+        )
+    return {"map": name, "role": role, "load_1min": load, **json.loads(out.stdout.strip().splitlines()[-1])}
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--maps", nargs="*", help="these maps only (default: every map)")
+    parser.add_argument("--jacobian", action="store_true", help="also the first apex_return_jacobian")
+    parser.add_argument("--json", action="store_true", help="print JSON instead of the report")
+    args = parser.parse_args()
+    from slipmaps.runtime.api.index import maps
+
+    names = args.maps or [m.name for m in maps()]
+    roles = ["apex_return"] + (["apex_return_jacobian"] if args.jacobian else [])
+    rows = []
+    for name in names:
+        for role in roles:
+            rows.append(first_call(name, role))
+            if not args.json:
+                r = rows[-1]
+                target = 5.0 if role == "apex_return" else 15.0
+                met = "met" if r["first_call_s"] <= target else "NOT met"
+                print(
+                    f"{name:<18} {role:<21} first call {r['first_call_s']:6.1f} s (target <= {target:g} s: "
+                    f"{met}); import {r['import_s']:.1f} s; 1-min load {r['load_1min']:.1f}",
+                    flush=True,
+                )
+    if args.json:
+        print(json.dumps(rows, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
