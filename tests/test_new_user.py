@@ -228,6 +228,32 @@ def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp
     assert root == "None" and Path(kernel_dir).parent == mine and Path(other_dir).parent == mine
 
 
+def test_a_kernel_calling_other_files_is_cached_under_the_digest_of_the_kernel_sources(tmp_path):
+    """numba checks only a cached kernel's own file, but the kernel holds the compiled code of what it
+    calls: with runtime/exact/compiled.py changed and runtime/exact/kernels.py not, the cached exact
+    stance would keep the old integrator. A kernel outside the generated
+    modules (whose headers hash their callees) is cached in a folder named after the digest of every
+    kernel source's content, which any edit of one changes."""
+    from slipmaps import kernel_cache
+    from slipmaps.runtime.exact import kernels
+
+    sources = kernel_cache.kernel_sources()
+    names = {Path(p).name for p in sources}
+    assert {"compiled.py", "kernels.py", "dop853.py", "flight.py", "geyer.py"} <= names, names
+    files = [tmp_path / "a.py", tmp_path / "b.py"]
+    for f, text in zip(files, ("x = 1\n", "y = 2\n"), strict=True):
+        f.write_text(text)
+    digest = kernel_cache.sources_digest.__wrapped__
+    before = digest(tuple(map(str, files)))
+    files[1].write_text("y = 3\n")
+    assert digest(tuple(map(str, files))) != before
+    if kernel_cache.cache_root() is not None:  # (NUMBA_CACHE_DIR set: numba's own folders)
+        from slipmaps.generated import geyer
+
+        assert kernels.stance._cache._cache_path.endswith("-" + kernel_cache.sources_digest())
+        assert kernel_cache.sources_digest() not in geyer.geyer_stance._cache._cache_path
+
+
 # --- compare: one rule for physical failures, exit status ---------------------------------------
 
 

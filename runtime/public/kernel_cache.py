@@ -14,9 +14,17 @@ install (``import slipmaps`` finds an empty namespace package). So slipmaps' ker
    directory, with one warning naming it.
 
 Inside it numba keeps one folder per source directory (its name and a hash of its path), and checks
-each entry against the source file's content and numba's version, so two installs never share
-entries and a reinstall recompiles only what changed. Clearing the cache is removing that
-directory (:func:`cache_root` names it).
+each entry against its source file's stamp (modification time and size) and numba's version, so two
+installs never share entries. A cached kernel holds the compiled code of every kernel it calls, in
+other files too, and numba checks only the caller's file (numba's documented limitation): after an
+edit of ``runtime/exact/compiled.py`` alone, ``runtime/exact/kernels.py``'s cached stance would keep
+running the old integrator. So the folder of a kernel outside ``slipmaps.generated`` carries a
+digest of the contents of every slipmaps source that defines kernels (:func:`kernel_sources`; the
+generated modules included), and any change to one of them recompiles those kernels. The
+generated modules need none: each states the hashes of the modules it calls in its header
+(``slipmaps generate``), so a change in a callee changes the caller's file. With
+``NUMBA_CACHE_DIR`` set, numba's own rules apply (without the digest). Clearing the cache is
+removing the directory (:func:`cache_root` names it).
 
 Only slipmaps' own files are redirected, by a cache locator that numba consults before its own
 (:class:`SlipmapsCacheLocator`); other numba code in the process keeps numba's defaults. numba
@@ -27,6 +35,7 @@ calls the locators when a kernel is decorated, so :func:`install` runs when the 
 from __future__ import annotations
 
 import functools
+import hashlib
 import importlib.util
 import os
 import sys
@@ -35,7 +44,14 @@ import warnings
 
 from numba.core import caching, config
 
-__all__ = ["SlipmapsCacheLocator", "cache_root", "install", "slipmaps_dirs"]
+__all__ = [
+    "SlipmapsCacheLocator",
+    "cache_root",
+    "install",
+    "kernel_sources",
+    "slipmaps_dirs",
+    "sources_digest",
+]
 
 # numba spelled these with a leading underscore before it made them public.
 _Locator = getattr(caching, "UserProvidedCacheLocator", None) or caching._UserProvidedCacheLocator
@@ -115,6 +131,46 @@ def slipmaps_dirs() -> tuple[str, ...]:
     return tuple(sorted(dirs))
 
 
+def kernel_sources() -> tuple[str, ...]:
+    """slipmaps' source files that define numba kernels (they import numba), sorted."""
+    found = set()
+    for d in slipmaps_dirs():
+        for root, dirs, files in os.walk(d):
+            dirs[:] = sorted(x for x in dirs if x != "__pycache__")
+            for f in files:
+                path = os.path.join(root, f)
+                if f.endswith(".py") and _defines_kernels(path):
+                    found.add(os.path.realpath(path))
+    return tuple(sorted(found))
+
+
+def _defines_kernels(path: str) -> bool:
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+    except OSError:
+        return False
+    return "from numba import" in text or "import numba" in text
+
+
+@functools.cache
+def sources_digest(files: tuple[str, ...] | None = None) -> str:
+    """12 hex digits of the sha256 of ``files``' contents (default :func:`kernel_sources`), each
+    with its path relative to its slipmaps directory, so the digest is the same wherever the
+    package is installed."""
+    files = kernel_sources() if files is None else files
+    h = hashlib.sha256()
+    for path in files:
+        rel = next((os.path.relpath(path, d) for d in slipmaps_dirs() if path.startswith(d + os.sep)), path)
+        with open(path, "rb") as fh:
+            h.update(rel.encode() + b"\0" + fh.read() + b"\0")
+    return h.hexdigest()[:12]
+
+
+def _generated(py_file: str) -> bool:
+    return os.path.basename(os.path.dirname(os.path.realpath(py_file))) == "generated"
+
+
 def _ours(py_file: str) -> bool:
     here = os.path.dirname(os.path.realpath(py_file))
     return any(here == d or here.startswith(d + os.sep) for d in slipmaps_dirs())
@@ -122,12 +178,16 @@ def _ours(py_file: str) -> bool:
 
 class SlipmapsCacheLocator(_Locator):
     """numba's user-provided-directory locator, rooted at :func:`cache_root`, for slipmaps' own
-    source files only (it declines every other file, and declines when ``NUMBA_CACHE_DIR`` is set)."""
+    source files only (it declines every other file, and declines when ``NUMBA_CACHE_DIR`` is set);
+    a kernel outside the generated modules in a folder of the sources' digest (:func:`sources_digest`)."""
 
     def __init__(self, py_func, py_file):
         self._py_file = py_file
         self._lineno = py_func.__code__.co_firstlineno
-        self._cache_path = os.path.join(cache_root(), self.get_suitable_cache_subpath(py_file))
+        subpath = self.get_suitable_cache_subpath(py_file)
+        if not _generated(py_file):  # its callees in other files: the sources' digest (module docstring)
+            subpath += "-" + sources_digest()
+        self._cache_path = os.path.join(cache_root(), subpath)
 
     @classmethod
     def from_function(cls, py_func, py_file):
