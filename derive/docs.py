@@ -1,4 +1,4 @@
-"""Generated documentation: the map table of README.md and docs/maps.md, from the map index.
+"""Generated documentation: the short map table of README.md and docs/maps.md, from the map index.
 
 Written by ``slipmaps generate`` next to the kernels, so the docs list exactly the declared maps.
 """
@@ -6,6 +6,7 @@ Written by ``slipmaps generate`` next to the kernels, so the docs list exactly t
 from __future__ import annotations
 
 import re
+import textwrap
 
 
 def replace_between(text: str, key: str, body: str) -> str:
@@ -29,8 +30,23 @@ def _options(row: dict) -> str:
     return ", ".join(parts) or "-"
 
 
+def readme_maps_table(index: dict) -> str:
+    """The README's short map table: name, report section and title (every option: docs/maps.md)."""
+    lines = ["| map | report | title |", "| --- | --- | --- |"]
+    lines += [
+        f"| `{row['name']}` | {row['section']} | {row['title']} |" for row in (*index["MAPS"], index["EXACT"])
+    ]
+    halves = ", ".join(f"`{row['name']}`" for row in index["HALVES"])
+    note = (
+        f"Half-stance maps (`slipmaps.half_stance`): {halves}. Every map's options, outputs and kernels: "
+        "[docs/maps.md](docs/maps.md)."
+    )
+    lines += ["", textwrap.fill(note, 100, break_long_words=False, break_on_hyphens=False)]
+    return "\n".join(lines) + "\n"
+
+
 def maps_table(index: dict) -> str:
-    """The short map table of README.md."""
+    """The map table of docs/maps.md: every map with its requirements and options."""
     lines = [
         "| map | report | title | requires | options |",
         "| --- | --- | --- | --- | --- |",

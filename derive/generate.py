@@ -3,7 +3,7 @@
 Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
 (the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` and ``docs/maps.md``;
-the equation and map tables of ``README.md`` (between their markers).
+the equation summary and the short map table of ``README.md`` (between their markers).
 
 Deterministic: the same sources give byte-identical files (no timestamps, SymPy pinned, ordered
 CSE, ``repr`` floats). Files are written only when their content changes, so numba's on-disk
@@ -23,7 +23,7 @@ import jinja2
 import sympy as sp
 
 from . import docs
-from .equations import render_equation_table
+from .equations import render_equation_summary, render_equation_table
 from .ir import Call, Iterate, Module, Switch, is_external_module
 from .lower import lower
 from .maps import all_halves, all_maps, ground_truth
@@ -260,8 +260,8 @@ def build_files() -> dict[str, str]:
     files["docs/equations.md"] = table
     files["docs/maps.md"] = docs.maps_page(index)
     readme = (ROOT / "README.md").read_text()
-    readme = docs.replace_between(readme, "equations", table.split("\n", 2)[2])
-    readme = docs.replace_between(readme, "maps", docs.maps_table(index))
+    readme = docs.replace_between(readme, "equations", render_equation_summary())
+    readme = docs.replace_between(readme, "maps", docs.readme_maps_table(index))
     files["README.md"] = readme
     return files
 

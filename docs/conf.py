@@ -7,9 +7,10 @@ Build it (the ``docs`` extra installs the tools)::
 
 Pages are MyST Markdown. The pages that commands write (``slipmaps generate``: maps.md, equations.md;
 ``slipmaps accuracy``: accuracy.md, convergence.md, stiffness.md, stability.md) are pages of the
-site as they are, listed in a toctree, never copied; the README's sections are included by
-``{include}`` between their headings. The API reference is autodoc of ``slipmaps.__all__``, the CLI
-reference sphinx-argparse on :func:`slipmaps.runtime.cli.app.build_parser`.
+site as they are, listed in a toctree, never copied; getting_started.md includes the README's quick
+start, first map call and install extras by ``{include}`` between their headings (every other section
+lives on a page of its own, the README links to it). The API reference is autodoc of
+``slipmaps.__all__``, the CLI reference sphinx-argparse on :func:`slipmaps.runtime.cli.app.build_parser`.
 """
 
 from __future__ import annotations

@@ -4,8 +4,11 @@
 - every public name of ``slipmaps.__all__`` is documented in the API reference, at ``slipmaps.NAME``;
 - every page in docs/ is in the site (a toctree entry), the pages that commands write included as
   they are, never copied;
-- the README sections that the site includes (``{include} ../README.md`` between two headings) are
-  there, each heading once, so a README edit that renames one fails here, not only in the build.
+- the README sections that the site includes (``{include} ../README.md`` between two headings: the
+  quick start, the first map call, the install extras) are there, each heading once, so a README edit
+  that renames one fails here, not only in the build;
+- the sections that moved from the README into the site (:data:`MOVED`) are on their page, each
+  heading once, and no longer in the README (nothing held twice).
 """
 
 from __future__ import annotations
@@ -22,6 +25,24 @@ DOCS = ROOT / "docs"
 API_PAGES = ("api.md",)
 #: An ``{include}`` of the README, its options the group.
 INCLUDE = r"^```\{include\} \.\./README\.md\n(.*?)^```"
+#: The README's former sections, each the heading it has on the page that holds it now.
+MOVED = {
+    "## Python API": "getting_started.md",
+    "## numba's cache": "performance.md",
+    "## Derivatives": "getting_started.md",
+    "## Periodic gaits and their stability": "control_planning.md",
+    "## Control: deadbeat steps, runs on the exact plant": "control_planning.md",
+    "# Sweeps and Dask": "sweeps.md",
+    "# Accuracy (report sections 6-8, measured)": "findings.md",
+    "# Performance": "performance.md",
+    "## Cost against accuracy": "performance.md",
+    "## Performance of the exact map (issue 19)": "performance.md",
+    "# Layout": "layout.md",
+    "# Adding a map": "adding_a_map.md",
+    "## Regenerating": "adding_a_map.md",
+    "# Design notes": "design.md",
+    "# Status of the report's equations": "equations.md",
+}
 
 
 def _documented() -> list[str]:
@@ -69,7 +90,16 @@ def _readme_includes() -> list[tuple[str, str, str]]:
 
 
 def test_the_site_includes_readme_sections():
-    assert len(_readme_includes()) >= 10
+    assert len(_readme_includes()) >= 6
+    assert len(_readme_includes()) + len(MOVED) >= 10
+
+
+@pytest.mark.parametrize("heading, page", MOVED.items())
+def test_a_moved_readme_section_is_on_its_page_once(heading, page):
+    assert re.findall(rf"^{re.escape(heading)}$", (DOCS / page).read_text(), flags=re.M) == [heading]
+    title = heading.lstrip("# ")
+    readme = (ROOT / "README.md").read_text()
+    assert not re.findall(rf"^#+ {re.escape(title)}$", readme, flags=re.M), f"{title} is in the README again"
 
 
 @pytest.mark.parametrize("page, option, heading", _readme_includes())

@@ -232,15 +232,12 @@ def test_jacobian_indexing_failures_and_scipy_refusal():
 
 
 def test_readme_derivatives_example_runs():
-    """The README's Derivatives example, run after its Python API example (whose names it uses)."""
-    from pathlib import Path
+    """The Derivatives example (docs/getting_started.md, moved there from the README), run after the
+    page's Python API example (whose names it uses)."""
+    from documents import section_block
 
-    text = (Path(__file__).resolve().parent.parent / "README.md").read_text()
-
-    def block(section: str) -> str:
-        return text.split(f"## {section}", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
-
+    page = "docs/getting_started.md"
     namespace: dict = {}
-    exec(compile(block("Python API"), "README.md", "exec"), namespace)  # noqa: S102 - the project's README
-    exec(compile(block("Derivatives"), "README.md", "exec"), namespace)  # noqa: S102
+    exec(compile(section_block(page, "Python API"), page, "exec"), namespace)  # noqa: S102 - the project's docs
+    exec(compile(section_block(page, "Derivatives"), page, "exec"), namespace)  # noqa: S102
     assert namespace["jac"].ok and namespace["jac"].inputs[-1] == "k"

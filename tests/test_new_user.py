@@ -23,6 +23,7 @@ import sys
 import tracemalloc
 from pathlib import Path
 
+import documents
 import numpy as np
 import pytest
 import slipmaps
@@ -301,7 +302,7 @@ def test_exit_status_is_documented():
     from slipmaps.runtime.cli import app as cli
 
     compare_help = build_parser()._subparsers._group_actions[0].choices["compare"].format_help()
-    for text in (compare_help, (ROOT / "README.md").read_text(), cli.__doc__):
+    for text in (compare_help, (ROOT / "docs" / "getting_started.md").read_text(), cli.__doc__):
         flat = " ".join(text.split())
         for code in (
             r"0 (when )?both sides ran",
@@ -493,7 +494,10 @@ def test_every_subcommand_has_a_description():
 
 
 def test_readme_names_importable_modules_and_cites_the_report_by_title():
-    text = (ROOT / "README.md").read_text()
+    """The README and the pages that took its sections (tests/documents.py) name importable modules
+    only and no file of the report; the README cites the report by its title, the performance page
+    (numba's cache, from the README) names NUMBA_CACHE_DIR."""
+    text = "\n".join(documents.text(name) for name in documents.DOCUMENTS)
     assert "stance_maps" not in text
     for dotted in sorted(set(re.findall(r"(?<![\w/.])slipmaps(?:\.[A-Za-z_]\w*)+", text))):
         parts = dotted.split(".")
@@ -505,10 +509,10 @@ def test_readme_names_importable_modules_and_cites_the_report_by_title():
         obj = importlib.import_module(module)
         for attr in parts[len(module.split(".")) :]:
             obj = getattr(obj, attr)  # AttributeError names what the README got wrong
-    flat = " ".join(text.split())
+    flat = " ".join(documents.text("README.md").split())
     assert "SLIP: Approximate Stance Map for Nonsymmetric Motions and Variable Stiffness" in flat
     assert not re.search(r"\S+\.(pdf|tex)\b", text), "the report is cited by its title, not a path"
-    assert "NUMBA_CACHE_DIR" in text
+    assert "NUMBA_CACHE_DIR" in documents.text("docs/performance.md")
 
 
 # --- where `slipmaps accuracy` writes -------------------------------------------------------------
@@ -867,8 +871,9 @@ def test_a_toml_files_unknown_key_lists_every_accepted_key(tmp_path, nothing_run
 
 
 def test_the_region_figure_cites_the_paper_it_reproduces():
-    """The figure cited Seyfarth et al. 2003, the README 2002: the self-stable region is the 2002 J
-    Biomech paper's; the two marked reference points come from the 2003 paper's captions, named so."""
+    """The figure cited Seyfarth et al. 2003, the README 2002 (the text is now docs/control_planning.md's):
+    the self-stable region is the 2002 J Biomech paper's; the two marked reference points come from the
+    2003 paper's captions, named so."""
     from slipmaps.runtime.studies import stability_report
 
     title = " ".join(stability_report.REGION_TITLE.split())
@@ -876,7 +881,7 @@ def test_the_region_figure_cites_the_paper_it_reproduces():
     assert "2003" not in title
     marks = stability_report.REGION_MARKS
     assert "2003" in marks and "Swing-leg retraction" in marks and "J Exp Biol" in marks
-    readme = " ".join((ROOT / "README.md").read_text().split())
+    readme = " ".join((ROOT / "docs" / "control_planning.md").read_text().split())
     assert re.findall(r"Seyfarth et al\.,? (\d{4})", readme) and set(
         re.findall(r"Seyfarth et al\.,? (\d{4})", readme)
     ) == {"2002"}

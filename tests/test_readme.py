@@ -1,11 +1,14 @@
-"""Every example in README.md runs as written (tracker issue 16): the shell commands of its bash
-blocks, its inline `slipmaps ...` commands and its python blocks, in a scratch directory.
+"""Every example in README.md and in the site pages that hold what the README handed over to the site
+(tests/documents.py: getting started, control and planning, sweeps, performance, ...) runs as
+written (tracker issue 16): the shell commands of their bash blocks, their inline `slipmaps ...`
+commands and their python blocks, in a scratch directory.
 
 Each command is run in this process (``slipmaps.runtime.cli.app.main``; ``python3 -m slipmaps`` and the
 console script are the same function, test_new_user.py checks both) from a temporary directory
 holding a link to the checkout's examples/, so relative paths (``--out sweep_geyer``,
 ``examples/sweep.toml``) resolve as they do for a reader in the checkout and nothing is written
-into it. The python blocks run in order in one namespace (later blocks use ``params``, ``td``...).
+into it. The python blocks run in order in one namespace, the README's first, then the pages' in
+the order of :data:`documents.DOCUMENTS` (later blocks use ``params``, ``td``...).
 
 Not run, each for the reason in :data:`SKIPPED`: installing, the whole test suite (minutes; this
 test is part of it), the commands that rewrite the checkout (``slipmaps generate``, ``slipmaps
@@ -22,12 +25,12 @@ import shlex
 from pathlib import Path
 
 import pytest
+from documents import DOCUMENTS, blocks, text
 from slipmaps.runtime.cli import build_parser, main
 
 ROOT = Path(__file__).resolve().parent.parent
-README = (ROOT / "README.md").read_text()
 
-#: The README's shell lines that are not run, and why (every other line must be a slipmaps command).
+#: The documents' shell lines that are not run, and why (every other line must be a slipmaps command).
 SKIPPED = {
     "python3 -m pip install .": "installs slipmaps (Quick start)",
     "python3 -m pip install -e '.[test]'": "installs slipmaps with the test extra (Quick start)",
@@ -43,15 +46,11 @@ SKIPPED = {
 PREFIXES = (("python3", "-m", "slipmaps"), ("python", "-m", "slipmaps"), ("slipmaps",))
 
 
-def _blocks(language: str) -> list[str]:
-    return re.findall(rf"^```{language}\n(.*?)^```", README, flags=re.S | re.M)
-
-
 def shell_commands() -> list[str]:
     """Every command of the bash blocks: continuation lines joined, comments dropped, ``&&``
     split."""
     out = []
-    for block in _blocks("bash"):
+    for _, block in blocks("bash"):
         for line in block.replace("\\\n", " ").splitlines():
             words = shlex.split(line, comments=True)
             if not words:
@@ -64,7 +63,7 @@ def shell_commands() -> list[str]:
 def inline_commands() -> list[str]:
     """The inline code spans of the prose that are slipmaps commands (line breaks inside a span
     read as spaces)."""
-    prose = re.sub(r"^```.*?^```", "", README, flags=re.S | re.M)
+    prose = "\n".join(re.sub(r"^```.*?^```", "", text(name), flags=re.S | re.M) for name in DOCUMENTS)
     spans = (" ".join(s.split()) for s in re.findall(r"`([^`]+)`", prose))
     return [s for s in spans if _argv(s) is not None]
 
@@ -82,7 +81,7 @@ def _argv(command: str) -> list[str] | None:
 
 
 def _displayed(command: str) -> str:
-    """A command as the skip list spells it (quoted as in the README)."""
+    """A command as the skip list spells it (quoted as in the documents)."""
     return " ".join(shlex.quote(w) for w in shlex.split(command))
 
 
@@ -95,7 +94,7 @@ def _is_a_name(argv: list[str]) -> bool:
 
 
 def _plan() -> tuple[list[list[str]], list[str], list[list[str]]]:
-    """(commands to run, skipped lines, names of subcommands) of the whole README."""
+    """(commands to run, skipped lines, names of subcommands) of every document."""
     skip = {_displayed(k) for k in SKIPPED}
     run, skipped, named = [], [], []
     for command in shell_commands():
@@ -103,7 +102,7 @@ def _plan() -> tuple[list[list[str]], list[str], list[list[str]]]:
             skipped.append(command)
             continue
         argv = _argv(command)
-        assert argv is not None, f"README shell line {command!r} is neither run nor in SKIPPED"
+        assert argv is not None, f"shell line {command!r} is neither run nor in SKIPPED"
         run.append(argv)
     for command in inline_commands():
         if command in skip:  # named in prose (``slipmaps run --evaluate`` rewrites docs/control.*)
@@ -152,18 +151,18 @@ def test_every_readme_command_runs_as_written(scratch, capsys):
 
 
 def test_the_readme_table_is_what_compare_prints(scratch, capsys):
-    """The output shown under Quick start is the first command's table."""
-    (table,) = _blocks("text")
+    """The output shown for the quick start's first command (docs/getting_started.md) is its table."""
+    ((_, table),) = blocks("text")
     assert main(["compare", "--no-plot"]) == 0
     out = capsys.readouterr().out
     assert table.strip() in out, out
 
 
 def test_the_readme_python_blocks_run_as_written(scratch):
-    blocks = _blocks("python")
-    assert len(blocks) >= 4
+    python = blocks("python")
+    assert len(python) >= 4 and python[0][0] == "README.md"
     namespace: dict = {}
-    for block in blocks:
-        exec(compile(block, "README.md", "exec"), namespace)  # the README's own code, as written
+    for name, block in python:
+        exec(compile(block, name, "exec"), namespace)  # the documents' own code, as written
     assert namespace["g"].ok and (scratch / "sweep_type5").is_dir()
     assert namespace["gaits"].status.name == "OK"

@@ -197,8 +197,8 @@ def verdicts(rec: dict) -> list[tuple[str, bool, str]]:
 
 
 def summary(rec: dict) -> str:
-    """The README's paragraph of measured numbers (tests/test_control_runs.py checks the README
-    holds it, so no number there is typed by hand)."""
+    """The paragraph of measured numbers of docs/control_planning.md (tests/test_control_runs.py checks
+    the page holds it, so no number there is typed by hand)."""
     tc, r, cost = rec["target_check"], rec["rough"], rec["cost"]["models"]
     ds, models = r["d"], r["models"]
     at = ds.index(MISMATCH_D)
