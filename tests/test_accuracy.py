@@ -1,5 +1,5 @@
 """The accuracy study (docs/accuracy.md, .json), re-measured: the committed record is current, and
-the findings the docs and the README state hold.
+the findings the docs (accuracy.md, findings.md) state hold.
 
 The whole study runs once per session (about 10-20 s after compilation): every map and variant
 on the five grids against the exact simulator. The re-measured numbers must match the committed

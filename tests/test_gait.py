@@ -269,7 +269,8 @@ def test_gait_errors_are_one_line_exit_2(capsys, argv, match):
 # Tracker issue 16: the eigenvalue and the multipliers told apart; a search that fails says so
 # ----------------------------------------------------------------------------------------------
 #: Bounds of the documented measurements on docs/stability.json's grids (gait.py's docstring, the
-#: README): the largest |first multiplier - 1| and |second multiplier - lambda| per map.
+#: page docs/control_planning.md): the largest |first multiplier - 1| and |second multiplier - lambda|
+#: per map.
 CLOSED_FORM = ("geyer", "geyer-vs", "iterative-report", *(f"gravity-type{i}" for i in range(6)))
 
 

@@ -288,8 +288,9 @@ def test_vertical_hop_is_a_valid_gait(params, height):
 # 6. The README's default case
 # ----------------------------------------------------------------------------------------------
 def test_readme_default_case_errors():
-    """The README table (human runner, apex 1 m at 5 m/s, leg at 0.35 rad): Geyer's map minus the
-    exact stance, both from the same exact touchdown, to half a unit of the table's third digit."""
+    """The quick start's table (docs/getting_started.md; human runner, apex 1 m at 5 m/s, leg at
+    0.35 rad): Geyer's map minus the exact stance, both from the same exact touchdown, to half a unit
+    of the table's third digit."""
     geyer = slipmaps.apex_return(MAP, HUMAN_RUNNER, 1.0, 5.0, 0.35)
     exact = slipmaps.apex_return("exact", HUMAN_RUNNER, 1.0, 5.0, 0.35)
     assert geyer.ok and exact.ok

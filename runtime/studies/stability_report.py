@@ -37,8 +37,9 @@ TABLE_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
 JEB_NO_STABLE_SPEED = 3.0
 JEB_EXAMPLE = (5.0, 68.0)
 #: The figure's title: what it reproduces is the self-stable region of Seyfarth, Geyer, Guenther and
-#: Blickhan 2002 (the README and docs/stability.md cite the same paper); the two marks come from the
-#: captions of the 2003 follow-up (:data:`JEB_NO_STABLE_SPEED`, :data:`JEB_EXAMPLE`), named as such.
+#: Blickhan 2002 (docs/control_planning.md and docs/stability.md cite the same paper); the two marks
+#: come from the captions of the 2003 follow-up (:data:`JEB_NO_STABLE_SPEED`, :data:`JEB_EXAMPLE`),
+#: named as such.
 REGION_TITLE = (
     'Self-stable region of the SLIP as in Seyfarth et al. 2002 ("A movement criterion for running", '
     "J Biomech): human runner (80 kg, 1 m, 20 kN/m); grey: unstable only, white: none"
