@@ -1606,8 +1606,8 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol,
-        zeroth):
+def iterative_stance_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
+        iterations, tol):
     """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
     states.
 
@@ -1633,10 +1633,6 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
-            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
-            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
-            geyer-vs
 
     Returns a tuple:
         t_bottom: time from touchdown to the bottom [s]
@@ -1652,151 +1648,55 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
         passes: Picard passes run (the larger of the two halves) [1]
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 46
+    # Total ops: 8
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
             and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
-            and math.isfinite(iterations) and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0))
-            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
-            and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth == 2.0)
-            or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth == 7.0)
-            or (zeroth == 8.0))):
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
-    # zeroth iterate
-    if zeroth == 1.0:
-        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
-        _x0 = k_c*q_r_td
-        _x1 = g_s*m*math.cos(q_th_td)
-        _x2 = q_thd_td**2
-        _x3 = m*q_rd_td**2
-        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
-            + k_c*l0)**2)) + q_r_td)
-        z_b_q_r = _x4
-        z_b_q_th = q_th_td
-        z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
-        z_lo_q_th = 0.0
-        z_lo_q_thd = 0.0
-    elif zeroth == 0.0:
-        # zeroth iterate: Geyer et al.'s approximate stance map
-        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
-        if _c0[10] != STATUS_OK:
-            return _NAN11 + (_c0[10],)
-        z_b_q_r = _c0[2]
-        z_b_q_th = _c0[4]
-        z_b_q_thd = _c0[5]
-        z_lo_q_th = _c0[8]
-        z_lo_q_thd = _c0[9]
-    elif zeroth == 2.0:
-        # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
-            1.0, 0.0))
-        if _c1[12] != STATUS_OK:
-            return _NAN11 + (_c1[12],)
-        z_b_q_r = _c1[2]
-        z_b_q_th = _c1[4]
-        z_b_q_thd = _c1[5]
-        z_lo_q_th = _c1[8]
-        z_lo_q_thd = _c1[9]
-    elif zeroth == 3.0:
-        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
-            100.0, 1e-12))
-        if _c2[12] != STATUS_OK:
-            return _NAN11 + (_c2[12],)
-        z_b_q_r = _c2[2]
-        z_b_q_th = _c2[4]
-        z_b_q_thd = _c2[5]
-        z_lo_q_th = _c2[8]
-        z_lo_q_thd = _c2[9]
-    elif zeroth == 4.0:
-        # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0,
-            0.0, 100.0, 1e-12))
-        if _c3[12] != STATUS_OK:
-            return _NAN11 + (_c3[12],)
-        z_b_q_r = _c3[2]
-        z_b_q_th = _c3[4]
-        z_b_q_thd = _c3[5]
-        z_lo_q_th = _c3[8]
-        z_lo_q_thd = _c3[9]
-    elif zeroth == 5.0:
-        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0,
-            100.0, 1e-12))
-        if _c4[12] != STATUS_OK:
-            return _NAN11 + (_c4[12],)
-        z_b_q_r = _c4[2]
-        z_b_q_th = _c4[4]
-        z_b_q_thd = _c4[5]
-        z_lo_q_th = _c4[8]
-        z_lo_q_thd = _c4[9]
-    elif zeroth == 6.0:
-        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0,
-            0.0, 100.0, 1e-12))
-        if _c5[12] != STATUS_OK:
-            return _NAN11 + (_c5[12],)
-        z_b_q_r = _c5[2]
-        z_b_q_th = _c5[4]
-        z_b_q_thd = _c5[5]
-        z_lo_q_th = _c5[8]
-        z_lo_q_thd = _c5[9]
-    elif zeroth == 7.0:
-        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-        _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
-        if _c6[12] != STATUS_OK:
-            return _NAN11 + (_c6[12],)
-        z_b_q_r = _c6[2]
-        z_b_q_th = _c6[4]
-        z_b_q_thd = _c6[5]
-        z_lo_q_th = _c6[8]
-        z_lo_q_thd = _c6[9]
-    elif zeroth == 8.0:
-        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0,
-            100.0, 1e-12))
-        if _c7[13] != STATUS_OK:
-            return _NAN11 + (_c7[13],)
-        z_b_q_r = _c7[2]
-        z_b_q_th = _c7[4]
-        z_b_q_thd = _c7[5]
-        z_lo_q_th = _c7[8]
-        z_lo_q_thd = _c7[9]
-    else:
-        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo)
+    if _c0[10] != STATUS_OK:
+        return _NAN11 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
     # compression half, k_c (report 5.2.1)
-    _c8 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
-    if _c8[6] != STATUS_OK:
-        return _NAN11 + (_c8[6],)
-    t_bottom = _c8[0]
-    bottom_q_r = _c8[1]
-    bottom_q_rd = _c8[2]
-    bottom_q_th = _c8[3]
-    bottom_q_thd = _c8[4]
-    c_passes = _c8[5]
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
     # zeroth iterate at liftoff
-    _x5 = (zeroth == 1.0)
-    g_lo_q_th = ((bottom_q_th) if _x5 else (z_lo_q_th))
-    g_lo_q_thd = ((bottom_q_r**2*bottom_q_thd/q_r_lo**2) if _x5 else (z_lo_q_thd))
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
     # decompression half, k_d (report 3.2, 5.2.2)
-    _c9 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
         g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
-    if _c9[6] != STATUS_OK:
-        return _NAN11 + (_c9[6],)
-    t_decompression = _c9[0]
-    liftoff_q_r = _c9[1]
-    liftoff_q_rd = _c9[2]
-    liftoff_q_th = _c9[3]
-    liftoff_q_thd = _c9[4]
-    d_passes = _c9[5]
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
     t_stance = t_bottom + t_decompression
     passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
     # the leg stays above horizontal
@@ -1813,19 +1713,19 @@ def iterative_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
-        iterations, tol, zeroth, out, status):
-    """Parallel batch form of :func:`iterative_stance`.
+def iterative_stance_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_geyer`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol, zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
     ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
     liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
     """
     for i in prange(out.shape[0]):
-        res = (iterative_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo,
-            nodes, iterations, tol, zeroth))
+        res = (iterative_stance_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d,
+            g_s, q_r_lo, nodes, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
@@ -1841,8 +1741,8 @@ def iterative_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, 
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-        nodes, iterations, tol, zeroth):
+def iterative_apex_return_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, nodes, iterations, tol):
     """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
     form).
 
@@ -1868,10 +1768,6 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
-            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
-            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
-            geyer-vs
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1895,14 +1791,12 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
             and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
             and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and math.isfinite(zeroth) and ((b_y_apex >= 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
-            > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
-            > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes
-            == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth
-            == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth
-            == 7.0) or (zeroth == 8.0))):
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1917,8 +1811,8 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
-    _c1 = (iterative_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
-        iterations, tol, zeroth))
+    _c1 = (iterative_stance_zeroth_geyer(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol))
     if _c1[11] != STATUS_OK:
         return _NAN13 + (_c1[11],)
     t_stance = _c1[1]
@@ -1950,20 +1844,2172 @@ def iterative_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
-        q_r_lo, nodes, iterations, tol, zeroth, out, status):
-    """Parallel batch form of :func:`iterative_apex_return`.
+def iterative_apex_return_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_geyer`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol,
-    zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
     ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
     liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
     """
     for i in prange(out.shape[0]):
-        res = (iterative_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s,
-            g_f, q_r_td, q_r_lo, nodes, iterations, tol, zeroth))
+        res = (iterative_apex_return_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0,
+            k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
+        iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 43
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
+    # compression half, k_c (report 5.2.1)
+    _c0 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN11 + (_c0[6],)
+    t_bottom = _c0[0]
+    bottom_q_r = _c0[1]
+    bottom_q_rd = _c0[2]
+    bottom_q_th = _c0[3]
+    bottom_q_thd = _c0[4]
+    c_passes = _c0[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = bottom_q_th
+    g_lo_q_thd = bottom_q_r**2*bottom_q_thd/q_r_lo**2
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c1 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_decompression = _c1[0]
+    liftoff_q_r = _c1[1]
+    liftoff_q_rd = _c1[2]
+    liftoff_q_th = _c1[3]
+    liftoff_q_thd = _c1[4]
+    d_passes = _c1[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d,
+            g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_held(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
+        q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_held(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c,
+            k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type0(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type1(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type2(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type3(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type4(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN11 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_gravity_type5(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s,
+        q_r_lo, nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
+            l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        out[i, 11] = res[11]
+        out[i, 12] = res[12]
+        status[i] = res[13]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, nodes,
+        iterations, tol):
+    """Iterative stance map (Schwind and Koditschek, converging form): touchdown state -> bottom and liftoff
+    states.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
+    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
+    p_r_td^2 = 2 m int F_r.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_bottom: time from touchdown to the bottom [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        bottom_q_r: leg length [m]
+        bottom_q_rd: leg length rate [m/s]
+        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        bottom_q_thd: leg angle rate [rad/s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 8
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(nodes)
+            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
+            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes == 0.0) or (nodes
+            == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN11 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN11 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN11 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, nodes, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN11 + (_c1[6],)
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    c_passes = _c1[5]
+    # zeroth iterate at liftoff
+    g_lo_q_th = z_lo_q_th
+    g_lo_q_thd = z_lo_q_thd
+    # decompression half, k_d (report 3.2, 5.2.2)
+    _c2 = (schwind_decompression(bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, m, l0, k_d, g_s, q_r_lo,
+        g_lo_q_th, g_lo_q_thd, nodes, iterations, tol))
+    if _c2[6] != STATUS_OK:
+        return _NAN11 + (_c2[6],)
+    t_decompression = _c2[0]
+    liftoff_q_r = _c2[1]
+    liftoff_q_rd = _c2[2]
+    liftoff_q_th = _c2[3]
+    liftoff_q_thd = _c2[4]
+    d_passes = _c2[5]
+    t_stance = t_bottom + t_decompression
+    passes = (0.5)*c_passes + (0.5)*d_passes + (0.5)*abs(c_passes - d_passes)
+    # the leg stays above horizontal
+    if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
+        return _NAN11 + (STATUS_FALL,)
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
+            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
+            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
+            and math.isfinite(liftoff_q_thd) and math.isfinite(passes)):
+        return _NAN11 + (STATUS_NUMERICAL_RANGE,)
+    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_stance_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_stance_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
+    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
+    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_stance_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c,
+            k_d, g_s, q_r_lo, nodes, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        out[i, 6] = res[6]
+        out[i, 7] = res[7]
+        out[i, 8] = res[8]
+        out[i, 9] = res[9]
+        out[i, 10] = res[10]
+        status[i] = res[11]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_apex_return_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
+        q_r_td, q_r_lo, nodes, iterations, tol):
+    """Apex-return map: exact flights, stance by Iterative stance map (Schwind and Koditschek, converging
+    form).
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
+            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        passes: Picard passes run (the larger of the two halves) [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 3
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(nodes) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+            > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+            and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((nodes
+            == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes == 4.0)) and ((iterations
+            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+            and (tol <= 1.0))):
+        return _NAN13 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
+    if _c0[6] != STATUS_OK:
+        return _NAN13 + (_c0[6],)
+    td_q_r = _c0[0]
+    td_q_rd = _c0[1]
+    td_q_th = _c0[2]
+    td_q_thd = _c0[3]
+    t_descent = _c0[4]
+    foot_x = _c0[5]
+    # stance: Iterative stance map (Schwind and Koditschek, converging form)
+    _c1 = (iterative_stance_zeroth_geyer_vs(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
+        nodes, iterations, tol))
+    if _c1[11] != STATUS_OK:
+        return _NAN13 + (_c1[11],)
+    t_stance = _c1[1]
+    liftoff_q_r = _c1[6]
+    liftoff_q_rd = _c1[7]
+    liftoff_q_th = _c1[8]
+    liftoff_q_thd = _c1[9]
+    passes = _c1[10]
+    # liftoff -> next apex: exact ballistic ascent
+    _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c2[5] != STATUS_OK:
+        return _NAN13 + (_c2[5],)
+    apex_height = _c2[0]
+    apex_speed = _c2[1]
+    t_ascent = _c2[2]
+    next_apex_x = _c2[4]
+    # the step: apex to the foot, the foot to the next apex
+    step_length = foot_x + next_apex_x
+    foot_y = -b_y_apex + ground
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
+            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
+            and math.isfinite(passes)):
+        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
+    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_apex_return_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
+        g_f, q_r_td, q_r_lo, nodes, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_apex_return_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
+    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
+    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
+    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_apex_return_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0,
+            k_c, k_d, g_s, g_f, q_r_td, q_r_lo, nodes, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]
