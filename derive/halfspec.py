@@ -24,8 +24,8 @@ import sympy as sp
 
 from . import catalog
 from .declaration import Declaration, Inputs
-from .specialize import module_kernels
 from .ir import Arg, Batch, Field, Group, Kernel, Module, Step, positive, sym
+from .specialize import module_kernels
 
 __all__ = ["HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
 

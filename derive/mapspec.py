@@ -150,16 +150,19 @@ class MapSpec(Declaration):
         if self.built().state_at is None:
             return None
         t = catalog.TIME
-        return self.specialize(Kernel(
-            name=self.kernel_name("state_at"),
-            summary=f"{self.title}: the polar state a time t after touchdown.",
-            equations=self.equations,
-            args=(t,) + self.stance_args(),
-            steps=self.domain_steps() + self.built().state_at(t.symbol),
-            outputs=catalog.TRAJECTORY,
-            batch=Batch((t.name,)),
-            module=self.ident,
-        ), self._choice(choice))
+        return self.specialize(
+            Kernel(
+                name=self.kernel_name("state_at"),
+                summary=f"{self.title}: the polar state a time t after touchdown.",
+                equations=self.equations,
+                args=(t,) + self.stance_args(),
+                steps=self.domain_steps() + self.built().state_at(t.symbol),
+                outputs=catalog.TRAJECTORY,
+                batch=Batch((t.name,)),
+                module=self.ident,
+            ),
+            self._choice(choice),
+        )
 
     def apex_return_kernel(self, flight_kernels: Mapping[str, Kernel], choice: dict | None = None) -> Kernel:
         """Apex -> touchdown (exact ballistic descent onto ground ``ground`` higher) -> this map's
@@ -219,16 +222,19 @@ class MapSpec(Declaration):
                 comment="the step: apex to the foot, the foot to the next apex",
             ),
         )
-        return self.specialize(Kernel(
-            name=self.kernel_name("apex_return"),
-            summary=f"Apex-return map: exact flights, stance by {self.title}.",
-            equations=self.equations,
-            args=self.apex_args(),
-            steps=steps,
-            outputs=catalog.APEX_RETURN + Group("", self.extras),
-            batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
-            module=self.ident,
-        ), self._choice(choice))
+        return self.specialize(
+            Kernel(
+                name=self.kernel_name("apex_return"),
+                summary=f"Apex-return map: exact flights, stance by {self.title}.",
+                equations=self.equations,
+                args=self.apex_args(),
+                steps=steps,
+                outputs=catalog.APEX_RETURN + Group("", self.extras),
+                batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+                module=self.ident,
+            ),
+            self._choice(choice),
+        )
 
     # -- derivatives ---------------------------------------------------------------------------
     def stiffness(self) -> tuple[str, ...]:

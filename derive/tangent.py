@@ -384,9 +384,9 @@ def widened(asked: dict[tuple, set]) -> dict[tuple, tuple]:
     out = {}
     for key, patterns in asked.items():
         if len(patterns) > 1:
-            rows = zip(*sorted(patterns))
+            rows = zip(*sorted(patterns), strict=True)
             out[key] = tuple(
-                tuple(e[0] if len(set(e)) == 1 else "s" for e in zip(*row)) for row in rows
+                tuple(e[0] if len(set(e)) == 1 else "s" for e in zip(*row, strict=True)) for row in rows
             )
     return out
 
