@@ -140,7 +140,7 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
         # first, on an idle interpreter: compile times are the most load-sensitive numbers
         out["first_call"] = []
         for info in slipmaps.maps():
-            if info.generated:
+            if not info.ground_truth and info.has("apex_return_jacobian"):
                 load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
                 wall, cpu = first_call_seconds(info.name)
                 out["first_call"].append(
