@@ -10,7 +10,9 @@ kernels of a whole stance (stance, state-at-time, apex return, Jacobians) or of 
 
 Options are kernel arguments (float64): a choice is passed as the index of its value, an integer
 option as a whole number; each gets a domain check (INVALID_INPUT outside it). An option whose
-choices name ``backends`` selects the implementation instead and is not a kernel argument.
+choices name ``backends`` selects the implementation instead and is not a kernel argument. A choice
+option declared ``specialize`` is not a kernel argument either: each of its choices gets kernels of
+its own (:mod:`.specialize`), and the runtime calls the kernel of the choice.
 """
 
 from __future__ import annotations
@@ -47,8 +49,14 @@ class Option:
     #: What the studies do with the option (which of its values they measure): any of
     #: :data:`slipmaps.derive.maps.OPTION_ROLES`; published in the index (``Option.roles``).
     roles: tuple[str, ...] = ()
+    #: Each choice gets kernels of its own (named ``<kernel>_<option>_<choice>``) and the option is not
+    #: a kernel argument (:mod:`.specialize`): for an option whose choices select different callees,
+    #: so that the first call of one choice compiles only that choice's callees.
+    specialize: bool = False
 
     def __post_init__(self):
+        if self.specialize and (not self.choices or self.backends):
+            raise ValueError(f"option {self.name}: only a choice option without backends can specialize")
         if self.choices and self.default not in self.values:
             raise ValueError(f"option {self.name}: default {self.default!r} is not one of {self.values}")
         unknown = {c for c, _ in self.backends} - set(self.values)
@@ -65,8 +73,9 @@ class Option:
     @property
     def kernel(self) -> bool:
         """Whether the kernels take this option as an argument (an option choosing the
-        implementation, :attr:`backends`, is not one)."""
-        return not self.backends
+        implementation, :attr:`backends`, or one with kernels per choice, :attr:`specialize`, is not
+        one)."""
+        return not self.backends and not self.specialize
 
     @property
     def kind(self) -> str:
@@ -124,6 +133,7 @@ class Option:
             "high": self.high,
             "at_rest_length": list(self.at_rest_length),
             "kernel": self.kernel,
+            "specialize": self.specialize,
             "backends": dict(self.backends),
             "roles": list(self.roles),
         }
@@ -202,7 +212,54 @@ class Declaration:
         return tuple(catalog.PARAMS[p] for p in self.params)
 
     def option_args(self) -> tuple[Arg, ...]:
-        return tuple(o.arg() for o in self.options if o.kernel)
+        """The options' arguments of the generic kernels (the specialized options' included:
+        :meth:`choices` removes them)."""
+        return tuple(o.arg() for o in self.options if o.kernel or o.specialize)
+
+    def specialized(self) -> tuple[Option, ...]:
+        """The options with kernels per choice (:attr:`Option.specialize`)."""
+        return tuple(o for o in self.options if o.specialize)
+
+    def labels(self) -> dict[str, tuple[str, ...]]:
+        """Each specialized option's values by code (:func:`.specialize.specialize`)."""
+        return {o.name: o.values for o in self.specialized()}
+
+    def choices(self) -> tuple[dict[str, tuple[int, str]], ...]:
+        """Every combination of the specialized options' choices (option name -> (code, value)),
+        the defaults' first; one empty choice without specialized options."""
+        combos: list[dict] = [{}]
+        for o in self.specialized():
+            order = (o.default,) + tuple(v for v in o.values if v != o.default)
+            combos = [{**c, o.name: (o.code(v), v)} for c in combos for v in order]
+        return tuple(combos)
+
+    def choice_key(self, choice: dict[str, tuple[int, str]]) -> str:
+        """The index's key of a choice: its values, joined by commas."""
+        return ",".join(value for _, value in choice.values())
+
+    def specialize(self, kernel, choice: dict[str, tuple[int, str]]):
+        """``kernel`` (a generic kernel of this declaration) for ``choice`` (:mod:`.specialize`)."""
+        from .specialize import specialize
+
+        return specialize(kernel, choice, self.labels()) if choice else kernel
+
+    def signature(self, kernel) -> dict:
+        """A role's published convention, given its generic kernel: the default choice's
+        :meth:`~.ir.Kernel.signature` and, with specialized options, the generic name (``base``): the
+        kernel of a choice is ``base`` + the choice's suffix (the index row's ``choices``)."""
+        chosen = self.specialize(kernel, self.choices()[0])
+        if not self.specialized():
+            return chosen.signature()
+        return {**chosen.signature(), "base": kernel.name}
+
+    def choice_suffixes(self) -> dict[str, str]:
+        """The index row's ``choices``: each choice's key (:meth:`choice_key`) -> its kernels' name
+        suffix (empty without specialized options)."""
+        from .specialize import choice_suffix
+
+        if not self.specialized():
+            return {}
+        return {self.choice_key(c): choice_suffix(c) for c in self.choices()}
 
     def inputs(self, state: tuple[Arg, ...], params: tuple[str, ...]) -> Inputs:
         """The symbols ``build`` is given: ``state``'s, the parameters ``params``' and the options."""
@@ -224,6 +281,8 @@ class Declaration:
             "module": self.ident,
             "summary": self.summary,
             "roles": list(self.roles),
+            "specialized": [o.name for o in self.specialized()],
+            "choices": self.choice_suffixes(),
             "extras": [{"name": f.name, "doc": f.doc, "unit": f.unit, "odd": f.odd} for f in self.extras],
             **extra,
         }

@@ -72,6 +72,17 @@ def maps_table(index: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _per_choice(row: dict) -> list[str]:
+    """The line saying that a map's options with kernels per choice are not kernel arguments."""
+    if not row["specialized"]:
+        return []
+    names = ", ".join(f"`{o}`" for o in row["specialized"])
+    return [
+        f"- kernels per choice of {names} (not an argument: `<kernel>_<option>_<value>`, listed here at "
+        f"the defaults; a first call compiles the kernels of its choice only)"
+    ]
+
+
 def maps_page(index: dict) -> str:
     """docs/maps.md: every map with its equations, parameters, options, outputs and kernels."""
     out = [
@@ -104,6 +115,7 @@ def maps_page(index: dict) -> str:
             f"- stance arguments: {', '.join(f'`{a}`' for a in kernels['stance']['args'])}",
             f"- apex-return arguments: {', '.join(f'`{a}`' for a in kernels['apex_return']['args'])}",
             f"- requires: {', '.join(row['requires']) or 'nothing'}",
+            *_per_choice(row),
             f"- generated module `slipmaps.generated.{row['module']}`: "
             + ", ".join(f"`{k['name']}`" for role, k in kernels.items() if not role.endswith("_jacobian")),
         ]
@@ -175,6 +187,7 @@ def _halves_page(index: dict) -> list[str]:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
         out += [
             f"- arguments: {', '.join(f'`{a}`' for a in row['kernels']['half']['args'])}",
+            *_per_choice(row),
             f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernels']['half']['name']}`, "
             f"`{row['kernels']['half']['name']}_batch`",
         ]

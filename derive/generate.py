@@ -32,7 +32,7 @@ from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import flight_kernels
 from .render import render
 from .status import STATUS_CODES
-from .tangent import Differentiator
+from .tangent import Differentiator, widened
 from .wrap import LIMIT, wrap
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -99,10 +99,15 @@ def _callee_modules(mod: Module) -> set[str]:
 def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
     """The Jacobian kernels of every map (:meth:`MapSpec.jacobian_kernels`) and of the kernels they
     call, one module ``<module>_jacobian`` per module of the differentiated kernels."""
-    diff = Differentiator()
-    for spec in (*all_maps(), ground_truth()):
-        spec.jacobian_kernels(diff, flights)
-    diff.build()
+    widen: dict = {}
+    for _ in range(2):  # the second pass with one vector JVP per callee for all its callers' patterns
+        diff = Differentiator(widen=widen)
+        for spec in (*all_maps(), ground_truth()):
+            spec.jacobian_kernels(diff, flights)
+        diff.build()
+        widen = widened(diff.asked)
+        if not widen:
+            break
     by_module: dict[str, list] = {}
     for kernel in diff.kernels.values():
         by_module.setdefault(kernel.module, []).append(kernel)

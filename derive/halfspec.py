@@ -25,6 +25,7 @@ import sympy as sp
 from . import catalog
 from .declaration import Declaration, Inputs
 from .ir import Arg, Batch, Field, Group, Kernel, Module, Step, positive, sym
+from .specialize import module_kernels
 
 __all__ = ["HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
 
@@ -83,7 +84,8 @@ class HalfSpec(Declaration):
     def args(self) -> tuple[Arg, ...]:
         return start_args(self.start) + self.param_args() + self.option_args()
 
-    def kernel(self) -> Kernel:
+    def kernel(self, choice: dict | None = None) -> Kernel:
+        """The half's kernel of ``choice`` of the specialized options (default: the defaults')."""
         if "kernel" not in self._cache:
             state = start_args(self.start)
             self._cache["kernel"] = Kernel(
@@ -96,14 +98,16 @@ class HalfSpec(Declaration):
                 batch=Batch(tuple(a.name for a in state)),
                 module=self.ident,
             )
-        return self._cache["kernel"]
+        return self.specialize(self._cache["kernel"], self.choices()[0] if choice is None else choice)
 
     def module(self) -> Module:
         return Module(
             name=self.ident,
             doc=f"{self.title} (report section {self.section}): {self.start} -> {self.end}.",
             source=self.source,
-            kernels=lambda: (self.kernel(),),
+            kernels=lambda: module_kernels(
+                self.ident, (), [self.kernel(c) for c in self.choices()], self.labels()
+            ),
         )
 
     def index_row(self) -> dict:
@@ -112,5 +116,5 @@ class HalfSpec(Declaration):
             start=self.start,
             end=self.end,
             requires=[],
-            kernels={"half": self.kernel().signature()},
+            kernels={"half": self.signature(self.kernel({}))},
         )

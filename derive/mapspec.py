@@ -28,6 +28,7 @@ import sympy as sp
 from . import catalog
 from .declaration import Declaration, Inputs, Option
 from .ir import STATUS, Arg, Batch, Call, Group, Kernel, Module, Stage, Step, sym
+from .specialize import module_kernels
 from .tangent import Differentiator
 
 __all__ = ["MapBuild", "MapInputs", "MapSpec", "Option"]
@@ -102,8 +103,17 @@ class MapSpec(Declaration):
             self._cache["build"] = self.build(self.inputs(catalog.TOUCHDOWN, self.params + ("q_r_lo",)))
         return self._cache["build"]
 
-    def stance_kernel(self) -> Kernel:
-        return Kernel(
+    def stance_kernel(self, choice: dict | None = None) -> Kernel:
+        """The stance kernel of ``choice`` of the specialized options (default: the defaults')."""
+        return self.specialize(self._stance_kernel(), self._choice(choice))
+
+    def _choice(self, choice: dict | None) -> dict:
+        return self.choices()[0] if choice is None else choice
+
+    def _stance_kernel(self) -> Kernel:
+        if "stance" in self._cache:
+            return self._cache["stance"]
+        self._cache["stance"] = Kernel(
             name=self.kernel_name("stance"),
             summary=f"{self.title}: touchdown state -> bottom and liftoff states.",
             equations=self.equations,
@@ -115,6 +125,7 @@ class MapSpec(Declaration):
             module=self.ident,
             inline=self.inline,
         )
+        return self._cache["stance"]
 
     def stance_call(
         self,
@@ -135,27 +146,30 @@ class MapSpec(Declaration):
         }
         return Call(self.stance_kernel(), args, bind, comment=comment or f"stance: {self.title}")
 
-    def state_at_kernel(self) -> Kernel | None:
+    def state_at_kernel(self, choice: dict | None = None) -> Kernel | None:
         if self.built().state_at is None:
             return None
         t = catalog.TIME
-        return Kernel(
-            name=self.kernel_name("state_at"),
-            summary=f"{self.title}: the polar state a time t after touchdown.",
-            equations=self.equations,
-            args=(t,) + self.stance_args(),
-            steps=self.domain_steps() + self.built().state_at(t.symbol),
-            outputs=catalog.TRAJECTORY,
-            batch=Batch((t.name,)),
-            module=self.ident,
+        return self.specialize(
+            Kernel(
+                name=self.kernel_name("state_at"),
+                summary=f"{self.title}: the polar state a time t after touchdown.",
+                equations=self.equations,
+                args=(t,) + self.stance_args(),
+                steps=self.domain_steps() + self.built().state_at(t.symbol),
+                outputs=catalog.TRAJECTORY,
+                batch=Batch((t.name,)),
+                module=self.ident,
+            ),
+            self._choice(choice),
         )
 
-    def apex_return_kernel(self, flight_kernels: Mapping[str, Kernel]) -> Kernel:
+    def apex_return_kernel(self, flight_kernels: Mapping[str, Kernel], choice: dict | None = None) -> Kernel:
         """Apex -> touchdown (exact ballistic descent onto ground ``ground`` higher) -> this map's
         stance -> liftoff -> next apex (exact ballistic ascent), and the step's geometry. The apex
         speed is signed: the step's direction (its sign) is the one the liftoff must keep."""
         to_td, to_apex = flight_kernels["apex_to_touchdown"], flight_kernels["liftoff_to_apex"]
-        stance = self.stance_kernel()
+        stance = self._stance_kernel()
         td = ("td_q_r", "td_q_rd", "td_q_th", "td_q_thd")
         touchdown_names = [a.name for a in catalog.TOUCHDOWN]
         passthrough = {a.name: a.symbol for a in stance.args if a.name not in touchdown_names}
@@ -208,15 +222,18 @@ class MapSpec(Declaration):
                 comment="the step: apex to the foot, the foot to the next apex",
             ),
         )
-        return Kernel(
-            name=self.kernel_name("apex_return"),
-            summary=f"Apex-return map: exact flights, stance by {self.title}.",
-            equations=self.equations,
-            args=self.apex_args(),
-            steps=steps,
-            outputs=catalog.APEX_RETURN + Group("", self.extras),
-            batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
-            module=self.ident,
+        return self.specialize(
+            Kernel(
+                name=self.kernel_name("apex_return"),
+                summary=f"Apex-return map: exact flights, stance by {self.title}.",
+                equations=self.equations,
+                args=self.apex_args(),
+                steps=steps,
+                outputs=catalog.APEX_RETURN + Group("", self.extras),
+                batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+                module=self.ident,
+            ),
+            self._choice(choice),
         )
 
     # -- derivatives ---------------------------------------------------------------------------
@@ -239,27 +256,40 @@ class MapSpec(Declaration):
         ``<ident>_jacobian``; the kernels they call land in ``diff.kernels`` too. The stance one is
         built first, so that the apex-return kernel's call of the stance reuses it (a superset of the
         arguments active there: the touchdown leg length is not)."""
-        diff.jacobian(
-            self.stance_kernel(),
-            self.stance_wrt(),
-            name=self.kernel_name("stance_jacobian"),
-            summary=f"{self.title}: stance outputs and their derivatives with respect to the touchdown "
-            "state and the stiffness.",
-            batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
-        )
-        diff.jacobian(
-            self.apex_return_kernel(flight_kernels),
-            self.apex_wrt(),
-            name=self.kernel_name("apex_return_jacobian"),
-            summary=f"Apex-return map by {self.title}, and its derivatives with respect to the apex, "
-            "the touchdown angle and the stiffness.",
-            batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
-        )
+        for choice in self.choices():
+            suffix = self._suffix(choice)
+            diff.jacobian(
+                self.stance_kernel(choice),
+                self.stance_wrt(),
+                name=self.kernel_name("stance_jacobian") + suffix,
+                summary=f"{self.title}: stance outputs and their derivatives with respect to the "
+                "touchdown state and the stiffness.",
+                batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
+            )
+            diff.jacobian(
+                self.apex_return_kernel(flight_kernels, choice),
+                self.apex_wrt(),
+                name=self.kernel_name("apex_return_jacobian") + suffix,
+                summary=f"Apex-return map by {self.title}, and its derivatives with respect to the apex, "
+                "the touchdown angle and the stiffness.",
+                batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+            )
+
+    @staticmethod
+    def _suffix(choice: dict) -> str:
+        from .specialize import choice_suffix
+
+        return choice_suffix(choice)
 
     def kernels(self, flight_kernels: Mapping[str, Kernel]) -> tuple[Kernel, ...]:
-        state_at = self.state_at_kernel()
-        main = (self.stance_kernel(),) + ((state_at,) if state_at else ())
-        return self.built().helpers + main + (self.apex_return_kernel(flight_kernels),)
+        """Per choice of the specialized options: the stance, state-at-time and apex-return kernels;
+        before them the kernels of this module they call, and the helpers."""
+        main: list[Kernel] = []
+        for choice in self.choices():
+            state_at = self.state_at_kernel(choice)
+            main += [self.stance_kernel(choice), *((state_at,) if state_at else ())]
+            main.append(self.apex_return_kernel(flight_kernels, choice))
+        return module_kernels(self.ident, self.built().helpers, main, self.labels())
 
     def module(self, flight_kernels: Mapping[str, Kernel]) -> Module:
         return Module(
@@ -274,20 +304,23 @@ class MapSpec(Declaration):
     def index_row(self, flight_kernels: Mapping[str, Kernel]) -> dict:
         """The map's row of the generated index: what ``slipmaps maps`` lists, and every kernel's
         calling convention by role (:meth:`~.ir.Kernel.signature`), which the runtime fills by name."""
-        stance, state_at = self.stance_kernel(), self.state_at_kernel()
-        apex = self.apex_return_kernel(flight_kernels)
+        stance, state_at = self._stance_kernel(), self.state_at_kernel({})
+        apex = self.apex_return_kernel(flight_kernels, {})
         jac_module = f"{self.ident}_jacobian"
-        kernels = {"stance": stance.signature(), "apex_return": apex.signature()}
+        kernels = {"stance": self.signature(stance), "apex_return": self.signature(apex)}
         if state_at is not None:
-            kernels["state_at"] = state_at.signature()
+            kernels["state_at"] = self.signature(state_at)
         for role, primal, wrt in (
             ("stance", stance, self.stance_wrt()),
             ("apex_return", apex, self.apex_wrt()),
         ):
+            sig = self.signature(primal)
             kernels[f"{role}_jacobian"] = {
-                **primal.signature(wrt=list(wrt)),
+                **sig,
+                "wrt": list(wrt),
                 "module": jac_module,
-                "name": self.kernel_name(f"{role}_jacobian"),
+                "name": sig["name"].replace(primal.name, self.kernel_name(f"{role}_jacobian"), 1),
+                **({"base": self.kernel_name(f"{role}_jacobian")} if "base" in sig else {}),
             }
         return self.row(
             requires=list(self.requires),

@@ -215,6 +215,12 @@ class Differentiator:
     _jvps: dict[tuple, _Derived] = field(default_factory=dict)
     _public: dict[tuple, dict] = field(default_factory=dict)
     _pending: list = field(default_factory=list)
+    #: (callee module, name, directions) -> the pattern its vector JVPs are widened to
+    #: (:func:`widened`: one kernel for the patterns of every caller, e.g. the choices of a
+    #: specialized option, instead of one per pattern).
+    widen: dict[tuple, tuple] = field(default_factory=dict)
+    #: The patterns asked for, by the same key (what :func:`widened` joins).
+    asked: dict[tuple, set] = field(default_factory=dict)
 
     # -- public ------------------------------------------------------------------------------------
     def jacobian(
@@ -278,6 +284,7 @@ class Differentiator:
         ``j`` has along argument ``a`` the component ``pattern[j][i]`` of ``a = arg_names[i]``: "0",
         "1" or "s" (passed as the argument ``d_<a>__<j>``)."""
         key = (kernel.module, kernel.name, pattern)
+        self.asked.setdefault(key[:2] + (len(pattern),), set()).add(pattern)
         if key not in self._jvps:
             dirs = tuple(str(j) for j in range(len(pattern)))
             seeds: dict[str, dict] = {}
@@ -368,6 +375,20 @@ class Differentiator:
         if len(active) <= len(dirs):
             return "jacobian", active
         return "jvp", None
+
+
+def widened(asked: dict[tuple, set]) -> dict[tuple, tuple]:
+    """For each callee and number of directions asked for more than one pattern (a
+    :attr:`Differentiator.asked`), their join: an entry all of them agree on is kept ("0" or "1",
+    built in), any other passed ("s")."""
+    out = {}
+    for key, patterns in asked.items():
+        if len(patterns) > 1:
+            rows = zip(*sorted(patterns), strict=True)
+            out[key] = tuple(
+                tuple(e[0] if len(set(e)) == 1 else "s" for e in zip(*row, strict=True)) for row in rows
+            )
+    return out
 
 
 #: The generic direction of the tangent code a loop runs once per direction (:meth:`_Ctx.looped`).
@@ -536,6 +557,10 @@ class _Ctx:
             return "0" if t == 0 else "1" if t == 1 else "s"
 
         pattern = tuple(tuple(kind(arg_t[a][w]) for a in callee.arg_names) for w in dirs)
+        wide = self.diff.widen.get((callee.module, callee.name, len(pattern)), pattern)
+        if any(x != y != "s" for p, q in zip(pattern, wide, strict=True) for x, y in zip(p, q, strict=True)):
+            raise ValueError(f"vector JVP of {callee.name}: pattern {pattern} is not within {wide}")
+        pattern = wide
         derived = self.diff._vector_jvp(callee, pattern)
         args = dict(c.args)
         for j, (w, row) in enumerate(zip(dirs, pattern, strict=True)):

@@ -38,6 +38,8 @@ Modules:
         kernels, and for a map its stance and apex-return Jacobians.
     geyer_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels,
         and for a map its stance and apex-return Jacobians.
+    geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP
+        kernels, and for a map its stance and apex-return Jacobians.
     gravity_type0_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
         gravity_type0: JVP kernels, and for a map its stance and apex-return Jacobians.
     gravity_type1_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
@@ -50,8 +52,6 @@ Modules:
         gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians.
     gravity_type5_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
         gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians.
-    geyer_vs_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP
-        kernels, and for a map its stance and apex-return Jacobians.
     iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
         iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP

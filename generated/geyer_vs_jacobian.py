@@ -32,6 +32,184 @@ _NAN105 = (NAN,) * 105
 
 
 @njit(cache=True, error_model="numpy")
+def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
+    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the
+    derivatives of its outputs with respect to p, E_ab, k_c.
+
+    Report equations: 153.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments:
+        p: angular momentum p_th [kg m^2/s]
+        E_ab: total energy E_ab [J]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+
+    Returns a tuple:
+        q_r_b: bottom leg length of (153) [m]
+        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c
+            (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 309
+    # inputs: finite and inside their domains
+    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((g_s > 0.0))):
+        return _NAN4 + (STATUS_INVALID_INPUT,)
+    # a start left of the root: V >= E there
+    _x0 = (0.5)*l0
+    _x1 = g_s*m
+    _x73 = (1.0/k_c)
+    _x2 = _x1*_x73
+    _x3 = (0.5)*_x2
+    _x4 = (1.0/math.sqrt(k_c))
+    _x5 = _x2 - l0
+    _x6 = -_x5
+    _x7 = _x6**2
+    _x8 = _x7*k_c
+    _x9 = _x1*_x6
+    _x10 = l0**2
+    _x11 = _x10*k_c
+    _x12 = -2.0*E_ab + _x11
+    _x13 = -_x12 + 2.0*_x6*k_c*l0 - _x8 - 2.0*_x9
+    _x14 = math.sqrt(_x13)
+    _x15 = _x14*_x4
+    _x16 = abs(p)
+    _x17 = -E_ab + (0.5)*_x11
+    _x18 = -_x17 + _x6*k_c*l0 - 0.5*_x8 - _x9
+    _x19 = math.sqrt(2.0)
+    _x20 = (1.0/math.sqrt(m))
+    _x21 = _x19*_x20
+    _x22 = _x21/math.sqrt(_x18)
+    _x23 = _x16*_x22
+    _x24 = _x15 + _x5
+    q_start = _x0 - 0.5*_x15 + (0.25)*_x23 - _x3 + (0.5)*abs((0.5)*_x23 + _x24)
+    _x25 = (0.0 if p == 0 else math.copysign(1, p))
+    _x28 = _x5**2
+    _x29 = _x28*k_c
+    _x30 = _x1*_x5
+    _x31 = _x5*l0
+    _x32 = _x31*k_c
+    _x40 = _x17 + (0.5)*_x29 - _x30 + _x32
+    _x41 = (0.0 if _x40 == 0 else math.copysign(1, _x40))
+    _x42 = _x40/_x41
+    _x43 = (1.0/math.sqrt(_x42))
+    _x38 = (0.5)*math.atan2(0.0, _x18)
+    _x39 = math.sin(_x38)
+    _x44 = _x21*_x43
+    _x45 = _x39*_x44
+    _x26 = (0.5)*math.atan2(0.0, _x13)
+    _x27 = math.sin(_x26)
+    _x33 = _x12 + _x29 - 2.0*_x30 + 2.0*_x32
+    _x34 = (0.0 if _x33 == 0 else math.copysign(1, _x33))
+    _x35 = math.sqrt(_x33/_x34)
+    _x36 = p/_x25
+    _x37 = (0.5)*_x36
+    _x46 = _x27*_x35*_x4 - _x37*_x45
+    _x47 = math.cos(_x38)
+    _x48 = math.cos(_x26)
+    _x49 = _x35*_x4*_x48 + _x37*_x44*_x47 + _x5
+    _x50 = _x22*_x37 + _x24
+    _x51 = (1.0/_x50)
+    _x52 = (0.0 if _x50 == 0 else math.copysign(1, _x50))
+    _x53 = (0.5)*_x51*_x52
+    d_q_start__p = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
+    _x54 = (0.5)*_x4
+    _x55 = _x54/_x14
+    _x56 = _x16*_x21/_x18**(1.5)
+    _x57 = (1.0/_x35)
+    _x58 = _x34*_x57
+    _x59 = _x4*_x58
+    _x60 = (0.25)*_x21*_x36*_x41/_x42**(1.5)
+    _x61 = _x39*_x60
+    _x62 = _x47*_x60
+    d_q_start__E_ab = ((0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55
+        - 0.125*_x56)
+    _x63 = _x73**2
+    _x64 = _x1*_x63
+    _x65 = k_c**(-1.5)
+    _x66 = _x63*g_s**2*m**2
+    _x67 = _x2*l0
+    _x68 = (0.5)*_x10 + _x66 - _x67
+    _x69 = (0.5)*_x35*_x65
+    _x70 = _x2*_x5
+    _x71 = _x10 + _x28 + 2.0*_x31 + 2.0*_x66 - 2.0*_x67 - 2.0*_x70
+    _x72 = (0.5)*_x28 + _x31 + _x68 - _x70
+    d_q_start__k_c = ((0.25)*_x14*_x65 + _x53*(_x46*(_x27*_x54*_x58*_x71 - _x27*_x69 + _x61*_x72)
+        + _x49*((0.5)*_x34*_x4*_x48*_x57*_x71 - _x48*_x69 - _x62*_x72 - _x64)) - _x55*(-_x2*_x6 + _x6*l0
+        - _x68 - 0.5*_x7) + (0.25)*_x56*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x66 + (0.25)*_x7)
+        + (0.5)*_x64)
+    # E_ab above the minimum of the potential
+    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
+            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+    # Newton's method on V - E: monotone from the left
+    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
+    # included (its values are visible after the loop)
+    _pki0 = (q_start, d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
+    _pk0 = _pki0
+    passes = 0.0
+    _conv0 = False
+    _last0 = max(int(60.0), 0)
+    for _it0 in range(_last0 + 1):
+        (qb, d_qb__p, d_qb__E_ab, d_qb__k_c, ) = _pk0
+        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and passes > 0.0:
+            return _NAN4 + (STATUS_NOT_CONVERGED,)
+        if _conv0 or _it0 == _last0:
+            break
+        _x77 = (1.0/qb)
+        _x74 = _x77**3
+        _x75 = (1.0/m)
+        _x76 = _x75*p**2
+        slope = -_x74*_x76 + g_s*m - k_c*l0 + k_c*qb
+        _pd__0 = 3.0*_x76*_x77**4 + k_c
+        d_slope__p = _pd__0*d_qb__p - 2.0*_x74*_x75*p
+        d_slope__E_ab = _pd__0*d_qb__E_ab
+        d_slope__k_c = _pd__0*d_qb__k_c - l0 + qb
+        # V decreasing left of the root
+        if not ((slope < 0.0)):
+            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+        # next values
+        _x78 = (1.0/slope)
+        _x79 = g_s*m
+        _x80 = k_c*qb
+        _x81 = (0.5)*l0**2
+        _x82 = qb**2
+        _x83 = (0.5)*_x82
+        _x84 = (1.0/_x82)
+        _x85 = (1.0/m)
+        _x86 = _x85*p**2
+        _x87 = -E_ab + _x79*qb - _x80*l0 + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
+        qb__next = -_x78*_x87 + qb
+        _pd__1 = -_x78*(_x79 + _x80 - _x86/qb**3 - k_c*l0) + 1.0
+        _pd__2 = _x78**2*_x87
+        d_qb__next__p = _pd__1*d_qb__p + _pd__2*d_slope__p - _x78*_x84*_x85*p
+        d_qb__next__E_ab = _pd__1*d_qb__E_ab + _pd__2*d_slope__E_ab + _x78
+        d_qb__next__k_c = _pd__1*d_qb__k_c + _pd__2*d_slope__k_c - _x78*(_x81 + _x83 - l0*qb)
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = 1e-12 > 0.0 and (abs(qb__next - qb) <= 1e-12*(l0))
+        _pkn0 = (qb__next, d_qb__next__p, d_qb__next__E_ab, d_qb__next__k_c, )
+        _pk0 = _pkn0
+        passes += 1.0
+    q_r_b = qb
+    # the bottom root is at most l0
+    if not ((qb <= l0)):
+        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+    # derivatives of the outputs
+    d_q_r_b__p = d_qb__p
+    d_q_r_b__E_ab = d_qb__E_ab
+    d_q_r_b__k_c = d_qb__k_c
+    # (internal helper: its callers check that their outputs are finite)
+    return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
+
+
+@njit(cache=True, error_model="numpy")
 def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
         gravity, iterations, tol):
     """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with
@@ -1029,184 +1207,6 @@ def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_
         out[i, 89] = res[89]
         out[i, 90] = res[90]
         status[i] = res[91]
-
-
-@njit(cache=True, error_model="numpy")
-def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
-    """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the
-    derivatives of its outputs with respect to p, E_ab, k_c.
-
-    Report equations: 153.
-
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        p: angular momentum p_th [kg m^2/s]
-        E_ab: total energy E_ab [J]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-
-    Returns a tuple:
-        q_r_b: bottom leg length of (153) [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
-    """
-    # Total ops: 309
-    # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
-            and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((g_s > 0.0))):
-        return _NAN4 + (STATUS_INVALID_INPUT,)
-    # a start left of the root: V >= E there
-    _x0 = (0.5)*l0
-    _x1 = g_s*m
-    _x73 = (1.0/k_c)
-    _x2 = _x1*_x73
-    _x3 = (0.5)*_x2
-    _x4 = (1.0/math.sqrt(k_c))
-    _x5 = _x2 - l0
-    _x6 = -_x5
-    _x7 = _x6**2
-    _x8 = _x7*k_c
-    _x9 = _x1*_x6
-    _x10 = l0**2
-    _x11 = _x10*k_c
-    _x12 = -2.0*E_ab + _x11
-    _x13 = -_x12 + 2.0*_x6*k_c*l0 - _x8 - 2.0*_x9
-    _x14 = math.sqrt(_x13)
-    _x15 = _x14*_x4
-    _x16 = abs(p)
-    _x17 = -E_ab + (0.5)*_x11
-    _x18 = -_x17 + _x6*k_c*l0 - 0.5*_x8 - _x9
-    _x19 = math.sqrt(2.0)
-    _x20 = (1.0/math.sqrt(m))
-    _x21 = _x19*_x20
-    _x22 = _x21/math.sqrt(_x18)
-    _x23 = _x16*_x22
-    _x24 = _x15 + _x5
-    q_start = _x0 - 0.5*_x15 + (0.25)*_x23 - _x3 + (0.5)*abs((0.5)*_x23 + _x24)
-    _x25 = (0.0 if p == 0 else math.copysign(1, p))
-    _x28 = _x5**2
-    _x29 = _x28*k_c
-    _x30 = _x1*_x5
-    _x31 = _x5*l0
-    _x32 = _x31*k_c
-    _x40 = _x17 + (0.5)*_x29 - _x30 + _x32
-    _x41 = (0.0 if _x40 == 0 else math.copysign(1, _x40))
-    _x42 = _x40/_x41
-    _x43 = (1.0/math.sqrt(_x42))
-    _x38 = (0.5)*math.atan2(0.0, _x18)
-    _x39 = math.sin(_x38)
-    _x44 = _x21*_x43
-    _x45 = _x39*_x44
-    _x26 = (0.5)*math.atan2(0.0, _x13)
-    _x27 = math.sin(_x26)
-    _x33 = _x12 + _x29 - 2.0*_x30 + 2.0*_x32
-    _x34 = (0.0 if _x33 == 0 else math.copysign(1, _x33))
-    _x35 = math.sqrt(_x33/_x34)
-    _x36 = p/_x25
-    _x37 = (0.5)*_x36
-    _x46 = _x27*_x35*_x4 - _x37*_x45
-    _x47 = math.cos(_x38)
-    _x48 = math.cos(_x26)
-    _x49 = _x35*_x4*_x48 + _x37*_x44*_x47 + _x5
-    _x50 = _x22*_x37 + _x24
-    _x51 = (1.0/_x50)
-    _x52 = (0.0 if _x50 == 0 else math.copysign(1, _x50))
-    _x53 = (0.5)*_x51*_x52
-    d_q_start__p = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
-    _x54 = (0.5)*_x4
-    _x55 = _x54/_x14
-    _x56 = _x16*_x21/_x18**(1.5)
-    _x57 = (1.0/_x35)
-    _x58 = _x34*_x57
-    _x59 = _x4*_x58
-    _x60 = (0.25)*_x21*_x36*_x41/_x42**(1.5)
-    _x61 = _x39*_x60
-    _x62 = _x47*_x60
-    d_q_start__E_ab = ((0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55
-        - 0.125*_x56)
-    _x63 = _x73**2
-    _x64 = _x1*_x63
-    _x65 = k_c**(-1.5)
-    _x66 = _x63*g_s**2*m**2
-    _x67 = _x2*l0
-    _x68 = (0.5)*_x10 + _x66 - _x67
-    _x69 = (0.5)*_x35*_x65
-    _x70 = _x2*_x5
-    _x71 = _x10 + _x28 + 2.0*_x31 + 2.0*_x66 - 2.0*_x67 - 2.0*_x70
-    _x72 = (0.5)*_x28 + _x31 + _x68 - _x70
-    d_q_start__k_c = ((0.25)*_x14*_x65 + _x53*(_x46*(_x27*_x54*_x58*_x71 - _x27*_x69 + _x61*_x72)
-        + _x49*((0.5)*_x34*_x4*_x48*_x57*_x71 - _x48*_x69 - _x62*_x72 - _x64)) - _x55*(-_x2*_x6 + _x6*l0
-        - _x68 - 0.5*_x7) + (0.25)*_x56*(-_x0*_x2 - _x0*_x6 + (0.25)*_x10 + _x3*_x6 + (0.5)*_x66 + (0.25)*_x7)
-        + (0.5)*_x64)
-    # E_ab above the minimum of the potential
-    if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
-            + (0.5)*k_c*(-g_s*m/k_c + l0)**2)):
-        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    # Newton's method on V - E: monotone from the left
-    # the loop's variables in one tuple, unpacked at the top of every pass, the final one
-    # included (its values are visible after the loop)
-    _pki0 = (q_start, d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
-    _pk0 = _pki0
-    passes = 0.0
-    _conv0 = False
-    _last0 = max(int(60.0), 0)
-    for _it0 in range(_last0 + 1):
-        (qb, d_qb__p, d_qb__E_ab, d_qb__k_c, ) = _pk0
-        if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and passes > 0.0:
-            return _NAN4 + (STATUS_NOT_CONVERGED,)
-        if _conv0 or _it0 == _last0:
-            break
-        _x77 = (1.0/qb)
-        _x74 = _x77**3
-        _x75 = (1.0/m)
-        _x76 = _x75*p**2
-        slope = -_x74*_x76 + g_s*m - k_c*l0 + k_c*qb
-        _pd__0 = 3.0*_x76*_x77**4 + k_c
-        d_slope__p = _pd__0*d_qb__p - 2.0*_x74*_x75*p
-        d_slope__E_ab = _pd__0*d_qb__E_ab
-        d_slope__k_c = _pd__0*d_qb__k_c - l0 + qb
-        # V decreasing left of the root
-        if not ((slope < 0.0)):
-            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-        # next values
-        _x78 = (1.0/slope)
-        _x79 = g_s*m
-        _x80 = k_c*qb
-        _x81 = (0.5)*l0**2
-        _x82 = qb**2
-        _x83 = (0.5)*_x82
-        _x84 = (1.0/_x82)
-        _x85 = (1.0/m)
-        _x86 = _x85*p**2
-        _x87 = -E_ab + _x79*qb - _x80*l0 + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
-        qb__next = -_x78*_x87 + qb
-        _pd__1 = -_x78*(_x79 + _x80 - _x86/qb**3 - k_c*l0) + 1.0
-        _pd__2 = _x78**2*_x87
-        d_qb__next__p = _pd__1*d_qb__p + _pd__2*d_slope__p - _x78*_x84*_x85*p
-        d_qb__next__E_ab = _pd__1*d_qb__E_ab + _pd__2*d_slope__E_ab + _x78
-        d_qb__next__k_c = _pd__1*d_qb__k_c + _pd__2*d_slope__k_c - _x78*(_x81 + _x83 - l0*qb)
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = 1e-12 > 0.0 and (abs(qb__next - qb) <= 1e-12*(l0))
-        _pkn0 = (qb__next, d_qb__next__p, d_qb__next__E_ab, d_qb__next__k_c, )
-        _pk0 = _pkn0
-        passes += 1.0
-    q_r_b = qb
-    # the bottom root is at most l0
-    if not ((qb <= l0)):
-        return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
-    # derivatives of the outputs
-    d_q_r_b__p = d_qb__p
-    d_q_r_b__E_ab = d_qb__E_ab
-    d_q_r_b__k_c = d_qb__k_c
-    # (internal helper: its callers check that their outputs are finite)
-    return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")

@@ -14,7 +14,7 @@
 #   gravity_type3.py sha256:c3762bab48ece072
 #   gravity_type4.py sha256:dfdb6ca60108eea5
 #   gravity_type5.py sha256:802b0ef9c9c3aa72
-#   iterative.py sha256:b83092ee58fe80fb
+#   iterative.py sha256:61e3c58e4a41b6b4
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -31,7 +31,8 @@ from .gravity_type2 import gravity_type2_stance
 from .gravity_type3 import gravity_type3_stance
 from .gravity_type4 import gravity_type4_stance
 from .gravity_type5 import gravity_type5_stance
-from .iterative import schwind_compression
+from .iterative import (schwind_compression_nodes_1, schwind_compression_nodes_2, schwind_compression_nodes_3,
+    schwind_compression_nodes_4, schwind_compression_nodes_6)
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -42,8 +43,8 @@ _NAN6 = (NAN,) * 6
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
-        zeroth):
+def iterative_compression_nodes_4_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
     """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
     state.
 
@@ -58,15 +59,97 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
         l0: rest leg length l0 [m], > 0
         k_c: leg stiffness while compressing k_c [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        nodes: option nodes: Gauss-Legendre nodes in u per half-stance (1 = the report's mean-value point
-            (41)): 0 = 1, 1 = 2, 2 = 3, 3 = 4, 4 = 6
         iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
         tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
             1]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
-            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
-            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
-            geyer-vs
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN6 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations,
+        tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
 
     Returns a tuple:
         t_half: time from the start state to the end state [s]
@@ -81,128 +164,34 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(nodes) and math.isfinite(iterations)
-            and math.isfinite(tol) and math.isfinite(zeroth) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s
-            > 0.0)) and ((nodes == 0.0) or (nodes == 1.0) or (nodes == 2.0) or (nodes == 3.0) or (nodes
-            == 4.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-            <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)) and ((zeroth == 0.0) or (zeroth == 1.0) or (zeroth
-            == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0) or (zeroth
-            == 7.0) or (zeroth == 8.0))):
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
-    # zeroth iterate
-    if zeroth == 1.0:
-        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
-        _x0 = k_c*q_r_td
-        _x1 = g_s*m*math.cos(q_th_td)
-        _x2 = q_thd_td**2
-        _x3 = m*q_rd_td**2
-        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
-            + k_c*l0)**2)) + q_r_td)
-        z_b_q_r = _x4
-        z_b_q_th = q_th_td
-        z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
-        z_lo_q_th = 0.0
-        z_lo_q_thd = 0.0
-    elif zeroth == 0.0:
-        # zeroth iterate: Geyer et al.'s approximate stance map
-        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
-        if _c0[10] != STATUS_OK:
-            return _NAN6 + (_c0[10],)
-        z_b_q_r = _c0[2]
-        z_b_q_th = _c0[4]
-        z_b_q_thd = _c0[5]
-        z_lo_q_th = _c0[8]
-        z_lo_q_thd = _c0[9]
-    elif zeroth == 2.0:
-        # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            1.0, 0.0))
-        if _c1[12] != STATUS_OK:
-            return _NAN6 + (_c1[12],)
-        z_b_q_r = _c1[2]
-        z_b_q_th = _c1[4]
-        z_b_q_thd = _c1[5]
-        z_lo_q_th = _c1[8]
-        z_lo_q_thd = _c1[9]
-    elif zeroth == 3.0:
-        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            100.0, 1e-12))
-        if _c2[12] != STATUS_OK:
-            return _NAN6 + (_c2[12],)
-        z_b_q_r = _c2[2]
-        z_b_q_th = _c2[4]
-        z_b_q_thd = _c2[5]
-        z_lo_q_th = _c2[8]
-        z_lo_q_thd = _c2[9]
-    elif zeroth == 4.0:
-        # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            0.0, 100.0, 1e-12))
-        if _c3[12] != STATUS_OK:
-            return _NAN6 + (_c3[12],)
-        z_b_q_r = _c3[2]
-        z_b_q_th = _c3[4]
-        z_b_q_thd = _c3[5]
-        z_lo_q_th = _c3[8]
-        z_lo_q_thd = _c3[9]
-    elif zeroth == 5.0:
-        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
-            100.0, 1e-12))
-        if _c4[12] != STATUS_OK:
-            return _NAN6 + (_c4[12],)
-        z_b_q_r = _c4[2]
-        z_b_q_th = _c4[4]
-        z_b_q_thd = _c4[5]
-        z_lo_q_th = _c4[8]
-        z_lo_q_thd = _c4[9]
-    elif zeroth == 6.0:
-        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
-            0.0, 100.0, 1e-12))
-        if _c5[12] != STATUS_OK:
-            return _NAN6 + (_c5[12],)
-        z_b_q_r = _c5[2]
-        z_b_q_th = _c5[4]
-        z_b_q_thd = _c5[5]
-        z_lo_q_th = _c5[8]
-        z_lo_q_thd = _c5[9]
-    elif zeroth == 7.0:
-        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-        _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
-        if _c6[12] != STATUS_OK:
-            return _NAN6 + (_c6[12],)
-        z_b_q_r = _c6[2]
-        z_b_q_th = _c6[4]
-        z_b_q_thd = _c6[5]
-        z_lo_q_th = _c6[8]
-        z_lo_q_thd = _c6[9]
-    elif zeroth == 8.0:
-        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0,
-            100.0, 1e-12))
-        if _c7[13] != STATUS_OK:
-            return _NAN6 + (_c7[13],)
-        z_b_q_r = _c7[2]
-        z_b_q_th = _c7[4]
-        z_b_q_thd = _c7[5]
-        z_lo_q_th = _c7[8]
-        z_lo_q_thd = _c7[9]
-    else:
-        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
     # compression half, k_c (report 5.2.1)
-    _c8 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
-        z_b_q_thd, nodes, iterations, tol))
-    if _c8[6] != STATUS_OK:
-        return _NAN6 + (_c8[6],)
-    t_half = _c8[0]
-    end_q_r = _c8[1]
-    end_q_rd = _c8[2]
-    end_q_th = _c8[3]
-    end_q_thd = _c8[4]
-    passes = _c8[5]
+    _c0 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN6 + (_c0[6],)
+    t_half = _c0[0]
+    end_q_r = _c0[1]
+    end_q_rd = _c0[2]
+    end_q_th = _c0[3]
+    end_q_thd = _c0[4]
+    passes = _c0[5]
     # every output finite, or the inputs were far outside a physical range
     if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
             and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
@@ -211,18 +200,3844 @@ def iterative_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, n
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, nodes, iterations, tol,
-        zeroth, out, status):
-    """Parallel batch form of :func:`iterative_compression`.
+def iterative_compression_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_held`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, nodes, iterations, tol, zeroth.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
     """
     for i in prange(out.shape[0]):
-        res = (iterative_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, nodes,
-            iterations, tol, zeroth))
+        res = (iterative_compression_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN6 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
+            m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN6 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations,
+        tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 31
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
+    # compression half, k_c (report 5.2.1)
+    _c0 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN6 + (_c0[6],)
+    t_half = _c0[0]
+    end_q_r = _c0[1]
+    end_q_rd = _c0[2]
+    end_q_th = _c0[3]
+    end_q_thd = _c0[4]
+    passes = _c0[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN6 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
+            m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN6 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations,
+        tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 31
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
+    # compression half, k_c (report 5.2.1)
+    _c0 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN6 + (_c0[6],)
+    t_half = _c0[0]
+    end_q_r = _c0[1]
+    end_q_rd = _c0[2]
+    end_q_th = _c0[3]
+    end_q_thd = _c0[4]
+    passes = _c0[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN6 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
+            m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN6 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations,
+        tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 31
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
+    # compression half, k_c (report 5.2.1)
+    _c0 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN6 + (_c0[6],)
+    t_half = _c0[0]
+    end_q_r = _c0[1]
+    end_q_rd = _c0[2]
+    end_q_th = _c0[3]
+    end_q_thd = _c0[4]
+    passes = _c0[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN6 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
+            m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN6 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations,
+        tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 31
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
+    # compression half, k_c (report 5.2.1)
+    _c0 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c0[6] != STATUS_OK:
+        return _NAN6 + (_c0[6],)
+    t_half = _c0[0]
+    end_q_r = _c0[1]
+    end_q_rd = _c0[2]
+    end_q_th = _c0[3]
+    end_q_thd = _c0[4]
+    passes = _c0[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_held`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN6 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        out[i, 5] = res[5]
+        status[i] = res[6]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol):
+    """Iterative compression half (touchdown to bottom, k_c; converging form): touchdown state -> bottom
+    state.
+
+    Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
+        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
+            1]
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        passes: Picard passes run [1]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 0
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+        return _NAN6 + (STATUS_INVALID_INPUT,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN6 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # compression half, k_c (report 5.2.1)
+    _c1 = (schwind_compression_nodes_6(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, iterations, tol))
+    if _c1[6] != STATUS_OK:
+        return _NAN6 + (_c1[6],)
+    t_half = _c1[0]
+    end_q_r = _c1[1]
+    end_q_rd = _c1[2]
+    end_q_th = _c1[3]
+    end_q_thd = _c1[4]
+    passes = _c1[5]
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
+        return _NAN6 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_compression_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        iterations, tol, out, status):
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
+            m, l0, k_c, g_s, iterations, tol))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -41,8 +41,8 @@ _NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-        zeroth, bottom_length):
+def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
+        iterations, bottom_length):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -59,10 +59,190 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        zeroth: option zeroth: zeroth iterate: a map's bottom and liftoff states (at its default options, with
-            k_c), linear in u between the half's ends: 0 = geyer, 1 = held, 2 = gravity-type0, 3 =
-            gravity-type1, 4 = gravity-type2, 5 = gravity-type3, 6 = gravity-type4, 7 = gravity-type5, 8 =
-            geyer-vs
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Geyer et al.'s approximate stance map
+    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
+    if _c0[10] != STATUS_OK:
+        return _NAN5 + (_c0[10],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
+        iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
         bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
             5.2, closing estimates): 0 = zeroth, 1 = eq153
 
@@ -79,118 +259,27 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
             and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(zeroth) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s
-            > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((zeroth == 0.0) or (zeroth == 1.0)
-            or (zeroth == 2.0) or (zeroth == 3.0) or (zeroth == 4.0) or (zeroth == 5.0) or (zeroth == 6.0)
-            or (zeroth == 7.0) or (zeroth == 8.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
         return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
-    # zeroth iterate
-    if zeroth == 1.0:
-        # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
-        _x0 = k_c*q_r_td
-        _x1 = g_s*m*math.cos(q_th_td)
-        _x2 = q_thd_td**2
-        _x3 = m*q_rd_td**2
-        _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
-            + k_c*l0)**2)) + q_r_td)
-        z_b_q_r = _x4
-        z_b_q_th = q_th_td
-        z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
-        z_lo_q_th = 0.0
-        z_lo_q_thd = 0.0
-    elif zeroth == 0.0:
-        # zeroth iterate: Geyer et al.'s approximate stance map
-        _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
-        if _c0[10] != STATUS_OK:
-            return _NAN5 + (_c0[10],)
-        z_b_q_r = _c0[2]
-        z_b_q_th = _c0[4]
-        z_b_q_thd = _c0[5]
-        z_lo_q_th = _c0[8]
-        z_lo_q_thd = _c0[9]
-    elif zeroth == 2.0:
-        # zeroth iterate: Gravity correction type 0 (leg length l0)
-        _c1 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            1.0, 0.0))
-        if _c1[12] != STATUS_OK:
-            return _NAN5 + (_c1[12],)
-        z_b_q_r = _c1[2]
-        z_b_q_th = _c1[4]
-        z_b_q_thd = _c1[5]
-        z_lo_q_th = _c1[8]
-        z_lo_q_thd = _c1[9]
-    elif zeroth == 3.0:
-        # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-        _c2 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            100.0, 1e-12))
-        if _c2[12] != STATUS_OK:
-            return _NAN5 + (_c2[12],)
-        z_b_q_r = _c2[2]
-        z_b_q_th = _c2[4]
-        z_b_q_thd = _c2[5]
-        z_lo_q_th = _c2[8]
-        z_lo_q_thd = _c2[9]
-    elif zeroth == 4.0:
-        # zeroth iterate: Gravity correction type 2 (average leg length)
-        _c3 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0,
-            0.0, 100.0, 1e-12))
-        if _c3[12] != STATUS_OK:
-            return _NAN5 + (_c3[12],)
-        z_b_q_r = _c3[2]
-        z_b_q_th = _c3[4]
-        z_b_q_thd = _c3[5]
-        z_lo_q_th = _c3[8]
-        z_lo_q_thd = _c3[9]
-    elif zeroth == 5.0:
-        # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-        _c4 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
-            100.0, 1e-12))
-        if _c4[12] != STATUS_OK:
-            return _NAN5 + (_c4[12],)
-        z_b_q_r = _c4[2]
-        z_b_q_th = _c4[4]
-        z_b_q_thd = _c4[5]
-        z_lo_q_th = _c4[8]
-        z_lo_q_thd = _c4[9]
-    elif zeroth == 6.0:
-        # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-        _c5 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0,
-            0.0, 100.0, 1e-12))
-        if _c5[12] != STATUS_OK:
-            return _NAN5 + (_c5[12],)
-        z_b_q_r = _c5[2]
-        z_b_q_th = _c5[4]
-        z_b_q_thd = _c5[5]
-        z_lo_q_th = _c5[8]
-        z_lo_q_thd = _c5[9]
-    elif zeroth == 7.0:
-        # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-        _c6 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
-        if _c6[12] != STATUS_OK:
-            return _NAN5 + (_c6[12],)
-        z_b_q_r = _c6[2]
-        z_b_q_th = _c6[4]
-        z_b_q_thd = _c6[5]
-        z_lo_q_th = _c6[8]
-        z_lo_q_thd = _c6[9]
-    elif zeroth == 8.0:
-        # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-        _c7 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0,
-            100.0, 1e-12))
-        if _c7[13] != STATUS_OK:
-            return _NAN5 + (_c7[13],)
-        z_b_q_r = _c7[2]
-        z_b_q_th = _c7[4]
-        z_b_q_thd = _c7[5]
-        z_lo_q_th = _c7[8]
-        z_lo_q_thd = _c7[9]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
+    _x0 = k_c*q_r_td
+    _x1 = g_s*m*math.cos(q_th_td)
+    _x2 = q_thd_td**2
+    _x3 = m*q_rd_td**2
+    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
+        + k_c*l0)**2)) + q_r_td)
+    z_b_q_r = _x4
+    z_b_q_th = q_th_td
+    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
+    z_lo_q_th = 0.0
+    z_lo_q_thd = 0.0
     # E_ab (114) of the touchdown state
     _x5 = (0.5)*k_c
     _x6 = q_r_td**2
@@ -202,10 +291,10 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         bottom_q_r = z_b_q_r
     elif bottom_length == 1.0:
         # (153): the vertical bottom's quartic
-        _c8 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c8[1] != STATUS_OK:
-            return _NAN5 + (_c8[1],)
-        bottom_q_r = _c8[0]
+        _c0 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c0[1] != STATUS_OK:
+            return _NAN5 + (_c0[1],)
+        bottom_q_r = _c0[0]
     else:
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # bottom leg length q_r_b > 0
@@ -302,18 +391,1312 @@ def iterative_report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
-        iterations, zeroth, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression`.
+def iterative_report_compression_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_held`.
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, zeroth, bottom_length.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
     Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
     ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
     """
     for i in prange(out.shape[0]):
-        res = (iterative_report_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s,
-            variant, iterations, zeroth, bottom_length))
+        res = (iterative_report_compression_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
+            k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 0 (leg length l0)
+    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
+        0.0))
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type0`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
+    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type1`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 2 (average leg length)
+    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type2`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
+    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
+        1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type3`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
+    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
+        100.0, 1e-12))
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type4`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Gravity correction type 5 (time-varying momentum)
+    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
+    if _c0[12] != STATUS_OK:
+        return _NAN5 + (_c0[12],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
+        g_s, variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type5`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
+            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
+        out[i, 0] = res[0]
+        out[i, 1] = res[1]
+        out[i, 2] = res[2]
+        out[i, 3] = res[3]
+        out[i, 4] = res[4]
+        status[i] = res[5]
+
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
+        iterations, bottom_length):
+    """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
+
+    Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
+    132, 133, 134, 135, 154.
+
+    Arguments:
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
+        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
+        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        t_half: time from the start state to the end state [s]
+        end_q_r: leg length [m]
+        end_q_rd: leg length rate [m/s]
+        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        end_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 130
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # q_rd_td < 0
+    if not ((q_rd_td < 0.0)):
+        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+    # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
+    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
+        1e-12))
+    if _c0[13] != STATUS_OK:
+        return _NAN5 + (_c0[13],)
+    z_b_q_r = _c0[2]
+    z_b_q_th = _c0[4]
+    z_b_q_thd = _c0[5]
+    z_lo_q_th = _c0[8]
+    z_lo_q_thd = _c0[9]
+    # E_ab (114) of the touchdown state
+    _x0 = (0.5)*k_c
+    _x1 = q_r_td**2
+    _x2 = (0.5)*m
+    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
+        - k_c*l0*q_r_td)
+    # bottom leg length
+    if bottom_length == 0.0:
+        bottom_q_r = z_b_q_r
+    elif bottom_length == 1.0:
+        # (153): the vertical bottom's quartic
+        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
+        if _c1[1] != STATUS_OK:
+            return _NAN5 + (_c1[1],)
+        bottom_q_r = _c1[0]
+    else:
+        return _NAN5 + (STATUS_INVALID_INPUT,)
+    # bottom leg length q_r_b > 0
+    if not ((bottom_q_r > 0.0)):
+        return _NAN5 + (STATUS_FALL,)
+    # bottom below touchdown
+    if not ((-bottom_q_r + q_r_td > 0.0)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
+    _x3 = 4.0**(-iterations)
+    _x4 = _x3*(bottom_q_r - q_r_td)
+    _x5 = (0.25)*_x4
+    _x6 = _x5 + q_r_td
+    _x7 = _x6**2
+    _x8 = k_c*m
+    _x9 = _x6**3
+    _x10 = m*z_b_q_r**2*z_b_q_thd
+    _x11 = math.sqrt(1.0 - 0.25*_x3)
+    _x12 = -_x10 + m*q_r_td**2*q_thd_td
+    _x13 = q_th_td - z_b_q_th
+    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
+        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
+    _x15 = math.sqrt(1.0 - _x3)
+    c_e_n = _x4
+    c_e_z = _x5
+    c_rad_z = _x14
+    c_Q0 = _x13*_x15 + z_b_q_th
+    c_P0 = _x10 + _x12*_x15
+    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
+    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
+    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
+        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
+    c_e = c_e_n
+    c_Q = c_Q0
+    c_P = c_P0
+    c_T = c_T0
+    c_steps = 0.0
+    _conv0 = False
+    for _it0 in range(int(iterations)):
+        _x16 = c_e + q_r_td
+        _x17 = _x16**2
+        _x18 = k_c*m
+        _x19 = _x16**3
+        c_x = _x16
+        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
+            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
+        # H^{-1} real at x_{j+1} on the current iterate
+        if not ((c_rad > 0.0)):
+            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        c_h = math.sqrt(c_rad)
+        c_e_next = 4.0*c_e
+        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
+        if variant == 0.0:
+            c_wq = c_e_next/c_x**2
+            c_wp = c_e_next*c_x
+        elif variant == 1.0:
+            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
+            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
+        else:
+            return _NAN5 + (STATUS_INVALID_INPUT,)
+        _n0_0 = c_e_next
+        _n0_1 = -c_P*c_wq/c_h + q_th_td
+        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
+        _n0_3 = -c_e_next*m/c_h
+        # converged when every variable moved by at most tol times its scale (NaN never converges;
+        # tol = 0 runs every pass)
+        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
+        c_e = _n0_0
+        c_Q = _n0_1
+        c_P = _n0_2
+        c_T = _n0_3
+        c_steps += 1.0
+        if _conv0:
+            break
+    # bottom state (p_r = 0)
+    t_bottom = c_T
+    bottom_q_rd = 0.0
+    bottom_q_th = c_Q
+    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    # the bottom state
+    t_half = t_bottom
+    end_q_r = bottom_q_r
+    end_q_rd = bottom_q_rd
+    end_q_th = bottom_q_th
+    end_q_thd = bottom_q_thd
+    # every output finite, or the inputs were far outside a physical range
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
+        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
+    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def iterative_report_compression_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
+        variant, iterations, bottom_length, out, status):
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer_vs`.
+
+    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
+    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
+    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    """
+    for i in prange(out.shape[0]):
+        res = (iterative_report_compression_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
+            l0, k_c, g_s, variant, iterations, bottom_length))
         out[i, 0] = res[0]
         out[i, 1] = res[1]
         out[i, 2] = res[2]

@@ -124,9 +124,10 @@ def test_pass_bound_is_enforced():
     with pytest.raises(ValueError, match="iterations"):
         slipmaps.stance("iterative", HUMAN_RUNNER, (1.0, -1.0, 0.4, -4.0), iterations=101)
     p = HUMAN_RUNNER
-    base = (1.0, -1.0, 0.4, -4.0, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, 3.0)
-    assert iterative.iterative_stance(*base, 100.0, 0.0, 0.0)[-1] == Status.OK
-    assert iterative.iterative_stance(*base, 101.0, 0.0, 0.0)[-1] == Status.INVALID_INPUT
+    base = (1.0, -1.0, 0.4, -4.0, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo)
+    stance = iterative.iterative_stance_nodes_4_zeroth_geyer  # nodes, zeroth: kernels per choice
+    assert stance(*base, 100.0, 0.0)[-1] == Status.OK
+    assert stance(*base, 101.0, 0.0)[-1] == Status.INVALID_INPUT
 
 
 # ----------------------------------------------------------------------------------------------

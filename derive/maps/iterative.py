@@ -205,6 +205,7 @@ NODES = Option(
     "4",
     tuple((str(n), f"{n} node{'s' if n > 1 else ''}") for n in NODE_COUNTS),
     roles=("accuracy-variants",),
+    specialize=True,
 )
 ITERATIONS = Option(
     "iterations",

@@ -371,6 +371,8 @@ def zeroth_option() -> Option:
             ),
         ),
         roles=("accuracy-variants",),
+        # each choice calls another map's stance: kernels per choice, so that a first call compiles one
+        specialize=True,
     )
 
 

@@ -4,7 +4,8 @@ A :class:`Call` is a map, its parameters and its options, validated once (cached
 calling a map thousands of times with the same ones pays the Python checks once). It holds every
 kernel argument the parameters and options give, by name (:attr:`Call.values`: ``m``, ``l0``,
 ``k_c``, ``k_d`` and ``k`` when they agree, ``g_s``, ``g_f``, ``q_r_td``, ``q_r_lo``, each kernel
-option), and the backend that runs the map:
+option), the backend that runs the map, and each role's kernel (for an option with kernels per
+choice, ``specialize`` in the index, the kernel of the call's choice):
 
 - :class:`KernelBackend`: the generated kernels. A role's :class:`~.index.KernelSpec` (from the
   index) lists its arguments; :meth:`KernelBackend.scalar` passes ``{**call.values, **inputs}`` in
@@ -40,7 +41,7 @@ __all__ = ["Backend", "Call", "KernelBackend", "KERNELS", "column_count"]
 def column_count(call: Call, role: str) -> int:
     """The number of columns a role's batch writes: its outputs, and for a Jacobian d output /
     d input for every (output, input) pair after them."""
-    spec = call.info.kernels[role]
+    spec = call.spec(role)
     return len(spec.outputs) * (1 + len(spec.wrt))
 
 
@@ -99,6 +100,8 @@ class Call:
     options: Mapping[str, object]  # the resolved options, by name
     values: Mapping[str, float]  # every kernel argument the parameters and options give, by name
     backend: Backend
+    #: Every role's kernel for these options (the kernel of the choice of a specialized option).
+    kernels: Mapping[str, object]
 
     @classmethod
     def of(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> Call:
@@ -125,11 +128,11 @@ class Call:
         values = {**params.values(), **info.encode(resolved)}  # ValueError naming the valid values
         module = info.backend(resolved)
         backend = KERNELS if module is None else _backend_module(module)
-        return cls(info, params, resolved, values, backend)
+        return cls(info, params, resolved, values, backend, info.kernels_for(resolved))
 
     def spec(self, role: str):
         """The role's kernel spec; ValueError when the map has none (naming the maps that have one)."""
-        spec = self.info.kernels.get(role)
+        spec = self.kernels.get(role)
         if spec is None:
             raise ValueError(f"map {self.info.name!r} has no {role.replace('_', ' ')} kernel")
         return spec

@@ -16,7 +16,7 @@ from __future__ import annotations
 import importlib
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 
 from slipmaps.generated import maps_index
@@ -54,6 +54,9 @@ class KernelSpec:
     batch: tuple[str, ...]  # the batch form's arguments, before ``out, status``
     outputs: tuple[str, ...]  # the scalar form's outputs (the status follows); values of a Jacobian
     wrt: tuple[str, ...] = ()  # a Jacobian's inputs: its columns
+    #: With specialized options (a kernel per choice; ``name`` is the default choice's): the generic
+    #: name, which the suffix of a choice (the row's ``choices``) completes.
+    base: str | None = None
 
     @classmethod
     def of(cls, row: dict) -> KernelSpec:
@@ -65,7 +68,12 @@ class KernelSpec:
             batch=tuple(row["batch"] or ()),
             outputs=tuple(row["outputs"]),
             wrt=tuple(row.get("wrt", ())),
+            base=row.get("base"),
         )
+
+    def chosen(self, suffix: str) -> KernelSpec:
+        """The kernel of a choice of the specialized options, by its name suffix (itself without)."""
+        return self if self.base is None else replace(self, name=self.base + suffix)
 
     def functions(self):
         """(scalar, batch) functions of the generated module (imported on first use)."""
@@ -85,7 +93,9 @@ class Option:
     low: float | None = None
     high: float | None = None
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
-    kernel: bool = True  # a kernel argument (else it selects the implementation: ``backends``)
+    kernel: bool = True  # a kernel argument (else it selects the implementation or the kernels)
+    #: Kernels per choice (not a kernel argument): the call picks the kernel of its choice.
+    specialize: bool = False
     backends: Mapping[str, str] = field(default_factory=dict)  # choice -> module with a BACKEND
     #: Which of its values the studies measure (derive/maps/__init__.py's OPTION_ROLES).
     roles: tuple[str, ...] = ()
@@ -124,6 +134,7 @@ class Option:
             "high": self.high,
             "at_rest_length": list(self.at_rest_length),
             "kernel": self.kernel,
+            "specialize": self.specialize,
             "backends": dict(self.backends),
         }
 
@@ -150,6 +161,10 @@ class MapInfo:
     approximation_statuses: tuple[str, ...] = ()
     #: What the studies and the command line do with the map (derive/maps/__init__.py's MAP_ROLES).
     roles: tuple[str, ...] = ()
+    #: The options with kernels per choice, and each choice's kernel name suffix by its key (the
+    #: options' values joined by commas).
+    specialized: tuple[str, ...] = ()
+    choices: Mapping[str, str] = field(default_factory=dict)
 
     @property
     def ground_truth(self) -> bool:
@@ -185,6 +200,14 @@ class MapInfo:
         values), and those that are kernel arguments by name (a choice as its index)."""
         encoded = {o.name: o.encode(self.name, resolved[o.name]) for o in self.options}
         return {o.name: encoded[o.name] for o in self.options if o.kernel}
+
+    def kernels_for(self, resolved: dict) -> Mapping[str, KernelSpec]:
+        """Every role's kernel for the resolved options (:meth:`resolve`): with specialized options
+        the kernels of their choice."""
+        if not self.specialized:
+            return self.kernels
+        suffix = self.choices[",".join(str(resolved[o]) for o in self.specialized)]
+        return {role: spec.chosen(suffix) for role, spec in self.kernels.items()}
 
     def backend(self, resolved: dict) -> str | None:
         """The module whose ``BACKEND`` runs the map with these options, None for its generated
@@ -245,6 +268,7 @@ def _option(row: dict) -> Option:
         high=row["high"],
         at_rest_length=tuple(row.get("at_rest_length", ())),
         kernel=row["kernel"],
+        specialize=row.get("specialize", False),
         backends=dict(row["backends"]),
         roles=tuple(row.get("roles", ())),
     )
@@ -267,6 +291,8 @@ def _info(r: dict, cls: type[MapInfo] = MapInfo, **extra) -> MapInfo:
         as_printed=r.get("as_printed", False),
         approximation_statuses=tuple(r.get("approximation_statuses", ())),
         roles=tuple(r.get("roles", ())),
+        specialized=tuple(r.get("specialized", ())),
+        choices=dict(r.get("choices", {})),
         **extra,
     )
 
