@@ -94,7 +94,8 @@ class Option:
     high: float | None = None
     at_rest_length: tuple[str, ...] = ()  # choices that need touchdown at l0 (else INVALID_INPUT)
     kernel: bool = True  # a kernel argument (else it selects the implementation or the kernels)
-    #: Kernels per choice (not a kernel argument): the call picks the kernel of its choice.
+    #: Whether each choice has kernels of its own, the option then not a kernel argument (the call
+    #: picks the kernels of its choice).
     specialize: bool = False
     backends: Mapping[str, str] = field(default_factory=dict)  # choice -> module with a BACKEND
     #: Which of its values the studies measure (derive/maps/__init__.py's OPTION_ROLES).
