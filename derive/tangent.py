@@ -61,7 +61,7 @@ SymPy leaves unevaluated is refused at generation.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
@@ -728,16 +728,10 @@ class _Ctx:
             ),
         )
         k = len(it.state)
-        loop = Iterate(
-            state=it.state,
+        loop = replace(
+            it,
             body=body,
             update=tuple(nxt[:k]),
-            max_iter=it.max_iter,
-            tol=it.tol,
-            scales=it.scales,
-            count=it.count,
-            fail_status=it.fail_status,
-            comment=it.comment,
             carry=tuple((c[0], c[1], x) for c, x in zip(it.carry, nxt[k:], strict=True)),
             evaluate=evaluate,
         )
@@ -808,16 +802,10 @@ class _Ctx:
         self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
         self.frame.tangents.update(evaluated)
         k = len(it.state)
-        return Iterate(
-            state=it.state,
+        return replace(
+            it,
             body=body,
             update=tuple(nxt[:k]),
-            max_iter=it.max_iter,
-            tol=it.tol,
-            scales=it.scales,
-            count=it.count,
-            fail_status=it.fail_status,
-            comment=it.comment,
             carry=tuple((c[0], c[1], n) for c, n in zip(it.carry, nxt[k:], strict=True)) + tuple(carry),
             evaluate=evaluate,
         )
