@@ -24,7 +24,7 @@ import sympy as sp
 
 from . import docs
 from .equations import render_equation_summary, render_equation_table
-from .ir import Call, Iterate, Module, Switch, is_external_module
+from .ir import Module, calls, is_external_module
 from .lower import lower
 from .maps import all_halves, all_maps, ground_truth
 from .mapspec import MapSpec
@@ -79,20 +79,7 @@ def _require_checkout() -> None:
 
 def _callee_modules(mod: Module) -> set[str]:
     """The other modules whose kernels ``mod``'s kernels call."""
-    found: set[str] = set()
-
-    def walk(steps) -> None:
-        for step in steps:
-            if isinstance(step, Call):
-                found.add(step.kernel.module)
-            elif isinstance(step, Iterate):
-                walk(step.body)
-            elif isinstance(step, Switch):
-                for _, branch in step.cases:
-                    walk(branch)
-
-    for kernel in mod.kernels():
-        walk(kernel.steps)
+    found = {c.kernel.module for kernel in mod.kernels() for c in calls(kernel.steps)}
     return {m for m in found if not is_external_module(m)} - {mod.name}
 
 

@@ -336,6 +336,20 @@ class Kernel:
         }
 
 
+def calls(steps):
+    """Every :class:`Call` in ``steps``, at any depth: in a loop's evaluation and body and in every
+    branch of a switch (callers first, in order)."""
+    for step in steps:
+        if isinstance(step, Call):
+            yield step
+        elif isinstance(step, Iterate):
+            yield from calls(step.evaluate)
+            yield from calls(step.body)
+        elif isinstance(step, Switch):
+            for _, branch in step.cases:
+                yield from calls(branch)
+
+
 def is_external_module(module: str) -> bool:
     """A kernel module named by its dotted Python path is hand-written, not generated."""
     return "." in module

@@ -29,7 +29,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from .ir import Call, Guard, Iterate, Kernel, Stage, Switch, sym
+from .ir import Call, Guard, Iterate, Kernel, Stage, Switch, calls, sym
 
 __all__ = ["choice_suffix", "module_kernels", "specialize"]
 
@@ -142,18 +142,11 @@ def _reached(kernels, module: str) -> list[Kernel]:
     seen: dict[str, Kernel] = {}
 
     def walk(steps) -> None:
-        for step in steps:
-            if isinstance(step, Call):
-                k = step.kernel
-                if k.module == module and k.name not in seen:
-                    walk(k.steps)
-                    seen.setdefault(k.name, k)
-            elif isinstance(step, Iterate):
-                walk(step.evaluate)
-                walk(step.body)
-            elif isinstance(step, Switch):
-                for _, branch in step.cases:
-                    walk(branch)
+        for c in calls(steps):
+            k = c.kernel
+            if k.module == module and k.name not in seen:
+                walk(k.steps)
+                seen.setdefault(k.name, k)
 
     for k in kernels:
         walk(k.steps)
