@@ -2,7 +2,8 @@
 
 Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
-(the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` and ``docs/maps.md``;
+(the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
+record the report's sections 6-8 read) and ``docs/maps.md``;
 the equation summary and the short map table of ``README.md`` (between their markers).
 
 Deterministic: the same sources give byte-identical files (no timestamps, SymPy pinned, ordered
@@ -23,7 +24,7 @@ import jinja2
 import sympy as sp
 
 from . import docs
-from .equations import render_equation_summary, render_equation_table
+from .equations import render_equation_record, render_equation_summary, render_equation_table
 from .ir import Module, calls, is_external_module
 from .lower import lower
 from .maps import all_halves, all_maps, ground_truth
@@ -250,6 +251,7 @@ def build_files() -> dict[str, str]:
     )
     table = render_equation_table()
     files["docs/equations.md"] = table
+    files["docs/equations.json"] = render_equation_record()
     files["docs/maps.md"] = docs.maps_page(index)
     readme = (ROOT / "README.md").read_text()
     readme = docs.replace_between(readme, "equations", render_equation_summary())

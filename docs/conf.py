@@ -6,10 +6,11 @@ Build it (the ``docs`` extra installs the tools)::
     python -m sphinx -W --keep-going -n -b html docs docs/_build/html
 
 Pages are MyST Markdown. The pages that commands write (``slipmaps generate``: maps.md, equations.md;
-``slipmaps accuracy``: accuracy.md, convergence.md, stiffness.md, stability.md) are pages of the
-site as they are, listed in a toctree, never copied; getting_started.md includes the README's quick
-start, first map call and install extras by ``{include}`` between their headings (every other section
-lives on a page of its own, the README links to it). The API reference is autodoc of
+``slipmaps accuracy``: accuracy.md, convergence.md, stiffness.md, stability.md, reproductions.md;
+``slipmaps report``: sections.md, which this build renders again from the records as it starts) are
+pages of the site as they are, listed in a toctree, never copied; getting_started.md includes the
+README's quick start, first map call and install extras by ``{include}`` between their headings
+(every other section lives on a page of its own, the README links to it). The API reference is autodoc of
 ``slipmaps.__all__``, the CLI reference sphinx-argparse on :func:`slipmaps.runtime.cli.app.build_parser`.
 """
 
@@ -98,6 +99,19 @@ def _resolve_public(app, env, node, contnode):
     return domain.resolve_xref(env, node["refdoc"], app.builder, node["reftype"], resolved, node, contnode)
 
 
+def _sections(app):
+    """The report's sections 6-8 (sections.md) rendered from the records in docs/ as the build starts
+    (:func:`slipmaps.runtime.report.sections.write`, strict: a claim of its prose that the records no
+    longer support fails the build); its figure drawn when missing (``slipmaps report`` redraws it)."""
+    from pathlib import Path
+
+    from slipmaps.runtime.report import sections
+
+    here = Path(app.srcdir)
+    sections.write(here, draw=not (here / sections.FIGURE).is_file())
+
+
 def setup(app):
+    app.connect("builder-inited", _sections)
     app.connect("autodoc-process-docstring", _reexported_data_doc)
     app.connect("missing-reference", _resolve_public)

@@ -422,7 +422,7 @@ MAPS = [{'name': 'geyer',
   'summary': "the report's iteration: n-th iterate at the end of each half from the zeroth at the "
              'n-fold mean-value point, stepping outward; compression anchored at touchdown (123), '
              'decompression at the bottom (41); bottom leg length of the zeroth iterate',
-  'roles': [],
+  'roles': ['accuracy-figure'],
   'specialized': ['zeroth'],
   'choices': {'geyer': '_zeroth_geyer',
               'held': '_zeroth_held',
@@ -2790,7 +2790,7 @@ MAPS = [{'name': 'geyer',
   'module': 'iterative',
   'summary': 'both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the '
              'radial work; k_c before the bottom, k_d after',
-  'roles': ['region'],
+  'roles': ['region', 'accuracy-figure'],
   'specialized': ['nodes', 'zeroth'],
   'choices': {'4,geyer': '_nodes_4_zeroth_geyer',
               '4,held': '_nodes_4_zeroth_held',

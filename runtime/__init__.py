@@ -5,6 +5,7 @@ the index) < ``exact`` (the exact simulator: the compiled DOP853 integrator, its
 Jacobian, the ``solve_ivp`` reference) < ``analysis`` (periodic gaits), ``sweep`` (parameter
 sweeps), ``studies`` (the accuracy, convergence, stiffness and stability studies and their
 reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it uses ``api``,
-``exact`` and ``analysis``) < ``cli`` (one module per command). Where numba caches the compiled
+``exact`` and ``analysis``) < ``report`` (the report's sections 6-8, written from the studies' and
+the control evaluation's records) < ``cli`` (one module per command). Where numba caches the compiled
 kernels is set up by the top-level package (``slipmaps.kernel_cache``).
 """

@@ -3,9 +3,9 @@
 Read from the sources (``ast``), every import counted, also those inside functions:
 
 - a module of ``runtime/<package>/`` imports only from packages at its level or below:
-  ``api`` < ``exact`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``cli`` (the top-level
-  package ``runtime/public`` sits above them all); a backend is found by name from the index, not
-  imported by the API;
+  ``api`` < ``exact`` < ``analysis``, ``sweep``, ``studies``, ``control`` < ``report`` < ``cli``
+  (the top-level package ``runtime/public`` sits above them all); a backend is found by name from
+  the index, not imported by the API;
 - the modules' import graph has no cycle;
 - no module imports another's private name (``from .x import _y``);
 - the runtime never imports ``derive`` but its plain-data parameter table (``derive/params.py``).
@@ -20,7 +20,17 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 RUNTIME = ROOT / "runtime"
-RANK = {"api": 0, "exact": 1, "analysis": 2, "sweep": 2, "studies": 2, "control": 2, "cli": 3, "public": 4}
+RANK = {
+    "api": 0,
+    "exact": 1,
+    "analysis": 2,
+    "sweep": 2,
+    "studies": 2,
+    "control": 2,
+    "report": 3,
+    "cli": 4,
+    "public": 5,
+}
 
 
 def _modules() -> dict[str, Path]:

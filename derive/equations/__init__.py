@@ -52,6 +52,7 @@ __all__ = [
     "run",
     "render_equation_summary",
     "render_equation_table",
+    "render_equation_record",
     "to_json",
     "main",
 ]
@@ -273,6 +274,30 @@ def render_equation_summary() -> str:
         "the table with the corrected forms and their proofs' notes: [docs/equations.md](docs/equations.md)."
     )
     return textwrap.fill(line, 100, break_long_words=False, break_on_hyphens=False) + "\n"
+
+
+def _proof(check: Callable[[], None]) -> str:
+    """Where a check lives: ``derive.equations.sec3.check_eq3`` (the installed package's name off)."""
+    return f"{check.__module__.partition('.')[2]}.{check.__name__}"
+
+
+def render_equation_record() -> str:
+    """docs/equations.json: every entry's number, title, status, note, section and its check (the
+    proof: ``derive.equations.MODULE.FUNCTION``), in report order; what the report's sections 6-8
+    read (runtime/report/), so the runtime needs no SymPy for them. Written by ``slipmaps
+    generate`` beside docs/equations.md."""
+    rows = [
+        {
+            "key": e.key,
+            "title": e.title,
+            "status": e.status,
+            "note": e.note,
+            "section": e.section,
+            "proof": None if e.check is None else _proof(e.check),
+        }
+        for e in entries()
+    ]
+    return json.dumps({"equations": rows}, indent=1) + "\n"
 
 
 def to_json(outcomes: list[Outcome]) -> list[dict]:

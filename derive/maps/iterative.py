@@ -370,7 +370,7 @@ def declare_maps() -> tuple[MapSpec, ...]:
             notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead "
             "of (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from "
             "p_r_td^2 = 2 m int F_r.",
-            roles=("region",),
+            roles=("region", "accuracy-figure"),
         ),
     )
 

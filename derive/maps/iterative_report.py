@@ -395,6 +395,7 @@ def declare_maps() -> tuple[MapSpec, ...]:
             notes="(42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping "
             "p_th; liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM "
             "wherever H^{-1} of an iterate is imaginary.",
+            roles=("accuracy-figure",),
         ),
     )
 

@@ -26,7 +26,10 @@ Subcommands (``slipmaps --version`` prints the installed version):
 - ``generate [--check]``: regenerate generated/ and the docs from derive/ (``--check``: exit 1 when
   stale); a source checkout only;
 - ``run SCENARIO.toml`` / ``run --evaluate``: a multi-step controlled run, or the control evaluation
-  (runtime/cli/run.py).
+  (runtime/cli/run.py);
+- ``report [--render-only | --quick] [--out DIR]``: every study and the control evaluation measured
+  again, then the report's sections 6-8 (docs/sections.md) rebuilt from their records
+  (runtime/cli/report.py).
 
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
@@ -47,6 +50,7 @@ from pathlib import Path
 from ..api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from ..api.paths import writable_dir, writable_file
 from ..api.validate import leg_angle, non_negative, polar_state, positive
+from . import report as report_cli
 from . import run as run_cli
 from . import sweep as sweep_cli
 from .args import add_params, image_path, map_options, params_of, stiffness_note
@@ -244,6 +248,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_gait(sub)
     sweep_cli.add_parser(sub)
     run_cli.add_parser(sub)
+    report_cli.add_parser(sub)
     return parser
 
 
@@ -434,6 +439,7 @@ def _run(argv: list[str] | None) -> int:
         "gait": _cmd_gait,
         "sweep": sweep_cli.run,
         "run": run_cli.run,
+        "report": report_cli.run,
     }
     try:
         code = handlers[args.command](args)

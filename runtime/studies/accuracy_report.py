@@ -342,7 +342,7 @@ def figure(record: dict, path: str | Path) -> Path:
     fig = plt.figure(figsize=(12, 9), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=(1.0, 1.0))
     speeds, angles = np.array(heat["speeds"]), np.array(heat["angles"])
-    norm = LogNorm(vmin=1e-4, vmax=0.3)
+    norm = LogNorm(vmin=1e-6, vmax=0.3)
     axes = top.subplots(1, len(shown), sharey=True)
     for ax, label in zip(np.atleast_1d(axes), shown, strict=True):
         grid = np.array(heat["apex_error"][label], dtype=float)

@@ -1,0 +1,105 @@
+"""``slipmaps report``: the report's sections 6-8 (docs/sections.md), measured again and rebuilt.
+
+``slipmaps report`` runs every study of ``slipmaps accuracy`` (accuracy, convergence, stiffness,
+stability, reproductions), then the control evaluation (``slipmaps run --evaluate``), then writes
+docs/sections.md and its figure from the records (:mod:`slipmaps.runtime.report.sections`): into
+the checkout's docs/ or ``--out DIR``. It takes about ten minutes once the kernels are compiled;
+each stage shows a progress bar on standard error (``--no-progress``: none).
+
+- ``--render-only``: no measurement; the page from the records already in docs/ (or ``--out``),
+  as the site's build does (seconds).
+- ``--quick``: the reduced version CI runs: the studies of three maps (``geyer``,
+  ``gravity-type5``, ``iterative``) and the control evaluation's small version, into ``--out DIR``
+  (required: a reduced run never overwrites docs/), the page rendered with what it measured
+  (numbers and claims of maps it did not measure read "not measured in this run").
+
+Needs Jinja2, which renders the page (the ``derive``, ``docs`` and ``test`` extras have it).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..api.paths import writable_dir
+
+__all__ = ["QUICK_MAPS", "add_parser", "run"]
+
+#: The maps of ``--quick`` (with the baseline map, which the studies add).
+QUICK_MAPS = ("gravity-type5", "iterative")
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    """Add the ``report`` subcommand to the subparsers ``sub``."""
+    p = sub.add_parser(
+        "report",
+        help="measure every study again and rebuild the report's sections 6-8 (docs/sections.md)",
+        description="Run every study (accuracy, convergence, stiffness, stability, reproductions) and the "
+        "control evaluation, then write the report's sections 6-8 (sections.md and its figure) from their "
+        "records: into the checkout's docs/ or --out DIR. --render-only: only the page, from the records "
+        "there; --quick: the reduced version (three maps, the small control evaluation) into --out DIR.",
+    )
+    p.add_argument("--out", default=None, metavar="DIR", help="the directory of the records and the page")
+    mode = p.add_mutually_exclusive_group()
+    mode.add_argument("--render-only", action="store_true", help="no measurement: the page from the records")
+    mode.add_argument("--quick", action="store_true", help="the reduced version (needs --out)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
+    return p
+
+
+def _out(args: argparse.Namespace) -> Path:
+    from ..studies.checkout import docs_dir
+
+    if args.out is not None:
+        return writable_dir("--out", args.out)
+    if args.quick:
+        raise ValueError("--quick writes a reduced report: give --out DIR (never docs/)")
+    docs = docs_dir()
+    if docs is None:
+        raise ValueError("slipmaps does not run from a source checkout, so there is no docs/: give --out DIR")
+    return docs
+
+
+def _stage(i: int, n: int, what: str) -> None:
+    print(f"slipmaps report: [{i}/{n}] {what}", file=sys.stderr, flush=True)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``slipmaps report`` (module docstring); prints the paths it wrote."""
+    from ..report import sections
+    from ..studies.checkout import checkout_root
+
+    out = _out(args)  # before any work
+    show = False if args.no_progress else None
+    written: list[Path] = []
+    if args.render_only:
+        for path in sections.write(out, draw=True):
+            print(f"wrote {path}")
+        return 0
+    root = checkout_root()
+    if root is None:
+        raise ValueError("report runs the control scenarios of a checkout's examples/: run it from one")
+    from ..control.report import write as write_control
+    from ..studies.runner import run as run_studies
+    from ..studies.runner import studies
+    from ..studies.study import write as write_study
+
+    _stage(1, 3, "the studies of slipmaps accuracy")
+    if args.quick:
+        for study in studies(list(QUICK_MAPS)):  # with the baseline map
+            written += write_study(study, out / f"{study.name}.md", show)
+    else:
+        written += run_studies(out / "accuracy.md", None, show)
+    _stage(2, 3, "the control evaluation")
+    written += write_control(out, root / "examples", quick=args.quick, progress=show)
+    _stage(3, 3, "sections 6-8")
+    records = sections.load(out)
+    if args.quick:
+        import json
+
+        records["control"] = json.loads((out / "control_quick.json").read_text(encoding="utf-8"))
+    written += sections.write(out, records=records, strict=not args.quick)
+    for path in written:
+        print(f"wrote {path}")
+    return 0
