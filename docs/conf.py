@@ -6,10 +6,10 @@ Build it (the ``docs`` extra installs the tools)::
     python -m sphinx -W --keep-going -n -b html docs docs/_build/html
 
 Pages are MyST Markdown. The pages that commands write (``slipmaps generate``: maps.md, equations.md;
-``slipmaps accuracy``: accuracy.md, convergence.md, stiffness.md, stability.md) are pages of the
-site as they are, listed in a toctree, never copied; getting_started.md includes the README's quick
-start, first map call and install extras by ``{include}`` between their headings (every other section
-lives on a page of its own, the README links to it). The API reference is autodoc of
+``slipmaps accuracy``: accuracy.md, convergence.md, stiffness.md, stability.md, reproductions.md) are
+pages of the site as they are, listed in a toctree, never copied; getting_started.md includes the
+README's quick start, first map call and install extras by ``{include}`` between their headings
+(every other section lives on a page of its own, the README links to it). The API reference is autodoc of
 ``slipmaps.__all__``, the CLI reference sphinx-argparse on :func:`slipmaps.runtime.cli.app.build_parser`.
 """
 

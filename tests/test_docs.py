@@ -73,7 +73,9 @@ def test_every_page_is_in_the_site():
     assert sorted(_toctree_entries() - pages) == []
 
 
-@pytest.mark.parametrize("page", ["maps", "equations", "accuracy", "convergence", "stiffness", "stability"])
+@pytest.mark.parametrize(
+    "page", ["maps", "equations", "accuracy", "convergence", "stiffness", "stability", "reproductions"]
+)
 def test_a_generated_page_is_a_page_of_the_site(page):
     head = "\n".join((DOCS / f"{page}.md").read_text().splitlines()[:3])
     assert "do not edit" in head, f"docs/{page}.md is no longer written by a command"
