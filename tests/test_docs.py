@@ -74,7 +74,8 @@ def test_every_page_is_in_the_site():
 
 
 @pytest.mark.parametrize(
-    "page", ["maps", "equations", "accuracy", "convergence", "stiffness", "stability", "sections"]
+    "page",
+    ["maps", "equations", "accuracy", "convergence", "stiffness", "stability", "reproductions", "sections"],
 )
 def test_a_generated_page_is_a_page_of_the_site(page):
     head = "\n".join((DOCS / f"{page}.md").read_text().splitlines()[:3])

@@ -66,13 +66,14 @@ def test_the_same_inputs_give_byte_identical_json_and_markdown(tmp_path):
 
 
 def test_slipmaps_accuracy_writes_every_study_in_order():
-    assert [cls.name for cls in runner.STUDIES] == ["accuracy", "convergence", "stiffness", "stability"]
-    assert [s.name for s in runner.studies()] == ["accuracy", "convergence", "stiffness", "stability"]
+    names = ["accuracy", "convergence", "stiffness", "stability", "reproductions"]
+    assert [cls.name for cls in runner.STUDIES] == names
+    assert [s.name for s in runner.studies()] == names
 
 
 def test_a_study_with_nothing_to_measure_is_left_out():
     """Geyer et al.'s map alone has no pass count and needs k_c == k_d: no convergence, no stiffness
-    study; the converging iterative map has both."""
+    study; the converging iterative map has both; the reproductions name their maps: all maps only."""
     assert [s.name for s in runner.studies(["geyer"])] == ["accuracy", "stability"]
     assert [s.name for s in runner.studies(["iterative"])] == [
         "accuracy",

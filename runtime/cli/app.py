@@ -17,8 +17,9 @@ Subcommands (``slipmaps --version`` prints the installed version):
 - ``accuracy [--map NAME|all] [--out DIR]``: every map against the exact simulator on the accuracy
   grids, written as accuracy.md (+ .json, .png) with the convergence study of the iterative maps
   (convergence.md), the variable-stiffness study over k_d/k_c (stiffness.md) and the periodic
-  gaits' fixed points and stability (stability.md): into the checkout's docs/ when slipmaps runs
-  from a source checkout, else into ``--out DIR`` (required there);
+  gaits' fixed points and stability (stability.md) and, for all maps, published claims checked by
+  code (reproductions.md): into the checkout's docs/ when slipmaps runs from a source checkout,
+  else into ``--out DIR`` (required there);
 - ``gait [--map NAME ...] [--json] [--figure PATH]``: periodic gaits, the fixed points of the
   apex-return map and their eigenvalues (runtime/cli/gait.py);
 - ``equations [--json]``: run the symbolic check of every registered report equation (``--json``:
@@ -224,7 +225,8 @@ def build_parser() -> argparse.ArgumentParser:
         "accuracy",
         help="every map against the exact simulator on the accuracy grids",
         description="Measure every map (or one) against the exact simulator on the accuracy grids and "
-        "write accuracy.md (+ .json, .png), convergence.md, stiffness.md and stability.md (+ .json, .png): "
+        "write accuracy.md (+ .json, .png), convergence.md, stiffness.md, stability.md and, for all maps, "
+        "reproductions.md (+ .json, .png): "
         "into the "
         "checkout's docs/ when slipmaps runs from a source checkout, else into --out DIR.",
     )
@@ -232,7 +234,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--map",
         default="all",
         help="a map name, or 'all' (default): all maps, written as accuracy.md (and beside it "
-        "convergence.md, stiffness.md, stability.md); one map: accuracy_<map>.md",
+        "convergence.md, stiffness.md, stability.md, reproductions.md); one map: accuracy_<map>.md",
     )
     acc.add_argument(
         "--out",

@@ -254,7 +254,19 @@ def numbers(r: dict) -> dict[str, Callable[[], str]]:
         means = _stiffness_range(r, "geyer-vs", "apex_speed", 0.8, 1.25, "human runner, nonsymmetric")
         return f"{_range(100 * x for x in means)} %"
 
+    rep = lambda: need(r, "reproductions")  # noqa: E731
+
+    def holding(verdicts: dict[str, str]) -> str:
+        return ", ".join(f"`{m}`" for m, v in verdicts.items() if v == "holds" and m != "exact") or "none"
+
     out: dict[str, Callable[[], str]] = {
+        "repro_geyer": lambda: rep()["geyer"]["settings"][0]["summary"]["verdict"],
+        "repro_geyer_up_to": lambda: pct(rep()["geyer"]["settings"][0]["summary"]["holds_up_to_compression"]),
+        "repro_yu_states": lambda: str(rep()["yu"]["states"]),
+        "repro_yu_holds": lambda: holding({m["map"]: m["verdict"] for m in rep()["yu"]["maps"]}),
+        "repro_seyfarth": lambda: rep()["seyfarth"]["verdicts"]["exact"],
+        "repro_drake": lambda: rep()["drake"]["verdicts"]["exact"],
+        "repro_drake_maps": lambda: holding(rep()["drake"]["verdicts"]),
         "heat_geyer_max": lambda: pct(np.nanmax(_heat(r, BASELINE))),
         "heat_geyer_min": lambda: pct(np.nanmin(_heat(r, BASELINE))),
         "heat_iterative_max": lambda: pct(np.nanmax(_heat(r, ITERATIVE))),
@@ -378,6 +390,10 @@ def claims(r: dict) -> dict[str, Callable[[], bool]]:
         "types_dominated": lambda: all(
             (_pareto_row(r, m)["dominated_by"] or "").startswith(f"{ITERATIVE}, ")
             for m in ("gravity-type1", "gravity-type2", "gravity-type3", "gravity-type4")
+        ),
+        "repro_geyer_narrower": lambda: (
+            need(r, "reproductions")["geyer"]["settings"][0]["summary"]["verdict"]
+            == "holds on a narrower domain"
         ),
         "control_targets": lambda: _control_met(r, "tracking") and _control_met(r, "rough"),
     }
@@ -517,10 +533,11 @@ def _errata_table(r: dict) -> str:
 
 
 def _reproductions_table(r: dict) -> str:
-    rec = need(r, "reproductions")
-    lines = ["| source | claim | paper | slipmaps | verdict |", "| --- | --- | --- | --- | --- |"]
-    for c in rec["claims"]:
-        lines.append(f"| {c['source']} | {c['claim']} | {c['paper']} | {c['slipmaps']} | {c['verdict']} |")
+    from ..studies.reproductions_report import table_rows
+
+    lines = ["| claim | paper | slipmaps | verdict |", "| --- | --- | --- | --- |"]
+    for row in table_rows(need(r, "reproductions")):
+        lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |")
     return "\n".join(lines)
 
 

@@ -18,7 +18,9 @@ The maps and variants measured come from the index: every map, and the values of
 that the option roles mark (:func:`variants`); :func:`maps_with` lists the maps of a map role.
 
 Public: :func:`variants`, :func:`measure` (one grid; :func:`run_maps` from given exact steps,
-:func:`exact_steps` the grid's, simulated once per process), :func:`measure_all`, :func:`compared`,
+:func:`exact_steps` the grid's, simulated once per process; :func:`run_batch` with the exact steps
+by the compiled exact map's batches, for large grids; :func:`run_variants` the variants on either),
+:func:`measure_all`, :func:`compared`,
 :func:`map_failures`, :func:`exact_failures` and the statistics that :mod:`.accuracy_report`
 records and renders (docs/accuracy.json, .md, .png).
 """
@@ -33,6 +35,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+from slipmaps.generated.flight import apex_to_touchdown
 from slipmaps.generated.status import Status
 
 from ..api import index
@@ -57,6 +60,8 @@ __all__ = [
     "measure",
     "exact_steps",
     "run_maps",
+    "run_batch",
+    "run_variants",
     "measure_all",
     "apex_errors",
     "compared",
@@ -213,10 +218,35 @@ def run_maps(
         [[step_values(s)[n] if s is not None and s.ok else math.nan for n in names] for s in exact]
     )
     cols = {n: rows.reshape(-1, len(names))[:, j] for j, n in enumerate(names)}
-    run = GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols)
+    return run_variants(GridRun(grid, points, exact, tds.reshape(-1, 4), status, cols), chosen)
+
+
+def run_batch(grid: Grid, points: np.ndarray, chosen: Sequence[Variant]) -> GridRun:
+    """As :func:`run_maps`, the exact steps by the compiled exact map's batches instead of
+    ``solve_ivp`` (the same steps to ~1e-14, :mod:`~slipmaps.runtime.exact.compiled`; for grids of
+    thousands of points): the exact apex return from each point, the exact stance from its
+    closed-form touchdown (``flight.apex_to_touchdown``). ``exact`` is empty (no StepResult)."""
+    p = grid.params
+    ap = apex_return_batch(index.EXACT, p, points[:, 0], points[:, 1], points[:, 2])
+    tds = np.full((len(points), 4), math.nan)
+    for i, (h, v, a) in enumerate(points):
+        td = apex_to_touchdown(h, v, a, p.q_r_td, p.g_f, 0.0)  # (q_r, q_rd, q_th, q_thd, t, foot_x, status)
+        if td[-1] == _OK:
+            tds[i] = td[:4]
+    st = stance_batch(index.EXACT, p, tds)
+    ok = ap.status == _OK
+    cols = {n: np.where(ok, st[n], math.nan) for n in STANCE}
+    cols.update({n: np.where(ok, ap[n], math.nan) for n in APEX_RETURN if n not in cols})
+    return run_variants(GridRun(grid, points, [], tds, ap.status.astype(np.int64), cols), chosen)
+
+
+def run_variants(run: GridRun, chosen: Sequence[Variant]) -> GridRun:
+    """Every variant of ``chosen`` on ``run``'s points: its stance from each exact touchdown (into
+    ``run.results``), its apex-return map from each apex; returns ``run``."""
+    p, points = run.grid.params, run.points
     for var in chosen:
-        st = stance_batch(var.map, grid.params, run.touchdowns, **var.kwargs)
-        ap = apex_return_batch(var.map, grid.params, points[:, 0], points[:, 1], points[:, 2], **var.kwargs)
+        st = stance_batch(var.map, p, run.touchdowns, **var.kwargs)
+        ap = apex_return_batch(var.map, p, points[:, 0], points[:, 1], points[:, 2], **var.kwargs)
         run.results[var.label] = (var, st, ap)
     return run
 

@@ -2,8 +2,9 @@
 
 The studies, in the order they are written: accuracy (every map and its variants against the exact
 simulator), convergence (the maps with a pass count, n = 0..8), stiffness (the maps that accept
-k_c != k_d, over k_d/k_c) and stability (periodic gaits and the self-stable region). A study with
-nothing to measure among the chosen maps writes nothing (:meth:`.study.Study.applies`).
+k_c != k_d, over k_d/k_c), stability (periodic gaits and the self-stable region) and reproductions
+(published claims checked by code; all maps only). A study with nothing to measure among the chosen
+maps writes nothing (:meth:`.study.Study.applies`).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from ..api import index
 from .accuracy import baseline
 from .accuracy_report import AccuracyStudy
 from .convergence import ConvergenceStudy
+from .reproductions_report import ReproductionsStudy
 from .stability_report import StabilityStudy
 from .stiffness_report import StiffnessStudy
 from .study import Study, write
@@ -22,7 +24,13 @@ __all__ = ["STUDIES", "chosen_maps", "studies", "report_path", "run"]
 
 #: The studies of ``slipmaps accuracy``, in the order they are written; the first one's report is
 #: the path the command is given.
-STUDIES: tuple[type[Study], ...] = (AccuracyStudy, ConvergenceStudy, StiffnessStudy, StabilityStudy)
+STUDIES: tuple[type[Study], ...] = (
+    AccuracyStudy,
+    ConvergenceStudy,
+    StiffnessStudy,
+    StabilityStudy,
+    ReproductionsStudy,
+)
 
 
 def chosen_maps(map_names=None) -> list[str] | None:
