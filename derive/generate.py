@@ -3,8 +3,9 @@
 Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
 (the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
-record the report's sections 6-8 read) and ``docs/maps.md``;
-the equation summary and the short map table of ``README.md`` (between their markers).
+record the report's sections 6-8 read) and ``docs/maps.md``; the equation summary and the short map
+table of ``README.md`` and the report equations of each family page (:func:`family_pages`), between
+their markers.
 
 Deterministic: the same sources give byte-identical files (no timestamps, SymPy pinned, ordered
 CSE, ``repr`` floats). Files are written only when their content changes, so numba's on-disk
@@ -24,10 +25,11 @@ import jinja2
 import sympy as sp
 
 from . import docs
-from .equations import render_equation_record, render_equation_summary, render_equation_table
+from .equations import entries, render_equation_record, render_equation_summary, render_equation_table
 from .ir import Module, calls, is_external_module
 from .lower import lower
 from .maps import all_halves, all_maps, ground_truth
+from .maps import family_pages as all_family_pages
 from .mapspec import MapSpec
 from .model.kernels import MODULES as MODEL_MODULES
 from .model.kernels import flight_kernels
@@ -253,11 +255,25 @@ def build_files() -> dict[str, str]:
     files["docs/equations.md"] = table
     files["docs/equations.json"] = render_equation_record()
     files["docs/maps.md"] = docs.maps_page(index)
+    files.update(family_pages())
     readme = (ROOT / "README.md").read_text()
     readme = docs.replace_between(readme, "equations", render_equation_summary())
     readme = docs.replace_between(readme, "maps", docs.readme_maps_table(index))
     files["README.md"] = readme
     return files
+
+
+def family_pages() -> dict[str, str]:
+    """Every family page ``docs/<page>.md`` (:func:`.maps.family_pages`) with the report equations of
+    its maps (:func:`.docs.family_equations`) between its markers ``<!-- equations:begin -->`` and
+    ``<!-- equations:end -->``; the rest of the page is hand-written, read from the checkout."""
+    registry = entries()
+    out = {}
+    for page, specs in all_family_pages().items():
+        rel = f"docs/{page}.md"
+        text = (ROOT / rel).read_text()
+        out[rel] = docs.replace_between(text, "equations", docs.family_equations(specs, registry), rel)
+    return out
 
 
 def _stale(files: dict[str, str]) -> list[str]:

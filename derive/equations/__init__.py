@@ -20,7 +20,12 @@ A check returns nothing and raises :class:`CheckFailed` (through :func:`expect_z
 turns a check into an :class:`Outcome`; :func:`main` runs them all (``slipmaps equations``).
 
 Entries are keyed by the report's equation number ("1" ... "151") or, for unnumbered displays, by
-their section ("sec2.2.1-polar"). :func:`render_equation_table` gives docs/equations.md.
+their section ("sec2.2.1-polar"). An entry's report subsection (:attr:`Entry.subsection`) is the one
+in its key, or for a number the subsection of its section module's ``SUBSECTIONS`` (each
+subsection and its first equation number) that the number falls in. An entry may carry ``derived``:
+a function returning the SymPy form that the derivation gives (an equation ``sp.Eq`` or a tuple of
+them; for a ``corrected`` entry the corrected form), rendered as math on the family pages.
+:func:`render_equation_table` gives docs/equations.md.
 """
 
 from __future__ import annotations
@@ -28,6 +33,7 @@ from __future__ import annotations
 import functools
 import importlib
 import json
+import re
 import sys
 import textwrap
 from collections.abc import Callable
@@ -47,6 +53,7 @@ __all__ = [
     "equation",
     "definition",
     "entries",
+    "forms",
     "by_key",
     "Outcome",
     "run",
@@ -127,12 +134,26 @@ class Entry:
     note: str
     check: Callable[[], None] | None  # None only for definitions
     section: str  # the section module that registers it, e.g. "sec3"
+    #: The derived form (``sp.Eq`` or a tuple of them), computed on demand; None if the entry has text only.
+    derived: Callable[[], object] | None = None
 
     def __post_init__(self):
         if self.status not in STATUSES:
             raise ValueError(f"equation {self.key}: unknown status {self.status!r}")
         if self.status != "definition" and self.check is None:
             raise ValueError(f"equation {self.key}: a {self.status} entry needs a check")
+
+    @property
+    def subsection(self) -> str:
+        """The report subsection the entry belongs to: "3.1" for "sec3.1-taylor" and for "11"."""
+        if self.key.startswith("sec"):
+            return re.match(r"sec([\d.]*\d)", self.key).group(1)
+        number = int(self.key)
+        module = importlib.import_module(f"{__name__}.{self.section}")
+        starts = [name for name, first in getattr(module, "SUBSECTIONS", ()) if first <= number]
+        if not starts:
+            raise ValueError(f"equation {self.key}: before every subsection of {self.section}.SUBSECTIONS")
+        return starts[-1]
 
 
 _REGISTRY: dict[str, list[Entry]] = {}
@@ -156,15 +177,16 @@ def _register(entry: Entry, before: str | None = None) -> None:
         section.insert(next(i for i, e in enumerate(section) if e.key == before), entry)
 
 
-def equation(key: str, title: str, status: str, note: str = ""):
+def equation(key: str, title: str, status: str, note: str = "", derived: Callable[[], object] | None = None):
     """Decorator registering the decorated check as the check of equation ``key``.
 
     Stackable: one function may check several equations, each decorator giving its own title and
-    note; stacked decorators register top to bottom, so write them in report order.
+    note; stacked decorators register top to bottom, so write them in report order. ``derived``:
+    see :class:`Entry`.
     """
 
     def decorate(check: Callable[[], None]) -> Callable[[], None]:
-        entry = Entry(key, title, status, note, check, _section_name(check.__module__))
+        entry = Entry(key, title, status, note, check, _section_name(check.__module__), derived)
         below = getattr(check, "_equation_keys", ())  # registered by the decorators under this one
         _register(entry, before=below[0] if below else None)
         check._equation_keys = (key, *below)
@@ -173,11 +195,17 @@ def equation(key: str, title: str, status: str, note: str = ""):
     return decorate
 
 
-def definition(key: str, title: str, note: str = "") -> Entry:
+def definition(key: str, title: str, note: str = "", derived: Callable[[], object] | None = None) -> Entry:
     """Register equation ``key`` as a definition (no check), in the calling section module."""
-    entry = Entry(key, title, "definition", note, None, _section_name(sys._getframe(1).f_globals["__name__"]))
+    section = _section_name(sys._getframe(1).f_globals["__name__"])
+    entry = Entry(key, title, "definition", note, None, section, derived)
     _register(entry)
     return entry
+
+
+def forms(*pairs) -> tuple[sp.Eq, ...]:
+    """The equations ``lhs = rhs`` of ``(lhs, rhs)`` pairs, unevaluated: what ``derived`` returns."""
+    return tuple(sp.Eq(lhs, rhs, evaluate=False) for lhs, rhs in pairs)
 
 
 def entries() -> list[Entry]:

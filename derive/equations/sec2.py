@@ -10,8 +10,8 @@ from __future__ import annotations
 import sympy as sp
 
 from ..model import mechanics
-from ..symbols import b_x, b_xd, b_y, b_yd, g_f, g_s, k, l0, m, q_r, q_rd, q_th, q_thd
-from . import equation, expect_nonzero, expect_zero
+from ..symbols import b_x, b_xd, b_y, b_yd, g_f, g_s, k, l0, m, q_r, q_rd, q_rdd, q_th, q_thd, q_thdd
+from . import equation, expect_nonzero, expect_zero, forms
 
 
 @equation(
@@ -22,6 +22,7 @@ from . import equation, expect_nonzero, expect_zero
     "q_thdd = +g_s sin(q_th)/q_r - 2 q_rd q_thd/q_r: gravity tips the leg away from the vertical "
     "(as dp_th/dt = m g_s q_r sin q_th in (29)), and the Coriolis term has q_rd, not q_r. "
     "The q_rdd row is right.",
+    derived=lambda: forms(*zip((q_rdd, q_thdd), mechanics.stance_polar_rhs()[1::2], strict=True)),
 )
 def check_stance_polar_display() -> None:
     """Printed: q_thdd = -g_s sin(q_th)/q_r - 2 q_r q_thd/q_r; q_rdd = F_s/m + q_r q_thd^2 - g_s cos q_th."""

@@ -51,7 +51,10 @@ from ..symbols import (
     rho_d,
     t,
 )
-from . import definition, equation, expect, expect_nonzero, expect_zero
+from . import definition, equation, expect, expect_nonzero, expect_zero, forms
+
+#: The report's subsections of section 3, each with its first equation number.
+SUBSECTIONS = (("3.1", 1), ("3.2", 27))
 
 q_rdd, q_thdd = sp.symbols("q_rdd q_thdd", real=True)
 n_int = sp.Symbol("n", integer=True, nonnegative=True)
@@ -76,6 +79,7 @@ def _expect_rows_zero(printed, derived, what: str) -> None:
     "stance Lagrangian",
     "verified",
     "T and V computed from the body at (-q_r sin q_th, q_r cos q_th).",
+    derived=lambda: forms((sp.Symbol("L"), mechanics.lagrangian_polar())),
 )
 def check_eq1() -> None:
     """Printed: L = m/2 (q_rd^2 + q_r^2 q_thd^2) - k/2 (l0 - q_r)^2 - m g_s q_r cos(q_th)."""
@@ -83,7 +87,12 @@ def check_eq1() -> None:
     expect_zero(printed - mechanics.lagrangian_polar(), "eq 1 printed L equals T - V of the body")
 
 
-@equation("2", "radial Euler-Lagrange equation", "verified")
+@equation(
+    "2",
+    "radial Euler-Lagrange equation",
+    "verified",
+    derived=lambda: forms((mechanics.euler_lagrange_polar()[0], 0)),
+)
 def check_eq2() -> None:
     """Printed: m q_rdd = m q_r q_thd^2 + k (l0 - q_r) - m g_s cos(q_th)."""
     el_r, _ = mechanics.euler_lagrange_polar()
@@ -97,6 +106,7 @@ def check_eq2() -> None:
     "corrected",
     "Printed 0 = d/dt(m q_r^2 q_thd) + m g_s q_r sin q_th; from (1): d/dt(m q_r^2 q_thd) = "
     "+m g_s q_r sin q_th (sign of the gravity term), consistent with (29).",
+    derived=lambda: forms((mechanics.euler_lagrange_polar()[1], 0)),
 )
 def check_eq3() -> None:
     """Printed: 0 = d/dt (m q_r^2 q_thd) + m g_s q_r sin(q_th)."""
@@ -149,7 +159,13 @@ def check_eq6() -> None:
 definition("7", "dimensionless rho, epsilon, omega, omega0")
 
 
-@equation("8", "dimensionless energy", "verified", "(7) substituted into (6).")
+@equation(
+    "8",
+    "dimensionless energy",
+    "verified",
+    "(7) substituted into (6).",
+    derived=lambda: forms((epsilon, geyer.dimensionless_energy())),
+)
 def check_eq8() -> None:
     """Printed: epsilon = rho_d^2 + omega^2/(1 + rho)^2 + omega0^2 rho^2 + 2 g_s/l0 (1 + rho)."""
     printed = rho_d**2 + omega**2 / (1 + rho) ** 2 + omega0**2 * rho**2 + 2 * g_s / l0 * (1 + rho)
@@ -172,7 +188,13 @@ def check_taylor() -> None:
     )
 
 
-@equation("9", "quadrature and lambda, mu, nu", "verified", "Second-order expansion of (8) in rho.")
+@equation(
+    "9",
+    "quadrature and lambda, mu, nu",
+    "verified",
+    "Second-order expansion of (8) in rho.",
+    derived=lambda: forms(*zip(sp.symbols("lambda mu nu"), geyer.radial_quadratic(), strict=True)),
+)
 def check_eq9() -> None:
     """Printed: lambda = -(3 omega^2 + omega0^2), mu = 2 (omega^2 - g_s/l0),
     nu = epsilon - omega^2 - 2 g_s/l0.
@@ -190,6 +212,7 @@ def check_eq9() -> None:
     "Printed sqrt(mu^2) - 4 lambda nu in the arcsine's denominator (OCR/typesetting); the "
     "antiderivative is -1/sqrt(-lambda) asin((2 lambda rho + mu)/sqrt(mu^2 - 4 lambda nu)), "
     "checked by differentiation for lambda < 0 < mu^2 - 4 lambda nu.",
+    derived=lambda: forms((t, geyer.antiderivative())),
 )
 def check_eq10() -> None:
     """Printed: t = -1/sqrt(-lambda) asin((2 lambda rho + mu)/(sqrt(mu^2) - 4 lambda nu)).
@@ -218,6 +241,11 @@ def check_eq10() -> None:
     "radial solution q_r(t) = l0 (1 + a + b sin(omega0_hat t))",
     "verified",
     "Both printed forms of b; rho(t) checked to solve rho_d^2 = lambda rho^2 + mu rho + nu.",
+    derived=lambda: forms(
+        (q_r, l0 * (1 + geyer.radial_solution())),
+        *((s, geyer.radial_solution_parameters()[str(s)]) for s in (omega0_hat, a)),
+        (b**2, geyer.radial_solution_parameters()["b2"]),
+    ),
 )
 def check_eq11() -> None:
     """Printed: omega0_hat = sqrt(omega0^2 + 3 omega^2), a = (omega^2 - g_s/l0)/omega0_hat^2, and
@@ -528,7 +556,11 @@ def check_eq26() -> None:
 
 
 @equation(
-    "27", "stance Hamiltonian (decompression, k_d)", "verified", "Legendre transform of (1) with k = k_d."
+    "27",
+    "stance Hamiltonian (decompression, k_d)",
+    "verified",
+    "Legendre transform of (1) with k = k_d.",
+    derived=lambda: forms((sp.Symbol("H"), mechanics.hamiltonian(k_d))),
 )
 def check_eq27() -> None:
     """Printed: H = (p_r^2 + p_th^2/q_r^2)/(2 m) + k_d/2 (l0 - q_r)^2 + m g_s q_r cos(q_th)."""
@@ -539,7 +571,15 @@ def check_eq27() -> None:
 definition("28", "Hamilton's equations")
 
 
-@equation("29", "Hamiltonian vector field", "verified", "From (27) and (28).")
+@equation(
+    "29",
+    "Hamiltonian vector field",
+    "verified",
+    "From (27) and (28).",
+    derived=lambda: forms(
+        *zip(sp.symbols("q_rd q_thd p_rd p_thd"), mechanics.hamiltonian_vector_field(k_d), strict=True)
+    ),
+)
 def check_eq29() -> None:
     """Printed: X_H = (dq_r/dt, dq_th/dt, dp_r/dt, dp_th/dt) = (p_r/m, p_th/(m q_r^2),
     p_th^2/(m q_r^3) + k_d (l0 - q_r) - m g_s cos q_th, m g_s q_r sin q_th).

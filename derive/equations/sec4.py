@@ -40,6 +40,10 @@ from ..symbols import (
 )
 from . import definition, equation, expect, expect_nonzero, expect_zero
 
+#: The report's subsections of section 4, each with its first equation number (46-48: the section's
+#: opening, shared by every type).
+SUBSECTIONS = (("4", 46), ("4.1", 49), ("4.2", 52), ("4.3", 55), ("4.4", 65), ("4.5", 67))
+
 t0, t_td, t_lo, zeta = sp.symbols("t0 t_td t_lo zeta", real=True)
 t_s = sp.Symbol("t_s", positive=True)
 P_t0, P_c = sp.symbols("P_t0 P_c", real=True)

@@ -18,6 +18,10 @@ option ``zeroth``). Such a module declares its maps and halves by functions, ``d
 as tuples: the maps a zeroth iterate can come from, so a new map is a zeroth-iterate choice of the
 iterative maps with no edit elsewhere.
 
+Each map module's maps (and halves, and the ground truth) are documented on one family page,
+``docs/<PAGE>.md``: the module attribute ``PAGE``, else the module's name (:func:`family_pages`).
+``slipmaps generate`` writes the report equations of the page's maps into it.
+
 What the studies of ``slipmaps accuracy`` and the command line do with a map, and which values of
 its options they measure, is declared with it too: ``roles`` (:data:`MAP_ROLES`,
 :data:`OPTION_ROLES`), published in the index, which is all the runtime reads.
@@ -29,7 +33,15 @@ import importlib
 import pkgutil
 from functools import cache
 
-__all__ = ["HELPERS_SUFFIX", "MAP_ROLES", "OPTION_ROLES", "all_maps", "all_halves", "starting_maps"]
+__all__ = [
+    "HELPERS_SUFFIX",
+    "MAP_ROLES",
+    "OPTION_ROLES",
+    "all_maps",
+    "all_halves",
+    "family_pages",
+    "starting_maps",
+]
 
 #: The name ending of a module that declares no map.
 HELPERS_SUFFIX = "_helpers"
@@ -191,3 +203,16 @@ def all_maps():
     _check_roles(specs)
     _unique(specs, "map")
     return _ordered(specs)
+
+
+@cache
+def family_pages() -> dict[str, tuple]:
+    """{page: every map, half and the ground truth that the modules of page ``docs/<page>.md``
+    declare, in report order}: a module's page is its attribute ``PAGE``, else its name."""
+    modules = {_short(m): m for m in _modules()}
+    declared = _declared("MAPS") + _declared("HALVES")
+    declared += [(_short(m), m.GROUND_TRUTH) for m in _modules() if hasattr(m, "GROUND_TRUTH")]
+    pages: dict[str, list] = {}
+    for module, spec in declared:
+        pages.setdefault(getattr(modules[module], "PAGE", module), []).append(spec)
+    return {page: _ordered(specs) for page, specs in sorted(pages.items())}

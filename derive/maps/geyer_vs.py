@@ -543,6 +543,9 @@ def _build(inp: MapInputs) -> MapBuild:
     return MapBuild(steps=steps, state_at=state_at, helpers=(quartic_kernel(),))
 
 
+#: The family page of this module's map (derive/maps/__init__.py: :func:`~slipmaps.derive.maps.family_pages`).
+PAGE = "variable"
+
 MAPS = (
     MapSpec(
         name="geyer-vs",

@@ -369,6 +369,9 @@ def _build(inp: MapInputs) -> MapBuild:
     return MapBuild(steps=setup + outputs, state_at=state_at, helpers=(solution_kernel(), leg_angle_kernel()))
 
 
+#: The family page of this module's map (derive/maps/__init__.py: :func:`~slipmaps.derive.maps.family_pages`).
+PAGE = "type5"
+
 MAPS = (
     MapSpec(
         name="gravity-type5",

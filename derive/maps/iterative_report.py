@@ -374,6 +374,11 @@ _EQUATIONS = (
 )  # not (127), (136), (142), (151): p_r at xi; the liftoff p_r is (45) corrected
 
 
+#: The family page of this module's maps: the iterative maps' (derive/maps/__init__.py:
+#: :func:`~slipmaps.derive.maps.family_pages`).
+PAGE = "iterative"
+
+
 @cache
 def declare_maps() -> tuple[MapSpec, ...]:
     """This module's ``MAPS``: declared once every map that can be a zeroth iterate is known (the

@@ -28,3 +28,6 @@ share and registers nothing.
 """
 
 from . import sec5_1, sec5_2_1, sec5_2_2, sec5_2_bottom  # noqa: F401 (each registers its rows)
+
+#: The report's subsections of section 5, each with its first equation number (152-154 close 5.2).
+SUBSECTIONS = (("5.1", 78), ("5.2.1", 114), ("5.2.2", 137), ("5.2", 152))
