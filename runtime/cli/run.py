@@ -33,7 +33,8 @@ def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser(
         "run",
         help="a multi-step run of a scenario (deadbeat control on a model map, the exact plant)",
-        description="Run a scenario file (examples/*.toml): every step the controller measures the apex, "
+        description="Run a scenario (a TOML file, as in examples/): every step the controller measures "
+        "the apex, "
         "plans the touchdown angle and the leg stiffness with its model map (deadbeat: the next apex on "
         "the target) and the plant (the exact simulator by default) steps. Prints a row per step and "
         "writes a figure (and --gif an animation). --evaluate writes the control evaluation "
@@ -41,7 +42,7 @@ def add_parser(sub) -> argparse.ArgumentParser:
         epilog="exit status: 0 the run completed (or the evaluation was written); 1 the plant fell (a step "
         "failed: its status in the last row); 2 a user error (one line on standard error).",
     )
-    p.add_argument("scenario", nargs="?", default=None, help="a scenario TOML file (examples/*.toml)")
+    p.add_argument("scenario", nargs="?", default=None, help="a scenario TOML file (one of examples/)")
     p.add_argument("--model", default=None, help="the controller's model map (overrides the file)")
     p.add_argument("--plant", default=None, help="the plant map (overrides the file; default exact)")
     p.add_argument("--steps", type=int, default=None, help="number of steps (overrides the file)")
