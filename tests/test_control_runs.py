@@ -254,8 +254,8 @@ def test_a_gif_is_written_with_the_pillow_writer(tmp_path):
 
 
 def test_control_imports_only_the_layers_below_it_and_nothing_below_imports_it():
-    """control uses api, exact, analysis (and the generated kernels); only cli and control
-    itself import control."""
+    """control uses api, exact, analysis (and the generated kernels); only control itself, report
+    (the report's sections 6-8 read the control evaluation) and cli import control."""
     runtime = ROOT / "runtime"
     for path in runtime.rglob("*.py"):
         layer = path.relative_to(runtime).parts[0]
