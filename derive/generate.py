@@ -271,6 +271,12 @@ def family_pages() -> dict[str, str]:
     out = {}
     for page, specs in all_family_pages().items():
         rel = f"docs/{page}.md"
+        if not (ROOT / rel).is_file():
+            names = ", ".join(f"`{s.name}`" for s in specs)
+            raise ValueError(
+                f"{names}: no family page {rel}; write it (with the markers <!-- equations:begin --> and "
+                "<!-- equations:end -->) or set PAGE = '<an existing page>' in the map's module"
+            )
         text = (ROOT / rel).read_text()
         out[rel] = docs.replace_between(text, "equations", docs.family_equations(specs, registry), rel)
     return out

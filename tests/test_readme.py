@@ -13,9 +13,11 @@ the order of :data:`documents.DOCUMENTS` (later blocks use ``params``, ``td``...
 Not run, each for the reason in :data:`SKIPPED`: installing, the whole test suite (minutes; this
 test is part of it), the commands that rewrite the checkout (``slipmaps generate``, ``slipmaps
 accuracy``, which also takes minutes) and the Dask cluster's lines (a scheduler at the placeholder
-address ``tcp://HOST:8786``). An inline span that is only ``slipmaps NAME`` names a subcommand in
-prose; it is checked to be one. Measured: about 35 s of CPU once the kernels are cached, most of
-it ``slipmaps generate --check`` (21 s) and ``slipmaps equations`` (9 s), both SymPy.
+address ``tcp://HOST:8786``), and the tutorial's marked steps of docs/adding_a_map.md, which add
+a map: tests/test_tutorial.py runs them in a copy of the project. An inline span that is only
+``slipmaps NAME`` names a subcommand in prose; it is checked to be one. Measured: about 35 s of CPU
+once the kernels are cached, most of it ``slipmaps generate --check`` (21 s) and ``slipmaps
+equations`` (9 s), both SymPy.
 """
 
 from __future__ import annotations

@@ -5,6 +5,8 @@ Each function performs one step of the report's derivation with SymPy and return
 end of the module declares the map (:data:`MAPS`) and three helper kernels that other maps call:
 ``geyer_solution`` (touchdown state -> omega, omega0_hat, a, b and the touchdown phase, eqs 7-12),
 ``geyer_liftoff_phase`` (eq 14) and ``geyer_state`` (the state at a phase, eqs 11, 17, 19).
+A variant with another leg angle than (19) is :func:`build_from` that angle (the map of
+docs/adding_a_map.md, ``derive/maps/geyer_angle2.py`` when added).
 
 Time origin: as in (11), the radial solution is rho(t) = a + b sin(omega0_hat t); touchdown,
 bottom and liftoff happen at the phases omega0_hat t = pi - asin(s_td), 3 pi / 2 and
@@ -416,29 +418,33 @@ def liftoff_phase_kernel() -> Kernel:
 
 
 @cache
-def state_at_phase() -> tuple[sp.Basic, ...]:
-    """(q_r, q_rd, q_th, q_thd) at the phase omega0_hat t = PHASE: (11), (19) and (17)."""
+def state_at_phase(angle: tuple[sp.Basic, sp.Symbol] | None = None) -> tuple[sp.Basic, ...]:
+    """(q_r, q_rd, q_th, q_thd) at the phase omega0_hat t = PHASE: (11), (19) and (17).
+
+    ``angle``: another leg angle than (19), as :func:`leg_angle` returns it (q_th(t) and the
+    symbol of the touchdown time), for a variant of the map."""
     rho_t = radial_solution(PHASE / omega0_hat)
     rho_dot = sp.diff(radial_solution(), t).subs(t, PHASE / omega0_hat)
-    th_expr, t_td = leg_angle()
+    th_expr, t_td = angle or leg_angle()
     q_th_t = th_expr.subs({t: PHASE / omega0_hat, t_td: PHASE_TD / omega0_hat})
     exact_rate, _ = angular_rate()
     return (l0 * (1 + rho_t), l0 * rho_dot, q_th_t, exact_rate.subs(rho, rho_t))
 
 
 @cache
-def event_states() -> dict[str, tuple[sp.Basic, ...]]:
+def event_states(angle: tuple[sp.Basic, sp.Symbol] | None = None) -> dict[str, tuple[sp.Basic, ...]]:
     """The bottom (13) and liftoff (14) states, with the trigonometry of the event phases resolved.
 
     At the bottom sin = -1 and cos = 0; at liftoff sin(phase_lo) = s_lo and cos(phase_lo) =
-    +sqrt(1 - s_lo^2) (the extending branch), at touchdown cos(phase_td) = -sqrt(1 - s_td^2) (the
-    compressing branch): no sine or cosine is left to evaluate at run time.
+    +sqrt(1 - s_lo^2) (the extending branch), at touchdown sin(phase_td) = s_td and cos(phase_td) =
+    -sqrt(1 - s_td^2) (the compressing branch): no sine or cosine is left to evaluate at run time.
+    ``angle``: as in :func:`state_at_phase`.
     """
     ph = event_phases()
-    trig_td = {sp.cos(PHASE_TD): sp.cos(ph["touchdown"].subs(ph["s"], S_TD))}
+    trig_td = {sp.cos(PHASE_TD): sp.cos(ph["touchdown"].subs(ph["s"], S_TD)), sp.sin(PHASE_TD): S_TD}
     phase_lo = ph["liftoff"].subs(ph["s"], S_LO)
     trig_lo = {sp.sin(PHASE_LO): sp.sin(phase_lo), sp.cos(PHASE_LO): sp.cos(phase_lo)}
-    state = state_at_phase()
+    state = state_at_phase(angle)
     bottom = tuple(e.subs(PHASE, ph["bottom"]).subs(trig_td) for e in state)
     liftoff = tuple(e.subs(PHASE, PHASE_LO).subs(trig_lo).subs(trig_td) for e in state)
     for e in bottom + liftoff:
@@ -447,9 +453,10 @@ def event_states() -> dict[str, tuple[sp.Basic, ...]]:
 
 
 @cache
-def state_kernel() -> Kernel:
-    """(q_r, q_rd, q_th, q_thd) at a phase omega0_hat t of (11), (19) and (17)."""
-    exprs = state_at_phase()
+def state_kernel(angle: tuple[sp.Basic, sp.Symbol] | None = None) -> Kernel:
+    """(q_r, q_rd, q_th, q_thd) at a phase omega0_hat t of (11), (19) and (17) (``angle``: as in
+    :func:`state_at_phase`; a variant renames the kernel into its module, ``dataclasses.replace``)."""
+    exprs = state_at_phase(angle)
     return Kernel(
         name="geyer_state",
         summary="Geyer et al.'s approximate stance state at the phase omega0_hat t: (11), (19), (17).",
@@ -484,12 +491,15 @@ def event_times(prefix: str = "") -> tuple[tuple[sp.Symbol, sp.Basic], ...]:
     )
 
 
-def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
+def stance_steps(
+    q_thd: sp.Basic, prefix: str = "", angle: tuple[sp.Basic, sp.Symbol] | None = None
+) -> tuple[Step, ...]:
     """Steps of Geyer et al.'s map from the touchdown state with leg angle rate ``q_thd``.
 
     Defines ``<prefix>`` + omega, omega0_hat, a, b, phase_td, phase_lo, t_bottom, t_stance and the
     bottom and liftoff states (``<prefix>bottom_q_r``, ...). Maps built on Geyer's call this with a
-    corrected rate (a corrected angular momentum) and their own prefix.
+    corrected rate (a corrected angular momentum) and their own prefix; a variant with another leg
+    angle than (19) passes it (``angle``, as in :func:`state_at_phase`).
     """
     sol, lo = solution_kernel(), liftoff_phase_kernel()
 
@@ -497,7 +507,7 @@ def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
         return sym(prefix + name)
 
     params = {p: catalog.PARAMS[p].symbol for p in _STANCE_PARAMS}
-    states = event_states()
+    states = event_states(angle)
     names = {x: n(x.name) for x in (omega, omega0_hat, a, b, PHASE_TD, PHASE_LO, S_TD, S_LO)}
     bottom = dict(zip((f.name for f in catalog.POLAR), states["bottom"], strict=True))
     liftoff = dict(zip((f.name for f in catalog.POLAR), states["liftoff"], strict=True))
@@ -527,14 +537,19 @@ def stance_steps(q_thd: sp.Basic, prefix: str = "") -> tuple[Step, ...]:
     )
 
 
-def _build(inp: MapInputs) -> MapBuild:
+def build_from(
+    state: Kernel, helpers: tuple[Kernel, ...], angle: tuple[sp.Basic, sp.Symbol] | None = None
+) -> MapBuild:
+    """Geyer et al.'s map with the leg angle ``angle`` (None: (19); else as in :func:`state_at_phase`)
+    and ``state``, the :func:`state_kernel` of that angle: the stance steps and the state a time after
+    touchdown. ``helpers``: the kernels placed in the map's module."""
+
     def state_at(time: sp.Symbol) -> tuple[Step, ...]:
-        st = state_kernel()
         return (
             stance_steps(q_thd_td)[0],
             Stage(((sym("phase_t"), PHASE_TD + omega0_hat * time),), comment="phase at t after touchdown"),
             Call(
-                st,
+                state,
                 {
                     "phase": sym("phase_t"),
                     "phase_td": PHASE_TD,
@@ -549,11 +564,11 @@ def _build(inp: MapInputs) -> MapBuild:
             ),
         )
 
-    return MapBuild(
-        steps=stance_steps(q_thd_td),
-        state_at=state_at,
-        helpers=(solution_kernel(), liftoff_phase_kernel(), state_kernel()),
-    )
+    return MapBuild(steps=stance_steps(q_thd_td, angle=angle), state_at=state_at, helpers=helpers)
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    return build_from(state_kernel(), (solution_kernel(), liftoff_phase_kernel(), state_kernel()))
 
 
 MAPS = (
