@@ -51,7 +51,7 @@ from ..symbols import (
     rho_d,
     t,
 )
-from . import definition, equation, expect, expect_nonzero, expect_zero, forms
+from . import definition, equation, expect, expect_nonzero, expect_zero, forms, iterates
 
 #: The report's subsections of section 3, each with its first equation number.
 SUBSECTIONS = (("3.1", 1), ("3.2", 27))
@@ -63,10 +63,8 @@ b_pos = sp.Symbol("b", positive=True)
 t_td, t_lo = sp.symbols("t_td t_lo", real=True)
 t_s = sp.Symbol("t_s", positive=True)
 MU = sp.Symbol("mu", real=True)
-H = sp.Symbol("H")
 H_OF_STATE = sp.Function("H")(q_r, q_th, p_r, p_th)  # H of (28), a function of the state
-xi = sp.Symbol("xi", positive=True)  # the mean-value leg length of (41)
-T_NEXT, P_R_NEXT = sp.Function("t_n1", real=True), sp.Function("p_r_n1", real=True)  # (n+1)-th iterates
+xi = iterates.XI  # the mean-value leg length of (41)
 
 
 def _expect_rows_zero(printed, derived, what: str) -> None:
@@ -680,7 +678,7 @@ def check_eq26() -> None:
     "stance Hamiltonian (decompression, k_d)",
     "verified",
     "Legendre transform of (1) with k = k_d.",
-    derived=lambda: forms((H, mechanics.hamiltonian(k_d))),
+    derived=lambda: iterates.hamiltonian_form("H", k_d),
 )
 def check_eq27() -> None:
     """Printed: H = (p_r^2 + p_th^2/q_r^2)/(2 m) + k_d/2 (l0 - q_r)^2 + m g_s q_r cos(q_th)."""
@@ -707,9 +705,7 @@ definition(
     "Hamiltonian vector field",
     "verified",
     "From (27) and (28).",
-    derived=lambda: forms(
-        *zip(sp.symbols("q_rd q_thd p_rd p_thd"), mechanics.hamiltonian_vector_field(k_d), strict=True)
-    ),
+    derived=lambda: iterates.vector_field_forms(k_d),
 )
 def check_eq29() -> None:
     """Printed: X_H = (dq_r/dt, dq_th/dt, dp_r/dt, dp_th/dt) = (p_r/m, p_th/(m q_r^2),
@@ -732,25 +728,19 @@ def check_eq29() -> None:
 # Section 3.2: Schwind and Koditschek's iterative map (30)-(45), leg length as the variable.
 
 
-def _leg_length_rate(row: int):
-    """Row ``row`` of (30)-(32): d(t, q_th, p_th)/dq_r = the rate of (29) over dq_r/dt."""
-    variable = (t, q_th, p_th)[row]
-    return forms((sp.Derivative(variable, q_r), iterative_helpers.leg_length_derivatives(k_d)[row]))
-
-
 @equation(
     "30",
     "dt/dq_r = m/p_r",
     "verified",
     "Rate of time per leg length: 1/(dq_r/dt) with dq_r/dt = p_r/m of (29); t_s names the time.",
-    derived=lambda: _leg_length_rate(0),
+    derived=lambda: iterates.rate_form(k_d, 0),
 )
 @equation(
     "31",
     "dq_th/dq_r = p_th/(q_r^2 p_r)",
     "verified",
     "dq_th/dt of (29) divided by dq_r/dt = p_r/m.",
-    derived=lambda: _leg_length_rate(1),
+    derived=lambda: iterates.rate_form(k_d, 1),
 )
 @equation(
     "32",
@@ -758,7 +748,7 @@ def _leg_length_rate(row: int):
     "verified",
     "dp_th/dt = +m g_s q_r sin q_th of (29) divided by dq_r/dt = p_r/m; the gravity sign is the "
     "correct one (that of (29), not of (3)).",
-    derived=lambda: _leg_length_rate(2),
+    derived=lambda: iterates.rate_form(k_d, 2),
 )
 def check_eq30_32() -> None:
     """Printed: (30) dt_s/dq_r = m/p_r; (31) dq_th/dq_r = p_th/(q_r^2 p_r);
@@ -906,14 +896,6 @@ def check_eq41() -> None:
     )
 
 
-def _iterate_form(row: int):
-    """Row ``row`` of (42)-(44): the (n+1)-th iterate of (t, q_th, p_th) at q_r, as derived, with
-    xi named (the check proves the step at xi of (41))."""
-    lhs = (T_NEXT, Q_TH_NEXT, P_TH_NEXT)[row](q_r)
-    step = iterative_helpers.iteration_step(k_d, xi)[row]
-    return forms((lhs, step), (xi, iterative_helpers.mean_value_point(k_d)))
-
-
 def _printed_eq42_44():
     """Eqs (42)-(44) as printed, with H^{-1}(...) the unevaluated H_INV and the printed xi of (41)."""
     xi = sp.Rational(3, 4) * q_r_b + sp.Rational(1, 4) * q_r
@@ -933,7 +915,9 @@ def _printed_eq42_44():
     "(30) integrated from the bottom with (38): t_b + [dt/dq_r of (30) at xi on the n-th iterate] "
     "(q_r - q_r_b), xi of (41). The printed t_s_(n+1) includes the bottom time t_b: it is the time "
     "at leg length q_r, not a duration.",
-    derived=lambda: _iterate_form(0),
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 0, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 @equation(
     "43",
@@ -941,7 +925,9 @@ def _printed_eq42_44():
     "verified",
     "(31) integrated from the bottom with (39): q_th_b + [dq_th/dq_r of (31) at xi on the n-th "
     "iterate] (q_r - q_r_b).",
-    derived=lambda: _iterate_form(1),
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 1, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 @equation(
     "44",
@@ -949,7 +935,9 @@ def _printed_eq42_44():
     "verified",
     "(32) integrated from the bottom with (40): p_th_b + [dp_th/dq_r of (32) at xi on the n-th "
     "iterate] (q_r - q_r_b); sin(q_th_n(xi)) is evaluated at xi with the rest of the integrand.",
-    derived=lambda: _iterate_form(2),
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 2, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 def check_eq42_44() -> None:
     """Printed, with H^{-1}_n = H^{-1}(xi, q_th_n(xi), p_th_n(xi), E):
@@ -964,14 +952,6 @@ def check_eq42_44() -> None:
         )
 
 
-def _corrected_eq45():
-    """(45) corrected: (33) at q_r on the (n+1)-th iterate."""
-    return sp.sqrt(
-        2 * m * (E - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(Q_TH_NEXT(q_r)))
-        - P_TH_NEXT(q_r) ** 2 / q_r**2
-    )
-
-
 @equation(
     "45",
     "iterate of the radial momentum p_r_(n+1)(q_r)",
@@ -981,7 +961,7 @@ def _corrected_eq45():
     "p_r_(n+1)(q_r) = H^{-1}(q_r, q_th_(n+1)(q_r), p_th_(n+1)(q_r), E) = sqrt(2 m (E - k_d/2 (l0 - "
     "q_r)^2 - m g_s q_r cos q_th_(n+1)(q_r)) - p_th_(n+1)(q_r)^2/q_r^2). OCR: the trailing '(4' is "
     "the equation tag (45) run into the display.",
-    derived=lambda: forms((P_R_NEXT(q_r), _corrected_eq45())),
+    derived=lambda: iterates.next_momentum_form(k_d, E, 1),
 )
 def check_eq45() -> None:
     """Printed: p_r_(n+1)(q_r) = sqrt(2 m (E - k_d/2 (l0 - xi)^2 - m g_s xi cos(q_th_(n+1)(xi)))
@@ -995,7 +975,10 @@ def check_eq45() -> None:
     expect_zero(printed - at_xi, "eq 45 printed p_r is (33) at the leg length xi on the (n+1)-th iterate")
     printed = printed.subs(xi, sp.Rational(3, 4) * q_r_b + sp.Rational(1, 4) * q_r)
     derived = iterative_helpers.next_radial_momentum(k_d)  # (33) at q_r on the (n+1)-th iterate
-    expect_zero(_corrected_eq45() - derived, "eq 45 corrected p_r equals (33) at q_r on the (n+1)-th iterate")
+    expect_zero(
+        iterates.next_momentum(k_d, E, 1) - derived,
+        "eq 45 corrected p_r equals (33) at q_r on the (n+1)-th iterate",
+    )
     # Refute the printed form at a concrete state: constant iterates (q_th = 0.1, p_th = 2), q_r above
     # the bottom (so xi != q_r), on an energy level where both square roots are real.
     x = sp.Symbol("x")
