@@ -75,10 +75,11 @@ def test_every_entry_has_a_subsection_and_derived_forms_are_equations():
 
 
 #: The least share of the entries a family page lists whose derived form the page renders as math
-#: (measured when the forms were added: exact, geyer, type5 all; gravity 31 of 34, only the two claims
-#: and the empty (69) as text; iterative 45 of 61, the definitions (34), (36)-(40), (120)-(122),
-#: (128), (144), the theorem (35) and section 5.1's (98) and 5.2's bottom (152)-(154) as text).
-MIN_MATH_SHARE = {"exact": 1.0, "geyer": 1.0, "type5": 1.0, "gravity": 0.9, "iterative": 0.7, "variable": 0.0}
+#: (measured when the forms were added: exact, geyer, type5 all; gravity 31 of 34, the two claims and
+#: the empty (69) as text; iterative 46 of 61, the definitions (34), (36)-(40), (120)-(122), (128),
+#: (144), the theorem (35) and the bottom (152)-(154) as text; variable 27 of 36, (106)-(113) and
+#: the empty (95) as text).
+MIN_MATH_SHARE = {"exact": 1.0, "geyer": 1.0, "type5": 1.0, "gravity": 0.9, "iterative": 0.7, "variable": 0.7}
 
 
 def _rendered(block: str) -> dict[str, bool]:
