@@ -10,6 +10,8 @@ import re
 import textwrap
 
 import sympy as sp
+from sympy.core.function import UndefinedFunction
+from sympy.printing.latex import LatexPrinter
 
 
 def replace_between(text: str, key: str, body: str, where: str = "README.md") -> str:
@@ -216,9 +218,18 @@ _STATE_SUBSCRIPTS = {
 }
 
 
+#: Names whose LaTeX is not their parts': H^{-1} of (33).
+_NAMES = {"H_inv": "H^{-1}"}
+#: Subscripts written as LaTeX, not upright words: the (n+1)-th iterate ``q_th_n1``.
+_SUBSCRIPTS = {"n1": "n+1"}
+
+
 def _symbol_latex(name: str) -> str:
     """LaTeX of a symbol named as in generated code: ``q_thd_td`` -> ``\\dot{q}_{\\theta,\\mathrm{td}}``,
-    ``omega0_hat`` -> ``\\hat{\\omega}_{0}``, ``rho_d`` -> ``\\dot{\\rho}`` (``k_d`` stays ``k_{d}``)."""
+    ``omega0_hat`` -> ``\\hat{\\omega}_{0}``, ``rho_d`` -> ``\\dot{\\rho}`` (``k_d`` stays ``k_{d}``),
+    ``q_th_n1`` -> ``q_{\\theta,n+1}``."""
+    if name in _NAMES:
+        return _NAMES[name]
     head, *subs = name.split("_")
     digits = re.fullmatch(r"([A-Za-z]+)(\d+)", head)
     if digits:
@@ -235,13 +246,30 @@ def _symbol_latex(name: str) -> str:
         subs, dots = subs[:-1], 1
     if dots:
         base = rf"\{'d' * dots}ot{{{base}}}"
-    subs = [s if len(s) == 1 or s.startswith("\\") or s.isdigit() else rf"\mathrm{{{s}}}" for s in subs]
+    subs = [
+        _SUBSCRIPTS.get(s, s)
+        if len(s) == 1 or s.startswith("\\") or s.isdigit() or s in _SUBSCRIPTS
+        else rf"\mathrm{{{s}}}"
+        for s in subs
+    ]
     return f"{base}_{{{','.join(subs)}}}" if subs else base
 
 
+class _Printer(LatexPrinter):
+    """SymPy's LaTeX printer with undefined functions named as symbols are (``q_th_n1(x)`` ->
+    ``q_{\\theta,n+1}\\left(x\\right)``)."""
+
+    def _print_Function(self, expr, exp=None):
+        if not isinstance(expr.func, UndefinedFunction):
+            return super()._print_Function(expr, exp)
+        args = ", ".join(self._print(arg) for arg in expr.args)
+        call = rf"{_symbol_latex(expr.func.__name__)}\left({args}\right)"
+        return call if exp is None else rf"{call}^{{{exp}}}"
+
+
 def _latex(form: sp.Basic) -> str:
-    names = {s: _symbol_latex(s.name) for s in form.free_symbols}
-    return sp.latex(form, symbol_names=names)
+    names = {s: _symbol_latex(s.name) for s in form.atoms(sp.Symbol)}  # bound ones too (d/dq_r)
+    return _Printer({"symbol_names": names}).doprint(form)
 
 
 def _math(entry) -> list[str]:

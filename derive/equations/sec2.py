@@ -10,7 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..model import mechanics
-from ..symbols import b_x, b_xd, b_y, b_yd, g_f, g_s, k, l0, m, q_r, q_rd, q_rdd, q_th, q_thd, q_thdd
+from ..symbols import b_x, b_xd, b_y, b_yd, g_f, g_s, k, l0, m, q_r, q_rd, q_rdd, q_th, q_thd, q_thdd, t
 from . import equation, expect_nonzero, expect_zero, forms
 
 
@@ -35,6 +35,17 @@ def check_stance_polar_display() -> None:
     expect_zero(corrected_thdd - thdd, "sec2.2.1 corrected q_thdd equals the Euler-Lagrange one")
 
 
+def _accelerations(rows):
+    """d^2 b_x/dt^2 = rows[0], d^2 b_y/dt^2 = rows[1]."""
+    return forms(*zip((sp.Derivative(b_x, (t, 2)), sp.Derivative(b_y, (t, 2))), rows, strict=True))
+
+
+def _cartesian_rows(angle):
+    """(b_xdd, b_ydd) = (-F_s sin(angle)/m, F_s cos(angle)/m - g_s), F_s = k (l0 - |b|) on flat ground."""
+    force = k * (l0 - sp.sqrt(b_x**2 + b_y**2))
+    return (-force * sp.sin(angle) / m, force * sp.cos(angle) / m - g_s)
+
+
 @equation(
     "sec2.2.1-cartesian",
     "Cartesian stance dynamics, flat ground",
@@ -43,16 +54,12 @@ def check_stance_polar_display() -> None:
     "q_th = arctan(b_y/b_x), the angle from the horizontal. With the Table 1 convention "
     "q_th = atan2(-b_x, b_y) (so sin q_th = -b_x/q_r, cos q_th = b_y/q_r). OCR noise in the "
     "square roots (b_y for b_y^2) ignored.",
+    derived=lambda: _accelerations(_cartesian_rows(sp.atan2(-b_x, b_y))),
 )
 def check_stance_cartesian_display() -> None:
     """Printed (flat ground): b_xdd = -F_s sin(atan(b_y/b_x))/m, b_ydd = F_s cos(atan(b_y/b_x))/m - g_s."""
     _, xdd, _, ydd = mechanics.stance_cartesian_rhs()
-    radius = sp.sqrt(b_x**2 + b_y**2)
-    force = k * (l0 - radius)
-
-    def rows(angle):
-        return (-force * sp.sin(angle) / m, force * sp.cos(angle) / m - g_s)
-
+    rows = _cartesian_rows
     # The first-line (polar) form b_xdd = -F sin(q_th)/m, b_ydd = F cos(q_th)/m - g_s holds with the
     # Table 1 angle; arctan(b_y / b_x), measured from the horizontal, is not q_th. The printed form
     # is refuted at one body position above the toe.
@@ -70,6 +77,7 @@ def check_stance_cartesian_display() -> None:
     "ballistic flight dynamics",
     "verified",
     "From L = m/2 (b_xd^2 + b_yd^2) - m g_f b_y; the toe state b_tx is bookkeeping.",
+    derived=lambda: _accelerations(mechanics.flight_rhs()[1::2]),
 )
 def check_flight_display() -> None:
     """Printed: d/dt (b_x, b_xd, b_y, b_yd, b_tx) = (b_xd, 0, b_yd, -g_f, b_xd)."""

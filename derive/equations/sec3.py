@@ -51,7 +51,7 @@ from ..symbols import (
     rho_d,
     t,
 )
-from . import definition, equation, expect, expect_nonzero, expect_zero, forms
+from . import definition, equation, expect, expect_nonzero, expect_zero, forms, iterates
 
 #: The report's subsections of section 3, each with its first equation number.
 SUBSECTIONS = (("3.1", 1), ("3.2", 27))
@@ -60,8 +60,11 @@ q_rdd, q_thdd = sp.symbols("q_rdd q_thdd", real=True)
 n_int = sp.Symbol("n", integer=True, nonnegative=True)
 s_sym = sp.Symbol("s", real=True)
 b_pos = sp.Symbol("b", positive=True)
-t_td = sp.Symbol("t_td", real=True)
+t_td, t_lo = sp.symbols("t_td t_lo", real=True)
+t_s = sp.Symbol("t_s", positive=True)
 MU = sp.Symbol("mu", real=True)
+H_OF_STATE = sp.Function("H")(q_r, q_th, p_r, p_th)  # H of (28), a function of the state
+xi = iterates.XI  # the mean-value leg length of (41)
 
 
 def _expect_rows_zero(printed, derived, what: str) -> None:
@@ -122,8 +125,20 @@ def check_eq3() -> None:
     )
 
 
-@equation("4", "radial equation under Assumption 1", "verified", "cos q_th = 1 in (2).")
-@equation("5", "angular momentum conservation under Assumption 1", "verified", "sin q_th = 0 in (3).")
+@equation(
+    "4",
+    "radial equation under Assumption 1",
+    "verified",
+    "cos q_th = 1 in (2).",
+    derived=lambda: forms((geyer.assumption1_equations()[0], 0)),
+)
+@equation(
+    "5",
+    "angular momentum conservation under Assumption 1",
+    "verified",
+    "sin q_th = 0 in (3).",
+    derived=lambda: forms((geyer.assumption1_equations()[1], 0)),
+)
 def check_eq4_eq5() -> None:
     """Printed: (4) m q_rdd = m q_r q_thd^2 + k (l0 - q_r) - m g_s; (5) d/dt (m q_r^2 q_thd) = 0."""
     el_r, el_th = geyer.assumption1_equations()
@@ -138,6 +153,7 @@ def check_eq4_eq5() -> None:
     "conserved energy under Assumption 1",
     "verified",
     "Energy function of (1) with cos q_th = 1; also checked to be a first integral of (4)-(5).",
+    derived=lambda: forms((E, geyer.energy_assumption1())),
 )
 def check_eq6() -> None:
     """Printed: E = m/2 q_rd^2 + p_th^2/(2 m q_r^2) + k/2 (l0 - q_r)^2 + m g_s q_r."""
@@ -156,7 +172,11 @@ def check_eq6() -> None:
 # --------------------------------------------------------------------------------------------
 # Section 3.1: dimensionless form (7)-(8), Assumption 2 and the radial solution (9)-(11).
 
-definition("7", "dimensionless rho, epsilon, omega, omega0")
+definition(
+    "7",
+    "dimensionless rho, epsilon, omega, omega0",
+    derived=lambda: forms(*geyer.dimensionless_substitution().items()),
+)
 
 
 @equation(
@@ -179,6 +199,7 @@ def check_eq8() -> None:
     "Assumption 2: 1/(1+rho)^2 ~ 1 - 2 rho + 3 rho^2",
     "verified",
     "The second-order Taylor polynomial holds (the next term is -4 rho^3).",
+    derived=lambda: forms((1 / (1 + rho) ** 2, geyer.taylor_inverse_square() + sp.O(rho**3))),
 )
 def check_taylor() -> None:
     """Printed: 1/(1 + rho)^2 ~ 1 - 2 rho + 3 rho^2."""
@@ -285,14 +306,28 @@ def _printed_phases(s_td, s_lo):
     return base - (sp.pi / 2 + sp.asin(s_td)), base, base + (sp.pi / 2 + sp.asin(s_lo))
 
 
+def _phase_form(event: str, time):
+    """omega0_hat ``time`` = the derived phase of ``event`` (n = 0), s_x written as s."""
+    return forms((omega0_hat * time, geyer.event_phases()[event]))
+
+
 @equation(
     "12",
     "touchdown time",
     "verified",
     "Compressing root of sin(omega0_hat t) = (q_r_td/l0 - 1 - a)/b, up to 2 n pi.",
+    derived=lambda: _phase_form("touchdown", t_td),
 )
-@equation("13", "bottom time", "verified", "Minimum of rho: sin = -1.")
-@equation("14", "liftoff time", "verified", "Extending root after the bottom, up to 2 n pi.")
+@equation(
+    "13", "bottom time", "verified", "Minimum of rho: sin = -1.", derived=lambda: _phase_form("bottom", t_b)
+)
+@equation(
+    "14",
+    "liftoff time",
+    "verified",
+    "Extending root after the bottom, up to 2 n pi.",
+    derived=lambda: _phase_form("liftoff", t_lo),
+)
 def check_eq12_14() -> None:
     """Printed: omega0_hat t_td = (2n + 3/2) pi - (pi/2 + asin s_td), omega0_hat t_b = (2n + 3/2) pi,
     omega0_hat t_lo = (2n + 3/2) pi + (pi/2 + asin s_lo), s_x = (q_r_x/l0 - 1 - a)/b.
@@ -316,12 +351,27 @@ def check_eq12_14() -> None:
     expect_zero(sp.sin(p_b) + 1, "eq 13 sin(printed bottom phase) = -1 (minimum of rho)")
 
 
-@equation("15", "touchdown time, q_r_td = l0", "verified")
-@equation("16", "liftoff time, q_r_lo = l0", "verified")
+def _phases_at_rest_length():
+    """(12)-(14) at q_r_td = q_r_lo = l0, n = 0: omega0_hat (t_td, t_b, t_lo)."""
+    return _printed_phases(geyer.leg_length_ratio(l0), geyer.leg_length_ratio(l0))
+
+
+@equation(
+    "15",
+    "touchdown time, q_r_td = l0",
+    "verified",
+    derived=lambda: forms((omega0_hat * t_td, _phases_at_rest_length()[0].subs(n_int, 0))),
+)
+@equation(
+    "16",
+    "liftoff time, q_r_lo = l0",
+    "verified",
+    derived=lambda: forms((omega0_hat * t_lo, _phases_at_rest_length()[2].subs(n_int, 0))),
+)
 def check_eq15_16() -> None:
     """Printed: (12) and (14) with s_td = s_lo = -a/b."""
     p_td, _, p_lo = _printed_phases(-a / b, -a / b)
-    g_td, _, g_lo = _printed_phases(geyer.leg_length_ratio(l0), geyer.leg_length_ratio(l0))
+    g_td, _, g_lo = _phases_at_rest_length()
     expect_zero(p_td - g_td, "eq 15 printed touchdown phase equals (12) at q_r_td = l0")
     expect_zero(p_lo - g_lo, "eq 16 printed liftoff phase equals (14) at q_r_lo = l0")
 
@@ -332,6 +382,7 @@ def check_eq15_16() -> None:
     "verified",
     "Also its linearization omega (1 - 2 rho). The text's 'q_thd = p_th/(m q_r)' above (17) "
     "misses the square of q_r.",
+    derived=lambda: forms((q_thd, geyer.angular_rate()[0]), (q_thd, geyer.angular_rate()[1] + sp.O(rho**2))),
 )
 def check_eq17() -> None:
     """Printed: q_thd = omega/(1 + rho)^2 ~ omega (1 - 2 rho)."""
@@ -344,15 +395,27 @@ def check_eq17() -> None:
     )
 
 
-@equation("18", "leg angle integral", "verified")
-@equation("19", "leg angle q_th(t)", "verified")
+def _leg_angle():
+    """(19) derived: the integral of (17) along (11) from the touchdown time t_td."""
+    derived, td_sym = geyer.leg_angle()
+    return derived.subs(td_sym, t_td)
+
+
+def _leg_angle_integral():
+    """(18) derived: q_th_td plus the unevaluated integral of the linearized (17) along (11)."""
+    _, linear = geyer.angular_rate()
+    return q_th_td + sp.Integral(linear.subs(rho, geyer.radial_solution()), (t, t_td, t))
+
+
+@equation("18", "leg angle integral", "verified", derived=lambda: forms((q_th, _leg_angle_integral())))
+@equation("19", "leg angle q_th(t)", "verified", derived=lambda: forms((q_th, _leg_angle())))
 def check_eq18_19() -> None:
     """Printed: (18) q_th = q_th_td + int_{t_td}^t omega ((1 - 2a) - 2b sin(omega0_hat t)) dt;
     (19) q_th = q_th_td + omega (1 - 2a)(t - t_td)
                 + 2 b omega/omega0_hat (cos(omega0_hat t) - cos(omega0_hat t_td)).
     """
-    derived, td_sym = geyer.leg_angle()
-    derived = derived.subs(td_sym, t_td)
+    derived = _leg_angle()
+    expect_zero(_leg_angle_integral().doit() - derived, "eq 18 the derived integral evaluates to (19)")
     printed18 = q_th_td + sp.integrate(omega * ((1 - 2 * a) - 2 * b * sp.sin(omega0_hat * t)), (t, t_td, t))
     printed19 = (
         q_th_td
@@ -363,11 +426,20 @@ def check_eq18_19() -> None:
     expect_zero(printed19 - derived, "eq 19 printed q_th(t) equals the integral of (17) along (11)")
 
 
-@equation("20", "stance time, q_r_td = q_r_lo = l0", "verified")
+def _stance_time_at_rest_length():
+    """(20) derived: (14) - (12) at q_r_td = q_r_lo = l0."""
+    return geyer.stance_time_general()["t_stance"].subs(geyer.q_r_lo, l0).subs(q_r_td, l0)
+
+
+@equation(
+    "20",
+    "stance time, q_r_td = q_r_lo = l0",
+    "verified",
+    derived=lambda: forms((t_s, _stance_time_at_rest_length())),
+)
 def check_eq20() -> None:
     """Printed: t_s = t_lo - t_td = [pi + 2 asin(-a/b)]/omega0_hat."""
-    gen = geyer.stance_time_general()
-    derived = gen["t_stance"].subs(geyer.q_r_lo, l0).subs(q_r_td, l0)
+    derived = _stance_time_at_rest_length()
     printed = (sp.pi + 2 * sp.asin(-a / b)) / omega0_hat
     expect_zero(printed - derived, "eq 20 printed stance time equals (14) - (12) at q_r_td = q_r_lo = l0")
 
@@ -385,8 +457,15 @@ def _with_positive_b(expr):
     "q_r(t) with touchdown at t = 0",
     "verified",
     "Valid for q_r_td = l0 (sin(omega0_hat t_td) = -a/b) and b > 0.",
+    derived=lambda: forms((q_r, _with_positive_b(geyer.touchdown_shifted_solution()[0]))),
 )
-@equation("22", "q_th(t) with touchdown at t = 0", "verified", "As (21).")
+@equation(
+    "22",
+    "q_th(t) with touchdown at t = 0",
+    "verified",
+    "As (21).",
+    derived=lambda: forms((q_th, _with_positive_b(geyer.touchdown_shifted_solution()[1]))),
+)
 def check_eq21_22() -> None:
     """Printed: (21) q_r = l0 + l0 [a (1 - cos(omega0_hat t)) - sqrt(b^2 - a^2) sin(omega0_hat t)];
     (22) q_th = q_th_td + (1 - 2a) omega t
@@ -410,12 +489,21 @@ def check_eq21_22() -> None:
     )
 
 
+#: omega0_hat of a touchdown state at q_r_td = l0, as (23)-(24) print it.
+W_TOUCHDOWN = sp.sqrt(k / m + 3 * q_thd_td**2)
+
+
+def _touchdown_forms(lhs, build, w_hat=W_TOUCHDOWN):
+    """``lhs = build(omega0_hat)`` with omega0_hat named, and its value ``w_hat`` in touchdown states
+    (what the check substitutes)."""
+    return forms((lhs, build(omega0_hat)), (omega0_hat, w_hat))
+
+
 def _derived_eq23_24():
     return geyer.touchdown_state_solution()
 
 
-def _printed_eq23(speed):
-    w_hat = sp.sqrt(k / m + 3 * q_thd_td**2)
+def _printed_eq23(speed, w_hat=W_TOUCHDOWN):
     wt = w_hat * t
     return l0 - sp.Abs(speed) / w_hat * sp.sin(wt) + (q_thd_td**2 * l0 - g_s) / w_hat**2 * (1 - sp.cos(wt))
 
@@ -426,6 +514,7 @@ def _printed_eq23(speed):
     "corrected",
     "Printed |q_r_td| (the leg length); the amplitude is |q_rd_td|/omega0_hat "
     "(sqrt(b^2 - a^2) = |q_rd_td|/(l0 omega0_hat) at q_r_td = l0).",
+    derived=lambda: _touchdown_forms(q_r, lambda w: _printed_eq23(q_rd_td, w)),
 )
 def check_eq23() -> None:
     """Printed: q_r = l0 - |q_r_td|/omega0_hat sin(omega0_hat t)
@@ -444,22 +533,31 @@ def check_eq23() -> None:
     )
 
 
-@equation("24", "q_th(t) in touchdown states", "verified", "OCR: |q_rd_tt| read as |q_rd_td|.")
+def _printed_eq24(w_hat=W_TOUCHDOWN):
+    """(24) as printed, a_p = (q_thd_td^2 - g_s/l0)/omega0_hat^2."""
+    wt = w_hat * t
+    a_p = (q_thd_td**2 - g_s / l0) / w_hat**2
+    return (
+        q_th_td
+        + (1 - 2 * a_p) * q_thd_td * t
+        + 2 * q_thd_td / w_hat * (a_p * sp.sin(wt) + sp.Abs(q_rd_td) / (w_hat * l0) * (1 - sp.cos(wt)))
+    )
+
+
+@equation(
+    "24",
+    "q_th(t) in touchdown states",
+    "verified",
+    "OCR: |q_rd_tt| read as |q_rd_td|.",
+    derived=lambda: _touchdown_forms(q_th, _printed_eq24),
+)
 def check_eq24() -> None:
     """Printed: q_th = q_th_td + (1 - 2 a_p) q_thd_td t
     + 2 q_thd_td/omega0_hat [a_p sin(omega0_hat t) + |q_rd_td|/(omega0_hat l0) (1 - cos(omega0_hat t))],
     a_p = (q_thd_td^2 - g_s/l0)/omega0_hat^2, omega0_hat = sqrt(k/m + 3 q_thd_td^2).
     """
     _, derived, _ = _derived_eq23_24()
-    w_hat = sp.sqrt(k / m + 3 * q_thd_td**2)
-    wt = w_hat * t
-    a_p = (q_thd_td**2 - g_s / l0) / w_hat**2
-    printed = (
-        q_th_td
-        + (1 - 2 * a_p) * q_thd_td * t
-        + 2 * q_thd_td / w_hat * (a_p * sp.sin(wt) + sp.Abs(q_rd_td) / (w_hat * l0) * (1 - sp.cos(wt)))
-    )
-    expect_zero(printed - derived, "eq 24 printed q_th(t) equals (22) in touchdown states")
+    expect_zero(_printed_eq24() - derived, "eq 24 printed q_th(t) equals (22) in touchdown states")
 
 
 def _derived_event_times_td():
@@ -477,6 +575,24 @@ def _derived_event_times_td():
     return t_s, t_b, ratio, w_td
 
 
+def _atan_argument(w_td):
+    """(g_s - l0 q_thd_td^2)/(|q_rd_td| omega0_hat), the arctan argument of corrected (25)-(26)."""
+    return (g_s - l0 * q_thd_td**2) / (sp.Abs(q_rd_td) * w_td)
+
+
+def _corrected_event_time(fraction, w_td=None):
+    """``fraction`` of the corrected stance time (25): [pi + 2 arctan(...)]/omega0_hat (1 for t_s,
+    1/2 for t_b of (26)); omega0_hat that of the touchdown state unless given."""
+    w_td = geyer.touchdown_at_rest_length()[2] if w_td is None else w_td
+    return fraction * (sp.pi + 2 * sp.atan(_atan_argument(w_td))) / w_td
+
+
+def _event_time_forms(lhs, fraction):
+    """Corrected (25) or (26) in omega0_hat, and omega0_hat of the touchdown state."""
+    w_td = geyer.touchdown_at_rest_length()[2]
+    return _touchdown_forms(lhs, lambda w: _corrected_event_time(fraction, w), w_td)
+
+
 def _expect_asin_is_atan(ratio, atan_arg, what: str) -> None:
     """asin(x) == atan(y) for x in (-1, 1): both lie in (-pi/2, pi/2), so equal tangents suffice."""
     expect_zero(
@@ -490,6 +606,7 @@ def _expect_asin_is_atan(ratio, atan_arg, what: str) -> None:
     "corrected",
     "Printed |q_r_{t+t}| lacks the dot as in (23): t_s = [pi + 2 arctan((g_s - l0 q_thd_td^2)/"
     "(|q_rd_td| omega0_hat))]/omega0_hat, valid (0 < t_s < 2 pi/omega0_hat) on the whole domain.",
+    derived=lambda: _event_time_forms(t_s, 1),
 )
 def check_eq25() -> None:
     """Printed: t_s = [pi + 2 arctan((g_s - l0 q_thd_td^2)/(|q_r_{t+t}| omega0_hat))]/omega0_hat.
@@ -497,8 +614,8 @@ def check_eq25() -> None:
     The leg-length symbol lacks its dot again (see eq 23).
     """
     t_s, _, ratio, w_td = _derived_event_times_td()
-    arg = (g_s - l0 * q_thd_td**2) / (sp.Abs(q_rd_td) * w_td)
-    corrected = (sp.pi + 2 * sp.atan(arg)) / w_td
+    arg = _atan_argument(w_td)
+    corrected = _corrected_event_time(1)
     printed = (sp.pi + 2 * sp.atan((g_s - l0 * q_thd_td**2) / (sp.Abs(q_r_td) * w_td))) / w_td
     _expect_asin_is_atan(ratio, arg, "eq 25")
     expect_zero(
@@ -520,6 +637,7 @@ def check_eq25() -> None:
     "q_thd_td^2 l0 < g_s (slow gaits). Correct branch: t_b = atan2(|q_rd_td| omega0_hat, "
     "q_thd_td^2 l0 - g_s)/omega0_hat = [pi/2 + arctan((g_s - l0 q_thd_td^2)/(|q_rd_td| "
     "omega0_hat))]/omega0_hat = t_s/2, so 0 < t_b < t_s.",
+    derived=lambda: _event_time_forms(t_b, sp.Rational(1, 2)),
 )
 def check_eq26() -> None:
     """Printed: t_b = arctan(|q_rd_td| omega0_hat/(q_thd_td^2 l0 - g_s))/omega0_hat.
@@ -527,8 +645,8 @@ def check_eq26() -> None:
     Off by pi/omega0_hat when q_thd_td^2 l0 < g_s.
     """
     t_s, t_b, ratio, w_td = _derived_event_times_td()
-    arg = (g_s - l0 * q_thd_td**2) / (sp.Abs(q_rd_td) * w_td)
-    corrected = (sp.pi / 2 + sp.atan(arg)) / w_td  # = atan2(|q_rd| w, q_thd^2 l0 - g_s) / w
+    arg = _atan_argument(w_td)
+    corrected = _corrected_event_time(sp.Rational(1, 2))  # = atan2(|q_rd| w, q_thd^2 l0 - g_s) / w
     _expect_asin_is_atan(ratio, arg, "eq 26")
     expect_zero(
         (t_b - corrected).subs(sp.asin(ratio), sp.atan(arg)),
@@ -560,7 +678,7 @@ def check_eq26() -> None:
     "stance Hamiltonian (decompression, k_d)",
     "verified",
     "Legendre transform of (1) with k = k_d.",
-    derived=lambda: forms((sp.Symbol("H"), mechanics.hamiltonian(k_d))),
+    derived=lambda: iterates.hamiltonian_form("H", k_d),
 )
 def check_eq27() -> None:
     """Printed: H = (p_r^2 + p_th^2/q_r^2)/(2 m) + k_d/2 (l0 - q_r)^2 + m g_s q_r cos(q_th)."""
@@ -568,7 +686,18 @@ def check_eq27() -> None:
     expect_zero(printed - mechanics.hamiltonian(k_d), "eq 27 printed H equals the Legendre transform of (1)")
 
 
-definition("28", "Hamilton's equations")
+definition(
+    "28",
+    "Hamilton's equations",
+    derived=lambda: forms(
+        *zip(
+            sp.symbols("q_rd q_thd p_rd p_thd"),
+            (sp.Derivative(H_OF_STATE, p_r), sp.Derivative(H_OF_STATE, p_th))
+            + (-sp.Derivative(H_OF_STATE, q_r), -sp.Derivative(H_OF_STATE, q_th)),
+            strict=True,
+        )
+    ),
+)
 
 
 @equation(
@@ -576,9 +705,7 @@ definition("28", "Hamilton's equations")
     "Hamiltonian vector field",
     "verified",
     "From (27) and (28).",
-    derived=lambda: forms(
-        *zip(sp.symbols("q_rd q_thd p_rd p_thd"), mechanics.hamiltonian_vector_field(k_d), strict=True)
-    ),
+    derived=lambda: iterates.vector_field_forms(k_d),
 )
 def check_eq29() -> None:
     """Printed: X_H = (dq_r/dt, dq_th/dt, dp_r/dt, dp_th/dt) = (p_r/m, p_th/(m q_r^2),
@@ -606,14 +733,22 @@ def check_eq29() -> None:
     "dt/dq_r = m/p_r",
     "verified",
     "Rate of time per leg length: 1/(dq_r/dt) with dq_r/dt = p_r/m of (29); t_s names the time.",
+    derived=lambda: iterates.rate_form(k_d, 0),
 )
-@equation("31", "dq_th/dq_r = p_th/(q_r^2 p_r)", "verified", "dq_th/dt of (29) divided by dq_r/dt = p_r/m.")
+@equation(
+    "31",
+    "dq_th/dq_r = p_th/(q_r^2 p_r)",
+    "verified",
+    "dq_th/dt of (29) divided by dq_r/dt = p_r/m.",
+    derived=lambda: iterates.rate_form(k_d, 1),
+)
 @equation(
     "32",
     "dp_th/dq_r = m^2 g_s q_r sin(q_th)/p_r",
     "verified",
     "dp_th/dt = +m g_s q_r sin q_th of (29) divided by dq_r/dt = p_r/m; the gravity sign is the "
     "correct one (that of (29), not of (3)).",
+    derived=lambda: iterates.rate_form(k_d, 2),
 )
 def check_eq30_32() -> None:
     """Printed: (30) dt_s/dq_r = m/p_r; (31) dq_th/dq_r = p_th/(q_r^2 p_r);
@@ -633,6 +768,7 @@ def check_eq30_32() -> None:
     "p_r = H^{-1}(q_r, q_th, p_th, E)",
     "verified",
     "The positive root (decompression, p_r > 0) of H = E with H of (27).",
+    derived=lambda: forms((p_r, iterative_helpers.radial_momentum(k_d))),
 )
 def check_eq33() -> None:
     """Printed: p_r = H^{-1} = sqrt(2 m (E - k_d/2 (l0 - q_r)^2 - m g_s q_r cos(q_th)) - p_th^2/q_r^2)."""
@@ -722,6 +858,7 @@ definition(
     "(s = -1/2) and f = q_th(sigma) or p_th(sigma) (r = 1/2) gives 1/4 too. With this xi, (38) "
     "reproduces the leading term of its integral exactly. The display writes xi_hat_x, the "
     "iteration xi_hat_r.",
+    derived=lambda: forms((xi, iterative_helpers.mean_value_point(k_d))),
 )
 def check_eq41() -> None:
     """Printed: xi_hat_x = 3/4 q_r_b + 1/4 q_r."""
@@ -778,6 +915,9 @@ def _printed_eq42_44():
     "(30) integrated from the bottom with (38): t_b + [dt/dq_r of (30) at xi on the n-th iterate] "
     "(q_r - q_r_b), xi of (41). The printed t_s_(n+1) includes the bottom time t_b: it is the time "
     "at leg length q_r, not a duration.",
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 0, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 @equation(
     "43",
@@ -785,6 +925,9 @@ def _printed_eq42_44():
     "verified",
     "(31) integrated from the bottom with (39): q_th_b + [dq_th/dq_r of (31) at xi on the n-th "
     "iterate] (q_r - q_r_b).",
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 1, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 @equation(
     "44",
@@ -792,6 +935,9 @@ def _printed_eq42_44():
     "verified",
     "(32) integrated from the bottom with (40): p_th_b + [dp_th/dq_r of (32) at xi on the n-th "
     "iterate] (q_r - q_r_b); sin(q_th_n(xi)) is evaluated at xi with the rest of the integrand.",
+    derived=lambda: iterates.iterate_form(
+        iterative_helpers.iteration_step(k_d, xi), 2, iterative_helpers.mean_value_point(k_d)
+    ),
 )
 def check_eq42_44() -> None:
     """Printed, with H^{-1}_n = H^{-1}(xi, q_th_n(xi), p_th_n(xi), E):
@@ -815,11 +961,11 @@ def check_eq42_44() -> None:
     "p_r_(n+1)(q_r) = H^{-1}(q_r, q_th_(n+1)(q_r), p_th_(n+1)(q_r), E) = sqrt(2 m (E - k_d/2 (l0 - "
     "q_r)^2 - m g_s q_r cos q_th_(n+1)(q_r)) - p_th_(n+1)(q_r)^2/q_r^2). OCR: the trailing '(4' is "
     "the equation tag (45) run into the display.",
+    derived=lambda: iterates.next_momentum_form(k_d, E, 1),
 )
 def check_eq45() -> None:
     """Printed: p_r_(n+1)(q_r) = sqrt(2 m (E - k_d/2 (l0 - xi)^2 - m g_s xi cos(q_th_(n+1)(xi)))
     - p_th_(n+1)(xi)^2/xi^2)   (OCR: followed by a stray '(4')."""
-    xi = sp.Symbol("xi", positive=True)  # the leg length 3/4 q_r_b + 1/4 q_r of (41)
     printed = sp.sqrt(
         2 * m * (E - k_d / 2 * (l0 - xi) ** 2 - m * g_s * xi * sp.cos(Q_TH_NEXT(xi)))
         - P_TH_NEXT(xi) ** 2 / xi**2
@@ -829,11 +975,10 @@ def check_eq45() -> None:
     expect_zero(printed - at_xi, "eq 45 printed p_r is (33) at the leg length xi on the (n+1)-th iterate")
     printed = printed.subs(xi, sp.Rational(3, 4) * q_r_b + sp.Rational(1, 4) * q_r)
     derived = iterative_helpers.next_radial_momentum(k_d)  # (33) at q_r on the (n+1)-th iterate
-    corrected = sp.sqrt(
-        2 * m * (E - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(Q_TH_NEXT(q_r)))
-        - P_TH_NEXT(q_r) ** 2 / q_r**2
+    expect_zero(
+        iterates.next_momentum(k_d, E, 1) - derived,
+        "eq 45 corrected p_r equals (33) at q_r on the (n+1)-th iterate",
     )
-    expect_zero(corrected - derived, "eq 45 corrected p_r equals (33) at q_r on the (n+1)-th iterate")
     # Refute the printed form at a concrete state: constant iterates (q_th = 0.1, p_th = 2), q_r above
     # the bottom (so xi != q_r), on an energy level where both square roots are real.
     x = sp.Symbol("x")

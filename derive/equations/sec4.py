@@ -38,7 +38,7 @@ from ..symbols import (
     q_thd_td,
     t,
 )
-from . import definition, equation, expect, expect_nonzero, expect_zero
+from . import definition, equation, expect, expect_nonzero, expect_zero, forms
 
 #: The report's subsections of section 4, each with its first equation number (46-48: the section's
 #: opening, shared by every type).
@@ -46,7 +46,8 @@ SUBSECTIONS = (("4", 46), ("4.1", 49), ("4.2", 52), ("4.3", 55), ("4.4", 65), ("
 
 t0, t_td, t_lo, zeta = sp.symbols("t0 t_td t_lo zeta", real=True)
 t_s = sp.Symbol("t_s", positive=True)
-P_t0, P_c = sp.symbols("P_t0 P_c", real=True)
+P_t0, P_c, p_th_hat, tau_sym = sp.symbols("P_t0 P_c p_th_hat tau", real=True)
+P_OF_T = sp.Function("P", real=True)(t)  # the momentum P(t) of (46), (48)
 q_th_b, q_th_lo = sp.symbols("q_th_b q_th_lo", real=True)
 q_r_b = sp.Symbol("q_r_b", positive=True)
 q_r_av = sp.Symbol("q_r_av", positive=True)  # the average leg length of (55)-(61), (67)-(75)
@@ -68,6 +69,14 @@ def _sines(*angles):
 # Section 4: the gravity torque (46)-(47) and the sample-mean rule (48).
 
 
+TAU = sp.Function("tau")  # the torque tau(t) of (46)
+
+
+def _momentum_integral():
+    """(46): P(t) = P_t0 + int_{t0}^{t} tau(zeta) dzeta, which solves dP/dt = tau from P(t0) = P_t0."""
+    return P_t0 + sp.Integral(TAU(zeta), (zeta, t0, t))
+
+
 @equation(
     "46",
     "momentum P(t) = P_t0 + int tau, from tau = dP/dt",
@@ -75,12 +84,12 @@ def _sines(*angles):
     "The printed integral solves dP/dt = tau with P(t0) = P_t0; with P = p_th, tau = dp_th/dt of (29) "
     "depends on the state only through (q_r, q_th), so (46) gives the stance momentum from the stance "
     "trajectory (the gravity sign is that of (29); (3)'s sign error is recorded in its row).",
+    derived=lambda: forms((P_OF_T, _momentum_integral())),
 )
 def check_eq46() -> None:
     """Printed: tau(t) = dP(t)/dt <=> P(t) = P_t0 + int_{t0}^{t} tau(zeta) dzeta."""
-    tau = sp.Function("tau")
-    printed = P_t0 + sp.Integral(tau(zeta), (zeta, t0, t))
-    expect_zero(sp.diff(printed, t) - tau(t), "eq 46 d/dt of the printed P(t) equals tau(t)")
+    printed = _momentum_integral()
+    expect_zero(sp.diff(printed, t) - TAU(t), "eq 46 d/dt of the printed P(t) equals tau(t)")
     expect_zero(printed.subs(t, t0).doit() - P_t0, "eq 46 the printed P(t) starts at P(t0) = P_t0")
     rate = mechanics.hamiltonian_vector_field()[3]  # dp_th/dt of (29)
     expect(
@@ -94,6 +103,7 @@ def check_eq46() -> None:
     "gravity torque tau = m g_s q_r sin q_th",
     "verified",
     "dp_th/dt, the fourth row of Hamilton's equations (29), whatever the stiffness.",
+    derived=lambda: forms((tau_sym, gravity.torque())),
 )
 def check_eq47() -> None:
     """Printed: tau(t) = m g_s q_r(t) sin(q_th(t))."""
@@ -105,6 +115,16 @@ def check_eq47() -> None:
     )
 
 
+SAMPLE = sp.Symbol("k", integer=True, positive=True)  # the sample index of (48)
+SAMPLE_RADIUS, SAMPLE_ANGLE = sp.IndexedBase("q_r"), sp.IndexedBase("q_th")  # q_r(t_k), q_th(t_k)
+
+
+def _corrected_eq48(n):
+    """(48) corrected: P_t0 + (t - t0) times the mean of (47) over the samples k = 1 ... n (a Sum)."""
+    torque = m * g_s * SAMPLE_RADIUS[SAMPLE] * sp.sin(SAMPLE_ANGLE[SAMPLE])
+    return P_t0 + (t - t0) * sp.Sum(torque, (SAMPLE, 1, n)) / n
+
+
 @equation(
     "48",
     "sample-mean rule P(t) ~ P_t0 + (t - t0) mean of tau over n samples",
@@ -114,21 +134,19 @@ def check_eq47() -> None:
     "m g q_r(n) sin q_th(n) (checked for n = 2, 3); g is the stance gravity g_s. Correct: P(t) ~ "
     "P_t0 + (t - t0) (1/n) sum_{k=1}^{n} m g_s q_r(t_k) sin(q_th(t_k)) over the samples t_k, "
     "gravity.impulse.",
+    derived=lambda: forms((P_OF_T, _corrected_eq48(sp.Symbol("n", integer=True, positive=True)))),
 )
 def check_eq48() -> None:
     """Printed: P(t) = P_t0 + int_{t0}^{t} tau(zeta) dzeta
     ~ P_t0 + (t - t0) ((1/n) sum_{k=1}^{n} m g q_r(n) sin(q_th(n))).
     """
-    idx = sp.Symbol("k", integer=True, positive=True)
-    radius, angle = sp.IndexedBase("q_r"), sp.IndexedBase("q_th")
+    idx, radius, angle = SAMPLE, SAMPLE_RADIUS, SAMPLE_ANGLE
     for n in (2, 3):
         printed = (
             P_t0 + (t - t0) * sp.Sum(m * g_printed * radius[n] * sp.sin(angle[n]), (idx, 1, n)).doit() / n
         )
         printed = printed.subs(g_printed, g_s)  # g read as g_s: what remains is the index
-        corrected = (
-            P_t0 + (t - t0) * sp.Sum(m * g_s * radius[idx] * sp.sin(angle[idx]), (idx, 1, n)).doit() / n
-        )
+        corrected = _corrected_eq48(n).doit()
         derived = P_t0 + gravity.impulse(t - t0, [(radius[i], angle[i]) for i in range(1, n + 1)])
         expect_zero(
             printed - (P_t0 + (t - t0) * m * g_s * radius[n] * sp.sin(angle[n])),
@@ -151,13 +169,16 @@ def _sample_mean_row(key: str, title: str, printed_text: str, coefficient, lengt
     (48) over [t_td, t_lo] with the leg length held at ``length`` and one sample per angle."""
     what = f"eq {key} printed P_c equals (48) with q_r = {length} at {len(angles)} samples"
 
+    def impulse():
+        return gravity.impulse(t_s, [(length, th) for th in angles])
+
     def check() -> None:
         printed = t_s * m * g_s * coefficient * _sines(*angles)
-        expect_zero(printed - gravity.impulse(t_s, [(length, th) for th in angles]), what)
+        expect_zero(printed - impulse(), what)
 
     check.__doc__ = f"Printed: {printed_text}"
     check.__name__ = check.__qualname__ = f"check_eq{key}"
-    return equation(key, title, "verified", note)(check)
+    return equation(key, title, "verified", note, derived=lambda: forms((P_c, sp.factor(impulse()))))(check)
 
 
 _READINGS_NOTE = (
@@ -180,14 +201,17 @@ def _corrected_momentum_row(key: str, title: str, source: str, start, duration, 
     leg length) as the mean momentum p_th + P_c/2, not as p_th + P_c.
     """
 
+    def momentum():
+        return p_th + sp.integrate(P_c / duration, (zeta, start, t))  # (46) with (48)'s torque
+
     def check() -> None:
         printed = p_th + P_c
-        momentum = p_th + sp.integrate(P_c / duration, (zeta, start, t))  # (46) with (48)'s torque
+        momentum_t = momentum()
         expect_zero(
-            momentum.subs(t, start + duration) - printed,
+            momentum_t.subs(t, start + duration) - printed,
             f"eq {key} printed p_th_hat is the momentum of (46) at the end of the interval of {source}",
         )
-        sweep = sp.integrate(momentum / (m * leg**2), (t, start, start + duration))
+        sweep = sp.integrate(momentum_t / (m * leg**2), (t, start, start + duration))
         expect_zero(
             sweep - duration * (p_th + P_c / 2) / (m * leg**2),
             f"eq {key} the constant torque of (48) sweeps the leg angle as the mean momentum p_th + P_c/2",
@@ -199,7 +223,8 @@ def _corrected_momentum_row(key: str, title: str, source: str, start, duration, 
 
     check.__doc__ = f"Printed: p_th_hat(t) = p_th + P_c(t), P_c of {source}."
     check.__name__ = check.__qualname__ = f"check_eq{key}"
-    return equation(key, title, "verified", note)(check)
+    derived = lambda: forms((p_th_hat, sp.simplify(momentum().subs(t, start + duration))))  # noqa: E731
+    return equation(key, title, "verified", note, derived=derived)(check)
 
 
 def _momentum_note(source: str) -> str:
@@ -297,6 +322,12 @@ def _read(expr) -> sp.Basic:
     return sp.sympify(expr).subs({b: b_pos, q_rd_td: q_rd_neg})
 
 
+def _average_definition(source: str, t_from, t_to, lhs=q_r_av):
+    """The derived form of an average's definition: ``lhs`` = the mean of q_r(t) of ``source``."""
+    mean = sp.Integral(_integrand(source), (t, t_from, t_to)) / (t_to - t_from)
+    return forms((lhs, mean))
+
+
 def _expect_average_definition(key: str, integrand, source: str, t_from, t_to) -> None:
     """The printed integral definition: its integrand is q_r(t) of ``source``, its value the average."""
     integrand = _read(integrand)
@@ -328,6 +359,11 @@ def _printed_average_11(t_from, t_to, duration):
 def _corrected_average_11(t_from, t_to, duration):
     """(56), (57), (68) corrected: the integral of (11), l0 on the b term."""
     return l0 * (1 + a) - l0 * b / (w * duration) * (sp.cos(w * t_to) - sp.cos(w * t_from))
+
+
+def _corrected_average_form(t_from, t_to, duration, lhs=q_r_av):
+    """``lhs`` = corrected (56), (57) or (68)."""
+    return forms((lhs, _corrected_average_11(t_from, t_to, duration)))
 
 
 def _printed_eq59():
@@ -372,6 +408,7 @@ def _printed_average_23(t_from, t_to):
     "type 2: q_r_av = stance average of (11)",
     "verified",
     "The integrand is (11) in the absolute time of (11); the integral is gravity.average_leg_length.",
+    derived=lambda: _average_definition("eq11", t_td, t_lo),
 )
 def check_eq55() -> None:
     """Printed: q_r_av = 1/(t_lo - t_td) int_{t_td}^{t_lo} l0 (1 + a + b sin(omega0_hat t)) dt."""
@@ -392,6 +429,7 @@ _L0_NOTE = (
     "corrected",
     "Printed l0 (1 + a) - b/(omega0_hat (t_lo - t_td)) (cos(omega0_hat t_lo) - cos(omega0_hat t_td)) "
     + _L0_NOTE.replace("t_f", "t_lo").replace("t_i", "t_td"),
+    derived=lambda: _corrected_average_form(t_td, t_lo, t_lo - t_td),
 )
 @equation(
     "57",
@@ -399,6 +437,7 @@ _L0_NOTE = (
     "corrected",
     "(56) with t_lo - t_td = t_s, the same missing l0: correct l0 (1 + a) - l0 b/(omega0_hat t_s) "
     "(cos(omega0_hat t_lo) - cos(omega0_hat t_td)).",
+    derived=lambda: _corrected_average_form(t_td, t_td + t_s, t_s),
 )
 def check_eq56_57() -> None:
     """Printed: (56) q_r_av = l0 (1 + a) - b/(omega0_hat (t_lo - t_td))
@@ -427,6 +466,7 @@ def check_eq56_57() -> None:
     "verified",
     "The integrand is (21) (touchdown at t = 0, q_r_td = l0, b > 0); the integral is "
     "gravity.average_leg_length on [0, t_s].",
+    derived=lambda: _average_definition("eq21", 0, t_s),
 )
 def check_eq58() -> None:
     """Printed: q_r_av = 1/t_s int_0^{t_s} (l0 + l0 [a (1 - cos(omega0_hat t))
@@ -435,7 +475,13 @@ def check_eq58() -> None:
     _expect_average_definition("58", _radius_21(t), "eq21", 0, t_s)
 
 
-@equation("59", "type 2: q_r_av from (21), closed form", "verified", "The integral of (58), b > 0.")
+@equation(
+    "59",
+    "type 2: q_r_av from (21), closed form",
+    "verified",
+    "The integral of (58), b > 0.",
+    derived=lambda: forms((q_r_av, _average("eq21", 0, t_s))),
+)
 def check_eq59() -> None:
     """Printed: q_r_av = l0 (1 + a) - l0/(t_s omega0_hat) [a sin(omega0_hat t_s)
     + sqrt(b^2 - a^2) (1 - cos(omega0_hat t_s))].
@@ -451,6 +497,7 @@ def check_eq59() -> None:
     "verified",
     "The integrand is (23) with the radial speed |q_rd_td| (printed with the dot here; see (23)); "
     "touchdown compressing (q_rd_td < 0), omega0_hat = sqrt(k/m + 3 q_thd_td^2).",
+    derived=lambda: _average_definition("eq23", 0, t_s),
 )
 def check_eq60() -> None:
     """Printed: q_r_av = 1/t_s int_0^{t_s} (l0 - |q_rd_td|/omega0_hat sin(omega0_hat t)
@@ -467,6 +514,7 @@ def check_eq60() -> None:
     "integral of (60) has the radial speed |q_rd_td|: q_r_av = l0 + (q_thd_td^2 l0 - g_s)/omega0_hat^2 "
     "- |q_rd_td|/(omega0_hat^2 t_s) (1 - cos(omega0_hat t_s)) - (q_thd_td^2 l0 - g_s)/(omega0_hat^3 t_s) "
     "sin(omega0_hat t_s).",
+    derived=lambda: forms((q_r_av, _printed_eq61(q_rd_td))),
 )
 def check_eq61() -> None:
     """Printed: q_r_av = l0 + (q_thd_td^2 l0 - g_s)/omega0_hat^2
@@ -513,6 +561,11 @@ _sample_mean_row(
 # Section 4.4: type 3, the trapezoid rule on [t_i, t_f] (65)-(66).
 
 
+def _trapezoid_impulse():
+    """(65) derived: (48) on [t_i, t_f] with the true leg lengths and angles at t_i and t_f."""
+    return gravity.impulse(T_F - T_I, [(Q_R(T_I), Q_TH(T_I)), (Q_R(T_F), Q_TH(T_F))])
+
+
 def _printed_eq65(t_from, t_to):
     return (
         (t_to - t_from) * m * g_s / 2 * (Q_R(t_from) * sp.sin(Q_TH(t_from)) + Q_R(t_to) * sp.sin(Q_TH(t_to)))
@@ -525,10 +578,11 @@ def _printed_eq65(t_from, t_to):
     "verified",
     "(48) on [t_i, t_f] (t_td <= t_i < t_f <= t_lo) with the true leg lengths and angles at t_i and "
     "t_f as the 2 samples.",
+    derived=lambda: forms((P_c, sp.factor(_trapezoid_impulse()))),
 )
 def check_eq65() -> None:
     """Printed: P_c(t) = (t_f - t_i) m g_s/2 [q_r(t_i) sin(q_th(t_i)) + q_r(t_f) sin(q_th(t_f))]."""
-    derived = gravity.impulse(T_F - T_I, [(Q_R(T_I), Q_TH(T_I)), (Q_R(T_F), Q_TH(T_F))])
+    derived = _trapezoid_impulse()
     expect_zero(_printed_eq65(T_I, T_F) - derived, "eq 65 printed P_c equals (48) at t_i and t_f")
 
 
@@ -559,7 +613,7 @@ def check_type3_is_type0() -> None:
     type3 = _printed_eq65(t_td, t_lo).subs(special).subs(t_lo, t_td + t_s)
     type0 = t_s * m * g_s * l0 / 2 * _sines(q_th_td, q_th_lo)  # (49) as printed
     expect_zero(type3 - type0, "sec4.4 printed (65) on [t_td, t_lo] with q_r_td = q_r_lo = l0 equals (49)")
-    derived3 = gravity.impulse(T_F - T_I, [(Q_R(T_I), Q_TH(T_I)), (Q_R(T_F), Q_TH(T_F))])
+    derived3 = _trapezoid_impulse()
     derived3 = derived3.subs({T_I: t_td, T_F: t_lo}).subs(special).subs(t_lo, t_td + t_s)
     derived0 = gravity.impulse(t_s, [(l0, q_th_td), (l0, q_th_lo)])
     expect_zero(derived3 - derived0, "sec4.4 (48) with the true leg lengths at l0 equals (48) at q_r = l0")
@@ -574,6 +628,7 @@ def check_type3_is_type0() -> None:
     "type 4: q_r_av(t_i, t_f) = average of (11)",
     "verified",
     "The integrand is (11) in its absolute time; the integral is gravity.average_leg_length.",
+    derived=lambda: _average_definition("eq11", T_I, T_F, Q_R_AV(T_I, T_F)),
 )
 def check_eq67() -> None:
     """Printed: q_r_av(t_i, t_f) = 1/(t_f - t_i) int_{t_i}^{t_f} l0 (1 + a + b sin(omega0_hat t)) dt."""
@@ -586,6 +641,7 @@ def check_eq67() -> None:
     "corrected",
     "Printed l0 (1 + a) - b/(omega0_hat (t_f - t_i)) (cos(omega0_hat t_f) - cos(omega0_hat t_i)) "
     "(as (56)) " + _L0_NOTE,
+    derived=lambda: _corrected_average_form(T_I, T_F, T_F - T_I, Q_R_AV(T_I, T_F)),
 )
 def check_eq68() -> None:
     """Printed: q_r_av(t_i, t_f) = l0 (1 + a) - b/(omega0_hat (t_f - t_i))
@@ -618,6 +674,7 @@ definition(
     "verified",
     "The integrand is (21) (t from touchdown: 'note that t_td = 0'; b > 0); the integral is "
     "gravity.average_leg_length.",
+    derived=lambda: _average_definition("eq21", T_I, T_F, Q_R_AV(T_I, T_F)),
 )
 def check_eq70() -> None:
     """Printed: q_r_av(t_i, t_f) = 1/(t_f - t_i) int_{t_i}^{t_f} (l0 + l0 [a (1 - cos(omega0_hat t))
@@ -631,12 +688,14 @@ def check_eq70() -> None:
     "type 4: q_r_av(t_i, t_f) from (21), closed form (first line)",
     "verified",
     "(71)-(72) are one expression broken over two lines: the integral of (70), b > 0.",
+    derived=lambda: forms((Q_R_AV(T_I, T_F), _printed_average_21(T_I, T_F))),
 )
 @equation(
     "72",
     "type 4: q_r_av(t_i, t_f) from (21), closed form (second line)",
     "verified",
     "Continuation of (71).",
+    derived=lambda: forms((Q_R_AV(T_I, T_F), _printed_average_21(T_I, T_F))),
 )
 def check_eq71_72() -> None:
     """Printed: q_r_av(t_i, t_f) = l0 (1 + a) - l0/((t_f - t_i) omega0_hat) [a (sin(omega0_hat t_f)
@@ -656,6 +715,7 @@ def check_eq71_72() -> None:
     "Untagged in the OCR text: the display's first line ends in the garble "
     "'d \\dot{t}_{\\prime}^{\\prime}' (dt and its tag). The integrand is (23) with |q_rd_td| as in "
     "(60) (t from touchdown, q_rd_td < 0); the integral is gravity.average_leg_length.",
+    derived=lambda: _average_definition("eq23", T_I, T_F, Q_R_AV(T_I, T_F)),
 )
 def check_eq73() -> None:
     """Printed: q_r_av(t_i, t_f) = 1/(t_f - t_i) int_{t_i}^{t_f} (l0 - |q_rd_td|/omega0_hat sin(omega0_hat t)
@@ -671,12 +731,14 @@ def check_eq73() -> None:
     "verified",
     "(74)-(75) are one expression broken over two lines: the integral of (73); |q_rd_td| printed "
     "with the dot here.",
+    derived=lambda: forms((Q_R_AV(T_I, T_F), _printed_average_23(T_I, T_F))),
 )
 @equation(
     "75",
     "type 4: q_r_av(t_i, t_f) from (23), closed form (second line)",
     "verified",
     "Continuation of (74). OCR: q_{\\dot{\\theta}+t} read as q_thd_td.",
+    derived=lambda: forms((Q_R_AV(T_I, T_F), _printed_average_23(T_I, T_F))),
 )
 def check_eq74_75() -> None:
     """Printed: q_r_av(t_i, t_f) = l0 + (q_thd_td^2 l0 - g_s)/omega0_hat^2
@@ -689,6 +751,12 @@ def check_eq74_75() -> None:
     )
 
 
+def _average_length_impulse():
+    """(76) derived: (48) on [t_i, t_f] at the leg length q_r_av(t_i, t_f), samples at t_i and t_f."""
+    length = Q_R_AV(T_I, T_F)
+    return gravity.impulse(T_F - T_I, [(length, Q_TH(T_I)), (length, Q_TH(T_F))])
+
+
 def _printed_eq76(t_from, t_to):
     length = Q_R_AV(t_from, t_to)
     return (t_to - t_from) * m * g_s * length / 2 * _sines(Q_TH(t_from), Q_TH(t_to))
@@ -699,11 +767,11 @@ def _printed_eq76(t_from, t_to):
     "type 4: P_c at q_r_av(t_i, t_f), samples at t_i and t_f",
     "verified",
     "(48) on [t_i, t_f] with q_r = q_r_av(t_i, t_f) of (67)-(75) at t_i and t_f.",
+    derived=lambda: forms((P_c, sp.factor(_average_length_impulse()))),
 )
 def check_eq76() -> None:
     """Printed: P_c(t) = (t_f - t_i) m g_s q_r_av(t_i, t_f)/2 (sin(q_th(t_i)) + sin(q_th(t_f)))."""
-    length = Q_R_AV(T_I, T_F)
-    derived = gravity.impulse(T_F - T_I, [(length, Q_TH(T_I)), (length, Q_TH(T_F))])
+    derived = _average_length_impulse()
     expect_zero(_printed_eq76(T_I, T_F) - derived, "eq 76 printed P_c equals (48) at q_r_av(t_i, t_f)")
 
 

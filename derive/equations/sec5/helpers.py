@@ -11,9 +11,9 @@ import sympy as sp
 from ...maps import iterative_helpers
 from ...maps.iterative_helpers import H_INV, P_TH_N, P_TH_NEXT, Q_TH_N, Q_TH_NEXT, E_ab, E_ba, q_r_b, sigma
 from ...symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_r_td, q_th
-from .. import expect, expect_nonzero, expect_zero
+from .. import expect, expect_nonzero, expect_zero, forms, iterates
+from ..iterates import XI
 
-XI = sp.Symbol("xi", positive=True)  # the mean-value point xi_hat_r, as a symbol
 QUARTER, HALF = sp.Rational(1, 4), sp.Rational(1, 2)
 x_, a_, b_, e_ = sp.symbols("x a b e", real=True)  # dummy arguments of Lambdas
 
@@ -75,10 +75,7 @@ def check_momentum_at_xi(key: str, stiffness, energy, sign: int, point, sample) 
     at_xi = h_inv.subs({q_r: XI, q_th: Q_TH_NEXT(XI), p_th: P_TH_NEXT(XI)}, simultaneous=True)
     expect_zero(printed - at_xi, f"eq {key} printed p_r is p_r at the leg length xi on the (n+1)-th iterate")
     derived = iterative_helpers.next_radial_momentum(stiffness, energy, sign)
-    corrected = sign * sp.sqrt(
-        2 * m * (energy - stiffness / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(Q_TH_NEXT(q_r)))
-        - P_TH_NEXT(q_r) ** 2 / q_r**2
-    )
+    corrected = iterates.next_momentum(stiffness, energy, sign)
     expect_zero(corrected - derived, f"eq {key} corrected p_r equals p_r at q_r on the (n+1)-th iterate")
     # Constant iterates (q_th = 0.1, p_th = 2), q_r away from xi.
     difference = (printed.subs(XI, point) - derived).replace(Q_TH_NEXT, sp.Lambda(x_, sp.Rational(1, 10)))
@@ -109,6 +106,23 @@ DECOMPRESSION_SAMPLE = {
 }
 
 
+def _weights(stiffness):
+    """The weights g of (30)-(32) in the variant f = 1/H^{-1}: 1, 1/q_r^2, q_r."""
+    return [
+        iterative_helpers.weight_split(rate)[1]
+        for rate in iterative_helpers.leg_length_derivatives(stiffness)
+    ]
+
+
+def weighted_integral_form(row: int, start, energy, stiffness):
+    """Row ``row`` of (129)-(131), (145)-(147): int_start^{q_r} g/H^{-1}(xi) dsigma = f(xi) int g, int g
+    computed (sp.integrate), as the check proves it."""
+    h_inv = h_inv_on_iterate(energy)
+    weight = _weights(stiffness)[row].subs(q_r, sigma)
+    exact = sp.integrate(weight, (sigma, start, q_r)) / h_inv
+    return forms((sp.Integral(weight / h_inv, (sigma, start, q_r)), exact))
+
+
 def check_weighted_integrals(keys, start, energy, stiffness) -> None:
     """Shared by (129)-(131) and (145)-(147): f(xi) int_start^{q_r} g dsigma with g of the rates."""
     h_inv = h_inv_on_iterate(energy)
@@ -117,16 +131,13 @@ def check_weighted_integrals(keys, start, energy, stiffness) -> None:
         1 / h_inv * (1 / start - 1 / q_r),
         1 / (2 * h_inv) * (q_r**2 - start**2),
     )
-    weights = [
-        iterative_helpers.weight_split(rate)[1]
-        for rate in iterative_helpers.leg_length_derivatives(stiffness)
-    ]
+    weights = _weights(stiffness)
     expect_zero(weights[0] - 1, f"eq {keys[0]} the weight of (116)/(30) is g = 1")
     expect_zero(weights[1] - 1 / q_r**2, f"eq {keys[1]} the weight of (117)/(31) is g = 1/sigma^2")
     expect_zero(weights[2] - q_r, f"eq {keys[2]} the weight of (118)/(32) is g = sigma")
-    for key, right, weight in zip(keys, printed, weights, strict=True):
-        integral = sp.integrate(weight.subs(q_r, sigma), (sigma, start, q_r))
-        expect_zero(right - integral / h_inv, f"eq {key} printed right side is f(xi) times the exact int g")
+    for row, (key, right) in enumerate(zip(keys, printed, strict=True)):
+        (form,) = weighted_integral_form(row, start, energy, stiffness)
+        expect_zero(right - form.rhs, f"eq {key} printed right side is f(xi) times the exact int g")
 
 
 def check_dropped_p_th(eq, anchor, printed, corrected, derived, stiffness, energy) -> None:

@@ -37,12 +37,13 @@ from ...symbols import (
     q_r,
     q_r_lo,
     q_r_td,
+    q_th,
     q_th_td,
     q_thd,
     rho,
     t,
 )
-from .. import definition, equation, expect, expect_nonzero, expect_zero
+from .. import definition, equation, expect, expect_nonzero, expect_zero, forms
 
 # ============================================================================================
 # Section 5.1: the simple variable-stiffness stance map, eqs 78-113 (geyer-vs).
@@ -159,6 +160,7 @@ def _printed_eq79():
     "verified",
     "Geyer's (11) with the compression parameters (85)-(88); checked also to solve the radial "
     "quadratic (9) with omega0^2 = k_c/m.",
+    derived=lambda: forms((q_r, derived_radius(AB))),
 )
 def check_eq78() -> None:
     """Printed: q_r(t) = l0 (1 + a_ab + b_ab sin(omega0_hat_ab t))."""
@@ -175,6 +177,7 @@ def check_eq78() -> None:
     "verified",
     "Geyer's (19) with the ab parameters. The first omega is printed without the subscript ab: it is "
     "the same p_th/(m l0^2) (Geyer's (7), (83), (100)).",
+    derived=lambda: forms((q_th, _derived_angle(AB, q_th_td, t_td))),
 )
 def check_eq79() -> None:
     """Printed: q_th(t) = q_th_td + omega (1 - 2 a_ab)(t - t_td)
@@ -209,8 +212,15 @@ def printed_eq81():
     "touchdown time t_td (k_c)",
     "verified",
     "Geyer's (12) with a_ab, b_ab, omega0_hat_ab: (78) equals q_r_td there, on the compressing branch.",
+    derived=lambda: _phase_form(wh_ab * t_td, "touchdown", AB, q_r_td),
 )
-@equation("81", "bottom time t_b_ab", "verified", "Geyer's (13): sin = -1, dq_r/dt of (78) vanishes.")
+@equation(
+    "81",
+    "bottom time t_b_ab",
+    "verified",
+    "Geyer's (13): sin = -1, dq_r/dt of (78) vanishes.",
+    derived=lambda: _phase_form(wh_ab * t_b_ab, "bottom"),
+)
 def check_eq80_81() -> None:
     """Printed: (80) t_td = 1/omega0_hat_ab {(2n + 3/2) pi - [pi/2 + asin((q_r_td/l0 - 1 - a_ab)/b_ab)]};
     (81) t_b_ab = 1/omega0_hat_ab {(2n + 3/2) pi}, n in N."""
@@ -231,21 +241,59 @@ def check_eq80_81() -> None:
     expect_zero(sp.sin(wh_ab * bottom) + 1, "eq 81 sin = -1 at the printed t_b_ab: the minimum of (78)")
 
 
-def _check_dimensionless(keys, half: _Half, printed) -> None:
-    """(82)-(84) / (99)-(101): epsilon, omega, omega0 of Geyer's (7) for the half."""
+def _dimensionless(half: _Half):
+    """epsilon, omega, omega0 of Geyer's (7) for the half: (82)-(84) / (99)-(101) derived."""
     sub = geyer.dimensionless_substitution()
-    eps_key, omega_key, omega0_key = keys
     (eps_derived,) = sp.solve(sp.Eq(half.energy, sub[E]), epsilon)
     (w_derived,) = sp.solve(sp.Eq(p_th, sub[p_th]), omega)
     (w0_derived,) = sp.solve(sp.Eq(half.stiffness, sub[k]), omega0)  # omega0 > 0: one root
+    return eps_derived, w_derived, w0_derived
+
+
+def _dimensionless_form(half: _Half, row: int):
+    return forms(((half.eps, half.omega, half.omega0)[row], _dimensionless(half)[row]))
+
+
+def _parameter_form(half: _Half, name: str):
+    """The half's omega0_hat, a or b^2 (``name``) as :func:`geyer_vs.half_solution` derives it."""
+    lhs = {"omega0_hat": half.omega0_hat, "a": half.a, "b2": half.b**2}[name]
+    return forms((lhs, half.derived[name]))
+
+
+def _phase_form(lhs, event: str, half: _Half | None = None, length=None):
+    """``lhs`` = the phase of Geyer's (12)-(14) ``event`` (n = 0), at the leg length ``length`` with the
+    half's a, b."""
+    ph = geyer.event_phases()
+    phase = ph[event] if half is None else ph[event].subs(ph["s"], _ratio(half, length))
+    return forms((lhs, phase))
+
+
+def _check_dimensionless(keys, half: _Half, printed) -> None:
+    """(82)-(84) / (99)-(101): epsilon, omega, omega0 of Geyer's (7) for the half."""
+    eps_key, omega_key, omega0_key = keys
+    eps_derived, w_derived, w0_derived = _dimensionless(half)
     expect_zero(printed[0] - eps_derived, f"eq {eps_key} printed epsilon equals (7)'s 2 E/(m l0^2)")
     expect_zero(printed[1] - w_derived, f"eq {omega_key} printed omega equals (7)'s p_th/(m l0^2)")
     expect_zero(printed[2] - w0_derived, f"eq {omega0_key} printed omega0 solves (7)'s k = m omega0^2")
 
 
-@equation("82", "epsilon_ab = 2 E_ab/(m l0^2)", "verified", "Geyer's (7) with E_ab.")
-@equation("83", "omega_ab = p_th/(m l0^2)", "verified", "Geyer's (7).")
-@equation("84", "omega0_ab = sqrt(k_c/m)", "verified", "Geyer's (7) with k = k_c.")
+@equation(
+    "82",
+    "epsilon_ab = 2 E_ab/(m l0^2)",
+    "verified",
+    "Geyer's (7) with E_ab.",
+    derived=lambda: _dimensionless_form(AB, 0),
+)
+@equation(
+    "83", "omega_ab = p_th/(m l0^2)", "verified", "Geyer's (7).", derived=lambda: _dimensionless_form(AB, 1)
+)
+@equation(
+    "84",
+    "omega0_ab = sqrt(k_c/m)",
+    "verified",
+    "Geyer's (7) with k = k_c.",
+    derived=lambda: _dimensionless_form(AB, 2),
+)
 def check_eq82_84() -> None:
     """Printed: (82) epsilon_ab = 2 E_ab/(m l0^2); (83) omega_ab = p_th/(m l0^2);
     (84) omega0_ab = sqrt(k_c/m)."""
@@ -292,8 +340,20 @@ def _check_half_parameters(keys, half: _Half) -> None:
         )
 
 
-@equation("85", "omega0_hat_ab = sqrt(omega0_ab^2 + 3 omega_ab^2)", "verified", "Geyer's (11) with k_c.")
-@equation("86", "a_ab", "verified", "Geyer's (11) with k_c, both printed forms.")
+@equation(
+    "85",
+    "omega0_hat_ab = sqrt(omega0_ab^2 + 3 omega_ab^2)",
+    "verified",
+    "Geyer's (11) with k_c.",
+    derived=lambda: _parameter_form(AB, "omega0_hat"),
+)
+@equation(
+    "86",
+    "a_ab",
+    "verified",
+    "Geyer's (11) with k_c, both printed forms.",
+    derived=lambda: _parameter_form(AB, "a"),
+)
 @equation(
     "87",
     "b_ab (first form)",
@@ -301,6 +361,7 @@ def _check_half_parameters(keys, half: _Half) -> None:
     "Geyer's (11) with k_c. OCR: the display is garbled (the denominator omega0_ab^2 + 3 omega_ab^2 "
     "set as a subscript of the numerator over an empty denominator, omega_{ab^2} for omega_ab^2) and "
     "carries one tag for both forms; read as the first form of (104).",
+    derived=lambda: _parameter_form(AB, "b2"),
 )
 @equation(
     "88",
@@ -309,6 +370,7 @@ def _check_half_parameters(keys, half: _Half) -> None:
     "Number assumed: the scan has no tag (88); the display tagged (87) holds both forms of b_ab, and "
     "its twin (104)-(105) tags them separately, so the second form is (88) (the next tag printed is "
     "(89)).",
+    derived=lambda: _parameter_form(AB, "b2"),
 )
 def check_eq85_88() -> None:
     """Printed: (85) omega0_hat_ab = sqrt(omega0_ab^2 + 3 omega_ab^2);
@@ -325,6 +387,7 @@ def check_eq85_88() -> None:
     "touchdown time, q_r_td = l0",
     "verified",
     "(80) at q_r_td = l0: asin(-a_ab/b_ab); Geyer's (15).",
+    derived=lambda: _phase_form(wh_ab * t_td, "touchdown", AB, l0),
 )
 def check_eq89() -> None:
     """Printed: t_td = 1/omega0_hat_ab {(2n + 3/2) pi - [pi/2 + asin(-a_ab/b_ab)]}."""
@@ -375,6 +438,7 @@ def _map_second_half(expr_index: int):
     "Geyer's (11) with the decompression parameters (102)-(105), its clock shifted by t_b_ba - t_b_ab "
     "so that it is at its bottom phase (93) at t = t_b_ab; solves (9) with omega0^2 = k_d/m; equals "
     "the geyer-vs map's second half.",
+    derived=lambda: forms((q_r, derived_radius(BA, t + t_b_ba - t_b_ab))),
 )
 def check_eq90() -> None:
     """Printed: q_r(t) = l0 (1 + a_ba + b_ba sin(omega0_hat_ba (t + t_b_ba - t_b_ab)))."""
@@ -402,12 +466,14 @@ def check_eq90() -> None:
     "(91)-(92) are one display over two tags: Geyer's (19) from the bottom (q_th_b at t = t_b_ab), "
     "its clock shifted by t_b_ba - t_b_ab. The first omega is printed without the subscript ba: the "
     "same p_th/(m l0^2) (100).",
+    derived=lambda: forms((q_th, _derived_angle(BA, q_th_b, t_b_ba, t_b_ba - t_b_ab))),
 )
 @equation(
     "92",
     "bottom to apex q_th(t), second line",
     "verified",
     "The second line of (91): checked together.",
+    derived=lambda: forms((q_th, _derived_angle(BA, q_th_b, t_b_ba, t_b_ba - t_b_ab))),
 )
 def check_eq91_92() -> None:
     """Printed: q_th(t) = q_th_b + omega (1 - 2 a_ba)(t - t_b_ab)                                    (91)
@@ -428,13 +494,20 @@ def _printed_eq94(length=q_r_lo):
     return _printed_event_phase(BA, 1, (length / l0 - 1 - a_ba) / b_ba) / wh_ba + t_b_ab - t_b_ba
 
 
-@equation("93", "bottom time t_b_ba of the second half", "verified", "Geyer's (13) with omega0_hat_ba.")
+@equation(
+    "93",
+    "bottom time t_b_ba of the second half",
+    "verified",
+    "Geyer's (13) with omega0_hat_ba.",
+    derived=lambda: _phase_form(wh_ba * t_b_ba, "bottom"),
+)
 @equation(
     "94",
     "liftoff time t_lo",
     "verified",
     "Geyer's (14) with the ba parameters, shifted back by t_b_ba - t_b_ab to the clock of (90): "
     "(90) equals q_r_lo there, on the extending branch, for the same n in (93) and (94).",
+    derived=lambda: _phase_form(wh_ba * (t_lo + t_b_ba - t_b_ab), "liftoff", BA, q_r_lo),
 )
 def check_eq93_94() -> None:
     """Printed: (93) t_b_ba = 1/omega0_hat_ba {(2n + 3/2) pi};
@@ -470,6 +543,7 @@ definition(
     "verified",
     "(94) at q_r_lo = l0: asin(-a_ba/b_ba); Geyer's (16), shifted. OCR: the left side is printed "
     "t_{l_0} for t_lo.",
+    derived=lambda: _phase_form(wh_ba * (t_lo + t_b_ba - t_b_ab), "liftoff", BA, l0),
 )
 def check_eq96() -> None:
     """Printed: t_{l_0} = 1/omega0_hat_ba {(2n + 3/2) pi + [pi/2 + asin(-a_ba/b_ba)]} + t_b_ab - t_b_ba."""
@@ -484,6 +558,7 @@ def check_eq96() -> None:
     "verified",
     "The total energy (27) with k_d minus with k_c at the same state (geyer_vs.energy_jump): only "
     "the spring term changes, whatever q_rd, q_th, q_thd.",
+    derived=lambda: forms((sp.Symbol("E_additional"), geyer_vs.energy_jump().subs(q_r, q_r_b))),
 )
 def check_eq97() -> None:
     """Printed: E_additional = 1/2 (k_d - k_c)(l0 - q_r_b)^2."""
@@ -499,26 +574,45 @@ def check_eq97() -> None:
     "verified",
     "(97) with q_r_b = q_r(t_b) of (78) at (81); E_ba is (27) with k_d at the bottom state when E_ab "
     "is (27) with k_c there.",
+    derived=lambda: forms((E_ba, _energy_after_jump())),
 )
 def check_eq98() -> None:
     """Printed: E_ba = E_ab + E_additional = E_ab + 1/2 (k_d - k_c)(l0 - q_r(t_b))^2."""
     q_r_bottom = _printed_eq78().subs(t, printed_eq81())
     expect_zero(q_r_bottom - l0 * (1 + a_ab - b_ab), "eq 98 q_r(t_b) of (78) at (81) is l0 (1 + a_ab - b_ab)")
     printed = E_ab + (k_d - k_c) * (l0 - q_r_bottom) ** 2 / 2
-    state = {q_r: q_r_bottom}
-    derived = E_ab + (mechanics.stance_energy(k_d) - mechanics.stance_energy(k_c)).subs(state)
+    derived = _energy_after_jump()
     expect_zero(printed - derived, "eq 98 printed E_ba equals E_ab plus the jump of (27) at the bottom")
 
 
-@equation("99", "epsilon_ba = 2 E_ba/(m l0^2)", "verified", "Geyer's (7) with E_ba.")
+def _energy_after_jump():
+    """(98) derived: E_ab plus the jump of (27) at the bottom l0 (1 + a_ab - b_ab) of (78) at (81)."""
+    state = {q_r: _printed_eq78().subs(t, printed_eq81())}
+    return E_ab + sp.factor((mechanics.stance_energy(k_d) - mechanics.stance_energy(k_c)).subs(state))
+
+
+@equation(
+    "99",
+    "epsilon_ba = 2 E_ba/(m l0^2)",
+    "verified",
+    "Geyer's (7) with E_ba.",
+    derived=lambda: _dimensionless_form(BA, 0),
+)
 @equation(
     "100",
     "omega_ba = p_th/(m l0^2) = omega_ab",
     "verified",
     "Geyer's (7); omega_ba = omega_ab because p_th = dL/dq_thd of (1) does not involve the stiffness "
     "(Remark 2: position and velocity are continuous at the bottom, so p_th is).",
+    derived=lambda: _dimensionless_form(BA, 1),
 )
-@equation("101", "omega0_ba = sqrt(k_d/m)", "verified", "Geyer's (7) with k = k_d.")
+@equation(
+    "101",
+    "omega0_ba = sqrt(k_d/m)",
+    "verified",
+    "Geyer's (7) with k = k_d.",
+    derived=lambda: _dimensionless_form(BA, 2),
+)
 def check_eq99_101() -> None:
     """Printed: (99) epsilon_ba = 2 E_ba/(m l0^2); (100) omega_ba = p_th/(m l0^2) = omega_ab;
     (101) omega0_ba = sqrt(k_d/m)."""
@@ -529,10 +623,34 @@ def check_eq99_101() -> None:
     expect_zero(momenta[0] - m * q_r**2 * q_thd, "eq 100 p_th = m q_r^2 q_thd (Remark 2)")
 
 
-@equation("102", "omega0_hat_ba", "verified", "Geyer's (11) with k_d.")
-@equation("103", "a_ba", "verified", "Geyer's (11) with k_d, both printed forms.")
-@equation("104", "b_ba (first form)", "verified", "Geyer's (11) with k_d.")
-@equation("105", "b_ba (second form)", "verified", "Geyer's (11) with k_d.")
+@equation(
+    "102",
+    "omega0_hat_ba",
+    "verified",
+    "Geyer's (11) with k_d.",
+    derived=lambda: _parameter_form(BA, "omega0_hat"),
+)
+@equation(
+    "103",
+    "a_ba",
+    "verified",
+    "Geyer's (11) with k_d, both printed forms.",
+    derived=lambda: _parameter_form(BA, "a"),
+)
+@equation(
+    "104",
+    "b_ba (first form)",
+    "verified",
+    "Geyer's (11) with k_d.",
+    derived=lambda: _parameter_form(BA, "b2"),
+)
+@equation(
+    "105",
+    "b_ba (second form)",
+    "verified",
+    "Geyer's (11) with k_d.",
+    derived=lambda: _parameter_form(BA, "b2"),
+)
 def check_eq102_105() -> None:
     """Printed: (102) omega0_hat_ba = sqrt(omega0_ba^2 + 3 omega_ba^2);
     (103) a_ba = (omega_ba^2 - g_s/l0)/(omega0_ba^2 + 3 omega_ba^2) = (omega_ba^2 - g_s/l0)/omega0_hat_ba^2;

@@ -14,10 +14,21 @@ from functools import cache
 import sympy as sp
 
 from ...maps import iterative_helpers
-from ...maps.iterative_helpers import H_INV, P_TH_N, Q_TH_N, TOUCHDOWN, E_ab, p_th_td, q_r_b, sigma, t_td
+from ...maps.iterative_helpers import (
+    H_INV,
+    P_TH_N,
+    Q_TH_N,
+    Q_TH_NEXT,
+    TOUCHDOWN,
+    E_ab,
+    p_th_td,
+    q_r_b,
+    sigma,
+    t_td,
+)
 from ...model import mechanics
 from ...symbols import E, g_s, k_c, k_d, l0, m, p_r, p_th, q_r, q_r_td, q_th, q_th_td
-from .. import definition, equation, expect, expect_nonzero, expect_zero
+from .. import definition, equation, expect, expect_nonzero, expect_zero, forms, iterates
 from .helpers import (
     COMPRESSION_SAMPLE,
     HALF,
@@ -35,6 +46,7 @@ from .helpers import (
     expect_rows_zero,
     h_inv_on_iterate,
     units,
+    weighted_integral_form,
     x_,
 )
 
@@ -49,6 +61,7 @@ from .helpers import (
     "compression Hamiltonian H_ab (k_c)",
     "verified",
     "Legendre transform of (1) with k = k_c; (27) with k_c.",
+    derived=lambda: iterates.hamiltonian_form("H_ab", k_c),
 )
 def check_eq114() -> None:
     """Printed: H_ab = (p_r^2 + p_th^2/q_r^2)/(2 m) + k_c/2 (l0 - q_r)^2 + m g_s q_r cos(q_th)."""
@@ -58,7 +71,13 @@ def check_eq114() -> None:
     )
 
 
-@equation("115", "Hamiltonian vector field of H_ab", "verified", "Hamilton's equations (28) of (114).")
+@equation(
+    "115",
+    "Hamiltonian vector field of H_ab",
+    "verified",
+    "Hamilton's equations (28) of (114).",
+    derived=lambda: iterates.vector_field_forms(k_c),
+)
 def check_eq115() -> None:
     """Printed: X_H_ab = (p_r/m, p_th/(m q_r^2), p_th^2/(m q_r^3) + k_c (l0 - q_r) - m g_s cos q_th,
     m g_s q_r sin q_th).
@@ -76,9 +95,27 @@ def check_eq115() -> None:
     )
 
 
-@equation("116", "compression dt/dq_r = m/p_r", "verified", "As (30): dq_r/dt = p_r/m of (115), p_r < 0.")
-@equation("117", "compression dq_th/dq_r = p_th/(q_r^2 p_r)", "verified", "As (31), from (115).")
-@equation("118", "compression dp_th/dq_r = m^2 g_s q_r sin(q_th)/p_r", "verified", "As (32), from (115).")
+@equation(
+    "116",
+    "compression dt/dq_r = m/p_r",
+    "verified",
+    "As (30): dq_r/dt = p_r/m of (115), p_r < 0.",
+    derived=lambda: iterates.rate_form(k_c, 0),
+)
+@equation(
+    "117",
+    "compression dq_th/dq_r = p_th/(q_r^2 p_r)",
+    "verified",
+    "As (31), from (115).",
+    derived=lambda: iterates.rate_form(k_c, 1),
+)
+@equation(
+    "118",
+    "compression dp_th/dq_r = m^2 g_s q_r sin(q_th)/p_r",
+    "verified",
+    "As (32), from (115).",
+    derived=lambda: iterates.rate_form(k_c, 2),
+)
 def check_eq116_118() -> None:
     """Printed: (116) dt_s/dq_r = m/p_r; (117) dq_th/dq_r = p_th/(q_r^2 p_r);
     (118) dp_th/dq_r = m^2 g_s q_r sin(q_th)/p_r, with p_r = p_r(q_r, q_th, p_th) of (119).
@@ -91,6 +128,13 @@ def check_eq116_118() -> None:
     )
 
 
+def _corrected_eq119():
+    """(119) with the compression stiffness k_c: the negative root of H_ab = E_ab."""
+    return -sp.sqrt(
+        2 * m * (E_ab - k_c / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
+    )
+
+
 @equation(
     "119",
     "compression p_r = -H_ab^{-1}(q_r, q_th, p_th, E_ab)",
@@ -99,6 +143,7 @@ def check_eq116_118() -> None:
     "not: the printed root has k_d, so H_ab of (114) at it equals E_ab + (k_c - k_d)/2 (l0 - q_r)^2. "
     "Corrected: p_r = -sqrt(2 m (E_ab - k_c/2 (l0 - q_r)^2 - m g_s q_r cos q_th) - p_th^2/q_r^2). "
     "(127) and (136) print k_c.",
+    derived=lambda: forms((p_r, _corrected_eq119())),
 )
 def check_eq119() -> None:
     """Printed: p_r = -H_ab^{-1}
@@ -106,9 +151,7 @@ def check_eq119() -> None:
     printed = -sp.sqrt(
         2 * m * (E_ab - k_d / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
     )
-    corrected = -sp.sqrt(
-        2 * m * (E_ab - k_c / 2 * (l0 - q_r) ** 2 - m * g_s * q_r * sp.cos(q_th)) - p_th**2 / q_r**2
-    )
+    corrected = _corrected_eq119()
     derived = iterative_helpers.radial_momentum(k_c, E_ab, -1)
     hamiltonian = mechanics.hamiltonian(k_c)
     # Both roots are negative: they differ exactly when their squares do.
@@ -170,6 +213,15 @@ def _leading_term_time(step):
     return rule, exact
 
 
+def _whole_half_point():
+    """Corrected (123), (132): the point of the whole compression half, xi = 3/4 q_r_b + 1/4 q_r_td."""
+    return sp.Rational(3, 4) * q_r_b + QUARTER * q_r_td
+
+
+def _whole_half_point_form():
+    return forms((XI, _whole_half_point()))
+
+
 def _check_compression_point(key: str, weighted: bool) -> None:
     """Shared by (123) and (132): where Theorem 1 puts the point of the compression integrals."""
     printed = _printed_compression_point()
@@ -192,7 +244,7 @@ def _check_compression_point(key: str, weighted: bool) -> None:
     for integral, fraction in iterative_helpers.mean_value_fractions(k_c, "bottom", weighted).items():
         expect_zero(fraction - QUARTER, f"eq {key} (35) at the bottom ({variant}) gives 1/4 for ({integral})")
     whole = iterative_helpers.mean_value_point(k_c, q_r_td)  # the point of int_{q_r_td}^{q_r_b}
-    corrected = sp.Rational(3, 4) * q_r_b + QUARTER * q_r_td
+    corrected = _whole_half_point()
     expect_zero(
         corrected - whole, f"eq {key} corrected xi of the whole half equals q_r_b + 1/4 (q_r_td - q_r_b)"
     )
@@ -265,6 +317,7 @@ def _check_compression_point(key: str, weighted: bool) -> None:
     "(37) at (41)'s point of its upper limit: x(q_r) = x_td + F(xi(q_r)) (q_r - q_r_b) - "
     "F(xi(q_r_td)) (q_r_td - q_r_b), xi(x) = 3/4 q_r_b + 1/4 x, F the integrand of (116)-(118) on the "
     "n-th iterate; it is x_td at touchdown and exact on the leading term for every q_r.",
+    derived=lambda: _whole_half_point_form(),
 )
 def check_eq123() -> None:
     """Printed: xi_hat_x = 3/4 q_r_td + 1/4 q_r (for the integrals (120)-(122), from q_r_td to q_r)."""
@@ -282,6 +335,11 @@ def _printed_compression_iterate(energy_of_t=E_ab):
     )
 
 
+def _compression_iterate():
+    """(124)-(126) derived: (116)-(118) integrated from touchdown with (37) at the point xi."""
+    return iterative_helpers.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab)
+
+
 @equation(
     "124",
     "compression iterate of the time t_(n+1)(q_r)",
@@ -289,6 +347,7 @@ def _printed_compression_iterate(energy_of_t=E_ab):
     "(116) integrated from touchdown with (120) at the point xi: t_td - m/H_ab^{-1}(xi, ...) (q_r - "
     "q_r_td); the minus sign is p_r = -H_ab^{-1}. The printed E is E_ab. Verified as the rule at xi; "
     "the point xi of (123) is corrected there, with the corrected iterate.",
+    derived=lambda: iterates.iterate_form(_compression_iterate(), 0),
 )
 @equation(
     "125",
@@ -296,6 +355,7 @@ def _printed_compression_iterate(energy_of_t=E_ab):
     "verified",
     "(117) integrated from touchdown with (121) at xi: q_th_td - p_th_n(xi)/(xi^2 H_ab^{-1}) (q_r - "
     "q_r_td). Point: see (123).",
+    derived=lambda: iterates.iterate_form(_compression_iterate(), 1),
 )
 @equation(
     "126",
@@ -303,6 +363,7 @@ def _printed_compression_iterate(energy_of_t=E_ab):
     "verified",
     "(118) integrated from touchdown with (122) at xi: p_th_td - m^2 g_s xi sin(q_th_n(xi))/H_ab^{-1} "
     "(q_r - q_r_td). Point: see (123).",
+    derived=lambda: iterates.iterate_form(_compression_iterate(), 2),
 )
 def check_eq124_126() -> None:
     """Printed, with H^{-1}_n = H_ab^{-1}(xi, q_th_n(xi), p_th_n(xi), E_ab):
@@ -310,7 +371,7 @@ def check_eq124_126() -> None:
     (125) q_th_(n+1)(q_r) = q_th_td - p_th_n(xi)/(xi^2 H^{-1}_n) (q_r - q_r_td);
     (126) p_th_(n+1)(q_r) = p_th_td - m^2 g_s xi sin(q_th_n(xi))/H^{-1}_n (q_r - q_r_td).
     """
-    derived = iterative_helpers.iteration_step(k_c, XI, -1, TOUCHDOWN, E_ab)
+    derived = _compression_iterate()
     expect_rows_zero(
         _printed_compression_iterate(),
         derived,
@@ -329,6 +390,7 @@ def check_eq124_126() -> None:
     "p_th_(n+1)(xi)^2/xi^2) is p_r at the leg length xi, not at q_r. By (119) corrected (k_c, as "
     "printed here): p_r_(n+1)(q_r) = -H_ab^{-1}(q_r, q_th_(n+1)(q_r), p_th_(n+1)(q_r), E_ab). OCR: the "
     "tag (127) is printed inside the square root.",
+    derived=lambda: iterates.next_momentum_form(k_c, E_ab, -1),
 )
 def check_eq127() -> None:
     """Printed: p_r_(n+1)(q_r) = -sqrt(2 m (E_ab - k_c/2 (l0 - xi)^2 - m g_s xi cos(q_th_(n+1)(xi)))
@@ -350,6 +412,7 @@ definition(
     "verified",
     "(37) with f = 1/H_ab^{-1} at xi and g = 1: int g = q_r - q_r_td (sp.integrate). The same "
     "display as (120).",
+    derived=lambda: weighted_integral_form(0, q_r_td, E_ab, k_c),
 )
 @equation(
     "130",
@@ -357,12 +420,14 @@ definition(
     "verified",
     "(37) with f = 1/H_ab^{-1} at xi and g = 1/sigma^2: int_{q_r_td}^{q_r} sigma^-2 dsigma = "
     "1/q_r_td - 1/q_r (sp.integrate).",
+    derived=lambda: weighted_integral_form(1, q_r_td, E_ab, k_c),
 )
 @equation(
     "131",
     "variant: int sigma/H_ab^{-1} ~ (q_r^2 - q_r_td^2)/(2 H_ab^{-1}(xi))",
     "verified",
     "(37) with f = 1/H_ab^{-1} at xi and g = sigma: int_{q_r_td}^{q_r} sigma dsigma = (q_r^2 - q_r_td^2)/2.",
+    derived=lambda: weighted_integral_form(2, q_r_td, E_ab, k_c),
 )
 def check_eq129_131() -> None:
     """Printed, with H^{-1} = H_ab^{-1}(xi, q_th(xi), p_th(xi), E_ab): the integrals from q_r_td to q_r of
@@ -382,6 +447,7 @@ def check_eq129_131() -> None:
     "+ 1/4 q_r_td for the whole half, the iterate anchored at the bottom, x(q_r) = x_td + D(q_r) - "
     "D(q_r_td) with D(x) = [state part/H_ab^{-1}] at xi(x) times int_{q_r_b}^{x} g, "
     "xi(x) = 3/4 q_r_b + 1/4 x.",
+    derived=lambda: _whole_half_point_form(),
 )
 def check_eq132() -> None:
     """Printed: xi_hat_x = 3/4 q_r_td + 1/4 q_r (for f = 1/H_ab^{-1} of (128))."""
@@ -399,6 +465,7 @@ def _weighted_compression():
     "verified",
     "The same display as (124): g = 1, so the variant changes nothing. The printed E is E_ab. Units: "
     "seconds. Point: see (132).",
+    derived=lambda: iterates.iterate_form(_weighted_compression(), 0),
 )
 def check_eq133() -> None:
     """Printed: t_(n+1)(q_r) = t_td - m/H_ab^{-1}(xi, q_th_n(xi), p_th_n(xi), E) (q_r - q_r_td)
@@ -407,6 +474,11 @@ def check_eq133() -> None:
     derived = _weighted_compression()[0]
     expect_zero(printed - derived, "eq 133 printed iterate equals (116) by (129) from touchdown")
     expect_zero(units(printed - t_td, k_c, E_ab) - SECOND, "eq 133 the increment of t is in seconds")
+
+
+def _corrected_eq134():
+    """(134) corrected: the factor p_th_n(xi) kept at the point."""
+    return q_th_td - P_TH_N(XI) / h_inv_on_iterate(E_ab) * (1 / q_r_td - 1 / q_r)
 
 
 @equation(
@@ -418,13 +490,14 @@ def check_eq133() -> None:
     "point (as sin q_th_n(xi) does in (135)). Corrected: q_th_(n+1)(q_r) = q_th_td - p_th_n(xi)/"
     "H_ab^{-1}(xi, q_th_n(xi), p_th_n(xi), E_ab) (1/q_r_td - 1/q_r). By units: the printed increment "
     "is in s/(kg m^2), not dimensionless, the corrected one is dimensionless. Point: see (132).",
+    derived=lambda: forms((Q_TH_NEXT(q_r), _corrected_eq134())),
 )
 def check_eq134() -> None:
     """Printed: q_th_(n+1)(q_r) = q_th_td - 1/H_ab^{-1}(xi, q_th_n(xi), p_th_n(xi), E_ab)
     (1/q_r_td - 1/q_r)."""
     h_inv = h_inv_on_iterate(E_ab)
     printed = q_th_td - 1 / h_inv * (1 / q_r_td - 1 / q_r)
-    corrected = q_th_td - P_TH_N(XI) / h_inv * (1 / q_r_td - 1 / q_r)
+    corrected = _corrected_eq134()
     check_dropped_p_th("134", q_th_td, printed, corrected, _weighted_compression()[1], k_c, E_ab)
 
 
@@ -435,6 +508,7 @@ def check_eq134() -> None:
     "(118) by (131) from touchdown: p_th_td - m^2 g_s sin(q_th_n(xi))/(2 H_ab^{-1}(xi, ...)) (q_r^2 - "
     "q_r_td^2); the minus sign is p_r = -H_ab^{-1}, the 1/2 is int sigma dsigma. Units: kg m^2/s. "
     "Point: see (132).",
+    derived=lambda: iterates.iterate_form(_weighted_compression(), 2),
 )
 def check_eq135() -> None:
     """Printed: p_th_(n+1)(q_r) = p_th_td - m^2 g_s sin(q_th_n(xi))/(2 H_ab^{-1}(xi, q_th_n(xi), p_th_n(xi),
@@ -454,6 +528,7 @@ def check_eq135() -> None:
     "corrected",
     "The same display as (127), same correction: p_r_(n+1)(q_r) = -H_ab^{-1}(q_r, q_th_(n+1)(q_r), "
     "p_th_(n+1)(q_r), E_ab), not at xi. OCR: the tag (136) is printed inside the square root.",
+    derived=lambda: iterates.next_momentum_form(k_c, E_ab, -1),
 )
 def check_eq136() -> None:
     """Printed: p_r_(n+1)(q_r) = -sqrt(2 m (E_ab - k_c/2 (l0 - xi)^2 - m g_s xi cos(q_th_(n+1)(xi)))
