@@ -150,12 +150,17 @@ class Call:
 
     ``bind`` maps a callee output name to the caller's name for it; outputs not named are
     dropped. A non-OK callee status is returned as the caller's status.
+
+    ``tail``: the caller's last step, whose result the caller returns as its own (the callee has
+    the caller's outputs, in order, and a status; ``bind`` is empty): a per-choice derivative
+    kernel ending in the code it shares with the other choices (:mod:`.tangent`).
     """
 
     kernel: Kernel
     args: Mapping[str, sp.Basic]
     bind: Mapping[str, str]
     comment: str = ""
+    tail: bool = False
 
 
 @dataclass(frozen=True)

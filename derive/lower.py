@@ -47,7 +47,7 @@ def _names(expr) -> set[str]:
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
 _GENERATED_NAME = re.compile(
-    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+)|STATUS_\w+"
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|store_row_\d+_\d+)|STATUS_\w+"
 )
 _TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
 
@@ -238,10 +238,18 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
         raise LoweringError(ctx.where(f"{where}: the callee returns a status, the caller cannot"))
     for name in callee.arg_names:
         ctx.require(call.args[name], f"{where}, argument {name}")
-    var = f"_c{ctx.calls}"
-    ctx.calls += 1
     if callee.module != ctx.kernel.module:
         ctx.callees.add((callee.module, callee.name))
+    if call.tail:
+        if call.bind or callee.output_names != ctx.kernel.output_names or callee.status != ctx.kernel.status:
+            raise LoweringError(
+                ctx.where(f"{where}: a tail call returns the callee's result as the caller's")
+            )
+        args = ", ".join(to_code(call.args[n]) for n in callee.arg_names)
+        nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
+        return nodes + [{"kind": "tail", "func": callee.name, "args": args}]
+    var = f"_c{ctx.calls}"
+    ctx.calls += 1
     outs = callee.output_names
     single = not callee.status and len(outs) == 1
     binds = []
@@ -482,8 +490,11 @@ def lower(kernel: Kernel) -> dict:
     body = _lower_steps(ctx, kernel.steps)
     if ctx.rows:
         ctx.rows = _compact_rows(body)
+    tails = [i for i, s in enumerate(kernel.steps) if isinstance(s, Call) and s.tail]
+    if tails and tails != [len(kernel.steps) - 1]:
+        raise LoweringError(f"kernel {kernel.name}: a tail call must be the last step")
     outputs = kernel.outputs.fields()
-    missing = [f.name for f in outputs if not ctx.scope.defined(f.name)]
+    missing = [] if tails else [f.name for f in outputs if not ctx.scope.defined(f.name)]
     if missing:
         raise LoweringError(f"kernel {kernel.name}: output(s) {missing} are never defined")
     dup_out = [n for n, c in Counter(f.name for f in outputs).items() if c > 1]
@@ -501,7 +512,21 @@ def lower(kernel: Kernel) -> dict:
             "rows": list(order[: len(kernel.batch.rows)]),
             "scalars": list(order[len(kernel.batch.rows) :]),
             "call": ", ".join(f"{n}[i]" if n in kernel.batch.rows else n for n in names),
+            # the outputs the scalar kernel leaves unchecked (a Jacobian's derivatives): checked per row
+            "store": None,
         }
+        unchecked = [j for j, f in enumerate(outputs) if f.name in kernel.unchecked]
+        if unchecked:
+            # a row store checking the derivatives, one per layout in the module (kernels.py.j2)
+            first = unchecked[0]
+            if unchecked != list(range(first, len(outputs))):
+                raise LoweringError(f"kernel {kernel.name}: the unchecked outputs must be the last ones")
+            batch["store"] = {
+                "name": f"_store_row_{first}_{len(outputs)}",
+                "first": first,
+                "n_out": len(outputs),
+            }
+            ctx.statuses.add("NUMERICAL_RANGE")
     if kernel.status:
         ctx.statuses.add("OK")
         if kernel.check_outputs:
@@ -526,6 +551,7 @@ def lower(kernel: Kernel) -> dict:
         "check_outputs": kernel.check_outputs,
         "inline": kernel.inline,
         "batch": batch,
+        "tail": bool(tails),
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),
         "statuses": sorted(ctx.statuses),

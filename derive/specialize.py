@@ -31,9 +31,11 @@ import sympy as sp
 
 from .ir import Call, Guard, Iterate, Kernel, Stage, Switch, calls, sym
 
-__all__ = ["choice_suffix", "module_kernels", "specialize"]
+__all__ = ["choice_of", "choice_suffix", "module_kernels", "specialize"]
 
 _CACHE: dict[tuple, Kernel] = {}
+#: id of every specialized kernel (kept alive by the cache) -> the suffix of its choice
+_SUFFIXES: dict[int, str] = {}
 
 
 def _ident(value: str) -> str:
@@ -134,7 +136,13 @@ def specialize(
             args=tuple(a for a in kernel.args if a.name not in choice),
             steps=_steps(kernel.steps, subs, choice, labels, where),
         )
+        _SUFFIXES[id(_CACHE[key])] = choice_suffix(choice)
     return _CACHE[key]
+
+
+def choice_of(kernel: Kernel) -> str:
+    """The choice suffix (:func:`choice_suffix`) of a kernel :func:`specialize` made, else ""."""
+    return _SUFFIXES.get(id(kernel), "")
 
 
 def _reached(kernels, module: str) -> list[Kernel]:

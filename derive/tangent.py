@@ -42,7 +42,10 @@ direction). Symbolic forward mode over the declaration, step by step:
 
 What no output needs is then pruned, and the switch branches that hold a loop are outlined into
 kernels of their own (:mod:`.outline`; the loops keep their tangents in one tuple, derive/lower.py),
-which keeps numba's compile time near linear in the code size.
+which keeps numba's compile time near linear in the code size. A derivative kernel per choice of a
+specialized option (:mod:`.specialize`) returns the result of a kernel holding its steps after its
+choice's own calls (a tail :class:`~.ir.Call`), one per distinct code, shared between the choices
+(:meth:`Differentiator._thin`).
 
 Cost: see benchmarks/bench_maps.py (e)-(g). Outside loops the directions are unrolled (every tangent
 a line of its own per direction), so that code grows with the number of directions, and numba's
@@ -61,12 +64,14 @@ SymPy leaves unevaluated is refused at generation.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, field, replace
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields, is_dataclass, replace
 
 import sympy as sp
 
 from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
 from .outline import Outliner, defined, prune, prune_rows, used, visible
+from .specialize import choice_of
 
 #: A tangent per direction: direction name -> expression (0 when the value does not depend on it).
 _Tangent = dict
@@ -221,6 +226,8 @@ class Differentiator:
     widen: dict[tuple, tuple] = field(default_factory=dict)
     #: The patterns asked for, by the same key (what :func:`widened` joins).
     asked: dict[tuple, set] = field(default_factory=dict)
+    #: The derivative kernels of specialized kernels (one per choice: :meth:`_thin`).
+    _per_choice: set = field(default_factory=set)
 
     # -- public ------------------------------------------------------------------------------------
     def jacobian(
@@ -357,8 +364,49 @@ class Differentiator:
             unchecked=tuple(a.name for a in extra) + tuple(f.name for f in fields),
             doc_returns=values + (block,),
         )
+        suffix = choice_of(kernel)
+        if suffix:
+            out = self._thin(out, suffix)
         self._add(out)
         return _Derived(out, frozenset(zero))
+
+    def _thin(self, k: Kernel, suffix: str) -> Kernel:
+        """A per-choice derivative kernel (of a kernel specialized for ``suffix``'s choice) whose
+        steps after its last call of another per-choice kernel are the same for several choices:
+        those steps (the chain rule through the choice's callees, the rest of the map) become one
+        kernel ``<name without the suffix>_tail_<digest>``, shared by every choice with the same
+        code, and the per-choice kernel returns its result (a tail :class:`~.ir.Call`)."""
+        self._per_choice.add(k.name)
+        steps = k.steps
+        calls = [i for i, s in enumerate(steps) if isinstance(s, Call) and s.kernel.name in self._per_choice]
+        if not calls or not k.status or not k.name.endswith(suffix):
+            return k
+        tail = steps[calls[-1] + 1 :]
+        if not all(isinstance(s, Stage | Call) for s in tail) or _size(tail) < TAIL_SIZE:
+            return k
+        inside = defined(tail)
+        inputs = sorted((used(tail) - inside) | (set(k.output_names) - inside))
+        digest = hashlib.sha256(repr((_fingerprint(tail), inputs, k.check_outputs)).encode()).hexdigest()[:6]
+        base = k.name.removesuffix(suffix)
+        name = f"{base}_tail_{digest}"
+        helper = self.kernels.get(name)
+        if helper is None:
+            helper = replace(
+                k,
+                name=name,
+                summary=f"The code of {base}'s kernels per choice after their choice's own calls, shared by "
+                "the choices with the same code (derive/tangent.py).",
+                args=tuple(Arg(sym(n), "the caller's variable of the same name") for n in inputs),
+                steps=tail,
+                batch=None,
+                check_inputs=False,
+                doc_args="the per-choice caller's variables of the same names.",
+            )
+            self._add(helper)
+        call = Call(
+            helper, {n: sym(n) for n in inputs}, {}, comment="the code shared between choices", tail=True
+        )
+        return replace(k, steps=steps[: calls[-1] + 1] + (call,), check_outputs=False)
 
     def _add(self, kernel: Kernel) -> None:
         if kernel.name in self.kernels:
@@ -402,6 +450,25 @@ _J = "j"
 #: maps' loops of 21-23 assignments 1.55x -> 1.8x their map per direction, geyer-vs's (a switch
 #: per pass, none by default) 2.1x -> 2.9x: so a loop holding a switch is not run per direction).
 LOOPED_SIZE = 24
+
+
+#: A per-choice derivative kernel's tail of at least this many assignments is shared
+#: (:meth:`Differentiator._thin`).
+TAIL_SIZE = 8
+
+
+def _fingerprint(x):
+    """What identifies IR code (steps, expressions), a callee by its module and name: equal for the
+    same code, for a digest."""
+    if isinstance(x, Kernel):
+        return ("kernel", x.module, x.name)
+    if is_dataclass(x):
+        return (type(x).__name__, *(_fingerprint(getattr(x, f.name)) for f in fields(x)))
+    if isinstance(x, tuple | list):
+        return tuple(_fingerprint(e) for e in x)
+    if isinstance(x, Mapping):
+        return tuple(sorted((k, _fingerprint(v)) for k, v in x.items()))
+    return sp.srepr(x) if isinstance(x, sp.Basic) else repr(x)
 
 
 def _size(steps) -> int:
@@ -547,7 +614,9 @@ class _Ctx:
             tangent = {w: sp.Add(*(j * arg_t[a][w] for j, a in row)) for w in self.frame.wrt}
             chain += self.frame.bind(local, tangent)
         if chain:
-            steps.append(Stage(tuple(chain), comment=f"chain rule through {c.kernel.name}"))
+            # named without a choice suffix: the same code for every choice (Differentiator._thin)
+            generic = c.kernel.name.removesuffix(choice_of(c.kernel))
+            steps.append(Stage(tuple(chain), comment=f"chain rule through {generic}"))
         return steps
 
     def _through_jvp(self, c: Call, arg_t, dirs) -> list:

@@ -89,15 +89,10 @@ def exact_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, rtol, atol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`exact_decompression`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (exact_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s, q_r_lo, rtol,
             atol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res

@@ -266,23 +266,13 @@ def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`geyer_stance`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = geyer_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -347,16 +337,12 @@ def geyer_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
     Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
-    ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 4); the columns are the outputs of
+    :func:`geyer_state_at`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = geyer_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        status[i] = res[4]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -453,23 +439,11 @@ def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`geyer_apex_return`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (geyer_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td,
             q_r_lo))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res

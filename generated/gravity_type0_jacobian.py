@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
+#   geyer_jacobian.py sha256:9b179765a87a1082
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -28,6 +28,88 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERI
 NAN = math.nan
 _NAN72 = (NAN,) * 72
 _NAN84 = (NAN,) * 84
+
+
+@njit(cache=True, error_model="numpy")
+def _store_row_12_72(out, status, i, res):
+    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (72 outputs, the
+    derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
+    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
+    API reports it (runtime/api/jacobian.py)."""
+    if res[72] == STATUS_OK and not (math.isfinite(res[12]) and math.isfinite(res[13])
+            and math.isfinite(res[14]) and math.isfinite(res[15]) and math.isfinite(res[16])
+            and math.isfinite(res[17]) and math.isfinite(res[18]) and math.isfinite(res[19])
+            and math.isfinite(res[20]) and math.isfinite(res[21]) and math.isfinite(res[22])
+            and math.isfinite(res[23]) and math.isfinite(res[24]) and math.isfinite(res[25])
+            and math.isfinite(res[26]) and math.isfinite(res[27]) and math.isfinite(res[28])
+            and math.isfinite(res[29]) and math.isfinite(res[30]) and math.isfinite(res[31])
+            and math.isfinite(res[32]) and math.isfinite(res[33]) and math.isfinite(res[34])
+            and math.isfinite(res[35]) and math.isfinite(res[36]) and math.isfinite(res[37])
+            and math.isfinite(res[38]) and math.isfinite(res[39]) and math.isfinite(res[40])
+            and math.isfinite(res[41]) and math.isfinite(res[42]) and math.isfinite(res[43])
+            and math.isfinite(res[44]) and math.isfinite(res[45]) and math.isfinite(res[46])
+            and math.isfinite(res[47]) and math.isfinite(res[48]) and math.isfinite(res[49])
+            and math.isfinite(res[50]) and math.isfinite(res[51]) and math.isfinite(res[52])
+            and math.isfinite(res[53]) and math.isfinite(res[54]) and math.isfinite(res[55])
+            and math.isfinite(res[56]) and math.isfinite(res[57]) and math.isfinite(res[58])
+            and math.isfinite(res[59]) and math.isfinite(res[60]) and math.isfinite(res[61])
+            and math.isfinite(res[62]) and math.isfinite(res[63]) and math.isfinite(res[64])
+            and math.isfinite(res[65]) and math.isfinite(res[66]) and math.isfinite(res[67])
+            and math.isfinite(res[68]) and math.isfinite(res[69]) and math.isfinite(res[70])
+            and math.isfinite(res[71])):
+        res = _NAN72 + (STATUS_NUMERICAL_RANGE,)
+    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
+        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
+        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
+        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
+        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
+        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
+        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
+        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
+        out[i, 69], out[i, 70], out[i, 71], status[i]) = res
+
+
+@njit(cache=True, error_model="numpy")
+def _store_row_14_84(out, status, i, res):
+    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (84 outputs, the
+    derivatives from column 14, then the status) into ``out[i]`` and ``status[i]``; a row whose
+    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
+    API reports it (runtime/api/jacobian.py)."""
+    if res[84] == STATUS_OK and not (math.isfinite(res[14]) and math.isfinite(res[15])
+            and math.isfinite(res[16]) and math.isfinite(res[17]) and math.isfinite(res[18])
+            and math.isfinite(res[19]) and math.isfinite(res[20]) and math.isfinite(res[21])
+            and math.isfinite(res[22]) and math.isfinite(res[23]) and math.isfinite(res[24])
+            and math.isfinite(res[25]) and math.isfinite(res[26]) and math.isfinite(res[27])
+            and math.isfinite(res[28]) and math.isfinite(res[29]) and math.isfinite(res[30])
+            and math.isfinite(res[31]) and math.isfinite(res[32]) and math.isfinite(res[33])
+            and math.isfinite(res[34]) and math.isfinite(res[35]) and math.isfinite(res[36])
+            and math.isfinite(res[37]) and math.isfinite(res[38]) and math.isfinite(res[39])
+            and math.isfinite(res[40]) and math.isfinite(res[41]) and math.isfinite(res[42])
+            and math.isfinite(res[43]) and math.isfinite(res[44]) and math.isfinite(res[45])
+            and math.isfinite(res[46]) and math.isfinite(res[47]) and math.isfinite(res[48])
+            and math.isfinite(res[49]) and math.isfinite(res[50]) and math.isfinite(res[51])
+            and math.isfinite(res[52]) and math.isfinite(res[53]) and math.isfinite(res[54])
+            and math.isfinite(res[55]) and math.isfinite(res[56]) and math.isfinite(res[57])
+            and math.isfinite(res[58]) and math.isfinite(res[59]) and math.isfinite(res[60])
+            and math.isfinite(res[61]) and math.isfinite(res[62]) and math.isfinite(res[63])
+            and math.isfinite(res[64]) and math.isfinite(res[65]) and math.isfinite(res[66])
+            and math.isfinite(res[67]) and math.isfinite(res[68]) and math.isfinite(res[69])
+            and math.isfinite(res[70]) and math.isfinite(res[71]) and math.isfinite(res[72])
+            and math.isfinite(res[73]) and math.isfinite(res[74]) and math.isfinite(res[75])
+            and math.isfinite(res[76]) and math.isfinite(res[77]) and math.isfinite(res[78])
+            and math.isfinite(res[79]) and math.isfinite(res[80]) and math.isfinite(res[81])
+            and math.isfinite(res[82]) and math.isfinite(res[83])):
+        res = _NAN84 + (STATUS_NUMERICAL_RANGE,)
+    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
+        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
+        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
+        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
+        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
+        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
+        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
+        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
+        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
+        77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -535,100 +617,14 @@ def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 72)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td,
-    d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td,
-    d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k,
-    d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td,
-    d_bottom_q_rd__k, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
-    d_bottom_q_th__q_thd_td, d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td,
-    d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k,
-    d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
-    d_liftoff_q_rd__k, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td,
-    d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td,
-    d_passes__q_thd_td, d_passes__k.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
+    :func:`gravity_type0_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_72`).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type0_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
             q_r_lo, reading, samples, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        status[i] = res[72]
+        _store_row_12_72(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -881,111 +877,11 @@ def gravity_type0_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, groun
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations,
     tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes,
-    d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
-    d_apex_height__k, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
-    d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
-    d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
-    d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
-    d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
-    d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
-    d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
-    d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex, d_foot_y__b_xd_apex,
-    d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td,
-    d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground,
-    d_passes__k.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`gravity_type0_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_14_84`).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type0_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
             g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_14_84(out, status, i, res)

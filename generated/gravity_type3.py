@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:8b20bd5230ccfe19
-#   geyer.py sha256:b5f57629dafd4ce6
+#   geyer.py sha256:4737273d6d8636d4
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 3 (trapezoid on [t_i, t_f]) (report section 4.4): stance, state-at-time and
 apex-return kernels."""
@@ -213,26 +213,14 @@ def gravity_type3_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, interval, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`gravity_type3_stance`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type3_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
             reading, interval, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -385,17 +373,13 @@ def gravity_type3_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k
     Row arguments (1-D float64 arrays of equal length n, any stride): t.
     Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
     interval, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 4)) and its status code to
-    ``status[i]`` (int64). Columns: q_r, q_rd, q_th, q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 4); the columns are the outputs of
+    :func:`gravity_type3_state_at`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type3_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
             reading, interval, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        status[i] = res[4]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -508,25 +492,11 @@ def gravity_type3_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, iterations,
     tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 14)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 14); the columns are the outputs of
+    :func:`gravity_type3_apex_return`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type3_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f,
             q_r_td, q_r_lo, reading, interval, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        status[i] = res[14]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], status[i]) = res

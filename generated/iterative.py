@@ -7,14 +7,14 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:8b20bd5230ccfe19
-#   geyer.py sha256:b5f57629dafd4ce6
-#   geyer_vs.py sha256:a6ee89e186ef4bfc
-#   gravity_type0.py sha256:4ed141dc3f790aa7
-#   gravity_type1.py sha256:80cd2ce579117fc4
-#   gravity_type2.py sha256:58993d926f39c1da
-#   gravity_type3.py sha256:c3762bab48ece072
-#   gravity_type4.py sha256:dfdb6ca60108eea5
-#   gravity_type5.py sha256:802b0ef9c9c3aa72
+#   geyer.py sha256:4737273d6d8636d4
+#   geyer_vs.py sha256:23fefd20e2142c29
+#   gravity_type0.py sha256:3f597486f60af083
+#   gravity_type1.py sha256:47ae110acc72b82a
+#   gravity_type2.py sha256:088717b5bb9ef1ba
+#   gravity_type3.py sha256:ce520639bb1c9138
+#   gravity_type4.py sha256:8d3a969bccac09bf
+#   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -2112,25 +2112,14 @@ def iterative_stance_nodes_4_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2239,27 +2228,15 @@ def iterative_apex_return_nodes_4_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2376,25 +2353,14 @@ def iterative_stance_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2503,27 +2469,14 @@ def iterative_apex_return_nodes_4_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2638,25 +2591,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2765,27 +2708,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2900,25 +2831,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3027,27 +2948,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3162,25 +3071,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3289,27 +3188,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3424,25 +3311,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3551,27 +3428,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3686,25 +3551,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3813,27 +3668,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3947,25 +3790,15 @@ def iterative_stance_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4074,27 +3907,15 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4209,25 +4030,14 @@ def iterative_stance_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4336,27 +4146,15 @@ def iterative_apex_return_nodes_4_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4470,25 +4268,14 @@ def iterative_stance_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4597,27 +4384,15 @@ def iterative_apex_return_nodes_1_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4734,25 +4509,14 @@ def iterative_stance_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4861,27 +4625,14 @@ def iterative_apex_return_nodes_1_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4996,25 +4747,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5123,27 +4864,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5258,25 +4987,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5385,27 +5104,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5520,25 +5227,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5647,27 +5344,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5782,25 +5467,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -5909,27 +5584,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6044,25 +5707,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6171,27 +5824,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6305,25 +5946,15 @@ def iterative_stance_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6432,27 +6063,15 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6567,25 +6186,14 @@ def iterative_stance_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6694,27 +6302,15 @@ def iterative_apex_return_nodes_1_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6828,25 +6424,14 @@ def iterative_stance_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -6955,27 +6540,15 @@ def iterative_apex_return_nodes_2_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7092,25 +6665,14 @@ def iterative_stance_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7219,27 +6781,14 @@ def iterative_apex_return_nodes_2_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7354,25 +6903,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7481,27 +7020,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7616,25 +7143,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7743,27 +7260,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -7878,25 +7383,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8005,27 +7500,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8140,25 +7623,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8267,27 +7740,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8402,25 +7863,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8529,27 +7980,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8663,25 +8102,15 @@ def iterative_stance_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8790,27 +8219,15 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -8925,25 +8342,14 @@ def iterative_stance_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9052,27 +8458,15 @@ def iterative_apex_return_nodes_2_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9186,25 +8580,14 @@ def iterative_stance_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9313,27 +8696,15 @@ def iterative_apex_return_nodes_3_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9450,25 +8821,14 @@ def iterative_stance_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9577,27 +8937,14 @@ def iterative_apex_return_nodes_3_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9712,25 +9059,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9839,27 +9176,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -9974,25 +9299,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10101,27 +9416,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10236,25 +9539,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10363,27 +9656,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10498,25 +9779,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10625,27 +9896,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10760,25 +10019,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -10887,27 +10136,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11021,25 +10258,15 @@ def iterative_stance_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11148,27 +10375,15 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11283,25 +10498,14 @@ def iterative_stance_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11410,27 +10614,15 @@ def iterative_apex_return_nodes_3_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11544,25 +10736,14 @@ def iterative_stance_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11671,27 +10852,15 @@ def iterative_apex_return_nodes_6_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11808,25 +10977,14 @@ def iterative_stance_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -11935,27 +11093,14 @@ def iterative_apex_return_nodes_6_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12070,25 +11215,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12197,27 +11332,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12332,25 +11455,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12459,27 +11572,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12594,25 +11695,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12721,27 +11812,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12856,25 +11935,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -12983,27 +12052,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13118,25 +12175,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13245,27 +12292,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13379,25 +12414,15 @@ def iterative_stance_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13506,27 +12531,15 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13641,25 +12654,14 @@ def iterative_stance_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
+    :func:`iterative_stance_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        status[i] = res[11]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -13768,24 +12770,12 @@ def iterative_apex_return_nodes_6_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
+    :func:`iterative_apex_return_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        status[i] = res[13]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res

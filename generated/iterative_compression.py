@@ -6,15 +6,15 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b5f57629dafd4ce6
-#   geyer_vs.py sha256:a6ee89e186ef4bfc
-#   gravity_type0.py sha256:4ed141dc3f790aa7
-#   gravity_type1.py sha256:80cd2ce579117fc4
-#   gravity_type2.py sha256:58993d926f39c1da
-#   gravity_type3.py sha256:c3762bab48ece072
-#   gravity_type4.py sha256:dfdb6ca60108eea5
-#   gravity_type5.py sha256:802b0ef9c9c3aa72
-#   iterative.py sha256:61e3c58e4a41b6b4
+#   geyer.py sha256:4737273d6d8636d4
+#   geyer_vs.py sha256:23fefd20e2142c29
+#   gravity_type0.py sha256:3f597486f60af083
+#   gravity_type1.py sha256:47ae110acc72b82a
+#   gravity_type2.py sha256:088717b5bb9ef1ba
+#   gravity_type3.py sha256:ce520639bb1c9138
+#   gravity_type4.py sha256:8d3a969bccac09bf
+#   gravity_type5.py sha256:f4510b5010050beb
+#   iterative.py sha256:39d64192ce130969
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -115,19 +115,14 @@ def iterative_compression_nodes_4_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -206,19 +201,13 @@ def iterative_compression_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -295,19 +284,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -384,19 +368,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -473,19 +452,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -562,19 +536,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -651,19 +620,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -739,19 +703,14 @@ def iterative_compression_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -828,19 +787,14 @@ def iterative_compression_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -916,19 +870,14 @@ def iterative_compression_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1007,19 +956,13 @@ def iterative_compression_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1096,19 +1039,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1185,19 +1123,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1274,19 +1207,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1363,19 +1291,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1452,19 +1375,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1540,19 +1458,14 @@ def iterative_compression_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1629,19 +1542,14 @@ def iterative_compression_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1717,19 +1625,14 @@ def iterative_compression_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1808,19 +1711,13 @@ def iterative_compression_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1897,19 +1794,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1986,19 +1878,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2075,19 +1962,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2164,19 +2046,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2253,19 +2130,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2341,19 +2213,14 @@ def iterative_compression_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2430,19 +2297,14 @@ def iterative_compression_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2518,19 +2380,14 @@ def iterative_compression_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2609,19 +2466,13 @@ def iterative_compression_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2698,19 +2549,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2787,19 +2633,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2876,19 +2717,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2965,19 +2801,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3054,19 +2885,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3142,19 +2968,14 @@ def iterative_compression_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3231,19 +3052,14 @@ def iterative_compression_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3319,19 +3135,14 @@ def iterative_compression_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3410,19 +3221,13 @@ def iterative_compression_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3499,19 +3304,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3588,19 +3388,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3677,19 +3472,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3766,19 +3556,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3855,19 +3640,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3943,19 +3723,14 @@ def iterative_compression_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -4032,16 +3807,11 @@ def iterative_compression_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_compression_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, g_s, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res

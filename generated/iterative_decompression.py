@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:61e3c58e4a41b6b4
+#   iterative.py sha256:39d64192ce130969
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -90,19 +90,13 @@ def iterative_decompression_nodes_4_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_decompression_nodes_4`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_decompression_nodes_4(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
             q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -169,19 +163,13 @@ def iterative_decompression_nodes_1_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_decompression_nodes_1`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_decompression_nodes_1(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
             q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -248,19 +236,13 @@ def iterative_decompression_nodes_2_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_decompression_nodes_2`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_decompression_nodes_2(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
             q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -327,19 +309,13 @@ def iterative_decompression_nodes_3_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_decompression_nodes_3`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_decompression_nodes_3(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
             q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -406,16 +382,10 @@ def iterative_decompression_nodes_6_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
     Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
+    :func:`iterative_decompression_nodes_6`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_decompression_nodes_6(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
             q_r_lo, iterations, tol))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        status[i] = res[6]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], status[i]) = res

@@ -7,14 +7,14 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:8b20bd5230ccfe19
-#   geyer.py sha256:b5f57629dafd4ce6
-#   geyer_vs.py sha256:a6ee89e186ef4bfc
-#   gravity_type0.py sha256:4ed141dc3f790aa7
-#   gravity_type1.py sha256:80cd2ce579117fc4
-#   gravity_type2.py sha256:58993d926f39c1da
-#   gravity_type3.py sha256:c3762bab48ece072
-#   gravity_type4.py sha256:dfdb6ca60108eea5
-#   gravity_type5.py sha256:802b0ef9c9c3aa72
+#   geyer.py sha256:4737273d6d8636d4
+#   geyer_vs.py sha256:23fefd20e2142c29
+#   gravity_type0.py sha256:3f597486f60af083
+#   gravity_type1.py sha256:47ae110acc72b82a
+#   gravity_type2.py sha256:088717b5bb9ef1ba
+#   gravity_type3.py sha256:ce520639bb1c9138
+#   gravity_type4.py sha256:8d3a969bccac09bf
+#   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -317,24 +317,14 @@ def iterative_report_stance_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -445,26 +435,14 @@ def iterative_report_apex_return_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -744,24 +722,14 @@ def iterative_report_stance_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c,
             k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -872,26 +840,14 @@ def iterative_report_apex_return_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
             l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1169,24 +1125,15 @@ def iterative_report_stance_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1297,26 +1244,15 @@ def iterative_report_apex_return_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1594,24 +1530,15 @@ def iterative_report_stance_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1722,26 +1649,15 @@ def iterative_report_apex_return_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2019,24 +1935,15 @@ def iterative_report_stance_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2147,26 +2054,15 @@ def iterative_report_apex_return_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2444,24 +2340,15 @@ def iterative_report_stance_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2572,26 +2459,15 @@ def iterative_report_apex_return_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2869,24 +2745,15 @@ def iterative_report_stance_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -2997,26 +2864,15 @@ def iterative_report_apex_return_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3293,24 +3149,15 @@ def iterative_report_stance_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3421,26 +3268,15 @@ def iterative_report_apex_return_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3718,24 +3554,14 @@ def iterative_report_stance_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_th
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
+    :func:`iterative_report_stance_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        status[i] = res[10]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -3846,23 +3672,12 @@ def iterative_report_apex_return_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
+    :func:`iterative_report_apex_return_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
             m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        status[i] = res[12]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
+            out[i, 9], out[i, 10], out[i, 11], status[i]) = res

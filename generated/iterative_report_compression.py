@@ -6,14 +6,14 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:b5f57629dafd4ce6
-#   geyer_vs.py sha256:a6ee89e186ef4bfc
-#   gravity_type0.py sha256:4ed141dc3f790aa7
-#   gravity_type1.py sha256:80cd2ce579117fc4
-#   gravity_type2.py sha256:58993d926f39c1da
-#   gravity_type3.py sha256:c3762bab48ece072
-#   gravity_type4.py sha256:dfdb6ca60108eea5
-#   gravity_type5.py sha256:802b0ef9c9c3aa72
+#   geyer.py sha256:4737273d6d8636d4
+#   geyer_vs.py sha256:23fefd20e2142c29
+#   gravity_type0.py sha256:3f597486f60af083
+#   gravity_type1.py sha256:47ae110acc72b82a
+#   gravity_type2.py sha256:088717b5bb9ef1ba
+#   gravity_type3.py sha256:ce520639bb1c9138
+#   gravity_type4.py sha256:8d3a969bccac09bf
+#   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -210,18 +210,13 @@ def iterative_report_compression_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -397,18 +392,13 @@ def iterative_report_compression_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
             k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -582,18 +572,14 @@ def iterative_report_compression_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -767,18 +753,14 @@ def iterative_report_compression_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -952,18 +934,14 @@ def iterative_report_compression_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1137,18 +1115,14 @@ def iterative_report_compression_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1322,18 +1296,14 @@ def iterative_report_compression_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1506,18 +1476,14 @@ def iterative_report_compression_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_t
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -1691,15 +1657,11 @@ def iterative_report_compression_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5)) and its status code to
-    ``status[i]`` (int64). Columns: t_half, end_q_r, end_q_rd, end_q_th, end_q_thd.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
+    :func:`iterative_report_compression_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, g_s, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        status[i] = res[5]
+        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res

@@ -7,14 +7,14 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:6fd73ff3c711e4f1
-#   geyer_vs_jacobian.py sha256:eb56efbc6244792f
-#   gravity_type0_jacobian.py sha256:381ad3abfdae4a30
-#   gravity_type1_jacobian.py sha256:500d5ef6bcfcd94f
-#   gravity_type2_jacobian.py sha256:04d7012842f495cb
-#   gravity_type3_jacobian.py sha256:7db412339a2d98b2
-#   gravity_type4_jacobian.py sha256:e8c29083cd0e3b48
-#   gravity_type5_jacobian.py sha256:4fc284d5dd94c92d
+#   geyer_jacobian.py sha256:9b179765a87a1082
+#   geyer_vs_jacobian.py sha256:ce3275fe2a45ba70
+#   gravity_type0_jacobian.py sha256:eb43f86438df132f
+#   gravity_type1_jacobian.py sha256:eafe299fba0e819c
+#   gravity_type2_jacobian.py sha256:f96b8ec65e3b4ad4
+#   gravity_type3_jacobian.py sha256:9b04d2a5368d3c46
+#   gravity_type4_jacobian.py sha256:9896e7ba0d4d662e
+#   gravity_type5_jacobian.py sha256:0a0aa41f63c3b0e3
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -42,6 +42,89 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
 NAN = math.nan
 _NAN70 = (NAN,) * 70
 _NAN84 = (NAN,) * 84
+
+
+@njit(cache=True, error_model="numpy")
+def _store_row_10_70(out, status, i, res):
+    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (70 outputs, the
+    derivatives from column 10, then the status) into ``out[i]`` and ``status[i]``; a row whose
+    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
+    API reports it (runtime/api/jacobian.py)."""
+    if res[70] == STATUS_OK and not (math.isfinite(res[10]) and math.isfinite(res[11])
+            and math.isfinite(res[12]) and math.isfinite(res[13]) and math.isfinite(res[14])
+            and math.isfinite(res[15]) and math.isfinite(res[16]) and math.isfinite(res[17])
+            and math.isfinite(res[18]) and math.isfinite(res[19]) and math.isfinite(res[20])
+            and math.isfinite(res[21]) and math.isfinite(res[22]) and math.isfinite(res[23])
+            and math.isfinite(res[24]) and math.isfinite(res[25]) and math.isfinite(res[26])
+            and math.isfinite(res[27]) and math.isfinite(res[28]) and math.isfinite(res[29])
+            and math.isfinite(res[30]) and math.isfinite(res[31]) and math.isfinite(res[32])
+            and math.isfinite(res[33]) and math.isfinite(res[34]) and math.isfinite(res[35])
+            and math.isfinite(res[36]) and math.isfinite(res[37]) and math.isfinite(res[38])
+            and math.isfinite(res[39]) and math.isfinite(res[40]) and math.isfinite(res[41])
+            and math.isfinite(res[42]) and math.isfinite(res[43]) and math.isfinite(res[44])
+            and math.isfinite(res[45]) and math.isfinite(res[46]) and math.isfinite(res[47])
+            and math.isfinite(res[48]) and math.isfinite(res[49]) and math.isfinite(res[50])
+            and math.isfinite(res[51]) and math.isfinite(res[52]) and math.isfinite(res[53])
+            and math.isfinite(res[54]) and math.isfinite(res[55]) and math.isfinite(res[56])
+            and math.isfinite(res[57]) and math.isfinite(res[58]) and math.isfinite(res[59])
+            and math.isfinite(res[60]) and math.isfinite(res[61]) and math.isfinite(res[62])
+            and math.isfinite(res[63]) and math.isfinite(res[64]) and math.isfinite(res[65])
+            and math.isfinite(res[66]) and math.isfinite(res[67]) and math.isfinite(res[68])
+            and math.isfinite(res[69])):
+        res = _NAN70 + (STATUS_NUMERICAL_RANGE,)
+    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
+        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
+        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
+        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
+        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
+        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
+        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
+        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
+        out[i, 69], status[i]) = res
+
+
+@njit(cache=True, error_model="numpy")
+def _store_row_12_84(out, status, i, res):
+    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (84 outputs, the
+    derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
+    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
+    API reports it (runtime/api/jacobian.py)."""
+    if res[84] == STATUS_OK and not (math.isfinite(res[12]) and math.isfinite(res[13])
+            and math.isfinite(res[14]) and math.isfinite(res[15]) and math.isfinite(res[16])
+            and math.isfinite(res[17]) and math.isfinite(res[18]) and math.isfinite(res[19])
+            and math.isfinite(res[20]) and math.isfinite(res[21]) and math.isfinite(res[22])
+            and math.isfinite(res[23]) and math.isfinite(res[24]) and math.isfinite(res[25])
+            and math.isfinite(res[26]) and math.isfinite(res[27]) and math.isfinite(res[28])
+            and math.isfinite(res[29]) and math.isfinite(res[30]) and math.isfinite(res[31])
+            and math.isfinite(res[32]) and math.isfinite(res[33]) and math.isfinite(res[34])
+            and math.isfinite(res[35]) and math.isfinite(res[36]) and math.isfinite(res[37])
+            and math.isfinite(res[38]) and math.isfinite(res[39]) and math.isfinite(res[40])
+            and math.isfinite(res[41]) and math.isfinite(res[42]) and math.isfinite(res[43])
+            and math.isfinite(res[44]) and math.isfinite(res[45]) and math.isfinite(res[46])
+            and math.isfinite(res[47]) and math.isfinite(res[48]) and math.isfinite(res[49])
+            and math.isfinite(res[50]) and math.isfinite(res[51]) and math.isfinite(res[52])
+            and math.isfinite(res[53]) and math.isfinite(res[54]) and math.isfinite(res[55])
+            and math.isfinite(res[56]) and math.isfinite(res[57]) and math.isfinite(res[58])
+            and math.isfinite(res[59]) and math.isfinite(res[60]) and math.isfinite(res[61])
+            and math.isfinite(res[62]) and math.isfinite(res[63]) and math.isfinite(res[64])
+            and math.isfinite(res[65]) and math.isfinite(res[66]) and math.isfinite(res[67])
+            and math.isfinite(res[68]) and math.isfinite(res[69]) and math.isfinite(res[70])
+            and math.isfinite(res[71]) and math.isfinite(res[72]) and math.isfinite(res[73])
+            and math.isfinite(res[74]) and math.isfinite(res[75]) and math.isfinite(res[76])
+            and math.isfinite(res[77]) and math.isfinite(res[78]) and math.isfinite(res[79])
+            and math.isfinite(res[80]) and math.isfinite(res[81]) and math.isfinite(res[82])
+            and math.isfinite(res[83])):
+        res = _NAN84 + (STATUS_NUMERICAL_RANGE,)
+    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
+        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
+        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
+        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
+        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
+        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
+        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
+        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
+        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
+        77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], status[i]) = res
 
 
 @njit(cache=True, error_model="numpy")
@@ -895,105 +978,31 @@ def iterative_report_stance_jacobian_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
-        g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length):
-    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
-    respect to the apex, the touchdown angle and the stiffness.
+def iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance):
+    """The code of iterative_report_apex_return_jacobian's kernels per choice after their choice's own calls,
+    shared by the choices with the same code (derive/tangent.py).
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
@@ -1002,25 +1011,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
+    Arguments: the per-choice caller's variables of the same names.
 
     Returns a tuple:
         apex_height: next apex height above the ground the foot stood on [m]
@@ -1039,45 +1030,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
-    # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
-        return _NAN84 + (STATUS_INVALID_INPUT,)
-    # the step's direction: the sign of the apex speed
-    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
-    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
-    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN84 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
-    # stance: Iterative stance map (Schwind and Koditschek, as printed)
-    _c1 = (iterative_report_stance_jacobian_zeroth_geyer(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d,
-        g_s, q_r_lo, variant, iterations, bottom_length))
-    if _c1[70] != STATUS_OK:
-        return _NAN84 + (_c1[70],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _,
-        _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
-        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c,
-        _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
-        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
-        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _) = _c1
-    # chain rule through iterative_report_stance_zeroth_geyer
+    # Total ops: 183
+    # chain rule through iterative_report_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
     d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
@@ -1110,14 +1064,14 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
     d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
         + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
+    _c0 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
         direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
+    if _c0[20] != STATUS_OK:
+        return _NAN84 + (_c0[20],)
     (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
         _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
         _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c0
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -1237,6 +1191,108 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
         d_foot_y__k_d, STATUS_OK)
 
 
+@njit(cache=True, error_model="numpy")
+def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
+        g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length):
+    """Apex-return map by Iterative stance map (Schwind and Koditschek, as printed), and its derivatives with
+    respect to the apex, the touchdown angle and the stiffness.
+
+    Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 38, 39, 40, 41, 42, 43, 44, 45, 98, 114, 115, 116, 117,
+    118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
+    141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
+
+    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
+    direction in one pass; through an iteration, of the iterate it stops at.
+
+    Arguments:
+        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
+        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
+            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
+        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
+        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
+            [m]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
+            5.2, closing estimates): 0 = zeroth, 1 = eq153
+
+    Returns a tuple:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_descent: flight time from the apex to touchdown [s]
+        t_stance: stance time, touchdown to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        step_length: horizontal distance from the apex to the next apex (signed) [m]
+        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
+        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
+        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
+            q_th_td, ground, k_c, k_d (row-major)
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    """
+    # Total ops: 1
+    # inputs: finite and inside their domains
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
+        return _NAN84 + (STATUS_INVALID_INPUT,)
+    # the step's direction: the sign of the apex speed
+    direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
+    # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
+        ground))
+    if _c0[30] != STATUS_OK:
+        return _NAN84 + (_c0[30],)
+    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
+        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
+        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
+        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+    # stance: Iterative stance map (Schwind and Koditschek, as printed)
+    _c1 = (iterative_report_stance_jacobian_zeroth_geyer(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d,
+        g_s, q_r_lo, variant, iterations, bottom_length))
+    if _c1[70] != STATUS_OK:
+        return _NAN84 + (_c1[70],)
+    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _,
+        _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d,
+        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c,
+        _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
+        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
+        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
+        _) = _c1
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
+
+
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
@@ -1245,114 +1301,15 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_batch(b_y_apex, b_xd_apex
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_geyer`, in order) and its status code to ``status[i]``
+    (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2239,98 +2196,15 @@ def iterative_report_stance_jacobian_zeroth_held_batch(q_r_td, q_rd_td, q_th_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_held`, in order) and its status code to ``status[i]``
+    (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2383,7 +2257,7 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -2421,164 +2295,18 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_held
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -2589,114 +2317,15 @@ def iterative_report_apex_return_jacobian_zeroth_held_batch(b_y_apex, b_xd_apex,
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_held`, in order) and its status code to ``status[i]``
+    (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3554,98 +3183,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type0`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3698,7 +3244,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -3736,164 +3282,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type0
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -3904,115 +3304,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4870,98 +4171,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type1`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5014,7 +4232,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -5052,164 +4270,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type1
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -5220,115 +4292,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6186,98 +5159,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type2`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6330,7 +5220,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -6368,164 +5258,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type2
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -6536,115 +5280,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7502,98 +6147,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type3`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7646,7 +6208,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -7684,164 +6246,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type3
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -7852,115 +6268,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8818,98 +7135,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type4`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8962,7 +7196,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -9000,164 +7234,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type4
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -9168,115 +7256,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -10134,98 +8123,15 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5_batch(q_r_td, q_rd_td,
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_gravity_type5`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -10278,7 +8184,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -10316,164 +8222,18 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_gravity_type5
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -10484,115 +8244,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5_batch(b_y_apex, b
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11483,98 +9144,15 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th
 
     Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70)) and its status code to
-    ``status[i]`` (int64). Columns: t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd,
-    liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-    d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-    d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-    d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-    d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-    d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-    d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-    d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-    d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-    d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-    d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-    d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-    d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-    d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-    d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
+    :func:`iterative_report_stance_jacobian_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
+    (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        status[i] = res[70]
+        _store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11627,7 +9205,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
             q_th_td, ground, k_c, k_d (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
-    # Total ops: 184
+    # Total ops: 1
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -11665,164 +9243,18 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
         _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
         _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
         _) = _c1
-    # chain rule through iterative_report_stance_zeroth_geyer_vs
-    d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_t_stance__b_xd_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_t_stance__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_t_stance__q_th_td = (_j_t_stance__q_rd_td*_j_td_q_rd__q_th_td + _j_t_stance__q_th_td*_j_td_q_th__q_th_td
-        + _j_t_stance__q_thd_td*_j_td_q_thd__q_th_td)
-    d_t_stance__ground = _j_t_stance__q_rd_td*_j_td_q_rd__ground + _j_t_stance__q_thd_td*_j_td_q_thd__ground
-    d_liftoff_q_rd__b_y_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_rd__b_xd_apex = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_rd__q_th_td = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_rd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_rd__ground = (_j_liftoff_q_rd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_rd__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_th__b_y_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_th__b_xd_apex = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_th__q_th_td = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_th__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_th__ground = (_j_liftoff_q_th__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_th__q_thd_td*_j_td_q_thd__ground)
-    d_liftoff_q_thd__b_y_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_y_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_y_apex)
-    d_liftoff_q_thd__b_xd_apex = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__b_xd_apex
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__b_xd_apex)
-    d_liftoff_q_thd__q_th_td = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__q_th_td
-        + _j_liftoff_q_thd__q_th_td*_j_td_q_th__q_th_td + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__q_th_td)
-    d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
-        + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
-    # liftoff -> next apex: exact ballistic ascent
-    _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
-    # chain rule through liftoff_to_apex
-    d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_height__b_xd_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_height__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_height__q_th_td = (_j_apex_height__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_height__q_th*d_liftoff_q_th__q_th_td + _j_apex_height__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_height__ground = (_j_apex_height__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_height__q_th*d_liftoff_q_th__ground + _j_apex_height__q_thd*d_liftoff_q_thd__ground)
-    d_apex_height__k_c = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_c
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_c + _j_apex_height__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_height__k_d = (_j_apex_height__q_rd*_j_liftoff_q_rd__k_d
-        + _j_apex_height__q_th*_j_liftoff_q_th__k_d + _j_apex_height__q_thd*_j_liftoff_q_thd__k_d)
-    d_apex_speed__b_y_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_y_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_apex_speed__b_xd_apex = (_j_apex_speed__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_apex_speed__q_th*d_liftoff_q_th__b_xd_apex + _j_apex_speed__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_apex_speed__q_th_td = (_j_apex_speed__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_apex_speed__q_th*d_liftoff_q_th__q_th_td + _j_apex_speed__q_thd*d_liftoff_q_thd__q_th_td)
-    d_apex_speed__ground = (_j_apex_speed__q_rd*d_liftoff_q_rd__ground
-        + _j_apex_speed__q_th*d_liftoff_q_th__ground + _j_apex_speed__q_thd*d_liftoff_q_thd__ground)
-    d_apex_speed__k_c = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_c + _j_apex_speed__q_th*_j_liftoff_q_th__k_c
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_c)
-    d_apex_speed__k_d = (_j_apex_speed__q_rd*_j_liftoff_q_rd__k_d + _j_apex_speed__q_th*_j_liftoff_q_th__k_d
-        + _j_apex_speed__q_thd*_j_liftoff_q_thd__k_d)
-    d_t_ascent__b_y_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_y_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_t_ascent__b_xd_apex = (_j_t_ascent__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_t_ascent__q_th*d_liftoff_q_th__b_xd_apex + _j_t_ascent__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_t_ascent__q_th_td = (_j_t_ascent__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_t_ascent__q_th*d_liftoff_q_th__q_th_td + _j_t_ascent__q_thd*d_liftoff_q_thd__q_th_td)
-    d_t_ascent__ground = (_j_t_ascent__q_rd*d_liftoff_q_rd__ground + _j_t_ascent__q_th*d_liftoff_q_th__ground
-        + _j_t_ascent__q_thd*d_liftoff_q_thd__ground)
-    d_t_ascent__k_c = (_j_liftoff_q_rd__k_c*_j_t_ascent__q_rd + _j_liftoff_q_th__k_c*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_c*_j_t_ascent__q_thd)
-    d_t_ascent__k_d = (_j_liftoff_q_rd__k_d*_j_t_ascent__q_rd + _j_liftoff_q_th__k_d*_j_t_ascent__q_th
-        + _j_liftoff_q_thd__k_d*_j_t_ascent__q_thd)
-    d_next_apex_x__b_y_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_y_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_y_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_y_apex)
-    d_next_apex_x__b_xd_apex = (_j_next_apex_x__q_rd*d_liftoff_q_rd__b_xd_apex
-        + _j_next_apex_x__q_th*d_liftoff_q_th__b_xd_apex + _j_next_apex_x__q_thd*d_liftoff_q_thd__b_xd_apex)
-    d_next_apex_x__q_th_td = (_j_next_apex_x__q_rd*d_liftoff_q_rd__q_th_td
-        + _j_next_apex_x__q_th*d_liftoff_q_th__q_th_td + _j_next_apex_x__q_thd*d_liftoff_q_thd__q_th_td)
-    d_next_apex_x__ground = (_j_next_apex_x__q_rd*d_liftoff_q_rd__ground
-        + _j_next_apex_x__q_th*d_liftoff_q_th__ground + _j_next_apex_x__q_thd*d_liftoff_q_thd__ground)
-    d_next_apex_x__k_c = (_j_liftoff_q_rd__k_c*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_c*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_c*_j_next_apex_x__q_thd)
-    d_next_apex_x__k_d = (_j_liftoff_q_rd__k_d*_j_next_apex_x__q_rd
-        + _j_liftoff_q_th__k_d*_j_next_apex_x__q_th + _j_liftoff_q_thd__k_d*_j_next_apex_x__q_thd)
-    # the step: apex to the foot, the foot to the next apex
-    step_length = foot_x + next_apex_x
-    d_step_length__b_y_apex = _j_foot_x__b_y_apex + d_next_apex_x__b_y_apex
-    d_step_length__b_xd_apex = _j_foot_x__b_xd_apex + d_next_apex_x__b_xd_apex
-    d_step_length__q_th_td = _j_foot_x__q_th_td + d_next_apex_x__q_th_td
-    d_step_length__ground = _j_foot_x__ground + d_next_apex_x__ground
-    foot_y = -b_y_apex + ground
-    # derivatives of the outputs
-    d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
-    d_t_descent__q_th_td = _j_t_descent__q_th_td
-    d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
-    d_t_stance__k_c = _j_t_stance__k_c
-    d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
-    d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
-    d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
-    d_liftoff_q_th__k_d = _j_liftoff_q_th__k_d
-    d_liftoff_q_thd__k_c = _j_liftoff_q_thd__k_c
-    d_liftoff_q_thd__k_d = _j_liftoff_q_thd__k_d
-    d_step_length__k_c = d_next_apex_x__k_c
-    d_step_length__k_d = d_next_apex_x__k_d
-    d_foot_x__b_y_apex = _j_foot_x__b_y_apex
-    d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
-    d_foot_x__q_th_td = _j_foot_x__q_th_td
-    d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+    # the code shared between choices
+    return (iterative_report_apex_return_jacobian_tail_063bb0(_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex,
+        _j_foot_x__ground, _j_foot_x__q_th_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d,
+        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c,
+        _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
+        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td,
+        _j_liftoff_q_thd__q_thd_td, _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td,
+        _j_t_stance__k_c, _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
+        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
+        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
+        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, t_descent, t_stance))
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
@@ -11833,111 +9265,12 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs_batch(b_y_apex, b_xd_a
     Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
     Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
     bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84)) and its status code to
-    ``status[i]`` (int64). Columns: apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r,
-    liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex,
-    d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
-    d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
-    d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-    d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-    d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-    d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-    d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-    d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-    d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-    d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-    d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-    d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-    d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-    d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex,
-    d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex,
-    d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d.
+    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
+    :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs`, in order) and its status code to
+    ``status[i]`` (int64).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        out[i, 0] = res[0]
-        out[i, 1] = res[1]
-        out[i, 2] = res[2]
-        out[i, 3] = res[3]
-        out[i, 4] = res[4]
-        out[i, 5] = res[5]
-        out[i, 6] = res[6]
-        out[i, 7] = res[7]
-        out[i, 8] = res[8]
-        out[i, 9] = res[9]
-        out[i, 10] = res[10]
-        out[i, 11] = res[11]
-        out[i, 12] = res[12]
-        out[i, 13] = res[13]
-        out[i, 14] = res[14]
-        out[i, 15] = res[15]
-        out[i, 16] = res[16]
-        out[i, 17] = res[17]
-        out[i, 18] = res[18]
-        out[i, 19] = res[19]
-        out[i, 20] = res[20]
-        out[i, 21] = res[21]
-        out[i, 22] = res[22]
-        out[i, 23] = res[23]
-        out[i, 24] = res[24]
-        out[i, 25] = res[25]
-        out[i, 26] = res[26]
-        out[i, 27] = res[27]
-        out[i, 28] = res[28]
-        out[i, 29] = res[29]
-        out[i, 30] = res[30]
-        out[i, 31] = res[31]
-        out[i, 32] = res[32]
-        out[i, 33] = res[33]
-        out[i, 34] = res[34]
-        out[i, 35] = res[35]
-        out[i, 36] = res[36]
-        out[i, 37] = res[37]
-        out[i, 38] = res[38]
-        out[i, 39] = res[39]
-        out[i, 40] = res[40]
-        out[i, 41] = res[41]
-        out[i, 42] = res[42]
-        out[i, 43] = res[43]
-        out[i, 44] = res[44]
-        out[i, 45] = res[45]
-        out[i, 46] = res[46]
-        out[i, 47] = res[47]
-        out[i, 48] = res[48]
-        out[i, 49] = res[49]
-        out[i, 50] = res[50]
-        out[i, 51] = res[51]
-        out[i, 52] = res[52]
-        out[i, 53] = res[53]
-        out[i, 54] = res[54]
-        out[i, 55] = res[55]
-        out[i, 56] = res[56]
-        out[i, 57] = res[57]
-        out[i, 58] = res[58]
-        out[i, 59] = res[59]
-        out[i, 60] = res[60]
-        out[i, 61] = res[61]
-        out[i, 62] = res[62]
-        out[i, 63] = res[63]
-        out[i, 64] = res[64]
-        out[i, 65] = res[65]
-        out[i, 66] = res[66]
-        out[i, 67] = res[67]
-        out[i, 68] = res[68]
-        out[i, 69] = res[69]
-        out[i, 70] = res[70]
-        out[i, 71] = res[71]
-        out[i, 72] = res[72]
-        out[i, 73] = res[73]
-        out[i, 74] = res[74]
-        out[i, 75] = res[75]
-        out[i, 76] = res[76]
-        out[i, 77] = res[77]
-        out[i, 78] = res[78]
-        out[i, 79] = res[79]
-        out[i, 80] = res[80]
-        out[i, 81] = res[81]
-        out[i, 82] = res[82]
-        out[i, 83] = res[83]
-        status[i] = res[84]
+        _store_row_12_84(out, status, i, res)

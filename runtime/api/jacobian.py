@@ -211,14 +211,11 @@ _ARG = {public: arg for arg, public in _PUBLIC.items()}
 
 
 def _batch(call: Call, role: str, out: np.ndarray, status: np.ndarray, shape) -> JacobianBatch:
+    """The batch's values and Jacobians as views of the kernel's ``out`` (no copy of the wide
+    output): the batch kernels already report a row whose derivative is not finite as
+    NUMERICAL_RANGE with NaN everywhere (derive/templates/kernels.py.j2), and a failed row is NaN."""
     outputs, inputs = _names(call, role)
     data, jac = _split(out, len(outputs), len(inputs))
-    data, jac = data.copy(), jac.copy()
-    ok = status == int(Status.OK)
-    status[ok & ~np.isfinite(jac).all(axis=(1, 2))] = int(Status.NUMERICAL_RANGE)
-    bad = status != int(Status.OK)
-    data[bad] = math.nan
-    jac[bad] = math.nan
     _mask_rest_length(call, inputs, jac)
     jac.setflags(write=False)
     kind = role.removesuffix("_jacobian")
