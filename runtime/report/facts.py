@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..studies.accuracy_report import YU_TARGET
+from ..studies.accuracy_report import meets_yu_target
 from ..studies.report_format import pct, sig
 
 __all__ = [
@@ -113,20 +113,6 @@ def _yu(records: dict) -> dict:
     return grids[0]
 
 
-def _yu_target(v: dict) -> tuple[float, float, float]:
-    """(max mean at 60 and 65 deg, max mean at any angle, max) of a variant on the Yu grid."""
-    by = {a["angle_of_attack_deg"]: a for a in v["by_angle"]}
-    if 60.0 not in by or 65.0 not in by:
-        raise MissingData("the Yu grid's 60 and 65 degree rows")
-    m = max(by[60.0]["mean"], by[65.0]["mean"])
-    return m, max(a["mean"] for a in v["by_angle"]), max(a["max"] for a in v["by_angle"])
-
-
-def _meets_yu(v: dict) -> bool:
-    m, m_all, mx = _yu_target(v)
-    return m < YU_TARGET["mean_60_65"] and m_all < YU_TARGET["mean_all"] and mx < YU_TARGET["max"]
-
-
 def _front(records: dict) -> list[dict]:
     return [r for r in records["pareto"]["rows"] if r["dominated_by"] is None]
 
@@ -163,11 +149,16 @@ def _region_agreement(records: dict, name: str) -> float:
     return sum(a == b for a, b in zip(exact, mine, strict=True)) / len(exact)
 
 
-def _stiffness_max(records: dict, name: str, key: str, lo: float, hi: float, kind: str) -> float:
-    """The largest mean (``kind`` "mean") or max error ``key`` of map ``name`` over the stiffness
-    ratios in [lo, hi] on every grid of the stiffness record."""
+def _stiffness(
+    records: dict, name: str, key: str, kind: str, lo: float, hi: float, grid: str | None = None
+) -> list[float]:
+    """The ``kind`` ("mean" or "max") error ``key`` of map ``name`` at every stiffness ratio in
+    [lo, hi], on grid ``grid`` of the stiffness record (None: every grid)."""
+    grids = [g for g in need(records, "stiffness")["grids"] if grid is None or g["name"] == grid]
+    if not grids:
+        raise MissingData(f"no stiffness grid {grid}")
     out = []
-    for g in need(records, "stiffness")["grids"]:
+    for g in grids:
         for r in g["ratios"]:
             if lo - 1e-12 <= r["ratio"] <= hi + 1e-12:
                 v = next((v for v in r["variants"] if v["label"] == name), None)
@@ -176,20 +167,6 @@ def _stiffness_max(records: dict, name: str, key: str, lo: float, hi: float, kin
                 out.append(v[key][kind])
     if not out:
         raise MissingData("no stiffness ratio in range")
-    return max(out)
-
-
-def _stiffness_range(records: dict, name: str, key: str, lo: float, hi: float, grid: str) -> list[float]:
-    g = next((g for g in need(records, "stiffness")["grids"] if g["name"] == grid), None)
-    if g is None:
-        raise MissingData(f"no stiffness grid {grid}")
-    out = []
-    for r in g["ratios"]:
-        if lo - 1e-12 <= r["ratio"] <= hi + 1e-12:
-            v = next((v for v in r["variants"] if v["label"] == name), None)
-            if v is None:
-                raise MissingData(f"{name} not in the stiffness record")
-            out.append(v[key]["mean"])
     return out
 
 
@@ -251,7 +228,7 @@ def numbers(r: dict) -> dict[str, Callable[[], str]]:
         return ", ".join(f"`{m}` {pct(_heat(r, m)[i, j])}" for m in gravity)
 
     def geyer_vs_speed():
-        means = _stiffness_range(r, "geyer-vs", "apex_speed", 0.8, 1.25, "human runner, nonsymmetric")
+        means = _stiffness(r, "geyer-vs", "apex_speed", "mean", 0.8, 1.25, "human runner, nonsymmetric")
         return f"{_range(100 * x for x in means)} %"
 
     rep = lambda: need(r, "reproductions")  # noqa: E731
@@ -283,7 +260,7 @@ def numbers(r: dict) -> dict[str, Callable[[], str]]:
         "best_yu_mean": lambda: pct(best_yu()["apex_error"]["mean"]),
         "best_yu_max": lambda: pct(best_yu()["apex_error"]["max"]),
         "yu_meets": lambda: (
-            ", ".join(f"`{m}`" for m in _gravity(r) if _meets_yu(_variant(yu(), m))) or "none"
+            ", ".join(f"`{m}`" for m in _gravity(r) if meets_yu_target(_variant(yu(), m))) or "none"
         ),
         "geyer_yu_mean": lambda: pct(_mean(yu(), BASELINE)),
         "geyer_yu_max": lambda: pct(_max(yu(), BASELINE)),
@@ -297,7 +274,7 @@ def numbers(r: dict) -> dict[str, Callable[[], str]]:
         "iterative_n_last": lambda: pct(it_yu()[-1]),
         "iterative_per_pass": lambda: per_pass(it_yu()),
         "iterative_kd_max": lambda: pct(
-            max(_stiffness_max(r, ITERATIVE, k, 0.6, 1.5, "max") for k in ("apex_height", "apex_speed"))
+            max(max(_stiffness(r, ITERATIVE, k, "max", 0.6, 1.5)) for k in ("apex_height", "apex_speed"))
         ),
         "geyer_vs_kd_speed": geyer_vs_speed,
         "fp_angle_geyer": lambda: fp_angle(BASELINE),
@@ -373,14 +350,14 @@ def claims(r: dict) -> dict[str, Callable[[], bool]]:
         "iterative_most_accurate": lambda: all(
             _mean(g, ITERATIVE) <= min(_mean(g, m) for m in approx()) for g in _grids(r)
         ),
-        "yu_target_met_by_type5": lambda: _meets_yu(_variant(_yu(r), "gravity-type5")),
+        "yu_target_met_by_type5": lambda: meets_yu_target(_variant(_yu(r), "gravity-type5")),
         "report_worse_than_geyer_symmetric": lambda: all(
             _mean(g, "iterative-report") > _mean(g, BASELINE) for g in sym()
         ),
         "iterative_converges": it_converges,
         "report_iteration_diverges": report_diverges,
         "iterative_kd_within_target": lambda: (
-            max(_stiffness_max(r, ITERATIVE, k, 0.8, 1.25, "max") for k in ("apex_height", "apex_speed"))
+            max(max(_stiffness(r, ITERATIVE, k, "max", 0.8, 1.25)) for k in ("apex_height", "apex_speed"))
             < 0.01
         ),
         "iterative_fixed_points_closest": iterative_closest_fp,
@@ -419,9 +396,16 @@ class Numbers:
 
     records: dict
     strict: bool = True
+    #: The number functions of ``records``, built once.
+    functions: dict[str, Callable[[], str]] = field(init=False, repr=False)
+
+    def __post_init__(self):
+        self.functions = numbers(self.records)
 
     def __getattr__(self, name: str) -> str:
-        fns = numbers(self.records)
+        if name.startswith("__") or name == "functions":
+            raise AttributeError(name)
+        fns = self.functions
         if name not in fns:
             raise AttributeError(f"the document has no number {name!r}")
         try:

@@ -38,6 +38,8 @@ __all__ = [
     "figure_record",
     "from_json",
     "findings",
+    "yu_target_stats",
+    "meets_yu_target",
     "render_markdown",
     "figure",
 ]
@@ -187,6 +189,20 @@ def _ratio(a: float, b: float) -> float:
     return a / b if b and math.isfinite(a) and math.isfinite(b) else math.nan
 
 
+def yu_target_stats(variant: dict) -> tuple[float, float, float]:
+    """(largest mean at 60 and 65 deg, largest mean at any angle, max) of a variant of the Yu grid,
+    the quantities of :data:`YU_TARGET`; KeyError when the grid lacks the 60 or 65 degree rows."""
+    by = {a["angle_of_attack_deg"]: a for a in variant["by_angle"]}
+    m60_65 = max(by[60.0]["mean"], by[65.0]["mean"])
+    return m60_65, max(a["mean"] for a in variant["by_angle"]), max(a["max"] for a in variant["by_angle"])
+
+
+def meets_yu_target(variant: dict) -> bool:
+    """Whether a variant of the Yu grid meets :data:`YU_TARGET`."""
+    m60_65, m_all, mx = yu_target_stats(variant)
+    return m60_65 < YU_TARGET["mean_60_65"] and m_all < YU_TARGET["mean_all"] and mx < YU_TARGET["max"]
+
+
 def findings(summary: list[dict]) -> list[str]:
     """Statements computed from the numbers: per map, against Geyer's on each kind of grid."""
     lines = []
@@ -221,10 +237,7 @@ def findings(summary: list[dict]) -> list[str]:
         )
         if best is not None:
             by = {a["angle_of_attack_deg"]: a for a in best["by_angle"]}
-            m60_65 = max(by[60.0]["mean"], by[65.0]["mean"])
-            m_all = max(a["mean"] for a in best["by_angle"])
-            mx = max(a["max"] for a in best["by_angle"])
-            met = m60_65 < YU_TARGET["mean_60_65"] and m_all < YU_TARGET["mean_all"] and mx < YU_TARGET["max"]
+            mx, met = yu_target_stats(best)[2], meets_yu_target(best)
             lines.append(
                 "- Yu protocol target (mean < 2 % at 60 and 65 deg, < 5 % at every angle, max < 10 %): "
                 f"the best variant of the family, `{best['label']}`, has mean "
