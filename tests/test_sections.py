@@ -147,3 +147,17 @@ def test_report_quick_needs_out():
     )
     assert done.returncode == 2
     assert "--out" in done.stderr
+
+
+def test_report_render_only_on_records_missing_one_is_one_line_exit_1(tmp_path):
+    for f in DOCS.glob("*.json"):
+        if f.name != "control.json":
+            shutil.copy(f, tmp_path / f.name)
+    done = subprocess.run(
+        [sys.executable, "-m", "slipmaps", "report", "--render-only", "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 1
+    assert "Traceback" not in done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1 and "control" in done.stderr

@@ -66,7 +66,18 @@ def _stage(i: int, n: int, what: str) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``slipmaps report`` (module docstring); prints the paths it wrote."""
+    """Run ``slipmaps report`` (module docstring); prints the paths it wrote. Exit 1 with one line
+    when the records do not support a claim of the page or lack one it needs (strict render)."""
+    from ..report import sections
+
+    try:
+        return _run(args)
+    except (sections.ClaimFailed, sections.MissingData) as exc:
+        print(f"slipmaps report: {exc}", file=sys.stderr)
+        return 1
+
+
+def _run(args: argparse.Namespace) -> int:
     from ..report import sections
     from ..studies.checkout import checkout_root
 
