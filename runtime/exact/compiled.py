@@ -68,6 +68,7 @@ from . import dop853
 from .reference import COLLAPSE_FRACTION, DEFAULT_RTOL, max_step
 
 __all__ = [
+    "INLINE",
     "STANCE_NAMES",
     "half_into",
     "hybrid_stance",
@@ -120,7 +121,11 @@ INTEGRATION_FAILED = int(Status.INTEGRATION_FAILED)
 _JIT = {"cache": True, "error_model": "numpy"}
 #: The driver takes the vector field and the bottom step as arguments (dop853's ``_GENERIC``): it
 #: is compiled into each (cached) caller, once per vector field.
-_GENERIC = {"error_model": "numpy"}
+_GENERIC = {"error_model": "numpy", "inline": "always"}
+#: The layers between a kernel and the driver are inlined into it (numba's IR inlining): each cached
+#: function of a call chain re-optimises everything it links (LLVM's passes over the whole driver at
+#: every layer), so the first call compiles in a third less time (benchmarks/bench_first_call.py).
+INLINE = {"cache": True, "error_model": "numpy", "inline": "always"}
 
 
 @njit(**_JIT)
@@ -149,7 +154,7 @@ def no_bottom_step(z_b, m, l0, k_c, k_d, g_s, work):
     """The plain stance's step at the bottom: nothing (the Jacobian's is its saltation)."""
 
 
-POLAR_FIELD = dop853.static(polar_field)
+POLAR_FIELD = dop853.static(polar_field, state_length=N_POLAR)
 STANCE_EVENTS = dop853.static(stance_events)
 NO_BOTTOM_STEP = dop853.static(no_bottom_step)
 
@@ -373,7 +378,7 @@ def _polar(q_r, q_rd, q_th, q_thd):
     return z
 
 
-@njit(**_JIT)
+@njit(**INLINE)
 def _plain(
     z, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, from_touchdown, to_liftoff, t_sample, y_sample
 ):
@@ -419,7 +424,7 @@ def stance_evaluations(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
     return status, evaluations
 
 
-@njit(**_JIT)
+@njit(**INLINE)
 def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out):
     """The exact stance from a polar touchdown state: writes the :data:`STANCE_NAMES` row into
     ``out[:N_STANCE]`` (NaN unless OK) and returns the status. Times from touchdown [s]."""

@@ -12,8 +12,9 @@ an integration costs microseconds instead of milliseconds:
   ``t_bound``; initial step: scipy's ``select_initial_step``;
 * the step itself: the tableau's sums written out as source with literal coefficients and its
   zeros left out (:func:`_step_source`, compiled once at import; the polar state's 4 components
-  written out too), summed in scipy's order: the values of the loops over the tableau, bitwise,
-  with fewer operations (benchmarks/bench_exact.py measures the step);
+  written out too, for a field registered with :func:`static`'s ``state_length``), summed in
+  scipy's order: the values of the loops over the tableau, bitwise, with fewer operations
+  (benchmarks/bench_exact.py measures the step);
 * dense output: the 7th-order interpolant of scipy's ``DOP853._dense_output_impl`` (three extra
   stages per interpolated step) evaluated as ``Dop853DenseOutput``;
 * events: evaluated at the end of every step; an event whose function changes sign in the
@@ -70,7 +71,7 @@ import math
 
 import numpy as np
 from numba import njit, types
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
 from scipy.integrate._ivp import dop853_coefficients as _coef
 from scipy.integrate._ivp import rk as _rk
 
@@ -109,15 +110,18 @@ _JIT = {"cache": True, "error_model": "numpy"}
 _GENERIC = {"error_model": "numpy"}
 
 
-def static(fn):
+def static(fn, state_length=None):
     """A zero-argument njit-callable returning a handle of the njit function ``fn`` to pass to
     :func:`solve` as ``rhs`` or ``events`` from a cached kernel.
 
     ``solve(fn, ...)`` inside a ``cache=True`` kernel would lower the dispatcher ``fn`` as a
     pointer to a Python object (a "dynamic global": numba refuses to cache the kernel). The handle
     has the same numba type (the call is resolved at compile time, by type) and no run-time
-    value: a null pointer.
+    value: a null pointer. A field of ``state_length`` :data:`UNROLLED` gets the step with its
+    components written out (:func:`_rk_step`).
     """
+    if state_length == UNROLLED:
+        _UNROLLED_FIELDS.add(fn)
 
     @intrinsic
     def handle(typingctx):
@@ -145,9 +149,12 @@ def _advance(y: str, coefficients: np.ndarray, stages: int, term) -> str:
     return f"{y} + ({_sum(coefficients, stages, term)}) * h"
 
 
-#: A state of this length (the polar stance) runs its loops over the components with a constant
-#: count (compiled unrolled); any other length loops over its own.
+#: The step of a field registered with this state length (the polar stance: :func:`static`'s
+#: ``state_length``) has its components written out; any other field's loops over its own (the
+#: choice is made by the field's type, at compile time: one body compiled per field, not both).
 UNROLLED = 4
+#: The right-hand sides :func:`static` was told have :data:`UNROLLED` components.
+_UNROLLED_FIELDS: set = set()
 
 
 def _step_source() -> str:
@@ -206,12 +213,13 @@ def _step_source() -> str:
         ]
 
     lines = [
-        "def _rk_step(rhs, p, t, y, f, h, K, y_new, ys, dy):",
+        "def _rk_step_unrolled(rhs, p, t, y, f, h, K, y_new, ys, dy):",
+        *step(str(UNROLLED), "    "),
+        "",
+        "",
+        "def _rk_step_loop(rhs, p, t, y, f, h, K, y_new, ys, dy):",
         "    n = y.shape[0]",
-        f"    if n == {UNROLLED}:",
-        *step(str(UNROLLED), "        "),
-        "    else:",
-        *step("n", "        "),
+        *step("n", "    "),
         "",
         "",
         "def _error_norm(K, h, y, y_new, rtol, atol, n):",
@@ -251,9 +259,24 @@ def _step_source() -> str:
 
 _namespace = {"math": math}
 exec(compile(_step_source(), f"<{__name__} step>", "exec"), _namespace)
+
+
 #: One 8th-order step from (t, y) with slope f: y_new, and f_new in K[N_STAGES] (scipy's rk_step);
 #: ``dy`` is scratch (the right-hand side writes there; copied into K's rows).
-_rk_step = njit(**_GENERIC)(_namespace["_rk_step"])
+def _rk_step(rhs, p, t, y, f, h, K, y_new, ys, dy):  # pragma: no cover - njit-only (overload below)
+    raise NotImplementedError("_rk_step runs inside compiled code only")
+
+
+@overload(_rk_step)
+def _rk_step_impl(rhs, p, t, y, f, h, K, y_new, ys, dy):
+    """The step for this right-hand side: components written out for a field :func:`static` was
+    told has :data:`UNROLLED` components, the loops otherwise (chosen by type, at compile time:
+    one body compiled per field instead of both)."""
+    if getattr(rhs, "dispatcher", None) in _UNROLLED_FIELDS:
+        return _namespace["_rk_step_unrolled"]
+    return _namespace["_rk_step_loop"]
+
+
 #: scipy's ``DOP853._estimate_error_norm`` (scale atol + rtol max(|y|, |y_new|)) over the first n
 #: components; ``math.sqrt(s5) ** 2`` is np.linalg.norm(err5) ** 2, as scipy computes it.
 _error_norm = njit(**_GENERIC)(_namespace["_error_norm"])

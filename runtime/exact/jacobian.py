@@ -152,7 +152,7 @@ def bottom_saltation(z_b, m, l0, k_c, k_d, g_s, work):
 BOTTOM_SALTATION = dop853.static(bottom_saltation)
 
 
-@njit(**_JIT)
+@njit(**ec.INLINE)
 def jacobian_into(
     q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out, jac
 ):

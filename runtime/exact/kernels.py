@@ -50,7 +50,8 @@ __all__ = ["STANCE_JACOBIAN_WRT", "compression", "decompression", "stance", "sta
 #: The inputs :func:`stance_jacobian` differentiates with respect to, in its column order.
 STANCE_JACOBIAN_WRT = ej.INPUTS
 
-_JIT = {"cache": True, "error_model": "numpy"}
+#: Inlined into the generated kernels that call them (:data:`.compiled.INLINE`).
+_JIT = ec.INLINE
 
 # numba builds fixed-length tuples only: the literal tuples below are 10 outputs and 10 x 6 entries.
 if ec.N_STANCE != 10 or (ej.N_OUT, ej.N_IN) != (10, 6):
