@@ -148,6 +148,44 @@ def _external_sources(module: str) -> dict[str, str]:
     return {f"{'/'.join(parts[1:-1])}/{p.name}": p.read_text() for p in sorted(folder.glob("*.py"))}
 
 
+def _doc_key(k: dict) -> tuple:
+    """What a kernel's docstrings say besides its equations: summary, notes, arguments, returns,
+    status and batch form (derive/templates/kernels.py.j2)."""
+    return (k["summary"], k["notes"], repr(k["args"]), k["doc_args"], repr(k["returns"]), k["status"]) + (
+        repr(k["batch"]),
+    )
+
+
+def _share_docs(kernels: list[dict]) -> None:
+    """A kernel whose docstring would repeat an earlier kernel's of the module word for word (the
+    choices of a specialized option: the same arguments, returns and statuses) refers to that
+    kernel's instead (``doc_ref``): each choice's kernel and batch form still say what they are,
+    the module says the rest once."""
+    first: dict[tuple, str] = {}
+    for k in kernels:
+        k["doc_ref"] = first.setdefault(_doc_key(k), k["name"])
+        if k["doc_ref"] == k["name"]:
+            k["doc_ref"] = ""
+
+
+def _share_checks(kernels: list[dict]) -> list[dict]:
+    """One function per input check that several kernels of the module run (the same arguments
+    and domains: the choices of a specialized option), called by each (``input_check``); returns
+    those functions (name, arguments, code) for the template."""
+    users: dict[tuple, list[dict]] = {}
+    for k in kernels:
+        if k["input_guard"]:
+            users.setdefault((tuple(a["name"] for a in k["args"]), k["input_guard"]), []).append(k)
+    checks = []
+    for (args, code), ks in users.items():
+        name = f"_inputs_valid_{len(checks)}" if len(ks) > 1 else ""
+        for k in ks:
+            k["input_check"] = name
+        if name:
+            checks.append({"name": name, "args": ", ".join(args), "code": code, "users": len(ks)})
+    return checks
+
+
 def _render_module(mod: Module, files: dict[str, str]) -> str:
     kernels = [lower(k) for k in mod.kernels()]
     callees: dict[str, set[str]] = {}
@@ -164,20 +202,40 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
         depends += [{"name": n, "sha256": _sha(t)} for n, t in _external_sources(m).items()]
     imports = [f"from .{m} import {', '.join(sorted(callees[m]))}" for m in generated]
     imports += [f"from {m} import {', '.join(sorted(callees[m]))}" for m in external]
+    return wrap(
+        render_kernels(kernels, source=mod.source, module_doc=mod.doc, depends=depends, imports=imports)
+    )
+
+
+def render_kernels(
+    kernels: list[dict],
+    *,
+    source: str,
+    module_doc: str,
+    depends: list[dict],
+    imports: list[str],
+    status_module: str = ".status",
+) -> str:
+    """The source of one kernel module (before :func:`.wrap.wrap`) from its lowered kernels
+    (:func:`.lower.lower`): the docstrings and input checks its kernels share written once
+    (:func:`_share_docs`, :func:`_share_checks`), the statuses they use imported from
+    ``status_module``."""
+    _share_docs(kernels)
+    checks = _share_checks(kernels)
     used = set().union(*(k["statuses"] for k in kernels))
-    text = render(
+    return render(
         "kernels.py.j2",
-        source=mod.source,
+        source=source,
         template="derive/templates/kernels.py.j2",
         depends=depends,
-        module_doc=mod.doc,
+        module_doc=module_doc,
         imports=imports,
         kernels=kernels,
+        checks=checks,
         versions=VERSIONS,
         statuses=[st["name"] for st in _STATUSES if st["name"] in used],
-        status_module=".status",
+        status_module=status_module,
     )
-    return wrap(text)
 
 
 def _index(specs: tuple[MapSpec, ...]) -> dict:

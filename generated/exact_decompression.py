@@ -7,10 +7,10 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
-#   runtime/exact/compiled.py sha256:06f337539a4bc386
-#   runtime/exact/dop853.py sha256:7cd47043700e95d7
-#   runtime/exact/jacobian.py sha256:c33ac507e7dd844f
-#   runtime/exact/kernels.py sha256:2bd1ad174519234a
+#   runtime/exact/compiled.py sha256:8cc8fb02e3177346
+#   runtime/exact/dop853.py sha256:efe02c4be3c1f068
+#   runtime/exact/jacobian.py sha256:1378f0df5cbd5a1d
+#   runtime/exact/kernels.py sha256:dfd9930d3dcc5fed
 #   runtime/exact/reference.py sha256:1a2d2771848fe471
 # ----------------------------------------------------------------------------------------------
 """Exact decompression half (bottom to liftoff, k_d; DOP853 integration) (report section 2.2): bottom ->

@@ -46,6 +46,61 @@ _NAN13 = (NAN,) * 13
 
 
 @njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, iterations,
+        tol):
+    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+        and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
+        and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
+        and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
+        > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, iterations,
+        tol):
+    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+        and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
+        and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
+        and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
+        == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+        and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
+    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+        and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+        and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+        <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol):
+    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+        and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+        and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0))
+        and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
+        <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
 def schwind_compression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
         iterations, tol):
     """Schwind and Koditschek's iteration, compression half, converging form (collocation in u, work form of
@@ -80,12 +135,8 @@ def schwind_compression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
     """
     # Total ops: 277
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -307,13 +358,8 @@ def schwind_decompression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
     """
     # Total ops: 285
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -504,39 +550,13 @@ def schwind_compression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 53
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -612,40 +632,13 @@ def schwind_decompression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 60
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -723,39 +716,13 @@ def schwind_compression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 115
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -872,40 +839,13 @@ def schwind_decompression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 121
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -1020,39 +960,13 @@ def schwind_compression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 180
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -1203,40 +1117,13 @@ def schwind_decompression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 187
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -1384,39 +1271,13 @@ def schwind_compression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 501
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -1699,40 +1560,13 @@ def schwind_decompression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
+    kernel).
     """
     # Total ops: 511
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -2044,14 +1878,7 @@ def iterative_stance_nodes_4_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2167,14 +1994,8 @@ def iterative_apex_return_nodes_4_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2247,49 +2068,12 @@ def iterative_stance_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 43
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2349,12 +2133,8 @@ def iterative_stance_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_held`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -2371,51 +2151,13 @@ def iterative_apex_return_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2465,12 +2207,8 @@ def iterative_apex_return_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_held`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -2487,49 +2225,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2587,13 +2288,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -2610,51 +2306,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2704,13 +2362,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2727,49 +2380,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2827,13 +2443,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -2850,51 +2461,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2944,13 +2517,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2967,49 +2535,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3067,13 +2598,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -3090,51 +2616,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3184,13 +2672,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -3207,49 +2690,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3307,13 +2753,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -3330,51 +2771,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3424,13 +2827,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -3447,49 +2845,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3547,13 +2908,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -3570,51 +2926,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3664,13 +2982,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -3687,49 +3000,12 @@ def iterative_stance_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3786,13 +3062,8 @@ def iterative_stance_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -3809,51 +3080,13 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3903,13 +3136,8 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -3926,49 +3154,12 @@ def iterative_stance_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4026,12 +3217,8 @@ def iterative_stance_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_4_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -4048,51 +3235,13 @@ def iterative_apex_return_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4142,13 +3291,8 @@ def iterative_apex_return_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_4_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_4_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_4_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
@@ -4165,49 +3309,12 @@ def iterative_stance_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4264,12 +3371,8 @@ def iterative_stance_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -4286,51 +3389,13 @@ def iterative_apex_return_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4380,13 +3445,8 @@ def iterative_apex_return_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -4403,49 +3463,12 @@ def iterative_stance_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 43
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4505,12 +3528,8 @@ def iterative_stance_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_held`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -4527,51 +3546,13 @@ def iterative_apex_return_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4621,12 +3602,8 @@ def iterative_apex_return_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_held`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -4643,49 +3620,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4743,13 +3683,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -4766,51 +3701,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4860,13 +3757,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -4883,49 +3775,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4983,13 +3838,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -5006,51 +3856,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5100,13 +3912,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -5123,49 +3930,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5223,13 +3993,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -5246,51 +4011,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5340,13 +4067,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -5363,49 +4085,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5463,13 +4148,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -5486,51 +4166,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5580,13 +4222,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -5603,49 +4240,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5703,13 +4303,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -5726,51 +4321,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5820,13 +4377,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -5843,49 +4395,12 @@ def iterative_stance_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5942,13 +4457,8 @@ def iterative_stance_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -5965,51 +4475,13 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6059,13 +4531,8 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -6082,49 +4549,12 @@ def iterative_stance_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6182,12 +4612,8 @@ def iterative_stance_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_1_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -6204,51 +4630,13 @@ def iterative_apex_return_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6298,13 +4686,8 @@ def iterative_apex_return_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_1_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_1_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_1_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
@@ -6321,49 +4704,12 @@ def iterative_stance_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6420,12 +4766,8 @@ def iterative_stance_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -6442,51 +4784,13 @@ def iterative_apex_return_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6536,13 +4840,8 @@ def iterative_apex_return_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -6559,49 +4858,12 @@ def iterative_stance_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 43
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6661,12 +4923,8 @@ def iterative_stance_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_held`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -6683,51 +4941,13 @@ def iterative_apex_return_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6777,12 +4997,8 @@ def iterative_apex_return_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_held`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -6799,49 +5015,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6899,13 +5078,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -6922,51 +5096,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7016,13 +5152,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -7039,49 +5170,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7139,13 +5233,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -7162,51 +5251,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7256,13 +5307,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -7279,49 +5325,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7379,13 +5388,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -7402,51 +5406,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7496,13 +5462,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -7519,49 +5480,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7619,13 +5543,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -7642,51 +5561,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7736,13 +5617,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -7759,49 +5635,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7859,13 +5698,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -7882,51 +5716,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7976,13 +5772,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -7999,49 +5790,12 @@ def iterative_stance_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8098,13 +5852,8 @@ def iterative_stance_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -8121,51 +5870,13 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8215,13 +5926,8 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -8238,49 +5944,12 @@ def iterative_stance_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8338,12 +6007,8 @@ def iterative_stance_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_2_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -8360,51 +6025,13 @@ def iterative_apex_return_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8454,13 +6081,8 @@ def iterative_apex_return_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_2_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_2_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_2_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
@@ -8477,49 +6099,12 @@ def iterative_stance_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8576,12 +6161,8 @@ def iterative_stance_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -8598,51 +6179,13 @@ def iterative_apex_return_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8692,13 +6235,8 @@ def iterative_apex_return_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -8715,49 +6253,12 @@ def iterative_stance_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 43
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8817,12 +6318,8 @@ def iterative_stance_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_held`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -8839,51 +6336,13 @@ def iterative_apex_return_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8933,12 +6392,8 @@ def iterative_apex_return_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_held`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -8955,49 +6410,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9055,13 +6473,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9078,51 +6491,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9172,13 +6547,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9195,49 +6565,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9295,13 +6628,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9318,51 +6646,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9412,13 +6702,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9435,49 +6720,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9535,13 +6783,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9558,51 +6801,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9652,13 +6857,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9675,49 +6875,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9775,13 +6938,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9798,51 +6956,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9892,13 +7012,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9915,49 +7030,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10015,13 +7093,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -10038,51 +7111,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10132,13 +7167,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -10155,49 +7185,12 @@ def iterative_stance_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10254,13 +7247,8 @@ def iterative_stance_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -10277,51 +7265,13 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10371,13 +7321,8 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -10394,49 +7339,12 @@ def iterative_stance_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10494,12 +7402,8 @@ def iterative_stance_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_3_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -10516,51 +7420,13 @@ def iterative_apex_return_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10610,13 +7476,8 @@ def iterative_apex_return_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_3_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_3_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_3_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],
@@ -10633,49 +7494,12 @@ def iterative_stance_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10732,12 +7556,8 @@ def iterative_stance_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -10754,51 +7574,13 @@ def iterative_apex_return_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10848,13 +7630,8 @@ def iterative_apex_return_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -10871,49 +7648,12 @@ def iterative_stance_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 43
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10973,12 +7713,8 @@ def iterative_stance_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_held`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -10995,51 +7731,13 @@ def iterative_apex_return_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11089,12 +7787,8 @@ def iterative_apex_return_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_held`: arguments, out and status as
+    :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -11111,49 +7805,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11211,13 +7868,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -11234,51 +7886,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11328,13 +7942,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -11351,49 +7960,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11451,13 +8023,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -11474,51 +8041,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11568,13 +8097,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -11591,49 +8115,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11691,13 +8178,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -11714,51 +8196,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11808,13 +8252,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -11831,49 +8270,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11931,13 +8333,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -11954,51 +8351,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -12048,13 +8407,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -12071,49 +8425,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -12171,13 +8488,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -12194,51 +8506,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -12288,13 +8562,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -12311,49 +8580,12 @@ def iterative_stance_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -12410,13 +8642,8 @@ def iterative_stance_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -12433,51 +8660,13 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -12527,13 +8716,8 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -12550,49 +8734,12 @@ def iterative_stance_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead of
-    (33); N Gauss-Legendre nodes in u (N = 1 is the mean value (41)); bottom leg length from
-    p_r_td^2 = 2 m int F_r.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 8
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN11 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -12650,12 +8797,8 @@ def iterative_stance_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 11); the columns are the outputs of
-    :func:`iterative_stance_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_stance_nodes_6_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_stance_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -12672,51 +8815,13 @@ def iterative_apex_return_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN13 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -12766,13 +8871,8 @@ def iterative_apex_return_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_nodes_6_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`iterative_apex_return_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_apex_return_nodes_6_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_apex_return_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_nodes_6_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],

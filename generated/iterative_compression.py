@@ -14,7 +14,7 @@
 #   gravity_type3.py sha256:ce520639bb1c9138
 #   gravity_type4.py sha256:8d3a969bccac09bf
 #   gravity_type5.py sha256:f4510b5010050beb
-#   iterative.py sha256:39d64192ce130969
+#   iterative.py sha256:ef705fb345ff08fc
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -40,6 +40,18 @@ from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
 _NAN6 = (NAN,) * 6
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+        and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
+        > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -74,12 +86,7 @@ def iterative_compression_nodes_4_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -133,36 +140,12 @@ def iterative_compression_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -197,12 +180,8 @@ def iterative_compression_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_held`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -218,36 +197,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -280,13 +235,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -302,36 +252,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -364,13 +290,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -386,36 +307,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -448,13 +345,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -470,36 +362,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -532,13 +400,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -554,36 +417,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -616,13 +455,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -638,36 +472,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -699,13 +509,8 @@ def iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -721,36 +526,12 @@ def iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -783,13 +564,8 @@ def iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_4_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -805,36 +581,12 @@ def iterative_compression_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -866,13 +618,8 @@ def iterative_compression_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -888,36 +635,12 @@ def iterative_compression_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -952,12 +675,8 @@ def iterative_compression_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_held`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -973,36 +692,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -1035,13 +730,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1057,36 +747,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -1119,13 +785,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1141,36 +802,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -1203,13 +840,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1225,36 +857,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -1287,13 +895,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1309,36 +912,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -1371,13 +950,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1393,36 +967,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -1454,13 +1004,8 @@ def iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1476,36 +1021,12 @@ def iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -1538,13 +1059,8 @@ def iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_1_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -1560,36 +1076,12 @@ def iterative_compression_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -1621,13 +1113,8 @@ def iterative_compression_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -1643,36 +1130,12 @@ def iterative_compression_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -1707,12 +1170,8 @@ def iterative_compression_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_held`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -1728,36 +1187,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -1790,13 +1225,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1812,36 +1242,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -1874,13 +1280,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1896,36 +1297,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -1958,13 +1335,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1980,36 +1352,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -2042,13 +1390,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2064,36 +1407,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -2126,13 +1445,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2148,36 +1462,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -2209,13 +1499,8 @@ def iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2231,36 +1516,12 @@ def iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -2293,13 +1554,8 @@ def iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_2_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -2315,36 +1571,12 @@ def iterative_compression_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -2376,13 +1608,8 @@ def iterative_compression_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -2398,36 +1625,12 @@ def iterative_compression_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -2462,12 +1665,8 @@ def iterative_compression_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_held`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -2483,36 +1682,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -2545,13 +1720,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2567,36 +1737,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -2629,13 +1775,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2651,36 +1792,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -2713,13 +1830,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2735,36 +1847,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -2797,13 +1885,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2819,36 +1902,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -2881,13 +1940,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2903,36 +1957,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -2964,13 +1994,8 @@ def iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2986,36 +2011,12 @@ def iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -3048,13 +2049,8 @@ def iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_3_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -3070,36 +2066,12 @@ def iterative_compression_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -3131,13 +2103,8 @@ def iterative_compression_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -3153,36 +2120,12 @@ def iterative_compression_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -3217,12 +2160,8 @@ def iterative_compression_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_held`: arguments, out and status as
+    :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -3238,36 +2177,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -3300,13 +2215,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3322,36 +2232,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -3384,13 +2270,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3406,36 +2287,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -3468,13 +2325,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3490,36 +2342,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -3552,13 +2380,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3574,36 +2397,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -3636,13 +2435,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3658,36 +2452,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -3719,13 +2489,8 @@ def iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3741,36 +2506,12 @@ def iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
-            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
-            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -3803,13 +2544,8 @@ def iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_compression_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 6); the columns are the outputs of
-    :func:`iterative_compression_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_compression_nodes_6_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_compression_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],

@@ -6,15 +6,15 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:9b179765a87a1082
-#   geyer_vs_jacobian.py sha256:ce3275fe2a45ba70
-#   gravity_type0_jacobian.py sha256:eb43f86438df132f
-#   gravity_type1_jacobian.py sha256:eafe299fba0e819c
-#   gravity_type2_jacobian.py sha256:f96b8ec65e3b4ad4
-#   gravity_type3_jacobian.py sha256:9b04d2a5368d3c46
-#   gravity_type4_jacobian.py sha256:9896e7ba0d4d662e
-#   gravity_type5_jacobian.py sha256:0a0aa41f63c3b0e3
+#   flight_jacobian.py sha256:771c593f135b91d2
+#   geyer_jacobian.py sha256:ee22e292aadbecf4
+#   geyer_vs_jacobian.py sha256:5dbda8f251d8b5ae
+#   gravity_type0_jacobian.py sha256:a64ce5867ac287ba
+#   gravity_type1_jacobian.py sha256:0e1ebc1b92b0959d
+#   gravity_type2_jacobian.py sha256:24319b58be9e307c
+#   gravity_type3_jacobian.py sha256:528071c82af16cbd
+#   gravity_type4_jacobian.py sha256:072027d2a2926da4
+#   gravity_type5_jacobian.py sha256:ac195c3c1fbd33ad
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -137,6 +137,79 @@ def _store_row_13_91(out, status, i, res):
 
 
 @njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, iterations,
+        tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1, d_guess_q_th__1,
+        d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2, d_guess_q_r__3, d_guess_q_th__3,
+        d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4, d_guess_q_thd__4):
+    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+        and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
+        and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
+        and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
+        > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd, iterations,
+        tol):
+    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+        and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
+        and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
+        and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
+        == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
+        and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
+    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+        and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+        and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
+        <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+        iterations, tol):
+    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+        and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+        and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex >= 0.0))
+        and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
+        <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd, iterations,
+        tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1, d_guess_q_th__1,
+        d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2, d_guess_q_r__3, d_guess_q_th__3,
+        d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4, d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5,
+        d_guess_q_thd__5):
+    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+        and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
+        and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
+        and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
+        > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
 def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th,
         guess_q_thd, iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
         d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2, d_guess_q_r__3,
@@ -194,12 +267,11 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
     """
     # Total ops: 1022
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4):
         return _NAN36 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((41, 5))
@@ -859,13 +931,8 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
     """
     # Total ops: 805
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((35, 6))
@@ -1619,14 +1686,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1970,14 +2030,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer(b_y_apex, b_xd_apex, q_t
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2214,50 +2268,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 122
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2363,14 +2379,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_held`: arguments, out and status
+    as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -2386,56 +2396,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2479,14 +2446,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_held`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2673,50 +2634,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2788,14 +2711,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -2811,56 +2728,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2904,14 +2778,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -2927,50 +2795,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3042,14 +2872,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3065,56 +2889,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3158,14 +2939,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -3181,50 +2956,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3296,14 +3033,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3319,56 +3050,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3412,14 +3100,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -3435,50 +3117,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3550,14 +3194,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3573,56 +3211,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3666,14 +3261,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -3689,50 +3278,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3804,14 +3355,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3827,56 +3372,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3920,14 +3422,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -3943,50 +3439,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4058,14 +3516,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -4081,56 +3533,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4174,14 +3583,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -4251,12 +3654,11 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
     """
     # Total ops: 1022
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5, d_guess_q_thd__5):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((41, 6))
@@ -5069,50 +4471,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5189,14 +4553,8 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -5212,56 +4570,13 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5305,14 +4620,8 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -5331,59 +4640,16 @@ def schwind_compression_nodes_1_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
+    the same kernel).
     """
     # Total ops: 351
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4):
         return _NAN36 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -5606,45 +4872,14 @@ def schwind_decompression_nodes_1_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_th, q_thd,
-            k_d, guess_q_th, guess_q_thd (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
+    same kernel).
     """
     # Total ops: 306
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -5868,50 +5103,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5981,14 +5178,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -6004,56 +5195,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6097,14 +5245,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -6120,50 +5262,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 122
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6269,14 +5373,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_held`: arguments, out and status
+    as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -6292,56 +5390,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6385,14 +5440,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_held`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -6408,50 +5457,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6523,14 +5534,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -6546,56 +5551,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6639,14 +5601,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -6662,50 +5618,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6777,14 +5695,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -6800,56 +5712,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6893,14 +5762,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -6916,50 +5779,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7031,14 +5856,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -7054,56 +5873,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7147,14 +5923,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -7170,50 +5940,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7285,14 +6017,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -7308,56 +6034,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7401,14 +6084,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -7424,50 +6101,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7539,14 +6178,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -7562,56 +6195,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7655,14 +6245,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -7678,50 +6262,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7793,14 +6339,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -7816,56 +6356,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7909,14 +6406,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -7936,62 +6427,16 @@ def schwind_compression_nodes_1_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-        d_guess_q_r__5: direction 5: its component along guess_q_r
-        d_guess_q_th__5: direction 5: its component along guess_q_th
-        d_guess_q_thd__5: direction 5: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
+    the same kernel).
     """
     # Total ops: 382
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5, d_guess_q_thd__5):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -8230,50 +6675,12 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8350,14 +6757,8 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_1_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -8373,56 +6774,13 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8466,14 +6824,8 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -8492,59 +6844,16 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
+    the same kernel).
     """
     # Total ops: 756
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4):
         return _NAN36 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -8908,45 +7217,14 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_th, q_thd,
-            k_d, guess_q_th, guess_q_thd (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
+    same kernel).
     """
     # Total ops: 711
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
@@ -9310,50 +7588,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9423,14 +7663,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9446,56 +7680,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9539,14 +7730,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9562,50 +7747,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 122
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9711,14 +7858,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_held`: arguments, out and status
+    as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -9734,56 +7875,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9827,14 +7925,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_held`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -9850,50 +7942,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9965,14 +8019,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -9988,56 +8036,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10081,14 +8086,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -10104,50 +8103,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10219,14 +8180,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -10242,56 +8197,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10335,14 +8247,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -10358,50 +8264,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10473,14 +8341,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -10496,56 +8358,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10589,14 +8408,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -10612,50 +8425,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10727,14 +8502,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -10750,56 +8519,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -10843,14 +8569,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -10866,50 +8586,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -10981,14 +8663,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -11004,56 +8680,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11097,14 +8730,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -11120,50 +8747,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11235,14 +8824,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -11258,56 +8841,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -11351,14 +8891,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -11378,62 +8912,16 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-        d_guess_q_r__5: direction 5: its component along guess_q_r
-        d_guess_q_th__5: direction 5: its component along guess_q_th
-        d_guess_q_thd__5: direction 5: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
+    the same kernel).
     """
     # Total ops: 837
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5, d_guess_q_thd__5):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
@@ -11826,50 +9314,12 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -11946,14 +9396,8 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_2_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -11969,56 +9413,13 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -12062,14 +9463,8 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -12088,59 +9483,16 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
+    the same kernel).
     """
     # Total ops: 716
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4):
         return _NAN36 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((34, 5))
@@ -12637,45 +9989,14 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_th, q_thd,
-            k_d, guess_q_th, guess_q_thd (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
+    same kernel).
     """
     # Total ops: 556
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((29, 6))
@@ -13112,50 +10433,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -13225,14 +10508,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -13248,56 +10525,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -13341,14 +10575,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -13364,50 +10592,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 122
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -13513,14 +10703,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_held`: arguments, out and status
+    as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -13536,56 +10720,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -13629,14 +10770,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_held`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -13652,50 +10787,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -13767,14 +10864,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -13790,56 +10881,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -13883,14 +10931,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -13906,50 +10948,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -14021,14 +11025,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -14044,56 +11042,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -14137,14 +11092,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -14160,50 +11109,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -14275,14 +11186,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -14298,56 +11203,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -14391,14 +11253,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -14414,50 +11270,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -14529,14 +11347,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -14552,56 +11364,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -14645,14 +11414,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -14668,50 +11431,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -14783,14 +11508,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -14806,56 +11525,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -14899,14 +11575,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -14922,50 +11592,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -15037,14 +11669,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -15060,56 +11686,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -15153,14 +11736,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -15180,62 +11757,16 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-        d_guess_q_r__5: direction 5: its component along guess_q_r
-        d_guess_q_th__5: direction 5: its component along guess_q_th
-        d_guess_q_thd__5: direction 5: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
+    the same kernel).
     """
     # Total ops: 716
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5, d_guess_q_thd__5):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((34, 6))
@@ -15735,50 +12266,12 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -15855,14 +12348,8 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_3_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -15878,56 +12365,13 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -15971,14 +12415,8 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -15997,59 +12435,16 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
+    the same kernel).
     """
     # Total ops: 1740
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4):
         return _NAN36 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((55, 5))
@@ -16937,45 +13332,14 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: bottom state: leg length [m]
-        q_rd: bottom state: leg length rate [m/s]
-        q_th: bottom state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: bottom state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        guess_q_th: zeroth iterate's liftoff q_th
-        guess_q_thd: zeroth iterate's liftoff q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_half: time of the decompression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_th, q_thd,
-            k_d, guess_q_th, guess_q_thd (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
+    same kernel).
     """
     # Total ops: 1394
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d) and math.isfinite(g_s)
-            and math.isfinite(q_r_lo) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess_q_th, guess_q_thd,
+            iterations, tol):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((47, 6))
@@ -17749,50 +14113,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -17862,14 +14188,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -17885,56 +14205,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -17978,14 +14255,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -18001,50 +14272,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 122
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -18150,14 +14383,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_held`: arguments, out and status
+    as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
@@ -18173,56 +14400,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -18266,14 +14450,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_held`: arguments, out and
+    status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -18289,50 +14467,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -18404,14 +14544,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -18427,56 +14561,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -18520,14 +14611,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -18543,50 +14628,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -18658,14 +14705,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -18681,56 +14722,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -18774,14 +14772,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -18797,50 +14789,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -18912,14 +14866,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -18935,56 +14883,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -19028,14 +14933,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -19051,50 +14950,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -19166,14 +15027,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -19189,56 +15044,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -19282,14 +15094,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -19305,50 +15111,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -19420,14 +15188,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -19443,56 +15205,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -19536,14 +15255,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -19559,50 +15272,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -19674,14 +15349,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -19697,56 +15366,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -19790,14 +15416,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_a
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -19817,62 +15437,16 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r: touchdown state: leg length [m]
-        q_rd: touchdown state: leg length rate [m/s]
-        q_th: touchdown state: leg angle from the vertical, counterclockwise positive [rad]
-        q_thd: touchdown state: leg angle rate [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        guess_q_r: zeroth iterate's bottom q_r
-        guess_q_th: zeroth iterate's bottom q_th
-        guess_q_thd: zeroth iterate's bottom q_thd
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-        d_guess_q_r__0: direction 0: its component along guess_q_r
-        d_guess_q_th__0: direction 0: its component along guess_q_th
-        d_guess_q_thd__0: direction 0: its component along guess_q_thd
-        d_guess_q_r__1: direction 1: its component along guess_q_r
-        d_guess_q_th__1: direction 1: its component along guess_q_th
-        d_guess_q_thd__1: direction 1: its component along guess_q_thd
-        d_guess_q_r__2: direction 2: its component along guess_q_r
-        d_guess_q_th__2: direction 2: its component along guess_q_th
-        d_guess_q_thd__2: direction 2: its component along guess_q_thd
-        d_guess_q_r__3: direction 3: its component along guess_q_r
-        d_guess_q_th__3: direction 3: its component along guess_q_th
-        d_guess_q_thd__3: direction 3: its component along guess_q_thd
-        d_guess_q_r__4: direction 4: its component along guess_q_r
-        d_guess_q_th__4: direction 4: its component along guess_q_th
-        d_guess_q_thd__4: direction 4: its component along guess_q_thd
-        d_guess_q_r__5: direction 5: its component along guess_q_r
-        d_guess_q_th__5: direction 5: its component along guess_q_th
-        d_guess_q_thd__5: direction 5: its component along guess_q_thd
-
-    Returns a tuple:
-        t_half: time of the compression half [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run [1]
-        d_<output>__<direction>: d output / d direction for each output above and direction 0, 1, 2, 3, 4, 5
-            (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
+    the same kernel).
     """
     # Total ops: 1740
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-            and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c) and math.isfinite(g_s)
-            and math.isfinite(guess_q_r) and math.isfinite(guess_q_th) and math.isfinite(guess_q_thd)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-            > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, guess_q_th, guess_q_thd,
+            iterations, tol, d_guess_q_r__0, d_guess_q_th__0, d_guess_q_thd__0, d_guess_q_r__1,
+            d_guess_q_th__1, d_guess_q_thd__1, d_guess_q_r__2, d_guess_q_th__2, d_guess_q_thd__2,
+            d_guess_q_r__3, d_guess_q_th__3, d_guess_q_thd__3, d_guess_q_r__4, d_guess_q_th__4,
+            d_guess_q_thd__4, d_guess_q_r__5, d_guess_q_th__5, d_guess_q_thd__5):
         return _NAN42 + (STATUS_INVALID_INPUT,)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((55, 6))
@@ -20763,50 +16337,12 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo)
-            and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-            > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-            == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-            and (tol <= 1.0))):
+    if not _inputs_valid_2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol):
         return _NAN77 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -20883,14 +16419,8 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_stance_jacobian_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
-    :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    """Parallel batch form of :func:`iterative_stance_jacobian_nodes_6_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -20906,56 +16436,13 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        iterations: option iterations: Picard passes per half-stance (0 = the zeroth iterate) in [0, 100]
-        tol: option tol: stop when no node value moves by more than tol (relative; 0 = run every pass) in [0,
-            1]
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        passes: Picard passes run (the larger of the two halves) [1]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol) and ((b_y_apex
-            >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
-            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
+    if not _inputs_valid_3(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            iterations, tol):
         return _NAN91 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -20999,14 +16486,8 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    """Parallel batch form of :func:`iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],

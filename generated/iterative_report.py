@@ -44,6 +44,37 @@ _NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations,
+        bottom_length):
+    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+        and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0))
+        and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+        == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+        <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant,
+        iterations, bottom_length):
+    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+        and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+        and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+        and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+        > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+        and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+        or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
 def iterative_report_stance_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
         variant, iterations, bottom_length):
     """Iterative stance map (Schwind and Koditschek, as printed): touchdown state -> bottom and liftoff
@@ -88,14 +119,8 @@ def iterative_report_stance_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -373,16 +398,8 @@ def iterative_report_apex_return_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, grou
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -455,49 +472,13 @@ def iterative_report_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 307
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -718,12 +699,8 @@ def iterative_report_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_held`: arguments, out and status as
+    :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c,
@@ -741,53 +718,13 @@ def iterative_report_apex_return_zeroth_held(b_y_apex, b_xd_apex, q_th_td, groun
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -835,13 +772,8 @@ def iterative_report_apex_return_zeroth_held(b_y_apex, b_xd_apex, q_th_td, groun
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s,
         g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_held`: arguments, out and status as
+    :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m,
@@ -860,49 +792,13 @@ def iterative_report_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1121,13 +1017,8 @@ def iterative_report_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type0`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -1145,53 +1036,13 @@ def iterative_report_apex_return_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1239,14 +1090,8 @@ def iterative_report_apex_return_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -1265,49 +1110,13 @@ def iterative_report_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1526,13 +1335,8 @@ def iterative_report_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type1`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -1550,53 +1354,13 @@ def iterative_report_apex_return_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1644,14 +1408,8 @@ def iterative_report_apex_return_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -1670,49 +1428,13 @@ def iterative_report_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1931,13 +1653,8 @@ def iterative_report_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type2`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -1955,53 +1672,13 @@ def iterative_report_apex_return_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2049,14 +1726,8 @@ def iterative_report_apex_return_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2075,49 +1746,13 @@ def iterative_report_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2336,13 +1971,8 @@ def iterative_report_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type3`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -2360,53 +1990,13 @@ def iterative_report_apex_return_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2454,14 +2044,8 @@ def iterative_report_apex_return_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2480,49 +2064,13 @@ def iterative_report_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2741,13 +2289,8 @@ def iterative_report_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type4`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -2765,53 +2308,13 @@ def iterative_report_apex_return_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2859,14 +2362,8 @@ def iterative_report_apex_return_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2885,49 +2382,13 @@ def iterative_report_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3145,13 +2606,8 @@ def iterative_report_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_gravity_type5`: arguments, out and status
+    as :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -3169,53 +2625,13 @@ def iterative_report_apex_return_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3263,14 +2679,8 @@ def iterative_report_apex_return_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -3289,49 +2699,13 @@ def iterative_report_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, 
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    (42)-(44)/(124)-(126)/(139)-(141) or (133)-(135)/(148)-(150) with (134)/(149) keeping p_th;
-    liftoff p_r = H^{-1} at q_r_lo ((45) corrected); E_ba of (98). IMAGINARY_MOMENTUM wherever
-    H^{-1} of an iterate is imaginary.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
+    the same kernel).
     """
     # Total ops: 272
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN10 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3550,12 +2924,8 @@ def iterative_report_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`iterative_report_stance_zeroth_geyer_vs`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_report_stance_zeroth_geyer_vs`: arguments, out and status as
+    :func:`iterative_report_stance_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -3573,53 +2943,13 @@ def iterative_report_apex_return_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, g
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 3
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN12 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3667,14 +2997,8 @@ def iterative_report_apex_return_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, g
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d,
         g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`iterative_report_apex_return_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_apex_return_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_report_apex_return_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i],

@@ -41,6 +41,19 @@ _NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, bottom_length):
+    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+        and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+        < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant
+        == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
         iterations, bottom_length):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
@@ -72,14 +85,8 @@ def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -227,38 +234,13 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 161
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -388,12 +370,8 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_held`, in order) and its status code to ``status[i]`` (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_held`: arguments, out and status as
+    :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
@@ -409,38 +387,13 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -568,13 +521,8 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type0`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type0`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -590,38 +538,13 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -749,13 +672,8 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type1`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type1`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -771,38 +689,13 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -930,13 +823,8 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type2`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type2`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -952,38 +840,13 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1111,13 +974,8 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type3`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type3`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1133,38 +991,13 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1292,13 +1125,8 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type4`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type4`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1314,38 +1142,13 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1472,13 +1275,8 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_gravity_type5`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type5`: arguments, out and
+    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -1494,38 +1292,13 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_half: time from the start state to the end state [s]
-        end_q_r: leg length [m]
-        end_q_rd: leg length rate [m/s]
-        end_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
+    of the same kernel).
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
+            bottom_length):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1653,13 +1426,8 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
         variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
+    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer_vs`: arguments, out and status
+    as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_compression_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,

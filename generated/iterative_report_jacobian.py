@@ -6,15 +6,15 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:9b179765a87a1082
-#   geyer_vs_jacobian.py sha256:ce3275fe2a45ba70
-#   gravity_type0_jacobian.py sha256:eb43f86438df132f
-#   gravity_type1_jacobian.py sha256:eafe299fba0e819c
-#   gravity_type2_jacobian.py sha256:f96b8ec65e3b4ad4
-#   gravity_type3_jacobian.py sha256:9b04d2a5368d3c46
-#   gravity_type4_jacobian.py sha256:9896e7ba0d4d662e
-#   gravity_type5_jacobian.py sha256:0a0aa41f63c3b0e3
+#   flight_jacobian.py sha256:771c593f135b91d2
+#   geyer_jacobian.py sha256:ee22e292aadbecf4
+#   geyer_vs_jacobian.py sha256:5dbda8f251d8b5ae
+#   gravity_type0_jacobian.py sha256:a64ce5867ac287ba
+#   gravity_type1_jacobian.py sha256:0e1ebc1b92b0959d
+#   gravity_type2_jacobian.py sha256:24319b58be9e307c
+#   gravity_type3_jacobian.py sha256:528071c82af16cbd
+#   gravity_type4_jacobian.py sha256:072027d2a2926da4
+#   gravity_type5_jacobian.py sha256:ac195c3c1fbd33ad
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -128,6 +128,37 @@ def _store_row_12_84(out, status, i, res):
 
 
 @njit(cache=True, error_model="numpy")
+def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations,
+        bottom_length):
+    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+        and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0))
+        and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
+        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
+        == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
+        <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
+def _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant,
+        iterations, bottom_length):
+    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
+    domain."""
+    return (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+        and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+        and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+        and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
+        > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
+        and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+        or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+        and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
+
+
+@njit(cache=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, variant, iterations, bottom_length):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
@@ -173,14 +204,8 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 1510
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1243,16 +1268,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1322,50 +1339,13 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1624
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2192,14 +2172,8 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d,
         g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_held`: arguments, out and status
+    as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
@@ -2217,58 +2191,13 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2312,15 +2241,8 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_held_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_held`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_held`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_held`: arguments, out and
+    status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
@@ -2338,50 +2260,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3179,14 +3064,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type0`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -3204,58 +3083,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3299,15 +3133,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type0_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
@@ -3326,50 +3153,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4167,14 +3957,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type1`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -4192,58 +3976,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4287,15 +4026,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type1_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
@@ -4314,50 +4046,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5155,14 +4850,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type2`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -5180,58 +4869,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5275,15 +4919,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type2_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
@@ -5302,50 +4939,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6143,14 +5743,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type3`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -6168,58 +5762,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6263,15 +5812,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type3_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
@@ -6290,50 +5832,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7131,14 +6636,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type4`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -7156,58 +6655,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7251,15 +6705,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type4_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
@@ -7278,50 +6725,13 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8119,14 +7529,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0,
         k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_gravity_type5`: arguments, out
+    and status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -8144,58 +7548,13 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -8239,15 +7598,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type5_batch(b_y_apex, b_xd_apex, q_th_td, ground, m,
         l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5`: arguments,
+    out and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
@@ -8266,50 +7618,13 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_rd_td: touchdown leg length rate q_rd_td [m/s] (negative: compressing)
-        q_th_td: touchdown leg angle q_th_td [rad], |q_th_td| < pi/2
-        q_thd_td: touchdown leg angle rate q_thd_td [rad/s]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        t_bottom: time from touchdown to the bottom [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        bottom_q_r: leg length [m]
-        bottom_q_rd: leg length rate [m/s]
-        bottom_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        bottom_q_thd: leg angle rate [rad/s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
-            q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
+    choice of the same kernel).
     """
     # Total ops: 1620
     # inputs: finite and inside their domains
-    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
-            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
-            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
+    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
+            iterations, bottom_length):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -9140,14 +8455,8 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
         k_d, g_s, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`iterative_report_stance_jacobian_zeroth_geyer_vs`, in order) and its status code to ``status[i]``
-    (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    """Parallel batch form of :func:`iterative_report_stance_jacobian_zeroth_geyer_vs`: arguments, out and
+    status as :func:`iterative_report_stance_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
@@ -9165,58 +8474,13 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
-    direction in one pass; through an iteration, of the iterate it stops at.
-
-    Arguments:
-        b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
-        b_xd_apex: horizontal apex speed, signed: negative runs toward -x (the mirror image of running toward
-            +x, with the touchdown angle mirrored too); 0 is a hop in place b_xd_apex [m/s]
-        q_th_td: touchdown leg angle from the vertical, counterclockwise positive q_th_td [rad]
-        ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
-            [m]
-        m: body mass m [kg], > 0
-        l0: rest leg length l0 [m], > 0
-        k_c: leg stiffness while compressing k_c [N/m], > 0
-        k_d: leg stiffness after the bottom k_d [N/m], > 0
-        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
-        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
-        q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
-        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
-        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
-        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
-        bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
-            5.2, closing estimates): 0 = zeroth, 1 = eq153
-
-    Returns a tuple:
-        apex_height: next apex height above the ground the foot stood on [m]
-        apex_speed: next apex horizontal speed (signed) [m/s]
-        t_descent: flight time from the apex to touchdown [s]
-        t_stance: stance time, touchdown to liftoff [s]
-        t_ascent: flight time from liftoff to the next apex [s]
-        liftoff_q_r: leg length [m]
-        liftoff_q_rd: leg length rate [m/s]
-        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
-        liftoff_q_thd: leg angle rate [rad/s]
-        step_length: horizontal distance from the apex to the next apex (signed) [m]
-        foot_x: horizontal position of the foot at touchdown relative to the apex [m]
-        foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
-            q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
+    (another choice of the same kernel).
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
-            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
-            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
-            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
-            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
-            == 1.0))):
+    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
+            variant, iterations, bottom_length):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -9260,15 +8524,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
 @njit(cache=True, parallel=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_geyer_vs_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0,
         k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
-    bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs`, in order) and its status code to
-    ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    """Parallel batch form of :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs`: arguments, out
+    and status as :func:`iterative_report_apex_return_jacobian_zeroth_geyer_batch`'s.
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
