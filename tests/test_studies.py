@@ -109,6 +109,17 @@ def test_report_paths():
     assert runner.report_path(one, by_name["accuracy"], all_maps=False) == one
 
 
+def test_run_names_chosen_maps_reports_by_the_out_stem_or_plainly(tmp_path, monkeypatch):
+    """runner.run: chosen maps' reports are ``<study>_<stem>.md`` beside ``out``, or ``<study>.md``
+    with ``plain_names=True`` (``slipmaps report --quick``); the writer is a recorder (no measuring)."""
+    calls = []
+    monkeypatch.setattr(runner, "write", lambda s, path, show=None: calls.append(Path(path).name) or [path])
+    runner.run(tmp_path / "one.md", ["iterative"])
+    runner.run(tmp_path / "accuracy.md", ["iterative"], plain_names=True)
+    names = ["convergence", "stiffness", "stability"]
+    assert calls == ["one.md", *[f"{n}_one.md" for n in names], "accuracy.md", *[f"{n}.md" for n in names]]
+
+
 # ----------------------------------------------------------------------------------------------
 # The maps each study runs come from the roles in the index
 # ----------------------------------------------------------------------------------------------

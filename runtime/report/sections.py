@@ -28,11 +28,9 @@ runtime/cli/report.py). Needs Jinja2 (the ``derive``, ``docs`` or ``test`` extra
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 
-import numpy as np
-
+from ..studies.accuracy_report import error_heatmaps
 from .facts import CLAIMS, TABLES, MissingData, Numbers, claims, need
 
 __all__ = [
@@ -155,28 +153,15 @@ def figure(records: dict, path: str | Path) -> Path:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.colors import LogNorm
 
     heat = need(records, "accuracy")["figure"]
-    shown = list(heat["apex_error"])
-    speeds, angles = np.array(heat["speeds"]), np.array(heat["angles"])
-    grids = {m: np.array(heat["apex_error"][m], dtype=float) for m in shown}
-    finite = np.concatenate([g[np.isfinite(g) & (g > 0)] for g in grids.values()])
-    lo, hi = math.floor(math.log10(finite.min())), math.ceil(math.log10(finite.max()))
-    norm = LogNorm(vmin=10.0**lo, vmax=10.0**hi)
-    cols = min(len(shown), 3)
-    rows = -(-len(shown) // cols)
+    shown = len(heat["apex_error"])
+    cols = min(shown, 3)
+    rows = -(-shown // cols)
     size = (4.2 * cols, 3.6 * rows)
     fig, axes = plt.subplots(rows, cols, figsize=size, squeeze=False, layout="constrained")
-    for ax in axes.flat[len(shown) :]:
-        ax.set_visible(False)
-    for ax, m in zip(axes.flat, shown, strict=False):
-        cells = np.ma.masked_invalid(grids[m])
-        im = ax.pcolormesh(speeds, angles, cells, norm=norm, cmap="viridis", shading="nearest")
-        ax.set_title(m, fontsize=10)
-        ax.set_xlabel("apex speed [m/s]")
-        ax.set_ylabel("touchdown angle q_th_td [rad]")
-    fig.colorbar(im, ax=axes, label="next-apex error |(dh, dv)| / |(h, v)| (white: a side fails)")
+    mesh = error_heatmaps(heat, axes)  # the color scale: the decades of the errors drawn
+    fig.colorbar(mesh, ax=axes, label="next-apex error |(dh, dv)| / |(h, v)| (white: a side fails)")
     fig.suptitle(f"{heat['grid']}, apex height {heat['apex_height']:g} m", fontsize=11)
     fig.savefig(path, dpi=90)
     plt.close(fig)

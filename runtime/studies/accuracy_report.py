@@ -41,6 +41,7 @@ __all__ = [
     "yu_target_stats",
     "meets_yu_target",
     "render_markdown",
+    "error_heatmaps",
     "figure",
 ]
 
@@ -340,6 +341,35 @@ def _nan(x) -> float:
     return math.nan if x is None else float(x)
 
 
+def error_heatmaps(heat: dict, axes, bounds: tuple[float, float] | None = None, every_ylabel: bool = True):
+    """Draw the heatmaps of ``heat`` (a record's ``figure``, :func:`figure_record`) onto ``axes``, one
+    map per axes in turn: its next-apex error over apex speed and touchdown angle (white where a side
+    fails), titled with its label; axes left over are hidden. One logarithmic color scale (viridis)
+    for all, from ``bounds`` or by default from the decades that hold every positive error drawn;
+    the touchdown-angle label on every panel or (``every_ylabel=False``, panels sharing y) the
+    first. Returns the last panel's mesh, whose norm and colormap the colorbar needs."""
+    from matplotlib.colors import LogNorm
+
+    axes = list(np.atleast_1d(axes).flat)
+    speeds, angles = np.array(heat["speeds"]), np.array(heat["angles"])
+    grids = {label: np.array(errors, dtype=float) for label, errors in heat["apex_error"].items()}
+    if bounds is None:
+        finite = np.concatenate([g[np.isfinite(g) & (g > 0)] for g in grids.values()])
+        bounds = 10.0 ** math.floor(math.log10(finite.min())), 10.0 ** math.ceil(math.log10(finite.max()))
+    norm = LogNorm(vmin=bounds[0], vmax=bounds[1])
+    for ax in axes[len(grids) :]:
+        ax.set_visible(False)
+    for i, (ax, (label, grid)) in enumerate(zip(axes, grids.items(), strict=False)):
+        mesh = ax.pcolormesh(
+            speeds, angles, np.ma.masked_invalid(grid), norm=norm, cmap="viridis", shading="nearest"
+        )
+        ax.set_title(label, fontsize=10)
+        ax.set_xlabel("apex speed [m/s]")
+        if every_ylabel or i == 0:
+            ax.set_ylabel("touchdown angle q_th_td [rad]")
+    return mesh
+
+
 def figure(record: dict, path: str | Path) -> Path:
     """Next-apex error against touchdown angle and speed (heatmaps of the record's ``figure``) and,
     per angle of attack, the mean on the Yu protocol of every map at its defaults."""
@@ -347,25 +377,15 @@ def figure(record: dict, path: str | Path) -> Path:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.colors import LogNorm
 
     heat = record["figure"]
     yu = _grid(record["grids"], "yu")
     shown = list(heat["apex_error"])
     fig = plt.figure(figsize=(12, 9), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=(1.0, 1.0))
-    speeds, angles = np.array(heat["speeds"]), np.array(heat["angles"])
-    norm = LogNorm(vmin=1e-6, vmax=0.3)
     axes = top.subplots(1, len(shown), sharey=True)
-    for ax, label in zip(np.atleast_1d(axes), shown, strict=True):
-        grid = np.array(heat["apex_error"][label], dtype=float)
-        im = ax.pcolormesh(
-            speeds, angles, np.ma.masked_invalid(grid), norm=norm, cmap="viridis", shading="nearest"
-        )
-        ax.set_title(label, fontsize=10)
-        ax.set_xlabel("apex speed [m/s]")
-    np.atleast_1d(axes)[0].set_ylabel("touchdown angle q_th_td [rad]")
-    top.colorbar(im, ax=axes, label="next-apex error (white: a side fails)")
+    mesh = error_heatmaps(heat, axes, bounds=(1e-6, 0.3), every_ylabel=False)
+    top.colorbar(mesh, ax=axes, label="next-apex error (white: a side fails)")
     top.suptitle(
         f"{heat['grid']}, apex height {heat['apex_height']:g} m: next-apex error |(dh, dv)| / |(h, v)|",
         fontsize=11,

@@ -60,13 +60,18 @@ def report_path(out: str | Path, study: Study, all_maps: bool = True) -> Path:
     return md.with_name(f"{study.name}.md" if all_maps else f"{study.name}_{md.stem}.md")
 
 
-def run(out: str | Path, map_names=None, show_progress: bool | None = None) -> list[Path]:
+def run(
+    out: str | Path, map_names=None, show_progress: bool | None = None, plain_names: bool | None = None
+) -> list[Path]:
     """Measure and write every study (:func:`studies`) of all maps, or of ``map_names`` with the
     baseline map for reference: the accuracy report ``out`` (+ .json, .png) and beside it the others
-    (:func:`report_path`). Returns the written paths: per study its report, record and figure."""
+    (:func:`report_path`), named ``<name>.md`` when ``plain_names`` (default: for all maps only; the
+    reduced report of ``slipmaps report --quick`` reads its chosen maps' records by those names), else
+    ``<name>_<out's stem>.md``. Returns the written paths: per study its report, record and figure."""
     chosen = studies(map_names)
+    plain = map_names is None if plain_names is None else plain_names
     Path(out).parent.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     for study in chosen:
-        written += write(study, report_path(out, study, map_names is None), show_progress)
+        written += write(study, report_path(out, study, plain), show_progress)
     return written
