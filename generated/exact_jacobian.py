@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:771c593f135b91d2
+#   flight_jacobian.py sha256:2e171e0cb588eb80
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
 #   runtime/exact/compiled.py sha256:8cc8fb02e3177346
 #   runtime/exact/dop853.py sha256:efe02c4be3c1f068

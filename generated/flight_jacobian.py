@@ -26,15 +26,6 @@ _NAN30 = (NAN,) * 30
 
 
 @njit(cache=True, error_model="numpy")
-def _inputs_valid_0(q_r, q_rd, q_th, q_thd, g_f, direction):
-    """The input checks of 2 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
-        and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
-        and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0)))
-
-
-@njit(cache=True, error_model="numpy")
 def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
         ground):
     """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives
@@ -169,7 +160,9 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
     """
     # Total ops: 50
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, g_f, direction):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
+            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return _NAN20 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
@@ -267,7 +260,9 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r, q_rd, q_th, q_thd, g_f, direction):
+    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
+            and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
+            and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
         return _NAN25 + (STATUS_INVALID_INPUT,)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)

@@ -14,7 +14,7 @@
 #   gravity_type3.py sha256:ce520639bb1c9138
 #   gravity_type4.py sha256:8d3a969bccac09bf
 #   gravity_type5.py sha256:f4510b5010050beb
-#   iterative.py sha256:ef705fb345ff08fc
+#   iterative.py sha256:afabb604f82b4740
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -40,18 +40,6 @@ from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
 _NAN6 = (NAN,) * 6
-
-
-@njit(cache=True, error_model="numpy")
-def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
-    """The input checks of 45 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-        and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
-        and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c
-        > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-        and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -86,7 +74,12 @@ def iterative_compression_nodes_4_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -145,7 +138,12 @@ def iterative_compression_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -202,7 +200,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -257,7 +260,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -312,7 +320,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -367,7 +380,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -422,7 +440,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -477,7 +500,12 @@ def iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -531,7 +559,12 @@ def iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -586,7 +619,12 @@ def iterative_compression_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -640,7 +678,12 @@ def iterative_compression_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -697,7 +740,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -752,7 +800,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -807,7 +860,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -862,7 +920,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -917,7 +980,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -972,7 +1040,12 @@ def iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -1026,7 +1099,12 @@ def iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -1081,7 +1159,12 @@ def iterative_compression_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -1135,7 +1218,12 @@ def iterative_compression_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -1192,7 +1280,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -1247,7 +1340,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -1302,7 +1400,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -1357,7 +1460,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -1412,7 +1520,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -1467,7 +1580,12 @@ def iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -1521,7 +1639,12 @@ def iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -1576,7 +1699,12 @@ def iterative_compression_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -1630,7 +1758,12 @@ def iterative_compression_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -1687,7 +1820,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -1742,7 +1880,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -1797,7 +1940,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -1852,7 +2000,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -1907,7 +2060,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -1962,7 +2120,12 @@ def iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -2016,7 +2179,12 @@ def iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
@@ -2071,7 +2239,12 @@ def iterative_compression_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
@@ -2125,7 +2298,12 @@ def iterative_compression_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 31
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
     _x0 = k_c*q_r_td
@@ -2182,7 +2360,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
@@ -2237,7 +2420,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
@@ -2292,7 +2480,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
@@ -2347,7 +2540,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
@@ -2402,7 +2600,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
@@ -2457,7 +2660,12 @@ def iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
@@ -2511,7 +2719,12 @@ def iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, iterations, tol):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(iterations) and math.isfinite(tol) and ((q_r_td <= l0)
+            and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
+            and ((k_c > 0.0)) and ((g_s > 0.0)) and ((iterations == math.floor(iterations)) and (iterations
+            >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,

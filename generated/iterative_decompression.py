@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:ef705fb345ff08fc
+#   iterative.py sha256:afabb604f82b4740
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -24,19 +24,6 @@ from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
 _NAN6 = (NAN,) * 6
-
-
-@njit(cache=True, error_model="numpy")
-def _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
-    """The input checks of 5 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
-        and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
-        and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations) and math.isfinite(tol)
-        and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d
-        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((iterations
-        == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0)
-        and (tol <= 1.0)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -70,7 +57,13 @@ def iterative_decompression_nodes_4(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression_nodes_4(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
@@ -117,7 +110,13 @@ def iterative_decompression_nodes_1(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression_nodes_1(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
@@ -160,7 +159,13 @@ def iterative_decompression_nodes_2(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression_nodes_2(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
@@ -203,7 +208,13 @@ def iterative_decompression_nodes_3(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression_nodes_3(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,
@@ -246,7 +257,13 @@ def iterative_decompression_nodes_6(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
     """
     # Total ops: 0
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, iterations, tol):
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(iterations)
+            and math.isfinite(tol) and ((q_r_b > 0.0)) and ((abs(q_th_b) < (0.5)*math.pi)) and ((m > 0.0))
+            and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # decompression half, k_d (report 5.2.2)
     _c0 = (schwind_decompression_nodes_6(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, q_th_b,

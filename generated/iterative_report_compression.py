@@ -41,19 +41,6 @@ _NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations, bottom_length):
-    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-        and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
-        and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
-        < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((variant
-        == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-        and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
-
-
-@njit(cache=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
         iterations, bottom_length):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
@@ -85,8 +72,14 @@ def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -239,8 +232,14 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
     """
     # Total ops: 161
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -392,8 +391,14 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -543,8 +548,14 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -694,8 +705,14 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -845,8 +862,14 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -996,8 +1019,14 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1147,8 +1176,14 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1297,8 +1332,14 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
     """
     # Total ops: 130
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant, iterations,
-            bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(g_s) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN5 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):

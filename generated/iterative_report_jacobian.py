@@ -6,15 +6,15 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:771c593f135b91d2
-#   geyer_jacobian.py sha256:ee22e292aadbecf4
-#   geyer_vs_jacobian.py sha256:5dbda8f251d8b5ae
-#   gravity_type0_jacobian.py sha256:a64ce5867ac287ba
-#   gravity_type1_jacobian.py sha256:0e1ebc1b92b0959d
-#   gravity_type2_jacobian.py sha256:24319b58be9e307c
-#   gravity_type3_jacobian.py sha256:528071c82af16cbd
-#   gravity_type4_jacobian.py sha256:072027d2a2926da4
-#   gravity_type5_jacobian.py sha256:ac195c3c1fbd33ad
+#   flight_jacobian.py sha256:2e171e0cb588eb80
+#   geyer_jacobian.py sha256:9b179765a87a1082
+#   geyer_vs_jacobian.py sha256:ce3275fe2a45ba70
+#   gravity_type0_jacobian.py sha256:eb43f86438df132f
+#   gravity_type1_jacobian.py sha256:eafe299fba0e819c
+#   gravity_type2_jacobian.py sha256:f96b8ec65e3b4ad4
+#   gravity_type3_jacobian.py sha256:9b04d2a5368d3c46
+#   gravity_type4_jacobian.py sha256:9896e7ba0d4d662e
+#   gravity_type5_jacobian.py sha256:0a0aa41f63c3b0e3
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -128,37 +128,6 @@ def _store_row_12_84(out, status, i, res):
 
 
 @njit(cache=True, error_model="numpy")
-def _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations,
-        bottom_length):
-    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
-        and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
-        and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td > 0.0))
-        and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d
-        > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant
-        == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
-        <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
-
-
-@njit(cache=True, error_model="numpy")
-def _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant,
-        iterations, bottom_length):
-    """The input checks of 9 kernels of this module (one per choice): every argument finite and inside its
-    domain."""
-    return (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
-        and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
-        and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
-        and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
-        and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m
-        > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0))
-        and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
-        or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
-        and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0)))
-
-
-@njit(cache=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
         q_r_lo, variant, iterations, bottom_length):
     """Iterative stance map (Schwind and Koditschek, as printed): stance outputs and their derivatives with
@@ -204,8 +173,14 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
     """
     # Total ops: 1510
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -1268,8 +1243,16 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex, b_xd_apex, q_th
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -1344,8 +1327,14 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
     """
     # Total ops: 1624
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -2196,8 +2185,16 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -2265,8 +2262,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3088,8 +3091,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -3158,8 +3169,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -3981,8 +3998,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4051,8 +4076,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -4874,8 +4905,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -4944,8 +4983,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -5767,8 +5812,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -5837,8 +5890,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -6660,8 +6719,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -6730,8 +6797,14 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -7553,8 +7626,16 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
@@ -7623,8 +7704,14 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
     """
     # Total ops: 1620
     # inputs: finite and inside their domains
-    if not _inputs_valid_0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, variant,
-            iterations, bottom_length):
+    if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
+            and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(bottom_length) and ((q_r_td <= l0) and (q_r_td
+            > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
+            and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0)
+            or (variant == 1.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
+            and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length == 1.0))):
         return _NAN70 + (STATUS_INVALID_INPUT,)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
@@ -8479,8 +8566,16 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
     """
     # Total ops: 1
     # inputs: finite and inside their domains
-    if not _inputs_valid_1(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-            variant, iterations, bottom_length):
+    if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
+            and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
+            and math.isfinite(k_d) and math.isfinite(g_s) and math.isfinite(g_f) and math.isfinite(q_r_td)
+            and math.isfinite(q_r_lo) and math.isfinite(variant) and math.isfinite(iterations)
+            and math.isfinite(bottom_length) and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi))
+            and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((g_f
+            > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
+            and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
+            and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
+            == 1.0))):
         return _NAN84 + (STATUS_INVALID_INPUT,)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
