@@ -312,7 +312,7 @@ def first_class(td: np.ndarray, repeat: int) -> dict:
                 y_end,
                 math.inf,
                 y_end,
-                False,
+                dop853.GOES_ON,
             )[1]
         return acc
 

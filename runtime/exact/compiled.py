@@ -319,7 +319,7 @@ def hybrid_stance(
             z_b,
             t_sample,
             y_sample,
-            False,
+            dop853.GOES_ON,
         )
         if code != dop853.EVENT or event != EV_RADIAL:
             return failure_status(code, event), nan, nan, evaluations
@@ -352,7 +352,7 @@ def hybrid_stance(
         z_lo,
         t_sample,
         y_sample,
-        False,
+        dop853.GOES_ON,
     )
     evaluations += more
     if code != dop853.EVENT or event != EV_LIFTOFF:
@@ -463,7 +463,7 @@ def half_into(q_r, q_rd, q_th, q_thd, m, l0, k, g_s, q_r_lo, rtol, atol, t_max, 
     return OK
 
 
-@njit(**_JIT)
+@njit(**INLINE)
 def state_at_into(
     t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, t_max, out
 ):
@@ -503,7 +503,7 @@ def state_at_into(
             z[:N_POLAR],  # the end state (the sample's, unread): over the touchdown state
             t,
             y_at,
-            True,
+            dop853.ENDS,
         )
         if code != dop853.SAMPLED:
             return failure_status(code, -1)

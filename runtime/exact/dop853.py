@@ -55,7 +55,7 @@ Interfaces (every function ``@njit``; nothing raises):
   reaches it, when ``t0 <= t_sample`` and ``t_sample`` comes before the event that ends the
   integration (at an event time: not sampled; at or before ``t_bound``: sampled). It changes
   neither the steps nor the events; ``y_sample`` is left as it is when not sampled;
-  ``t_sample = inf`` samples nothing. With ``sample_ends`` the integration stops there
+  ``t_sample = inf`` samples nothing. With ``sample_ends`` :data:`ENDS` the integration stops there
   (:data:`SAMPLED`, ``t_end = t_sample``, ``y_end`` the sample's first components too).
 
 The state may have any length, so the same integrator carries augmented (variational) systems:
@@ -75,7 +75,7 @@ from numba.extending import intrinsic, overload
 from scipy.integrate._ivp import dop853_coefficients as _coef
 from scipy.integrate._ivp import rk as _rk
 
-__all__ = ["EVENT", "FAILED", "FINISHED", "SAMPLED", "dense_eval", "solve", "static"]
+__all__ = ["ENDS", "EVENT", "FAILED", "FINISHED", "GOES_ON", "SAMPLED", "dense_eval", "solve", "static"]
 
 N_STAGES = int(_coef.N_STAGES)  # 12 stages of the 8th-order step (the 13th row holds f_new)
 N_STAGES_EXTENDED = int(_coef.N_STAGES_EXTENDED)  # 16 with the 3 extra stages of the interpolant
@@ -103,6 +103,10 @@ FINISHED = 0
 EVENT = 1
 FAILED = -1
 SAMPLED = 2
+#: :func:`solve`'s ``sample_ends``: the integration stops at the sample, or goes on. Floats, not
+#: bools: numba types a bool constant as its literal value, compiling :func:`solve` once per value.
+ENDS = 1.0
+GOES_ON = 0.0
 
 _JIT = {"cache": True, "error_model": "numpy"}
 #: Functions taking ``rhs`` / ``events`` are specialised per right-hand side and compiled into their
@@ -543,8 +547,8 @@ def solve(
     ``(code, t_end, event, steps, evaluations)``; the state at ``t_end`` is written into ``y_end``
     (the interpolant's at an event). ``event`` is -1 unless ``code`` is :data:`EVENT`; ``steps``
     counts accepted steps, ``evaluations`` the right-hand side's evaluations. The interpolant at
-    ``t_sample`` goes into ``y_sample`` (module docstring: a sample); with ``sample_ends`` the
-    integration stops there.
+    ``t_sample`` goes into ``y_sample`` (module docstring: a sample); with ``sample_ends``
+    :data:`ENDS` the integration stops there (:data:`GOES_ON`: it does not).
     """
     n = y0.shape[0]
     n_ev = direction.shape[0]
@@ -673,7 +677,7 @@ def solve(
                 built = True
             dense_eval(F, t_old, h, work, t_sample, y_sample, y_sample.shape[0])
             sampled = True
-            if sample_ends:
+            if sample_ends == ENDS:
                 for i in range(y_sample.shape[0]):
                     y_end[i] = y_sample[i]
                 return SAMPLED, t_sample, -1, steps, evaluations
