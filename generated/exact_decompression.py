@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
-#   runtime/exact/compiled.py sha256:8cc8fb02e3177346
-#   runtime/exact/dop853.py sha256:efe02c4be3c1f068
+#   runtime/exact/compiled.py sha256:abe027cd940b5a9e
+#   runtime/exact/dop853.py sha256:cb05edf7474814df
 #   runtime/exact/jacobian.py sha256:1378f0df5cbd5a1d
 #   runtime/exact/kernels.py sha256:dfd9930d3dcc5fed
 #   runtime/exact/reference.py sha256:1a2d2771848fe471
