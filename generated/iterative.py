@@ -504,8 +504,7 @@ def schwind_compression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4`'s.
     """
     # Total ops: 53
     # inputs: finite and inside their domains
@@ -590,8 +589,7 @@ def schwind_decompression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_decompression_nodes_4`'s.
     """
     # Total ops: 60
     # inputs: finite and inside their domains
@@ -679,8 +677,7 @@ def schwind_compression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4`'s.
     """
     # Total ops: 115
     # inputs: finite and inside their domains
@@ -806,8 +803,7 @@ def schwind_decompression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_decompression_nodes_4`'s.
     """
     # Total ops: 121
     # inputs: finite and inside their domains
@@ -932,8 +928,7 @@ def schwind_compression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4`'s.
     """
     # Total ops: 180
     # inputs: finite and inside their domains
@@ -1093,8 +1088,7 @@ def schwind_decompression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_decompression_nodes_4`'s.
     """
     # Total ops: 187
     # inputs: finite and inside their domains
@@ -1252,8 +1246,7 @@ def schwind_compression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4`'s.
     """
     # Total ops: 501
     # inputs: finite and inside their domains
@@ -1545,8 +1538,7 @@ def schwind_decompression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of :func:`schwind_decompression_nodes_4` (another choice of the same
-    kernel).
+    Arguments, returns and status: the same as :func:`schwind_decompression_nodes_4`'s.
     """
     # Total ops: 511
     # inputs: finite and inside their domains
@@ -2071,8 +2063,7 @@ def iterative_stance_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 43
     # inputs: finite and inside their domains
@@ -2161,8 +2152,7 @@ def iterative_apex_return_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2241,8 +2231,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -2329,8 +2318,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2409,8 +2397,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -2497,8 +2484,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2577,8 +2563,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -2665,8 +2650,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2745,8 +2729,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -2833,8 +2816,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2913,8 +2895,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -3001,8 +2982,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3081,8 +3061,7 @@ def iterative_stance_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -3168,8 +3147,7 @@ def iterative_apex_return_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3248,8 +3226,7 @@ def iterative_stance_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -3336,8 +3313,7 @@ def iterative_apex_return_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3416,8 +3392,7 @@ def iterative_stance_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -3503,8 +3478,7 @@ def iterative_apex_return_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3583,8 +3557,7 @@ def iterative_stance_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 43
     # inputs: finite and inside their domains
@@ -3673,8 +3646,7 @@ def iterative_apex_return_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3753,8 +3725,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -3841,8 +3812,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -3921,8 +3891,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4009,8 +3978,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4089,8 +4057,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4177,8 +4144,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4257,8 +4223,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4345,8 +4310,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4425,8 +4389,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4513,8 +4476,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4593,8 +4555,7 @@ def iterative_stance_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4680,8 +4641,7 @@ def iterative_apex_return_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4760,8 +4720,7 @@ def iterative_stance_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -4848,8 +4807,7 @@ def iterative_apex_return_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -4928,8 +4886,7 @@ def iterative_stance_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -5015,8 +4972,7 @@ def iterative_apex_return_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5095,8 +5051,7 @@ def iterative_stance_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 43
     # inputs: finite and inside their domains
@@ -5185,8 +5140,7 @@ def iterative_apex_return_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5265,8 +5219,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -5353,8 +5306,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5433,8 +5385,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -5521,8 +5472,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5601,8 +5551,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -5689,8 +5638,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5769,8 +5717,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -5857,8 +5804,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -5937,8 +5883,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -6025,8 +5970,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6105,8 +6049,7 @@ def iterative_stance_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -6192,8 +6135,7 @@ def iterative_apex_return_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6272,8 +6214,7 @@ def iterative_stance_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -6360,8 +6301,7 @@ def iterative_apex_return_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6440,8 +6380,7 @@ def iterative_stance_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -6527,8 +6466,7 @@ def iterative_apex_return_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6607,8 +6545,7 @@ def iterative_stance_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 43
     # inputs: finite and inside their domains
@@ -6697,8 +6634,7 @@ def iterative_apex_return_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6777,8 +6713,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -6865,8 +6800,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -6945,8 +6879,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7033,8 +6966,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7113,8 +7045,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7201,8 +7132,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7281,8 +7211,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7369,8 +7298,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7449,8 +7377,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7537,8 +7464,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7617,8 +7543,7 @@ def iterative_stance_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7704,8 +7629,7 @@ def iterative_apex_return_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7784,8 +7708,7 @@ def iterative_stance_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -7872,8 +7795,7 @@ def iterative_apex_return_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -7952,8 +7874,7 @@ def iterative_stance_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -8039,8 +7960,7 @@ def iterative_apex_return_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_th_td, gro
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8119,8 +8039,7 @@ def iterative_stance_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 43
     # inputs: finite and inside their domains
@@ -8209,8 +8128,7 @@ def iterative_apex_return_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th_td, grou
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8289,8 +8207,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -8377,8 +8294,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8457,8 +8373,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -8545,8 +8460,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8625,8 +8539,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -8713,8 +8626,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8793,8 +8705,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -8881,8 +8792,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -8961,8 +8871,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -9049,8 +8958,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -9129,8 +9037,7 @@ def iterative_stance_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -9216,8 +9123,7 @@ def iterative_apex_return_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -9296,8 +9202,7 @@ def iterative_stance_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_nodes_4_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 8
     # inputs: finite and inside their domains
@@ -9384,8 +9289,7 @@ def iterative_apex_return_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains

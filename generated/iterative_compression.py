@@ -14,7 +14,7 @@
 #   gravity_type3.py sha256:ce520639bb1c9138
 #   gravity_type4.py sha256:8d3a969bccac09bf
 #   gravity_type5.py sha256:f4510b5010050beb
-#   iterative.py sha256:afabb604f82b4740
+#   iterative.py sha256:9159ebc4db2cb073
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -133,8 +133,7 @@ def iterative_compression_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 31
     # inputs: finite and inside their domains
@@ -195,8 +194,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -255,8 +253,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -315,8 +312,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -375,8 +371,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -435,8 +430,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -495,8 +489,7 @@ def iterative_compression_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -554,8 +547,7 @@ def iterative_compression_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -614,8 +606,7 @@ def iterative_compression_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -673,8 +664,7 @@ def iterative_compression_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 31
     # inputs: finite and inside their domains
@@ -735,8 +725,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -795,8 +784,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -855,8 +843,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -915,8 +902,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -975,8 +961,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1035,8 +1020,7 @@ def iterative_compression_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1094,8 +1078,7 @@ def iterative_compression_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1154,8 +1137,7 @@ def iterative_compression_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1213,8 +1195,7 @@ def iterative_compression_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 31
     # inputs: finite and inside their domains
@@ -1275,8 +1256,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1335,8 +1315,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1395,8 +1374,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1455,8 +1433,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1515,8 +1492,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1575,8 +1551,7 @@ def iterative_compression_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1634,8 +1609,7 @@ def iterative_compression_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1694,8 +1668,7 @@ def iterative_compression_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1753,8 +1726,7 @@ def iterative_compression_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 31
     # inputs: finite and inside their domains
@@ -1815,8 +1787,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1875,8 +1846,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1935,8 +1905,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -1995,8 +1964,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2055,8 +2023,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2115,8 +2082,7 @@ def iterative_compression_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2174,8 +2140,7 @@ def iterative_compression_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2234,8 +2199,7 @@ def iterative_compression_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_t
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2293,8 +2257,7 @@ def iterative_compression_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 31
     # inputs: finite and inside their domains
@@ -2355,8 +2318,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2415,8 +2377,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2475,8 +2436,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2535,8 +2495,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2595,8 +2554,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2655,8 +2613,7 @@ def iterative_compression_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td,
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2714,8 +2671,7 @@ def iterative_compression_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 29, 30, 31, 32, 114, 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`iterative_compression_nodes_4_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_compression_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains

@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   iterative.py sha256:afabb604f82b4740
+#   iterative.py sha256:9159ebc4db2cb073
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -105,8 +105,7 @@ def iterative_decompression_nodes_1(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
 
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
-    Arguments, returns and status: those of :func:`iterative_decompression_nodes_4` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as :func:`iterative_decompression_nodes_4`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -154,8 +153,7 @@ def iterative_decompression_nodes_2(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
 
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
-    Arguments, returns and status: those of :func:`iterative_decompression_nodes_4` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as :func:`iterative_decompression_nodes_4`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -203,8 +201,7 @@ def iterative_decompression_nodes_3(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
 
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
-    Arguments, returns and status: those of :func:`iterative_decompression_nodes_4` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as :func:`iterative_decompression_nodes_4`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -252,8 +249,7 @@ def iterative_decompression_nodes_6(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, 
 
     Report equations: 29, 30, 31, 32, 37, 41, 137, 138, 139, 140, 141, 143.
 
-    Arguments, returns and status: those of :func:`iterative_decompression_nodes_4` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as :func:`iterative_decompression_nodes_4`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains

@@ -2214,8 +2214,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 122
     # inputs: finite and inside their domains
@@ -2349,8 +2348,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -2593,8 +2591,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2694,8 +2691,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -2767,8 +2763,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -2868,8 +2863,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -2941,8 +2935,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -3042,8 +3035,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -3115,8 +3107,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -3216,8 +3207,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -3289,8 +3279,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -3390,8 +3379,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -3463,8 +3451,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -3564,8 +3551,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -4509,8 +4495,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -4615,8 +4600,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -4691,8 +4675,7 @@ def schwind_compression_nodes_1_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp5_408d60`'s.
     """
     # Total ops: 351
     # inputs: finite and inside their domains
@@ -4924,9 +4907,8 @@ def schwind_decompression_nodes_1_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of
-    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd`'s.
     """
     # Total ops: 306
     # inputs: finite and inside their domains
@@ -5160,8 +5142,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -5259,8 +5240,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -5332,8 +5312,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 122
     # inputs: finite and inside their domains
@@ -5467,8 +5446,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -5540,8 +5518,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -5641,8 +5618,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -5714,8 +5690,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -5815,8 +5790,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -5888,8 +5862,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -5989,8 +5962,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -6062,8 +6034,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -6163,8 +6134,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -6236,8 +6206,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -6337,8 +6306,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -6410,8 +6378,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -6511,8 +6478,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -6588,8 +6554,7 @@ def schwind_compression_nodes_1_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp6_a742c3`'s.
     """
     # Total ops: 382
     # inputs: finite and inside their domains
@@ -6837,8 +6802,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -6943,8 +6907,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -7019,8 +6982,7 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp5_408d60`'s.
     """
     # Total ops: 756
     # inputs: finite and inside their domains
@@ -7393,9 +7355,8 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of
-    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd`'s.
     """
     # Total ops: 711
     # inputs: finite and inside their domains
@@ -7769,8 +7730,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -7868,8 +7828,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -7941,8 +7900,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 122
     # inputs: finite and inside their domains
@@ -8076,8 +8034,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -8149,8 +8106,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -8250,8 +8206,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -8323,8 +8278,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -8424,8 +8378,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -8497,8 +8450,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -8598,8 +8550,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -8671,8 +8622,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -8772,8 +8722,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -8845,8 +8794,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -8946,8 +8894,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -9019,8 +8966,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -9120,8 +9066,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -9197,8 +9142,7 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp6_a742c3`'s.
     """
     # Total ops: 837
     # inputs: finite and inside their domains
@@ -9600,8 +9544,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -9706,8 +9649,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -9782,8 +9724,7 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp5_408d60`'s.
     """
     # Total ops: 716
     # inputs: finite and inside their domains
@@ -10289,9 +10230,8 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of
-    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd`'s.
     """
     # Total ops: 556
     # inputs: finite and inside their domains
@@ -10738,8 +10678,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -10837,8 +10776,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -10910,8 +10848,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 122
     # inputs: finite and inside their domains
@@ -11045,8 +10982,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11118,8 +11054,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -11219,8 +11154,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11292,8 +11226,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -11393,8 +11326,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11466,8 +11398,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -11567,8 +11498,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11640,8 +11570,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -11741,8 +11670,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11814,8 +11742,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -11915,8 +11842,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -11988,8 +11914,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -12089,8 +12014,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -12166,8 +12090,7 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp6_a742c3`'s.
     """
     # Total ops: 716
     # inputs: finite and inside their domains
@@ -12676,8 +12599,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -12782,8 +12704,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -12858,8 +12779,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp5_408d60` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp5_408d60`'s.
     """
     # Total ops: 1740
     # inputs: finite and inside their domains
@@ -13756,9 +13676,8 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
 
     Report equations: 29, 30, 31, 32, 37, 41.
 
-    Arguments, returns and status: those of
-    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd` (another choice of the
-    same kernel).
+    Arguments, returns and status: the same as
+    :func:`schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd`'s.
     """
     # Total ops: 1394
     # inputs: finite and inside their domains
@@ -14542,8 +14461,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -14641,8 +14559,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer(b_y_apex, b_xd_apex, q_t
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -14714,8 +14631,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_held(q_r_td, q_rd_td, q_th_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 122
     # inputs: finite and inside their domains
@@ -14849,8 +14765,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_held(b_y_apex, b_xd_apex, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -14922,8 +14837,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type0(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15023,8 +14937,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15096,8 +15009,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type1(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15197,8 +15109,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15270,8 +15181,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type2(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15371,8 +15281,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15444,8 +15353,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type3(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15545,8 +15453,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15618,8 +15525,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type4(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15719,8 +15625,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15792,8 +15697,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type5(q_r_td, q_rd_td, q_th
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -15893,8 +15797,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5(b_y_apex, b_xd_a
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -15970,8 +15873,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
 
     Report equations: 115, 116, 117, 118, 123.
 
-    Arguments, returns and status: those of :func:`schwind_compression_nodes_4_jvp6_a742c3` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`schwind_compression_nodes_4_jvp6_a742c3`'s.
     """
     # Total ops: 1740
     # inputs: finite and inside their domains
@@ -16871,8 +16773,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 0
     # inputs: finite and inside their domains
@@ -16977,8 +16878,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs(b_y_apex, b_xd_apex, 
 
     Report equations: 27, 29, 30, 31, 32, 33, 35, 37, 41, 114, 115, 116, 117, 118, 137.
 
-    Arguments, returns and status: those of :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains

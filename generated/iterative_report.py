@@ -455,8 +455,7 @@ def iterative_report_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 307
     # inputs: finite and inside their domains
@@ -707,8 +706,7 @@ def iterative_report_apex_return_zeroth_held(b_y_apex, b_xd_apex, q_th_td, groun
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -789,8 +787,7 @@ def iterative_report_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -1039,8 +1036,7 @@ def iterative_report_apex_return_zeroth_gravity_type0(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -1121,8 +1117,7 @@ def iterative_report_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -1371,8 +1366,7 @@ def iterative_report_apex_return_zeroth_gravity_type1(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -1453,8 +1447,7 @@ def iterative_report_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -1703,8 +1696,7 @@ def iterative_report_apex_return_zeroth_gravity_type2(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -1785,8 +1777,7 @@ def iterative_report_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -2035,8 +2026,7 @@ def iterative_report_apex_return_zeroth_gravity_type3(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2117,8 +2107,7 @@ def iterative_report_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -2367,8 +2356,7 @@ def iterative_report_apex_return_zeroth_gravity_type4(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2449,8 +2437,7 @@ def iterative_report_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -2698,8 +2685,7 @@ def iterative_report_apex_return_zeroth_gravity_type5(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains
@@ -2780,8 +2766,7 @@ def iterative_report_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, 
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_zeroth_geyer` (another choice of
-    the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_zeroth_geyer`'s.
     """
     # Total ops: 272
     # inputs: finite and inside their domains
@@ -3030,8 +3015,7 @@ def iterative_report_apex_return_zeroth_geyer_vs(b_y_apex, b_xd_apex, q_th_td, g
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_zeroth_geyer`'s.
     """
     # Total ops: 3
     # inputs: finite and inside their domains

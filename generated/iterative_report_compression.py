@@ -227,8 +227,7 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 161
     # inputs: finite and inside their domains
@@ -386,8 +385,7 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -543,8 +541,7 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -700,8 +697,7 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -857,8 +853,7 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -1014,8 +1009,7 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -1171,8 +1165,7 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains
@@ -1327,8 +1320,7 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_compression_zeroth_geyer` (another choice
-    of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
     # Total ops: 130
     # inputs: finite and inside their domains

@@ -1322,8 +1322,7 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1624
     # inputs: finite and inside their domains
@@ -2180,8 +2179,7 @@ def iterative_report_apex_return_jacobian_zeroth_held(b_y_apex, b_xd_apex, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -2257,8 +2255,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -3086,8 +3083,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -3164,8 +3160,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -3993,8 +3988,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -4071,8 +4065,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -4900,8 +4893,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -4978,8 +4970,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -5807,8 +5798,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -5885,8 +5875,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -6714,8 +6703,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -6792,8 +6780,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1522
     # inputs: finite and inside their domains
@@ -7621,8 +7608,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex, b_xd_ap
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains
@@ -7699,8 +7685,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_stance_jacobian_zeroth_geyer` (another
-    choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_stance_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1620
     # inputs: finite and inside their domains
@@ -8561,8 +8546,7 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex, b_xd_apex, q
     118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131, 132, 133, 134, 135, 137, 138, 139, 140,
     141, 143, 144, 145, 146, 147, 148, 149, 150, 154.
 
-    Arguments, returns and status: those of :func:`iterative_report_apex_return_jacobian_zeroth_geyer`
-    (another choice of the same kernel).
+    Arguments, returns and status: the same as :func:`iterative_report_apex_return_jacobian_zeroth_geyer`'s.
     """
     # Total ops: 1
     # inputs: finite and inside their domains

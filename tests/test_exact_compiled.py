@@ -138,6 +138,64 @@ def test_random_touchdowns_match_solve_ivp(robot, kd_ratio, q_r, q_rd, q_th, q_t
         assert all(math.isnan(v) for v in got.values())
 
 
+_SOLVE = {}
+
+
+def _compressions(field, tds, p: SlipParams):
+    """dop853.solve's compression phase from each touchdown with ``field``: (code, t_end, event,
+    steps, evaluations) and the end state, per row."""
+    if not _SOLVE:
+        from numba import njit
+        from slipmaps.runtime.exact import dop853
+
+        @njit
+        def run(field, tds, p4, pe, direction, cap, out):
+            for i in range(tds.shape[0]):
+                y_end = np.empty(4)
+                code, t_end, event, steps, evaluations = dop853.solve(
+                    field, p4, ec.stance_events, pe, direction, 0.0, tds[i], 10.0, 1e-11, 1e-12, cap,
+                    4, y_end, math.inf, y_end, dop853.GOES_ON,
+                )  # fmt: skip
+                out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4] = code, t_end, event, steps, evaluations
+                out[i, 5:] = y_end
+
+        _SOLVE["run"] = run
+        _SOLVE["loops"] = njit(ec.polar_field.py_func)  # a second dispatcher: not registered
+    out = np.empty((len(tds), 9))
+    pe = (p.q_r_lo, ec.COLLAPSE_FRACTION * p.l0)
+    cap = ec.step_cap(p.m, p.l0, p.k_c, p.g_s, 1e-11)
+    field = _SOLVE["loops"] if field is None else field
+    _SOLVE["run"](field, tds, (p.m, p.l0, p.k_c, p.g_s), pe, np.array(ec.COMPRESSION_DIRECTIONS), cap, out)
+    return out
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    q_rd=st.lists(st.floats(0.05, 1.0), min_size=1, max_size=8),
+    q_th=st.floats(-0.6, 0.6),
+    q_thd=st.floats(-2.0, 0.5),
+)
+def test_written_out_step_equals_the_loops_bitwise(q_rd, q_th, q_thd):
+    """dop853.static's state_length: the polar field's step with its 4 components written out (the
+    registered field) and the step's loops (the same function, not registered) take the same steps
+    and evaluations to the same states, bitwise."""
+    p = HUMAN_RUNNER
+    s = math.sqrt(p.g_s * p.l0)
+    tds = np.array([(p.l0, -v * s, q_th, q_thd * s / p.l0) for v in q_rd])
+    written, loops = _compressions(ec.polar_field, tds, p), _compressions(None, tds, p)
+    assert np.all(written[:, 0] == 1), written[:, 0]  # every compression ends at its bottom event
+    np.testing.assert_array_equal(written, loops)
+
+
+def test_static_refuses_a_length_it_does_not_write_out():
+    from slipmaps.runtime.exact import dop853
+
+    with pytest.raises(ValueError, match="state_length"):
+        dop853.static(ec.stance_events, 28)
+    with pytest.raises(ValueError, match="state_length"):
+        dop853.static(ec.polar_field)  # registered with 4: per function
+
+
 # ----------------------------------------------------------------------------------------------
 # 2. Every failure status of the reference, on the same inputs
 # ----------------------------------------------------------------------------------------------

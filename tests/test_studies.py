@@ -103,10 +103,10 @@ def test_report_paths():
         Path("docs/stability.md"),
     ]
     one = Path("out/accuracy_iterative.md")
-    assert runner.report_path(one, by_name["stability"], all_maps=False) == Path(
+    assert runner.report_path(one, by_name["stability"], plain_names=False) == Path(
         "out/stability_accuracy_iterative.md"
     )
-    assert runner.report_path(one, by_name["accuracy"], all_maps=False) == one
+    assert runner.report_path(one, by_name["accuracy"], plain_names=False) == one
 
 
 def test_run_names_chosen_maps_reports_by_the_out_stem_or_plainly(tmp_path, monkeypatch):

@@ -119,13 +119,15 @@ RECOMPRESSION = int(Status.RECOMPRESSION)
 INTEGRATION_FAILED = int(Status.INTEGRATION_FAILED)
 
 _JIT = {"cache": True, "error_model": "numpy"}
-#: The driver takes the vector field and the bottom step as arguments (dop853's ``_GENERIC``): it
-#: is compiled into each (cached) caller, once per vector field.
-_GENERIC = {"error_model": "numpy", "inline": "always"}
 #: The layers between a kernel and the driver are inlined into it (numba's IR inlining): each cached
 #: function of a call chain re-optimises everything it links (LLVM's passes over the whole driver at
 #: every layer), so the first call compiles in a third less time (benchmarks/bench_first_call.py).
-INLINE = {"cache": True, "error_model": "numpy", "inline": "always"}
+#: An inlined body is compiled with its caller's options: it must not rely on its own error model.
+INLINE = {**_JIT, "inline": "always"}
+#: The driver takes the vector field and the bottom step as arguments: not cached itself (its
+#: Dispatcher-typed signature would never hit the cache) and inlined into each caller
+#: (:func:`_plain`, :func:`.jacobian.jacobian_into`); :func:`.dop853.solve` is compiled once per field.
+_DRIVER = {"error_model": "numpy", "inline": "always"}
 
 
 @njit(**_JIT)
@@ -243,7 +245,7 @@ def bottom_status(q_r_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, t_bottom, t_m
     return OK
 
 
-@njit(**_GENERIC)
+@njit(**_DRIVER)
 def hybrid_stance(
     field,
     p_c,
@@ -443,7 +445,7 @@ def stance_into(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo
     return OK
 
 
-@njit(**_JIT)
+@njit(**INLINE)
 def half_into(q_r, q_rd, q_th, q_thd, m, l0, k, g_s, q_r_lo, rtol, atol, t_max, compression, out):
     """One half of the stance with stiffness k: the compression (touchdown -> bottom,
     ``compression`` True) or the decompression (bottom -> liftoff; q_rd is not read, 0 at the

@@ -58,7 +58,8 @@ Interfaces (every function ``@njit``; nothing raises):
   ``t_sample = inf`` samples nothing. With ``sample_ends`` :data:`ENDS` the integration stops there
   (:data:`SAMPLED`, ``t_end = t_sample``, ``y_end`` the sample's first components too).
 
-The state may have any length, so the same integrator carries augmented (variational) systems:
+The state may have any length (a field registered with :func:`static`'s ``state_length``: exactly
+:data:`UNROLLED`), so the same integrator carries augmented (variational) systems:
 with ``n_control`` set to the length of the original state, the steps, events and original
 components are exactly those of the plain integration, and the added components are the same
 Runge-Kutta scheme applied to their equations (for variational equations: the derivative of the
@@ -121,11 +122,19 @@ def static(fn, state_length=None):
     ``solve(fn, ...)`` inside a ``cache=True`` kernel would lower the dispatcher ``fn`` as a
     pointer to a Python object (a "dynamic global": numba refuses to cache the kernel). The handle
     has the same numba type (the call is resolved at compile time, by type) and no run-time
-    value: a null pointer. A field of ``state_length`` :data:`UNROLLED` gets the step with its
-    components written out (:func:`_rk_step`).
+    value: a null pointer.
+
+    ``state_length`` :data:`UNROLLED` registers ``fn`` as a field whose every state has exactly
+    that many components: :func:`solve` then runs the step with its components written out
+    (:func:`_rk_step`; the registration is per function, for all its handles and for ``fn`` passed
+    itself). Another length, or a field registered twice with different lengths, is a ValueError.
     """
-    if state_length == UNROLLED:
+    if state_length is not None:
+        if state_length != UNROLLED:
+            raise ValueError(f"static: state_length {state_length}; only {UNROLLED} is written out")
         _UNROLLED_FIELDS.add(fn)
+    elif fn in _UNROLLED_FIELDS:
+        raise ValueError(f"static: {fn} has state_length {UNROLLED} (per function): pass it here too")
 
     @intrinsic
     def handle(typingctx):
@@ -164,8 +173,10 @@ _UNROLLED_FIELDS: set = set()
 def _step_source() -> str:
     """Python source of the Runge-Kutta step, the error norm and the interpolant's coefficients:
     every coefficient a literal, every loop over the stages unrolled, the tableau's zeros left out
-    (:func:`_sum`, :func:`_advance`). A state of length :data:`UNROLLED` and any other run the
-    same expressions (bitwise the same values), those of the loops over the tableau before."""
+    (:func:`_sum`, :func:`_advance`). The step comes twice, its :data:`UNROLLED` components written
+    out (for a registered field, :func:`static`) and looping over any length; the error norm
+    branches on the length at run time. Both forms compute the same expressions (bitwise the same
+    values: tests/test_exact_compiled.py), those of the loops over the tableau before."""
 
     def arr(j):
         return f"K[{j}, i]"
@@ -271,7 +282,7 @@ def _rk_step(rhs, p, t, y, f, h, K, y_new, ys, dy):  # pragma: no cover - njit-o
     raise NotImplementedError("_rk_step runs inside compiled code only")
 
 
-@overload(_rk_step)
+@overload(_rk_step, jit_options={"error_model": "numpy"})
 def _rk_step_impl(rhs, p, t, y, f, h, K, y_new, ys, dy):
     """The step for this right-hand side: components written out for a field :func:`static` was
     told has :data:`UNROLLED` components, the loops otherwise (chosen by type, at compile time:

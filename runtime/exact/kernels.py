@@ -51,7 +51,7 @@ __all__ = ["STANCE_JACOBIAN_WRT", "compression", "decompression", "stance", "sta
 STANCE_JACOBIAN_WRT = ej.INPUTS
 
 #: Inlined into the generated kernels that call them (:data:`.compiled.INLINE`).
-_JIT = ec.INLINE
+_INLINE = ec.INLINE
 
 # numba builds fixed-length tuples only: the literal tuples below are 10 outputs and 10 x 6 entries.
 if ec.N_STANCE != 10 or (ej.N_OUT, ej.N_IN) != (10, 6):
@@ -60,7 +60,7 @@ if ec.N_STANCE != 10 or (ej.N_OUT, ej.N_IN) != (10, 6):
     )
 
 
-@njit(**_JIT)
+@njit(**_INLINE)
 def stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The exact stance from a polar touchdown state (:func:`.compiled.stance_into`)."""
     out = np.empty(ec.N_STANCE)
@@ -71,7 +71,7 @@ def stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rto
     return (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], code)
 
 
-@njit(**_JIT)
+@njit(**_INLINE)
 def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The exact stance and its Jacobian with respect to :data:`STANCE_JACOBIAN_WRT`
     (:func:`.jacobian.jacobian_into`): the outputs of :func:`stance`, then the Jacobian row-major."""
@@ -94,7 +94,7 @@ def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     )  # fmt: skip
 
 
-@njit(**_JIT)
+@njit(**_INLINE)
 def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol):
     """The compression half, touchdown -> bottom with k_c (:func:`.compiled.half_into`):
     (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half the time of the bottom."""
@@ -106,7 +106,7 @@ def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rto
     return (out[0], out[1], out[2], out[3], out[4], code)
 
 
-@njit(**_JIT)
+@njit(**_INLINE)
 def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol):
     """The decompression half, bottom -> liftoff with k_d (:func:`.compiled.half_into`; q_rd_b is
     not read, 0 at the bottom): (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half
@@ -119,7 +119,7 @@ def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol,
     return (out[0], out[1], out[2], out[3], out[4], code)
 
 
-@njit(**_JIT)
+@njit(**_INLINE)
 def state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The polar state a time t after touchdown (:func:`.compiled.state_at_into`):
     (q_r, q_rd, q_th, q_thd, status).

@@ -51,13 +51,14 @@ def studies(map_names=None) -> list[Study]:
     return [s for s in (cls(names) for cls in STUDIES) if s.applies()]
 
 
-def report_path(out: str | Path, study: Study, all_maps: bool = True) -> Path:
+def report_path(out: str | Path, study: Study, plain_names: bool = True) -> Path:
     """Where ``study``'s report goes when the accuracy report is ``out``: ``out`` itself for the first
-    study, else beside it ``<name>.md`` (all maps) or ``<name>_<out's stem>.md`` (chosen maps)."""
+    study, else beside it ``<name>.md`` (``plain_names``: all maps, or the quick report's chosen
+    ones) or ``<name>_<out's stem>.md`` (chosen maps)."""
     md = Path(out)
     if study.name == STUDIES[0].name:
         return md
-    return md.with_name(f"{study.name}.md" if all_maps else f"{study.name}_{md.stem}.md")
+    return md.with_name(f"{study.name}.md" if plain_names else f"{study.name}_{md.stem}.md")
 
 
 def run(
