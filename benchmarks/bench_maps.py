@@ -228,10 +228,11 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
 _APEX = ("b_y_apex", "b_xd_apex", "q_th_td")
 
 
-def _kernel_loop(kernel, args: tuple[str, ...]):
+def _kernel_loop(kernel, args: tuple[str, ...], width: int):
     """A numba loop calling the scalar apex-return ``kernel`` once per state: its arguments
     ``args`` (the index's order) from the arrays ``h, v, th`` for :data:`_APEX` and from the tuple
-    ``rest`` for the others, in order; returns a checksum."""
+    ``rest`` for the others, in order; returns a checksum of all ``width`` entries of every result
+    (a checksum of fewer would let the compiler drop the code of the others)."""
     arrays = dict(zip(_APEX, ("h[i]", "v[i]", "th[i]"), strict=True))
     others = [a for a in args if a not in arrays]
     fill = [arrays.get(a) or f"rest[{others.index(a)}]" for a in args]
@@ -240,7 +241,8 @@ def _kernel_loop(kernel, args: tuple[str, ...]):
         "def run(h, v, th, rest):\n"
         "    s = 0.0\n"
         "    for i in range(h.shape[0]):\n"
-        f"        s += kernel({', '.join(fill)})[0]\n"
+        f"        r = kernel({', '.join(fill)})\n"
+        f"        s += {' + '.join(f'r[{j}]' for j in range(width))}\n"
         "    return s\n",
         namespace,
     )
@@ -259,8 +261,10 @@ def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
     for role in ("apex_return", "apex_return_jacobian"):
         spec = call.spec(role)
         kern = spec.functions()[0]
-        run = _kernel_loop(kern, spec.args)
         rest = tuple(values[a] for a in spec.args if a not in _APEX)
+        first = {a: x[0] for a, x in zip(_APEX, (h, v, th), strict=True)}
+        width = len(kern(*(first[a] if a in first else values[a] for a in spec.args)))
+        run = _kernel_loop(kern, spec.args, width)
         run(h[:10], v[:10], th[:10], rest)
         best = math.inf
         for _ in range(repeat):

@@ -164,9 +164,8 @@ def _share_docs(kernels: list[dict]) -> None:
     the module says the rest once."""
     first: dict[tuple, str] = {}
     for k in kernels:
-        k["doc_ref"] = first.setdefault(_doc_key(k), k["name"])
-        if k["doc_ref"] == k["name"]:
-            k["doc_ref"] = ""
+        ref = first.setdefault(_doc_key(k), k["name"])
+        k["doc_ref"] = "" if ref == k["name"] else ref
 
 
 def _render_module(mod: Module, files: dict[str, str]) -> str:

@@ -9,8 +9,8 @@
 #   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
 #   runtime/exact/compiled.py sha256:f1ea68408082b7bb
 #   runtime/exact/dop853.py sha256:6f313c10a1dd1ef4
-#   runtime/exact/jacobian.py sha256:1378f0df5cbd5a1d
-#   runtime/exact/kernels.py sha256:8f257353e7eecbc1
+#   runtime/exact/jacobian.py sha256:079e967891f96aa1
+#   runtime/exact/kernels.py sha256:39d1598d210616fc
 #   runtime/exact/reference.py sha256:1a2d2771848fe471
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->

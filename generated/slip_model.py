@@ -50,8 +50,8 @@ def stance_polar_rhs(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
 
 
 @njit(cache=True, error_model="numpy")
-def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
-    """Jacobian of the polar stance vector field: d/d(q_r, q_rd, q_th, q_thd) row by row, then d/dk.
+def stance_polar_tangent(q_r, q_rd, q_th, q_thd, s_q_r, s_q_rd, s_q_th, s_q_thd, s_k, m, l0, k, g_s):
+    """Variational equations of the polar stance field: d/dt (dy/dw) = J dy/dw + (df/dk) dk/dw.
 
     Report equations: 2, 3, sec2.2.1-polar.
 
@@ -60,63 +60,34 @@ def stance_polar_jacobian(q_r, q_rd, q_th, q_thd, m, l0, k, g_s):
         q_rd: leg length rate q_rd [m/s]
         q_th: leg angle q_th from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate q_thd [rad/s]
+        s_q_r: dq_r/dw, the state's sensitivity to an input w [m per unit of w]
+        s_q_rd: dq_rd/dw, the state's sensitivity to an input w [m/s per unit of w]
+        s_q_th: dq_th/dw, the state's sensitivity to an input w [rad per unit of w]
+        s_q_thd: dq_thd/dw, the state's sensitivity to an input w [rad/s per unit of w]
+        s_k: dk/dw, the stiffness's sensitivity to w (1 for w = k, else 0) [N/m per unit of w]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
         k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
     Returns a tuple:
-        d_q_rd_d_q_r: dq_rd/dq_r [(m/s)/(m)]
-        d_q_rd_d_q_rd: dq_rd/dq_rd [(m/s)/(m/s)]
-        d_q_rd_d_q_th: dq_rd/dq_th [(m/s)/(rad)]
-        d_q_rd_d_q_thd: dq_rd/dq_thd [(m/s)/(rad/s)]
-        d_q_rdd_d_q_r: dq_rdd/dq_r [(m/s^2)/(m)]
-        d_q_rdd_d_q_rd: dq_rdd/dq_rd [(m/s^2)/(m/s)]
-        d_q_rdd_d_q_th: dq_rdd/dq_th [(m/s^2)/(rad)]
-        d_q_rdd_d_q_thd: dq_rdd/dq_thd [(m/s^2)/(rad/s)]
-        d_q_thd_d_q_r: dq_thd/dq_r [(rad/s)/(m)]
-        d_q_thd_d_q_rd: dq_thd/dq_rd [(rad/s)/(m/s)]
-        d_q_thd_d_q_th: dq_thd/dq_th [(rad/s)/(rad)]
-        d_q_thd_d_q_thd: dq_thd/dq_thd [(rad/s)/(rad/s)]
-        d_q_thdd_d_q_r: dq_thdd/dq_r [(rad/s^2)/(m)]
-        d_q_thdd_d_q_rd: dq_thdd/dq_rd [(rad/s^2)/(m/s)]
-        d_q_thdd_d_q_th: dq_thdd/dq_th [(rad/s^2)/(rad)]
-        d_q_thdd_d_q_thd: dq_thdd/dq_thd [(rad/s^2)/(rad/s)]
-        d_q_rd_d_k: dq_rd/dk [(m/s)/(N/m)]
-        d_q_rdd_d_k: dq_rdd/dk [(m/s^2)/(N/m)]
-        d_q_thd_d_k: dq_thd/dk [(rad/s)/(N/m)]
-        d_q_thdd_d_k: dq_thdd/dk [(rad/s^2)/(N/m)]
+        ds_q_r: d/dt of dq_r/dw [m/s per unit of w]
+        ds_q_rd: d/dt of dq_rd/dw [m/s^2 per unit of w]
+        ds_q_th: d/dt of dq_th/dw [rad/s per unit of w]
+        ds_q_thd: d/dt of dq_thd/dw [rad/s^2 per unit of w]
     """
-    # Total ops: 26
-    _x4 = (1.0/q_r)
-    _x0 = (1.0/m)
-    _x1 = g_s*math.sin(q_th)
-    _x2 = 2.0*q_thd
-    _x3 = _x4**2
-    d_q_rd_d_q_r = 0.0
-    d_q_rd_d_q_rd = 1.0
-    d_q_rd_d_q_th = 0.0
-    d_q_rd_d_q_thd = 0.0
-    d_q_rdd_d_q_r = -_x0*k + q_thd**2
-    d_q_rdd_d_q_rd = 0.0
-    d_q_rdd_d_q_th = _x1
-    d_q_rdd_d_q_thd = _x2*q_r
-    d_q_thd_d_q_r = 0.0
-    d_q_thd_d_q_rd = 0.0
-    d_q_thd_d_q_th = 0.0
-    d_q_thd_d_q_thd = 1.0
-    d_q_thdd_d_q_r = -_x1*_x3 + 2.0*_x3*q_rd*q_thd
-    d_q_thdd_d_q_rd = -_x2*_x4
-    d_q_thdd_d_q_th = _x4*g_s*math.cos(q_th)
-    d_q_thdd_d_q_thd = -2.0*_x4*q_rd
-    d_q_rd_d_k = 0.0
-    d_q_rdd_d_k = _x0*l0 - _x0*q_r
-    d_q_thd_d_k = 0.0
-    d_q_thdd_d_k = 0.0
-    return (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd, d_q_rdd_d_q_r, d_q_rdd_d_q_rd,
-        d_q_rdd_d_q_th, d_q_rdd_d_q_thd, d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd,
-        d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd, d_q_rd_d_k, d_q_rdd_d_k,
-        d_q_thd_d_k, d_q_thdd_d_k)
+    # Total ops: 38
+    _x3 = (1.0/q_r)
+    _x0 = g_s*math.sin(q_th)
+    _x1 = 2.0*q_thd
+    _x2 = (1.0/m)
+    _x4 = _x3**2
+    ds_q_r = s_q_rd
+    ds_q_rd = _x0*s_q_th + _x1*q_r*s_q_thd + s_k*(_x2*l0 - _x2*q_r) + s_q_r*(-_x2*k + q_thd**2)
+    ds_q_th = s_q_thd
+    ds_q_thd = (-_x1*_x3*s_q_rd + _x3*g_s*s_q_th*math.cos(q_th) - 2.0*_x3*q_rd*s_q_thd + s_q_r*(-_x0*_x4
+        + 2.0*_x4*q_rd*q_thd))
+    return (ds_q_r, ds_q_rd, ds_q_th, ds_q_thd)
 
 
 @njit(cache=True, error_model="numpy")

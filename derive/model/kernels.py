@@ -51,31 +51,38 @@ def _plain(name, summary, equations, args, fields, exprs) -> Kernel:
     )
 
 
-#: The polar state and its time derivative, component by component (rows of the Jacobian below).
-_STATE = (("q_r", "m"), ("q_rd", "m/s"), ("q_th", "rad"), ("q_thd", "rad/s"))
-_RATES = (("q_rd", "m/s"), ("q_rdd", "m/s^2"), ("q_thd", "rad/s"), ("q_thdd", "rad/s^2"))
+#: The polar state, component by component: its unit and its rate's.
+_STATE = (
+    ("q_r", "m", "m/s"),
+    ("q_rd", "m/s", "m/s^2"),
+    ("q_th", "rad", "rad/s"),
+    ("q_thd", "rad/s", "rad/s^2"),
+)
 
 
-def _stance_polar_jacobian() -> Kernel:
-    """d(stance_polar_rhs)/d(state) (row-major, ``d_<rate>_d_<state>``) and d/dk (``d_<rate>_d_k``):
-    the coefficients of the variational equations of the exact stance."""
+def _stance_polar_tangent() -> Kernel:
+    """The variational equations' right-hand side for one column s of the sensitivity S = dy/dw of
+    the polar stance state: ds/dt = J s + f_k s_k, J = d(stance_polar_rhs)/d(state) and f_k =
+    d(stance_polar_rhs)/dk, s_k = dk/dw (1 for the stiffness's own column, else 0). Written out,
+    the Jacobian's structural zeros and ones dropped (the exact simulator's Jacobian carries six
+    columns through every stage of its integration: runtime/exact/jacobian.py)."""
     rhs = sp.Matrix(mechanics.stance_polar_rhs())
-    jac = rhs.jacobian([q_r, q_rd, q_th, q_thd])
-    fields, exprs = [], []
-    for a, (rate, rate_unit) in enumerate(_RATES):
-        for b, (state, state_unit) in enumerate(_STATE):
-            fields.append((f"d_{rate}_d_{state}", f"d{rate}/d{state}", f"({rate_unit})/({state_unit})"))
-            exprs.append(jac[a, b])
-    for a, (rate, rate_unit) in enumerate(_RATES):
-        fields.append((f"d_{rate}_d_k", f"d{rate}/dk", f"({rate_unit})/(N/m)"))
-        exprs.append(sp.diff(rhs[a], k))
+    states = (q_r, q_rd, q_th, q_thd)
+    column = [sym(f"s_{name}") for name, _, _ in _STATE]
+    s_k = sym("s_k")
+    tangent = rhs.jacobian(states) * sp.Matrix(column) + sp.diff(rhs, k) * s_k
+    args = tuple(
+        Arg(c, f"d{name}/dw, the state's sensitivity to an input w [{unit} per unit of w]")
+        for c, (name, unit, _) in zip(column, _STATE, strict=True)
+    ) + (Arg(s_k, "dk/dw, the stiffness's sensitivity to w (1 for w = k, else 0) [N/m per unit of w]"),)
+    fields = [(f"ds_{name}", f"d/dt of d{name}/dw", f"{rate} per unit of w") for name, _, rate in _STATE]
     return _plain(
-        "stance_polar_jacobian",
-        "Jacobian of the polar stance vector field: d/d(q_r, q_rd, q_th, q_thd) row by row, then d/dk.",
+        "stance_polar_tangent",
+        "Variational equations of the polar stance field: d/dt (dy/dw) = J dy/dw + (df/dk) dk/dw.",
         ("2", "3", "sec2.2.1-polar"),
-        _POLAR_ARGS + _MODEL_PARAMS,
+        _POLAR_ARGS + args + _MODEL_PARAMS,
         fields,
-        exprs,
+        list(tangent),
     )
 
 
@@ -96,7 +103,7 @@ def slip_model_kernels() -> tuple[Kernel, ...]:
             ],
             mechanics.stance_polar_rhs(),
         ),
-        _stance_polar_jacobian(),
+        _stance_polar_tangent(),
         _plain(
             "stance_cartesian_rhs",
             "Cartesian stance vector field d/dt (b_x, b_xd, b_y, b_yd), toe at the origin on flat ground.",

@@ -6,8 +6,8 @@ k_c, k_d)`` (:data:`INPUTS`) to its outputs (:data:`OUTPUTS`, the stance columns
 same compiled DOP853 (:mod:`.dop853`), the polar state y together with its sensitivity
 S = dy(t)/dw (4 x 6) at fixed time t:
 
-* dS/dt = J(y, k) S + df/dk e_k^T, with J and df/dk the generated kernel
-  ``slip_model.stance_polar_jacobian`` (derived from the equations of motion (2)-(3)), k = k_c and
+* dS/dt = J(y, k) S + df/dk e_k^T, column by column the generated kernel
+  ``slip_model.stance_polar_tangent`` (derived from the equations of motion (2)-(3)), k = k_c and
   e_k the k_c column while compressing, k = k_d and the k_d column after the bottom; S = [I | 0 | 0]
   at touchdown;
 * the steps, the events and y are exactly those of :func:`.compiled.stance_into`: both run the
@@ -36,7 +36,7 @@ import math
 import numpy as np
 from numba import njit
 from slipmaps.generated import maps_index
-from slipmaps.generated.slip_model import stance_polar_jacobian
+from slipmaps.generated.slip_model import stance_polar_tangent
 
 from . import compiled as ec
 from . import dop853
@@ -58,62 +58,40 @@ T_BOTTOM, T_STANCE, BOTTOM, LIFTOFF = ec.T_BOTTOM, ec.T_STANCE, ec.BOTTOM, ec.LI
 OK = ec.OK
 if (Q_R, Q_RD, Q_TH, Q_THD) != tuple(range(N_POLAR)):
     raise RuntimeError("the integrated state must be in the polar order (q_r, q_rd, q_th, q_thd)")
+#: Where each state component's row of S starts in the augmented state.
+_S_Q_R, _S_Q_RD, _S_Q_TH, _S_Q_THD = (N_POLAR + N_IN * i for i in (Q_R, Q_RD, Q_TH, Q_THD))
 
 _JIT = {"cache": True, "error_model": "numpy"}
 
 
 @njit(**_JIT)
-def _jacobian(y, m, l0, k, g_s):
-    """(J, f_k): J = d(stance_polar_rhs)/dy as rows of a tuple and f_k = d(stance_polar_rhs)/dk,
-    both in the polar order of y (checked at import), read from the generated kernel by name."""
-    (
-        d_q_rd_d_q_r,
-        d_q_rd_d_q_rd,
-        d_q_rd_d_q_th,
-        d_q_rd_d_q_thd,
-        d_q_rdd_d_q_r,
-        d_q_rdd_d_q_rd,
-        d_q_rdd_d_q_th,
-        d_q_rdd_d_q_thd,
-        d_q_thd_d_q_r,
-        d_q_thd_d_q_rd,
-        d_q_thd_d_q_th,
-        d_q_thd_d_q_thd,
-        d_q_thdd_d_q_r,
-        d_q_thdd_d_q_rd,
-        d_q_thdd_d_q_th,
-        d_q_thdd_d_q_thd,
-        d_q_rd_d_k,
-        d_q_rdd_d_k,
-        d_q_thd_d_k,
-        d_q_thdd_d_k,
-    ) = stance_polar_jacobian(y[Q_R], y[Q_RD], y[Q_TH], y[Q_THD], m, l0, k, g_s)
-    J = (
-        (d_q_rd_d_q_r, d_q_rd_d_q_rd, d_q_rd_d_q_th, d_q_rd_d_q_thd),
-        (d_q_rdd_d_q_r, d_q_rdd_d_q_rd, d_q_rdd_d_q_th, d_q_rdd_d_q_thd),
-        (d_q_thd_d_q_r, d_q_thd_d_q_rd, d_q_thd_d_q_th, d_q_thd_d_q_thd),
-        (d_q_thdd_d_q_r, d_q_thdd_d_q_rd, d_q_thdd_d_q_th, d_q_thdd_d_q_thd),
-    )
-    f_k = (d_q_rd_d_k, d_q_rdd_d_k, d_q_thd_d_k, d_q_thdd_d_k)
-    return J, f_k
-
-
-@njit(**_JIT)
 def augmented_field(t, z, p, dz):
-    """d/dt (y, S): the stance field and its variational equations; p = (m, l0, k, g_s, column of k)."""
+    """d/dt (y, S): the stance field and its variational equations, S column by column
+    (``slip_model.stance_polar_tangent``); p = (m, l0, k, g_s, column of k)."""
     m, l0, k, g_s, k_column = p
     ec.polar_field(t, z, (m, l0, k, g_s), dz)
-    J, f_k = _jacobian(z, m, l0, k, g_s)
+    q_r, q_rd, q_th, q_thd = z[Q_R], z[Q_RD], z[Q_TH], z[Q_THD]
     col = int(k_column)
-    for i in range(N_POLAR):
-        row = J[i]
-        for j in range(N_IN):
-            acc = 0.0
-            for r in range(N_POLAR):
-                acc += row[r] * z[N_POLAR + N_IN * r + j]
-            if j == col:
-                acc += f_k[i]
-            dz[N_POLAR + N_IN * i + j] = acc
+    for j in range(N_IN):
+        d = stance_polar_tangent(
+            q_r,
+            q_rd,
+            q_th,
+            q_thd,
+            z[_S_Q_R + j],
+            z[_S_Q_RD + j],
+            z[_S_Q_TH + j],
+            z[_S_Q_THD + j],
+            1.0 if j == col else 0.0,
+            m,
+            l0,
+            k,
+            g_s,
+        )
+        dz[_S_Q_R + j] = d[Q_R]
+        dz[_S_Q_RD + j] = d[Q_RD]
+        dz[_S_Q_TH + j] = d[Q_TH]
+        dz[_S_Q_THD + j] = d[Q_THD]
 
 
 AUGMENTED_FIELD = dop853.static(augmented_field)

@@ -34,6 +34,8 @@ random stances, tests/test_exact_compiled.py). Each half's time limit is
 :func:`.reference.stance_time_limit` with its own stiffness for both springs. INVALID_INPUT
 (nothing integrated) for a non-finite argument, a state outside its domain (q_r outside (0, l0],
 |q_th| >= pi/2), parameters outside SlipParams' domain or non-positive tolerances.
+
+Each is inlined into the generated kernel that calls it (:data:`.compiled.INLINE`).
 """
 
 from __future__ import annotations
@@ -50,9 +52,6 @@ __all__ = ["STANCE_JACOBIAN_WRT", "compression", "decompression", "stance", "sta
 #: The inputs :func:`stance_jacobian` differentiates with respect to, in its column order.
 STANCE_JACOBIAN_WRT = ej.INPUTS
 
-#: Inlined into the generated kernels that call them (:data:`.compiled.INLINE`).
-_INLINE = ec.INLINE
-
 # numba builds fixed-length tuples only: the literal tuples below are 10 outputs and 10 x 6 entries.
 if ec.N_STANCE != 10 or (ej.N_OUT, ej.N_IN) != (10, 6):
     raise RuntimeError(
@@ -60,7 +59,7 @@ if ec.N_STANCE != 10 or (ej.N_OUT, ej.N_IN) != (10, 6):
     )
 
 
-@njit(**_INLINE)
+@njit(**ec.INLINE)
 def stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The exact stance from a polar touchdown state (:func:`.compiled.stance_into`)."""
     out = np.empty(ec.N_STANCE)
@@ -71,7 +70,7 @@ def stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rto
     return (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], code)
 
 
-@njit(**_INLINE)
+@njit(**ec.INLINE)
 def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The exact stance and its Jacobian with respect to :data:`STANCE_JACOBIAN_WRT`
     (:func:`.jacobian.jacobian_into`): the outputs of :func:`stance`, then the Jacobian row-major."""
@@ -94,7 +93,7 @@ def stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     )  # fmt: skip
 
 
-@njit(**_INLINE)
+@njit(**ec.INLINE)
 def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol):
     """The compression half, touchdown -> bottom with k_c (:func:`.compiled.half_into`):
     (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half the time of the bottom."""
@@ -106,7 +105,7 @@ def compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rto
     return (out[0], out[1], out[2], out[3], out[4], code)
 
 
-@njit(**_INLINE)
+@njit(**ec.INLINE)
 def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol, atol):
     """The decompression half, bottom -> liftoff with k_d (:func:`.compiled.half_into`; q_rd_b is
     not read, 0 at the bottom): (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, status), t_half
@@ -119,7 +118,7 @@ def decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, rtol,
     return (out[0], out[1], out[2], out[3], out[4], code)
 
 
-@njit(**_INLINE)
+@njit(**ec.INLINE)
 def state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
     """The polar state a time t after touchdown (:func:`.compiled.state_at_into`):
     (q_r, q_rd, q_th, q_thd, status).
