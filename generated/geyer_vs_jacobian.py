@@ -7,7 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:9b179765a87a1082
+#   geyer_jacobian.py sha256:74225526d15d5d94
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -37,34 +37,6 @@ def _store_row_13_91(out, status, i, res):
     derivatives from column 13, then the status) into ``out[i]`` and ``status[i]``; a row whose
     values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
     API reports it (runtime/api/jacobian.py)."""
-    if res[91] == STATUS_OK and not (math.isfinite(res[13]) and math.isfinite(res[14])
-            and math.isfinite(res[15]) and math.isfinite(res[16]) and math.isfinite(res[17])
-            and math.isfinite(res[18]) and math.isfinite(res[19]) and math.isfinite(res[20])
-            and math.isfinite(res[21]) and math.isfinite(res[22]) and math.isfinite(res[23])
-            and math.isfinite(res[24]) and math.isfinite(res[25]) and math.isfinite(res[26])
-            and math.isfinite(res[27]) and math.isfinite(res[28]) and math.isfinite(res[29])
-            and math.isfinite(res[30]) and math.isfinite(res[31]) and math.isfinite(res[32])
-            and math.isfinite(res[33]) and math.isfinite(res[34]) and math.isfinite(res[35])
-            and math.isfinite(res[36]) and math.isfinite(res[37]) and math.isfinite(res[38])
-            and math.isfinite(res[39]) and math.isfinite(res[40]) and math.isfinite(res[41])
-            and math.isfinite(res[42]) and math.isfinite(res[43]) and math.isfinite(res[44])
-            and math.isfinite(res[45]) and math.isfinite(res[46]) and math.isfinite(res[47])
-            and math.isfinite(res[48]) and math.isfinite(res[49]) and math.isfinite(res[50])
-            and math.isfinite(res[51]) and math.isfinite(res[52]) and math.isfinite(res[53])
-            and math.isfinite(res[54]) and math.isfinite(res[55]) and math.isfinite(res[56])
-            and math.isfinite(res[57]) and math.isfinite(res[58]) and math.isfinite(res[59])
-            and math.isfinite(res[60]) and math.isfinite(res[61]) and math.isfinite(res[62])
-            and math.isfinite(res[63]) and math.isfinite(res[64]) and math.isfinite(res[65])
-            and math.isfinite(res[66]) and math.isfinite(res[67]) and math.isfinite(res[68])
-            and math.isfinite(res[69]) and math.isfinite(res[70]) and math.isfinite(res[71])
-            and math.isfinite(res[72]) and math.isfinite(res[73]) and math.isfinite(res[74])
-            and math.isfinite(res[75]) and math.isfinite(res[76]) and math.isfinite(res[77])
-            and math.isfinite(res[78]) and math.isfinite(res[79]) and math.isfinite(res[80])
-            and math.isfinite(res[81]) and math.isfinite(res[82]) and math.isfinite(res[83])
-            and math.isfinite(res[84]) and math.isfinite(res[85]) and math.isfinite(res[86])
-            and math.isfinite(res[87]) and math.isfinite(res[88]) and math.isfinite(res[89])
-            and math.isfinite(res[90])):
-        res = _NAN91 + (STATUS_NUMERICAL_RANGE,)
     (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
         9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
         out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
@@ -76,6 +48,16 @@ def _store_row_13_91(out, status, i, res):
         out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
         77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], out[i, 84], out[i, 85],
         out[i, 86], out[i, 87], out[i, 88], out[i, 89], out[i, 90], status[i]) = res
+    if status[i] == STATUS_OK:
+        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
+        finite = True
+        for j in range(13, 91):
+            v = out[i, j]
+            finite &= v - v == 0.0
+        if not finite:
+            for j in range(91):
+                out[i, j] = math.nan
+            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -84,38 +66,6 @@ def _store_row_15_105(out, status, i, res):
     derivatives from column 15, then the status) into ``out[i]`` and ``status[i]``; a row whose
     values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
     API reports it (runtime/api/jacobian.py)."""
-    if res[105] == STATUS_OK and not (math.isfinite(res[15]) and math.isfinite(res[16])
-            and math.isfinite(res[17]) and math.isfinite(res[18]) and math.isfinite(res[19])
-            and math.isfinite(res[20]) and math.isfinite(res[21]) and math.isfinite(res[22])
-            and math.isfinite(res[23]) and math.isfinite(res[24]) and math.isfinite(res[25])
-            and math.isfinite(res[26]) and math.isfinite(res[27]) and math.isfinite(res[28])
-            and math.isfinite(res[29]) and math.isfinite(res[30]) and math.isfinite(res[31])
-            and math.isfinite(res[32]) and math.isfinite(res[33]) and math.isfinite(res[34])
-            and math.isfinite(res[35]) and math.isfinite(res[36]) and math.isfinite(res[37])
-            and math.isfinite(res[38]) and math.isfinite(res[39]) and math.isfinite(res[40])
-            and math.isfinite(res[41]) and math.isfinite(res[42]) and math.isfinite(res[43])
-            and math.isfinite(res[44]) and math.isfinite(res[45]) and math.isfinite(res[46])
-            and math.isfinite(res[47]) and math.isfinite(res[48]) and math.isfinite(res[49])
-            and math.isfinite(res[50]) and math.isfinite(res[51]) and math.isfinite(res[52])
-            and math.isfinite(res[53]) and math.isfinite(res[54]) and math.isfinite(res[55])
-            and math.isfinite(res[56]) and math.isfinite(res[57]) and math.isfinite(res[58])
-            and math.isfinite(res[59]) and math.isfinite(res[60]) and math.isfinite(res[61])
-            and math.isfinite(res[62]) and math.isfinite(res[63]) and math.isfinite(res[64])
-            and math.isfinite(res[65]) and math.isfinite(res[66]) and math.isfinite(res[67])
-            and math.isfinite(res[68]) and math.isfinite(res[69]) and math.isfinite(res[70])
-            and math.isfinite(res[71]) and math.isfinite(res[72]) and math.isfinite(res[73])
-            and math.isfinite(res[74]) and math.isfinite(res[75]) and math.isfinite(res[76])
-            and math.isfinite(res[77]) and math.isfinite(res[78]) and math.isfinite(res[79])
-            and math.isfinite(res[80]) and math.isfinite(res[81]) and math.isfinite(res[82])
-            and math.isfinite(res[83]) and math.isfinite(res[84]) and math.isfinite(res[85])
-            and math.isfinite(res[86]) and math.isfinite(res[87]) and math.isfinite(res[88])
-            and math.isfinite(res[89]) and math.isfinite(res[90]) and math.isfinite(res[91])
-            and math.isfinite(res[92]) and math.isfinite(res[93]) and math.isfinite(res[94])
-            and math.isfinite(res[95]) and math.isfinite(res[96]) and math.isfinite(res[97])
-            and math.isfinite(res[98]) and math.isfinite(res[99]) and math.isfinite(res[100])
-            and math.isfinite(res[101]) and math.isfinite(res[102]) and math.isfinite(res[103])
-            and math.isfinite(res[104])):
-        res = _NAN105 + (STATUS_NUMERICAL_RANGE,)
     (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
         9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
         out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
@@ -129,6 +79,16 @@ def _store_row_15_105(out, status, i, res):
         out[i, 86], out[i, 87], out[i, 88], out[i, 89], out[i, 90], out[i, 91], out[i, 92], out[i, 93], out[i,
         94], out[i, 95], out[i, 96], out[i, 97], out[i, 98], out[i, 99], out[i, 100], out[i, 101], out[i,
         102], out[i, 103], out[i, 104], status[i]) = res
+    if status[i] == STATUS_OK:
+        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
+        finite = True
+        for j in range(15, 105):
+            v = out[i, j]
+            finite &= v - v == 0.0
+        if not finite:
+            for j in range(105):
+                out[i, j] = math.nan
+            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")

@@ -7,14 +7,14 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:9b179765a87a1082
-#   geyer_vs_jacobian.py sha256:ce3275fe2a45ba70
-#   gravity_type0_jacobian.py sha256:eb43f86438df132f
-#   gravity_type1_jacobian.py sha256:eafe299fba0e819c
-#   gravity_type2_jacobian.py sha256:f96b8ec65e3b4ad4
-#   gravity_type3_jacobian.py sha256:9b04d2a5368d3c46
-#   gravity_type4_jacobian.py sha256:9896e7ba0d4d662e
-#   gravity_type5_jacobian.py sha256:0a0aa41f63c3b0e3
+#   geyer_jacobian.py sha256:74225526d15d5d94
+#   geyer_vs_jacobian.py sha256:626e8d18ae1d1ad9
+#   gravity_type0_jacobian.py sha256:4e0b614bd1644911
+#   gravity_type1_jacobian.py sha256:5d9940032869f72f
+#   gravity_type2_jacobian.py sha256:67f319fee552f951
+#   gravity_type3_jacobian.py sha256:a43856db1847744c
+#   gravity_type4_jacobian.py sha256:aa7cba3edb2708b4
+#   gravity_type5_jacobian.py sha256:c18bbd409c3cdd3d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -50,28 +50,6 @@ def _store_row_10_70(out, status, i, res):
     derivatives from column 10, then the status) into ``out[i]`` and ``status[i]``; a row whose
     values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
     API reports it (runtime/api/jacobian.py)."""
-    if res[70] == STATUS_OK and not (math.isfinite(res[10]) and math.isfinite(res[11])
-            and math.isfinite(res[12]) and math.isfinite(res[13]) and math.isfinite(res[14])
-            and math.isfinite(res[15]) and math.isfinite(res[16]) and math.isfinite(res[17])
-            and math.isfinite(res[18]) and math.isfinite(res[19]) and math.isfinite(res[20])
-            and math.isfinite(res[21]) and math.isfinite(res[22]) and math.isfinite(res[23])
-            and math.isfinite(res[24]) and math.isfinite(res[25]) and math.isfinite(res[26])
-            and math.isfinite(res[27]) and math.isfinite(res[28]) and math.isfinite(res[29])
-            and math.isfinite(res[30]) and math.isfinite(res[31]) and math.isfinite(res[32])
-            and math.isfinite(res[33]) and math.isfinite(res[34]) and math.isfinite(res[35])
-            and math.isfinite(res[36]) and math.isfinite(res[37]) and math.isfinite(res[38])
-            and math.isfinite(res[39]) and math.isfinite(res[40]) and math.isfinite(res[41])
-            and math.isfinite(res[42]) and math.isfinite(res[43]) and math.isfinite(res[44])
-            and math.isfinite(res[45]) and math.isfinite(res[46]) and math.isfinite(res[47])
-            and math.isfinite(res[48]) and math.isfinite(res[49]) and math.isfinite(res[50])
-            and math.isfinite(res[51]) and math.isfinite(res[52]) and math.isfinite(res[53])
-            and math.isfinite(res[54]) and math.isfinite(res[55]) and math.isfinite(res[56])
-            and math.isfinite(res[57]) and math.isfinite(res[58]) and math.isfinite(res[59])
-            and math.isfinite(res[60]) and math.isfinite(res[61]) and math.isfinite(res[62])
-            and math.isfinite(res[63]) and math.isfinite(res[64]) and math.isfinite(res[65])
-            and math.isfinite(res[66]) and math.isfinite(res[67]) and math.isfinite(res[68])
-            and math.isfinite(res[69])):
-        res = _NAN70 + (STATUS_NUMERICAL_RANGE,)
     (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
         9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
         out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
@@ -81,6 +59,16 @@ def _store_row_10_70(out, status, i, res):
         out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
         60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
         out[i, 69], status[i]) = res
+    if status[i] == STATUS_OK:
+        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
+        finite = True
+        for j in range(10, 70):
+            v = out[i, j]
+            finite &= v - v == 0.0
+        if not finite:
+            for j in range(70):
+                out[i, j] = math.nan
+            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -89,32 +77,6 @@ def _store_row_12_84(out, status, i, res):
     derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
     values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
     API reports it (runtime/api/jacobian.py)."""
-    if res[84] == STATUS_OK and not (math.isfinite(res[12]) and math.isfinite(res[13])
-            and math.isfinite(res[14]) and math.isfinite(res[15]) and math.isfinite(res[16])
-            and math.isfinite(res[17]) and math.isfinite(res[18]) and math.isfinite(res[19])
-            and math.isfinite(res[20]) and math.isfinite(res[21]) and math.isfinite(res[22])
-            and math.isfinite(res[23]) and math.isfinite(res[24]) and math.isfinite(res[25])
-            and math.isfinite(res[26]) and math.isfinite(res[27]) and math.isfinite(res[28])
-            and math.isfinite(res[29]) and math.isfinite(res[30]) and math.isfinite(res[31])
-            and math.isfinite(res[32]) and math.isfinite(res[33]) and math.isfinite(res[34])
-            and math.isfinite(res[35]) and math.isfinite(res[36]) and math.isfinite(res[37])
-            and math.isfinite(res[38]) and math.isfinite(res[39]) and math.isfinite(res[40])
-            and math.isfinite(res[41]) and math.isfinite(res[42]) and math.isfinite(res[43])
-            and math.isfinite(res[44]) and math.isfinite(res[45]) and math.isfinite(res[46])
-            and math.isfinite(res[47]) and math.isfinite(res[48]) and math.isfinite(res[49])
-            and math.isfinite(res[50]) and math.isfinite(res[51]) and math.isfinite(res[52])
-            and math.isfinite(res[53]) and math.isfinite(res[54]) and math.isfinite(res[55])
-            and math.isfinite(res[56]) and math.isfinite(res[57]) and math.isfinite(res[58])
-            and math.isfinite(res[59]) and math.isfinite(res[60]) and math.isfinite(res[61])
-            and math.isfinite(res[62]) and math.isfinite(res[63]) and math.isfinite(res[64])
-            and math.isfinite(res[65]) and math.isfinite(res[66]) and math.isfinite(res[67])
-            and math.isfinite(res[68]) and math.isfinite(res[69]) and math.isfinite(res[70])
-            and math.isfinite(res[71]) and math.isfinite(res[72]) and math.isfinite(res[73])
-            and math.isfinite(res[74]) and math.isfinite(res[75]) and math.isfinite(res[76])
-            and math.isfinite(res[77]) and math.isfinite(res[78]) and math.isfinite(res[79])
-            and math.isfinite(res[80]) and math.isfinite(res[81]) and math.isfinite(res[82])
-            and math.isfinite(res[83])):
-        res = _NAN84 + (STATUS_NUMERICAL_RANGE,)
     (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
         9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
         out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
@@ -125,6 +87,16 @@ def _store_row_12_84(out, status, i, res):
         60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
         out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
         77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], status[i]) = res
+    if status[i] == STATUS_OK:
+        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
+        finite = True
+        for j in range(12, 84):
+            v = out[i, j]
+            finite &= v - v == 0.0
+        if not finite:
+            for j in range(84):
+                out[i, j] = math.nan
+            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")

@@ -241,3 +241,64 @@ def test_readme_derivatives_example_runs():
     exec(compile(section_block(page, "Python API"), page, "exec"), namespace)  # noqa: S102 - the project's docs
     exec(compile(section_block(page, "Derivatives"), page, "exec"), namespace)  # noqa: S102
     assert namespace["jac"].ok and namespace["jac"].inputs[-1] == "k"
+
+
+def _row_stores() -> list[tuple[str, str]]:
+    """(module, function) of every layout of a Jacobian batch's row store in generated/
+    (``_store_row_<first>_<n>``: the derivatives from column ``first`` of ``n`` outputs; one template
+    writes them all), each from the first module that has it."""
+    from pathlib import Path
+
+    from slipmaps import generated as package
+
+    generated = Path(package.__file__).resolve().parent
+    found = []
+    for path in sorted(generated.glob("*_jacobian.py")):
+        for line in path.read_text().splitlines():
+            if line.startswith("def _store_row_"):
+                found.append((path.stem, line[4 : line.index("(")]))
+    return list({store: (module, store) for module, store in reversed(found)}.values())
+
+
+ROW_STORES = _row_stores()
+
+
+def test_row_stores_found():
+    assert len(ROW_STORES) >= 2  # the stance and the apex-return layouts at least
+
+
+@pytest.mark.parametrize("module, store", ROW_STORES)
+def test_batch_row_store_flags_a_derivative_that_is_not_finite(module, store):
+    """A batch row whose values exist but a derivative does not (inf or NaN, at the first or the
+    last derivative column) is NUMERICAL_RANGE with NaN everywhere, as the scalar API reports it; a
+    finite row, a non-finite value (not a derivative) and a failed row are stored as they are."""
+    import importlib
+
+    fn = getattr(importlib.import_module(f"slipmaps.generated.{module}"), store)
+    first, n = map(int, store.removeprefix("_store_row_").split("_"))
+    ok, failed, numerical = (
+        int(s) for s in (slipmaps.Status.OK, slipmaps.Status.FALL, slipmaps.Status.NUMERICAL_RANGE)
+    )
+    out = np.zeros((2, n))
+    status = np.zeros(2, dtype=np.int64)
+    good = tuple(float(j) for j in range(n))
+
+    def store(values, code):
+        fn(out, status, 1, (*values, code))
+        return out[1].copy(), int(status[1])
+
+    row, code = store(good, ok)
+    assert code == ok and np.array_equal(row, good)
+    for column in (first, n - 1):
+        for bad in (np.inf, -np.inf, np.nan):
+            values = list(good)
+            values[column] = bad
+            row, code = store(values, ok)
+            assert code == numerical and np.isnan(row).all(), (column, bad)
+            row, code = store(values, failed)  # a failed row is not checked again
+            assert code == failed and np.array_equal(row, values, equal_nan=True)
+    values = list(good)
+    values[first - 1] = np.inf  # a value, not a derivative
+    row, code = store(values, ok)
+    assert code == ok and np.array_equal(row, values)
+    assert np.array_equal(out[0], np.zeros(n)) and status[0] == 0  # only row 1 written
