@@ -316,8 +316,9 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0
@@ -563,8 +564,9 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
-            and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
+        _conv0 = (tol > 0.0 and (abs(_n0_0 - P_c_compression) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + abs(p_td))) and (abs(_n0_1 - P_c_decompression) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + abs(p_td))))
         P_c_compression = _n0_0
         P_c_decompression = _n0_1
         passes += 1.0

@@ -181,18 +181,18 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     d_q_start__p = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
     _x54 = (0.5)*_x4
     _x55 = _x54/_x14
-    _x56 = _x16*_x21/_x18**(1.5)
+    _x56 = _x16*_x21/(_x18*math.sqrt(_x18))
     _x57 = (1.0/_x35)
     _x58 = _x34*_x57
     _x59 = _x4*_x58
-    _x60 = (0.25)*_x21*_x36*_x41/_x42**(1.5)
+    _x60 = (0.25)*_x21*_x36*_x41/(_x42*math.sqrt(_x42))
     _x61 = _x39*_x60
     _x62 = _x47*_x60
     d_q_start__E_ab = ((0.5)*_x51*_x52*(_x46*(-_x27*_x59 - _x61) + _x49*(-_x48*_x59 + _x62)) - _x55
         - 0.125*_x56)
     _x63 = _x73**2
     _x64 = _x1*_x63
-    _x65 = k_c**(-1.5)
+    _x65 = (1.0/(k_c*math.sqrt(k_c)))
     _x66 = _x63*g_s**2*m**2
     _x67 = _x2*l0
     _x68 = (0.5)*_x10 + _x66 - _x67
@@ -1024,8 +1024,8 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(P_c_compression__next - P_c_compression)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))) and (abs(P_c_decompression__next
-            - P_c_decompression) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td))) and (abs(P_c_decompression__next
+            - P_c_decompression) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td))))
         _pkn0 = (P_c_compression__next, P_c_decompression__next, d_i_P_new1__q_r_td, d_i_P_new1__q_rd_td,
             d_i_P_new1__q_th_td, d_i_P_new1__q_thd_td, d_i_P_new1__k_c, d_i_P_new1__k_d, d_i_P_new2__q_r_td,
             d_i_P_new2__q_rd_td, d_i_P_new2__q_th_td, d_i_P_new2__q_thd_td, d_i_P_new2__k_c, d_i_P_new2__k_d,

@@ -166,7 +166,7 @@ def gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
     # the rates from the momentum at that instant; p_td + P_c at liftoff, eq (50)
@@ -349,7 +349,7 @@ def gravity_type1_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = tol > 0.0 and (abs(_n0_0 - P_c) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td)))
         P_c = _n0_0
         passes += 1.0
     phase_t = i_omega0_hat*t + i_phase_td

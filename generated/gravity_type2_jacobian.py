@@ -545,7 +545,7 @@ def gravity_type2_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         P_c__next = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
-        _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + abs(p_td)))
+        _conv0 = tol > 0.0 and (abs(P_c__next - P_c) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + abs(p_td)))
         _pkn0 = (P_c__next, d_i_P_new__q_r_td, d_i_P_new__q_rd_td, d_i_P_new__q_th_td, d_i_P_new__q_thd_td,
             d_i_P_new__k, )
         _pk0 = _pkn0

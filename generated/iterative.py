@@ -8,12 +8,12 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:8b20bd5230ccfe19
 #   geyer.py sha256:4737273d6d8636d4
-#   geyer_vs.py sha256:23fefd20e2142c29
-#   gravity_type0.py sha256:3f597486f60af083
-#   gravity_type1.py sha256:47ae110acc72b82a
-#   gravity_type2.py sha256:088717b5bb9ef1ba
-#   gravity_type3.py sha256:ce520639bb1c9138
-#   gravity_type4.py sha256:8d3a969bccac09bf
+#   geyer_vs.py sha256:2af0829e07a0cf1b
+#   gravity_type0.py sha256:307fd5b7e0072824
+#   gravity_type1.py sha256:46607008446ed15d
+#   gravity_type2.py sha256:97fb4f568b945f42
+#   gravity_type3.py sha256:d4ac1d04e125ac4a
+#   gravity_type4.py sha256:81186cbbb1247b9f
 #   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
@@ -152,7 +152,7 @@ def schwind_compression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _x33 = math.sqrt(m)
         _x34 = _x32*_x33
         _x35 = _x32/_x33
-        _x36 = _x32*g_s*m**(1.5)
+        _x36 = _x32*g_s*(m*math.sqrt(m))
         _x37 = (-0.39252437029865583*_x11 - 0.39252437029865583*_x12 + 0.39252437029865583*_x13*_x14*_x7
             + 0.0700094015044783*_x16*k_c + 0.0700094015044783*_x17*g_s*m - 0.0700094015044783*_x22
             - 0.017475652789475504*_x25 - 0.017475652789475504*_x26 + 0.017475652789475504*_x27*_x28*_x7
@@ -237,10 +237,11 @@ def schwind_compression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
-            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd)))
-            and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_7
-            - _P2) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_7 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -382,7 +383,7 @@ def schwind_decompression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _x32 = math.sqrt(m)
         _x33 = _x31*_x32
         _x34 = _x31/_x32
-        _x35 = _x31*g_s*m**(1.5)
+        _x35 = _x31*g_s*(m*math.sqrt(m))
         _x36 = (-0.39252437029865583*_x10 - 0.39252437029865583*_x11 + 0.39252437029865583*_x12*_x13*_x6
             + 0.0700094015044783*_x15*k_d + 0.0700094015044783*_x16*g_s*m - 0.0700094015044783*_x21
             - 0.017475652789475504*_x24 - 0.017475652789475504*_x25 + 0.017475652789475504*_x26*_x27*_x6
@@ -460,10 +461,11 @@ def schwind_decompression_nodes_4(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
-            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd)))
-            and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_7
-            - _P2) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_7 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -545,7 +547,7 @@ def schwind_compression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _iPsi0 = _x5
         _ift0 = _x6*_x7
         _ifq0 = _P0*_x7*_x8**2/_x6
-        _ifp0 = _x0*_x7*g_s*m**(1.5)*math.sin(_Q0)
+        _ifp0 = _x0*_x7*g_s*(m*math.sqrt(m))*math.sin(_Q0)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -558,7 +560,7 @@ def schwind_compression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _P0 = _n0_2
@@ -634,7 +636,7 @@ def schwind_decompression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _iPsi0 = _x5
         _ift0 = _x6*_x7
         _ifq0 = _P0*_x7*_x8**2/_x6
-        _ifp0 = _x0*_x7*g_s*m**(1.5)*math.sin(_Q0)
+        _ifp0 = _x0*_x7*g_s*(m*math.sqrt(m))*math.sin(_Q0)
         # p_r^2 = 2 m int F_r > 0 at every node
         if not ((_iPsi0 > 0.0)):
             return _NAN6 + (STATUS_IMAGINARY_MOMENTUM,)
@@ -646,7 +648,7 @@ def schwind_decompression_nodes_1(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_2 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _P0 = _n0_2
@@ -731,7 +733,7 @@ def schwind_compression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _x19 = math.sqrt(m)
         _x20 = _x18*_x19
         _x21 = _x18/_x19
-        _x22 = _x18*g_s*m**(1.5)
+        _x22 = _x18*g_s*(m*math.sqrt(m))
         _x23 = (-0.27232909936926025*_x11 - 0.27232909936926025*_x12 + 0.27232909936926025*_x13*_x14*_x7
             - 0.22767090063073978*_x4 - 0.22767090063073978*_x5 + 0.22767090063073978*_x6*_x7*_x8
             + 0.5*k_c*l0)
@@ -768,9 +770,9 @@ def schwind_compression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -860,7 +862,7 @@ def schwind_decompression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _x18 = math.sqrt(m)
         _x19 = _x17*_x18
         _x20 = _x17/_x18
-        _x21 = _x17*g_s*m**(1.5)
+        _x21 = _x17*g_s*(m*math.sqrt(m))
         _x22 = (-0.27232909936926025*_x10 - 0.27232909936926025*_x11 + 0.27232909936926025*_x12*_x13*_x6
             - 0.22767090063073978*_x3 - 0.22767090063073978*_x4 + 0.22767090063073978*_x5*_x6*_x7
             + 0.5*k_d*l0)
@@ -893,9 +895,9 @@ def schwind_decompression_nodes_2(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
-            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m
-            + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _P0)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_4 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -992,7 +994,7 @@ def schwind_compression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _x25 = math.sqrt(m)
         _x26 = _x24*_x25
         _x27 = _x24/_x25
-        _x28 = _x24*g_s*m**(1.5)
+        _x28 = _x24*g_s*(m*math.sqrt(m))
         _x29 = (-0.3611111111111111*_x11 - 0.3611111111111111*_x12 + 0.3611111111111111*_x15
             + 0.038138426283539355*_x17 + 0.038138426283539355*_x18 + 0.5*_x2 - 0.038138426283539355*_x21
             - 0.17702731517242826*_x4 - 0.17702731517242826*_x5 + 0.17702731517242826*_x9)
@@ -1050,9 +1052,9 @@ def schwind_compression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -1155,7 +1157,7 @@ def schwind_decompression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _x24 = math.sqrt(m)
         _x25 = _x23*_x24
         _x26 = _x23/_x24
-        _x27 = _x23*g_s*m**(1.5)
+        _x27 = _x23*g_s*(m*math.sqrt(m))
         _x28 = (0.5*_x1 - 0.3611111111111111*_x10 - 0.3611111111111111*_x11 + 0.3611111111111111*_x14
             + 0.038138426283539355*_x16 + 0.038138426283539355*_x17 - 0.038138426283539355*_x20
             - 0.17702731517242826*_x3 - 0.17702731517242826*_x4 + 0.17702731517242826*_x8)
@@ -1208,9 +1210,9 @@ def schwind_decompression_nodes_3(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -1344,7 +1346,7 @@ def schwind_compression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _x47 = math.sqrt(m)
         _x48 = _x46*_x47
         _x49 = _x46/_x47
-        _x50 = _x46*g_s*m**(1.5)
+        _x50 = _x46*g_s*(m*math.sqrt(m))
         _x51 = -0.5*k_c*l0
         _x52 = (-0.41567911405660357*_x11 - 0.41567911405660357*_x12 + 0.41567911405660357*_x13*_x14*_x7
             + 0.09720828549085844*_x16*k_c + 0.09720828549085844*_x17*g_s*m - 0.09720828549085844*_x22
@@ -1488,12 +1490,12 @@ def schwind_compression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
             <= tol*(1.0)) and (abs(_n0_5 - _Q4) <= tol*(1.0)) and (abs(_n0_6 - _Q5) <= tol*(1.0))
-            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8
-            - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_9 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_10 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_11 - _P4)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_12 - _P5)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_8 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_9 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_10 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_11 - _P4) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_12 - _P5) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -1639,7 +1641,7 @@ def schwind_decompression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _x46 = math.sqrt(m)
         _x47 = _x45*_x46
         _x48 = _x45/_x46
-        _x49 = _x45*g_s*m**(1.5)
+        _x49 = _x45*g_s*(m*math.sqrt(m))
         _x50 = -0.5*k_d*l0
         _x51 = (-0.41567911405660357*_x10 - 0.41567911405660357*_x11 + 0.41567911405660357*_x12*_x13*_x6
             + 0.09720828549085844*_x15*k_d + 0.09720828549085844*_x16*g_s*m - 0.09720828549085844*_x21
@@ -1774,12 +1776,12 @@ def schwind_decompression_nodes_6(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_l
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
             <= tol*(1.0)) and (abs(_n0_5 - _Q4) <= tol*(1.0)) and (abs(_n0_6 - _Q5) <= tol*(1.0))
-            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8
-            - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_9 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_10 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_11 - _P4)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_12 - _P5)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_8 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_9 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_10 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_11 - _P4) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_12 - _P5) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2

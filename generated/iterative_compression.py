@@ -7,14 +7,14 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:4737273d6d8636d4
-#   geyer_vs.py sha256:23fefd20e2142c29
-#   gravity_type0.py sha256:3f597486f60af083
-#   gravity_type1.py sha256:47ae110acc72b82a
-#   gravity_type2.py sha256:088717b5bb9ef1ba
-#   gravity_type3.py sha256:ce520639bb1c9138
-#   gravity_type4.py sha256:8d3a969bccac09bf
+#   geyer_vs.py sha256:2af0829e07a0cf1b
+#   gravity_type0.py sha256:307fd5b7e0072824
+#   gravity_type1.py sha256:46607008446ed15d
+#   gravity_type2.py sha256:97fb4f568b945f42
+#   gravity_type3.py sha256:d4ac1d04e125ac4a
+#   gravity_type4.py sha256:81186cbbb1247b9f
 #   gravity_type5.py sha256:f4510b5010050beb
-#   iterative.py sha256:9159ebc4db2cb073
+#   iterative.py sha256:308e9d4f124ced69
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""

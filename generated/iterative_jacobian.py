@@ -8,12 +8,12 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
 #   geyer_jacobian.py sha256:74225526d15d5d94
-#   geyer_vs_jacobian.py sha256:626e8d18ae1d1ad9
-#   gravity_type0_jacobian.py sha256:4e0b614bd1644911
-#   gravity_type1_jacobian.py sha256:5d9940032869f72f
-#   gravity_type2_jacobian.py sha256:67f319fee552f951
-#   gravity_type3_jacobian.py sha256:a43856db1847744c
-#   gravity_type4_jacobian.py sha256:aa7cba3edb2708b4
+#   geyer_vs_jacobian.py sha256:7c3772d5423255e3
+#   gravity_type0_jacobian.py sha256:7deb1d73ca0e6e26
+#   gravity_type1_jacobian.py sha256:1b8597ef172a67d1
+#   gravity_type2_jacobian.py sha256:ffc9be41c5d5622c
+#   gravity_type3_jacobian.py sha256:ccf750d1c7a1bf39
+#   gravity_type4_jacobian.py sha256:234e02501c4a0960
 #   gravity_type5_jacobian.py sha256:c18bbd409c3cdd3d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
@@ -349,7 +349,7 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x61 = (0.5)/_x58
         _x62 = _x59*_x61
         _pd__32 = _x57*_x62
-        _x63 = _x56**(-1.5)
+        _x63 = (1.0/(_x56*math.sqrt(_x56)))
         _x64 = (0.5)*_x60
         _pd__33 = -_x63*_x64
         _x65 = (1.0/_x59)
@@ -364,7 +364,7 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x71 = (0.5)*_x66
         _pd__36 = -_P0*_x63*_x67*_x71
         _pd__37 = -_x17*_x20*_x57*_x66
-        _x72 = g_s*m**(1.5)
+        _x72 = g_s*(m*math.sqrt(m))
         _x73 = _x58*_x72
         _x74 = _x57*_x73
         _x75 = _x21*_x74
@@ -385,7 +385,7 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x80 = (1.0/math.sqrt(_x79))
         _ift1 = _x60*_x80
         _pd__42 = _x62*_x80
-        _x81 = _x79**(-1.5)
+        _x81 = (1.0/(_x79*math.sqrt(_x79)))
         _pd__43 = -_x64*_x81
         _x82 = _x106**2
         _x83 = _x80*_x82
@@ -412,7 +412,7 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x89 = (1.0/math.sqrt(_x88))
         _ift2 = _x60*_x89
         _pd__52 = _x62*_x89
-        _x90 = _x88**(-1.5)
+        _x90 = (1.0/(_x88*math.sqrt(_x88)))
         _pd__53 = -_x64*_x90
         _x91 = _x107**2
         _x92 = _x89*_x91
@@ -439,7 +439,7 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x98 = (1.0/math.sqrt(_x97))
         _ift3 = _x60*_x98
         _pd__62 = _x62*_x98
-        _x99 = _x97**(-1.5)
+        _x99 = (1.0/(_x97*math.sqrt(_x97)))
         _pd__63 = -_x64*_x99
         _x100 = _x108**2
         _x101 = _x100*_x98
@@ -686,10 +686,11 @@ def schwind_compression_nodes_4_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
-            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd)))
-            and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_7
-            - _P2) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_7 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -995,7 +996,7 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x53 = (0.5)/_x50
         _x54 = _x51*_x53
         _pd__28 = _x49*_x54
-        _x55 = _x48**(-1.5)
+        _x55 = (1.0/(_x48*math.sqrt(_x48)))
         _x56 = (0.5)*_x52
         _pd__29 = -_x55*_x56
         _x57 = (1.0/_x51)
@@ -1010,7 +1011,7 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x63 = (0.5)*_x58
         _pd__32 = -_P0*_x55*_x59*_x63
         _pd__33 = -_x11*_x14*_x49*_x58
-        _x64 = g_s*m**(1.5)
+        _x64 = g_s*(m*math.sqrt(m))
         _x65 = _x50*_x64
         _x66 = _x49*_x65
         _x67 = _x15*_x66
@@ -1031,7 +1032,7 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x72 = (1.0/math.sqrt(_x71))
         _ift1 = _x52*_x72
         _pd__38 = _x54*_x72
-        _x73 = _x71**(-1.5)
+        _x73 = (1.0/(_x71*math.sqrt(_x71)))
         _pd__39 = -_x56*_x73
         _x74 = _x98**2
         _x75 = _x72*_x74
@@ -1058,7 +1059,7 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x81 = (1.0/math.sqrt(_x80))
         _ift2 = _x52*_x81
         _pd__48 = _x54*_x81
-        _x82 = _x80**(-1.5)
+        _x82 = (1.0/(_x80*math.sqrt(_x80)))
         _pd__49 = -_x56*_x82
         _x83 = _x99**2
         _x84 = _x81*_x83
@@ -1085,7 +1086,7 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x90 = (1.0/math.sqrt(_x89))
         _ift3 = _x52*_x90
         _pd__58 = _x54*_x90
-        _x91 = _x89**(-1.5)
+        _x91 = (1.0/(_x89*math.sqrt(_x89)))
         _pd__59 = -_x56*_x91
         _x92 = _x101**2
         _x93 = _x90*_x92
@@ -1261,10 +1262,11 @@ def schwind_decompression_nodes_4_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
-            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd)))
-            and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_7
-            - _P2) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_7 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -3832,7 +3834,7 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x61 = (0.5)/_x58
         _x62 = _x59*_x61
         _pd__32 = _x57*_x62
-        _x63 = _x56**(-1.5)
+        _x63 = (1.0/(_x56*math.sqrt(_x56)))
         _x64 = (0.5)*_x60
         _pd__33 = -_x63*_x64
         _x65 = (1.0/_x59)
@@ -3847,7 +3849,7 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x71 = (0.5)*_x66
         _pd__36 = -_P0*_x63*_x67*_x71
         _pd__37 = -_x17*_x20*_x57*_x66
-        _x72 = g_s*m**(1.5)
+        _x72 = g_s*(m*math.sqrt(m))
         _x73 = _x58*_x72
         _x74 = _x57*_x73
         _x75 = _x21*_x74
@@ -3868,7 +3870,7 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x80 = (1.0/math.sqrt(_x79))
         _ift1 = _x60*_x80
         _pd__42 = _x62*_x80
-        _x81 = _x79**(-1.5)
+        _x81 = (1.0/(_x79*math.sqrt(_x79)))
         _pd__43 = -_x64*_x81
         _x82 = _x106**2
         _x83 = _x80*_x82
@@ -3895,7 +3897,7 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x89 = (1.0/math.sqrt(_x88))
         _ift2 = _x60*_x89
         _pd__52 = _x62*_x89
-        _x90 = _x88**(-1.5)
+        _x90 = (1.0/(_x88*math.sqrt(_x88)))
         _pd__53 = -_x64*_x90
         _x91 = _x107**2
         _x92 = _x89*_x91
@@ -3922,7 +3924,7 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x98 = (1.0/math.sqrt(_x97))
         _ift3 = _x60*_x98
         _pd__62 = _x62*_x98
-        _x99 = _x97**(-1.5)
+        _x99 = (1.0/(_x97*math.sqrt(_x97)))
         _pd__63 = -_x64*_x99
         _x100 = _x108**2
         _x101 = _x100*_x98
@@ -4169,10 +4171,11 @@ def schwind_compression_nodes_4_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
-            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd)))
-            and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_7
-            - _P2) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(1.0)) and (abs(_n0_5 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_7 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))) and (abs(_n0_8 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
+            + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -4714,7 +4717,7 @@ def schwind_compression_nodes_1_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _ift0 = _x16*_x19
         _x20 = (0.5)/_x16
         _pd__3 = _x19*_x20
-        _x21 = (0.5)*_x16/_x15**(1.5)
+        _x21 = (0.5)*_x16/(_x15*math.sqrt(_x15))
         _pd__4 = -_x17*_x21
         _x22 = 0.5*_pd__4
         _d_ift0__0 = _d_D__0*_pd__3 + _d_iF0__0*_x22
@@ -4740,7 +4743,7 @@ def schwind_compression_nodes_1_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _d_ifq0__2 = _d_D__2*_pd__5 - _d_D__2*_x30 + _d_P0__2*_pd__6 + _d_iF0__2*_x29
         _d_ifq0__3 = _d_D__3*_pd__5 - _d_D__3*_x30 + _d_P0__3*_pd__6 + _d_iF0__3*_x29
         _d_ifq0__4 = _d_D__4*_pd__5 - _d_D__4*_x30 + _d_P0__4*_pd__6 + _d_iF0__4*_x29
-        _x31 = m**(1.5)
+        _x31 = (m*math.sqrt(m))
         _x32 = _x23*_x31*g_s
         _x33 = _x13*_x32
         _ifp0 = _x1*_x33
@@ -4802,7 +4805,7 @@ def schwind_compression_nodes_1_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
-            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _P0__next, _d_D__next__0, _d_D__next__1, _d_D__next__2, _d_D__next__3,
             _d_D__next__4, _n0_8, _n0_9, _d_Q0__next__2, _n0_11, _n0_12, _d_P0__next__0, _n0_14, _n0_15,
             _d_P0__next__3, _n0_17, )
@@ -4948,7 +4951,7 @@ def schwind_decompression_nodes_1_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _ift0 = _x16*_x19
         _x20 = (0.5)/_x16
         _pd__3 = _x19*_x20
-        _x21 = (0.5)*_x16/_x15**(1.5)
+        _x21 = (0.5)*_x16/(_x15*math.sqrt(_x15))
         _pd__4 = -_x17*_x21
         _x22 = 0.5*_pd__4
         _d_ift0__q_r = _d_D__q_r*_pd__3 + _d_iF0__q_r*_x22
@@ -4978,7 +4981,7 @@ def schwind_decompression_nodes_1_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
             + _d_iF0__guess_q_th*_x29)
         _d_ifq0__guess_q_thd = (_d_D__guess_q_thd*_pd__5 + _d_D__guess_q_thd*_x30 + _d_P0__guess_q_thd*_pd__6
             + _d_iF0__guess_q_thd*_x29)
-        _x31 = m**(1.5)
+        _x31 = (m*math.sqrt(m))
         _x32 = _x23*_x31*g_s
         _x33 = _x13*_x32
         _ifp0 = _x1*_x33
@@ -5028,7 +5031,7 @@ def schwind_decompression_nodes_1_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
-            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _P0__next, _n0_3, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
             _d_Q0__next__q_th, _n0_11, _n0_12, _n0_13, _n0_14, _d_P0__next__q_r, _n0_16, _d_P0__next__q_thd,
             _n0_18, _n0_19, _n0_20, )
@@ -6596,7 +6599,7 @@ def schwind_compression_nodes_1_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _ift0 = _x16*_x19
         _x20 = (0.5)/_x16
         _pd__3 = _x19*_x20
-        _x21 = (0.5)*_x16/_x15**(1.5)
+        _x21 = (0.5)*_x16/(_x15*math.sqrt(_x15))
         _pd__4 = -_x17*_x21
         _x22 = 0.5*_pd__4
         _d_ift0__0 = _d_D__0*_pd__3 + _d_iF0__0*_x22
@@ -6624,7 +6627,7 @@ def schwind_compression_nodes_1_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _d_ifq0__3 = _d_D__3*_pd__5 - _d_D__3*_x30 + _d_P0__3*_pd__6 + _d_iF0__3*_x29
         _d_ifq0__4 = _d_D__4*_pd__5 - _d_D__4*_x30 + _d_P0__4*_pd__6 + _d_iF0__4*_x29
         _d_ifq0__5 = _d_D__5*_pd__5 - _d_D__5*_x30 + _d_P0__5*_pd__6 + _d_iF0__5*_x29
-        _x31 = m**(1.5)
+        _x31 = (m*math.sqrt(m))
         _x32 = _x23*_x31*g_s
         _x33 = _x13*_x32
         _ifp0 = _x1*_x33
@@ -6690,7 +6693,7 @@ def schwind_compression_nodes_1_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
-            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_P0__next - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _P0__next, _d_D__next__0, _d_D__next__1, _d_D__next__2, _d_D__next__3,
             _d_D__next__4, _d_D__next__5, _n0_9, _n0_10, _d_Q0__next__2, _n0_12, _n0_13, _n0_14,
             _d_P0__next__0, _n0_16, _n0_17, _d_P0__next__3, _n0_19, _n0_20, )
@@ -7076,7 +7079,7 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x34 = (0.5)/_x31
         _x35 = _x32*_x34
         _pd__6 = _x30*_x35
-        _x36 = _x29**(-1.5)
+        _x36 = (1.0/(_x29*math.sqrt(_x29)))
         _x37 = (0.5)*_x33
         _pd__7 = -_x36*_x37
         _d_ift0__0 = _d_D__0*_pd__6 + _d_iPsi0__0*_pd__7
@@ -7102,7 +7105,7 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _d_ifq0__2 = _d_D__2*_pd__8 - _d_D__2*_x45 + _d_P0__2*_pd__9 + _d_iPsi0__2*_pd__10
         _d_ifq0__3 = _d_D__3*_pd__8 - _d_D__3*_x45 + _d_P0__3*_pd__9 + _d_iPsi0__3*_pd__10
         _d_ifq0__4 = _d_D__4*_pd__8 - _d_D__4*_x45 + _d_P0__4*_pd__9 + _d_iPsi0__4*_pd__10
-        _x46 = g_s*m**(1.5)
+        _x46 = g_s*(m*math.sqrt(m))
         _x47 = _x31*_x46
         _x48 = _x30*_x47
         _x49 = _x14*_x48
@@ -7132,7 +7135,7 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x55 = (1.0/math.sqrt(_x54))
         _ift1 = _x33*_x55
         _pd__16 = _x35*_x55
-        _x56 = _x54**(-1.5)
+        _x56 = (1.0/(_x54*math.sqrt(_x54)))
         _pd__17 = -_x37*_x56
         _d_ift1__0 = _d_D__0*_pd__16 + _d_iPsi1__0*_pd__17
         _d_ift1__1 = _d_D__1*_pd__16 + _d_iPsi1__1*_pd__17
@@ -7245,8 +7248,8 @@ def schwind_compression_nodes_2_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
             and (abs(_Q1__next - _Q1) <= tol*(1.0)) and (abs(_P0__next - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _Q1__next, _P0__next, _P1__next, _d_D__next__0, _d_D__next__1,
             _d_D__next__2, _d_D__next__3, _d_D__next__4, _d_Q0__next__0, _d_Q0__next__1, _d_Q0__next__2,
             _d_Q0__next__3, _d_Q0__next__4, _d_Q1__next__0, _d_Q1__next__1, _d_Q1__next__2, _d_Q1__next__3,
@@ -7440,7 +7443,7 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x34 = (0.5)/_x31
         _x35 = _x32*_x34
         _pd__6 = _x30*_x35
-        _x36 = _x29**(-1.5)
+        _x36 = (1.0/(_x29*math.sqrt(_x29)))
         _x37 = (0.5)*_x33
         _pd__7 = -_x36*_x37
         _d_ift0__q_r = _d_D__q_r*_pd__6 + _d_iPsi0__q_r*_pd__7
@@ -7470,7 +7473,7 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
             + _d_iPsi0__guess_q_th*_pd__10)
         _d_ifq0__guess_q_thd = (_d_D__guess_q_thd*_pd__8 + _d_D__guess_q_thd*_x45 + _d_P0__guess_q_thd*_pd__9
             + _d_iPsi0__guess_q_thd*_pd__10)
-        _x46 = g_s*m**(1.5)
+        _x46 = g_s*(m*math.sqrt(m))
         _x47 = _x31*_x46
         _x48 = _x30*_x47
         _x49 = _x13*_x48
@@ -7507,7 +7510,7 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x55 = (1.0/math.sqrt(_x54))
         _ift1 = _x33*_x55
         _pd__16 = _x35*_x55
-        _x56 = _x54**(-1.5)
+        _x56 = (1.0/(_x54*math.sqrt(_x54)))
         _pd__17 = -_x37*_x56
         _d_ift1__q_r = _d_D__q_r*_pd__16 + _d_iPsi1__q_r*_pd__17
         _d_ift1__q_th = _d_D__q_th*_pd__16 + _d_iPsi1__q_th*_pd__17
@@ -7604,8 +7607,8 @@ def schwind_decompression_nodes_2_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
             and (abs(_Q1__next - _Q1) <= tol*(1.0)) and (abs(_P0__next - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _Q1__next, _P0__next, _P1__next, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
             _n0_10, _d_Q0__next__q_r, _d_Q0__next__q_th, _d_Q0__next__q_thd, _d_Q0__next__k_d,
             _d_Q0__next__guess_q_th, _d_Q0__next__guess_q_thd, _d_Q1__next__q_r, _d_Q1__next__q_th,
@@ -9245,7 +9248,7 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x34 = (0.5)/_x31
         _x35 = _x32*_x34
         _pd__6 = _x30*_x35
-        _x36 = _x29**(-1.5)
+        _x36 = (1.0/(_x29*math.sqrt(_x29)))
         _x37 = (0.5)*_x33
         _pd__7 = -_x36*_x37
         _d_ift0__0 = _d_D__0*_pd__6 + _d_iPsi0__0*_pd__7
@@ -9273,7 +9276,7 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _d_ifq0__3 = _d_D__3*_pd__8 - _d_D__3*_x45 + _d_P0__3*_pd__9 + _d_iPsi0__3*_pd__10
         _d_ifq0__4 = _d_D__4*_pd__8 - _d_D__4*_x45 + _d_P0__4*_pd__9 + _d_iPsi0__4*_pd__10
         _d_ifq0__5 = _d_D__5*_pd__8 - _d_D__5*_x45 + _d_P0__5*_pd__9 + _d_iPsi0__5*_pd__10
-        _x46 = g_s*m**(1.5)
+        _x46 = g_s*(m*math.sqrt(m))
         _x47 = _x31*_x46
         _x48 = _x30*_x47
         _x49 = _x14*_x48
@@ -9305,7 +9308,7 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x55 = (1.0/math.sqrt(_x54))
         _ift1 = _x33*_x55
         _pd__16 = _x35*_x55
-        _x56 = _x54**(-1.5)
+        _x56 = (1.0/(_x54*math.sqrt(_x54)))
         _pd__17 = -_x37*_x56
         _d_ift1__0 = _d_D__0*_pd__16 + _d_iPsi1__0*_pd__17
         _d_ift1__1 = _d_D__1*_pd__16 + _d_iPsi1__1*_pd__17
@@ -9426,8 +9429,8 @@ def schwind_compression_nodes_2_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_D__next - _D) <= tol*(l0)) and (abs(_Q0__next - _Q0) <= tol*(1.0))
             and (abs(_Q1__next - _Q1) <= tol*(1.0)) and (abs(_P0__next - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_P1__next - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _pkn0 = (_D__next, _Q0__next, _Q1__next, _P0__next, _P1__next, _d_D__next__0, _d_D__next__1,
             _d_D__next__2, _d_D__next__3, _d_D__next__4, _d_D__next__5, _d_Q0__next__0, _d_Q0__next__1,
             _d_Q0__next__2, _d_Q0__next__3, _d_Q0__next__4, _d_Q0__next__5, _d_Q1__next__0, _d_Q1__next__1,
@@ -9853,7 +9856,7 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x50 = (0.5)/_x47
         _x51 = _x48*_x50
         _pd__24 = _x46*_x51
-        _x52 = _x45**(-1.5)
+        _x52 = (1.0/(_x45*math.sqrt(_x45)))
         _x53 = (0.5)*_x49
         _pd__25 = -_x52*_x53
         _x54 = (1.0/_x48)
@@ -9868,7 +9871,7 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x60 = (0.5)*_x55
         _pd__28 = -_P0*_x52*_x56*_x60
         _pd__29 = -_x17*_x20*_x46*_x55
-        _x61 = g_s*m**(1.5)
+        _x61 = g_s*(m*math.sqrt(m))
         _x62 = _x47*_x61
         _x63 = _x46*_x62
         _x64 = _x21*_x63
@@ -9887,7 +9890,7 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x69 = (1.0/math.sqrt(_x68))
         _ift1 = _x49*_x69
         _pd__34 = _x51*_x69
-        _x70 = _x68**(-1.5)
+        _x70 = (1.0/(_x68*math.sqrt(_x68)))
         _pd__35 = -_x53*_x70
         _x71 = _x86**2
         _x72 = _x69*_x71
@@ -9912,7 +9915,7 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x78 = (1.0/math.sqrt(_x77))
         _ift2 = _x49*_x78
         _pd__44 = _x51*_x78
-        _x79 = _x77**(-1.5)
+        _x79 = (1.0/(_x77*math.sqrt(_x77)))
         _pd__45 = -_x53*_x79
         _x80 = _x87**2
         _x81 = _x78*_x80
@@ -10100,9 +10103,9 @@ def schwind_compression_nodes_3_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -10344,7 +10347,7 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x43 = (0.5)/_x40
         _x44 = _x41*_x43
         _pd__21 = _x39*_x44
-        _x45 = _x38**(-1.5)
+        _x45 = (1.0/(_x38*math.sqrt(_x38)))
         _x46 = (0.5)*_x42
         _pd__22 = -_x45*_x46
         _x47 = (1.0/_x41)
@@ -10359,7 +10362,7 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x53 = (0.5)*_x48
         _pd__25 = -_P0*_x45*_x49*_x53
         _pd__26 = -_x11*_x14*_x39*_x48
-        _x54 = g_s*m**(1.5)
+        _x54 = g_s*(m*math.sqrt(m))
         _x55 = _x40*_x54
         _x56 = _x39*_x55
         _x57 = _x15*_x56
@@ -10378,7 +10381,7 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x62 = (1.0/math.sqrt(_x61))
         _ift1 = _x42*_x62
         _pd__31 = _x44*_x62
-        _x63 = _x61**(-1.5)
+        _x63 = (1.0/(_x61*math.sqrt(_x61)))
         _pd__32 = -_x46*_x63
         _x64 = _x79**2
         _x65 = _x62*_x64
@@ -10404,7 +10407,7 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x71 = (1.0/math.sqrt(_x70))
         _ift2 = _x42*_x71
         _pd__41 = _x44*_x71
-        _x72 = _x70**(-1.5)
+        _x72 = (1.0/(_x70*math.sqrt(_x70)))
         _pd__42 = -_x46*_x72
         _x73 = _x80**2
         _x74 = _x71*_x73
@@ -10538,9 +10541,9 @@ def schwind_decompression_nodes_3_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -12219,7 +12222,7 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x50 = (0.5)/_x47
         _x51 = _x48*_x50
         _pd__24 = _x46*_x51
-        _x52 = _x45**(-1.5)
+        _x52 = (1.0/(_x45*math.sqrt(_x45)))
         _x53 = (0.5)*_x49
         _pd__25 = -_x52*_x53
         _x54 = (1.0/_x48)
@@ -12234,7 +12237,7 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x60 = (0.5)*_x55
         _pd__28 = -_P0*_x52*_x56*_x60
         _pd__29 = -_x17*_x20*_x46*_x55
-        _x61 = g_s*m**(1.5)
+        _x61 = g_s*(m*math.sqrt(m))
         _x62 = _x47*_x61
         _x63 = _x46*_x62
         _x64 = _x21*_x63
@@ -12253,7 +12256,7 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x69 = (1.0/math.sqrt(_x68))
         _ift1 = _x49*_x69
         _pd__34 = _x51*_x69
-        _x70 = _x68**(-1.5)
+        _x70 = (1.0/(_x68*math.sqrt(_x68)))
         _pd__35 = -_x53*_x70
         _x71 = _x86**2
         _x72 = _x69*_x71
@@ -12278,7 +12281,7 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x78 = (1.0/math.sqrt(_x77))
         _ift2 = _x49*_x78
         _pd__44 = _x51*_x78
-        _x79 = _x77**(-1.5)
+        _x79 = (1.0/(_x77*math.sqrt(_x77)))
         _pd__45 = -_x53*_x79
         _x80 = _x87**2
         _x81 = _x78*_x80
@@ -12466,9 +12469,9 @@ def schwind_compression_nodes_3_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         # tol = 0 runs every pass)
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _P0)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_5 - _P1)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))) and (abs(_n0_6 - _P2)
+            <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -12998,7 +13001,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x83 = (0.5)/_x80
         _x84 = _x81*_x83
         _pd__48 = _x79*_x84
-        _x85 = _x78**(-1.5)
+        _x85 = (1.0/(_x78*math.sqrt(_x78)))
         _x86 = (0.5)*_x82
         _pd__49 = -_x85*_x86
         _x87 = (1.0/_x81)
@@ -13013,7 +13016,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x93 = (0.5)*_x88
         _pd__52 = -_P0*_x85*_x89*_x93
         _pd__53 = -_x17*_x20*_x79*_x88
-        _x94 = g_s*m**(1.5)
+        _x94 = g_s*(m*math.sqrt(m))
         _x95 = _x80*_x94
         _x96 = _x79*_x95
         _x97 = _x21*_x96
@@ -13037,7 +13040,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x103 = (1.0/math.sqrt(_x102))
         _ift1 = _x103*_x82
         _pd__58 = _x103*_x84
-        _x104 = _x102**(-1.5)
+        _x104 = (1.0/(_x102*math.sqrt(_x102)))
         _pd__59 = -_x104*_x86
         _x105 = _x148**2
         _x106 = _x103*_x105
@@ -13066,7 +13069,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x112 = (1.0/math.sqrt(_x111))
         _ift2 = _x112*_x82
         _pd__68 = _x112*_x84
-        _x113 = _x111**(-1.5)
+        _x113 = (1.0/(_x111*math.sqrt(_x111)))
         _pd__69 = -_x113*_x86
         _x114 = _x149**2
         _x115 = _x112*_x114
@@ -13096,7 +13099,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x122 = (1.0/math.sqrt(_x121))
         _ift3 = _x122*_x82
         _pd__78 = _x122*_x84
-        _x123 = _x121**(-1.5)
+        _x123 = (1.0/(_x121*math.sqrt(_x121)))
         _pd__79 = -_x123*_x86
         _x124 = _x150**2
         _x125 = _x122*_x124
@@ -13125,7 +13128,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x131 = (1.0/math.sqrt(_x130))
         _ift4 = _x131*_x82
         _pd__88 = _x131*_x84
-        _x132 = _x130**(-1.5)
+        _x132 = (1.0/(_x130*math.sqrt(_x130)))
         _pd__89 = -_x132*_x86
         _x133 = _x151**2
         _x134 = _x131*_x133
@@ -13155,7 +13158,7 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x140 = (1.0/math.sqrt(_x139))
         _ift5 = _x140*_x82
         _pd__98 = _x140*_x84
-        _x141 = _x139**(-1.5)
+        _x141 = (1.0/(_x139*math.sqrt(_x139)))
         _pd__99 = -_x141*_x86
         _x142 = _x152**2
         _x143 = _x140*_x142
@@ -13517,12 +13520,12 @@ def schwind_compression_nodes_6_jvp5_408d60(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
             <= tol*(1.0)) and (abs(_n0_5 - _Q4) <= tol*(1.0)) and (abs(_n0_6 - _Q5) <= tol*(1.0))
-            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8
-            - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_9 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_10 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_11 - _P4)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_12 - _P5)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_8 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_9 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_10 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_11 - _P4) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_12 - _P5) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -13871,7 +13874,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x73 = (0.5)/_x70
         _x74 = _x71*_x73
         _pd__42 = _x69*_x74
-        _x75 = _x68**(-1.5)
+        _x75 = (1.0/(_x68*math.sqrt(_x68)))
         _x76 = (0.5)*_x72
         _pd__43 = -_x75*_x76
         _x77 = (1.0/_x71)
@@ -13886,7 +13889,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x83 = (0.5)*_x78
         _pd__46 = -_P0*_x75*_x79*_x83
         _pd__47 = -_x11*_x14*_x69*_x78
-        _x84 = g_s*m**(1.5)
+        _x84 = g_s*(m*math.sqrt(m))
         _x85 = _x70*_x84
         _x86 = _x69*_x85
         _x87 = _x15*_x86
@@ -13910,7 +13913,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x93 = (1.0/math.sqrt(_x92))
         _ift1 = _x72*_x93
         _pd__52 = _x74*_x93
-        _x94 = _x92**(-1.5)
+        _x94 = (1.0/(_x92*math.sqrt(_x92)))
         _pd__53 = -_x76*_x94
         _x95 = _x138**2
         _x96 = _x93*_x95
@@ -13939,7 +13942,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x102 = (1.0/math.sqrt(_x101))
         _ift2 = _x102*_x72
         _pd__62 = _x102*_x74
-        _x103 = _x101**(-1.5)
+        _x103 = (1.0/(_x101*math.sqrt(_x101)))
         _pd__63 = -_x103*_x76
         _x104 = _x139**2
         _x105 = _x102*_x104
@@ -13969,7 +13972,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x112 = (1.0/math.sqrt(_x111))
         _ift3 = _x112*_x72
         _pd__72 = _x112*_x74
-        _x113 = _x111**(-1.5)
+        _x113 = (1.0/(_x111*math.sqrt(_x111)))
         _pd__73 = -_x113*_x76
         _x114 = _x141**2
         _x115 = _x112*_x114
@@ -13998,7 +14001,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x121 = (1.0/math.sqrt(_x120))
         _ift4 = _x121*_x72
         _pd__82 = _x121*_x74
-        _x122 = _x120**(-1.5)
+        _x122 = (1.0/(_x120*math.sqrt(_x120)))
         _pd__83 = -_x122*_x76
         _x123 = _x142**2
         _x124 = _x121*_x123
@@ -14027,7 +14030,7 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _x130 = (1.0/math.sqrt(_x129))
         _ift5 = _x130*_x72
         _pd__92 = _x130*_x74
-        _x131 = _x129**(-1.5)
+        _x131 = (1.0/(_x129*math.sqrt(_x129)))
         _pd__93 = -_x131*_x76
         _x132 = _x143**2
         _x133 = _x130*_x132
@@ -14288,12 +14291,12 @@ def schwind_decompression_nodes_6_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
             <= tol*(1.0)) and (abs(_n0_5 - _Q4) <= tol*(1.0)) and (abs(_n0_6 - _Q5) <= tol*(1.0))
-            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8
-            - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_9 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_10 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_11 - _P4)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_12 - _P5)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_8 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_9 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_10 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_11 - _P4) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_12 - _P5) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2
@@ -16092,7 +16095,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x83 = (0.5)/_x80
         _x84 = _x81*_x83
         _pd__48 = _x79*_x84
-        _x85 = _x78**(-1.5)
+        _x85 = (1.0/(_x78*math.sqrt(_x78)))
         _x86 = (0.5)*_x82
         _pd__49 = -_x85*_x86
         _x87 = (1.0/_x81)
@@ -16107,7 +16110,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x93 = (0.5)*_x88
         _pd__52 = -_P0*_x85*_x89*_x93
         _pd__53 = -_x17*_x20*_x79*_x88
-        _x94 = g_s*m**(1.5)
+        _x94 = g_s*(m*math.sqrt(m))
         _x95 = _x80*_x94
         _x96 = _x79*_x95
         _x97 = _x21*_x96
@@ -16131,7 +16134,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x103 = (1.0/math.sqrt(_x102))
         _ift1 = _x103*_x82
         _pd__58 = _x103*_x84
-        _x104 = _x102**(-1.5)
+        _x104 = (1.0/(_x102*math.sqrt(_x102)))
         _pd__59 = -_x104*_x86
         _x105 = _x148**2
         _x106 = _x103*_x105
@@ -16160,7 +16163,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x112 = (1.0/math.sqrt(_x111))
         _ift2 = _x112*_x82
         _pd__68 = _x112*_x84
-        _x113 = _x111**(-1.5)
+        _x113 = (1.0/(_x111*math.sqrt(_x111)))
         _pd__69 = -_x113*_x86
         _x114 = _x149**2
         _x115 = _x112*_x114
@@ -16190,7 +16193,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x122 = (1.0/math.sqrt(_x121))
         _ift3 = _x122*_x82
         _pd__78 = _x122*_x84
-        _x123 = _x121**(-1.5)
+        _x123 = (1.0/(_x121*math.sqrt(_x121)))
         _pd__79 = -_x123*_x86
         _x124 = _x150**2
         _x125 = _x122*_x124
@@ -16219,7 +16222,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x131 = (1.0/math.sqrt(_x130))
         _ift4 = _x131*_x82
         _pd__88 = _x131*_x84
-        _x132 = _x130**(-1.5)
+        _x132 = (1.0/(_x130*math.sqrt(_x130)))
         _pd__89 = -_x132*_x86
         _x133 = _x151**2
         _x134 = _x131*_x133
@@ -16249,7 +16252,7 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _x140 = (1.0/math.sqrt(_x139))
         _ift5 = _x140*_x82
         _pd__98 = _x140*_x84
-        _x141 = _x139**(-1.5)
+        _x141 = (1.0/(_x139*math.sqrt(_x139)))
         _pd__99 = -_x141*_x86
         _x142 = _x152**2
         _x143 = _x140*_x142
@@ -16611,12 +16614,12 @@ def schwind_compression_nodes_6_jvp6_a742c3(q_r, q_rd, q_th, q_thd, m, l0, k_c, 
         _conv0 = (tol > 0.0 and (abs(_n0_0 - _D) <= tol*(l0)) and (abs(_n0_1 - _Q0) <= tol*(1.0))
             and (abs(_n0_2 - _Q1) <= tol*(1.0)) and (abs(_n0_3 - _Q2) <= tol*(1.0)) and (abs(_n0_4 - _Q3)
             <= tol*(1.0)) and (abs(_n0_5 - _Q4) <= tol*(1.0)) and (abs(_n0_6 - _Q5) <= tol*(1.0))
-            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_8
-            - _P1) <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_9 - _P2)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_10 - _P3)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_11 - _P4)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))) and (abs(_n0_12 - _P5)
-            <= tol*(math.sqrt(g_s)*l0**(1.5)*m + m*q_r**2*abs(q_thd))))
+            and (abs(_n0_7 - _P0) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_8 - _P1) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_9 - _P2) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_10 - _P3) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_11 - _P4) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd)))
+            and (abs(_n0_12 - _P5) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m + m*q_r**2*abs(q_thd))))
         _D = _n0_0
         _Q0 = _n0_1
         _Q1 = _n0_2

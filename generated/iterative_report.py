@@ -8,12 +8,12 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight.py sha256:8b20bd5230ccfe19
 #   geyer.py sha256:4737273d6d8636d4
-#   geyer_vs.py sha256:23fefd20e2142c29
-#   gravity_type0.py sha256:3f597486f60af083
-#   gravity_type1.py sha256:47ae110acc72b82a
-#   gravity_type2.py sha256:088717b5bb9ef1ba
-#   gravity_type3.py sha256:ce520639bb1c9138
-#   gravity_type4.py sha256:8d3a969bccac09bf
+#   geyer_vs.py sha256:2af0829e07a0cf1b
+#   gravity_type0.py sha256:307fd5b7e0072824
+#   gravity_type1.py sha256:46607008446ed15d
+#   gravity_type2.py sha256:97fb4f568b945f42
+#   gravity_type3.py sha256:d4ac1d04e125ac4a
+#   gravity_type4.py sha256:81186cbbb1247b9f
 #   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
@@ -192,7 +192,7 @@ def iterative_report_stance_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -272,7 +272,7 @@ def iterative_report_stance_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -566,7 +566,7 @@ def iterative_report_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -646,7 +646,7 @@ def iterative_report_stance_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -896,7 +896,7 @@ def iterative_report_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -976,7 +976,7 @@ def iterative_report_stance_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -1226,7 +1226,7 @@ def iterative_report_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1306,7 +1306,7 @@ def iterative_report_stance_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -1556,7 +1556,7 @@ def iterative_report_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1636,7 +1636,7 @@ def iterative_report_stance_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -1886,7 +1886,7 @@ def iterative_report_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1966,7 +1966,7 @@ def iterative_report_stance_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -2216,7 +2216,7 @@ def iterative_report_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -2296,7 +2296,7 @@ def iterative_report_stance_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -2545,7 +2545,7 @@ def iterative_report_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -2625,7 +2625,7 @@ def iterative_report_stance_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1
@@ -2875,7 +2875,7 @@ def iterative_report_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -2955,7 +2955,7 @@ def iterative_report_stance_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(_n1_0 - d_e) <= 0.0*(l0)) and (abs(_n1_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n1_3 - d_T)
+            and (abs(_n1_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n1_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n1_0
         d_Q = _n1_1

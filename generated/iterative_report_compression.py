@@ -7,12 +7,12 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   geyer.py sha256:4737273d6d8636d4
-#   geyer_vs.py sha256:23fefd20e2142c29
-#   gravity_type0.py sha256:3f597486f60af083
-#   gravity_type1.py sha256:47ae110acc72b82a
-#   gravity_type2.py sha256:088717b5bb9ef1ba
-#   gravity_type3.py sha256:ce520639bb1c9138
-#   gravity_type4.py sha256:8d3a969bccac09bf
+#   geyer_vs.py sha256:2af0829e07a0cf1b
+#   gravity_type0.py sha256:307fd5b7e0072824
+#   gravity_type1.py sha256:46607008446ed15d
+#   gravity_type2.py sha256:97fb4f568b945f42
+#   gravity_type3.py sha256:d4ac1d04e125ac4a
+#   gravity_type4.py sha256:81186cbbb1247b9f
 #   gravity_type5.py sha256:f4510b5010050beb
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
@@ -176,7 +176,7 @@ def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -338,7 +338,7 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -494,7 +494,7 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -650,7 +650,7 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -806,7 +806,7 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -962,7 +962,7 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1118,7 +1118,7 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1273,7 +1273,7 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1
@@ -1429,7 +1429,7 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - c_T)
+            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         c_e = _n0_0
         c_Q = _n0_1

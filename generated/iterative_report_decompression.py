@@ -123,7 +123,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(_n0_0 - d_e) <= 0.0*(l0)) and (abs(_n0_1 - d_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(_n0_3 - d_T)
+            and (abs(_n0_2 - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         d_e = _n0_0
         d_Q = _n0_1

@@ -8,12 +8,12 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
 #   geyer_jacobian.py sha256:74225526d15d5d94
-#   geyer_vs_jacobian.py sha256:626e8d18ae1d1ad9
-#   gravity_type0_jacobian.py sha256:4e0b614bd1644911
-#   gravity_type1_jacobian.py sha256:5d9940032869f72f
-#   gravity_type2_jacobian.py sha256:67f319fee552f951
-#   gravity_type3_jacobian.py sha256:a43856db1847744c
-#   gravity_type4_jacobian.py sha256:aa7cba3edb2708b4
+#   geyer_vs_jacobian.py sha256:7c3772d5423255e3
+#   gravity_type0_jacobian.py sha256:7deb1d73ca0e6e26
+#   gravity_type1_jacobian.py sha256:1b8597ef172a67d1
+#   gravity_type2_jacobian.py sha256:ffc9be41c5d5622c
+#   gravity_type3_jacobian.py sha256:ccf750d1c7a1bf39
+#   gravity_type4_jacobian.py sha256:234e02501c4a0960
 #   gravity_type5_jacobian.py sha256:c18bbd409c3cdd3d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
@@ -323,7 +323,7 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -482,7 +482,7 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -636,7 +636,7 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -821,7 +821,7 @@ def iterative_report_stance_jacobian_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_th
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -1502,7 +1502,7 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
     _x86 = (_x58 > 0.0)
     c_T0 = ((-_x35*_x85) if _x86 else (0.0))
     _pd__12 = ((-_x85) if _x86 else (0.0))
-    _pd__13 = ((_x69*m/_x58**(1.5)) if _x86 else (0.0))
+    _pd__13 = ((_x69*m/(_x58*math.sqrt(_x58))) if _x86 else (0.0))
     d_c_T0__q_r_td = _pd__12*d_c_e_n__q_r_td + _pd__13*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__12*d_c_e_n__q_rd_td + _pd__13*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__12*d_c_e_n__q_th_td + _pd__13*d_c_rad_z__q_th_td
@@ -1661,7 +1661,7 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -1822,7 +1822,7 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
     _x175 = (_x155 > 0.0)
     d_T0 = ((_x130*_x174 + t_bottom) if _x175 else (t_bottom))
     _pd__50 = ((_x174) if _x175 else (0.0))
-    _pd__51 = ((-_x163*m/_x155**(1.5)) if _x175 else (0.0))
+    _pd__51 = ((-_x163*m/(_x155*math.sqrt(_x155))) if _x175 else (0.0))
     d_d_T0__q_r_td = _pd__50*d_d_e_n__q_r_td + _pd__51*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__50*d_d_e_n__q_rd_td + _pd__51*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__50*d_d_e_n__q_th_td + _pd__51*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -2007,7 +2007,7 @@ def iterative_report_stance_jacobian_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -2413,7 +2413,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -2572,7 +2572,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -2726,7 +2726,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -2911,7 +2911,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -3318,7 +3318,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -3477,7 +3477,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -3631,7 +3631,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -3816,7 +3816,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -4223,7 +4223,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -4382,7 +4382,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -4536,7 +4536,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -4721,7 +4721,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -5128,7 +5128,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -5287,7 +5287,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -5441,7 +5441,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -5626,7 +5626,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -6033,7 +6033,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -6192,7 +6192,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -6346,7 +6346,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -6531,7 +6531,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -6938,7 +6938,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -7097,7 +7097,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -7251,7 +7251,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -7436,7 +7436,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,
@@ -7853,7 +7853,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
     _x60 = (_x33 > 0.0)
     c_T0 = ((-_x10*_x59) if _x60 else (0.0))
     _pd__13 = ((-_x59) if _x60 else (0.0))
-    _pd__14 = ((_x44*m/_x33**(1.5)) if _x60 else (0.0))
+    _pd__14 = ((_x44*m/(_x33*math.sqrt(_x33))) if _x60 else (0.0))
     d_c_T0__q_r_td = _pd__13*d_c_e_n__q_r_td + _pd__14*d_c_rad_z__q_r_td
     d_c_T0__q_rd_td = _pd__13*d_c_e_n__q_rd_td + _pd__14*d_c_rad_z__q_rd_td
     d_c_T0__q_th_td = _pd__13*d_c_e_n__q_th_td + _pd__14*d_c_rad_z__q_th_td
@@ -8025,7 +8025,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = (0.0 > 0.0 and (abs(c_e__next - c_e) <= 0.0*(l0)) and (abs(c_Q__next - c_Q) <= 0.0*(1.0))
-            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(c_T__next - c_T)
+            and (abs(c_P__next - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(c_T__next - c_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn0 = (c_e__next, c_Q__next, c_P__next, c_T__next, _n0_4, _n0_5, _n0_6, _n0_7, _n0_8, _n0_9,
             d_c_Q__next__q_r_td, d_c_Q__next__q_rd_td, d_c_Q__next__q_th_td, d_c_Q__next__q_thd_td,
@@ -8188,7 +8188,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
     _x147 = (_x127 > 0.0)
     d_T0 = ((_x102*_x146 + t_bottom) if _x147 else (t_bottom))
     _pd__49 = ((_x146) if _x147 else (0.0))
-    _pd__50 = ((-_x135*m/_x127**(1.5)) if _x147 else (0.0))
+    _pd__50 = ((-_x135*m/(_x127*math.sqrt(_x127))) if _x147 else (0.0))
     d_d_T0__q_r_td = _pd__49*d_d_e_n__q_r_td + _pd__50*d_d_rad_z__q_r_td + d_c_T__q_r_td
     d_d_T0__q_rd_td = _pd__49*d_d_e_n__q_rd_td + _pd__50*d_d_rad_z__q_rd_td + d_c_T__q_rd_td
     d_d_T0__q_th_td = _pd__49*d_d_e_n__q_th_td + _pd__50*d_d_rad_z__q_th_td + d_c_T__q_th_td
@@ -8376,7 +8376,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv1 = (0.0 > 0.0 and (abs(d_e__next - d_e) <= 0.0*(l0)) and (abs(d_Q__next - d_Q) <= 0.0*(1.0))
-            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*l0**(1.5)*m)) and (abs(d_T__next - d_T)
+            and (abs(d_P__next - d_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(d_T__next - d_T)
             <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
         _pkn1 = (d_e__next, d_Q__next, d_P__next, d_T__next, _n1_4, _n1_5, _n1_6, _n1_7, _n1_8, _n1_9,
             d_d_Q__next__q_r_td, d_d_Q__next__q_rd_td, d_d_Q__next__q_th_td, d_d_Q__next__q_thd_td,

@@ -672,6 +672,43 @@ def test_eq1_3_stance_polar_rhs_matches_derivation():
     )
 
 
+SENS = ("s_q_r", "s_q_rd", "s_q_th", "s_q_thd", "s_k")
+
+
+def test_eq2_3_stance_polar_tangent_is_the_fields_derivative():
+    """The variational field of the exact Jacobian (runtime/exact/jacobian.py): J s + f_k s_k from
+    the derivation, and the directional derivative of the generated field by central differences
+    (h = 1e-6 of the direction; the quotient's error O(h^2) and round-off / h: measured 6.1e-11 of
+    |quotient| + the field's scale at most, bound 1e-9)."""
+    rhs = sp.Matrix(mechanics.stance_polar_rhs())
+    column = sp.Matrix([sp.Symbol(n) for n in SENS[:4]])
+    tangent = rhs.jacobian([S.q_r, S.q_rd, S.q_th, S.q_thd]) * column + sp.diff(rhs, S.k) * sp.Symbol("s_k")
+    exprs = list(tangent)
+    rng = _rng("polar_tangent")
+    pts = _polar_points("polar_tangent")
+    for env in pts:
+        env.update(zip(SENS[:4], rng.normal(size=4), strict=True))
+        env["s_k"] = float(rng.integers(0, 2)) * rng.uniform(0.5, 2.0)
+    got = _assert_agree(
+        g_slip.stance_polar_tangent,
+        POLAR + SENS + PARAMS,
+        pts,
+        lambda env, cse: [ev(e, env, cse) for e in exprs],
+        4,
+    )
+    h = 1e-6
+    for env, tangent in zip(pts, got, strict=True):
+
+        def field(sign, env=env):
+            y = [env[n] + sign * h * env[f"s_{n}"] for n in POLAR]
+            k = env["k"] + sign * h * env["s_k"]
+            return np.array(g_slip.stance_polar_rhs(*y, env["m"], env["l0"], k, env["g_s"]))
+
+        quotient = (field(1.0) - field(-1.0)) / (2 * h)
+        scale = env["k"] / env["m"] * env["l0"] + env["g_s"] + 10.0
+        assert_close(tangent, quotient, 1e-9, scale, "tangent vs central differences")
+
+
 def test_stance_cartesian_rhs_matches_derivation_and_polar_field():
     exprs = mechanics.stance_cartesian_rhs()
     pts = []
@@ -992,3 +1029,32 @@ def test_apex_return_is_flight_stance_flight_composition(row):
         }
         assert got == (*(expected[k] for k in APEX_OUT + extras), OK)
     assert n_ok >= 10 and n_fail >= 1, (n_ok, n_fail)
+
+
+@pytest.mark.parametrize("p", [3, -3, 5, -5, 7, -7])
+def test_half_integer_powers_print_as_square_roots(p):
+    """b**(p/2) prints as a multiplication and a square root (no libm pow: derive/printer.py), and
+    equals b**(p/2) to within 4 ulp (measured over these 2,000 bases: 1 ulp for p = 3, 2 for
+    -3, +-5 and 7, 3 for -7; only p = +-3 occurs in generated/)."""
+    from slipmaps.derive.printer import to_code
+
+    x = sp.Symbol("x", positive=True)
+    code = to_code(x ** sp.Rational(p, 2))
+    assert "**(" not in code and "math.sqrt(x)" in code, code
+    bases = np.exp(_rng(f"half_power{p}").uniform(-30.0, 30.0, 2000))
+    got = np.array([eval(code, {"math": math, "x": float(b)}) for b in bases])  # noqa: S307 - printed code
+    ref = bases ** (p / 2)
+    assert np.all(np.abs(got - ref) <= 4 * np.spacing(np.abs(ref))), np.max(
+        np.abs(got - ref) / np.spacing(ref)
+    )
+
+
+def test_generated_code_has_no_fractional_power_of_a_constant():
+    """Every constant fractional exponent in generated/ is a half-integer printed with square roots
+    (the runtime exponents, such as a contraction factor's power of the pass count, remain)."""
+    pattern = re.compile(r"\*\*\(-?\d+\.\d+\)")  # as SymPy prints a constant non-integer exponent
+    found = {
+        path.name: pattern.findall(path.read_text())
+        for path in (Path(generate.__file__).resolve().parents[1] / "generated").glob("*.py")
+    }
+    assert len(found) > 10 and not any(found.values()), {n: f for n, f in found.items() if f}
