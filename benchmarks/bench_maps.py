@@ -228,11 +228,19 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
 _APEX = ("b_y_apex", "b_xd_apex", "q_th_td")
 
 
+def _pairwise(terms: list[str]) -> str:
+    """Source of the sum of ``terms`` as a balanced tree of additions."""
+    while len(terms) > 1:
+        terms = [f"({' + '.join(terms[i : i + 2])})" for i in range(0, len(terms), 2)]
+    return terms[0]
+
+
 def _kernel_loop(kernel, args: tuple[str, ...], width: int):
     """A numba loop calling the scalar apex-return ``kernel`` once per state: its arguments
     ``args`` (the index's order) from the arrays ``h, v, th`` for :data:`_APEX` and from the tuple
     ``rest`` for the others, in order; returns a checksum of all ``width`` entries of every result
-    (a checksum of fewer would let the compiler drop the code of the others)."""
+    (a checksum of fewer would let the compiler drop the code of the others), summed pairwise (a
+    tree a few additions deep, not a chain whose latency grows with the width)."""
     arrays = dict(zip(_APEX, ("h[i]", "v[i]", "th[i]"), strict=True))
     others = [a for a in args if a not in arrays]
     fill = [arrays.get(a) or f"rest[{others.index(a)}]" for a in args]
@@ -242,7 +250,7 @@ def _kernel_loop(kernel, args: tuple[str, ...], width: int):
         "    s = 0.0\n"
         "    for i in range(h.shape[0]):\n"
         f"        r = kernel({', '.join(fill)})\n"
-        f"        s += {' + '.join(f'r[{j}]' for j in range(width))}\n"
+        f"        s += {_pairwise([f'r[{j}]' for j in range(width)])}\n"
         "    return s\n",
         namespace,
     )

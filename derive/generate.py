@@ -19,6 +19,7 @@ import difflib
 import hashlib
 import json
 import pprint
+import re
 from pathlib import Path
 
 import jinja2
@@ -148,6 +149,22 @@ def _external_sources(module: str) -> dict[str, str]:
     return {f"{'/'.join(parts[1:-1])}/{p.name}": p.read_text() for p in sorted(folder.glob("*.py"))}
 
 
+#: How an external kernel package imports generated modules (``from slipmaps.generated.X import ...``,
+#: ``from slipmaps.generated import X, Y as Z``).
+_GENERATED_IMPORT = re.compile(r"^from slipmaps\.generated(?:\.(\w+))? import ([\w ,]+)$", re.MULTILINE)
+
+
+def _generated_imports(sources: dict[str, str]) -> list[str]:
+    """The generated modules an external kernel package imports (its code, and the kernels it calls,
+    are compiled into a caller's cache): sorted, without ``status`` (its codes are fixed constants,
+    append-only: a cached kernel stays valid whatever else changes there)."""
+    found = set()
+    for text in sources.values():
+        for module, names in _GENERATED_IMPORT.findall(text):
+            found.update([module] if module else [n.split(" as ")[0].strip() for n in names.split(",")])
+    return sorted(found - {"status"})
+
+
 def _doc_key(k: dict) -> tuple:
     """What a kernel's docstrings say besides its equations: summary, notes, arguments, returns,
     status and batch form (derive/templates/kernels.py.j2)."""
@@ -181,7 +198,17 @@ def _render_module(mod: Module, files: dict[str, str]) -> str:
         raise ValueError(f"module {mod.name} calls into {missing}, which must be generated before it")
     depends = [{"name": f"{m}.py", "sha256": _sha(files[f"generated/{m}.py"])} for m in generated]
     for m in external:
-        depends += [{"name": n, "sha256": _sha(t)} for n, t in _external_sources(m).items()]
+        sources = _external_sources(m)
+        depends += [{"name": n, "sha256": _sha(t)} for n, t in sources.items()]
+        # the generated modules that package calls (the equations of motion of the exact stance):
+        # a regenerated one re-keys this file's cache although the package's files did not change
+        through = [g for g in _generated_imports(sources) if g not in generated]
+        absent = [g for g in through if f"generated/{g}.py" not in files]
+        if absent:
+            raise ValueError(f"module {mod.name} calls {m}, which imports {absent}: generate them first")
+        depends += [
+            {"name": f"generated/{g}.py", "sha256": _sha(files[f"generated/{g}.py"])} for g in through
+        ]
     imports = [f"from .{m} import {', '.join(sorted(callees[m]))}" for m in generated]
     imports += [f"from {m} import {', '.join(sorted(callees[m]))}" for m in external]
     return wrap(
@@ -261,9 +288,7 @@ def build_files() -> dict[str, str]:
             **common,
         )
     )
-    mods = modules()
-    for mod in mods:
-        files[f"generated/{mod.name}.py"] = _render_module(mod, files)
+    # the index first: the exact simulator's package reads its columns (a dependency of its callers)
     specs = all_maps()
     index = _index(specs)
     files["generated/maps_index.py"] = wrap(
@@ -280,6 +305,9 @@ def build_files() -> dict[str, str]:
             **common,
         )
     )
+    mods = modules()
+    for mod in mods:
+        files[f"generated/{mod.name}.py"] = _render_module(mod, files)
     files["generated/__init__.py"] = wrap(
         render(
             "init.py.j2",

@@ -12,6 +12,9 @@
 #   runtime/exact/jacobian.py sha256:079e967891f96aa1
 #   runtime/exact/kernels.py sha256:39d1598d210616fc
 #   runtime/exact/reference.py sha256:1a2d2771848fe471
+#   generated/flight.py sha256:8b20bd5230ccfe19
+#   generated/maps_index.py sha256:ea8038b15fb7ac02
+#   generated/slip_model.py sha256:1a04cccc79c2015a
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
 bottom."""

@@ -284,6 +284,24 @@ def test_header_hashes_every_imported_generated_module(built, rel):
         assert depends[f"{m}.py"] == hashlib.sha256(built[f"generated/{m}.py"].encode()).hexdigest()[:16]
 
 
+def test_header_hashes_the_generated_modules_an_external_package_imports(built):
+    """A module calling the exact simulator's kernels (runtime/exact/, hashed file by file) also
+    records the generated modules that package imports (the equations of motion, the index's
+    columns): regenerating slip_model.py alone re-keys the exact map's cache. Not status.py (above)."""
+    through = {}
+    for rel in GENERATED_PY:
+        header = _header(built[rel])
+        if "runtime/exact/" in header:
+            through[rel] = dict(
+                re.findall(r"^#\s+generated/(\w+\.py) sha256:([0-9a-f]+)$", header, re.MULTILINE)
+            )
+    assert len(through) >= 4  # exact.py, its Jacobian and its halves
+    for rel, deps in through.items():
+        assert {"slip_model.py", "maps_index.py"} <= set(deps) and "status.py" not in deps, (rel, deps)
+        for name, digest in deps.items():
+            assert digest == hashlib.sha256(built[f"generated/{name}"].encode()).hexdigest()[:16], (rel, name)
+
+
 def test_map_modules_depend_on_flight_and_geyer(built):
     """geyer imports flight (apex return); every gravity map also imports geyer (section 4 builds on 3.1)."""
     assert set(_depends(built["generated/geyer.py"])) == {"flight.py"}
@@ -705,6 +723,8 @@ def test_eq2_3_stance_polar_tangent_is_the_fields_derivative():
             return np.array(g_slip.stance_polar_rhs(*y, env["m"], env["l0"], k, env["g_s"]))
 
         quotient = (field(1.0) - field(-1.0)) / (2 * h)
+        # the field's natural magnitudes: the spring's and gravity's accelerations, and 10 for the
+        # rates and the centripetal and Coriolis terms (|q_rd| <= 3 m/s, |q_thd| <= 6 rad/s)
         scale = env["k"] / env["m"] * env["l0"] + env["g_s"] + 10.0
         assert_close(tangent, quotient, 1e-9, scale, "tangent vs central differences")
 
@@ -1035,7 +1055,8 @@ def test_apex_return_is_flight_stance_flight_composition(row):
 def test_half_integer_powers_print_as_square_roots(p):
     """b**(p/2) prints as a multiplication and a square root (no libm pow: derive/printer.py), and
     equals b**(p/2) to within 4 ulp (measured over these 2,000 bases: 1 ulp for p = 3, 2 for
-    -3, +-5 and 7, 3 for -7; only p = +-3 occurs in generated/)."""
+    -3, +-5 and 7, 3 for -7; only p = +-3 occurs in generated/). Evaluated by CPython, whose b**2
+    is libm's pow where numba multiplies: the same to an ulp."""
     from slipmaps.derive.printer import to_code
 
     x = sp.Symbol("x", positive=True)
@@ -1050,8 +1071,10 @@ def test_half_integer_powers_print_as_square_roots(p):
 
 
 def test_generated_code_has_no_fractional_power_of_a_constant():
-    """Every constant fractional exponent in generated/ is a half-integer printed with square roots
-    (the runtime exponents, such as a contraction factor's power of the pass count, remain)."""
+    """No constant non-integer exponent is left in generated/ (each one was a half-integer, printed
+    with square roots now; an exponent such as 3/4 would need its own printing, or a pow call
+    allowed here). Runtime exponents, such as a contraction factor's power of the pass count,
+    remain."""
     pattern = re.compile(r"\*\*\(-?\d+\.\d+\)")  # as SymPy prints a constant non-integer exponent
     found = {
         path.name: pattern.findall(path.read_text())

@@ -283,22 +283,22 @@ def test_batch_row_store_flags_a_derivative_that_is_not_finite(module, store):
     status = np.zeros(2, dtype=np.int64)
     good = tuple(float(j) for j in range(n))
 
-    def store(values, code):
+    def put(values, code):
         fn(out, status, 1, (*values, code))
         return out[1].copy(), int(status[1])
 
-    row, code = store(good, ok)
+    row, code = put(good, ok)
     assert code == ok and np.array_equal(row, good)
     for column in (first, n - 1):
         for bad in (np.inf, -np.inf, np.nan):
             values = list(good)
             values[column] = bad
-            row, code = store(values, ok)
+            row, code = put(values, ok)
             assert code == numerical and np.isnan(row).all(), (column, bad)
-            row, code = store(values, failed)  # a failed row is not checked again
+            row, code = put(values, failed)  # a failed row is not checked again
             assert code == failed and np.array_equal(row, values, equal_nan=True)
     values = list(good)
     values[first - 1] = np.inf  # a value, not a derivative
-    row, code = store(values, ok)
+    row, code = put(values, ok)
     assert code == ok and np.array_equal(row, values)
     assert np.array_equal(out[0], np.zeros(n)) and status[0] == 0  # only row 1 written

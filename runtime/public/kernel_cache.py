@@ -22,7 +22,8 @@ running the old integrator. So the folder of a kernel outside ``slipmaps.generat
 digest of the contents of every slipmaps source that defines kernels (:func:`kernel_sources`; the
 generated modules included), and any change to one of them recompiles those kernels. The
 generated modules need none: each states the hashes of the modules it calls in its header
-(``slipmaps generate``), so a change in a callee changes the caller's file. With
+(``slipmaps generate``; for the exact map's modules also those of ``runtime/exact/`` and of the
+generated modules it imports), so a change in a callee changes the caller's file. With
 ``NUMBA_CACHE_DIR`` set, numba's own rules apply (without the digest). Clearing the cache is
 removing the directory (:func:`cache_root` names it).
 
