@@ -2,7 +2,8 @@
 
 Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
-(the index the runtime reads); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
+(the index the runtime reads); ``generated/rows.py`` (the Jacobians' batch row stores, one per
+layout, shared by their modules); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
 record the report's sections 6-8 read) and ``docs/maps.md``; the equation summary and the short map
 table of ``README.md`` and the report equations of each family page (:func:`family_pages`), between
 their markers.
@@ -28,7 +29,7 @@ import sympy as sp
 from . import docs
 from .equations import entries, render_equation_record, render_equation_summary, render_equation_table
 from .ir import Module, calls, is_external_module
-from .lower import lower
+from .lower import ROWS_MODULE, lower
 from .maps import all_halves, all_maps, ground_truth
 from .maps import family_pages as all_family_pages
 from .mapspec import MapSpec
@@ -185,8 +186,9 @@ def _share_docs(kernels: list[dict]) -> None:
         k["doc_ref"] = "" if ref == k["name"] else ref
 
 
-def _render_module(mod: Module, files: dict[str, str]) -> str:
-    kernels = [lower(k) for k in mod.kernels()]
+def _render_module(mod: Module, kernels: list[dict], files: dict[str, str]) -> str:
+    """The source of module ``mod`` from its lowered kernels; ``files`` holds every generated module
+    it imports (rendered before it), whose content hashes go into its header."""
     callees: dict[str, set[str]] = {}
     for k in kernels:
         for module, name in k["callees"]:
@@ -274,6 +276,18 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
     }
 
 
+#: The generated package's modules that are not kernel modules of a declaration.
+OWN_MODULES = frozenset({"status", "maps_index", ROWS_MODULE, "__init__"})
+
+
+def check_module_names(mods) -> None:
+    """Refuse a kernel module (a declared map's, say) named like one of :data:`OWN_MODULES`: it would
+    overwrite that module."""
+    taken = sorted({m.name for m in mods} & OWN_MODULES)
+    if taken:
+        raise ValueError(f"kernel modules {taken}: these names are the generated package's own modules")
+
+
 def build_files() -> dict[str, str]:
     """Every generated file as {path relative to the repository root: content}."""
     _require_checkout()
@@ -306,8 +320,27 @@ def build_files() -> dict[str, str]:
         )
     )
     mods = modules()
+    check_module_names(mods)
+    lowered = {mod.name: [lower(k) for k in mod.kernels()] for mod in mods}
+    # the row stores every module's batch Jacobians use, one module before them all
+    stores = {
+        (st["first"], st["n_out"]): st
+        for kernels in lowered.values()
+        for st in (k["batch"]["store"] for k in kernels if k["batch"])
+        if st
+    }
+    files[f"generated/{ROWS_MODULE}.py"] = wrap(
+        render(
+            "rows.py.j2",
+            source="derive/lower.py",
+            template="derive/templates/rows.py.j2",
+            depends=[],
+            stores=[stores[layout] for layout in sorted(stores)],
+            **common,
+        )
+    )
     for mod in mods:
-        files[f"generated/{mod.name}.py"] = _render_module(mod, files)
+        files[f"generated/{mod.name}.py"] = _render_module(mod, lowered[mod.name], files)
     files["generated/__init__.py"] = wrap(
         render(
             "init.py.j2",

@@ -47,9 +47,19 @@ def _names(expr) -> set[str]:
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
 _GENERATED_NAME = re.compile(
-    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|store_row_\d+_\d+)|STATUS_\w+"
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+)|STATUS_\w+|store_row_\d+_\d+"
 )
 _TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
+
+#: The generated module of the Jacobians' batch row stores, one function per layout, shared by
+#: every module (derive/generate.py renders it from the layouts the lowered kernels use).
+ROWS_MODULE = "rows"
+
+
+def row_store(first: int, n_out: int) -> dict:
+    """The batch row store of a kernel with ``n_out`` outputs whose derivatives (left unchecked by
+    the scalar kernel) start at output ``first``: its name in :data:`ROWS_MODULE` and its layout."""
+    return {"name": f"store_row_{first}_{n_out}", "first": first, "n_out": n_out}
 
 
 def _check_name(name: str, where: str) -> None:
@@ -517,16 +527,12 @@ def lower(kernel: Kernel) -> dict:
         }
         unchecked = [j for j, f in enumerate(outputs) if f.name in kernel.unchecked]
         if unchecked:
-            # a row store checking the derivatives, one per layout in the module (kernels.py.j2)
+            # a row store checking the derivatives, one per layout in generated/rows.py (rows.py.j2)
             first = unchecked[0]
             if unchecked != list(range(first, len(outputs))):
                 raise LoweringError(f"kernel {kernel.name}: the unchecked outputs must be the last ones")
-            batch["store"] = {
-                "name": f"_store_row_{first}_{len(outputs)}",
-                "first": first,
-                "n_out": len(outputs),
-            }
-            ctx.statuses.add("NUMERICAL_RANGE")
+            batch["store"] = row_store(first, len(outputs))
+            ctx.callees.add((ROWS_MODULE, batch["store"]["name"]))
     if kernel.status:
         ctx.statuses.add("OK")
         if kernel.check_outputs:

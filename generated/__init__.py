@@ -71,5 +71,6 @@ Modules:
     iterative_report_decompression: Iterative decompression half as printed (bottom to liftoff, k_d) (report
         section 5.2.2): bottom -> liftoff.
     maps_index: the index of every declared map (plain data).
+    rows: the row stores of the Jacobians' batch forms, one per layout.
     status: status codes shared by all kernels and the exact simulator.
 """

@@ -7,6 +7,7 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
+#   rows.py sha256:0089f4b891692c1b
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -17,6 +18,7 @@ import numpy as np
 from numba import njit, prange
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
+from .rows import store_row_10_60, store_row_12_72
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -29,59 +31,6 @@ _NAN6 = (NAN,) * 6
 _NAN30 = (NAN,) * 30
 _NAN60 = (NAN,) * 60
 _NAN72 = (NAN,) * 72
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_10_60(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (60 outputs, the
-    derivatives from column 10, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59],
-        status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(10, 60):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(60):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_12_72(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (72 outputs, the
-    derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(12, 72):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(72):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -526,11 +475,11 @@ def geyer_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 60); the columns are the outputs of
     :func:`geyer_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_60`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_10_60`).
     """
     for i in prange(out.shape[0]):
         res = geyer_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
-        _store_row_10_60(out, status, i, res)
+        store_row_10_60(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -755,9 +704,9 @@ def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0
     Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
     :func:`geyer_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_72`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_72`).
     """
     for i in prange(out.shape[0]):
         res = (geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s,
             g_f, q_r_td, q_r_lo))
-        _store_row_12_72(out, status, i, res)
+        store_row_12_72(out, status, i, res)

@@ -7,7 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:74225526d15d5d94
+#   geyer_jacobian.py sha256:12a4ff7e62097af8
+#   rows.py sha256:0089f4b891692c1b
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -19,6 +20,7 @@ from numba import njit, prange
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
+from .rows import store_row_12_72, store_row_14_84
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -28,61 +30,6 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERI
 NAN = math.nan
 _NAN72 = (NAN,) * 72
 _NAN84 = (NAN,) * 84
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_12_72(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (72 outputs, the
-    derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(12, 72):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(72):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_14_84(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (84 outputs, the
-    derivatives from column 14, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
-        77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(14, 84):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(84):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -592,12 +539,12 @@ def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l
     Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
     :func:`gravity_type0_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_72`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_72`).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type0_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
             q_r_lo, reading, samples, iterations, tol))
-        _store_row_12_72(out, status, i, res)
+        store_row_12_72(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -852,9 +799,9 @@ def gravity_type0_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, groun
     tol.
     Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
     :func:`gravity_type0_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_14_84`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_14_84`).
     """
     for i in prange(out.shape[0]):
         res = (gravity_type0_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
             g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol))
-        _store_row_14_84(out, status, i, res)
+        store_row_14_84(out, status, i, res)

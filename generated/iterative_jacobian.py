@@ -7,14 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:74225526d15d5d94
-#   geyer_vs_jacobian.py sha256:7c3772d5423255e3
-#   gravity_type0_jacobian.py sha256:7deb1d73ca0e6e26
-#   gravity_type1_jacobian.py sha256:1b8597ef172a67d1
-#   gravity_type2_jacobian.py sha256:ffc9be41c5d5622c
-#   gravity_type3_jacobian.py sha256:ccf750d1c7a1bf39
-#   gravity_type4_jacobian.py sha256:234e02501c4a0960
-#   gravity_type5_jacobian.py sha256:c18bbd409c3cdd3d
+#   geyer_jacobian.py sha256:12a4ff7e62097af8
+#   geyer_vs_jacobian.py sha256:a5a2252ad71dc27c
+#   gravity_type0_jacobian.py sha256:bff7df6075bb5069
+#   gravity_type1_jacobian.py sha256:b3cd806c9fc2efd5
+#   gravity_type2_jacobian.py sha256:2d17230dc5d640de
+#   gravity_type3_jacobian.py sha256:8dce411e26663470
+#   gravity_type4_jacobian.py sha256:b77de7700c2a41d7
+#   gravity_type5_jacobian.py sha256:fce3784e57318524
+#   rows.py sha256:0089f4b891692c1b
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -33,6 +34,7 @@ from .gravity_type2_jacobian import gravity_type2_stance_jacobian
 from .gravity_type3_jacobian import gravity_type3_stance_jacobian
 from .gravity_type4_jacobian import gravity_type4_stance_jacobian
 from .gravity_type5_jacobian import gravity_type5_stance_jacobian
+from .rows import store_row_11_77, store_row_13_91
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -45,63 +47,6 @@ _NAN36 = (NAN,) * 36
 _NAN42 = (NAN,) * 42
 _NAN77 = (NAN,) * 77
 _NAN91 = (NAN,) * 91
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_11_77(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (77 outputs, the
-    derivatives from column 11, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76],
-        status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(11, 77):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(77):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_13_91(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (91 outputs, the
-    derivatives from column 13, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
-        77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], out[i, 84], out[i, 85],
-        out[i, 86], out[i, 87], out[i, 88], out[i, 89], out[i, 90], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(13, 91):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(91):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -1673,12 +1618,12 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_t
     Writes output j of row i to ``out[i, j]`` (shape (n, 77); the columns are the outputs of
     :func:`iterative_stance_jacobian_nodes_4_zeroth_geyer`, in order) and its status code to ``status[i]``
     (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_11_77`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_11_77`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1998,12 +1943,12 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_batch(b_y_apex, b_xd_ape
     Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
     :func:`iterative_apex_return_jacobian_nodes_4_zeroth_geyer`, in order) and its status code to
     ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_13_91`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_13_91`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2307,7 +2252,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_held_batch(q_r_td, q_rd_td, q_th_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2379,7 +2324,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_held_batch(b_y_apex, b_xd_apex
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2650,7 +2595,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type0_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2722,7 +2667,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2822,7 +2767,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type1_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2894,7 +2839,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2994,7 +2939,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type2_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3066,7 +3011,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3166,7 +3111,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type3_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3238,7 +3183,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3338,7 +3283,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type4_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3410,7 +3355,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3510,7 +3455,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_gravity_type5_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3582,7 +3527,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4560,7 +4505,7 @@ def iterative_stance_jacobian_nodes_4_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_4_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4632,7 +4577,7 @@ def iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs_batch(b_y_apex, b_xd_
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_4_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5200,7 +5145,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5272,7 +5217,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_batch(b_y_apex, b_xd_ape
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5406,7 +5351,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_held_batch(q_r_td, q_rd_td, q_th_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5478,7 +5423,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_held_batch(b_y_apex, b_xd_apex
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5578,7 +5523,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type0_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5650,7 +5595,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5750,7 +5695,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type1_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5822,7 +5767,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5922,7 +5867,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type2_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5994,7 +5939,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6094,7 +6039,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type3_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6166,7 +6111,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6266,7 +6211,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type4_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6338,7 +6283,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6438,7 +6383,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_gravity_type5_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6510,7 +6455,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6867,7 +6812,7 @@ def iterative_stance_jacobian_nodes_1_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_1_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6939,7 +6884,7 @@ def iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs_batch(b_y_apex, b_xd_
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_1_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7788,7 +7733,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7860,7 +7805,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_batch(b_y_apex, b_xd_ape
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7994,7 +7939,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_held_batch(q_r_td, q_rd_td, q_th_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8066,7 +8011,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_held_batch(b_y_apex, b_xd_apex
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8166,7 +8111,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type0_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8238,7 +8183,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8338,7 +8283,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type1_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8410,7 +8355,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8510,7 +8455,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type2_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8582,7 +8527,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8682,7 +8627,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type3_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8754,7 +8699,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8854,7 +8799,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type4_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8926,7 +8871,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -9026,7 +8971,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_gravity_type5_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -9098,7 +9043,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -9609,7 +9554,7 @@ def iterative_stance_jacobian_nodes_2_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_2_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -9681,7 +9626,7 @@ def iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs_batch(b_y_apex, b_xd_
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_2_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -10736,7 +10681,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -10808,7 +10753,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_batch(b_y_apex, b_xd_ape
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -10942,7 +10887,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_held_batch(q_r_td, q_rd_td, q_th_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11014,7 +10959,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_held_batch(b_y_apex, b_xd_apex
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11114,7 +11059,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type0_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11186,7 +11131,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11286,7 +11231,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type1_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11358,7 +11303,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11458,7 +11403,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type2_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11530,7 +11475,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11630,7 +11575,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type3_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11702,7 +11647,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11802,7 +11747,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type4_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11874,7 +11819,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -11974,7 +11919,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_gravity_type5_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -12046,7 +11991,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -12664,7 +12609,7 @@ def iterative_stance_jacobian_nodes_3_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_3_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -12736,7 +12681,7 @@ def iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs_batch(b_y_apex, b_xd_
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_3_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14519,7 +14464,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14591,7 +14536,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_batch(b_y_apex, b_xd_ape
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14725,7 +14670,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_held_batch(q_r_td, q_rd_td, q_th_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14797,7 +14742,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_held_batch(b_y_apex, b_xd_apex
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14897,7 +14842,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type0_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -14969,7 +14914,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15069,7 +15014,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type1_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15141,7 +15086,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15241,7 +15186,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type2_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15313,7 +15258,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15413,7 +15358,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type3_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15485,7 +15430,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15585,7 +15530,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type4_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15657,7 +15602,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15757,7 +15702,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_gravity_type5_batch(q_r_td, q_rd_td
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -15829,7 +15774,7 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5_batch(b_y_apex, 
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -16838,7 +16783,7 @@ def iterative_stance_jacobian_nodes_6_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_t
     for i in prange(out.shape[0]):
         res = (iterative_stance_jacobian_nodes_6_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, iterations, tol))
-        _store_row_11_77(out, status, i, res)
+        store_row_11_77(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -16910,4 +16855,4 @@ def iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs_batch(b_y_apex, b_xd_
     for i in prange(out.shape[0]):
         res = (iterative_apex_return_jacobian_nodes_6_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        _store_row_13_91(out, status, i, res)
+        store_row_13_91(out, status, i, res)

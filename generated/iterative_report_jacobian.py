@@ -7,14 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:74225526d15d5d94
-#   geyer_vs_jacobian.py sha256:7c3772d5423255e3
-#   gravity_type0_jacobian.py sha256:7deb1d73ca0e6e26
-#   gravity_type1_jacobian.py sha256:1b8597ef172a67d1
-#   gravity_type2_jacobian.py sha256:ffc9be41c5d5622c
-#   gravity_type3_jacobian.py sha256:ccf750d1c7a1bf39
-#   gravity_type4_jacobian.py sha256:234e02501c4a0960
-#   gravity_type5_jacobian.py sha256:c18bbd409c3cdd3d
+#   geyer_jacobian.py sha256:12a4ff7e62097af8
+#   geyer_vs_jacobian.py sha256:a5a2252ad71dc27c
+#   gravity_type0_jacobian.py sha256:bff7df6075bb5069
+#   gravity_type1_jacobian.py sha256:b3cd806c9fc2efd5
+#   gravity_type2_jacobian.py sha256:2d17230dc5d640de
+#   gravity_type3_jacobian.py sha256:8dce411e26663470
+#   gravity_type4_jacobian.py sha256:b77de7700c2a41d7
+#   gravity_type5_jacobian.py sha256:fce3784e57318524
+#   rows.py sha256:0089f4b891692c1b
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -33,6 +34,7 @@ from .gravity_type2_jacobian import gravity_type2_stance_jacobian
 from .gravity_type3_jacobian import gravity_type3_stance_jacobian
 from .gravity_type4_jacobian import gravity_type4_stance_jacobian
 from .gravity_type5_jacobian import gravity_type5_stance_jacobian
+from .rows import store_row_10_70, store_row_12_84
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -42,61 +44,6 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
 NAN = math.nan
 _NAN70 = (NAN,) * 70
 _NAN84 = (NAN,) * 84
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_10_70(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (70 outputs, the
-    derivatives from column 10, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(10, 70):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(70):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
-
-
-@njit(cache=True, error_model="numpy")
-def _store_row_12_84(out, status, i, res):
-    """Row i of a Jacobian's batch form: the result ``res`` of its scalar kernel (84 outputs, the
-    derivatives from column 12, then the status) into ``out[i]`` and ``status[i]``; a row whose
-    values exist but a derivative does not (not finite) is NUMERICAL_RANGE, all NaN, as the public
-    API reports it (runtime/api/jacobian.py)."""
-    (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8], out[i,
-        9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], out[i, 15], out[i, 16], out[i, 17],
-        out[i, 18], out[i, 19], out[i, 20], out[i, 21], out[i, 22], out[i, 23], out[i, 24], out[i, 25], out[i,
-        26], out[i, 27], out[i, 28], out[i, 29], out[i, 30], out[i, 31], out[i, 32], out[i, 33], out[i, 34],
-        out[i, 35], out[i, 36], out[i, 37], out[i, 38], out[i, 39], out[i, 40], out[i, 41], out[i, 42], out[i,
-        43], out[i, 44], out[i, 45], out[i, 46], out[i, 47], out[i, 48], out[i, 49], out[i, 50], out[i, 51],
-        out[i, 52], out[i, 53], out[i, 54], out[i, 55], out[i, 56], out[i, 57], out[i, 58], out[i, 59], out[i,
-        60], out[i, 61], out[i, 62], out[i, 63], out[i, 64], out[i, 65], out[i, 66], out[i, 67], out[i, 68],
-        out[i, 69], out[i, 70], out[i, 71], out[i, 72], out[i, 73], out[i, 74], out[i, 75], out[i, 76], out[i,
-        77], out[i, 78], out[i, 79], out[i, 80], out[i, 81], out[i, 82], out[i, 83], status[i]) = res
-    if status[i] == STATUS_OK:
-        # v - v == 0 exactly when v is finite; one branch-free pass over the stored derivatives
-        finite = True
-        for j in range(12, 84):
-            v = out[i, j]
-            finite &= v - v == 0.0
-        if not finite:
-            for j in range(84):
-                out[i, j] = math.nan
-            status[i] = STATUS_NUMERICAL_RANGE
 
 
 @njit(cache=True, error_model="numpy")
@@ -953,12 +900,12 @@ def iterative_report_stance_jacobian_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td
     Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
     :func:`iterative_report_stance_jacobian_zeroth_geyer`, in order) and its status code to ``status[i]``
     (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_10_70`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_10_70`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i],
             m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -1276,12 +1223,12 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_batch(b_y_apex, b_xd_apex
     Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
     :func:`iterative_report_apex_return_jacobian_zeroth_geyer`, in order) and its status code to ``status[i]``
     (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`_store_row_12_84`).
+    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_84`).
     """
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_geyer(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2138,7 +2085,7 @@ def iterative_report_stance_jacobian_zeroth_held_batch(q_r_td, q_rd_td, q_th_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
             l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -2214,7 +2161,7 @@ def iterative_report_apex_return_jacobian_zeroth_held_batch(b_y_apex, b_xd_apex,
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_held(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3042,7 +2989,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3119,7 +3066,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type0(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -3947,7 +3894,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4024,7 +3971,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type1(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4852,7 +4799,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -4929,7 +4876,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type2(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5757,7 +5704,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -5834,7 +5781,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type3(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6662,7 +6609,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -6739,7 +6686,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type4(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7567,7 +7514,7 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5_batch(q_r_td, q_rd_td,
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -7644,7 +7591,7 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5_batch(b_y_apex, b
         res = (iterative_report_apex_return_jacobian_zeroth_gravity_type5(b_y_apex[i], b_xd_apex[i],
             q_th_td[i], ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations,
             bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8505,7 +8452,7 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th
     for i in prange(out.shape[0]):
         res = (iterative_report_stance_jacobian_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i],
             q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo, variant, iterations, bottom_length))
-        _store_row_10_70(out, status, i, res)
+        store_row_10_70(out, status, i, res)
 
 
 @njit(cache=True, error_model="numpy")
@@ -8581,4 +8528,4 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs_batch(b_y_apex, b_xd_a
     for i in prange(out.shape[0]):
         res = (iterative_report_apex_return_jacobian_zeroth_geyer_vs(b_y_apex[i], b_xd_apex[i], q_th_td[i],
             ground[i], m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, variant, iterations, bottom_length))
-        _store_row_12_84(out, status, i, res)
+        store_row_12_84(out, status, i, res)

@@ -393,6 +393,17 @@ def test_status_enum_matches_source():
     assert STATUS_CODES[0][:2] == ("OK", 0)
 
 
+@pytest.mark.parametrize("name", sorted(generate.OWN_MODULES))
+def test_a_kernel_module_named_like_the_packages_own_is_refused(name):
+    """A declared map named ``rows`` (say) would overwrite generated/rows.py: refused at generation."""
+    from slipmaps.derive.ir import Module
+
+    kept = Module(name="geyer", doc="", source="", kernels=tuple)
+    generate.check_module_names([kept])
+    with pytest.raises(ValueError, match=rf"\['{name}'\].*generated package's own modules"):
+        generate.check_module_names([kept, Module(name=name, doc="", source="", kernels=tuple)])
+
+
 def _all_kernel_modules():
     """Every generated kernel module (the maps', the model's and the Jacobians')."""
     names = sorted(p.stem for p in (generate.ROOT / "generated").glob("*.py"))

@@ -450,7 +450,9 @@ def test_argument_domain_folded_by_assumptions_is_refused():
         Arg(m_pos, "m", m_pos > 0)
 
 
-@pytest.mark.parametrize("name", ["_x0", "_c3", "_it0", "_n0_1", "_conv2", "STATUS_OK", "res", "out", "i"])
+@pytest.mark.parametrize(
+    "name", ["_x0", "_c3", "_it0", "_n0_1", "_conv2", "STATUS_OK", "store_row_12_72", "res", "out", "i"]
+)
 def test_names_of_the_generated_code_are_reserved(name):
     """A local named like a CSE temporary (``_x0``) would be overwritten by a later stage's temporary
     (a wrong value, no error): every name the lowering or the template uses is refused."""

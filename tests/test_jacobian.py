@@ -244,27 +244,33 @@ def test_readme_derivatives_example_runs():
 
 
 def _row_stores() -> list[tuple[str, str]]:
-    """(module, function) of every layout of a Jacobian batch's row store in generated/
-    (``_store_row_<first>_<n>``: the derivatives from column ``first`` of ``n`` outputs; one template
-    writes them all), each from the first module that has it."""
+    """(module, function) of every layout of a Jacobian batch's row store: the functions of
+    generated/rows.py (``store_row_<first>_<n>``: the derivatives from column ``first`` of ``n``
+    outputs; one template writes them all), each of them imported by a generated module."""
     from pathlib import Path
 
     from slipmaps import generated as package
 
     generated = Path(package.__file__).resolve().parent
-    found = []
-    for path in sorted(generated.glob("*_jacobian.py")):
-        for line in path.read_text().splitlines():
-            if line.startswith("def _store_row_"):
-                found.append((path.stem, line[4 : line.index("(")]))
-    return list({store: (module, store) for module, store in reversed(found)}.values())
+    stores = [
+        line[4 : line.index("(")]
+        for line in (generated / "rows.py").read_text().splitlines()
+        if line.startswith("def store_row_")
+    ]
+    users = "\n".join(path.read_text() for path in sorted(generated.glob("*_jacobian.py")))
+    return [("rows", store) for store in stores if f"{store}(out, status, i, res)" in users]
 
 
 ROW_STORES = _row_stores()
 
 
 def test_row_stores_found():
-    assert len(ROW_STORES) >= 2  # the stance and the apex-return layouts at least
+    """generated/rows.py holds the stance and the apex-return layouts at least, each one used (a
+    layout no module calls would be generated for nothing)."""
+    from slipmaps.generated import rows
+
+    defined = [n for n in dir(rows) if n.startswith("store_row_")]
+    assert len(ROW_STORES) >= 2 and sorted(store for _, store in ROW_STORES) == sorted(defined)
 
 
 @pytest.mark.parametrize("module, store", ROW_STORES)
@@ -275,7 +281,7 @@ def test_batch_row_store_flags_a_derivative_that_is_not_finite(module, store):
     import importlib
 
     fn = getattr(importlib.import_module(f"slipmaps.generated.{module}"), store)
-    first, n = map(int, store.removeprefix("_store_row_").split("_"))
+    first, n = map(int, store.removeprefix("store_row_").split("_"))
     ok, failed, numerical = (
         int(s) for s in (slipmaps.Status.OK, slipmaps.Status.FALL, slipmaps.Status.NUMERICAL_RANGE)
     )
