@@ -54,6 +54,14 @@ PARAMS: dict[str, Arg] = {
     for name, a in params.ALIASES.items()
 }
 
+#: The parameters in the order of a parameter record (a role kernel's ``p``, :class:`~.ir.Layout`):
+#: the table's, each alias just before the first field it sets (``k`` before ``k_c``).
+PARAM_ORDER: tuple[str, ...] = tuple(
+    name
+    for r in params.PARAMETERS
+    for name in (*(a for a, row in params.ALIASES.items() if row["sets"][0] == r["name"]), r["name"])
+)
+
 #: The polar touchdown state, the first arguments of every stance map.
 TOUCHDOWN: tuple[Arg, ...] = (
     PARAMS["q_r_td"],

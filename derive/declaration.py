@@ -216,6 +216,14 @@ class Declaration:
         :meth:`choices` removes them)."""
         return tuple(o.arg() for o in self.options if o.kernel or o.specialize)
 
+    def p_layout(self, extra: tuple[str, ...] = ()) -> tuple[str, ...]:
+        """The parameter record of every role kernel of this declaration (:class:`~.ir.Layout`'s
+        ``p``): its parameters and ``extra`` in the parameter table's order, then the options that
+        are kernel arguments (the specialized ones too: a choice's kernels drop theirs,
+        :mod:`.specialize`)."""
+        names = set(self.params) | set(extra)
+        return tuple(p for p in catalog.PARAM_ORDER if p in names) + tuple(a.name for a in self.option_args())
+
     def specialized(self) -> tuple[Option, ...]:
         """The options with kernels per choice (:attr:`Option.specialize`)."""
         return tuple(o for o in self.options if o.specialize)

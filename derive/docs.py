@@ -118,8 +118,9 @@ def maps_page(index: dict) -> str:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
         kernels = row["kernels"]
         out += [
-            f"- stance arguments: {', '.join(f'`{a}`' for a in kernels['stance']['args'])}",
-            f"- apex-return arguments: {', '.join(f'`{a}`' for a in kernels['apex_return']['args'])}",
+            f"- stance inputs `x`: {', '.join(f'`{a}`' for a in kernels['stance']['x'])}",
+            f"- apex-return inputs `x`: {', '.join(f'`{a}`' for a in kernels['apex_return']['x'])}",
+            f"- parameter record `p`: {', '.join(f'`{a}`' for a in kernels['stance']['p'])}",
             f"- requires: {', '.join(row['requires']) or 'nothing'}",
             *_per_choice(row),
             f"- generated module `slipmaps.generated.{row['module']}`: "
@@ -192,10 +193,11 @@ def _halves_page(index: dict) -> list[str]:
         if row["summary"]:
             out += [f"{row['summary'][0].upper()}{row['summary'][1:]}.", ""]
         out += [
-            f"- arguments: {', '.join(f'`{a}`' for a in row['kernels']['half']['args'])}",
+            f"- inputs `x`: {', '.join(f'`{a}`' for a in row['kernels']['half']['x'])}; parameter record "
+            f"`p`: {', '.join(f'`{a}`' for a in row['kernels']['half']['p'])}",
             *_per_choice(row),
             f"- generated module `slipmaps.generated.{row['module']}`: `{row['kernels']['half']['name']}`, "
-            f"`{row['kernels']['half']['name']}_batch`",
+            f"`{row['kernels']['half']['name']}_rows`",
         ]
         if row["extras"]:
             out.append("- extra outputs: " + ", ".join(f"`{e['name']}` ({e['doc']})" for e in row["extras"]))

@@ -2,8 +2,8 @@
 
 Files: ``generated/status.py``; one kernel module per :class:`~.ir.Module` of the model
 (``slip_model``, ``flight``) and per declared map (:func:`.maps.all_maps`); ``generated/maps_index.py``
-(the index the runtime reads); ``generated/rows.py`` (the Jacobians' batch row stores, one per
-layout, shared by their modules); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
+(the index the runtime reads); ``generated/support.py`` (what the kernels share: stack arrays, a
+row's store and checks); ``generated/__init__.py``; ``docs/equations.md`` (+ ``.json``, the
 record the report's sections 6-8 read) and ``docs/maps.md``; the equation summary and the short map
 table of ``README.md`` and the report equations of each family page (:func:`family_pages`), between
 their markers.
@@ -19,22 +19,24 @@ from __future__ import annotations
 import difflib
 import hashlib
 import json
+import math
 import pprint
-import re
 from pathlib import Path
 
 import jinja2
 import sympy as sp
 
-from . import docs
+from . import docs, numerics
 from .equations import entries, render_equation_record, render_equation_summary, render_equation_table
-from .ir import Module, calls, is_external_module
-from .lower import ROWS_MODULE, lower
+from .ir import Module, calls
+from .lower import SUPPORT_MODULE, lower
 from .maps import all_halves, all_maps, ground_truth
 from .maps import family_pages as all_family_pages
 from .mapspec import MapSpec
+from .model import simulation
 from .model.kernels import MODULES as MODEL_MODULES
-from .model.kernels import flight_kernels
+from .model.kernels import PUBLIC as PUBLIC_MODULE
+from .model.kernels import flight_kernels, public_kernels
 from .render import render
 from .status import STATUS_CODES
 from .tangent import Differentiator, widened
@@ -82,10 +84,41 @@ def _require_checkout() -> None:
         )
 
 
+#: The generator's numerical support modules (hand-written algorithms rendered from derive/templates/
+#: with data from derive/numerics.py): name -> (template, data, the generated modules it imports
+#: besides status and support). A kernel module calling into one imports it like any other.
+NUMERICS = {
+    "dop853": ("dop853.py.j2", numerics.dop853, ()),
+    "exact_stance": ("exact_stance.py.j2", numerics.exact_stance, ("dop853", "slip_model")),
+}
+
+
 def _callee_modules(mod: Module) -> set[str]:
-    """The other modules whose kernels ``mod``'s kernels call."""
+    """The other kernel modules whose kernels ``mod``'s kernels call (not the support modules)."""
     found = {c.kernel.module for kernel in mod.kernels() for c in calls(kernel.steps)}
-    return {m for m in found if not is_external_module(m)} - {mod.name}
+    return found - set(NUMERICS) - {mod.name}
+
+
+def _render_numerics(name: str, files: dict[str, str]) -> None:
+    """``generated/<name>.py``, a numerical support module (:data:`NUMERICS`), into ``files`` (after
+    the modules it imports, whose content hashes its header records)."""
+    template, data, imports = NUMERICS[name]
+    for dep in imports:
+        if dep in NUMERICS and f"generated/{dep}.py" not in files:
+            _render_numerics(dep, files)
+    missing = [d for d in imports if f"generated/{d}.py" not in files]
+    if missing:
+        raise ValueError(f"support module {name} imports {missing}, which must be generated before it")
+    files[f"generated/{name}.py"] = wrap(
+        render(
+            template,
+            source="derive/numerics.py",
+            template=f"derive/templates/{template}",
+            depends=[{"name": f"{d}.py", "sha256": _sha(files[f"generated/{d}.py"])} for d in imports],
+            versions=VERSIONS,
+            **data(),
+        )
+    )
 
 
 def _jacobian_modules(primal: tuple[Module, ...], flights) -> tuple[Module, ...]:
@@ -125,7 +158,8 @@ def modules() -> tuple[Module, ...]:
     flights = flight_kernels()
     maps = tuple(spec.module(flights) for spec in (*all_maps(), ground_truth()))
     jacobians = _jacobian_modules(MODEL_MODULES + maps, flights)
-    pending = list(MODEL_MODULES + maps + jacobians + tuple(half.module() for half in all_halves()))
+    halves = tuple(half.module() for half in all_halves())
+    pending = list(MODEL_MODULES + maps + jacobians + halves + (PUBLIC_MODULE,))
     needs = {mod.name: _callee_modules(mod) for mod in pending}
     done: list[Module] = []
     while pending:
@@ -137,41 +171,13 @@ def modules() -> tuple[Module, ...]:
     return tuple(done)
 
 
-def _external_sources(module: str) -> dict[str, str]:
-    """The sources an external kernel module may depend on: every file of its package (``{name:
-    content}``), hashed into a caller's header so that numba's cache of the caller (which does not
-    see other files) is re-keyed when any of them changes."""
-    parts = module.split(".")
-    if parts[0] != "slipmaps" or len(parts) < 3 or parts[1] not in ("runtime",):
-        raise ValueError(f"external kernel module {module}: expected slipmaps.runtime.<package>.<module>")
-    folder = ROOT.joinpath(*parts[1:-1])
-    if not (folder / f"{parts[-1]}.py").is_file():
-        raise ValueError(f"external kernel module {module}: no file {folder / (parts[-1] + '.py')}")
-    return {f"{'/'.join(parts[1:-1])}/{p.name}": p.read_text() for p in sorted(folder.glob("*.py"))}
-
-
-#: How an external kernel package imports generated modules (``from slipmaps.generated.X import ...``,
-#: ``from slipmaps.generated import X, Y as Z``).
-_GENERATED_IMPORT = re.compile(r"^from slipmaps\.generated(?:\.(\w+))? import ([\w ,]+)$", re.MULTILINE)
-
-
-def _generated_imports(sources: dict[str, str]) -> list[str]:
-    """The generated modules an external kernel package imports (its code, and the kernels it calls,
-    are compiled into a caller's cache): sorted, without ``status`` (its codes are fixed constants,
-    append-only: a cached kernel stays valid whatever else changes there)."""
-    found = set()
-    for text in sources.values():
-        for module, names in _GENERATED_IMPORT.findall(text):
-            found.update([module] if module else [n.split(" as ")[0].strip() for n in names.split(",")])
-    return sorted(found - {"status"})
-
-
 def _doc_key(k: dict) -> tuple:
     """What a kernel's docstrings say besides its equations: summary, notes, arguments, returns,
     status and batch form (derive/templates/kernels.py.j2)."""
     return (k["summary"], k["notes"], repr(k["args"]), k["doc_args"], repr(k["returns"]), k["status"]) + (
         k["n_out"],
-        repr(k["batch"]),
+        repr(k["layout"]),
+        k["out_array"],
     )
 
 
@@ -193,29 +199,40 @@ def _render_module(mod: Module, kernels: list[dict], files: dict[str, str]) -> s
     for k in kernels:
         for module, name in k["callees"]:
             callees.setdefault(module, set()).add(name)
-    generated = sorted(m for m in callees if not is_external_module(m))
-    external = sorted(m for m in callees if is_external_module(m))
+    generated = sorted(callees)
+    for m in generated:
+        if m in NUMERICS and f"generated/{m}.py" not in files:
+            _render_numerics(m, files)
     missing = [m for m in generated if f"generated/{m}.py" not in files]
     if missing:
         raise ValueError(f"module {mod.name} calls into {missing}, which must be generated before it")
     depends = [{"name": f"{m}.py", "sha256": _sha(files[f"generated/{m}.py"])} for m in generated]
-    for m in external:
-        sources = _external_sources(m)
-        depends += [{"name": n, "sha256": _sha(t)} for n, t in sources.items()]
-        # the generated modules that package calls (the equations of motion of the exact stance):
-        # a regenerated one re-keys this file's cache although the package's files did not change
-        through = [g for g in _generated_imports(sources) if g not in generated]
-        absent = [g for g in through if f"generated/{g}.py" not in files]
-        if absent:
-            raise ValueError(f"module {mod.name} calls {m}, which imports {absent}: generate them first")
-        depends += [
-            {"name": f"generated/{g}.py", "sha256": _sha(files[f"generated/{g}.py"])} for g in through
-        ]
     imports = [f"from .{m} import {', '.join(sorted(callees[m]))}" for m in generated]
-    imports += [f"from {m} import {', '.join(sorted(callees[m]))}" for m in external]
+    if any(k["support"] for k in kernels):
+        depends.insert(
+            0, {"name": f"{SUPPORT_MODULE}.py", "sha256": _sha(files[f"generated/{SUPPORT_MODULE}.py"])}
+        )
     return wrap(
         render_kernels(kernels, source=mod.source, module_doc=mod.doc, depends=depends, imports=imports)
     )
+
+
+def _table_code(values: list) -> str:
+    """A lookup table's module constant: ``np.array(...)`` of its values by code (NaN as ``NAN``)."""
+
+    def fmt(v) -> str:
+        if isinstance(v, list):
+            return "[" + ", ".join(fmt(x) for x in v) + "]"
+        return "NAN" if v != v else repr(float(v))
+
+    shape = next(v for v in values if v is not None)
+    blank = json.loads(json.dumps(shape).replace("NaN", "null"))  # the shape, every entry None
+
+    def nan_like(x):
+        return [nan_like(e) for e in x] if isinstance(x, list) else math.nan
+
+    rows = [fmt(v if v is not None else nan_like(blank)) for v in values]
+    return "np.array([" + ", ".join(rows) + "])"
 
 
 def render_kernels(
@@ -226,6 +243,7 @@ def render_kernels(
     depends: list[dict],
     imports: list[str],
     status_module: str = ".status",
+    support_module: str = f".{SUPPORT_MODULE}",
 ) -> str:
     """The source of one kernel module (before :func:`.wrap.wrap`) from its lowered kernels
     (:func:`.lower.lower`): the docstrings its kernels share written once (:func:`_share_docs`), the
@@ -234,6 +252,7 @@ def render_kernels(
     from 3.5-3.6 / 8.8-9.2 s to 3.8-4.0 / 9.1-9.7 s: the kernels keep their own.)"""
     _share_docs(kernels)
     used = set().union(*(k["statuses"] for k in kernels))
+    tables = {name: values for k in kernels for name, values in k["tables"].items()}
     return render(
         "kernels.py.j2",
         source=source,
@@ -241,10 +260,13 @@ def render_kernels(
         depends=depends,
         module_doc=module_doc,
         imports=imports,
+        support=any(k["support"] for k in kernels),
+        tables=[(name, _table_code(values)) for name, values in sorted(tables.items())],
         kernels=kernels,
         versions=VERSIONS,
         statuses=[st["name"] for st in _STATUSES if st["name"] in used],
         status_module=status_module,
+        support_module=support_module,
     )
 
 
@@ -272,12 +294,14 @@ def _index(specs: tuple[MapSpec, ...]) -> dict:
         "MAPS": [s.index_row(flights) for s in specs],
         "HALVES": [h.index_row() for h in all_halves()],
         "EXACT": ground_truth().index_row(flights),
+        "MODEL": {name: k.signature() for name, k in public_kernels().items()},
+        "SIMULATION": dict(simulation.SETTINGS),
         "REST_LENGTH_TOLERANCE": catalog.REST_LENGTH_TOLERANCE,
     }
 
 
 #: The generated package's modules that are not kernel modules of a declaration.
-OWN_MODULES = frozenset({"status", "maps_index", ROWS_MODULE, "__init__"})
+OWN_MODULES = frozenset({"status", "maps_index", SUPPORT_MODULE, "__init__", *NUMERICS})
 
 
 def check_module_names(mods) -> None:
@@ -322,20 +346,12 @@ def build_files() -> dict[str, str]:
     mods = modules()
     check_module_names(mods)
     lowered = {mod.name: [lower(k) for k in mod.kernels()] for mod in mods}
-    # the row stores every module's batch Jacobians use, one module before them all
-    stores = {
-        (st["first"], st["n_out"]): st
-        for kernels in lowered.values()
-        for st in (k["batch"]["store"] for k in kernels if k["batch"])
-        if st
-    }
-    files[f"generated/{ROWS_MODULE}.py"] = wrap(
+    files[f"generated/{SUPPORT_MODULE}.py"] = wrap(
         render(
-            "rows.py.j2",
-            source="derive/lower.py",
-            template="derive/templates/rows.py.j2",
+            "support.py.j2",
+            source="derive/templates/support.py.j2",
+            template="derive/templates/support.py.j2",
             depends=[],
-            stores=[stores[layout] for layout in sorted(stores)],
             **common,
         )
     )

@@ -24,13 +24,25 @@ import sympy as sp
 
 from . import catalog
 from .declaration import Declaration, Inputs
-from .ir import Arg, Batch, Field, Group, Kernel, Module, Step, positive, sym
+from .ir import Arg, Call, Field, Group, Kernel, Layout, Module, Stage, Step, positive, sym
 from .specialize import module_kernels
 
-__all__ = ["HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
+__all__ = ["APEX_OUTPUTS", "HALF_OUTPUTS", "START", "HalfInputs", "HalfSpec"]
 
 #: Where a half starts -> where it ends.
 START = {"touchdown": "bottom", "bottom": "liftoff"}
+
+#: Outputs of a decompression half's ``apex`` role: the half, then the exact flight to the next apex.
+APEX_OUTPUTS = Group(
+    "",
+    (
+        Field("apex_height", "next apex height above the ground the foot stood on", "m"),
+        Field("apex_speed", "next apex horizontal speed (signed)", "m/s", odd=True),
+        Field("t_half", "time from the bottom to liftoff", "s"),
+        Field("t_ascent", "flight time from liftoff to the next apex", "s"),
+        Group("liftoff", catalog.POLAR, "state at liftoff (q_r = q_r_lo)"),
+    ),
+)
 
 #: Outputs of every half map (before its extras).
 HALF_OUTPUTS = Group(
@@ -95,19 +107,64 @@ class HalfSpec(Declaration):
                 args=self.args(),
                 steps=self.build(self.inputs(state, self.params)),
                 outputs=HALF_OUTPUTS + Group("", self.extras),
-                batch=Batch(tuple(a.name for a in state)),
+                layout=Layout(tuple(a.name for a in state), self.p_layout()),
                 module=self.ident,
             )
         return self.specialize(self._cache["kernel"], self.choices()[0] if choice is None else choice)
 
+    def apex_kernel(self, choice: dict | None = None) -> Kernel | None:
+        """A decompression half's ``apex`` role (None for a compression half): the bottom state ->
+        this half -> the exact ballistic ascent to the next apex, in the direction the body moves at
+        liftoff (a controller's model of the rest of a step once it has measured the bottom)."""
+        if self.start != "bottom":
+            return None
+        if "apex" not in self._cache:
+            from .model.kernels import flight_kernels
+
+            half = self.kernel({})  # the generic kernel: the specialization reaches it
+            ascent = flight_kernels()["liftoff_to_apex"]
+            g_f = catalog.PARAMS["g_f"]
+            lo = {q: sym(f"liftoff_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")}
+            b_xd = -sp.sin(lo["q_th"]) * lo["q_rd"] - lo["q_r"] * sp.cos(lo["q_th"]) * lo["q_thd"]
+            direction = sym("direction")
+            steps = (
+                Call(
+                    half,
+                    {a.name: a.symbol for a in half.args},
+                    {"t_half": "t_half", **{f"end_{q}": f"liftoff_{q}" for q in lo}},
+                    comment=f"the half: {self.title}",
+                ),
+                Stage(((direction, sp.sign(b_xd)),), comment="the direction the body moves at liftoff"),
+                Call(
+                    ascent,
+                    {**{q: lo[q] for q in lo}, "g_f": g_f.symbol, "direction": direction},
+                    {"apex_b_y": "apex_height", "apex_b_xd": "apex_speed", "t_flight": "t_ascent"},
+                    comment="liftoff -> next apex: exact ballistic ascent",
+                ),
+            )
+            self._cache["apex"] = Kernel(
+                name=f"{self.ident}_apex",
+                summary=f"{self.title}, then the exact flight to the next apex: bottom state -> next apex.",
+                equations=self.equations,
+                args=half.args + (g_f,),
+                steps=steps,
+                outputs=APEX_OUTPUTS,
+                layout=Layout(half.layout.x, self.p_layout(("g_f",))),
+                module=self.ident,
+            )
+        return self.specialize(self._cache["apex"], self.choices()[0] if choice is None else choice)
+
     def module(self) -> Module:
+        def kernels():
+            main = [self.kernel(c) for c in self.choices()]
+            main += [k for k in (self.apex_kernel(c) for c in self.choices()) if k is not None]
+            return module_kernels(self.ident, (), main, self.labels())
+
         return Module(
             name=self.ident,
             doc=f"{self.title} (report section {self.section}): {self.start} -> {self.end}.",
             source=self.source,
-            kernels=lambda: module_kernels(
-                self.ident, (), [self.kernel(c) for c in self.choices()], self.labels()
-            ),
+            kernels=kernels,
         )
 
     def index_row(self) -> dict:
@@ -116,5 +173,8 @@ class HalfSpec(Declaration):
             start=self.start,
             end=self.end,
             requires=[],
-            kernels={"half": self.signature(self.kernel({}))},
+            kernels={
+                "half": self.signature(self.kernel({})),
+                **({"apex": self.signature(self.apex_kernel({}))} if self.start == "bottom" else {}),
+            },
         )

@@ -186,6 +186,10 @@ class Iterate:
     ``carry`` holds variables updated every pass but outside the convergence test, each as
     ``(variable, initial value, update)``: the derivatives a Jacobian kernel carries through the
     iteration (:mod:`.tangent`). They are visible after the loop like the state.
+
+    ``arrays`` holds node arrays in the state (:class:`Nodes`), each as ``(array, initial array,
+    update array, scale)`` (names; the update array written by the loop's steps), over the first
+    ``nodes`` entries; ``array_carry`` the same outside the convergence test (their tangents).
     """
 
     state: tuple[tuple[sp.Symbol, sp.Basic], ...]
@@ -199,10 +203,15 @@ class Iterate:
     comment: str = ""
     carry: tuple[tuple[sp.Symbol, sp.Basic, sp.Basic], ...] = ()
     evaluate: tuple[Step, ...] = ()
+    arrays: tuple[tuple[str, str, str, sp.Basic], ...] = ()
+    nodes: sp.Basic = sp.S.Zero
+    array_carry: tuple[tuple[str, str, str], ...] = ()
 
     def __post_init__(self):
         if not len(self.update) == len(self.scales) == len(self.state):
             raise ValueError("Iterate: one update expression and one scale per state variable")
+        if (self.arrays or self.array_carry) and self.nodes == 0:
+            raise ValueError("Iterate: node arrays in the state need the node count (nodes)")
         if self.fail_status is not None and self.fail_status not in STATUS:
             raise ValueError(f"unknown status {self.fail_status!r}")
 
@@ -247,20 +256,89 @@ class Directions:
     comment: str = ""
 
 
-Step = Stage | Call | Iterate | Switch | Store | Load | Directions
+#: The most nodes of a node loop (:class:`Nodes`): every node array has this many entries (on the
+#: kernel's stack), a node count is at most this.
+MAX_NODES = 12
 
 
 @dataclass(frozen=True)
-class Batch:
-    """The parallel batch form: ``rows`` names the arguments that become 1-D arrays (one row per
-    element); every other argument stays a scalar shared by all rows."""
+class Lookup:
+    """Tables chosen by an option's code: binds each ``name`` to the table of the code ``selector``
+    has (a number, or a node array: a vector of one value per node, or a node x node matrix). The
+    tables are constants of the generated module (padded to :data:`MAX_NODES`); a table of an
+    unknown code is INVALID_INPUT. Derivatives: constants."""
 
-    rows: tuple[str, ...]
+    selector: sp.Basic
+    tables: tuple[tuple[str, tuple[tuple[int, object], ...]], ...]
+    comment: str = ""
+
+
+@dataclass(frozen=True)
+class Nodes:
+    """Steps run once per node ``j = 0 .. count - 1`` (``count`` at most :data:`MAX_NODES`):
+    ``reads`` bind names to element j of node arrays (an earlier step's, an iteration's state, a
+    :class:`Lookup` vector); ``sums`` bind names to ``sum_k matrix[j, k] array[k]`` (a Lookup
+    matrix, a node array); the stages compute (scalars of the node: visible only inside); each
+    ``write`` defines element j of a node array (a new one, visible after). The arrays are the
+    nodes' data of a collocation (Gauss-Legendre nodes and weights as data, not code per count)."""
+
+    count: sp.Basic
+    reads: tuple[tuple[sp.Symbol, str], ...]
+    sums: tuple[tuple[sp.Symbol, str, str], ...]
+    steps: tuple[Stage, ...]
+    writes: tuple[tuple[sp.Basic, str], ...]
+    comment: str = ""
+
+
+@dataclass(frozen=True)
+class Reduce:
+    """``name = sum_k weights[k] array[k]`` over the first ``count`` nodes (``weights`` a Lookup
+    vector, or None for weights 1)."""
+
+    name: sp.Symbol
+    weights: str | None
+    array: str
+    count: sp.Basic
+    comment: str = ""
+
+
+Step = Stage | Call | Iterate | Switch | Store | Load | Directions | Lookup | Nodes | Reduce
+
+
+#: The most arguments a generated function takes one by one, and the most values its result tuple
+#: holds (the status included). A kernel with more takes them in one array, or writes its outputs
+#: into an array its caller gives (derive/lower.py); a role kernel takes layouts (:class:`Layout`).
+MAX_SCALARS = 16
+
+
+@dataclass(frozen=True)
+class Layout:
+    """A role kernel's calling convention, ``kernel(x, p, out) -> status`` (and its batch form
+    ``kernel_rows(X, p, OUT, STATUS)``, one row of ``X``, ``OUT`` and ``STATUS`` per call), every
+    array float64 (``STATUS`` int64):
+
+    - ``x`` names the role's inputs in the order of the vector ``x`` (an apex, a touchdown state);
+    - ``p`` names the fields of the parameter record ``p``, the vector of the map's parameters and
+      options (the same record for every role of a map): the arguments not in ``x`` are read
+      from it by name;
+    - ``out`` receives the outputs in order (a Jacobian's values, then d output / d input
+      row-major); NaN everywhere unless the returned status is OK.
+
+    The generated index publishes each role's names, so the runtime reads and writes by name."""
+
+    x: tuple[str, ...]
+    p: tuple[str, ...]
+
+    def __post_init__(self):
+        for names, what in ((self.x, "x"), (self.p, "p")):
+            if len(set(names)) != len(names):
+                raise ValueError(f"layout {what} names a field twice: {names}")
 
 
 @dataclass(frozen=True)
 class Kernel:
-    """One generated scalar function (plus its batch form when ``batch`` is set)."""
+    """One generated function: of scalar arguments (internal), or a role kernel of a :class:`Layout`
+    (with its batch form) when ``layout`` is set."""
 
     name: str
     summary: str
@@ -269,7 +347,7 @@ class Kernel:
     steps: tuple[Step, ...]
     outputs: Group
     status: bool = True
-    batch: Batch | None = None
+    layout: Layout | None = None
     notes: str = ""
     module: str = ""
     check_inputs: bool = True
@@ -289,9 +367,10 @@ class Kernel:
     #: The docstring's Returns list, (name, doc) pairs, when one line per output says less (a
     #: Jacobian's derivative block in one entry).
     doc_returns: tuple[tuple[str, str], ...] = ()
-    #: A hand-written kernel that generated code calls (no steps; ``module`` is its Python module,
-    #: e.g. ``slipmaps.runtime.exact.kernels``): a numba function of the declared arguments, in their
-    #: order, returning the declared outputs and the status. The exact simulator's stance is one.
+    #: A kernel of one of the generator's support modules (no steps; ``module`` is that module, e.g.
+    #: ``exact_stance``, rendered from derive/templates/ by derive/generate.py): a numba function of
+    #: the declared arguments in their order, of the calling convention derive/lower.py's ``abi``
+    #: gives its arguments and outputs. The exact simulator's stance is one.
     external: bool = False
     #: An external kernel's Jacobian: an external kernel of the same arguments returning the outputs,
     #: then d output / d ``jacobian_wrt`` (``derivative_fields`` order), then the status. Generated
@@ -300,11 +379,21 @@ class Kernel:
     jacobian_wrt: tuple[str, ...] = ()
 
     def __post_init__(self):
-        if self.external and (self.steps or "." not in self.module):
-            raise ValueError(f"external kernel {self.name}: no steps, and module must be its Python module")
+        if self.external and (self.steps or "." in self.module):
+            raise ValueError(
+                f"external kernel {self.name}: no steps, and module a support module of generated/"
+            )
         unknown = [w for w in self.jacobian_wrt if w not in self.arg_names]
         if unknown:
             raise ValueError(f"kernel {self.name}: jacobian_wrt names unknown argument(s) {unknown}")
+        if self.layout is not None:
+            missing = [a for a in self.arg_names if a not in self.layout.x and a not in self.layout.p]
+            stray = [a for a in self.layout.x if a not in self.arg_names]
+            if missing or stray:
+                raise ValueError(
+                    f"kernel {self.name}: layout x {self.layout.x} and p {self.layout.p} must hold its "
+                    f"arguments (missing {missing}) and x only arguments (not {stray})"
+                )
 
     @property
     def arg_names(self) -> tuple[str, ...]:
@@ -314,29 +403,17 @@ class Kernel:
     def output_names(self) -> tuple[str, ...]:
         return self.outputs.names()
 
-    @property
-    def batch_args(self) -> tuple[str, ...] | None:
-        """The batch form's arguments before ``out, status``: the row arguments, then the scalars,
-        each in argument order (None without a batch form)."""
-        if self.batch is None:
-            return None
-        names = self.arg_names
-        return tuple(n for n in names if n in self.batch.rows) + tuple(
-            n for n in names if n not in self.batch.rows
-        )
-
     def signature(self, **extra) -> dict:
-        """This kernel's calling convention, as the generated index publishes it: its module and
-        name, its arguments, the arguments its batch form takes as rows and its batch form's
-        arguments (``out, status`` follow), and its outputs (the status follows), plus ``extra``."""
-        batch = self.batch_args
+        """This role kernel's calling convention, as the generated index publishes it: its module and
+        name, the names of ``x``, ``p`` and ``out`` (:class:`Layout`), plus ``extra``."""
+        if self.layout is None:
+            raise ValueError(f"kernel {self.name} has no layout: it is not a role kernel")
         return {
             "module": self.module,
             "name": self.name,
-            "args": list(self.arg_names),
-            "rows": None if batch is None else list(batch[: len(self.batch.rows)]),
-            "batch": None if batch is None else list(batch),
-            "outputs": list(self.output_names),
+            "x": list(self.layout.x),
+            "p": list(self.layout.p),
+            "out": list(self.output_names),
             **extra,
         }
 
@@ -353,11 +430,6 @@ def calls(steps):
         elif isinstance(step, Switch):
             for _, branch in step.cases:
                 yield from calls(branch)
-
-
-def is_external_module(module: str) -> bool:
-    """A kernel module named by its dotted Python path is hand-written, not generated."""
-    return "." in module
 
 
 @dataclass(frozen=True)

@@ -23,18 +23,33 @@ The declaration is checked here, at generation time:
 
 from __future__ import annotations
 
+import hashlib
 import keyword
+import math
 import re
 from collections import Counter
 from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .ir import Call, Directions, Guard, Iterate, Kernel, Load, Stage, Store, Switch
+from .ir import (
+    MAX_NODES,
+    MAX_SCALARS,
+    Call,
+    Directions,
+    Guard,
+    Iterate,
+    Kernel,
+    Layout,
+    Load,
+    Lookup,
+    Nodes,
+    Reduce,
+    Stage,
+    Store,
+    Switch,
+)
 from .printer import to_code
-
-#: A call binding at least this many outputs binds them by one tuple unpacking.
-_UNPACK = 8
 
 
 class LoweringError(ValueError):
@@ -47,19 +62,15 @@ def _names(expr) -> set[str]:
 
 #: Names the template and the lowering use themselves: a declared name must not take one.
 _GENERATED_NAME = re.compile(
-    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+)|STATUS_\w+|store_row_\d+_\d+"
+    r"_(x\d+|c\d+|it\d+|last\d+|n\d+_\d+|conv\d+|pk[in]?\d+|NAN\d+|T|j\d+|[aop]\d+|code|status|L[0-9a-f]{8})|STATUS_\w+"
 )
-_TEMPLATE_NAMES = frozenset({"i", "res", "out", "status", "math", "np", "njit", "prange", "NAN"})
+_TEMPLATE_NAMES = frozenset(
+    {"i", "out", "status", "math", "np", "njit", "carray", "NAN"} | {"stack", "fail", "put", "finite"}
+)
 
-#: The generated module of the Jacobians' batch row stores, one function per layout, shared by
-#: every module (derive/generate.py renders it from the layouts the lowered kernels use).
-ROWS_MODULE = "rows"
-
-
-def row_store(first: int, n_out: int) -> dict:
-    """The batch row store of a kernel with ``n_out`` outputs whose derivatives (left unchecked by
-    the scalar kernel) start at output ``first``: its name in :data:`ROWS_MODULE` and its layout."""
-    return {"name": f"store_row_{first}_{n_out}", "first": first, "n_out": n_out}
+#: The generated support module every kernel module imports (derive/templates/support.py.j2): stack
+#: arrays, NaN-filling a failed row, storing a result tuple into a row.
+SUPPORT_MODULE = "support"
 
 
 def _check_name(name: str, where: str) -> None:
@@ -101,6 +112,16 @@ class _Ctx:
     rows: int = 0
     directions: int = 0
     n_dir_loops: int = 0
+    #: whether the code uses generated/support.py (stack arrays, row stores)
+    uses_support: bool = False
+    #: node arrays the kernel writes (each on its stack, MAX_NODES long), in order of definition
+    arrays: list = field(default_factory=list)
+    #: what kind of value each name of a lookup table or node array is: "scalar" (a table's
+    #: number), "vector" (a table's or a node array), "matrix" (a table's)
+    shapes: dict = field(default_factory=dict)
+    #: the module constants of the lookup tables: name -> (padded shape, values by code)
+    tables: dict = field(default_factory=dict)
+    node_loops: int = 0
 
     def push(self) -> None:
         self.scope.frames.append(set())
@@ -230,6 +251,58 @@ def _guard(ctx: _Ctx, g: Guard, where: str) -> dict:
     return {"kind": "guard", "code": to_code(g.condition), "status": g.status, "doc": g.doc}
 
 
+@dataclass(frozen=True)
+class Abi:
+    """How a kernel is called (:func:`abi`)."""
+
+    #: a role kernel: ``kernel(x, p, out) -> status`` (:class:`~.ir.Layout`)
+    layout: Layout | None
+    #: more than :data:`~.ir.MAX_SCALARS` arguments: one array ``_a`` holds them, in order
+    args_array: bool
+    #: its outputs go into an array the caller gives (a role kernel, or more than MAX_SCALARS
+    #: values with the status), and it returns the status
+    out_array: bool
+
+
+def abi(kernel: Kernel) -> Abi:
+    """A role kernel takes its layouts; any other kernel takes up to :data:`~.ir.MAX_SCALARS`
+    scalar arguments, else one array of them, and returns a tuple of up to MAX_SCALARS values (its
+    outputs, then its status), else writes its outputs into an array argument ``out`` and returns
+    the status."""
+    if kernel.layout is not None:
+        if not kernel.status:
+            raise LoweringError(f"kernel {kernel.name}: a role kernel (a layout) returns a status")
+        return Abi(kernel.layout, False, True)
+    n_out = len(kernel.output_names) + (1 if kernel.status else 0)
+    if n_out > MAX_SCALARS and not kernel.status:
+        raise LoweringError(f"kernel {kernel.name}: {n_out} outputs without a status to return")
+    return Abi(None, len(kernel.args) > MAX_SCALARS, n_out > MAX_SCALARS)
+
+
+def _stack(var: str, n: int) -> str:
+    """A float64 array of ``n`` on the kernel's stack (generated/support.py)."""
+    return f"{var} = carray(stack({n}), {n})"
+
+
+def _put(var: str, codes: list[str]) -> str:
+    return f"put({var}, ({', '.join(codes)}{',' if len(codes) == 1 else ''}))"
+
+
+def _passes_p(ctx: _Ctx, call: Call) -> bool:
+    """Whether a call of a role kernel passes the caller's own parameter record ``p``: both have the
+    same record and every field the callee reads from it is the caller's argument of that name."""
+    caller, callee = ctx.kernel.layout, call.kernel.layout
+    if caller is None or callee.p != caller.p:
+        return False
+    for a in call.kernel.arg_names:
+        if a in callee.x:
+            continue
+        expr = sp.sympify(call.args[a])
+        if not (isinstance(expr, sp.Symbol) and expr.name == a and a in caller.p and a not in caller.x):
+            return False
+    return True
+
+
 def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
     callee = call.kernel
     where = f"step {idx} (call {callee.name})"
@@ -250,37 +323,64 @@ def _lower_call(ctx: _Ctx, call: Call, idx: str) -> list[dict]:
         ctx.require(call.args[name], f"{where}, argument {name}")
     if callee.module != ctx.kernel.module:
         ctx.callees.add((callee.module, callee.name))
+    n = ctx.calls
+    ctx.calls += 1
+    how = abi(callee)
+    setup: list[str] = []
+    if how.layout is not None:
+        x, o = f"_x{n}", f"_o{n}"
+        setup += [_stack(x, len(how.layout.x)), _put(x, [to_code(call.args[a]) for a in how.layout.x])]
+        if _passes_p(ctx, call):
+            p = "p"
+        else:
+            p = f"_p{n}"
+            codes = [to_code(call.args[f]) if f in call.args else "NAN" for f in how.layout.p]
+            setup += [_stack(p, len(codes)), _put(p, codes)] if codes else [_stack(p, 1)]
+        args = [x, p]
+    elif how.args_array:
+        a = f"_a{n}"
+        setup += [
+            _stack(a, len(callee.arg_names)),
+            _put(a, [to_code(call.args[a_]) for a_ in callee.arg_names]),
+        ]
+        args = [a]
+    else:
+        args = [to_code(call.args[a_]) for a_ in callee.arg_names]
+    ctx.uses_support |= bool(setup)
+    nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
+    outs = callee.output_names
     if call.tail:
-        if call.bind or callee.output_names != ctx.kernel.output_names or callee.status != ctx.kernel.status:
+        if call.bind or outs != ctx.kernel.output_names or callee.status != ctx.kernel.status:
             raise LoweringError(
                 ctx.where(f"{where}: a tail call returns the callee's result as the caller's")
             )
-        args = ", ".join(to_code(call.args[n]) for n in callee.arg_names)
-        nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
-        return nodes + [{"kind": "tail", "func": callee.name, "args": args}]
-    var = f"_c{ctx.calls}"
-    ctx.calls += 1
-    outs = callee.output_names
-    single = not callee.status and len(outs) == 1
+        if how.out_array != abi(ctx.kernel).out_array:
+            raise LoweringError(ctx.where(f"{where}: a tail call's callee returns as its caller does"))
+        expr = f"{callee.name}({', '.join(args + (['out'] if how.out_array else []))})"
+        return nodes + [{"kind": "tail", "setup": setup, "expr": expr}]
+    var = f"_c{n}"
+    if how.out_array:
+        o = f"_o{n}"
+        setup.append(_stack(o, len(outs)))
+        args.append(o)
+        status = var
+        source = {name: f"{o}[{i}]" for i, name in enumerate(outs)}
+    else:
+        single = not callee.status and len(outs) == 1
+        status = f"{var}[{len(outs)}]" if callee.status else None
+        source = {name: var if single else f"{var}[{i}]" for i, name in enumerate(outs)}
     binds = []
     for out_name, local in call.bind.items():
         ctx.scope.define(local, ctx.where(where))
-        binds.append({"name": local, "index": None if single else outs.index(out_name)})
-    unpack = None
-    if not single and len(binds) >= _UNPACK:
-        # one tuple unpacking instead of an indexing per output (the unbound ones to "_")
-        names = {b["index"]: b["name"] for b in binds}
-        unpack = ", ".join(names.get(i, "_") for i in range(len(outs) + (1 if callee.status else 0)))
-    nodes = [{"kind": "comment", "text": call.comment}] if call.comment else []
+        binds.append({"name": local, "code": source[out_name]})
     nodes.append(
         {
             "kind": "call",
+            "setup": setup,
             "var": var,
-            "func": callee.name,
-            "args": ", ".join(to_code(call.args[n]) for n in callee.arg_names),
-            "status_index": len(outs) if callee.status else None,
+            "expr": f"{callee.name}({', '.join(args)})",
+            "status": status,
             "binds": binds,
-            "unpack": unpack,
         }
     )
     return nodes
@@ -299,6 +399,16 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
         ctx.scope.define(s.name, ctx.where(where))
         state.append({"name": s.name, "code": to_code(init)})
     ctx.scope.define(it.count.name, ctx.where(where))
+    arrays = []
+    for a, init, upd, scale in it.arrays + tuple((*c, None) for c in it.array_carry):
+        _require_array(ctx, init, f"{where}, initial array of {a}")
+        ctx.scope.define(a, ctx.where(where))
+        _new_array(ctx, a)
+        arrays.append(
+            {"name": a, "init": init, "next": upd, "scale": None if scale is None else to_code(scale)}
+        )
+    if arrays:
+        ctx.require(it.nodes, f"{where}, node count")
     ctx.push()
     evaluate = _lower_steps(ctx, it.evaluate, f"{idx}.evaluate.")
     evaluated = set(ctx.scope.frames[-1])
@@ -319,6 +429,8 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
         u["direct"] = bool(it.carry) and (e.is_Number or (e.is_Symbol and e.name not in loop_names))
         if u["direct"]:
             u["tmp"] = u["code"]
+    for arr in arrays:
+        _require_array(ctx, arr["next"], f"{where}, update array of {arr['name']}")
     ctx.pop()
     # what the loop evaluates at every iterate stays visible, at the iterate it stops at
     ctx.scope.frames[-1] |= evaluated
@@ -345,6 +457,9 @@ def _lower_iterate(ctx: _Ctx, it: Iterate, idx: str) -> list[dict]:
             "conv": f"_conv{n}",
             "tol": to_code(it.tol),
             "fail_status": it.fail_status,
+            "arrays": arrays,
+            "nodes": to_code(it.nodes) if arrays else "",
+            "a": _node_index(ctx) if arrays else "",
         }
     )
     return nodes
@@ -430,6 +545,126 @@ def _lower_directions(ctx: _Ctx, d: Directions, idx: str) -> list[dict]:
     return nodes
 
 
+def _node_index(ctx: _Ctx) -> str:
+    """A fresh loop variable over nodes."""
+    ctx.node_loops += 1
+    return f"_j{ctx.node_loops + 999}"
+
+
+def _new_array(ctx: _Ctx, name: str) -> None:
+    """A node array the kernel writes: on its stack (:data:`~.ir.MAX_NODES` entries)."""
+    if name not in ctx.arrays:
+        ctx.arrays.append(name)
+    ctx.shapes[name] = "vector"
+    ctx.uses_support = True
+
+
+def _require_array(ctx: _Ctx, name: str, where: str, shape: str = "vector") -> None:
+    if not ctx.scope.defined(name):
+        raise LoweringError(ctx.where(f"{where}: {name!r} is not defined before"))
+    if ctx.shapes.get(name) != shape:
+        raise LoweringError(ctx.where(f"{where}: {name!r} is not a node {shape}"))
+
+
+def _padded(values, code: int, shape: str):
+    """A table's values as nested lists of floats (a vector or matrix padded with NaN)."""
+    if shape == "scalar":
+        return float(values)
+    if shape == "vector":
+        return [float(v) for v in values] + [math.nan] * (MAX_NODES - len(values))
+    rows = [[float(v) for v in row] + [math.nan] * (MAX_NODES - len(row)) for row in values]
+    return rows + [[math.nan] * MAX_NODES] * (MAX_NODES - len(rows))
+
+
+def _lower_lookup(ctx: _Ctx, lk: Lookup, idx: str) -> list[dict]:
+    where = f"step {idx} (lookup on {to_code(lk.selector)})"
+    ctx.require(lk.selector, where)
+    ctx.statuses.add("INVALID_INPUT")
+    codes = sorted({c for _, tables in lk.tables for c, _ in tables})
+    binds = []
+    for name, tables in lk.tables:
+        by_code = dict(tables)
+        if sorted(by_code) != codes:
+            raise LoweringError(ctx.where(f"{where}: table {name} lacks a code of {codes}"))
+        first = by_code[codes[0]]
+        shape = (
+            "scalar"
+            if not isinstance(first, tuple)
+            else "matrix"
+            if isinstance(first[0], tuple)
+            else "vector"
+        )
+        if shape != "scalar" and any(len(v) > MAX_NODES for v in by_code.values()):
+            raise LoweringError(ctx.where(f"{where}: table {name} is longer than {MAX_NODES} nodes"))
+        values = [_padded(by_code[c], c, shape) if c in by_code else None for c in range(codes[-1] + 1)]
+        digest = hashlib.sha256(repr((shape, values)).encode()).hexdigest()[:8]
+        const = f"_L{digest}"
+        ctx.tables[const] = values
+        ctx.scope.define(name, ctx.where(where))
+        ctx.shapes[name] = shape
+        binds.append({"name": name, "const": const})
+    nodes = [{"kind": "comment", "text": lk.comment}] if lk.comment else []
+    valid = " or ".join(f"_code == {c}" for c in codes)
+    nodes.append({"kind": "lookup", "selector": to_code(lk.selector), "valid": valid, "binds": binds})
+    return nodes
+
+
+def _lower_nodes(ctx: _Ctx, nd: Nodes, idx: str) -> list[dict]:
+    where = f"step {idx} (node loop)"
+    ctx.require(nd.count, f"{where}, node count")
+    for _, array in nd.reads:
+        if ctx.shapes.get(array) != "vector":
+            raise LoweringError(ctx.where(f"{where}: reads {array!r}, not a node vector"))
+    for _, matrix, array in nd.sums:
+        _require_array(ctx, matrix, where, "matrix")
+        _require_array(ctx, array, where)
+    j = _node_index(ctx)
+    ctx.push()
+    for local, _ in nd.reads:
+        ctx.scope.define(local.name, ctx.where(where))
+    for local, _, _ in nd.sums:
+        ctx.scope.define(local.name, ctx.where(where))
+    body = _lower_steps(ctx, nd.steps, f"{idx}.")
+    for e, _ in nd.writes:
+        ctx.require(e, f"{where}, a write")
+    writes = [{"code": to_code(e), "array": a} for e, a in nd.writes]
+    ctx.pop()
+    for _, array in nd.writes:
+        ctx.scope.define(array, ctx.where(where))
+        _new_array(ctx, array)
+    k = _node_index(ctx)
+    nodes = [{"kind": "comment", "text": nd.comment}] if nd.comment else []
+    nodes.append(
+        {
+            "kind": "nodes",
+            "j": j,
+            "k": k,
+            "count": to_code(nd.count),
+            "reads": [{"name": s.name, "array": a} for s, a in nd.reads],
+            "sums": [{"name": s.name, "matrix": m, "array": a} for s, m, a in nd.sums],
+            "body": body,
+            "writes": writes,
+        }
+    )
+    return nodes
+
+
+def _lower_reduce(ctx: _Ctx, rd: Reduce, idx: str) -> list[dict]:
+    where = f"step {idx} (sum over nodes of {rd.array})"
+    ctx.require(rd.count, f"{where}, node count")
+    _require_array(ctx, rd.array, where)
+    if rd.weights is not None:
+        _require_array(ctx, rd.weights, where)
+    ctx.scope.define(rd.name.name, ctx.where(where))
+    term = f"{rd.weights}[{{k}}]*{rd.array}[{{k}}]" if rd.weights else f"{rd.array}[{{k}}]"
+    k = _node_index(ctx)
+    nodes = [{"kind": "comment", "text": rd.comment}] if rd.comment else []
+    nodes.append(
+        {"kind": "reduce", "name": rd.name.name, "k": k, "count": to_code(rd.count), "term": term.format(k=k)}
+    )
+    return nodes
+
+
 def _compact_rows(nodes: list[dict]) -> int:
     """Renumber the direction array's rows the kernel uses 0, 1, ... in order of first use (a
     derivative kernel's rows are numbered across the kernels outlined from it); their number."""
@@ -472,9 +707,23 @@ def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
             nodes += _lower_load(ctx, step, idx)
         elif isinstance(step, Directions):
             nodes += _lower_directions(ctx, step, idx)
+        elif isinstance(step, Lookup):
+            nodes += _lower_lookup(ctx, step, idx)
+        elif isinstance(step, Nodes):
+            nodes += _lower_nodes(ctx, step, idx)
+        elif isinstance(step, Reduce):
+            nodes += _lower_reduce(ctx, step, idx)
         else:
             raise LoweringError(ctx.where(f"step {idx}: unknown step type {type(step).__name__}"))
     return nodes
+
+
+def _unpack(names: list[str], array: str, order) -> str:
+    """``a, b = x[0], x[3]``: the names from their positions in ``order``, the fields of ``array``."""
+    if len(names) == 1:
+        return f"{names[0]} = {array}[{list(order).index(names[0])}]"
+    items = ", ".join(f"{array}[{list(order).index(n)}]" for n in names)
+    return f"({', '.join(names)}) = ({items})"
 
 
 def lower(kernel: Kernel) -> dict:
@@ -485,6 +734,14 @@ def lower(kernel: Kernel) -> dict:
     dup = [n for n, c in Counter(names).items() if c > 1]
     if dup:
         raise LoweringError(f"kernel {kernel.name}: duplicate argument(s) {dup}")
+    if kernel.layout is not None:
+        from .outline import defined
+
+        taken = sorted((set(names) | defined(kernel.steps)) & {"x", "p"})
+        if taken:
+            raise LoweringError(
+                f"kernel {kernel.name}: {taken} name a role kernel's layouts (x, p): rename them"
+            )
     ctx = _Ctx(kernel, _Scope([set(names)]))
     input_guard = None
     if kernel.check_inputs:
@@ -510,29 +767,13 @@ def lower(kernel: Kernel) -> dict:
     dup_out = [n for n, c in Counter(f.name for f in outputs).items() if c > 1]
     if dup_out:
         raise LoweringError(f"kernel {kernel.name}: duplicate output(s) {dup_out}")
-    batch = None
-    if kernel.batch is not None:
-        if not kernel.status:
-            raise LoweringError(f"kernel {kernel.name}: a batch form needs a status output")
-        unknown = sorted(set(kernel.batch.rows) - set(names))
-        if unknown:
-            raise LoweringError(f"kernel {kernel.name}: batch rows {unknown} are not arguments")
-        order = kernel.batch_args
-        batch = {
-            "rows": list(order[: len(kernel.batch.rows)]),
-            "scalars": list(order[len(kernel.batch.rows) :]),
-            "call": ", ".join(f"{n}[i]" if n in kernel.batch.rows else n for n in names),
-            # the outputs the scalar kernel leaves unchecked (a Jacobian's derivatives): checked per row
-            "store": None,
-        }
-        unchecked = [j for j, f in enumerate(outputs) if f.name in kernel.unchecked]
-        if unchecked:
-            # a row store checking the derivatives, one per layout in generated/rows.py (rows.py.j2)
-            first = unchecked[0]
-            if unchecked != list(range(first, len(outputs))):
-                raise LoweringError(f"kernel {kernel.name}: the unchecked outputs must be the last ones")
-            batch["store"] = row_store(first, len(outputs))
-            ctx.callees.add((ROWS_MODULE, batch["store"]["name"]))
+    how = abi(kernel)
+    if how.layout is not None:
+        # every role kernel checks its whole row (a Jacobian's derivatives too)
+        ctx.statuses.add("NUMERICAL_RANGE")
+        ctx.uses_support = True
+    if how.out_array:
+        ctx.uses_support = True
     if kernel.status:
         ctx.statuses.add("OK")
         if kernel.check_outputs:
@@ -540,12 +781,29 @@ def lower(kernel: Kernel) -> dict:
     docs = [{"name": f.name, "doc": f.doc + (f" [{f.unit}]" if f.unit else "")} for f in outputs]
     if kernel.doc_returns:
         docs = [{"name": n, "doc": d} for n, d in kernel.doc_returns]
+    if how.layout is not None:
+        params = ["x", "p", "out"]
+        prologue = [_unpack([a for a in how.layout.x], "x", how.layout.x)]
+        from_p = [a for a in names if a not in how.layout.x]
+        if from_p:
+            prologue.append(_unpack(from_p, "p", how.layout.p))
+    elif how.args_array:
+        params = ["_a"] + (["out"] if how.out_array else [])
+        prologue = [_unpack(list(names), "_a", names)]
+    else:
+        params = list(names) + (["out"] if how.out_array else [])
+        prologue = []
     return {
         "name": kernel.name,
         "summary": kernel.summary,
         "equations": ", ".join(kernel.equations),
         "notes": kernel.notes,
         "args": [{"name": a.name, "doc": a.doc} for a in kernel.args],
+        "params": ", ".join(params),
+        "prologue": prologue,
+        "layout": None if how.layout is None else {"x": list(how.layout.x), "p": list(how.layout.p)},
+        "out_array": how.out_array,
+        "support": ctx.uses_support,
         "doc_args": kernel.doc_args,
         "outputs": [{"name": f.name, "checked": f.name not in kernel.unchecked} for f in outputs],
         "partial_check": any(f.name in kernel.unchecked for f in outputs),
@@ -556,11 +814,13 @@ def lower(kernel: Kernel) -> dict:
         "status": kernel.status,
         "check_outputs": kernel.check_outputs,
         "inline": kernel.inline,
-        "batch": batch,
         "tail": bool(tails),
         "ops": int(ctx.ops),
         "callees": sorted(ctx.callees),
         "statuses": sorted(ctx.statuses),
         "rows": ctx.rows,
         "directions": ctx.directions,
+        "arrays": list(ctx.arrays),
+        "max_nodes": MAX_NODES,
+        "tables": dict(ctx.tables),
     }

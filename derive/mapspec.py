@@ -27,7 +27,7 @@ import sympy as sp
 
 from . import catalog
 from .declaration import Declaration, Inputs, Option
-from .ir import STATUS, Arg, Batch, Call, Group, Kernel, Module, Stage, Step, sym
+from .ir import STATUS, Arg, Call, Group, Kernel, Layout, Module, Stage, Step, sym
 from .specialize import module_kernels
 from .tangent import Differentiator
 
@@ -92,6 +92,11 @@ class MapSpec(Declaration):
         flight = tuple(catalog.PARAMS[p] for p in ("g_f", "q_r_td", "q_r_lo"))
         return catalog.APEX_ARGS + self.param_args() + flight + self.option_args()
 
+    def layout(self, x: tuple[Arg, ...]) -> Layout:
+        """A role kernel's layout: the inputs ``x``, the map's parameter record (its parameters,
+        the flights' g_f, q_r_td and q_r_lo, its kernel options)."""
+        return Layout(tuple(a.name for a in x), self.p_layout(("g_f", "q_r_td", "q_r_lo")))
+
     # -- kernels -------------------------------------------------------------------------------
     def domain_steps(self) -> tuple[Step, ...]:
         """Checks of option choices that depend on the touchdown state (before the map's own steps)."""
@@ -120,7 +125,7 @@ class MapSpec(Declaration):
             args=self.stance_args(),
             steps=self.domain_steps() + self.built().steps,
             outputs=catalog.STANCE + Group("", self.extras),
-            batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
+            layout=self.layout(catalog.TOUCHDOWN),
             notes=self.notes,
             module=self.ident,
             inline=self.inline,
@@ -158,7 +163,7 @@ class MapSpec(Declaration):
                 args=(t,) + self.stance_args(),
                 steps=self.domain_steps() + self.built().state_at(t.symbol),
                 outputs=catalog.TRAJECTORY,
-                batch=Batch((t.name,)),
+                layout=self.layout((t,) + catalog.TOUCHDOWN),
                 module=self.ident,
             ),
             self._choice(choice),
@@ -230,7 +235,7 @@ class MapSpec(Declaration):
                 args=self.apex_args(),
                 steps=steps,
                 outputs=catalog.APEX_RETURN + Group("", self.extras),
-                batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
+                layout=self.layout(catalog.APEX_ARGS),
                 module=self.ident,
             ),
             self._choice(choice),
@@ -251,7 +256,8 @@ class MapSpec(Declaration):
         return tuple(a.name for a in catalog.APEX_ARGS) + self.stiffness()
 
     def jacobian_kernels(self, diff: Differentiator, flight_kernels: Mapping[str, Kernel]) -> None:
-        """Declare ``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (with batch forms),
+        """Declare ``<ident>_stance_jacobian`` and ``<ident>_apex_return_jacobian`` (role kernels of
+        their primals' layouts),
         built by forward-mode differentiation (:mod:`.tangent`, ``diff.build()``) into module
         ``<ident>_jacobian``; the kernels they call land in ``diff.kernels`` too. The stance one is
         built first, so that the apex-return kernel's call of the stance reuses it (a superset of the
@@ -264,7 +270,6 @@ class MapSpec(Declaration):
                 name=self.kernel_name("stance_jacobian") + suffix,
                 summary=f"{self.title}: stance outputs and their derivatives with respect to the "
                 "touchdown state and the stiffness.",
-                batch=Batch(tuple(a.name for a in catalog.TOUCHDOWN)),
             )
             diff.jacobian(
                 self.apex_return_kernel(flight_kernels, choice),
@@ -272,7 +277,6 @@ class MapSpec(Declaration):
                 name=self.kernel_name("apex_return_jacobian") + suffix,
                 summary=f"Apex-return map by {self.title}, and its derivatives with respect to the apex, "
                 "the touchdown angle and the stiffness.",
-                batch=Batch(tuple(a.name for a in catalog.APEX_ARGS)),
             )
 
     @staticmethod

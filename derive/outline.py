@@ -35,7 +35,23 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
+from .ir import (
+    Arg,
+    Call,
+    Directions,
+    Field,
+    Group,
+    Iterate,
+    Kernel,
+    Load,
+    Lookup,
+    Nodes,
+    Reduce,
+    Stage,
+    Store,
+    Switch,
+    sym,
+)
 
 
 def _symbols(expr) -> set[str]:
@@ -52,6 +68,7 @@ def defined(steps) -> set[str]:
             out |= set(step.bind.values())
         elif isinstance(step, Iterate):
             out |= {s.name for s, _ in step.state} | {c[0].name for c in step.carry} | {step.count.name}
+            out |= {a[0] for a in step.arrays + step.array_carry}
             out |= defined(step.evaluate) | defined(step.body)
         elif isinstance(step, Switch):
             for _, branch in step.cases:
@@ -60,7 +77,18 @@ def defined(steps) -> set[str]:
             out |= {s.name for s in step.names}
         elif isinstance(step, Directions):
             out |= {s.name for s, _ in step.reads} | defined(step.steps)
+        elif isinstance(step, Lookup):
+            out |= {name for name, _ in step.tables}
+        elif isinstance(step, Nodes):
+            out |= {a for _, a in step.writes} | _node_locals(step)
+        elif isinstance(step, Reduce):
+            out.add(step.name.name)
     return out
+
+
+def _node_locals(step: Nodes) -> set[str]:
+    """The names a node loop binds inside (its reads, sums and stages)."""
+    return {s.name for s, _ in step.reads} | {s.name for s, _, _ in step.sums} | defined(step.steps)
 
 
 def used(steps) -> set[str]:
@@ -78,8 +106,11 @@ def used(steps) -> set[str]:
         elif isinstance(step, Iterate):
             exprs = [e for _, e in step.state] + list(step.update) + list(step.scales)
             exprs += [c[1] for c in step.carry] + [c[2] for c in step.carry] + [step.max_iter, step.tol]
+            exprs += [a[3] for a in step.arrays] + [step.nodes]
             for e in exprs:
                 out |= _symbols(e)
+            out |= {a[1] for a in step.arrays + step.array_carry}
+            out |= {a[2] for a in step.arrays + step.array_carry}
             out |= used(step.evaluate) | used(step.body)
         elif isinstance(step, Switch):
             out.add(step.selector.name)
@@ -91,6 +122,14 @@ def used(steps) -> set[str]:
         elif isinstance(step, Directions):
             inner = used(step.steps).union(*(_symbols(e) for e, _ in step.writes))
             out |= inner - {s.name for s, _ in step.reads} - defined(step.steps)
+        elif isinstance(step, Lookup):
+            out |= _symbols(step.selector)
+        elif isinstance(step, Nodes):
+            inner = used(step.steps).union(*(_symbols(e) for e, _ in step.writes))
+            out |= (inner - _node_locals(step)) | _symbols(step.count)
+            out |= {a for _, a in step.reads} | {m for _, m, _ in step.sums} | {a for _, _, a in step.sums}
+        elif isinstance(step, Reduce):
+            out |= {step.array} | ({step.weights} if step.weights else set()) | _symbols(step.count)
     return out
 
 
@@ -105,6 +144,7 @@ def visible(steps) -> list[str]:
             out += list(step.bind.values())
         elif isinstance(step, Iterate):
             out += [s.name for s, _ in step.state] + [c[0].name for c in step.carry] + [step.count.name]
+            out += [a[0] for a in step.arrays + step.array_carry]
             out += visible(step.evaluate)
         elif isinstance(step, Switch):
             branches = [visible(b) for _, b in step.cases]
@@ -112,6 +152,12 @@ def visible(steps) -> list[str]:
             out += [n for n in branches[0] if n in common] if branches else []
         elif isinstance(step, Load):
             out += [s.name for s in step.names]
+        elif isinstance(step, Lookup):
+            out += [name for name, _ in step.tables]
+        elif isinstance(step, Nodes):
+            out += [a for _, a in step.writes]
+        elif isinstance(step, Reduce):
+            out.append(step.name.name)
     return out
 
 
@@ -142,8 +188,11 @@ def prune(steps, live: set[str]) -> tuple:
                     live |= _symbols(e)
         elif isinstance(step, Iterate):
             inner = {s.name for s, _ in step.state} | {c[0].name for c in step.carry}
+            inner |= {a[0] for a in step.arrays + step.array_carry}
             exprs = list(step.update) + [c[2] for c in step.carry] + list(step.scales)
+            exprs += [a[3] for a in step.arrays] + [step.nodes]
             need = set(live) | inner | set().union(*map(_symbols, exprs + [step.tol, step.max_iter]))
+            need |= {a[2] for a in step.arrays + step.array_carry}
             while True:  # the body reads what the evaluation defines, the evaluation the state
                 body = prune(step.body, need)
                 evaluate = prune(step.evaluate, need | used(body))
@@ -157,6 +206,31 @@ def prune(steps, live: set[str]) -> tuple:
         elif isinstance(step, Load):
             if any(s.name in live for s in step.names):
                 out.append(step)
+        elif isinstance(step, Nodes):
+            writes = tuple((e, a) for e, a in step.writes if a in live)
+            # a loop whose values nothing uses stays for its checks (a guard fails the kernel)
+            if writes or any(isinstance(st, Stage) and st.guards for st in step.steps):
+                inner = set().union(*(_symbols(e) for e, _ in writes))
+                body = prune(step.steps, inner)
+                need = used(body) | inner
+                step = replace(
+                    step,
+                    writes=writes,
+                    steps=body,
+                    reads=tuple((n, a) for n, a in step.reads if n.name in need),
+                    sums=tuple((n, m, a) for n, m, a in step.sums if n.name in need),
+                )
+                out.append(step)
+                live = (live - {a for _, a in writes}) | used((step,))
+        elif isinstance(step, Reduce):
+            if step.name.name in live:
+                out.append(step)
+                live = (live - {step.name.name}) | used((step,))
+        elif isinstance(step, Lookup):
+            tables = tuple((n, t) for n, t in step.tables if n in live)
+            if tables:
+                out.append(replace(step, tables=tables))
+                live |= _symbols(step.selector)
         elif isinstance(step, Directions):
             inner = set().union(*(_symbols(e) for e, _ in step.writes))
             step = replace(step, steps=prune(step.steps, inner))

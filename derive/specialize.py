@@ -29,7 +29,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from .ir import Call, Guard, Iterate, Kernel, Stage, Switch, calls, sym
+from .ir import Call, Guard, Iterate, Kernel, Lookup, Nodes, Reduce, Stage, Switch, calls, sym
 
 __all__ = ["choice_of", "choice_suffix", "module_kernels", "specialize"]
 
@@ -98,8 +98,23 @@ def _steps(steps, subs, choice, labels, where) -> tuple:
                     tol=_expr(step.tol, subs),
                     scales=tuple(_expr(e, subs) for e in step.scales),
                     carry=tuple((s, _expr(a, subs), _expr(b, subs)) for s, a, b in step.carry),
+                    arrays=tuple((a, i, u, _expr(c, subs)) for a, i, u, c in step.arrays),
+                    nodes=_expr(step.nodes, subs),
                 )
             )
+        elif isinstance(step, Nodes):
+            out.append(
+                replace(
+                    step,
+                    count=_expr(step.count, subs),
+                    steps=_steps(step.steps, subs, choice, labels, where),
+                    writes=tuple((_expr(e, subs), a) for e, a in step.writes),
+                )
+            )
+        elif isinstance(step, Reduce):
+            out.append(replace(step, count=_expr(step.count, subs)))
+        elif isinstance(step, Lookup):
+            out.append(replace(step, selector=_expr(step.selector, subs)))
         elif isinstance(step, Switch):
             if step.selector.name in choice:
                 code = choice[step.selector.name][0]
@@ -130,11 +145,15 @@ def specialize(
     if key not in _CACHE:
         subs = {sym(n): sp.Integer(code) for n, (code, _) in choice.items()}
         where = f"kernel {name}"
+        layout = kernel.layout
+        if layout is not None:
+            layout = replace(layout, p=tuple(n for n in layout.p if n not in choice))
         _CACHE[key] = replace(
             kernel,
             name=name,
             args=tuple(a for a in kernel.args if a.name not in choice),
             steps=_steps(kernel.steps, subs, choice, labels, where),
+            layout=layout,
         )
         _SUFFIXES[id(_CACHE[key])] = choice_suffix(choice)
     return _CACHE[key]

@@ -69,7 +69,23 @@ from dataclasses import dataclass, field, fields, is_dataclass, replace
 
 import sympy as sp
 
-from .ir import Arg, Call, Directions, Field, Group, Iterate, Kernel, Load, Stage, Store, Switch, sym
+from .ir import (
+    Arg,
+    Call,
+    Directions,
+    Field,
+    Group,
+    Iterate,
+    Kernel,
+    Load,
+    Lookup,
+    Nodes,
+    Reduce,
+    Stage,
+    Store,
+    Switch,
+    sym,
+)
 from .outline import Outliner, defined, prune, prune_rows, used, visible
 from .specialize import choice_of
 
@@ -136,6 +152,9 @@ class _Frame:
 
     wrt: tuple
     tangents: dict[str, _Tangent]
+    #: node arrays (derive/ir.py's Nodes): array -> {direction: the name of its tangent array, or
+    #: None where the tangent is zero}
+    arrays: dict[str, dict] = field(default_factory=dict)
 
     def partials(self, expr: sp.Basic) -> list[tuple[sp.Basic, _Tangent]]:
         """(d expr / d x, tangent of x) for every free symbol x of ``expr`` with a tangent."""
@@ -182,7 +201,11 @@ class _Frame:
         return out
 
     def copy(self) -> _Frame:
-        return _Frame(self.wrt, {k: dict(v) for k, v in self.tangents.items()})
+        return _Frame(
+            self.wrt,
+            {k: dict(v) for k, v in self.tangents.items()},
+            {k: dict(v) for k, v in self.arrays.items()},
+        )
 
 
 @dataclass(frozen=True)
@@ -206,7 +229,7 @@ class Differentiator:
     generator to place in ``<primal module>_jacobian``.
 
     - :meth:`jacobian` (then :meth:`build`): a public Jacobian kernel (outputs, then d output_i /
-      d input_j row-major, a batch form), which every caller differentiating the same kernel with
+      d input_j row-major, a role kernel), which every caller differentiating the same kernel with
       respect to the same arguments shares.
 
     No derivative kernel checks its derivatives or its direction arguments for finiteness: an
@@ -237,17 +260,16 @@ class Differentiator:
         *,
         name: str,
         summary: str,
-        batch=None,
     ) -> None:
         """Declare the public Jacobian kernel ``name``: ``kernel``'s outputs and their derivatives
-        ``d_<out>__<w>`` with respect to each ``w`` of ``wrt`` (values checked to be finite, the
-        derivatives left to runtime/api/jacobian.py), with a batch form. :meth:`build` builds it, after
+        ``d_<out>__<w>`` with respect to each ``w`` of ``wrt``, a role kernel of ``kernel``'s layout
+        (values and derivatives checked to be finite). :meth:`build` builds it, after
         every declaration, so that each caller differentiating ``kernel`` with respect to ``wrt``
         (another map's zeroth iterate, the apex-return map's stance) calls it by its public name."""
         key = (kernel.module, kernel.name, tuple(wrt))
         if key in self._public:
             raise ValueError(f"two public Jacobians of {kernel.name} with respect to {wrt}")
-        self._public[key] = {"name": name, "summary": summary, "batch": batch}
+        self._public[key] = {"name": name, "summary": summary, "layout": kernel.layout}
         self._pending.append((kernel, tuple(wrt)))
 
     def build(self) -> dict[str, Kernel]:
@@ -273,7 +295,7 @@ class Differentiator:
                     f"{kernel.summary.rstrip('.')}, and the derivatives of its outputs with respect to "
                     f"{', '.join(wrt)}."
                 )
-                public = {"name": name, "summary": summary, "batch": None}
+                public = {"name": name, "summary": summary, "layout": None}
             memo[wrt] = self._derive(
                 kernel,
                 wrt,
@@ -281,8 +303,8 @@ class Differentiator:
                 name=public["name"],
                 extra=(),
                 summary=public["summary"],
-                batch=public["batch"],
-                check=public["batch"] is not None and kernel.check_outputs,
+                layout=public["layout"],
+                check=public["layout"] is not None and kernel.check_outputs,
             )
         return memo[wrt]
 
@@ -318,7 +340,7 @@ class Differentiator:
         return self._jvps[key]
 
     def _derive(
-        self, kernel: Kernel, dirs: tuple, seeds: dict, *, name, extra, summary, batch=None, check=False
+        self, kernel: Kernel, dirs: tuple, seeds: dict, *, name, extra, summary, layout=None, check=False
     ) -> _Derived:
         frame = _Frame(dirs, {})
         for a in kernel.args:
@@ -356,7 +378,7 @@ class Differentiator:
             steps=steps,
             outputs=Group("", kernel.outputs.items + fields),
             status=kernel.status,
-            batch=batch,
+            layout=layout,
             notes=_NOTES,
             module=module,
             check_inputs=kernel.check_inputs,
@@ -398,7 +420,7 @@ class Differentiator:
                 "the choices with the same code (derive/tangent.py).",
                 args=tuple(Arg(sym(n), "the caller's variable of the same name") for n in inputs),
                 steps=tail,
-                batch=None,
+                layout=None,
                 check_inputs=False,
                 doc_args="the per-choice caller's variables of the same names.",
             )
@@ -524,9 +546,89 @@ class _Ctx:
                 out.extend(self.iterate(step, tuple(tail)))
             elif isinstance(step, Switch):
                 out.append(self.switch(step))
+            elif isinstance(step, Lookup):
+                out.append(self.lookup(step))
+            elif isinstance(step, Nodes):
+                out.append(self.nodes(step))
+            elif isinstance(step, Reduce):
+                out.extend(self.reduce(step))
             else:
                 raise TypeError(f"cannot differentiate a {type(step).__name__}")
         return tuple(out)
+
+    # -- node arrays (derive/ir.py: Lookup, Nodes, Reduce) ------------------------------------------
+    def lookup(self, lk: Lookup) -> Lookup:
+        """Tables are constants: no tangent."""
+        for name, tables in lk.tables:
+            first = tables[0][1]
+            if isinstance(first, tuple):
+                self.frame.arrays[name] = dict.fromkeys(self.frame.wrt)
+            else:
+                self.frame.tangents[name] = {w: sp.S.Zero for w in self.frame.wrt}
+        return lk
+
+    def _array_tangent(self, array: str, w) -> str | None:
+        return self.frame.arrays.get(array, {}).get(w)
+
+    def nodes(self, nd: Nodes) -> Nodes:
+        """The loop with its tangents, element by element: a read's tangent from the array's
+        tangent array (one per direction), a sum's the same sum of the tangent array, the stages
+        differentiated as anywhere, each write's tangent into the written array's tangent array
+        (none where it is zero in every node)."""
+        outer = self.frame
+        wrt = outer.wrt
+        self.frame = inner = outer.copy()
+        reads, sums = list(nd.reads), list(nd.sums)
+        for local, array in nd.reads:
+            t = {}
+            for w in wrt:
+                ta = self._array_tangent(array, w)
+                t[w] = sp.S.Zero if ta is None else sym(tangent_name(local.name, w))
+                if ta is not None:
+                    reads.append((t[w], ta))
+            inner.tangents[local.name] = t
+        for local, matrix, array in nd.sums:
+            t = {}
+            for w in wrt:
+                ta = self._array_tangent(array, w)
+                t[w] = sp.S.Zero if ta is None else sym(tangent_name(local.name, w))
+                if ta is not None:
+                    sums.append((t[w], matrix, ta))
+            inner.tangents[local.name] = t
+        steps = tuple(self.stage(st) for st in nd.steps)
+        writes = list(nd.writes)
+        arrays = {}
+        for e, array in nd.writes:
+            t = inner.of(e)
+            arrays[array] = {}
+            for w in wrt:
+                if t[w] != 0:
+                    name = tangent_name(array, w)
+                    writes.append((t[w], name))
+                    arrays[array][w] = name
+                else:
+                    arrays[array][w] = None
+        self.frame = outer
+        outer.arrays.update(arrays)
+        return Nodes(nd.count, tuple(reads), tuple(sums), steps, tuple(writes), nd.comment)
+
+    def reduce(self, rd: Reduce) -> list:
+        """The sum, and the same sum of each tangent array of the summed array."""
+        out: list = [rd]
+        t = {}
+        for w in self.frame.wrt:
+            ta = self._array_tangent(rd.array, w)
+            if ta is None:
+                t[w] = sp.S.Zero
+            else:
+                t[w] = sym(tangent_name(rd.name.name, w))
+                out.append(Reduce(t[w], rd.weights, ta, rd.count))
+        self.frame.tangents[rd.name.name] = t
+        return out
+
+    def zero_array(self, name: str, count) -> Nodes:
+        """A node array of zeros (the tangent of an iteration's state where its start has none)."""
+        return Nodes(count, (), (), (), ((sp.S.Zero, name),), comment=f"{name}: zero")
 
     def parts(self, st: Stage) -> list[tuple[list, list]]:
         """For each assignment: its value and the partial derivatives used in two or more directions
@@ -694,18 +796,23 @@ class _Ctx:
             and len(self.frame.wrt) > 1
         ):
             return self.looped(it, tail)
-        return [self.unrolled(it), *self.steps(tail)]
+        return [*self.unrolled(it), *self.steps(tail)]
 
     def _reach(self, it: Iterate) -> tuple[set[str], tuple]:
         """The names from before the loop it reads, and the directions that reach it through them."""
         names = [s for s, _ in it.state] + [c[0] for c in it.carry]
-        inner = {s.name for s in names} | {it.count.name}
+        inner = {s.name for s in names} | {it.count.name} | {a[0] for a in it.arrays + it.array_carry}
         reads = used(it.evaluate + it.body) - inner
+        reads |= {a[1] for a in it.arrays + it.array_carry}
         exprs = [e for _, e in it.state] + list(it.update) + [e for c in it.carry for e in (c[1], c[2])]
         for e in (*exprs, it.max_iter, it.tol, *it.scales):
             reads |= {s.name for s in sp.sympify(e).free_symbols} - inner
         outer = self.frame
-        reach = tuple(w for w in outer.wrt if any(outer.tangents.get(n, {}).get(w, 0) != 0 for n in reads))
+
+        def reaches(n, w) -> bool:
+            return outer.tangents.get(n, {}).get(w, 0) != 0 or outer.arrays.get(n, {}).get(w) is not None
+
+        reach = tuple(w for w in outer.wrt if any(reaches(n, w) for n in reads))
         return reads, reach
 
     def looped(self, it: Iterate, tail: tuple = ()) -> list:
@@ -719,7 +826,7 @@ class _Ctx:
         wrt = outer.wrt
         reads, reach = self._reach(it)
         if not reach:
-            return [self.unrolled(it), *self.steps(tail)]
+            return [*self.unrolled(it), *self.steps(tail)]
         names = [s for s, _ in it.state] + [c[0] for c in it.carry]
         inits = [init for _, init in it.state] + [c[1] for c in it.carry]
         updates = list(it.update) + [c[2] for c in it.carry]
@@ -837,7 +944,7 @@ class _Ctx:
         self.frame.tangents[it.count.name] = dict(zero)
         return pre + [loop] + after + post
 
-    def unrolled(self, it: Iterate) -> Iterate:
+    def unrolled(self, it: Iterate) -> list:
         outer = self.frame
         wrt = outer.wrt
         names = [s for s, _ in it.state] + [c[0] for c in it.carry]
@@ -846,13 +953,41 @@ class _Ctx:
         # the directions that reach the loop: through what it reads from before it
         _, reach = self._reach(it)
         init_t = [outer.of(e) for e in inits]
+        # the node arrays of the state: their tangent arrays start as their initial arrays' (zeros
+        # where those have none)
+        arrays = [(a, i, u) for a, i, u, _ in it.arrays] + list(it.array_carry)
+        pre: list = []
+        array_init = {}
+        for a, init, _ in arrays:
+            array_init[a] = {}
+            for w in reach:
+                ta = outer.arrays.get(init, {}).get(w)
+                if ta is None:
+                    ta = tangent_name(init, w)
+                    pre.append(self.zero_array(ta, it.nodes))
+                array_init[a][w] = ta
         self.frame = outer.copy()
         for s in names:
             self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) if w in reach else 0 for w in wrt}
+        for a, _, _ in arrays:
+            self.frame.arrays[a] = {w: tangent_name(a, w) if w in reach else None for w in wrt}
         self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
         evaluate = self.steps(it.evaluate)
-        evaluated = {n: dict(self.frame.tangents[n]) for n in visible(it.evaluate)}
+        evaluated = {
+            n: dict(self.frame.tangents[n]) for n in visible(it.evaluate) if n in self.frame.tangents
+        }
+        evaluated_arrays = {
+            n: dict(self.frame.arrays[n]) for n in visible(it.evaluate) if n in self.frame.arrays
+        }
         body = self.steps(it.body)
+        array_carry = []
+        for a, _, upd in arrays:
+            for w in reach:
+                tu = self.frame.arrays.get(upd, {}).get(w)
+                if tu is None:
+                    tu = tangent_name(upd, w)
+                    body += (self.zero_array(tu, it.nodes),)
+                array_carry.append((tangent_name(a, w), array_init[a][w], tu))
         # the next values and their tangents as a stage of the body (one CSE, partials shared)
         nxt = [sym(f"{s.name}__next") for s in names]
         body += (self.stage(Stage(tuple(zip(nxt, updates, strict=True)), comment="next values")),)
@@ -870,14 +1005,19 @@ class _Ctx:
             self.frame.tangents[s.name] = {w: sym(tangent_name(s.name, w)) if w in reach else 0 for w in wrt}
         self.frame.tangents[it.count.name] = {w: sp.S.Zero for w in wrt}
         self.frame.tangents.update(evaluated)
+        for a, _, _ in arrays:
+            self.frame.arrays[a] = {w: tangent_name(a, w) if w in reach else None for w in wrt}
+        self.frame.arrays.update(evaluated_arrays)
         k = len(it.state)
-        return replace(
+        loop = replace(
             it,
             body=body,
             update=tuple(nxt[:k]),
             carry=tuple((c[0], c[1], n) for c, n in zip(it.carry, nxt[k:], strict=True)) + tuple(carry),
             evaluate=evaluate,
+            array_carry=it.array_carry + tuple(array_carry),
         )
+        return pre + [loop]
 
     def switch(self, sw: Switch) -> Switch:
         before = self.frame

@@ -28,9 +28,9 @@ Modules:
         state-at-time and apex-return kernels.
     geyer_vs: Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance,
         state-at-time and apex-return kernels.
-    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance,
-        state-at-time and apex-return kernels.
     iterative: Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance,
+        state-at-time and apex-return kernels.
+    iterative_report: Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance,
         state-at-time and apex-return kernels.
     exact: Exact stance by numerical integration (DOP853) (report section 2.2): stance, state-at-time and
         apex-return kernels.
@@ -52,10 +52,10 @@ Modules:
         gravity_type4: JVP kernels, and for a map its stance and apex-return Jacobians.
     gravity_type5_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
         gravity_type5: JVP kernels, and for a map its stance and apex-return Jacobians.
-    iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
-        iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     iterative_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP
         kernels, and for a map its stance and apex-return Jacobians.
+    iterative_report_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module
+        iterative_report: JVP kernels, and for a map its stance and apex-return Jacobians.
     exact_jacobian: Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels,
         and for a map its stance and apex-return Jacobians.
     exact_compression: Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section
@@ -70,7 +70,8 @@ Modules:
         section 5.2.2): bottom -> liftoff.
     iterative_report_decompression: Iterative decompression half as printed (bottom to liftoff, k_d) (report
         section 5.2.2): bottom -> liftoff.
+    model: The model's kernels the runtime calls by name (the index's MODEL), as role kernels.
     maps_index: the index of every declared map (plain data).
-    rows: the row stores of the Jacobians' batch forms, one per layout.
+    support: what the kernels share (stack arrays, a row's store and checks).
     status: status codes shared by all kernels and the exact simulator.
 """

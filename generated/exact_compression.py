@@ -6,15 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
-#   runtime/exact/compiled.py sha256:f1ea68408082b7bb
-#   runtime/exact/dop853.py sha256:6f313c10a1dd1ef4
-#   runtime/exact/jacobian.py sha256:079e967891f96aa1
-#   runtime/exact/kernels.py sha256:39d1598d210616fc
-#   runtime/exact/reference.py sha256:1a2d2771848fe471
-#   generated/flight.py sha256:8b20bd5230ccfe19
-#   generated/maps_index.py sha256:ea8038b15fb7ac02
-#   generated/slip_model.py sha256:1a04cccc79c2015a
+#   support.py sha256:192d8d7121590e49
+#   exact_stance.py sha256:299560de25340ae1
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
 bottom."""
@@ -22,22 +15,27 @@ bottom."""
 import math
 
 import numpy as np
-from numba import njit, prange
-from slipmaps.runtime.exact.kernels import compression
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
+from .exact_stance import compression
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
-_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def exact_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol):
+def exact_compression(x, p, out):
     """Exact compression half (touchdown to bottom, k_c; DOP853 integration): touchdown state -> bottom state.
 
     Report equations: 2, 3.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, g_s, q_r_lo, rtol, atol); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -52,15 +50,18 @@ def exact_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_l
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
 
-    Returns a tuple:
+    Writes into out:
         t_half: time from the start state to the end state [s]
         end_q_r: leg length [m]
         end_q_rd: leg length rate [m/s]
         end_q_th: leg angle from the vertical, counterclockwise positive [rad]
         end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -68,34 +69,29 @@ def exact_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_l
             and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0))
             and ((l0 > 0.0)) and ((k_c > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
             and ((rtol >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16) and (atol <= 0.001))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # runtime/exact/kernels.py
+        return fail(out, STATUS_INVALID_INPUT)
+    # the exact half (exact_stance)
     _c0 = compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol)
     if _c0[5] != STATUS_OK:
-        return _NAN5 + (_c0[5],)
+        return fail(out, _c0[5])
     t_half = _c0[0]
     end_q_r = _c0[1]
     end_q_rd = _c0[2]
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def exact_compression_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_lo, rtol, atol, out,
-        status):
-    """Parallel batch form of :func:`exact_compression`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, q_r_lo, rtol, atol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`exact_compression`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (exact_compression(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, g_s, q_r_lo,
-            rtol, atol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def exact_compression_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`exact_compression`: ``STATUS[i] = exact_compression(X[i], P[i], OUT[i])`` for
+    every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = exact_compression(X[i], P[min(i, last)], OUT[i])

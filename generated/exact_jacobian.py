@@ -6,17 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   rows.py sha256:0089f4b891692c1b
-#   runtime/exact/__init__.py sha256:b5581c4eb9fb8f73
-#   runtime/exact/compiled.py sha256:f1ea68408082b7bb
-#   runtime/exact/dop853.py sha256:6f313c10a1dd1ef4
-#   runtime/exact/jacobian.py sha256:079e967891f96aa1
-#   runtime/exact/kernels.py sha256:39d1598d210616fc
-#   runtime/exact/reference.py sha256:1a2d2771848fe471
-#   generated/flight.py sha256:8b20bd5230ccfe19
-#   generated/maps_index.py sha256:ea8038b15fb7ac02
-#   generated/slip_model.py sha256:1a04cccc79c2015a
+#   support.py sha256:192d8d7121590e49
+#   exact_stance.py sha256:299560de25340ae1
+#   flight_jacobian.py sha256:f3da99deace8dd95
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module exact: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -24,23 +16,22 @@ its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
+from .exact_stance import stance_jacobian
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd)
-from .rows import store_row_10_70, store_row_12_84
-from slipmaps.runtime.exact.kernels import stance_jacobian
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
 from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
-_NAN70 = (NAN,) * 70
-_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol):
+def exact_stance_jacobian(x, p, out):
     """Exact stance by numerical integration (DOP853): stance outputs and their derivatives with respect to
     the touchdown state and the stiffness.
 
@@ -48,6 +39,11 @@ def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol); writes the outputs below into out, in order,
+    and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -63,7 +59,7 @@ def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -76,9 +72,12 @@ def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
         liftoff_q_thd: leg angle rate [rad/s]
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[7], p[8], p[9])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -87,30 +86,82 @@ def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
             < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0)) and ((k_d > 0.0)) and ((g_s
             > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((rtol >= 1e-14) and (rtol <= 0.001))
             and ((atol >= 1e-16) and (atol <= 0.001))):
-        return _NAN70 + (STATUS_INVALID_INPUT,)
-    # the exact stance (runtime/exact/kernels.py)
-    _c0 = stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
-    if _c0[70] != STATUS_OK:
-        return _NAN70 + (_c0[70],)
-    (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, dext_t_bottom__q_r_td, dext_t_bottom__q_rd_td, dext_t_bottom__q_th_td,
-        dext_t_bottom__q_thd_td, dext_t_bottom__k_c, dext_t_bottom__k_d, dext_t_stance__q_r_td,
-        dext_t_stance__q_rd_td, dext_t_stance__q_th_td, dext_t_stance__q_thd_td, dext_t_stance__k_c,
-        dext_t_stance__k_d, dext_bottom_q_r__q_r_td, dext_bottom_q_r__q_rd_td, dext_bottom_q_r__q_th_td,
-        dext_bottom_q_r__q_thd_td, dext_bottom_q_r__k_c, dext_bottom_q_r__k_d, dext_bottom_q_rd__q_r_td,
-        dext_bottom_q_rd__q_rd_td, dext_bottom_q_rd__q_th_td, dext_bottom_q_rd__q_thd_td,
-        dext_bottom_q_rd__k_c, dext_bottom_q_rd__k_d, dext_bottom_q_th__q_r_td, dext_bottom_q_th__q_rd_td,
-        dext_bottom_q_th__q_th_td, dext_bottom_q_th__q_thd_td, dext_bottom_q_th__k_c, dext_bottom_q_th__k_d,
-        dext_bottom_q_thd__q_r_td, dext_bottom_q_thd__q_rd_td, dext_bottom_q_thd__q_th_td,
-        dext_bottom_q_thd__q_thd_td, dext_bottom_q_thd__k_c, dext_bottom_q_thd__k_d, dext_liftoff_q_r__q_r_td,
-        dext_liftoff_q_r__q_rd_td, dext_liftoff_q_r__q_th_td, dext_liftoff_q_r__q_thd_td,
-        dext_liftoff_q_r__k_c, dext_liftoff_q_r__k_d, dext_liftoff_q_rd__q_r_td, dext_liftoff_q_rd__q_rd_td,
-        dext_liftoff_q_rd__q_th_td, dext_liftoff_q_rd__q_thd_td, dext_liftoff_q_rd__k_c,
-        dext_liftoff_q_rd__k_d, dext_liftoff_q_th__q_r_td, dext_liftoff_q_th__q_rd_td,
-        dext_liftoff_q_th__q_th_td, dext_liftoff_q_th__q_thd_td, dext_liftoff_q_th__k_c,
-        dext_liftoff_q_th__k_d, dext_liftoff_q_thd__q_r_td, dext_liftoff_q_thd__q_rd_td,
-        dext_liftoff_q_thd__q_th_td, dext_liftoff_q_thd__q_thd_td, dext_liftoff_q_thd__k_c,
-        dext_liftoff_q_thd__k_d, _) = _c0
+        return fail(out, STATUS_INVALID_INPUT)
+    # the exact stance (exact_stance)
+    _o0 = carray(stack(70), 70)
+    _c0 = stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    t_bottom = _o0[0]
+    t_stance = _o0[1]
+    bottom_q_r = _o0[2]
+    bottom_q_rd = _o0[3]
+    bottom_q_th = _o0[4]
+    bottom_q_thd = _o0[5]
+    liftoff_q_r = _o0[6]
+    liftoff_q_rd = _o0[7]
+    liftoff_q_th = _o0[8]
+    liftoff_q_thd = _o0[9]
+    dext_t_bottom__q_r_td = _o0[10]
+    dext_t_bottom__q_rd_td = _o0[11]
+    dext_t_bottom__q_th_td = _o0[12]
+    dext_t_bottom__q_thd_td = _o0[13]
+    dext_t_bottom__k_c = _o0[14]
+    dext_t_bottom__k_d = _o0[15]
+    dext_t_stance__q_r_td = _o0[16]
+    dext_t_stance__q_rd_td = _o0[17]
+    dext_t_stance__q_th_td = _o0[18]
+    dext_t_stance__q_thd_td = _o0[19]
+    dext_t_stance__k_c = _o0[20]
+    dext_t_stance__k_d = _o0[21]
+    dext_bottom_q_r__q_r_td = _o0[22]
+    dext_bottom_q_r__q_rd_td = _o0[23]
+    dext_bottom_q_r__q_th_td = _o0[24]
+    dext_bottom_q_r__q_thd_td = _o0[25]
+    dext_bottom_q_r__k_c = _o0[26]
+    dext_bottom_q_r__k_d = _o0[27]
+    dext_bottom_q_rd__q_r_td = _o0[28]
+    dext_bottom_q_rd__q_rd_td = _o0[29]
+    dext_bottom_q_rd__q_th_td = _o0[30]
+    dext_bottom_q_rd__q_thd_td = _o0[31]
+    dext_bottom_q_rd__k_c = _o0[32]
+    dext_bottom_q_rd__k_d = _o0[33]
+    dext_bottom_q_th__q_r_td = _o0[34]
+    dext_bottom_q_th__q_rd_td = _o0[35]
+    dext_bottom_q_th__q_th_td = _o0[36]
+    dext_bottom_q_th__q_thd_td = _o0[37]
+    dext_bottom_q_th__k_c = _o0[38]
+    dext_bottom_q_th__k_d = _o0[39]
+    dext_bottom_q_thd__q_r_td = _o0[40]
+    dext_bottom_q_thd__q_rd_td = _o0[41]
+    dext_bottom_q_thd__q_th_td = _o0[42]
+    dext_bottom_q_thd__q_thd_td = _o0[43]
+    dext_bottom_q_thd__k_c = _o0[44]
+    dext_bottom_q_thd__k_d = _o0[45]
+    dext_liftoff_q_r__q_r_td = _o0[46]
+    dext_liftoff_q_r__q_rd_td = _o0[47]
+    dext_liftoff_q_r__q_th_td = _o0[48]
+    dext_liftoff_q_r__q_thd_td = _o0[49]
+    dext_liftoff_q_r__k_c = _o0[50]
+    dext_liftoff_q_r__k_d = _o0[51]
+    dext_liftoff_q_rd__q_r_td = _o0[52]
+    dext_liftoff_q_rd__q_rd_td = _o0[53]
+    dext_liftoff_q_rd__q_th_td = _o0[54]
+    dext_liftoff_q_rd__q_thd_td = _o0[55]
+    dext_liftoff_q_rd__k_c = _o0[56]
+    dext_liftoff_q_rd__k_d = _o0[57]
+    dext_liftoff_q_th__q_r_td = _o0[58]
+    dext_liftoff_q_th__q_rd_td = _o0[59]
+    dext_liftoff_q_th__q_th_td = _o0[60]
+    dext_liftoff_q_th__q_thd_td = _o0[61]
+    dext_liftoff_q_th__k_c = _o0[62]
+    dext_liftoff_q_th__k_d = _o0[63]
+    dext_liftoff_q_thd__q_r_td = _o0[64]
+    dext_liftoff_q_thd__q_rd_td = _o0[65]
+    dext_liftoff_q_thd__q_th_td = _o0[66]
+    dext_liftoff_q_thd__q_thd_td = _o0[67]
+    dext_liftoff_q_thd__k_c = _o0[68]
+    dext_liftoff_q_thd__k_d = _o0[69]
     # derivatives of the outputs
     d_t_bottom__q_r_td = dext_t_bottom__q_r_td
     d_t_bottom__q_rd_td = dext_t_bottom__q_rd_td
@@ -172,51 +223,41 @@ def exact_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g
     d_liftoff_q_thd__q_thd_td = dext_liftoff_q_thd__q_thd_td
     d_liftoff_q_thd__k_c = dext_liftoff_q_thd__k_c
     d_liftoff_q_thd__k_d = dext_liftoff_q_thd__k_d
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return _NAN70 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td,
-        d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td,
-        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td,
-        d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c,
-        d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td,
-        d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td,
-        d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c,
-        d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
-        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td,
-        d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c,
-        d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td,
-        d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td,
-        d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c,
-        d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, STATUS_OK)
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
+        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
+        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
+        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
+        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
+        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
+        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
+        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
+        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
+        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def exact_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol,
-        out, status):
-    """Parallel batch form of :func:`exact_stance_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 70); the columns are the outputs of
-    :func:`exact_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_10_70`).
-    """
-    for i in prange(out.shape[0]):
-        res = (exact_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s,
-            q_r_lo, rtol, atol))
-        store_row_10_70(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def exact_stance_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`exact_stance_jacobian`: ``STATUS[i] = exact_stance_jacobian(X[i], P[i], OUT[i])``
+    for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = exact_stance_jacobian(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
-        q_r_lo, rtol, atol):
+def exact_apex_return_jacobian(x, p, out):
     """Apex-return map by Exact stance by numerical integration (DOP853), and its derivatives with respect to
     the apex, the touchdown angle and the stiffness.
 
@@ -224,6 +265,11 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol); writes the outputs below into out, in order,
+    and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -243,7 +289,7 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         rtol: option rtol: relative tolerance of the DOP853 integration in [1e-14, 0.001]
         atol: option atol: absolute tolerance of the DOP853 integration in [1e-16, 0.001]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -258,9 +304,13 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 246
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
+        p[8], p[9])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -270,32 +320,74 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
             > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo
             <= l0) and (q_r_lo > 0.0)) and ((rtol >= 1e-14) and (rtol <= 0.001)) and ((atol >= 1e-16)
             and (atol <= 0.001))):
-        return _NAN84 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(30), 30)
     _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN84 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+        ground, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    td_q_r = _o0[0]
+    td_q_rd = _o0[1]
+    td_q_th = _o0[2]
+    td_q_thd = _o0[3]
+    t_descent = _o0[4]
+    foot_x = _o0[5]
+    _j_td_q_rd__b_y_apex = _o0[10]
+    _j_td_q_rd__b_xd_apex = _o0[11]
+    _j_td_q_rd__q_th_td = _o0[12]
+    _j_td_q_rd__ground = _o0[13]
+    _j_td_q_th__q_th_td = _o0[16]
+    _j_td_q_thd__b_y_apex = _o0[18]
+    _j_td_q_thd__b_xd_apex = _o0[19]
+    _j_td_q_thd__q_th_td = _o0[20]
+    _j_td_q_thd__ground = _o0[21]
+    _j_t_descent__b_y_apex = _o0[22]
+    _j_t_descent__q_th_td = _o0[24]
+    _j_t_descent__ground = _o0[25]
+    _j_foot_x__b_y_apex = _o0[26]
+    _j_foot_x__b_xd_apex = _o0[27]
+    _j_foot_x__q_th_td = _o0[28]
+    _j_foot_x__ground = _o0[29]
     # stance: Exact stance by numerical integration (DOP853)
-    _c1 = exact_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, rtol, atol)
-    if _c1[70] != STATUS_OK:
-        return _NAN84 + (_c1[70],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _, _,
-        _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_r__q_rd_td,
-        _j_liftoff_q_r__q_th_td, _j_liftoff_q_r__q_thd_td, _j_liftoff_q_r__k_c, _j_liftoff_q_r__k_d, _,
-        _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c,
-        _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td,
-        _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _, _j_liftoff_q_thd__q_rd_td,
-        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(70), 70)
+    _c1 = exact_stance_jacobian(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    _j_t_stance__q_rd_td = _o1[17]
+    _j_t_stance__q_th_td = _o1[18]
+    _j_t_stance__q_thd_td = _o1[19]
+    _j_t_stance__k_c = _o1[20]
+    _j_t_stance__k_d = _o1[21]
+    _j_liftoff_q_r__q_rd_td = _o1[47]
+    _j_liftoff_q_r__q_th_td = _o1[48]
+    _j_liftoff_q_r__q_thd_td = _o1[49]
+    _j_liftoff_q_r__k_c = _o1[50]
+    _j_liftoff_q_r__k_d = _o1[51]
+    _j_liftoff_q_rd__q_rd_td = _o1[53]
+    _j_liftoff_q_rd__q_th_td = _o1[54]
+    _j_liftoff_q_rd__q_thd_td = _o1[55]
+    _j_liftoff_q_rd__k_c = _o1[56]
+    _j_liftoff_q_rd__k_d = _o1[57]
+    _j_liftoff_q_th__q_rd_td = _o1[59]
+    _j_liftoff_q_th__q_th_td = _o1[60]
+    _j_liftoff_q_th__q_thd_td = _o1[61]
+    _j_liftoff_q_th__k_c = _o1[62]
+    _j_liftoff_q_th__k_d = _o1[63]
+    _j_liftoff_q_thd__q_rd_td = _o1[65]
+    _j_liftoff_q_thd__q_th_td = _o1[66]
+    _j_liftoff_q_thd__q_thd_td = _o1[67]
+    _j_liftoff_q_thd__k_c = _o1[68]
+    _j_liftoff_q_thd__k_d = _o1[69]
     # chain rule through exact_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -337,15 +429,31 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
     d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
         + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
+    _o2 = carray(stack(25), 25)
     _c2 = (liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
-        g_f, direction))
-    if _c2[25] != STATUS_OK:
-        return _NAN84 + (_c2[25],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_r, _j_apex_height__q_rd,
-        _j_apex_height__q_th, _j_apex_height__q_thd, _j_apex_speed__q_r, _j_apex_speed__q_rd,
-        _j_apex_speed__q_th, _j_apex_speed__q_thd, _j_t_ascent__q_r, _j_t_ascent__q_rd, _j_t_ascent__q_th,
-        _j_t_ascent__q_thd, _, _, _, _, _j_next_apex_x__q_r, _j_next_apex_x__q_rd, _j_next_apex_x__q_th,
-        _j_next_apex_x__q_thd, _) = _c2
+        g_f, direction, _o2))
+    if _c2 != STATUS_OK:
+        return fail(out, _c2)
+    apex_height = _o2[0]
+    apex_speed = _o2[1]
+    t_ascent = _o2[2]
+    next_apex_x = _o2[4]
+    _j_apex_height__q_r = _o2[5]
+    _j_apex_height__q_rd = _o2[6]
+    _j_apex_height__q_th = _o2[7]
+    _j_apex_height__q_thd = _o2[8]
+    _j_apex_speed__q_r = _o2[9]
+    _j_apex_speed__q_rd = _o2[10]
+    _j_apex_speed__q_th = _o2[11]
+    _j_apex_speed__q_thd = _o2[12]
+    _j_t_ascent__q_r = _o2[13]
+    _j_t_ascent__q_rd = _o2[14]
+    _j_t_ascent__q_th = _o2[15]
+    _j_t_ascent__q_thd = _o2[16]
+    _j_next_apex_x__q_r = _o2[21]
+    _j_next_apex_x__q_rd = _o2[22]
+    _j_next_apex_x__q_th = _o2[23]
+    _j_next_apex_x__q_thd = _o2[24]
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_r*d_liftoff_q_r__b_y_apex
         + _j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex
@@ -447,14 +555,7 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
     d_foot_y__ground = 1.0
     d_foot_y__k_c = 0.0
     d_foot_y__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
         d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
         d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
@@ -472,21 +573,19 @@ def exact_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c,
         d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
         d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, STATUS_OK)
+        d_foot_y__k_d))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def exact_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
-        q_r_lo, rtol, atol, out, status):
-    """Parallel batch form of :func:`exact_apex_return_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, rtol, atol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`exact_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_84`).
-    """
-    for i in prange(out.shape[0]):
-        res = (exact_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d,
-            g_s, g_f, q_r_td, q_r_lo, rtol, atol))
-        store_row_12_84(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def exact_apex_return_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`exact_apex_return_jacobian`: ``STATUS[i] = exact_apex_return_jacobian(X[i], P[i],
+    OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = exact_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

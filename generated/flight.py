@@ -11,7 +11,7 @@
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.

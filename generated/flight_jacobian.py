@@ -5,6 +5,8 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   support.py sha256:192d8d7121590e49
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -12,7 +14,9 @@ its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -20,14 +24,11 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_APEX_TOO_LOW, STATU
     STATUS_LIFTOFF_BACKWARD)
 
 NAN = math.nan
-_NAN20 = (NAN,) * 20
-_NAN25 = (NAN,) * 25
-_NAN30 = (NAN,) * 30
 
 
 @njit(cache=True, error_model="numpy")
-def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground):
+def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground,
+        out):
     """Ballistic descent from an apex to touchdown with the leg held at (q_th_td, q_r_td), and the derivatives
     of its outputs with respect to b_y_apex, b_xd_apex, q_th_td, ground.
 
@@ -45,7 +46,7 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         ground: height of the touchdown ground above the ground under the apex (a step up is positive) ground
             [m]
 
-    Returns a tuple:
+    Writes into out:
         touchdown_q_r: leg length [m]
         touchdown_q_rd: leg length rate [m/s]
         touchdown_q_th: leg angle from the vertical, counterclockwise positive [rad]
@@ -54,19 +55,20 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
         foot_x: horizontal position of the toe at touchdown relative to the apex [m]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 59
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(q_r_td) and math.isfinite(g_f) and math.isfinite(ground) and ((b_y_apex >= 0.0))
             and ((abs(q_th_td) < (0.5)*math.pi)) and ((q_r_td > 0.0)) and ((g_f > 0.0))):
-        return _NAN30 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     drop = b_y_apex - ground - q_r_td*math.cos(q_th_td)
     d_drop__q_th_td = q_r_td*math.sin(q_th_td)
     # touchdown height below apex
     if not ((drop > 0.0)):
-        return _NAN30 + (STATUS_APEX_TOO_LOW,)
+        return fail(out, STATUS_APEX_TOO_LOW)
     # touchdown state from the derived Cartesian -> polar map
     touchdown_q_r = q_r_td
     _x0 = math.sin(q_th_td)
@@ -119,19 +121,19 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
     d_foot_x__b_y_apex = _pd__3
     d_foot_x__ground = -_pd__3
     # (internal helper: its callers check that their outputs are finite)
-    return (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,
+    put(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,
         d_touchdown_q_r__b_y_apex, d_touchdown_q_r__b_xd_apex, d_touchdown_q_r__q_th_td,
         d_touchdown_q_r__ground, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex,
         d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, d_touchdown_q_th__b_y_apex,
         d_touchdown_q_th__b_xd_apex, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
         d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
         d_touchdown_q_thd__ground, d_t_flight__b_y_apex, d_t_flight__b_xd_apex, d_t_flight__q_th_td,
-        d_t_flight__ground, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
-        STATUS_OK)
+        d_t_flight__ground, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground))
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
-def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
+def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, out):
     """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with
     respect to q_rd, q_th, q_thd.
 
@@ -148,7 +150,7 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
 
-    Returns a tuple:
+    Writes into out:
         apex_b_y: next apex height above the ground [m]
         apex_b_xd: next apex horizontal speed [m/s]
         t_flight: time from liftoff to the apex [s]
@@ -156,14 +158,15 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
         apex_b_x: horizontal position of the next apex relative to the toe [m]
         d_<output>__<argument>: d output / d argument for each output above and argument q_rd, q_th, q_thd
             (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 50
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
             and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
             and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
-        return _NAN20 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -187,10 +190,10 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
     d_b_yd__q_thd = _x2
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return _NAN20 + (STATUS_LIFTOFF_DOWNWARD,)
+        return fail(out, STATUS_LIFTOFF_DOWNWARD)
     # the body must not move against the step's direction (a hop in place: either way)
     if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
-        return _NAN20 + (STATUS_LIFTOFF_BACKWARD,)
+        return fail(out, STATUS_LIFTOFF_BACKWARD)
     # apex where b_yd(t) = 0
     _x8 = (1.0/g_f)
     apex_b_y = (0.5)*_x8*b_yd**2 + b_y
@@ -224,14 +227,15 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th,
+    put(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th,
         d_apex_b_y__q_thd, d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd,
         d_t_flight__q_th, d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
-        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd, STATUS_OK)
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd))
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
-def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction):
+def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, out):
     """Ballistic ascent from a polar liftoff state to the next apex, and the derivatives of its outputs with
     respect to q_r, q_rd, q_th, q_thd.
 
@@ -248,7 +252,7 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
         g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
         direction: direction of the step: +1 (toward +x), -1 (toward -x) or 0 (a hop in place: either way)
 
-    Returns a tuple:
+    Writes into out:
         apex_b_y: next apex height above the ground [m]
         apex_b_xd: next apex horizontal speed [m/s]
         t_flight: time from liftoff to the apex [s]
@@ -256,14 +260,15 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
         apex_b_x: horizontal position of the next apex relative to the toe [m]
         d_<output>__<argument>: d output / d argument for each output above and argument q_r, q_rd, q_th,
             q_thd (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 64
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)
             and math.isfinite(g_f) and math.isfinite(direction) and ((q_r > 0.0)) and ((g_f > 0.0))
             and ((direction == -1.0) or (direction == 0.0) or (direction == 1.0))):
-        return _NAN25 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # Cartesian liftoff state relative to the toe
     _x0 = math.sin(q_th)
     _x1 = _x0*q_r
@@ -292,10 +297,10 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     d_b_yd__q_thd = _x2
     # liftoff requires an upward velocity
     if not ((b_yd > 0.0)):
-        return _NAN25 + (STATUS_LIFTOFF_DOWNWARD,)
+        return fail(out, STATUS_LIFTOFF_DOWNWARD)
     # the body must not move against the step's direction (a hop in place: either way)
     if not ((b_xd*direction >= -1e-09*math.sqrt(g_f*q_r))):
-        return _NAN25 + (STATUS_LIFTOFF_BACKWARD,)
+        return fail(out, STATUS_LIFTOFF_BACKWARD)
     # apex where b_yd(t) = 0
     _x9 = (1.0/g_f)
     apex_b_y = (0.5)*_x9*b_yd**2 + b_y
@@ -334,8 +339,9 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    return (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r, d_apex_b_y__q_rd,
+    put(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r, d_apex_b_y__q_rd,
         d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd, d_apex_b_xd__q_th,
         d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th, d_t_flight__q_thd,
         d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_r,
-        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd, STATUS_OK)
+        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd))
+    return STATUS_OK

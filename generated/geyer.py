@@ -6,7 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:8b20bd5230ccfe19
+#   support.py sha256:192d8d7121590e49
+#   flight.py sha256:c8466d021d7dd8ec
 # ----------------------------------------------------------------------------------------------
 """Geyer et al.'s approximate stance map (report section 3.1): stance, state-at-time and apex-return
 kernels."""
@@ -14,7 +15,9 @@ kernels."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -25,10 +28,7 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
 
 NAN = math.nan
 _NAN2 = (NAN,) * 2
-_NAN4 = (NAN,) * 4
 _NAN6 = (NAN,) * 6
-_NAN10 = (NAN,) * 10
-_NAN12 = (NAN,) * 12
 
 
 @njit(cache=True, error_model="numpy")
@@ -170,7 +170,7 @@ def geyer_state(phase, phase_td, q_th_td, omega, omega0_hat, a, b, l0):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
+def geyer_stance(x, p, out):
     """Geyer et al.'s approximate stance map: touchdown state -> bottom and liftoff states.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
@@ -178,6 +178,10 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     Assumption 1 (small sweep: angular momentum conserved), Assumption 2 (small compression:
     1/(1+rho)^2 ~ 1 - 2 rho + 3 rho^2). Leg-angle rates use the exact (17) with the conserved
     angular momentum; the leg angle uses its linearization (18)-(19).
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -190,7 +194,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -201,20 +205,23 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
         liftoff_q_rd: leg length rate [m/s]
         liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
         liftoff_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 54
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
             and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0))
             and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s
             > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return _NAN10 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return _NAN10 + (_c0[6],)
+        return fail(out, _c0[6])
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -223,7 +230,7 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     s_td = _c0[5]
     _c1 = geyer_liftoff_phase(a, b, l0, q_r_lo)
     if _c1[2] != STATUS_OK:
-        return _NAN10 + (_c1[2],)
+        return fail(out, _c1[2])
     phase_lo = _c1[0]
     s_lo = _c1[1]
     # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -249,37 +256,34 @@ def geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
     liftoff_q_thd = omega/(_x1 + b*s_lo)**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN10 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return _NAN10 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
-    """Parallel batch form of :func:`geyer_stance`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 10); the columns are the outputs of
-    :func:`geyer_stance`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = geyer_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_stance_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_stance`: ``STATUS[i] = geyer_stance(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_stance(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
+def geyer_state_at(x, p, out):
     """Geyer et al.'s approximate stance map: the polar state a time t after touchdown.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
+
+    Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -293,25 +297,28 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
-    Returns a tuple:
+    Writes into out:
         q_r: leg length [m]
         q_rd: leg length rate [m/s]
         q_th: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 2
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
             and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((t >= 0.0)) and ((q_r_td <= l0) and (q_r_td
             > 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0))
             and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return _NAN4 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
     _c0 = geyer_solution(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
     if _c0[6] != STATUS_OK:
-        return _NAN4 + (_c0[6],)
+        return fail(out, _c0[6])
     omega = _c0[0]
     omega0_hat = _c0[1]
     a = _c0[2]
@@ -325,31 +332,33 @@ def geyer_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
     q_rd = _c1[1]
     q_th = _c1[2]
     q_thd = _c1[3]
+    put(out, (q_r, q_rd, q_th, q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
-    return (q_r, q_rd, q_th, q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
-    """Parallel batch form of :func:`geyer_state_at`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 4); the columns are the outputs of
-    :func:`geyer_state_at`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = geyer_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo)
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_state_at_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_state_at`: ``STATUS[i] = geyer_state_at(X[i], P[i], OUT[i])`` for every row
+    i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_state_at(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
+def geyer_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Geyer et al.'s approximate stance map.
 
     Report equations: 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -366,7 +375,7 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -379,9 +388,12 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
         step_length: horizontal distance from the apex to the next apex (signed) [m]
         foot_x: horizontal position of the foot at touchdown relative to the apex [m]
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 3
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -389,13 +401,13 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
             and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
             and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
             and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return _NAN12 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return _NAN12 + (_c0[6],)
+        return fail(out, _c0[6])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -403,18 +415,21 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Geyer et al.'s approximate stance map
-    _c1 = geyer_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
-    if _c1[10] != STATUS_OK:
-        return _NAN12 + (_c1[10],)
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(10), 10)
+    _c1 = geyer_stance(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return _NAN12 + (_c2[5],)
+        return fail(out, _c2[5])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -422,28 +437,20 @@ def geyer_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, 
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo, out,
-        status):
-    """Parallel batch form of :func:`geyer_apex_return`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`geyer_apex_return`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f, q_r_td,
-            q_r_lo))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_apex_return_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_apex_return`: ``STATUS[i] = geyer_apex_return(X[i], P[i], OUT[i])`` for
+    every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_apex_return(X[i], P[min(i, last)], OUT[i])

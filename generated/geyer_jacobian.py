@@ -6,8 +6,8 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   rows.py sha256:0089f4b891692c1b
+#   support.py sha256:192d8d7121590e49
+#   flight_jacobian.py sha256:f3da99deace8dd95
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -15,10 +15,11 @@ its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
-from .rows import store_row_10_60, store_row_12_72
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -28,13 +29,10 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
 
 NAN = math.nan
 _NAN6 = (NAN,) * 6
-_NAN30 = (NAN,) * 30
-_NAN60 = (NAN,) * 60
-_NAN72 = (NAN,) * 72
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s):
+def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s, out):
     """Geyer et al.'s radial solution (11) from a touchdown state: omega, omega0_hat, a, b, phase, and the
     derivatives of its outputs with respect to q_r_td, q_rd_td, q_thd_td, k.
 
@@ -52,7 +50,7 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
 
-    Returns a tuple:
+    Writes into out:
         omega: omega = p_th / (m l0^2), eq (7) [rad/s]
         omega0_hat: frequency of (11) [rad/s]
         a: offset of rho(t) in (11)
@@ -61,7 +59,8 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
         s_td: sin(phase_td) = (q_r_td / l0 - 1 - a) / b
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_thd_td, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 159
     # eq (7) at touchdown: omega0^2 = k/m, omega = p_th/(m l0^2), rho and its rate
@@ -80,7 +79,7 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     d_rho_d_td__q_rd_td = _x3
     # stance starts compressing
     if not ((q_rd_td < 0.0)):
-        return _NAN30 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # eq (8) at touchdown (Taylor polynomial of Assumption 2): epsilon = 2 E / (m l0^2)
     _x4 = omega**2
     _x5 = 2.0*g_s/l0
@@ -136,7 +135,7 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     d_b2__k = -_pd__4*d_omega0_sq__k + _pd__6*d_epsilon__k
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return _NAN30 + (STATUS_NO_REAL_SOLUTION,)
+        return fail(out, STATUS_NO_REAL_SOLUTION)
     # eq (12): sin(phase) at touchdown
     _x20 = math.sqrt(b2)
     b = _x20
@@ -157,10 +156,10 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     d_s_td__k = _pd__8*d_a__k + _pd__9*d_b__k
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return _NAN30 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return _NAN30 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
+        return fail(out, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     _pd__10 = -1.0/math.sqrt(1.0 - s_td**2)
@@ -174,11 +173,12 @@ def geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l
     d_omega0_hat__q_rd_td = 0.0
     d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (omega, omega0_hat, a, b, phase_td, s_td, d_omega__q_r_td, d_omega__q_rd_td, d_omega__q_thd_td,
+    put(out, (omega, omega0_hat, a, b, phase_td, s_td, d_omega__q_r_td, d_omega__q_rd_td, d_omega__q_thd_td,
         d_omega__k, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td, d_omega0_hat__q_thd_td, d_omega0_hat__k,
         d_a__q_r_td, d_a__q_rd_td, d_a__q_thd_td, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__q_thd_td, d_b__k,
         d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__q_thd_td, d_phase_td__k, d_s_td__q_r_td,
-        d_s_td__q_rd_td, d_s_td__q_thd_td, d_s_td__k, STATUS_OK)
+        d_s_td__q_rd_td, d_s_td__q_thd_td, d_s_td__k))
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
@@ -223,7 +223,7 @@ def geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo):
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo):
+def geyer_stance_jacobian(x, p, out):
     """Geyer et al.'s approximate stance map: stance outputs and their derivatives with respect to the
     touchdown state and the stiffness.
 
@@ -231,6 +231,10 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -243,7 +247,7 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
         g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -256,28 +260,53 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
         liftoff_q_thd: leg angle rate [rad/s]
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 340
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, q_r_lo) = (p[0], p[1], p[2], p[3], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
             and math.isfinite(g_s) and math.isfinite(q_r_lo) and ((q_r_td <= l0) and (q_r_td > 0.0))
             and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s
             > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return _NAN60 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-    _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s)
-    if _c0[30] != STATUS_OK:
-        return _NAN60 + (_c0[30],)
-    (omega, omega0_hat, a, b, phase_td, s_td, _j_omega__q_r_td, _, _j_omega__q_thd_td, _,
-        _j_omega0_hat__q_r_td, _, _j_omega0_hat__q_thd_td, _j_omega0_hat__k, _j_a__q_r_td, _, _j_a__q_thd_td,
-        _j_a__k, _j_b__q_r_td, _j_b__q_rd_td, _j_b__q_thd_td, _j_b__k, _j_phase_td__q_r_td,
-        _j_phase_td__q_rd_td, _j_phase_td__q_thd_td, _j_phase_td__k, _j_s_td__q_r_td, _j_s_td__q_rd_td,
-        _j_s_td__q_thd_td, _j_s_td__k, _) = _c0
+    _o0 = carray(stack(30), 30)
+    _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, q_thd_td, m, l0, k, g_s, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    omega = _o0[0]
+    omega0_hat = _o0[1]
+    a = _o0[2]
+    b = _o0[3]
+    phase_td = _o0[4]
+    s_td = _o0[5]
+    _j_omega__q_r_td = _o0[6]
+    _j_omega__q_thd_td = _o0[8]
+    _j_omega0_hat__q_r_td = _o0[10]
+    _j_omega0_hat__q_thd_td = _o0[12]
+    _j_omega0_hat__k = _o0[13]
+    _j_a__q_r_td = _o0[14]
+    _j_a__q_thd_td = _o0[16]
+    _j_a__k = _o0[17]
+    _j_b__q_r_td = _o0[18]
+    _j_b__q_rd_td = _o0[19]
+    _j_b__q_thd_td = _o0[20]
+    _j_b__k = _o0[21]
+    _j_phase_td__q_r_td = _o0[22]
+    _j_phase_td__q_rd_td = _o0[23]
+    _j_phase_td__q_thd_td = _o0[24]
+    _j_phase_td__k = _o0[25]
+    _j_s_td__q_r_td = _o0[26]
+    _j_s_td__q_rd_td = _o0[27]
+    _j_s_td__q_thd_td = _o0[28]
+    _j_s_td__k = _o0[29]
     _c1 = geyer_liftoff_phase_jac_a_b(a, b, l0, q_r_lo)
     if _c1[6] != STATUS_OK:
-        return _NAN60 + (_c1[6],)
+        return fail(out, _c1[6])
     phase_lo = _c1[0]
     s_lo = _c1[1]
     _j_phase_lo__a = _c1[2]
@@ -424,7 +453,7 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
     d_liftoff_q_thd__k = _j_a__k*_pd__25 + _j_b__k*_pd__26 + _pd__28*d_s_lo__k
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN60 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
     # derivatives of the outputs
     d_t_bottom__q_th_td = 0.0
     d_t_stance__q_th_td = 0.0
@@ -444,17 +473,10 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
     d_liftoff_q_rd__q_th_td = 0.0
     d_liftoff_q_th__q_th_td = 1.0
     d_liftoff_q_thd__q_th_td = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd)):
-        return _NAN60 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td,
-        d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td,
-        d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
+        d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
         d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
         d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
         d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
@@ -464,26 +486,26 @@ def geyer_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r
         d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
         d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
         d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, STATUS_OK)
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, out, status):
-    """Parallel batch form of :func:`geyer_stance_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 60); the columns are the outputs of
-    :func:`geyer_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_10_60`).
-    """
-    for i in prange(out.shape[0]):
-        res = geyer_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo)
-        store_row_10_60(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_stance_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_stance_jacobian`: ``STATUS[i] = geyer_stance_jacobian(X[i], P[i], OUT[i])``
+    for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_stance_jacobian(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo):
+def geyer_apex_return_jacobian(x, p, out):
     """Apex-return map by Geyer et al.'s approximate stance map, and its derivatives with respect to the apex,
     the touchdown angle and the stiffness.
 
@@ -491,6 +513,10 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo); writes the outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -507,7 +533,7 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
         q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -522,9 +548,12 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 158
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -532,29 +561,62 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
             and ((b_y_apex >= 0.0)) and ((abs(q_th_td) < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0))
             and ((k > 0.0)) and ((g_s > 0.0)) and ((g_f > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0))
             and ((q_r_lo <= l0) and (q_r_lo > 0.0))):
-        return _NAN72 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(30), 30)
     _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN72 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+        ground, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    td_q_r = _o0[0]
+    td_q_rd = _o0[1]
+    td_q_th = _o0[2]
+    td_q_thd = _o0[3]
+    t_descent = _o0[4]
+    foot_x = _o0[5]
+    _j_td_q_rd__b_y_apex = _o0[10]
+    _j_td_q_rd__b_xd_apex = _o0[11]
+    _j_td_q_rd__q_th_td = _o0[12]
+    _j_td_q_rd__ground = _o0[13]
+    _j_td_q_th__q_th_td = _o0[16]
+    _j_td_q_thd__b_y_apex = _o0[18]
+    _j_td_q_thd__b_xd_apex = _o0[19]
+    _j_td_q_thd__q_th_td = _o0[20]
+    _j_td_q_thd__ground = _o0[21]
+    _j_t_descent__b_y_apex = _o0[22]
+    _j_t_descent__q_th_td = _o0[24]
+    _j_t_descent__ground = _o0[25]
+    _j_foot_x__b_y_apex = _o0[26]
+    _j_foot_x__b_xd_apex = _o0[27]
+    _j_foot_x__q_th_td = _o0[28]
+    _j_foot_x__ground = _o0[29]
     # stance: Geyer et al.'s approximate stance map
-    _c1 = geyer_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo)
-    if _c1[60] != STATUS_OK:
-        return _NAN72 + (_c1[60],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, _, _, _, _, _, _,
-        _j_t_stance__q_rd_td, _, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _, _, _, _, _, _, _, _, _, _,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _, _j_liftoff_q_rd__q_thd_td,
-        _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td,
-        _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td, _, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k,
-        _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(60), 60)
+    _c1 = geyer_stance_jacobian(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    _j_t_stance__q_rd_td = _o1[16]
+    _j_t_stance__q_thd_td = _o1[18]
+    _j_t_stance__k = _o1[19]
+    _j_liftoff_q_rd__q_rd_td = _o1[46]
+    _j_liftoff_q_rd__q_thd_td = _o1[48]
+    _j_liftoff_q_rd__k = _o1[49]
+    _j_liftoff_q_th__q_rd_td = _o1[51]
+    _j_liftoff_q_th__q_th_td = _o1[52]
+    _j_liftoff_q_th__q_thd_td = _o1[53]
+    _j_liftoff_q_th__k = _o1[54]
+    _j_liftoff_q_thd__q_rd_td = _o1[56]
+    _j_liftoff_q_thd__q_thd_td = _o1[58]
+    _j_liftoff_q_thd__k = _o1[59]
     # chain rule through geyer_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -588,14 +650,27 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
     d_liftoff_q_thd__ground = (_j_liftoff_q_thd__q_rd_td*_j_td_q_rd__ground
         + _j_liftoff_q_thd__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
+    _o2 = carray(stack(20), 20)
     _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN72 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+        direction, _o2))
+    if _c2 != STATUS_OK:
+        return fail(out, _c2)
+    apex_height = _o2[0]
+    apex_speed = _o2[1]
+    t_ascent = _o2[2]
+    next_apex_x = _o2[4]
+    _j_apex_height__q_rd = _o2[5]
+    _j_apex_height__q_th = _o2[6]
+    _j_apex_height__q_thd = _o2[7]
+    _j_apex_speed__q_rd = _o2[8]
+    _j_apex_speed__q_th = _o2[9]
+    _j_apex_speed__q_thd = _o2[10]
+    _j_t_ascent__q_rd = _o2[11]
+    _j_t_ascent__q_th = _o2[12]
+    _j_t_ascent__q_thd = _o2[13]
+    _j_next_apex_x__q_rd = _o2[17]
+    _j_next_apex_x__q_th = _o2[18]
+    _j_next_apex_x__q_thd = _o2[19]
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -670,14 +745,7 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
     d_foot_y__q_th_td = 0.0
     d_foot_y__ground = 1.0
     d_foot_y__k = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
-        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
         d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex,
         d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k,
@@ -692,21 +760,19 @@ def geyer_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g
         d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
         d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
-        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, STATUS_OK)
+        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
-        out, status):
-    """Parallel batch form of :func:`geyer_apex_return_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
-    :func:`geyer_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_72`).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s,
-            g_f, q_r_td, q_r_lo))
-        store_row_12_72(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_apex_return_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_apex_return_jacobian`: ``STATUS[i] = geyer_apex_return_jacobian(X[i], P[i],
+    OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

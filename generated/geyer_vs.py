@@ -6,8 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:8b20bd5230ccfe19
-#   geyer.py sha256:4737273d6d8636d4
+#   support.py sha256:192d8d7121590e49
+#   flight.py sha256:c8466d021d7dd8ec
+#   geyer.py sha256:9b82b46142822163
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""
@@ -15,7 +16,9 @@ apex-return kernels."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -26,19 +29,16 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, S
 
 NAN = math.nan
 _NAN1 = (NAN,) * 1
-_NAN4 = (NAN,) * 4
-_NAN13 = (NAN,) * 13
-_NAN15 = (NAN,) * 15
 
 
 @njit(cache=True, error_model="numpy")
-def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
+def bottom_quartic(p_b, E_ab, m, l0, k_c, g_s):
     """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton).
 
     Report equations: 153.
 
     Arguments:
-        p: angular momentum p_th [kg m^2/s]
+        p_b: angular momentum p_th at the bottom [kg m^2/s]
         E_ab: total energy E_ab [J]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
@@ -51,7 +51,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     """
     # Total ops: 64
     # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+    if not (math.isfinite(p_b) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
             and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
             and ((g_s > 0.0))):
         return _NAN1 + (STATUS_INVALID_INPUT,)
@@ -64,7 +64,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     _x5 = _x4**2*k_c
     _x6 = _x0*_x4
     _x7 = math.sqrt(2.0*E_ab - _x2 + 2.0*_x4*k_c*l0 - _x5 - 2.0*_x6)/math.sqrt(k_c)
-    _x8 = math.sqrt(2.0)*abs(p)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x2 + _x4*k_c*l0 - 0.5*_x5 - _x6))
+    _x8 = math.sqrt(2.0)*abs(p_b)/(math.sqrt(m)*math.sqrt(E_ab - 0.5*_x2 + _x4*k_c*l0 - 0.5*_x5 - _x6))
     q_start = -0.5*_x1 - 0.5*_x7 + (0.25)*_x8 + (0.5)*l0 + (0.5)*abs(_x3 + _x7 + (0.5)*_x8)
     # E_ab above the minimum of the potential
     if not ((E_ab > g_s*m*(-g_s*m/k_c + l0) + (0.5)*k_c*l0**2 - k_c*l0*(-g_s*m/k_c + l0)
@@ -75,12 +75,12 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
     passes = 0.0
     _conv0 = False
     for _it0 in range(int(60.0)):
-        slope = g_s*m - k_c*l0 + k_c*qb - p**2/(m*qb**3)
+        slope = g_s*m - k_c*l0 + k_c*qb - p_b**2/(m*qb**3)
         # V decreasing left of the root
         if not ((slope < 0.0)):
             return _NAN1 + (STATUS_NO_REAL_SOLUTION,)
         _n0_0 = (qb - (-E_ab + g_s*m*qb + (0.5)*k_c*l0**2 - k_c*l0*qb + (0.5)*k_c*qb**2
-            + (0.5)*p**2/(m*qb**2))/slope)
+            + (0.5)*p_b**2/(m*qb**2))/slope)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = 1e-12 > 0.0 and (abs(_n0_0 - qb) <= 1e-12*(l0))
@@ -101,8 +101,7 @@ def bottom_quartic(p, E_ab, m, l0, k_c, g_s):
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity,
-        iterations, tol):
+def geyer_vs_stance(x, p, out):
     """Simple variable-stiffness map (Geyer et al. per half): touchdown state -> bottom and liftoff states.
 
     Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
@@ -112,6 +111,11 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     = E_ab + (k_d - k_c)(l0 - q_r_b)^2/2; option continuity chooses (103)-(104) with the
     touchdown energy (27), the constraint (111), or (103)-(104) with the energy of the first
     half; option gravity adds type 3 or 4 of section 4 on each half.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -133,7 +137,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -147,9 +151,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 297
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
+        p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -161,7 +169,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN13 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -179,13 +187,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN13 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return _NAN13 + (_c0[6],)
+            return fail(out, _c0[6])
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -218,7 +226,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return _NAN13 + (STATUS_RECOMPRESSION,)
+            return fail(out, STATUS_RECOMPRESSION)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -235,13 +243,13 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
                 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
-            return _NAN13 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return _NAN13 + (STATUS_NO_REAL_SOLUTION,)
+            return fail(out, STATUS_NO_REAL_SOLUTION)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -249,7 +257,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return _NAN13 + (_c1[2],)
+            return fail(out, _c1[2])
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -272,10 +280,10 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN13 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return _NAN13 + (STATUS_ENERGY_DEFICIT,)
+            return fail(out, STATUS_ENERGY_DEFICIT)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
             else (math.sqrt(i_q_rd_lo_sq)))
@@ -311,7 +319,7 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return _NAN13 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -333,41 +341,36 @@ def geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_
     liftoff_q_rd = i_liftoff_q_rd
     liftoff_q_th = i_liftoff_q_th
     liftoff_q_thd = i_liftoff_q_thd
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
-            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return _NAN13 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
-        gravity, iterations, tol, out, status):
-    """Parallel batch form of :func:`geyer_vs_stance`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 13); the columns are the outputs of
-    :func:`geyer_vs_stance`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_vs_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s, q_r_lo,
-            continuity, gravity, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], out[i, 10], out[i, 11], out[i, 12], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_vs_stance_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_vs_stance`: ``STATUS[i] = geyer_vs_stance(X[i], P[i], OUT[i])`` for every
+    row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_vs_stance(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
-        gravity, iterations, tol):
+def geyer_vs_state_at(x, p, out):
     """Simple variable-stiffness map (Geyer et al. per half): the polar state a time t after touchdown.
 
     Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
     101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+
+    Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -390,14 +393,18 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         q_r: leg length [m]
         q_rd: leg length rate [m/s]
         q_th: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 349
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
+        p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -409,7 +416,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN4 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -427,13 +434,13 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
     _last0 = max(int(((0.0) if (gravity == 0.0) else (iterations))), 0)
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN4 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # the first half's mean momentum as a touchdown rate
         i_q_thd_eff = ((0.5)*P_c_compression + p_td)/(m*q_r_td**2)
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
         if _c0[6] != STATUS_OK:
-            return _NAN4 + (_c0[6],)
+            return fail(out, _c0[6])
         i_ab_omega = _c0[0]
         i_ab_omega0_hat = _c0[1]
         i_ab_a = _c0[2]
@@ -466,7 +473,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         i_ba_a_free = _x13*m*(_x11*_x13**3*_x9**2 - g_s)/_x12
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return _NAN4 + (STATUS_RECOMPRESSION,)
+            return fail(out, STATUS_RECOMPRESSION)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -483,13 +490,13 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             i_eps_ba = (_x14 + _x15 - _x16*_x17**2*(-i_bottom_q_r + l0)**2*(k_c - k_d) + i_rho_b**2*(3.0*_x14
                 + _x16*k_c) + i_rho_b*(-2.0*_x14 + _x15))
         else:
-            return _NAN4 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _x18 = i_ba_omega**2
         _x19 = 3.0*_x18*m + k_d
         i_ba_b2 = -m*(_x19*l0*(2.0*g_s - l0*(-_x18 + i_eps_ba)) - m*(-_x18*l0 + g_s)**2)/(_x19**2*l0**2)
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
+            return fail(out, STATUS_NO_REAL_SOLUTION)
         # eq (104); eq (103), or (111) when constrained
         _x20 = math.sqrt(i_ba_b2)
         i_ba_b = _x20
@@ -497,7 +504,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return _NAN4 + (_c1[2],)
+            return fail(out, _c1[2])
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         # eqs (90)-(94) at liftoff
@@ -520,10 +527,10 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             + l0)**2*(k_c - k_d)) - _x27*_x30 - _x30*l0**2 - 2.0*g_s*q_r_lo*math.cos(_x25))
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN4 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return _NAN4 + (STATUS_ENERGY_DEFICIT,)
+            return fail(out, STATUS_ENERGY_DEFICIT)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         i_liftoff_q_rd = ((i_ba_b*i_ba_omega0_hat*l0*math.sqrt(1.0 - i_ba_s_lo**2)) if (gravity == 0.0)
             else (math.sqrt(i_q_rd_lo_sq)))
@@ -559,7 +566,7 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
             i_P_new1 = (0.5)*i_t_bottom*(_x40*_x42 + _x42*math.sin(q_th_td))
             i_P_new2 = (0.5)*(-i_t_bottom + i_t_stance)*(_x40*_x43 + _x43*math.sin(i_liftoff_q_th))
         else:
-            return _NAN4 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new1
         _n0_1 = i_P_new2
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -606,36 +613,35 @@ def geyer_vs_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_
         - 2.0*i_ba_omega*(-_x48*_x50 + _x52*i_ba_a) + i_bottom_q_th))
     q_thd = ((_x53*(P_c_compression*t/i_t_bottom + p_td)/c_q_r**2) if _x44
         else (_x53*(P_c_decompression*_x45/(-i_t_bottom + i_t_stance) + i_p_b)/(_x47**2*l0**2)))
+    put(out, (q_r, q_rd, q_th, q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
-    return (q_r, q_rd, q_th, q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
-        gravity, iterations, tol, out, status):
-    """Parallel batch form of :func:`geyer_vs_state_at`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
-    continuity, gravity, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 4); the columns are the outputs of
-    :func:`geyer_vs_state_at`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_vs_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
-            continuity, gravity, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_vs_state_at_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_vs_state_at`: ``STATUS[i] = geyer_vs_state_at(X[i], P[i], OUT[i])`` for
+    every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_vs_state_at(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo,
-        continuity, gravity, iterations, tol):
+def geyer_vs_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Simple variable-stiffness map (Geyer et al. per half).
 
     Report equations: 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 96, 97, 98, 99, 100,
     101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -661,7 +667,7 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -677,9 +683,13 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
         P_c_compression: virtual gravity effect of the first half (0 unless gravity) [N m s]
         P_c_decompression: virtual gravity effect of the second half [N m s]
         passes: fixed-point passes run (0 unless gravity)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 3
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2],
+        p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -691,13 +701,13 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
             > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
             == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN15 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return _NAN15 + (_c0[6],)
+        return fail(out, _c0[6])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -705,16 +715,24 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = (geyer_vs_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
-        gravity, iterations, tol))
-    if _c1[13] != STATUS_OK:
-        return _NAN15 + (_c1[13],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
-        P_c_decompression, passes, _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(13), 13)
+    _c1 = geyer_vs_stance(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    P_c_compression = _o1[10]
+    P_c_decompression = _o1[11]
+    passes = _o1[12]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return _NAN15 + (_c2[5],)
+        return fail(out, _c2[5])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -722,31 +740,20 @@ def geyer_vs_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, 
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
-            and math.isfinite(passes)):
-        return _NAN15 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
-        q_r_lo, continuity, gravity, iterations, tol, out, status):
-    """Parallel batch form of :func:`geyer_vs_apex_return`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
-    iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 15); the columns are the outputs of
-    :func:`geyer_vs_apex_return`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_vs_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c, k_d, g_s,
-            g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], out[i, 14], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_vs_apex_return_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_vs_apex_return`: ``STATUS[i] = geyer_vs_apex_return(X[i], P[i], OUT[i])``
+    for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_vs_apex_return(X[i], P[min(i, last)], OUT[i])

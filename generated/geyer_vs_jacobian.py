@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:12a4ff7e62097af8
-#   rows.py sha256:0089f4b891692c1b
+#   support.py sha256:192d8d7121590e49
+#   flight_jacobian.py sha256:f3da99deace8dd95
+#   geyer_jacobian.py sha256:5917ec562dff88f1
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -16,11 +16,12 @@ its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
-from .rows import store_row_13_91, store_row_15_105
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -29,14 +30,12 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_REAL_SOLUTION, S
 
 NAN = math.nan
 _NAN4 = (NAN,) * 4
-_NAN91 = (NAN,) * 91
-_NAN105 = (NAN,) * 105
 
 
 @njit(cache=True, error_model="numpy")
-def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
+def bottom_quartic_jac_p_b_E_ab_k_c(p_b, E_ab, m, l0, k_c, g_s):
     """Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton), and the
-    derivatives of its outputs with respect to p, E_ab, k_c.
+    derivatives of its outputs with respect to p_b, E_ab, k_c.
 
     Report equations: 153.
 
@@ -44,7 +43,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     direction in one pass; through an iteration, of the iterate it stops at.
 
     Arguments:
-        p: angular momentum p_th [kg m^2/s]
+        p_b: angular momentum p_th at the bottom [kg m^2/s]
         E_ab: total energy E_ab [J]
         m: body mass m [kg], > 0
         l0: rest leg length l0 [m], > 0
@@ -53,13 +52,13 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
 
     Returns a tuple:
         q_r_b: bottom leg length of (153) [m]
-        d_<output>__<argument>: d output / d argument for each output above and argument p, E_ab, k_c
+        d_<output>__<argument>: d output / d argument for each output above and argument p_b, E_ab, k_c
             (row-major)
         status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
     """
     # Total ops: 309
     # inputs: finite and inside their domains
-    if not (math.isfinite(p) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
+    if not (math.isfinite(p_b) and math.isfinite(E_ab) and math.isfinite(m) and math.isfinite(l0)
             and math.isfinite(k_c) and math.isfinite(g_s) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_c > 0.0))
             and ((g_s > 0.0))):
         return _NAN4 + (STATUS_INVALID_INPUT,)
@@ -81,7 +80,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x13 = -_x12 + 2.0*_x6*k_c*l0 - _x8 - 2.0*_x9
     _x14 = math.sqrt(_x13)
     _x15 = _x14*_x4
-    _x16 = abs(p)
+    _x16 = abs(p_b)
     _x17 = -E_ab + (0.5)*_x11
     _x18 = -_x17 + _x6*k_c*l0 - 0.5*_x8 - _x9
     _x19 = math.sqrt(2.0)
@@ -91,7 +90,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x23 = _x16*_x22
     _x24 = _x15 + _x5
     q_start = _x0 - 0.5*_x15 + (0.25)*_x23 - _x3 + (0.5)*abs((0.5)*_x23 + _x24)
-    _x25 = (0.0 if p == 0 else math.copysign(1, p))
+    _x25 = (0.0 if p_b == 0 else math.copysign(1, p_b))
     _x28 = _x5**2
     _x29 = _x28*k_c
     _x30 = _x1*_x5
@@ -110,7 +109,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x33 = _x12 + _x29 - 2.0*_x30 + 2.0*_x32
     _x34 = (0.0 if _x33 == 0 else math.copysign(1, _x33))
     _x35 = math.sqrt(_x33/_x34)
-    _x36 = p/_x25
+    _x36 = p_b/_x25
     _x37 = (0.5)*_x36
     _x46 = _x27*_x35*_x4 - _x37*_x45
     _x47 = math.cos(_x38)
@@ -120,7 +119,7 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     _x51 = (1.0/_x50)
     _x52 = (0.0 if _x50 == 0 else math.copysign(1, _x50))
     _x53 = (0.5)*_x51*_x52
-    d_q_start__p = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
+    d_q_start__p_b = (0.25)*_x22*_x25 + _x53*((0.5)*_x19*_x20*_x25*_x43*_x47*_x49 - 0.5*_x25*_x45*_x46)
     _x54 = (0.5)*_x4
     _x55 = _x54/_x14
     _x56 = _x16*_x21/(_x18*math.sqrt(_x18))
@@ -153,13 +152,13 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     # Newton's method on V - E: monotone from the left
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
-    _pki0 = (q_start, d_q_start__p, d_q_start__E_ab, d_q_start__k_c, )
+    _pki0 = (q_start, d_q_start__p_b, d_q_start__E_ab, d_q_start__k_c, )
     _pk0 = _pki0
     passes = 0.0
     _conv0 = False
     _last0 = max(int(60.0), 0)
     for _it0 in range(_last0 + 1):
-        (qb, d_qb__p, d_qb__E_ab, d_qb__k_c, ) = _pk0
+        (qb, d_qb__p_b, d_qb__E_ab, d_qb__k_c, ) = _pk0
         if _it0 == _last0 and not _conv0 and 1e-12 > 0.0 and passes > 0.0:
             return _NAN4 + (STATUS_NOT_CONVERGED,)
         if _conv0 or _it0 == _last0:
@@ -167,10 +166,10 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
         _x77 = (1.0/qb)
         _x74 = _x77**3
         _x75 = (1.0/m)
-        _x76 = _x75*p**2
+        _x76 = _x75*p_b**2
         slope = -_x74*_x76 + g_s*m - k_c*l0 + k_c*qb
         _pd__0 = 3.0*_x76*_x77**4 + k_c
-        d_slope__p = _pd__0*d_qb__p - 2.0*_x74*_x75*p
+        d_slope__p_b = _pd__0*d_qb__p_b - 2.0*_x74*_x75*p_b
         d_slope__E_ab = _pd__0*d_qb__E_ab
         d_slope__k_c = _pd__0*d_qb__k_c - l0 + qb
         # V decreasing left of the root
@@ -185,18 +184,18 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
         _x83 = (0.5)*_x82
         _x84 = (1.0/_x82)
         _x85 = (1.0/m)
-        _x86 = _x85*p**2
+        _x86 = _x85*p_b**2
         _x87 = -E_ab + _x79*qb - _x80*l0 + _x81*k_c + _x83*k_c + (0.5)*_x84*_x86
         qb__next = -_x78*_x87 + qb
         _pd__1 = -_x78*(_x79 + _x80 - _x86/qb**3 - k_c*l0) + 1.0
         _pd__2 = _x78**2*_x87
-        d_qb__next__p = _pd__1*d_qb__p + _pd__2*d_slope__p - _x78*_x84*_x85*p
+        d_qb__next__p_b = _pd__1*d_qb__p_b + _pd__2*d_slope__p_b - _x78*_x84*_x85*p_b
         d_qb__next__E_ab = _pd__1*d_qb__E_ab + _pd__2*d_slope__E_ab + _x78
         d_qb__next__k_c = _pd__1*d_qb__k_c + _pd__2*d_slope__k_c - _x78*(_x81 + _x83 - l0*qb)
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
         _conv0 = 1e-12 > 0.0 and (abs(qb__next - qb) <= 1e-12*(l0))
-        _pkn0 = (qb__next, d_qb__next__p, d_qb__next__E_ab, d_qb__next__k_c, )
+        _pkn0 = (qb__next, d_qb__next__p_b, d_qb__next__E_ab, d_qb__next__k_c, )
         _pk0 = _pkn0
         passes += 1.0
     q_r_b = qb
@@ -204,16 +203,15 @@ def bottom_quartic_jac_p_E_ab_k_c(p, E_ab, m, l0, k_c, g_s):
     if not ((qb <= l0)):
         return _NAN4 + (STATUS_NO_REAL_SOLUTION,)
     # derivatives of the outputs
-    d_q_r_b__p = d_qb__p
+    d_q_r_b__p_b = d_qb__p_b
     d_q_r_b__E_ab = d_qb__E_ab
     d_q_r_b__k_c = d_qb__k_c
     # (internal helper: its callers check that their outputs are finite)
-    return (q_r_b, d_q_r_b__p, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
+    return (q_r_b, d_q_r_b__p_b, d_q_r_b__E_ab, d_q_r_b__k_c, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, continuity,
-        gravity, iterations, tol):
+def geyer_vs_stance_jacobian(x, p, out):
     """Simple variable-stiffness map (Geyer et al. per half): stance outputs and their derivatives with
     respect to the touchdown state and the stiffness.
 
@@ -222,6 +220,11 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -243,7 +246,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -259,9 +262,13 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         passes: fixed-point passes run (0 unless gravity)
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 1472
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
+        p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -273,7 +280,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             or (continuity == 2.0)) and ((gravity == 0.0) or (gravity == 1.0) or (gravity == 2.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN91 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -309,7 +316,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
             d_P_c_decompression__k_d, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN91 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # the first half's mean momentum as a touchdown rate
         _x10 = (0.5)*P_c_compression + p_td
         _x11 = (1.0/m)
@@ -326,15 +333,36 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_i_q_thd_eff__k_c = _pd__0*d_P_c_compression__k_c
         d_i_q_thd_eff__k_d = _pd__0*d_P_c_compression__k_d
         # eqs (78), (82)-(87): Geyer's radial solution with k_c from the touchdown state
-        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s)
-        if _c0[30] != STATUS_OK:
-            return _NAN91 + (_c0[30],)
-        (i_ab_omega, i_ab_omega0_hat, i_ab_a, i_ab_b, i_ab_phase_td, i_ab_s_td, _j_i_ab_omega__q_r_td, _,
-            _j_i_ab_omega__q_thd_td, _, _j_i_ab_omega0_hat__q_r_td, _, _j_i_ab_omega0_hat__q_thd_td,
-            _j_i_ab_omega0_hat__k, _j_i_ab_a__q_r_td, _, _j_i_ab_a__q_thd_td, _j_i_ab_a__k, _j_i_ab_b__q_r_td,
-            _j_i_ab_b__q_rd_td, _j_i_ab_b__q_thd_td, _j_i_ab_b__k, _j_i_ab_phase_td__q_r_td,
-            _j_i_ab_phase_td__q_rd_td, _j_i_ab_phase_td__q_thd_td, _j_i_ab_phase_td__k, _j_i_ab_s_td__q_r_td,
-            _j_i_ab_s_td__q_rd_td, _j_i_ab_s_td__q_thd_td, _j_i_ab_s_td__k, _) = _c0
+        _o0 = carray(stack(30), 30)
+        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k_c, g_s, _o0)
+        if _c0 != STATUS_OK:
+            return fail(out, _c0)
+        i_ab_omega = _o0[0]
+        i_ab_omega0_hat = _o0[1]
+        i_ab_a = _o0[2]
+        i_ab_b = _o0[3]
+        i_ab_phase_td = _o0[4]
+        i_ab_s_td = _o0[5]
+        _j_i_ab_omega__q_r_td = _o0[6]
+        _j_i_ab_omega__q_thd_td = _o0[8]
+        _j_i_ab_omega0_hat__q_r_td = _o0[10]
+        _j_i_ab_omega0_hat__q_thd_td = _o0[12]
+        _j_i_ab_omega0_hat__k = _o0[13]
+        _j_i_ab_a__q_r_td = _o0[14]
+        _j_i_ab_a__q_thd_td = _o0[16]
+        _j_i_ab_a__k = _o0[17]
+        _j_i_ab_b__q_r_td = _o0[18]
+        _j_i_ab_b__q_rd_td = _o0[19]
+        _j_i_ab_b__q_thd_td = _o0[20]
+        _j_i_ab_b__k = _o0[21]
+        _j_i_ab_phase_td__q_r_td = _o0[22]
+        _j_i_ab_phase_td__q_rd_td = _o0[23]
+        _j_i_ab_phase_td__q_thd_td = _o0[24]
+        _j_i_ab_phase_td__k = _o0[25]
+        _j_i_ab_s_td__q_r_td = _o0[26]
+        _j_i_ab_s_td__q_rd_td = _o0[27]
+        _j_i_ab_s_td__q_thd_td = _o0[28]
+        _j_i_ab_s_td__k = _o0[29]
         # chain rule through geyer_solution
         d_i_ab_omega__q_r_td = _j_i_ab_omega__q_r_td + _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_r_td
         d_i_ab_omega__q_rd_td = _j_i_ab_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
@@ -503,7 +531,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_i_ba_a_free__k_d = _pd__16*d_i_ba_omega__k_d - _x51*_x52
         # with k_d the bottom lies below the centre a_ba of (90): the leg extends
         if not ((i_rho_b < i_ba_a_free)):
-            return _NAN91 + (STATUS_RECOMPRESSION,)
+            return fail(out, STATUS_RECOMPRESSION)
         # E_ab of (98)
         if continuity == 0.0:
             # eqs (97)-(99), E_ab the energy (27)
@@ -564,7 +592,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             d_i_eps_ba__k_d = (_pd__21*d_i_ba_omega__k_d + _pd__22*d_i_bottom_q_r__k_d
                 + _pd__23*d_i_rho_b__k_d + _x70)
         else:
-            return _NAN91 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _x72 = i_ba_omega**2
         _x73 = 3.0*_x72*m + k_d
         _x83 = (1.0/_x73)
@@ -589,7 +617,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_i_ba_b2__k_d = _pd__24*d_i_ba_omega__k_d + _pd__25*d_i_eps_ba__k_d - _x74*_x78/l0 + 2.0*_x81*m
         # eq (104): real amplitude b_ba
         if not ((i_ba_b2 > 0.0)):
-            return _NAN91 + (STATUS_NO_REAL_SOLUTION,)
+            return fail(out, STATUS_NO_REAL_SOLUTION)
         # eq (104); eq (103), or (111) when constrained
         _x84 = math.sqrt(i_ba_b2)
         i_ba_b = _x84
@@ -619,7 +647,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         # eq (94): the liftoff phase of the second half
         _c1 = geyer_liftoff_phase_jac_a_b(i_ba_a, i_ba_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
-            return _NAN91 + (_c1[6],)
+            return fail(out, _c1[6])
         i_ba_phase_lo = _c1[0]
         i_ba_s_lo = _c1[1]
         _j_i_ba_phase_lo__a = _c1[2]
@@ -747,10 +775,10 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             + _x115)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN91 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         # q_rd_lo^2 from the energy
         if not ((gravity == 0.0) or (i_q_rd_lo_sq >= 0.0)):
-            return _NAN91 + (STATUS_ENERGY_DEFICIT,)
+            return fail(out, STATUS_ENERGY_DEFICIT)
         # q_rd_lo: (11) without a gravity correction, the energy with one
         _x116 = math.sqrt(1.0 - i_ba_s_lo**2)
         _x117 = _x116*l0
@@ -959,7 +987,7 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
             d_i_P_new2__k_d = (_d_i_L2__k_d*_pd__68 + _pd__69*d_i_bottom_q_th__k_d
                 + _pd__70*d_i_liftoff_q_th__k_d + _pd__71*d_i_t_bottom__k_d + _pd__72*d_i_t_stance__k_d)
         else:
-            return _NAN91 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         # next values
         P_c_compression__next = i_P_new1
         P_c_decompression__next = i_P_new2
@@ -1052,19 +1080,11 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
     d_passes__q_thd_td = 0.0
     d_passes__k_c = 0.0
     d_passes__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c_compression)
-            and math.isfinite(P_c_decompression) and math.isfinite(passes)):
-        return _NAN91 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes, d_t_bottom__q_r_td,
-        d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d,
-        d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c,
-        d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,
+        d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c,
+        d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td,
+        d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
         d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
         d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
         d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
@@ -1081,29 +1101,26 @@ def geyer_vs_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d
         d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
         d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
         d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k_c, d_passes__k_d, STATUS_OK)
+        d_passes__k_c, d_passes__k_d))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo,
-        continuity, gravity, iterations, tol, out, status):
-    """Parallel batch form of :func:`geyer_vs_stance_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, q_r_lo, continuity, gravity, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 91); the columns are the outputs of
-    :func:`geyer_vs_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_13_91`).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_vs_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k_c, k_d, g_s,
-            q_r_lo, continuity, gravity, iterations, tol))
-        store_row_13_91(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_vs_stance_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_vs_stance_jacobian`: ``STATUS[i] = geyer_vs_stance_jacobian(X[i], P[i],
+    OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_vs_stance_jacobian(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f, q_r_td,
-        q_r_lo, continuity, gravity, iterations, tol):
+def geyer_vs_apex_return_jacobian(x, p, out):
     """Apex-return map by Simple variable-stiffness map (Geyer et al. per half), and its derivatives with
     respect to the apex, the touchdown angle and the stiffness.
 
@@ -1112,6 +1129,11 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol); writes the outputs
+    below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -1137,7 +1159,7 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -1155,9 +1177,13 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
         passes: fixed-point passes run (0 unless gravity)
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, k_c, k_d (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 212
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol) = (p[0], p[1], p[2],
+        p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -1169,36 +1195,82 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
             > 0.0)) and ((continuity == 0.0) or (continuity == 1.0) or (continuity == 2.0)) and ((gravity
             == 0.0) or (gravity == 1.0) or (gravity == 2.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN105 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(30), 30)
     _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN105 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+        ground, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    td_q_r = _o0[0]
+    td_q_rd = _o0[1]
+    td_q_th = _o0[2]
+    td_q_thd = _o0[3]
+    t_descent = _o0[4]
+    foot_x = _o0[5]
+    _j_td_q_rd__b_y_apex = _o0[10]
+    _j_td_q_rd__b_xd_apex = _o0[11]
+    _j_td_q_rd__q_th_td = _o0[12]
+    _j_td_q_rd__ground = _o0[13]
+    _j_td_q_th__q_th_td = _o0[16]
+    _j_td_q_thd__b_y_apex = _o0[18]
+    _j_td_q_thd__b_xd_apex = _o0[19]
+    _j_td_q_thd__q_th_td = _o0[20]
+    _j_td_q_thd__ground = _o0[21]
+    _j_t_descent__b_y_apex = _o0[22]
+    _j_t_descent__q_th_td = _o0[24]
+    _j_t_descent__ground = _o0[25]
+    _j_foot_x__b_y_apex = _o0[26]
+    _j_foot_x__b_xd_apex = _o0[27]
+    _j_foot_x__q_th_td = _o0[28]
+    _j_foot_x__ground = _o0[29]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
-    _c1 = (geyer_vs_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k_c, k_d, g_s, q_r_lo,
-        continuity, gravity, iterations, tol))
-    if _c1[91] != STATUS_OK:
-        return _NAN105 + (_c1[91],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression,
-        P_c_decompression, passes, _, _, _, _, _, _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td,
-        _j_t_stance__q_thd_td, _j_t_stance__k_c, _j_t_stance__k_d, _, _, _, _, _, _, _, _, _, _, _, _, _, _,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d, _, _j_P_c_compression__q_rd_td,
-        _j_P_c_compression__q_th_td, _j_P_c_compression__q_thd_td, _j_P_c_compression__k_c,
-        _j_P_c_compression__k_d, _, _j_P_c_decompression__q_rd_td, _j_P_c_decompression__q_th_td,
-        _j_P_c_decompression__q_thd_td, _j_P_c_decompression__k_c, _j_P_c_decompression__k_d, _, _, _, _, _,
-        _, _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(91), 91)
+    _c1 = geyer_vs_stance_jacobian(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    P_c_compression = _o1[10]
+    P_c_decompression = _o1[11]
+    passes = _o1[12]
+    _j_t_stance__q_rd_td = _o1[20]
+    _j_t_stance__q_th_td = _o1[21]
+    _j_t_stance__q_thd_td = _o1[22]
+    _j_t_stance__k_c = _o1[23]
+    _j_t_stance__k_d = _o1[24]
+    _j_liftoff_q_rd__q_rd_td = _o1[56]
+    _j_liftoff_q_rd__q_th_td = _o1[57]
+    _j_liftoff_q_rd__q_thd_td = _o1[58]
+    _j_liftoff_q_rd__k_c = _o1[59]
+    _j_liftoff_q_rd__k_d = _o1[60]
+    _j_liftoff_q_th__q_rd_td = _o1[62]
+    _j_liftoff_q_th__q_th_td = _o1[63]
+    _j_liftoff_q_th__q_thd_td = _o1[64]
+    _j_liftoff_q_th__k_c = _o1[65]
+    _j_liftoff_q_th__k_d = _o1[66]
+    _j_liftoff_q_thd__q_rd_td = _o1[68]
+    _j_liftoff_q_thd__q_th_td = _o1[69]
+    _j_liftoff_q_thd__q_thd_td = _o1[70]
+    _j_liftoff_q_thd__k_c = _o1[71]
+    _j_liftoff_q_thd__k_d = _o1[72]
+    _j_P_c_compression__q_rd_td = _o1[74]
+    _j_P_c_compression__q_th_td = _o1[75]
+    _j_P_c_compression__q_thd_td = _o1[76]
+    _j_P_c_compression__k_c = _o1[77]
+    _j_P_c_compression__k_d = _o1[78]
+    _j_P_c_decompression__q_rd_td = _o1[80]
+    _j_P_c_decompression__q_th_td = _o1[81]
+    _j_P_c_decompression__q_thd_td = _o1[82]
+    _j_P_c_decompression__k_c = _o1[83]
+    _j_P_c_decompression__k_d = _o1[84]
     # chain rule through geyer_vs_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1249,14 +1321,27 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
     d_P_c_decompression__ground = (_j_P_c_decompression__q_rd_td*_j_td_q_rd__ground
         + _j_P_c_decompression__q_thd_td*_j_td_q_thd__ground)
     # liftoff -> next apex: exact ballistic ascent
+    _o2 = carray(stack(20), 20)
     _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN105 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+        direction, _o2))
+    if _c2 != STATUS_OK:
+        return fail(out, _c2)
+    apex_height = _o2[0]
+    apex_speed = _o2[1]
+    t_ascent = _o2[2]
+    next_apex_x = _o2[4]
+    _j_apex_height__q_rd = _o2[5]
+    _j_apex_height__q_th = _o2[6]
+    _j_apex_height__q_thd = _o2[7]
+    _j_apex_speed__q_rd = _o2[8]
+    _j_apex_speed__q_th = _o2[9]
+    _j_apex_speed__q_thd = _o2[10]
+    _j_t_ascent__q_rd = _o2[11]
+    _j_t_ascent__q_th = _o2[12]
+    _j_t_ascent__q_thd = _o2[13]
+    _j_next_apex_x__q_rd = _o2[17]
+    _j_next_apex_x__q_th = _o2[18]
+    _j_next_apex_x__q_thd = _o2[19]
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -1358,16 +1443,7 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
     d_passes__ground = 0.0
     d_passes__k_c = 0.0
     d_passes__k_d = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(P_c_compression) and math.isfinite(P_c_decompression)
-            and math.isfinite(passes)):
-        return _NAN105 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes,
         d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
         d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
@@ -1390,22 +1466,19 @@ def geyer_vs_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k
         d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex,
         d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground,
         d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d, STATUS_OK)
+        d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def geyer_vs_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k_c, k_d, g_s, g_f,
-        q_r_td, q_r_lo, continuity, gravity, iterations, tol, out, status):
-    """Parallel batch form of :func:`geyer_vs_apex_return_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k_c, k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity,
-    iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 105); the columns are the outputs of
-    :func:`geyer_vs_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_15_105`).
-    """
-    for i in prange(out.shape[0]):
-        res = (geyer_vs_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k_c,
-            k_d, g_s, g_f, q_r_td, q_r_lo, continuity, gravity, iterations, tol))
-        store_row_15_105(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def geyer_vs_apex_return_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`geyer_vs_apex_return_jacobian`: ``STATUS[i] = geyer_vs_apex_return_jacobian(X[i],
+    P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = geyer_vs_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

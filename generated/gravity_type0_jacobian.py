@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:12a4ff7e62097af8
-#   rows.py sha256:0089f4b891692c1b
+#   support.py sha256:192d8d7121590e49
+#   flight_jacobian.py sha256:f3da99deace8dd95
+#   geyer_jacobian.py sha256:5917ec562dff88f1
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type0: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -16,11 +16,12 @@ a map its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b, geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k
-from .rows import store_row_12_72, store_row_14_84
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -28,13 +29,10 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERI
     STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-_NAN72 = (NAN,) * 72
-_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, samples,
-        iterations, tol):
+def gravity_type0_stance_jacobian(x, p, out):
     """Gravity correction type 0 (leg length l0): stance outputs and their derivatives with respect to the
     touchdown state and the stiffness.
 
@@ -42,6 +40,11 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -60,7 +63,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -75,9 +78,13 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         passes: fixed-point passes run
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 710
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol) = (p[0], p[1], p[2], p[3], p[6], p[7], p[8],
+        p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -88,7 +95,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             or (reading == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples
             <= 3.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations
             <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN72 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -117,7 +124,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         share = 1.0
         ramp = 0.0
     else:
-        return _NAN72 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
@@ -129,7 +136,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     for _it0 in range(_last0 + 1):
         (P_c, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td, d_P_c__q_thd_td, d_P_c__k, ) = _pk0
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN72 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # effective touchdown rate
         _x10 = P_c*share + p_td
         _x11 = (1.0/m)
@@ -144,14 +151,36 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_i_q_thd_eff__q_thd_td = _pd__0*d_P_c__q_thd_td + _pd__1*d_p_td__q_thd_td
         d_i_q_thd_eff__k = _pd__0*d_P_c__k
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
-        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
-        if _c0[30] != STATUS_OK:
-            return _NAN72 + (_c0[30],)
-        (i_omega, i_omega0_hat, i_a, i_b, i_phase_td, i_s_td, _j_i_omega__q_r_td, _, _j_i_omega__q_thd_td, _,
-            _j_i_omega0_hat__q_r_td, _, _j_i_omega0_hat__q_thd_td, _j_i_omega0_hat__k, _j_i_a__q_r_td, _,
-            _j_i_a__q_thd_td, _j_i_a__k, _j_i_b__q_r_td, _j_i_b__q_rd_td, _j_i_b__q_thd_td, _j_i_b__k,
-            _j_i_phase_td__q_r_td, _j_i_phase_td__q_rd_td, _j_i_phase_td__q_thd_td, _j_i_phase_td__k,
-            _j_i_s_td__q_r_td, _j_i_s_td__q_rd_td, _j_i_s_td__q_thd_td, _j_i_s_td__k, _) = _c0
+        _o0 = carray(stack(30), 30)
+        _c0 = geyer_solution_jac_q_r_td_q_rd_td_q_thd_td_k(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s, _o0)
+        if _c0 != STATUS_OK:
+            return fail(out, _c0)
+        i_omega = _o0[0]
+        i_omega0_hat = _o0[1]
+        i_a = _o0[2]
+        i_b = _o0[3]
+        i_phase_td = _o0[4]
+        i_s_td = _o0[5]
+        _j_i_omega__q_r_td = _o0[6]
+        _j_i_omega__q_thd_td = _o0[8]
+        _j_i_omega0_hat__q_r_td = _o0[10]
+        _j_i_omega0_hat__q_thd_td = _o0[12]
+        _j_i_omega0_hat__k = _o0[13]
+        _j_i_a__q_r_td = _o0[14]
+        _j_i_a__q_thd_td = _o0[16]
+        _j_i_a__k = _o0[17]
+        _j_i_b__q_r_td = _o0[18]
+        _j_i_b__q_rd_td = _o0[19]
+        _j_i_b__q_thd_td = _o0[20]
+        _j_i_b__k = _o0[21]
+        _j_i_phase_td__q_r_td = _o0[22]
+        _j_i_phase_td__q_rd_td = _o0[23]
+        _j_i_phase_td__q_thd_td = _o0[24]
+        _j_i_phase_td__k = _o0[25]
+        _j_i_s_td__q_r_td = _o0[26]
+        _j_i_s_td__q_rd_td = _o0[27]
+        _j_i_s_td__q_thd_td = _o0[28]
+        _j_i_s_td__k = _o0[29]
         # chain rule through geyer_solution
         d_i_omega__q_r_td = _j_i_omega__q_r_td + _j_i_omega__q_thd_td*d_i_q_thd_eff__q_r_td
         d_i_omega__q_rd_td = _j_i_omega__q_thd_td*d_i_q_thd_eff__q_rd_td
@@ -185,7 +214,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_i_s_td__k = _j_i_s_td__k + _j_i_s_td__q_thd_td*d_i_q_thd_eff__k
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
-            return _NAN72 + (_c1[6],)
+            return fail(out, _c1[6])
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         _j_i_phase_lo__a = _c1[2]
@@ -325,7 +354,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             + _pd__25*d_i_s_lo__k + _pd__26*d_i_s_td__k)
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN72 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         if _conv0 or _it0 == _last0:
             break
         # eq (48) with 2 or 3 samples
@@ -365,7 +394,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
                 + _pd__35*d_i_t_stance__q_thd_td)
             d_i_P_new__k = _pd__33*d_i_bottom_q_th__k + _pd__34*d_i_liftoff_q_th__k + _pd__35*d_i_t_stance__k
         else:
-            return _NAN72 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         # next values
         P_c__next = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
@@ -443,7 +472,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             + _x74*l0*q_r_lo)
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
-            return _NAN72 + (STATUS_ENERGY_DEFICIT,)
+            return fail(out, STATUS_ENERGY_DEFICIT)
         # q_rd_lo from the energy
         _x76 = math.sqrt(_q_rd_lo_sq)
         liftoff_q_rd = _x76
@@ -463,7 +492,7 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_liftoff_q_rd__q_thd_td = d_i_liftoff_q_rd__q_thd_td
         d_liftoff_q_rd__k = d_i_liftoff_q_rd__k
     else:
-        return _NAN72 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # derivatives of the outputs
     d_t_bottom__q_r_td = d_i_t_bottom__q_r_td
     d_t_bottom__q_rd_td = d_i_t_bottom__q_rd_td
@@ -505,15 +534,8 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_passes__q_th_td = 0.0
     d_passes__q_thd_td = 0.0
     d_passes__k = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
         d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
         d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
         d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
@@ -527,29 +549,26 @@ def gravity_type0_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
         d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k, STATUS_OK)
+        d_passes__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type0_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
-        samples, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type0_stance_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, samples, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
-    :func:`gravity_type0_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_72`).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type0_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
-            q_r_lo, reading, samples, iterations, tol))
-        store_row_12_72(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type0_stance_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type0_stance_jacobian`: ``STATUS[i] = gravity_type0_stance_jacobian(X[i],
+    P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type0_stance_jacobian(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
-        q_r_lo, reading, samples, iterations, tol):
+def gravity_type0_apex_return_jacobian(x, p, out):
     """Apex-return map by Gravity correction type 0 (leg length l0), and its derivatives with respect to the
     apex, the touchdown angle and the stiffness.
 
@@ -557,6 +576,11 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol); writes the outputs below into
+    out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -579,7 +603,7 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -596,9 +620,13 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         passes: fixed-point passes run
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 178
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol) = (p[0], p[1], p[2], p[3], p[4],
+        p[5], p[6], p[7], p[8], p[9], p[10])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -610,31 +638,71 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
             == 1.0)) and ((samples == math.floor(samples)) and (samples >= 2.0) and (samples <= 3.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN84 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(30), 30)
     _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN84 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+        ground, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    td_q_r = _o0[0]
+    td_q_rd = _o0[1]
+    td_q_th = _o0[2]
+    td_q_thd = _o0[3]
+    t_descent = _o0[4]
+    foot_x = _o0[5]
+    _j_td_q_rd__b_y_apex = _o0[10]
+    _j_td_q_rd__b_xd_apex = _o0[11]
+    _j_td_q_rd__q_th_td = _o0[12]
+    _j_td_q_rd__ground = _o0[13]
+    _j_td_q_th__q_th_td = _o0[16]
+    _j_td_q_thd__b_y_apex = _o0[18]
+    _j_td_q_thd__b_xd_apex = _o0[19]
+    _j_td_q_thd__q_th_td = _o0[20]
+    _j_td_q_thd__ground = _o0[21]
+    _j_t_descent__b_y_apex = _o0[22]
+    _j_t_descent__q_th_td = _o0[24]
+    _j_t_descent__ground = _o0[25]
+    _j_foot_x__b_y_apex = _o0[26]
+    _j_foot_x__b_xd_apex = _o0[27]
+    _j_foot_x__q_th_td = _o0[28]
+    _j_foot_x__ground = _o0[29]
     # stance: Gravity correction type 0 (leg length l0)
-    _c1 = (gravity_type0_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading,
-        samples, iterations, tol))
-    if _c1[72] != STATUS_OK:
-        return _NAN84 + (_c1[72],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
-        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
-        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
-        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
-        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(72), 72)
+    _c1 = gravity_type0_stance_jacobian(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    P_c = _o1[10]
+    passes = _o1[11]
+    _j_t_stance__q_rd_td = _o1[18]
+    _j_t_stance__q_th_td = _o1[19]
+    _j_t_stance__q_thd_td = _o1[20]
+    _j_t_stance__k = _o1[21]
+    _j_liftoff_q_rd__q_rd_td = _o1[48]
+    _j_liftoff_q_rd__q_th_td = _o1[49]
+    _j_liftoff_q_rd__q_thd_td = _o1[50]
+    _j_liftoff_q_rd__k = _o1[51]
+    _j_liftoff_q_th__q_rd_td = _o1[53]
+    _j_liftoff_q_th__q_th_td = _o1[54]
+    _j_liftoff_q_th__q_thd_td = _o1[55]
+    _j_liftoff_q_th__k = _o1[56]
+    _j_liftoff_q_thd__q_rd_td = _o1[58]
+    _j_liftoff_q_thd__q_th_td = _o1[59]
+    _j_liftoff_q_thd__q_thd_td = _o1[60]
+    _j_liftoff_q_thd__k = _o1[61]
+    _j_P_c__q_rd_td = _o1[63]
+    _j_P_c__q_th_td = _o1[64]
+    _j_P_c__q_thd_td = _o1[65]
+    _j_P_c__k = _o1[66]
     # chain rule through gravity_type0_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -673,14 +741,27 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
     d_P_c__ground = _j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_thd_td*_j_td_q_thd__ground
     # liftoff -> next apex: exact ballistic ascent
+    _o2 = carray(stack(20), 20)
     _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+        direction, _o2))
+    if _c2 != STATUS_OK:
+        return fail(out, _c2)
+    apex_height = _o2[0]
+    apex_speed = _o2[1]
+    t_ascent = _o2[2]
+    next_apex_x = _o2[4]
+    _j_apex_height__q_rd = _o2[5]
+    _j_apex_height__q_th = _o2[6]
+    _j_apex_height__q_thd = _o2[7]
+    _j_apex_speed__q_rd = _o2[8]
+    _j_apex_speed__q_th = _o2[9]
+    _j_apex_speed__q_thd = _o2[10]
+    _j_t_ascent__q_rd = _o2[11]
+    _j_t_ascent__q_th = _o2[12]
+    _j_t_ascent__q_thd = _o2[13]
+    _j_next_apex_x__q_rd = _o2[17]
+    _j_next_apex_x__q_th = _o2[18]
+    _j_next_apex_x__q_thd = _o2[19]
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -761,15 +842,7 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
     d_passes__q_th_td = 0.0
     d_passes__ground = 0.0
     d_passes__k = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
         d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
         d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
@@ -786,22 +859,19 @@ def gravity_type0_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
         d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
         d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
+        d_passes__q_th_td, d_passes__ground, d_passes__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type0_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
-        q_r_lo, reading, samples, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type0_apex_return_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations,
-    tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`gravity_type0_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_14_84`).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type0_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
-            g_s, g_f, q_r_td, q_r_lo, reading, samples, iterations, tol))
-        store_row_14_84(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type0_apex_return_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type0_apex_return_jacobian`: ``STATUS[i] =
+    gravity_type0_apex_return_jacobian(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type0_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

@@ -6,8 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight.py sha256:8b20bd5230ccfe19
-#   geyer.py sha256:4737273d6d8636d4
+#   support.py sha256:192d8d7121590e49
+#   flight.py sha256:c8466d021d7dd8ec
+#   geyer.py sha256:9b82b46142822163
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time
 and apex-return kernels."""
@@ -15,7 +16,9 @@ and apex-return kernels."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -25,14 +28,10 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_FALL, STATUS_NUMERI
     STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-_NAN4 = (NAN,) * 4
-_NAN12 = (NAN,) * 12
-_NAN14 = (NAN,) * 14
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
-        leg_length, iterations, tol):
+def gravity_type4_stance(x, p, out):
     """Gravity correction type 4 (average leg length on [t_i, t_f]): touchdown state -> bottom and liftoff
     states.
 
@@ -40,6 +39,11 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
 
     Geyer et al.'s map (3.1) run with a corrected angular momentum; see the module docstring of
     derive/maps/gravity.py and docs/gravity.md for the two readings of (50).
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol); writes the
+    outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -59,7 +63,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -72,9 +76,13 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         liftoff_q_thd: leg angle rate [rad/s]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 371
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2], p[3], p[6],
+        p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -86,10 +94,10 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN12 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
-        return _NAN12 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -105,7 +113,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         share = 1.0
         ramp = 0.0
     else:
-        return _NAN12 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
@@ -115,13 +123,13 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN12 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return _NAN12 + (_c0[6],)
+            return fail(out, _c0[6])
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -130,7 +138,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return _NAN12 + (_c1[2],)
+            return fail(out, _c1[2])
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -156,7 +164,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN12 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         if _conv0 or _it0 == _last0:
             break
         # eq (76)
@@ -183,7 +191,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
                     - _x22*i_omega0_hat**2 + g_s*i_t_stance
                     + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance))
             else:
-                return _NAN12 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             _x23 = _i_L*g_s*m
             i_P_new = (0.5)*i_t_stance*(_x23*math.sin(i_liftoff_q_th) + _x23*math.sin(q_th_td))
         elif interval == 1.0:
@@ -209,7 +217,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
                     - _x33*i_omega0_hat**2 + g_s*i_t_bottom
                     + q_rd_td*math.cos(_x30)))/(i_omega0_hat**3*i_t_bottom))
             else:
-                return _NAN12 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             # average leg length, eqs (55)-(61) / (67)-(75)
             if leg_length == 0.0:
                 _x34 = (1.0/i_omega0_hat)
@@ -242,7 +250,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
                     - _x49*_x51 + g_s*i_t_bottom + q_rd_td*math.cos(_x44)))/(i_omega0_hat**3*(-i_t_bottom
                     + i_t_stance)))
             else:
-                return _NAN12 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             _x52 = math.sin(i_bottom_q_th)
             _x53 = g_s*m
             _x54 = _i_L1*_x53
@@ -250,7 +258,7 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             i_P_new = ((0.5)*i_t_bottom*(_x52*_x54 + _x54*math.sin(q_th_td)) + (0.5)*(-i_t_bottom
                 + i_t_stance)*(_x52*_x55 + _x55*math.sin(i_liftoff_q_th)))
         else:
-            return _NAN12 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -276,48 +284,43 @@ def gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_
             - _x58*l0**2 - 2.0*g_s*q_r_lo*math.cos(i_liftoff_q_th))
         # q_rd_lo^2 from the energy (27)
         if not ((_q_rd_lo_sq >= 0.0)):
-            return _NAN12 + (STATUS_ENERGY_DEFICIT,)
+            return fail(out, STATUS_ENERGY_DEFICIT)
         # q_rd_lo from the energy
         liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
     elif reading == 1.0:
         # from (11)
         liftoff_q_rd = i_liftoff_q_rd
     else:
-        return _NAN12 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN12 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type4_stance_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
-        leg_length, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type4_stance`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations,
-    tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 12); the columns are the outputs of
-    :func:`gravity_type4_stance`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type4_stance(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s, q_r_lo,
-            reading, interval, leg_length, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], out[i, 10], out[i, 11], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type4_stance_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type4_stance`: ``STATUS[i] = gravity_type4_stance(X[i], P[i], OUT[i])``
+    for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type4_stance(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading, interval,
-        leg_length, iterations, tol):
+def gravity_type4_state_at(x, p, out):
     """Gravity correction type 4 (average leg length on [t_i, t_f]): the polar state a time t after touchdown.
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
+
+    Role kernel: reads x = (t, q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol); writes the
+    outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         t: time since touchdown t [s], >= 0
@@ -338,14 +341,18 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         q_r: leg length [m]
         q_rd: leg length rate [m/s]
         q_th: leg angle from the vertical, counterclockwise positive [rad]
         q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 340
+    (t, q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3], x[4])
+    (m, l0, k, g_s, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2], p[3], p[6],
+        p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(t) and math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -357,10 +364,10 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
             or (interval == 1.0)) and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN4 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # leg_length eq21/eq23 need q_r_td = l0
     if not ((leg_length == 0.0) or (abs(l0 - q_r_td) <= 1e-09*l0)):
-        return _NAN4 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # angular momentum and total energy (27) at touchdown
     _x0 = q_r_td**2
     _x1 = _x0*m
@@ -376,7 +383,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         share = 1.0
         ramp = 0.0
     else:
-        return _NAN4 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # fixed point of the virtual gravity effect, from P_c = 0 (Geyer's map)
     P_c = 0.0
     passes = 0.0
@@ -386,13 +393,13 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN4 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # effective touchdown rate
         i_q_thd_eff = (P_c*share + p_td)/(m*q_r_td**2)
         # eqs (7)-(12): Geyer et al.'s radial solution from the touchdown state
         _c0 = geyer_solution(q_r_td, q_rd_td, i_q_thd_eff, m, l0, k, g_s)
         if _c0[6] != STATUS_OK:
-            return _NAN4 + (_c0[6],)
+            return fail(out, _c0[6])
         i_omega = _c0[0]
         i_omega0_hat = _c0[1]
         i_a = _c0[2]
@@ -401,7 +408,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_s_td = _c0[5]
         _c1 = geyer_liftoff_phase(i_a, i_b, l0, q_r_lo)
         if _c1[2] != STATUS_OK:
-            return _NAN4 + (_c1[2],)
+            return fail(out, _c1[2])
         i_phase_lo = _c1[0]
         i_s_lo = _c1[1]
         # eqs (13)-(14) minus (12), (11), (19), (17) at the bottom and at liftoff
@@ -427,7 +434,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
         i_liftoff_q_thd = i_omega/(_x4 + i_b*i_s_lo)**2
         # the leg stays above horizontal
         if not ((abs(i_liftoff_q_th) < (0.5)*math.pi)):
-            return _NAN4 + (STATUS_FALL,)
+            return fail(out, STATUS_FALL)
         if _conv0 or _it0 == _last0:
             break
         # eq (76)
@@ -454,7 +461,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
                     - _x22*i_omega0_hat**2 + g_s*i_t_stance
                     + q_rd_td*math.cos(_x19)))/(i_omega0_hat**3*i_t_stance))
             else:
-                return _NAN4 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             _x23 = _i_L*g_s*m
             i_P_new = (0.5)*i_t_stance*(_x23*math.sin(i_liftoff_q_th) + _x23*math.sin(q_th_td))
         elif interval == 1.0:
@@ -480,7 +487,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
                     - _x33*i_omega0_hat**2 + g_s*i_t_bottom
                     + q_rd_td*math.cos(_x30)))/(i_omega0_hat**3*i_t_bottom))
             else:
-                return _NAN4 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             # average leg length, eqs (55)-(61) / (67)-(75)
             if leg_length == 0.0:
                 _x34 = (1.0/i_omega0_hat)
@@ -513,7 +520,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
                     - _x49*_x51 + g_s*i_t_bottom + q_rd_td*math.cos(_x44)))/(i_omega0_hat**3*(-i_t_bottom
                     + i_t_stance)))
             else:
-                return _NAN4 + (STATUS_INVALID_INPUT,)
+                return fail(out, STATUS_INVALID_INPUT)
             _x52 = math.sin(i_bottom_q_th)
             _x53 = g_s*m
             _x54 = _i_L1*_x53
@@ -521,7 +528,7 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
             i_P_new = ((0.5)*i_t_bottom*(_x52*_x54 + _x54*math.sin(q_th_td)) + (0.5)*(-i_t_bottom
                 + i_t_stance)*(_x52*_x55 + _x55*math.sin(i_liftoff_q_th)))
         else:
-            return _NAN4 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = i_P_new
         # converged when every variable moved by at most tol times its scale (NaN never converges;
         # tol = 0 runs every pass)
@@ -535,35 +542,34 @@ def gravity_type4_state_at(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s,
     q_th = _c2[2]
     # the momentum at t
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
+    put(out, (q_r, q_rd, q_th, q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(q_r) and math.isfinite(q_rd) and math.isfinite(q_th) and math.isfinite(q_thd)):
-        return _NAN4 + (STATUS_NUMERICAL_RANGE,)
-    return (q_r, q_rd, q_th, q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type4_state_at_batch(t, q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
-        interval, leg_length, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type4_state_at`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): t.
-    Scalar arguments shared by every row: q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, reading,
-    interval, leg_length, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 4); the columns are the outputs of
-    :func:`gravity_type4_state_at`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type4_state_at(t[i], q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo,
-            reading, interval, leg_length, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type4_state_at_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type4_state_at`: ``STATUS[i] = gravity_type4_state_at(X[i], P[i],
+    OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type4_state_at(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
-        reading, interval, leg_length, iterations, tol):
+def gravity_type4_apex_return(x, p, out):
     """Apex-return map: exact flights, stance by Gravity correction type 4 (average leg length on [t_i, t_f]).
 
     Report equations: 46, 47, 48, 50, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol); writes the
+    outputs below into out, in order, and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -587,7 +593,7 @@ def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
         tol: option tol: stop when P_c moves by at most tol times the momentum scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -602,9 +608,13 @@ def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
         foot_y: height of the foot (the touchdown ground) relative to the apex: ground - apex height [m]
         P_c: virtual gravity effect: the stance impulse added to p_th [N m s]
         passes: fixed-point passes run
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 3
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol) = (p[0], p[1], p[2],
+        p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -617,13 +627,13 @@ def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
             and ((leg_length == 0.0) or (leg_length == 1.0) or (leg_length == 2.0)) and ((iterations
             == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0)) and ((tol >= 0.0)
             and (tol <= 1.0))):
-        return _NAN14 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
     _c0 = apex_to_touchdown(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f, ground)
     if _c0[6] != STATUS_OK:
-        return _NAN14 + (_c0[6],)
+        return fail(out, _c0[6])
     td_q_r = _c0[0]
     td_q_rd = _c0[1]
     td_q_th = _c0[2]
@@ -631,21 +641,23 @@ def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     t_descent = _c0[4]
     foot_x = _c0[5]
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _c1 = (gravity_type4_stance(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo, reading, interval,
-        leg_length, iterations, tol))
-    if _c1[12] != STATUS_OK:
-        return _NAN14 + (_c1[12],)
-    t_stance = _c1[1]
-    liftoff_q_r = _c1[6]
-    liftoff_q_rd = _c1[7]
-    liftoff_q_th = _c1[8]
-    liftoff_q_thd = _c1[9]
-    P_c = _c1[10]
-    passes = _c1[11]
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(12), 12)
+    _c1 = gravity_type4_stance(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    P_c = _o1[10]
+    passes = _o1[11]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
-        return _NAN14 + (_c2[5],)
+        return fail(out, _c2[5])
     apex_height = _c2[0]
     apex_speed = _c2[1]
     t_ascent = _c2[2]
@@ -653,30 +665,20 @@ def gravity_type4_apex_return(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN14 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type4_apex_return_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td, q_r_lo,
-        reading, interval, leg_length, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type4_apex_return`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, reading, interval, leg_length,
-    iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 14); the columns are the outputs of
-    :func:`gravity_type4_apex_return`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type4_apex_return(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k, g_s, g_f,
-            q_r_td, q_r_lo, reading, interval, leg_length, iterations, tol))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], out[i, 5], out[i, 6], out[i, 7], out[i, 8],
-            out[i, 9], out[i, 10], out[i, 11], out[i, 12], out[i, 13], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type4_apex_return_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type4_apex_return`: ``STATUS[i] = gravity_type4_apex_return(X[i], P[i],
+    OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type4_apex_return(X[i], P[min(i, last)], OUT[i])

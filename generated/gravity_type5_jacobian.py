@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   flight_jacobian.py sha256:2e171e0cb588eb80
-#   geyer_jacobian.py sha256:12a4ff7e62097af8
-#   rows.py sha256:0089f4b891692c1b
+#   support.py sha256:192d8d7121590e49
+#   flight_jacobian.py sha256:f3da99deace8dd95
+#   geyer_jacobian.py sha256:5917ec562dff88f1
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -16,11 +16,12 @@ a map its stance and apex-return Jacobians."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_liftoff_phase_jac_a_b
-from .rows import store_row_12_72, store_row_14_84
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -29,13 +30,10 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPR
     STATUS_NOT_CONVERGED, STATUS_ENERGY_DEFICIT)
 
 NAN = math.nan
-_NAN35 = (NAN,) * 35
-_NAN72 = (NAN,) * 72
-_NAN84 = (NAN,) * 84
 
 
 @njit(cache=True, error_model="numpy")
-def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k):
+def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, g_eff, r_c, m, l0, k, out):
     """Type 5 radial solution: (10)-(11) for the quadratic T5.4 about r_c with g_eff, and the derivatives of
     its outputs with respect to q_r_td, q_rd_td, omega, g_eff, r_c, k.
 
@@ -54,7 +52,7 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
         l0: rest leg length l0 [m], > 0
         k: leg stiffness, constant (k_c = k_d = k) k [N/m], > 0
 
-    Returns a tuple:
+    Writes into out:
         omega0_hat: frequency [rad/s]
         a: offset of rho(t)
         b: amplitude of rho(t)
@@ -62,14 +60,15 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
         s_td: sin(phase_td)
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             omega, g_eff, r_c, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 218
     _x0 = (1.0/m)
     omega0_sq = _x0*k
     d_omega0_sq__k = _x0
     if not ((q_rd_td < 0.0)):
-        return _NAN35 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # T5.4: the quadratic about r_c with g_eff
     _x1 = r_c + 1.0
     _x23 = (1.0/_x1)
@@ -148,7 +147,7 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     d_b2__k = _pd__5*d_lam__k + _pd__7*d_nu__k
     # eq (10)-(11): real amplitude needs mu^2 - 4 lambda nu > 0
     if not ((b2 > 0.0)):
-        return _NAN35 + (STATUS_NO_REAL_SOLUTION,)
+        return fail(out, STATUS_NO_REAL_SOLUTION)
     # eq (12): sin(phase) at touchdown
     _x35 = math.sqrt(b2)
     b = _x35
@@ -173,10 +172,10 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     d_s_td__k = _pd__10*d_b__k + _pd__9*d_a__k
     # the leg collapses: l0 (1 + a - b) <= 0
     if not ((a - b + 1.0 > 0.0)):
-        return _NAN35 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
     # (12) needs |s_td| <= 1
     if not ((abs(s_td) <= 1.0)):
-        return _NAN35 + (STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION,)
+        return fail(out, STATUS_TOUCHDOWN_OUTSIDE_OSCILLATION)
     # eq (12), n = 0: compressing root
     phase_td = math.pi - math.asin(s_td)
     _pd__11 = -1.0/math.sqrt(1.0 - s_td**2)
@@ -193,12 +192,13 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     d_a__q_r_td = 0.0
     d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td,
+    put(out, (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td,
         d_omega0_hat__omega, d_omega0_hat__g_eff, d_omega0_hat__r_c, d_omega0_hat__k, d_a__q_r_td,
         d_a__q_rd_td, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__omega,
         d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
         d_phase_td__g_eff, d_phase_td__r_c, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__omega,
-        d_s_td__g_eff, d_s_td__r_c, d_s_td__k, STATUS_OK)
+        d_s_td__g_eff, d_s_td__r_c, d_s_td__k))
+    return STATUS_OK
 
 
 @njit(cache=True, error_model="numpy")
@@ -365,7 +365,7 @@ def type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations, tol):
+def gravity_type5_stance_jacobian(x, p, out):
     """Gravity correction type 5 (time-varying momentum): stance outputs and their derivatives with respect to
     the touchdown state and the stiffness.
 
@@ -373,6 +373,11 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol); writes the outputs below into out, in order,
+    and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -388,7 +393,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         t_bottom: time from touchdown to the bottom [s]
         t_stance: stance time, touchdown to liftoff [s]
         bottom_q_r: leg length [m]
@@ -403,9 +408,12 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         passes: fixed-point passes run
         d_<output>__<argument>: d output / d argument for each output above and argument q_r_td, q_rd_td,
             q_th_td, q_thd_td, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 752
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, q_r_lo, iterations, tol) = (p[0], p[1], p[2], p[3], p[6], p[7], p[8])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -414,7 +422,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
             < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k > 0.0)) and ((g_s > 0.0)) and ((q_r_lo
             <= l0) and (q_r_lo > 0.0)) and ((iterations == math.floor(iterations)) and (iterations >= 0.0)
             and (iterations <= 1000.0)) and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN72 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the tangents the loops compute once per direction: _T[row, direction]
     _T = np.empty((38, 5))
     # angular momentum and total energy (27) at touchdown
@@ -465,7 +473,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _last0 = max(int(iterations), 0)
     for _it0 in range(_last0 + 1):
         if _it0 == _last0 and not _conv0 and tol > 0.0 and passes > 0.0:
-            return _NAN72 + (STATUS_NOT_CONVERGED,)
+            return fail(out, STATUS_NOT_CONVERGED)
         # T5.1: the torque quadratic through the nodal torques of the previous pass
         _x10 = math.sqrt(15.0)
         _x11 = (0.16666666666666666)*_x10
@@ -503,18 +511,37 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _pd__13 = _x21*_x22
         _pd__14 = _x22
         # T5.4-T5.5: radial solution
+        _o0 = carray(stack(35), 35)
         _c0 = (type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, i_omega, g_eff, r_c, m,
-            l0, k))
-        if _c0[35] != STATUS_OK:
-            return _NAN72 + (_c0[35],)
-        (i_omega0_hat, i_a, i_b, i_phase_td, _, _, _, _j_i_omega0_hat__omega, _, _j_i_omega0_hat__r_c,
-            _j_i_omega0_hat__k, _, _, _j_i_a__omega, _j_i_a__g_eff, _j_i_a__r_c, _j_i_a__k, _j_i_b__q_r_td,
-            _j_i_b__q_rd_td, _j_i_b__omega, _j_i_b__g_eff, _j_i_b__r_c, _j_i_b__k, _j_i_phase_td__q_r_td,
-            _j_i_phase_td__q_rd_td, _j_i_phase_td__omega, _j_i_phase_td__g_eff, _j_i_phase_td__r_c,
-            _j_i_phase_td__k, _, _, _, _, _, _, _) = _c0
+            l0, k, _o0))
+        if _c0 != STATUS_OK:
+            return fail(out, _c0)
+        i_omega0_hat = _o0[0]
+        i_a = _o0[1]
+        i_b = _o0[2]
+        i_phase_td = _o0[3]
+        _j_i_omega0_hat__omega = _o0[7]
+        _j_i_omega0_hat__r_c = _o0[9]
+        _j_i_omega0_hat__k = _o0[10]
+        _j_i_a__omega = _o0[13]
+        _j_i_a__g_eff = _o0[14]
+        _j_i_a__r_c = _o0[15]
+        _j_i_a__k = _o0[16]
+        _j_i_b__q_r_td = _o0[17]
+        _j_i_b__q_rd_td = _o0[18]
+        _j_i_b__omega = _o0[19]
+        _j_i_b__g_eff = _o0[20]
+        _j_i_b__r_c = _o0[21]
+        _j_i_b__k = _o0[22]
+        _j_i_phase_td__q_r_td = _o0[23]
+        _j_i_phase_td__q_rd_td = _o0[24]
+        _j_i_phase_td__omega = _o0[25]
+        _j_i_phase_td__g_eff = _o0[26]
+        _j_i_phase_td__r_c = _o0[27]
+        _j_i_phase_td__k = _o0[28]
         _c1 = geyer_liftoff_phase_jac_a_b(i_a, i_b, l0, q_r_lo)
         if _c1[6] != STATUS_OK:
-            return _NAN72 + (_c1[6],)
+            return fail(out, _c1[6])
         i_phase_lo = _c1[0]
         _j_i_phase_lo__a = _c1[2]
         _j_i_phase_lo__b = _c1[3]
@@ -565,17 +592,47 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         _c2 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*(1.0
             - 0.2*math.sqrt(15.0)), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
             i_phase_td, m, l0))
-        (i_th1, _j_i_th1__t, _j_i_th1__q_th_td, _j_i_th1__p_td, _j_i_th1__c0, _j_i_th1__c1, _j_i_th1__c2,
-            _j_i_th1__k0, _j_i_th1__k1, _j_i_th1__k2, _j_i_th1__omega0_hat, _j_i_th1__phase_td) = _c2
+        i_th1 = _c2[0]
+        _j_i_th1__t = _c2[1]
+        _j_i_th1__q_th_td = _c2[2]
+        _j_i_th1__p_td = _c2[3]
+        _j_i_th1__c0 = _c2[4]
+        _j_i_th1__c1 = _c2[5]
+        _j_i_th1__c2 = _c2[6]
+        _j_i_th1__k0 = _c2[7]
+        _j_i_th1__k1 = _c2[8]
+        _j_i_th1__k2 = _c2[9]
+        _j_i_th1__omega0_hat = _c2[10]
+        _j_i_th1__phase_td = _c2[11]
         _c3 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance,
             q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
-        (i_th2, _j_i_th2__t, _j_i_th2__q_th_td, _j_i_th2__p_td, _j_i_th2__c0, _j_i_th2__c1, _j_i_th2__c2,
-            _j_i_th2__k0, _j_i_th2__k1, _j_i_th2__k2, _j_i_th2__omega0_hat, _j_i_th2__phase_td) = _c3
+        i_th2 = _c3[0]
+        _j_i_th2__t = _c3[1]
+        _j_i_th2__q_th_td = _c3[2]
+        _j_i_th2__p_td = _c3[3]
+        _j_i_th2__c0 = _c3[4]
+        _j_i_th2__c1 = _c3[5]
+        _j_i_th2__c2 = _c3[6]
+        _j_i_th2__k0 = _c3[7]
+        _j_i_th2__k1 = _c3[8]
+        _j_i_th2__k2 = _c3[9]
+        _j_i_th2__omega0_hat = _c3[10]
+        _j_i_th2__phase_td = _c3[11]
         _c4 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td((0.5)*i_t_stance*((0.2
             )*math.sqrt(15.0) + 1.0), q_th_td, p_td, i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat,
             i_phase_td, m, l0))
-        (i_th3, _j_i_th3__t, _j_i_th3__q_th_td, _j_i_th3__p_td, _j_i_th3__c0, _j_i_th3__c1, _j_i_th3__c2,
-            _j_i_th3__k0, _j_i_th3__k1, _j_i_th3__k2, _j_i_th3__omega0_hat, _j_i_th3__phase_td) = _c4
+        i_th3 = _c4[0]
+        _j_i_th3__t = _c4[1]
+        _j_i_th3__q_th_td = _c4[2]
+        _j_i_th3__p_td = _c4[3]
+        _j_i_th3__c0 = _c4[4]
+        _j_i_th3__c1 = _c4[5]
+        _j_i_th3__c2 = _c4[6]
+        _j_i_th3__k0 = _c4[7]
+        _j_i_th3__k1 = _c4[8]
+        _j_i_th3__k2 = _c4[9]
+        _j_i_th3__omega0_hat = _c4[10]
+        _j_i_th3__phase_td = _c4[11]
         # T5.1, T5.4: the torques at the new nodes, g_s <cos q_th>, the mean compression
         _x48 = (0.2)*math.sqrt(15.0)
         _x49 = 1.0 - _x48
@@ -774,14 +831,32 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         passes += 1.0
     _c5 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_bottom, q_th_td, p_td,
         i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
-    (bottom_q_th, _j_bottom_q_th__t, _j_bottom_q_th__q_th_td, _j_bottom_q_th__p_td, _j_bottom_q_th__c0,
-        _j_bottom_q_th__c1, _j_bottom_q_th__c2, _j_bottom_q_th__k0, _j_bottom_q_th__k1, _j_bottom_q_th__k2,
-        _j_bottom_q_th__omega0_hat, _j_bottom_q_th__phase_td) = _c5
+    bottom_q_th = _c5[0]
+    _j_bottom_q_th__t = _c5[1]
+    _j_bottom_q_th__q_th_td = _c5[2]
+    _j_bottom_q_th__p_td = _c5[3]
+    _j_bottom_q_th__c0 = _c5[4]
+    _j_bottom_q_th__c1 = _c5[5]
+    _j_bottom_q_th__c2 = _c5[6]
+    _j_bottom_q_th__k0 = _c5[7]
+    _j_bottom_q_th__k1 = _c5[8]
+    _j_bottom_q_th__k2 = _c5[9]
+    _j_bottom_q_th__omega0_hat = _c5[10]
+    _j_bottom_q_th__phase_td = _c5[11]
     _c6 = (type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(i_t_stance, q_th_td, p_td,
         i_c0, i_c1, i_c2, i_k0, i_k1, i_k2, i_omega0_hat, i_phase_td, m, l0))
-    (liftoff_q_th, _j_liftoff_q_th__t, _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__p_td, _j_liftoff_q_th__c0,
-        _j_liftoff_q_th__c1, _j_liftoff_q_th__c2, _j_liftoff_q_th__k0, _j_liftoff_q_th__k1,
-        _j_liftoff_q_th__k2, _j_liftoff_q_th__omega0_hat, _j_liftoff_q_th__phase_td) = _c6
+    liftoff_q_th = _c6[0]
+    _j_liftoff_q_th__t = _c6[1]
+    _j_liftoff_q_th__q_th_td = _c6[2]
+    _j_liftoff_q_th__p_td = _c6[3]
+    _j_liftoff_q_th__c0 = _c6[4]
+    _j_liftoff_q_th__c1 = _c6[5]
+    _j_liftoff_q_th__c2 = _c6[6]
+    _j_liftoff_q_th__k0 = _c6[7]
+    _j_liftoff_q_th__k1 = _c6[8]
+    _j_liftoff_q_th__k2 = _c6[9]
+    _j_liftoff_q_th__omega0_hat = _c6[10]
+    _j_liftoff_q_th__phase_td = _c6[11]
     # T5.7: bottom and liftoff states
     t_bottom = i_t_bottom
     t_stance = i_t_stance
@@ -824,7 +899,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__66 = _x104
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN72 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
     _x106 = (1.0/m)
     _x107 = 2.0*g_s*q_r_lo
     _x108 = _x106*l0**2
@@ -851,7 +926,7 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     _pd__74 = -_x117*(2.0*_x111 + _x113 + (0.6666666666666666)*_x115 + 2.0*p_td)
     # q_rd_lo^2 from the energy (27)
     if not ((_q_rd_lo_sq >= 0.0)):
-        return _NAN72 + (STATUS_ENERGY_DEFICIT,)
+        return fail(out, STATUS_ENERGY_DEFICIT)
     # q_rd_lo from the energy
     _x120 = math.sqrt(_q_rd_lo_sq)
     liftoff_q_rd = _x120
@@ -940,15 +1015,8 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
     d_passes__q_th_td = 0.0
     d_passes__q_thd_td = 0.0
     d_passes__k = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(t_bottom) and math.isfinite(t_stance) and math.isfinite(bottom_q_r)
-            and math.isfinite(bottom_q_rd) and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd)
-            and math.isfinite(liftoff_q_r) and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th)
-            and math.isfinite(liftoff_q_thd) and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN72 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
+        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
         d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
         d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
         d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
@@ -962,29 +1030,26 @@ def gravity_type5_stance_jacobian(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, 
         d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
         d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k, STATUS_OK)
+        d_passes__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_stance_jacobian_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k, g_s, q_r_lo, iterations,
-        tol, out, status):
-    """Parallel batch form of :func:`gravity_type5_stance_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k, g_s, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 72); the columns are the outputs of
-    :func:`gravity_type5_stance_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_12_72`).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type5_stance_jacobian(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0, k, g_s,
-            q_r_lo, iterations, tol))
-        store_row_12_72(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type5_stance_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type5_stance_jacobian`: ``STATUS[i] = gravity_type5_stance_jacobian(X[i],
+    P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type5_stance_jacobian(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
-        q_r_lo, iterations, tol):
+def gravity_type5_apex_return_jacobian(x, p, out):
     """Apex-return map by Gravity correction type 5 (time-varying momentum), and its derivatives with respect
     to the apex, the touchdown angle and the stiffness.
 
@@ -992,6 +1057,11 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
 
     Derivatives by forward-mode differentiation of the declaration (derive/tangent.py), every
     direction in one pass; through an iteration, of the iterate it stops at.
+
+    Role kernel: reads x = (b_y_apex, b_xd_apex, q_th_td, ground) and the parameter record
+    p = (m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol); writes the outputs below into out, in order,
+    and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         b_y_apex: apex height of the body above the ground under it b_y_apex [m], >= 0
@@ -1011,7 +1081,7 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         tol: option tol: stop when every state moved by at most tol times its scale; 0: run all passes in [0,
             1]
 
-    Returns a tuple:
+    Writes into out:
         apex_height: next apex height above the ground the foot stood on [m]
         apex_speed: next apex horizontal speed (signed) [m/s]
         t_descent: flight time from the apex to touchdown [s]
@@ -1028,9 +1098,13 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         passes: fixed-point passes run
         d_<output>__<argument>: d output / d argument for each output above and argument b_y_apex, b_xd_apex,
             q_th_td, ground, k (row-major)
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 178
+    (b_y_apex, b_xd_apex, q_th_td, ground) = (x[0], x[1], x[2], x[3])
+    (m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
+        p[8])
     # inputs: finite and inside their domains
     if not (math.isfinite(b_y_apex) and math.isfinite(b_xd_apex) and math.isfinite(q_th_td)
             and math.isfinite(ground) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k)
@@ -1040,31 +1114,71 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
             > 0.0)) and ((q_r_td <= l0) and (q_r_td > 0.0)) and ((q_r_lo <= l0) and (q_r_lo > 0.0))
             and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 1000.0))
             and ((tol >= 0.0) and (tol <= 1.0))):
-        return _NAN84 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # the step's direction: the sign of the apex speed
     direction = (0.0 if b_xd_apex == 0 else math.copysign(1, b_xd_apex))
     # apex -> touchdown: exact ballistic descent (sections 2.1, 2.2.2)
+    _o0 = carray(stack(30), 30)
     _c0 = (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex, q_th_td, q_r_td, g_f,
-        ground))
-    if _c0[30] != STATUS_OK:
-        return _NAN84 + (_c0[30],)
-    (td_q_r, td_q_rd, td_q_th, td_q_thd, t_descent, foot_x, _, _, _, _, _j_td_q_rd__b_y_apex,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__q_th_td, _j_td_q_rd__ground, _, _, _j_td_q_th__q_th_td, _,
-        _j_td_q_thd__b_y_apex, _j_td_q_thd__b_xd_apex, _j_td_q_thd__q_th_td, _j_td_q_thd__ground,
-        _j_t_descent__b_y_apex, _, _j_t_descent__q_th_td, _j_t_descent__ground, _j_foot_x__b_y_apex,
-        _j_foot_x__b_xd_apex, _j_foot_x__q_th_td, _j_foot_x__ground, _) = _c0
+        ground, _o0))
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    td_q_r = _o0[0]
+    td_q_rd = _o0[1]
+    td_q_th = _o0[2]
+    td_q_thd = _o0[3]
+    t_descent = _o0[4]
+    foot_x = _o0[5]
+    _j_td_q_rd__b_y_apex = _o0[10]
+    _j_td_q_rd__b_xd_apex = _o0[11]
+    _j_td_q_rd__q_th_td = _o0[12]
+    _j_td_q_rd__ground = _o0[13]
+    _j_td_q_th__q_th_td = _o0[16]
+    _j_td_q_thd__b_y_apex = _o0[18]
+    _j_td_q_thd__b_xd_apex = _o0[19]
+    _j_td_q_thd__q_th_td = _o0[20]
+    _j_td_q_thd__ground = _o0[21]
+    _j_t_descent__b_y_apex = _o0[22]
+    _j_t_descent__q_th_td = _o0[24]
+    _j_t_descent__ground = _o0[25]
+    _j_foot_x__b_y_apex = _o0[26]
+    _j_foot_x__b_xd_apex = _o0[27]
+    _j_foot_x__q_th_td = _o0[28]
+    _j_foot_x__ground = _o0[29]
     # stance: Gravity correction type 5 (time-varying momentum)
-    _c1 = (gravity_type5_stance_jacobian(td_q_r, td_q_rd, td_q_th, td_q_thd, m, l0, k, g_s, q_r_lo,
-        iterations, tol))
-    if _c1[72] != STATUS_OK:
-        return _NAN84 + (_c1[72],)
-    (_, t_stance, _, _, _, _, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, _, _, _, _,
-        _, _, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td, _j_t_stance__k, _, _, _, _,
-        _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _, _j_liftoff_q_rd__q_rd_td,
-        _j_liftoff_q_rd__q_th_td, _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_rd__k, _, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_th__k, _, _j_liftoff_q_thd__q_rd_td,
-        _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td, _j_liftoff_q_thd__k, _, _j_P_c__q_rd_td,
-        _j_P_c__q_th_td, _j_P_c__q_thd_td, _j_P_c__k, _, _, _, _, _, _) = _c1
+    _x1 = carray(stack(4), 4)
+    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    _o1 = carray(stack(72), 72)
+    _c1 = gravity_type5_stance_jacobian(_x1, p, _o1)
+    if _c1 != STATUS_OK:
+        return fail(out, _c1)
+    t_stance = _o1[1]
+    liftoff_q_r = _o1[6]
+    liftoff_q_rd = _o1[7]
+    liftoff_q_th = _o1[8]
+    liftoff_q_thd = _o1[9]
+    P_c = _o1[10]
+    passes = _o1[11]
+    _j_t_stance__q_rd_td = _o1[18]
+    _j_t_stance__q_th_td = _o1[19]
+    _j_t_stance__q_thd_td = _o1[20]
+    _j_t_stance__k = _o1[21]
+    _j_liftoff_q_rd__q_rd_td = _o1[48]
+    _j_liftoff_q_rd__q_th_td = _o1[49]
+    _j_liftoff_q_rd__q_thd_td = _o1[50]
+    _j_liftoff_q_rd__k = _o1[51]
+    _j_liftoff_q_th__q_rd_td = _o1[53]
+    _j_liftoff_q_th__q_th_td = _o1[54]
+    _j_liftoff_q_th__q_thd_td = _o1[55]
+    _j_liftoff_q_th__k = _o1[56]
+    _j_liftoff_q_thd__q_rd_td = _o1[58]
+    _j_liftoff_q_thd__q_th_td = _o1[59]
+    _j_liftoff_q_thd__q_thd_td = _o1[60]
+    _j_liftoff_q_thd__k = _o1[61]
+    _j_P_c__q_rd_td = _o1[63]
+    _j_P_c__q_th_td = _o1[64]
+    _j_P_c__q_thd_td = _o1[65]
+    _j_P_c__k = _o1[66]
     # chain rule through gravity_type5_stance
     d_t_stance__b_y_apex = (_j_t_stance__q_rd_td*_j_td_q_rd__b_y_apex
         + _j_t_stance__q_thd_td*_j_td_q_thd__b_y_apex)
@@ -1103,14 +1217,27 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         + _j_P_c__q_thd_td*_j_td_q_thd__q_th_td)
     d_P_c__ground = _j_P_c__q_rd_td*_j_td_q_rd__ground + _j_P_c__q_thd_td*_j_td_q_thd__ground
     # liftoff -> next apex: exact ballistic ascent
+    _o2 = carray(stack(20), 20)
     _c2 = (liftoff_to_apex_jac_q_rd_q_th_q_thd(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f,
-        direction))
-    if _c2[20] != STATUS_OK:
-        return _NAN84 + (_c2[20],)
-    (apex_height, apex_speed, t_ascent, _, next_apex_x, _j_apex_height__q_rd, _j_apex_height__q_th,
-        _j_apex_height__q_thd, _j_apex_speed__q_rd, _j_apex_speed__q_th, _j_apex_speed__q_thd,
-        _j_t_ascent__q_rd, _j_t_ascent__q_th, _j_t_ascent__q_thd, _, _, _, _j_next_apex_x__q_rd,
-        _j_next_apex_x__q_th, _j_next_apex_x__q_thd, _) = _c2
+        direction, _o2))
+    if _c2 != STATUS_OK:
+        return fail(out, _c2)
+    apex_height = _o2[0]
+    apex_speed = _o2[1]
+    t_ascent = _o2[2]
+    next_apex_x = _o2[4]
+    _j_apex_height__q_rd = _o2[5]
+    _j_apex_height__q_th = _o2[6]
+    _j_apex_height__q_thd = _o2[7]
+    _j_apex_speed__q_rd = _o2[8]
+    _j_apex_speed__q_th = _o2[9]
+    _j_apex_speed__q_thd = _o2[10]
+    _j_t_ascent__q_rd = _o2[11]
+    _j_t_ascent__q_th = _o2[12]
+    _j_t_ascent__q_thd = _o2[13]
+    _j_next_apex_x__q_rd = _o2[17]
+    _j_next_apex_x__q_th = _o2[18]
+    _j_next_apex_x__q_thd = _o2[19]
     # chain rule through liftoff_to_apex
     d_apex_height__b_y_apex = (_j_apex_height__q_rd*d_liftoff_q_rd__b_y_apex
         + _j_apex_height__q_th*d_liftoff_q_th__b_y_apex + _j_apex_height__q_thd*d_liftoff_q_thd__b_y_apex)
@@ -1191,15 +1318,7 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
     d_passes__q_th_td = 0.0
     d_passes__ground = 0.0
     d_passes__k = 0.0
-    # every value output finite, or the inputs were far outside a physical range (the
-    # derivatives are checked by their users: runtime/api/jacobian.py)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
-            and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
-            and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
-            and math.isfinite(P_c) and math.isfinite(passes)):
-        return _NAN84 + (STATUS_NUMERICAL_RANGE,)
-    return (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
         d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
         d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
@@ -1216,21 +1335,19 @@ def gravity_type5_apex_return_jacobian(b_y_apex, b_xd_apex, q_th_td, ground, m, 
         d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
         d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
         d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k, STATUS_OK)
+        d_passes__q_th_td, d_passes__ground, d_passes__k))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def gravity_type5_apex_return_jacobian_batch(b_y_apex, b_xd_apex, q_th_td, ground, m, l0, k, g_s, g_f, q_r_td,
-        q_r_lo, iterations, tol, out, status):
-    """Parallel batch form of :func:`gravity_type5_apex_return_jacobian`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): b_y_apex, b_xd_apex, q_th_td, ground.
-    Scalar arguments shared by every row: m, l0, k, g_s, g_f, q_r_td, q_r_lo, iterations, tol.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 84); the columns are the outputs of
-    :func:`gravity_type5_apex_return_jacobian`, in order) and its status code to ``status[i]`` (int64).
-    A row whose values exist but a derivative does not is NUMERICAL_RANGE (:func:`store_row_14_84`).
-    """
-    for i in prange(out.shape[0]):
-        res = (gravity_type5_apex_return_jacobian(b_y_apex[i], b_xd_apex[i], q_th_td[i], ground[i], m, l0, k,
-            g_s, g_f, q_r_td, q_r_lo, iterations, tol))
-        store_row_14_84(out, status, i, res)
+@njit(cache=True, nogil=True, error_model="numpy")
+def gravity_type5_apex_return_jacobian_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`gravity_type5_apex_return_jacobian`: ``STATUS[i] =
+    gravity_type5_apex_return_jacobian(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = gravity_type5_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

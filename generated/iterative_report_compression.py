@@ -6,14 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   geyer.py sha256:4737273d6d8636d4
-#   geyer_vs.py sha256:2af0829e07a0cf1b
-#   gravity_type0.py sha256:307fd5b7e0072824
-#   gravity_type1.py sha256:46607008446ed15d
-#   gravity_type2.py sha256:97fb4f568b945f42
-#   gravity_type3.py sha256:d4ac1d04e125ac4a
-#   gravity_type4.py sha256:81186cbbb1247b9f
-#   gravity_type5.py sha256:f4510b5010050beb
+#   support.py sha256:192d8d7121590e49
+#   geyer.py sha256:9b82b46142822163
+#   geyer_vs.py sha256:737db40f2d14d3b0
+#   gravity_type0.py sha256:7cc8e309dce39d36
+#   gravity_type1.py sha256:e8b38ab1e805eb17
+#   gravity_type2.py sha256:e59759572d4ea2db
+#   gravity_type3.py sha256:1a97aa9ed6004f9c
+#   gravity_type4.py sha256:26cecb3b9648aef8
+#   gravity_type5.py sha256:9598921c04c34961
+#   iterative.py sha256:c7a0a0a5a3b98d5d
+#   iterative_report.py sha256:b15fa5b5773be343
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -21,32 +24,38 @@ bottom."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
 from .geyer import geyer_stance
-from .geyer_vs import bottom_quartic, geyer_vs_stance
+from .geyer_vs import geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
 from .gravity_type1 import gravity_type1_stance
 from .gravity_type2 import gravity_type2_stance
 from .gravity_type3 import gravity_type3_stance
 from .gravity_type4 import gravity_type4_stance
 from .gravity_type5 import gravity_type5_stance
+from .iterative import zeroth_held
+from .iterative_report import report_compression
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
-from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_FALL,
-    STATUS_NUMERICAL_RANGE, STATUS_IMAGINARY_MOMENTUM)
+from .status import STATUS_OK, STATUS_INVALID_INPUT, STATUS_TOUCHDOWN_NOT_COMPRESSING, STATUS_NUMERICAL_RANGE
 
 NAN = math.nan
-_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
-        iterations, bottom_length):
+def iterative_report_compression_zeroth_geyer(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
     132, 133, 134, 135, 154.
+
+    Role kernel: reads x = (q_r_td, q_rd_td, q_th_td, q_thd_td) and the parameter record
+    p = (m, l0, k_c, g_s, variant, iterations, bottom_length); writes the outputs below into out, in order,
+    and returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_td: touchdown leg length q_r_td [m], 0 < q_r_td <= l0
@@ -62,15 +71,18 @@ def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td
         bottom_length: option bottom_length: the bottom leg length q_r_b the chains run to and from (section
             5.2, closing estimates): 0 = zeroth, 1 = eq153
 
-    Returns a tuple:
+    Writes into out:
         t_half: time from the start state to the end state [s]
         end_q_r: leg length [m]
         end_q_rd: leg length rate [m/s]
         end_q_th: leg angle from the vertical, counterclockwise positive [rad]
         end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -80,148 +92,61 @@ def iterative_report_compression_zeroth_geyer(q_r_td, q_rd_td, q_th_td, q_thd_td
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Geyer et al.'s approximate stance map
-    _c0 = geyer_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td)
-    if _c0[10] != STATUS_OK:
-        return _NAN5 + (_c0[10],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(7), 7)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td))
+    _o0 = carray(stack(10), 10)
+    _c0 = geyer_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_geyer_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer`.
-
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_td, q_rd_td, q_th_td, q_thd_td.
-    Scalar arguments shared by every row: m, l0, k_c, g_s, variant, iterations, bottom_length.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_compression_zeroth_geyer`, in order) and its status code to ``status[i]`` (int64).
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_geyer(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
-            l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_geyer`: ``STATUS[i] =
+    iterative_report_compression_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
-        iterations, bottom_length):
+def iterative_report_compression_zeroth_held(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -229,7 +154,9 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 161
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -239,147 +166,56 @@ def iterative_report_compression_zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td,
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
-    # held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2
-    _x0 = k_c*q_r_td
-    _x1 = g_s*m*math.cos(q_th_td)
-    _x2 = q_thd_td**2
-    _x3 = m*q_rd_td**2
-    _x4 = (-_x3/(-_x0 - _x1 + _x2*m*q_r_td + k_c*l0 + math.sqrt(_x3*k_c + (-_x0 - _x1 + _x2*m*q_r_td
-        + k_c*l0)**2)) + q_r_td)
-    z_b_q_r = _x4
-    z_b_q_th = q_th_td
-    z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
-    z_lo_q_th = 0.0
-    z_lo_q_thd = 0.0
-    # E_ab (114) of the touchdown state
-    _x5 = (0.5)*k_c
-    _x6 = q_r_td**2
-    _x7 = (0.5)*m
-    E_ab = (_x5*_x6 + _x5*l0**2 + _x6*_x7*q_thd_td**2 + _x7*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c0 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c0[1] != STATUS_OK:
-            return _NAN5 + (_c0[1],)
-        bottom_q_r = _c0[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x8 = 4.0**(-iterations)
-    _x9 = _x8*(bottom_q_r - q_r_td)
-    _x10 = (0.25)*_x9
-    _x11 = _x10 + q_r_td
-    _x12 = _x11**2
-    _x13 = k_c*m
-    _x14 = _x11**3
-    _x15 = m*z_b_q_r**2*z_b_q_thd
-    _x16 = math.sqrt(1.0 - 0.25*_x8)
-    _x17 = -_x15 + m*q_r_td**2*q_thd_td
-    _x18 = q_th_td - z_b_q_th
-    _x19 = ((2.0*E_ab*_x12*m - _x11**4*_x13 - _x12*_x13*l0**2 - 2.0*_x14*g_s*m**2*math.cos(_x16*_x18
-        + z_b_q_th) + 2.0*_x14*k_c*l0*m - (_x15 + _x16*_x17)**2)/_x12)
-    _x20 = math.sqrt(1.0 - _x8)
-    c_e_n = _x9
-    c_e_z = _x10
-    c_rad_z = _x19
-    c_Q0 = _x18*_x20 + z_b_q_th
-    c_P0 = _x15 + _x17*_x20
-    c_T0 = ((-_x9*m/math.sqrt(_x19)) if (_x19 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x21 = c_e + q_r_td
-        _x22 = _x21**2
-        _x23 = k_c*m
-        _x24 = _x21**3
-        c_x = _x21
-        c_rad = ((2.0*E_ab*_x22*m - _x21**4*_x23 - _x22*_x23*l0**2 - 2.0*_x24*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x24*k_c*l0*m - c_P**2)/_x22)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
+    # zeroth iterate: held
+    _c0 = zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s)
+    if _c0[5] != STATUS_OK:
+        return fail(out, _c0[5])
+    z_b_q_r = _c0[0]
+    z_b_q_th = _c0[1]
+    z_b_q_thd = _c0[2]
+    z_lo_q_th = _c0[3]
+    z_lo_q_thd = _c0[4]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_held_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_held`: arguments, out and status as
-    :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_held(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m, l0,
-            k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_held_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_held`: ``STATUS[i] =
+    iterative_report_compression_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_held(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type0(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -387,7 +223,9 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -397,145 +235,61 @@ def iterative_report_compression_zeroth_gravity_type0(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
-    _c0 = (gravity_type0_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 1.0,
-        0.0))
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(11), 11)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 1.0, 0.0))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type0_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type0_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type0`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type0(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type0`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type1(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -543,7 +297,9 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -553,145 +309,61 @@ def iterative_report_compression_zeroth_gravity_type1(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
-    _c0 = (gravity_type1_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 100.0,
-        1e-12))
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(11), 11)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 100.0, 1e-12))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type1_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type1_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type1`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type1(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type1`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type2(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -699,7 +371,9 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -709,145 +383,61 @@ def iterative_report_compression_zeroth_gravity_type2(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 2 (average leg length)
-    _c0 = (gravity_type2_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 2.0, 0.0,
-        100.0, 1e-12))
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(12), 12)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type2_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type2_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type2`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type2(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type2`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type3(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -855,7 +445,9 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -865,145 +457,61 @@ def iterative_report_compression_zeroth_gravity_type3(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
-    _c0 = (gravity_type3_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 100.0,
-        1e-12))
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(11), 11)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 100.0, 1e-12))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type3_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type3_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type3`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type3(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type3`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type4(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -1011,7 +519,9 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -1021,145 +531,61 @@ def iterative_report_compression_zeroth_gravity_type4(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
-    _c0 = (gravity_type4_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 0.0, 1.0, 0.0,
-        100.0, 1e-12))
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(12), 12)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type4_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type4_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type4`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type4(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type4`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length):
+def iterative_report_compression_zeroth_gravity_type5(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -1167,7 +593,9 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -1177,144 +605,61 @@ def iterative_report_compression_zeroth_gravity_type5(q_r_td, q_rd_td, q_th_td, 
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
-    _c0 = gravity_type5_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, q_r_td, 100.0, 1e-12)
-    if _c0[12] != STATUS_OK:
-        return _NAN5 + (_c0[12],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(9), 9)
+    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 100.0, 1e-12))
+    _o0 = carray(stack(12), 12)
+    _c0 = gravity_type5_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_gravity_type5_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c,
-        g_s, variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_gravity_type5`: arguments, out and
-    status as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_gravity_type5(q_r_td[i], q_rd_td[i], q_th_td[i],
-            q_thd_td[i], m, l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type5`: ``STATUS[i] =
+    iterative_report_compression_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, variant,
-        iterations, bottom_length):
+def iterative_report_compression_zeroth_geyer_vs(x, p, out):
     """Iterative compression half as printed (touchdown to bottom, k_c): touchdown state -> bottom state.
 
     Report equations: 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 128, 129, 130, 131,
@@ -1322,7 +667,9 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
 
     Arguments, returns and status: the same as :func:`iterative_report_compression_zeroth_geyer`'s.
     """
-    # Total ops: 130
+    # Total ops: 0
+    (q_r_td, q_rd_td, q_th_td, q_thd_td) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_c, g_s, variant, iterations, bottom_length) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_td) and math.isfinite(q_rd_td) and math.isfinite(q_th_td)
             and math.isfinite(q_thd_td) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_c)
@@ -1332,137 +679,54 @@ def iterative_report_compression_zeroth_geyer_vs(q_r_td, q_rd_td, q_th_td, q_thd
             and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((bottom_length == 0.0) or (bottom_length
             == 1.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # q_rd_td < 0
     if not ((q_rd_td < 0.0)):
-        return _NAN5 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
+        return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
-    _c0 = (geyer_vs_stance(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_c, g_s, q_r_td, 2.0, 0.0, 100.0,
-        1e-12))
-    if _c0[13] != STATUS_OK:
-        return _NAN5 + (_c0[13],)
-    z_b_q_r = _c0[2]
-    z_b_q_th = _c0[4]
-    z_b_q_thd = _c0[5]
-    z_lo_q_th = _c0[8]
-    z_lo_q_thd = _c0[9]
-    # E_ab (114) of the touchdown state
-    _x0 = (0.5)*k_c
-    _x1 = q_r_td**2
-    _x2 = (0.5)*m
-    E_ab = (_x0*_x1 + _x0*l0**2 + _x1*_x2*q_thd_td**2 + _x2*q_rd_td**2 + g_s*m*q_r_td*math.cos(q_th_td)
-        - k_c*l0*q_r_td)
-    # bottom leg length
-    if bottom_length == 0.0:
-        bottom_q_r = z_b_q_r
-    elif bottom_length == 1.0:
-        # (153): the vertical bottom's quartic
-        _c1 = bottom_quartic(m*q_r_td**2*q_thd_td, E_ab, m, l0, k_c, g_s)
-        if _c1[1] != STATUS_OK:
-            return _NAN5 + (_c1[1],)
-        bottom_q_r = _c1[0]
-    else:
-        return _NAN5 + (STATUS_INVALID_INPUT,)
-    # bottom leg length q_r_b > 0
-    if not ((bottom_q_r > 0.0)):
-        return _NAN5 + (STATUS_FALL,)
-    # bottom below touchdown
-    if not ((-bottom_q_r + q_r_td > 0.0)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
-    _x3 = 4.0**(-iterations)
-    _x4 = _x3*(bottom_q_r - q_r_td)
-    _x5 = (0.25)*_x4
-    _x6 = _x5 + q_r_td
-    _x7 = _x6**2
-    _x8 = k_c*m
-    _x9 = _x6**3
-    _x10 = m*z_b_q_r**2*z_b_q_thd
-    _x11 = math.sqrt(1.0 - 0.25*_x3)
-    _x12 = -_x10 + m*q_r_td**2*q_thd_td
-    _x13 = q_th_td - z_b_q_th
-    _x14 = ((2.0*E_ab*_x7*m - _x6**4*_x8 - _x7*_x8*l0**2 - 2.0*_x9*g_s*m**2*math.cos(_x11*_x13 + z_b_q_th)
-        + 2.0*_x9*k_c*l0*m - (_x10 + _x11*_x12)**2)/_x7)
-    _x15 = math.sqrt(1.0 - _x3)
-    c_e_n = _x4
-    c_e_z = _x5
-    c_rad_z = _x14
-    c_Q0 = _x13*_x15 + z_b_q_th
-    c_P0 = _x10 + _x12*_x15
-    c_T0 = ((-_x4*m/math.sqrt(_x14)) if (_x14 > 0.0) else (0.0))
-    # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
-    if not ((c_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-    # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
-    c_e = c_e_n
-    c_Q = c_Q0
-    c_P = c_P0
-    c_T = c_T0
-    c_steps = 0.0
-    _conv0 = False
-    for _it0 in range(int(iterations)):
-        _x16 = c_e + q_r_td
-        _x17 = _x16**2
-        _x18 = k_c*m
-        _x19 = _x16**3
-        c_x = _x16
-        c_rad = ((2.0*E_ab*_x17*m - _x16**4*_x18 - _x17*_x18*l0**2 - 2.0*_x19*g_s*m**2*math.cos(c_Q)
-            + 2.0*_x19*k_c*l0*m - c_P**2)/_x17)
-        # H^{-1} real at x_{j+1} on the current iterate
-        if not ((c_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
-        c_h = math.sqrt(c_rad)
-        c_e_next = 4.0*c_e
-        # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
-        if variant == 0.0:
-            c_wq = c_e_next/c_x**2
-            c_wp = c_e_next*c_x
-        elif variant == 1.0:
-            c_wq = c_e_next/(q_r_td*(c_e_next + q_r_td))
-            c_wp = (0.5)*c_e_next*(c_e_next + 2.0*q_r_td)
-        else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
-        _n0_0 = c_e_next
-        _n0_1 = -c_P*c_wq/c_h + q_th_td
-        _n0_2 = m*q_r_td**2*q_thd_td - c_wp*g_s*m**2*math.sin(c_Q)/c_h
-        _n0_3 = -c_e_next*m/c_h
-        # converged when every variable moved by at most tol times its scale (NaN never converges;
-        # tol = 0 runs every pass)
-        _conv0 = (0.0 > 0.0 and (abs(_n0_0 - c_e) <= 0.0*(l0)) and (abs(_n0_1 - c_Q) <= 0.0*(1.0))
-            and (abs(_n0_2 - c_P) <= 0.0*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m)) and (abs(_n0_3 - c_T)
-            <= 0.0*(math.sqrt(l0)/math.sqrt(g_s))))
-        c_e = _n0_0
-        c_Q = _n0_1
-        c_P = _n0_2
-        c_T = _n0_3
-        c_steps += 1.0
-        if _conv0:
-            break
-    # bottom state (p_r = 0)
-    t_bottom = c_T
-    bottom_q_rd = 0.0
-    bottom_q_th = c_Q
-    bottom_q_thd = c_P/(bottom_q_r**2*m)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    _p0 = carray(stack(12), 12)
+    put(_p0, (m, l0, k_c, k_c, g_s, NAN, q_r_td, q_r_td, 2.0, 0.0, 100.0, 1e-12))
+    _o0 = carray(stack(13), 13)
+    _c0 = geyer_vs_stance(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    z_b_q_r = _o0[2]
+    z_b_q_th = _o0[4]
+    z_b_q_thd = _o0[5]
+    z_lo_q_th = _o0[8]
+    z_lo_q_thd = _o0[9]
+    # the compression half as printed
+    _c1 = (report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
+        z_b_q_thd, variant, iterations, bottom_length))
+    if _c1[6] != STATUS_OK:
+        return fail(out, _c1[6])
+    t_bottom = _c1[0]
+    bottom_q_r = _c1[1]
+    bottom_q_rd = _c1[2]
+    bottom_q_th = _c1[3]
+    bottom_q_thd = _c1[4]
+    E_ab = _c1[5]
     # the bottom state
     t_half = t_bottom
     end_q_r = bottom_q_r
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_compression_zeroth_geyer_vs_batch(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s,
-        variant, iterations, bottom_length, out, status):
-    """Parallel batch form of :func:`iterative_report_compression_zeroth_geyer_vs`: arguments, out and status
-    as :func:`iterative_report_compression_zeroth_geyer_batch`'s.
-    """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_compression_zeroth_geyer_vs(q_r_td[i], q_rd_td[i], q_th_td[i], q_thd_td[i], m,
-            l0, k_c, g_s, variant, iterations, bottom_length))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_compression_zeroth_geyer_vs`: ``STATUS[i] =
+    iterative_report_compression_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_compression_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

@@ -5,6 +5,9 @@
 # Rebuild:   slipmaps generate        (check: slipmaps generate --check)
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
+# Depends on (content hashes; a change here re-keys numba's cache of this file):
+#   support.py sha256:192d8d7121590e49
+#   flight.py sha256:c8466d021d7dd8ec
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
 liftoff."""
@@ -12,7 +15,10 @@ liftoff."""
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import carray, njit
+
+from .support import fail, finite, put, stack
+from .flight import liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -20,15 +26,18 @@ from .status import (STATUS_OK, STATUS_INVALID_INPUT, STATUS_NO_LIFTOFF, STATUS_
     STATUS_IMAGINARY_MOMENTUM)
 
 NAN = math.nan
-_NAN5 = (NAN,) * 5
 
 
 @njit(cache=True, error_model="numpy")
-def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant,
-        iterations):
+def iterative_report_decompression(x, p, out):
     """Iterative decompression half as printed (bottom to liftoff, k_d): bottom state -> liftoff state.
 
     Report equations: 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150.
+
+    Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
+    p = (m, l0, k_d, g_s, q_r_lo, variant, iterations); writes the outputs below into out, in order, and
+    returns
+    the status (out all NaN unless OK).
 
     Arguments:
         q_r_b: bottom leg length [m], > 0
@@ -43,15 +52,18 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
         iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
 
-    Returns a tuple:
+    Writes into out:
         t_half: time from the start state to the end state [s]
         end_q_r: leg length [m]
         end_q_rd: leg length rate [m/s]
         end_q_th: leg angle from the vertical, counterclockwise positive [rad]
         end_q_thd: leg angle rate [rad/s]
-        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN.
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
     # Total ops: 140
+    (q_r_b, q_rd_b, q_th_b, q_thd_b) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_d, g_s, q_r_lo, variant, iterations) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6])
     # inputs: finite and inside their domains
     if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
             and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
@@ -60,14 +72,14 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
             > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0)) and ((q_r_lo <= l0) and (q_r_lo
             > 0.0)) and ((variant == 0.0) or (variant == 1.0)) and ((iterations == math.floor(iterations))
             and (iterations >= 0.0) and (iterations <= 100.0))):
-        return _NAN5 + (STATUS_INVALID_INPUT,)
+        return fail(out, STATUS_INVALID_INPUT)
     # E_ba (137)
     _x0 = (0.5)*k_d
     _x1 = q_r_b**2
     E_ba = _x0*_x1 + _x0*l0**2 + (0.5)*_x1*m*q_thd_b**2 + g_s*m*q_r_b*math.cos(q_th_b) - k_d*l0*q_r_b
     # bottom below q_r_lo
     if not ((-q_r_b + q_r_lo > 0.0)):
-        return _NAN5 + (STATUS_NO_LIFTOFF,)
+        return fail(out, STATUS_NO_LIFTOFF)
     # x_n = a + e_n: the chain's innermost point; x_{n+1} only for the time at iterations = 0
     _x2 = 4.0**(-iterations)*(-q_r_b + q_r_lo)
     _x3 = (0.25)*_x2
@@ -86,7 +98,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     d_T0 = ((_x2*m/math.sqrt(_x9)) if (_x9 > 0.0) else (0.0))
     # iterations = 0: H^{-1} real on the zeroth iterate at the point of x_0 (for its time)
     if not ((d_rad_z > 0.0) or (iterations > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        return fail(out, STATUS_IMAGINARY_MOMENTUM)
     # the chain: from x_{j+1} to x_j = a + 4 (x_{j+1} - a), one iterate higher each step
     d_e = d_e_n
     d_Q = d_Q0
@@ -104,7 +116,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
             + 2.0*_x13*k_d*l0*m - d_P**2)/_x11)
         # H^{-1} real at x_{j+1} on the current iterate
         if not ((d_rad > 0.0)):
-            return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+            return fail(out, STATUS_IMAGINARY_MOMENTUM)
         d_h = math.sqrt(d_rad)
         d_e_next = 4.0*d_e
         # weights of P/h and m^2 g_s sin(q_th)/h: (42)-(44) or (148)-(150)
@@ -115,7 +127,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
             d_wq = d_e_next/(q_r_b*(d_e_next + q_r_b))
             d_wp = (0.5)*d_e_next*(d_e_next + 2.0*q_r_b)
         else:
-            return _NAN5 + (STATUS_INVALID_INPUT,)
+            return fail(out, STATUS_INVALID_INPUT)
         _n0_0 = d_e_next
         _n0_1 = d_P*d_wq/d_h + q_th_b
         _n0_2 = m*q_r_b**2*q_thd_b + d_wp*g_s*m**2*math.sin(d_Q)/d_h
@@ -140,7 +152,7 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
         + 2.0*_x16*k_d*l0*m - d_P**2)/_x14)
     # p_r_lo = H^{-1}(q_r_lo, q_th, p_th, E_ba) real
     if not ((rad_lo > 0.0)):
-        return _NAN5 + (STATUS_IMAGINARY_MOMENTUM,)
+        return fail(out, STATUS_IMAGINARY_MOMENTUM)
     # liftoff state
     _x17 = (1.0/m)
     t_stance = d_T
@@ -150,31 +162,121 @@ def iterative_report_decompression(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g
     liftoff_q_thd = _x17*d_P/q_r_lo**2
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
-        return _NAN5 + (STATUS_FALL,)
+        return fail(out, STATUS_FALL)
     # the liftoff state
     t_half = t_stance
     end_q_r = liftoff_q_r
     end_q_rd = liftoff_q_rd
     end_q_th = liftoff_q_th
     end_q_thd = liftoff_q_thd
+    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
-            and math.isfinite(end_q_th) and math.isfinite(end_q_thd)):
-        return _NAN5 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, STATUS_OK)
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
 
 
-@njit(cache=True, parallel=True, error_model="numpy")
-def iterative_report_decompression_batch(q_r_b, q_rd_b, q_th_b, q_thd_b, m, l0, k_d, g_s, q_r_lo, variant,
-        iterations, out, status):
-    """Parallel batch form of :func:`iterative_report_decompression`.
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_decompression_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_decompression`: ``STATUS[i] =
+    iterative_report_decompression(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_decompression(X[i], P[min(i, last)], OUT[i])
 
-    Row arguments (1-D float64 arrays of equal length n, any stride): q_r_b, q_rd_b, q_th_b, q_thd_b.
-    Scalar arguments shared by every row: m, l0, k_d, g_s, q_r_lo, variant, iterations.
-    Writes output j of row i to ``out[i, j]`` (shape (n, 5); the columns are the outputs of
-    :func:`iterative_report_decompression`, in order) and its status code to ``status[i]`` (int64).
+
+@njit(cache=True, error_model="numpy")
+def iterative_report_decompression_apex(x, p, out):
+    """Iterative decompression half as printed (bottom to liftoff, k_d), then the exact flight to the next
+    apex: bottom state -> next apex.
+
+    Report equations: 137, 138, 139, 140, 141, 143, 144, 145, 146, 147, 148, 149, 150.
+
+    Role kernel: reads x = (q_r_b, q_rd_b, q_th_b, q_thd_b) and the parameter record
+    p = (m, l0, k_d, g_s, g_f, q_r_lo, variant, iterations); writes the outputs below into out, in order, and
+    returns
+    the status (out all NaN unless OK).
+
+    Arguments:
+        q_r_b: bottom leg length [m], > 0
+        q_rd_b: bottom leg length rate [m/s] (not read: 0 at the bottom)
+        q_th_b: bottom leg angle from the vertical, counterclockwise positive [rad], |q_th_b| < pi/2
+        q_thd_b: bottom leg angle rate [rad/s]
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+        q_r_lo: liftoff leg length q_r_lo [m], 0 < q_r_lo <= l0
+        variant: option variant: which mean-value form each step uses: 0 = integrand, 1 = factor
+        iterations: option iterations: iterations n of each half's chain (0 = the zeroth iterate) in [0, 100]
+        g_f: gravitational acceleration in flight, positive (pointing down) g_f [m/s^2], > 0
+
+    Writes into out:
+        apex_height: next apex height above the ground the foot stood on [m]
+        apex_speed: next apex horizontal speed (signed) [m/s]
+        t_half: time from the bottom to liftoff [s]
+        t_ascent: flight time from liftoff to the next apex [s]
+        liftoff_q_r: leg length [m]
+        liftoff_q_rd: leg length rate [m/s]
+        liftoff_q_th: leg angle from the vertical, counterclockwise positive [rad]
+        liftoff_q_thd: leg angle rate [rad/s]
+        status: 0 (STATUS_OK) or the code of the first failed check; all other outputs are then NaN
+            (returned).
     """
-    for i in prange(out.shape[0]):
-        res = (iterative_report_decompression(q_r_b[i], q_rd_b[i], q_th_b[i], q_thd_b[i], m, l0, k_d, g_s,
-            q_r_lo, variant, iterations))
-        (out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4], status[i]) = res
+    # Total ops: 8
+    (q_r_b, q_rd_b, q_th_b, q_thd_b) = (x[0], x[1], x[2], x[3])
+    (m, l0, k_d, g_s, q_r_lo, variant, iterations, g_f) = (p[0], p[1], p[2], p[3], p[5], p[6], p[7], p[4])
+    # inputs: finite and inside their domains
+    if not (math.isfinite(q_r_b) and math.isfinite(q_rd_b) and math.isfinite(q_th_b)
+            and math.isfinite(q_thd_b) and math.isfinite(m) and math.isfinite(l0) and math.isfinite(k_d)
+            and math.isfinite(g_s) and math.isfinite(q_r_lo) and math.isfinite(variant)
+            and math.isfinite(iterations) and math.isfinite(g_f) and ((q_r_b > 0.0)) and ((abs(q_th_b)
+            < (0.5)*math.pi)) and ((m > 0.0)) and ((l0 > 0.0)) and ((k_d > 0.0)) and ((g_s > 0.0))
+            and ((q_r_lo <= l0) and (q_r_lo > 0.0)) and ((variant == 0.0) or (variant == 1.0))
+            and ((iterations == math.floor(iterations)) and (iterations >= 0.0) and (iterations <= 100.0))
+            and ((g_f > 0.0))):
+        return fail(out, STATUS_INVALID_INPUT)
+    # the half: Iterative decompression half as printed (bottom to liftoff, k_d)
+    _x0 = carray(stack(4), 4)
+    put(_x0, (q_r_b, q_rd_b, q_th_b, q_thd_b))
+    _p0 = carray(stack(7), 7)
+    put(_p0, (m, l0, k_d, g_s, q_r_lo, variant, iterations))
+    _o0 = carray(stack(5), 5)
+    _c0 = iterative_report_decompression(_x0, _p0, _o0)
+    if _c0 != STATUS_OK:
+        return fail(out, _c0)
+    t_half = _o0[0]
+    liftoff_q_r = _o0[1]
+    liftoff_q_rd = _o0[2]
+    liftoff_q_th = _o0[3]
+    liftoff_q_thd = _o0[4]
+    # the direction the body moves at liftoff
+    direction = (0.0 if -liftoff_q_r*liftoff_q_thd*math.cos(liftoff_q_th)
+        - liftoff_q_rd*math.sin(liftoff_q_th) == 0 else math.copysign(1,
+        -liftoff_q_r*liftoff_q_thd*math.cos(liftoff_q_th) - liftoff_q_rd*math.sin(liftoff_q_th)))
+    # liftoff -> next apex: exact ballistic ascent
+    _c1 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
+    if _c1[5] != STATUS_OK:
+        return fail(out, _c1[5])
+    apex_height = _c1[0]
+    apex_speed = _c1[1]
+    t_ascent = _c1[2]
+    put(out, (apex_height, apex_speed, t_half, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd))
+    # every output finite, or the inputs were far outside a physical range
+    if not finite(out):
+        return fail(out, STATUS_NUMERICAL_RANGE)
+    return STATUS_OK
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def iterative_report_decompression_apex_rows(X, P, OUT, STATUS):
+    """Batch form of :func:`iterative_report_decompression_apex`: ``STATUS[i] =
+    iterative_report_decompression_apex(X[i], P[i], OUT[i])`` for every row i,
+    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
+    runs blocks of rows on threads)."""
+    last = P.shape[0] - 1
+    for i in range(X.shape[0]):
+        STATUS[i] = iterative_report_decompression_apex(X[i], P[min(i, last)], OUT[i])

@@ -11,10 +11,50 @@
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 
 NAN = math.nan
+
+
+@njit(cache=True, error_model="numpy")
+def max_step(m, l0, k, g_s):
+    """The step cap of a stance subphase with stiffness k: MAX_STEP_FRACTION of the shorter natural period.
+
+    Arguments:
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k: leg stiffness k [N/m] (k_c while compressing, k_d after the bottom)
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+
+    Returns:
+        step: the largest step of the integration [s]
+    """
+    # Total ops: 15
+    _x0 = 2.0*math.pi
+    step = 0.0625*min(_x0*math.sqrt(l0)/math.sqrt(g_s), _x0*math.sqrt(m)/math.sqrt(k))
+    return step
+
+
+@njit(cache=True, error_model="numpy")
+def stance_time_limit(m, l0, k_c, k_d, g_s):
+    """The stance time limit: T_MAX_PERIODS times the spring period of the softer spring plus the pendulum
+    period.
+
+    Arguments:
+        m: body mass m [kg], > 0
+        l0: rest leg length l0 [m], > 0
+        k_c: leg stiffness while compressing k_c [N/m], > 0
+        k_d: leg stiffness after the bottom k_d [N/m], > 0
+        g_s: gravitational acceleration in stance, positive (pointing down) g_s [m/s^2], > 0
+
+    Returns:
+        t_max: the stance time limit [s]
+    """
+    # Total ops: 16
+    _x0 = 40.0*math.pi
+    t_max = _x0*math.sqrt(m)*math.sqrt((1.0/min(k_c, k_d))) + _x0*math.sqrt(l0)/math.sqrt(g_s)
+    return t_max
 
 
 @njit(cache=True, error_model="numpy")

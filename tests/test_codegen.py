@@ -32,6 +32,7 @@ times the output's natural magnitude.
 
 from __future__ import annotations
 
+import ast
 import hashlib
 import importlib
 import inspect
@@ -44,6 +45,7 @@ import sys
 from functools import cache
 from pathlib import Path
 
+import kernels
 import numpy as np
 import pytest
 import sympy as sp
@@ -284,27 +286,31 @@ def test_header_hashes_every_imported_generated_module(built, rel):
         assert depends[f"{m}.py"] == hashlib.sha256(built[f"generated/{m}.py"].encode()).hexdigest()[:16]
 
 
-def test_header_hashes_the_generated_modules_an_external_package_imports(built):
-    """A module calling the exact simulator's kernels (runtime/exact/, hashed file by file) also
-    records the generated modules that package imports (the equations of motion, the index's
-    columns): regenerating slip_model.py alone re-keys the exact map's cache. Not status.py (above)."""
-    through = {}
+def test_generated_code_imports_only_generated_code(built):
+    """Generated modules import numba, numpy, math and generated modules only (the exact simulator is
+    the generator's support modules, generated/exact_stance.py and dop853.py, whose headers hash
+    the generated modules they import): an edit of the hand-written runtime never requires a
+    regeneration, and a regenerated equation of motion re-keys the exact map's caches."""
+    allowed = {"math", "numpy", "numba", "numba.core", "numba.extending", "collections", "__future__"}
     for rel in GENERATED_PY:
-        header = _header(built[rel])
-        if "runtime/exact/" in header:
-            through[rel] = dict(
-                re.findall(r"^#\s+generated/(\w+\.py) sha256:([0-9a-f]+)$", header, re.MULTILINE)
-            )
-    assert len(through) >= 4  # exact.py, its Jacobian and its halves
-    for rel, deps in through.items():
-        assert {"slip_model.py", "maps_index.py"} <= set(deps) and "status.py" not in deps, (rel, deps)
-        for name, digest in deps.items():
-            assert digest == hashlib.sha256(built[f"generated/{name}"].encode()).hexdigest()[:16], (rel, name)
+        tree = ast.parse(built[rel])
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                assert {a.name for a in node.names} <= allowed, (rel, ast.unparse(node))
+            elif isinstance(node, ast.ImportFrom):
+                assert node.level == 1 or node.module in allowed, (rel, ast.unparse(node))
+    header = _header(built["generated/exact_stance.py"])
+    deps = dict(re.findall(r"^#\s+(\w+\.py) sha256:([0-9a-f]+)$", header, re.MULTILINE))
+    assert set(deps) == {"dop853.py", "slip_model.py"}, deps
+    for name, digest in deps.items():
+        assert digest == hashlib.sha256(built[f"generated/{name}"].encode()).hexdigest()[:16], name
+    assert "exact_stance.py" in _depends(built["generated/exact.py"])
 
 
 def test_map_modules_depend_on_flight_and_geyer(built):
-    """geyer imports flight (apex return); every gravity map also imports geyer (section 4 builds on 3.1)."""
-    assert set(_depends(built["generated/geyer.py"])) == {"flight.py"}
+    """geyer imports flight (apex return) and the generator's support module (stack arrays for the
+    role kernels' calls); every gravity map also imports geyer (section 4 builds on 3.1)."""
+    assert set(_depends(built["generated/geyer.py"])) == {"flight.py", "support.py"}
     assert not _depends(built["generated/flight.py"]) and not _depends(built["generated/slip_model.py"])
     gravity = [row for row in MAPS if row["name"].startswith("gravity-")]
     assert len(gravity) >= 6
@@ -517,32 +523,33 @@ def test_a_map_is_declared_in_the_module_named_after_it_or_its_family():
 
 @pytest.mark.parametrize("row", [*MAPS, maps_index.EXACT], ids=[*MAP_IDS, "exact"])
 def test_map_module_exports_kernels_with_index_signatures(row):
-    """The index publishes every kernel's calling convention (what the runtime fills by name): each
-    role's function exists in its module, jitted, with exactly those arguments, and its batch form
-    takes its row arguments then the scalars, then out and status."""
-    kernels = row["kernels"]
-    assert {"stance", "apex_return", "stance_jacobian", "apex_return_jacobian"} <= set(kernels)
-    for role, spec in kernels.items():
+    """The index publishes every role kernel's layouts (what the runtime fills by name): each role's
+    function exists in its module, jitted, as ``kernel(x, p, out)``, with its batch form
+    ``kernel_rows(X, P, OUT, STATUS)``; the inputs x are the role's (the touchdown state, the apex,
+    t and the touchdown state), the parameter record p the map's parameters, the flights' and its
+    kernel options, the same for every role."""
+    roles = row["kernels"]
+    assert {"stance", "apex_return", "stance_jacobian", "apex_return_jacobian"} <= set(roles)
+    for role, spec in roles.items():
         mod = importlib.import_module(f"slipmaps.generated.{spec['module']}")
-        rows = [a for a in spec["args"] if a in spec["rows"]]
-        assert spec["rows"] == rows and spec["batch"] == rows + [a for a in spec["args"] if a not in rows], (
-            role
-        )
-        batch = (f"{spec['name']}_batch", [*spec["batch"], "out", "status"])
-        for fn_name, fn_args in ((spec["name"], spec["args"]), batch):
+        for fn_name, fn_args in (
+            (spec["name"], ["x", "p", "out"]),
+            (f"{spec['name']}_rows", ["X", "P", "OUT", "STATUS"]),
+        ):
             fn = getattr(mod, fn_name, None)
             assert fn is not None, f"{mod.__name__} has no {fn_name}"
             assert _is_kernel(mod, fn), fn_name
             assert _params(fn) == fn_args, fn_name
-    stance = kernels["stance"]["args"]
-    assert stance[:4] == maps_index.TOUCHDOWN and kernels["stance"]["rows"] == maps_index.TOUCHDOWN
-    assert stance[4 : 4 + len(row["params"])] == row["params"]
+        assert spec["p"] == roles["stance"]["p"], role
+    assert roles["stance"]["x"] == maps_index.TOUCHDOWN
+    params = [p for p in roles["stance"]["p"] if not any(o["name"] == p for o in row["options"])]
+    assert set(row["params"]) <= set(params) and {"g_f", "q_r_td", "q_r_lo"} <= set(params)
     options = [o["name"] for o in row["options"] if o["kernel"]]
-    assert stance[len(stance) - len(options) :] == options
-    assert kernels["apex_return"]["rows"] == list(maps_index.APEX_PUBLIC)
-    if "state_at" in kernels:
-        assert kernels["state_at"]["args"] == ["t", *stance] and kernels["state_at"]["rows"] == ["t"]
-    assert kernels["apex_return_jacobian"]["wrt"][:4] == list(maps_index.APEX_PUBLIC)
+    assert roles["stance"]["p"][len(params) :] == options
+    assert roles["apex_return"]["x"] == list(maps_index.APEX_PUBLIC)
+    if "state_at" in roles:
+        assert roles["state_at"]["x"] == ["t", *maps_index.TOUCHDOWN]
+    assert roles["apex_return_jacobian"]["wrt"][:4] == list(maps_index.APEX_PUBLIC)
 
 
 @pytest.mark.parametrize("mod", KERNEL_MODULES, ids=_mod_id)
@@ -560,18 +567,18 @@ def test_no_pure_python_functions(mod):
         assert deco.startswith("njit(cache=True") and "fastmath" not in deco, (name, deco)
 
 
-def _nominal_args(mod, fn) -> list[float]:
+def _nominal_args(mod, kernel) -> dict[str, float]:
     row = next((r for r in MAPS if MAP_MODULES[r["name"]] is mod), None)
     env = {**NOMINAL, **(option_defaults(row) if row else {})}
     # Helper kernels take internal quantities (phases, amplitudes ...): any moderate value runs.
-    return [env.get(p, 0.5) for p in _params(fn)]
+    return {a: env.get(a, 0.5) for a in kernel.arg_names}
 
 
 def _scalar_kernels():
     out = []
     for mod in KERNEL_MODULES:
         for name in _own_kernels(mod):
-            if not name.endswith("_batch"):
+            if not name.endswith("_rows"):
                 out.append(pytest.param(mod, name, id=f"{_mod_id(mod)}.{name}"))
     return out
 
@@ -583,7 +590,8 @@ def _map_kernel_names() -> set[str]:
 @pytest.mark.parametrize(("mod", "name"), _scalar_kernels())
 def test_kernel_is_dispatcher_and_runs(mod, name):
     kern = getattr(mod, name)
-    res = kern(*_nominal_args(mod, kern))
+    declared = kernels.declaration(mod.__name__, name)
+    res = kernels.invoke(declared, _nominal_args(mod, declared))
     res = res if isinstance(res, tuple) else (res,)
     if isinstance(res[-1], int):  # a status code: OK and finite outputs, or another code and NaNs
         assert res[-1] in MESSAGES
@@ -638,6 +646,11 @@ def _params_sample(rng):
     return {"m": m, "l0": l0, "k": k, "k_c": k, "k_d": k, "g_s": g_s, "g_f": rng.uniform(9.0, 10.0)}
 
 
+def _geyer(name: str, env) -> tuple:
+    """A kernel of module geyer at the arguments ``env`` (by name): outputs, status."""
+    return kernels.invoke(kernels.declaration("geyer", name), env)
+
+
 def _assert_agree(kernel, args_names, points, reference, n_out, rtol=RTOL, scales=None):
     """kernel(*args) vs kernel.py_func(*args) vs reference(env, cse) for cse in (False, True).
 
@@ -645,11 +658,12 @@ def _assert_agree(kernel, args_names, points, reference, n_out, rtol=RTOL, scale
     by default the largest |reference| of the output over the sample.
     """
     got, py, ref, ref_cse = [], [], [], []
+    declared = kernels.declaration(kernel.py_func.__module__, kernel.__name__)
+    assert declared.arg_names == tuple(args_names)
     for env in points:
-        args = [env[n] for n in args_names]
-        r = kernel(*args)
+        r = kernels.invoke(declared, env)
         got.append(r if isinstance(r, tuple) else (r,))
-        r = kernel.py_func(*args)
+        r = kernels.invoke(declared, env, kernel.py_func)
         py.append(r if isinstance(r, tuple) else (r,))
         ref.append(reference(env, False))
         ref_cse.append(reference(env, True))
@@ -705,7 +719,7 @@ SENS = ("s_q_r", "s_q_rd", "s_q_th", "s_q_thd", "s_k")
 
 
 def test_eq2_3_stance_polar_tangent_is_the_fields_derivative():
-    """The variational field of the exact Jacobian (runtime/exact/jacobian.py): J s + f_k s_k from
+    """The variational field of the exact Jacobian (generated/exact_stance.py): J s + f_k s_k from
     the derivation, and the directional derivative of the generated field by central differences
     (h = 1e-6 of the direction; the quotient's error O(h^2) and round-off / h: measured 6.1e-11 of
     |quotient| + the field's scale at most, bound 1e-9)."""
@@ -893,7 +907,7 @@ def _touchdown_points(name, n=N_POINTS):
             q_thd_td=-rng.uniform(0.5, 2.0) * math.sqrt(p["g_s"] / l0),
             q_r_lo=l0 * rng.choice([1.0, rng.uniform(0.93, 1.0)]),
         )
-        if g_geyer.geyer_stance(*(p[k] for k in STANCE_ARGS))[-1] == OK:
+        if _geyer("geyer_stance", p)[-1] == OK:
             if _geyer_reference(p, False)["max_abs_s"] <= 0.99:
                 pts.append(p)
     return pts
@@ -958,7 +972,6 @@ def _geyer_stance_ref(env, cse):
 
 
 def test_eq7_19_geyer_stance_matches_section_3_1_derivation():
-    assert _params(g_geyer.geyer_stance) == list(STANCE_ARGS)
     pts = _touchdown_points("geyer")
     got = _assert_agree(g_geyer.geyer_stance, STANCE_ARGS, pts, _geyer_stance_ref, 10, scales=_geyer_scales)
     for env, row in zip(pts, got, strict=True):
@@ -971,11 +984,10 @@ def test_eq7_19_geyer_stance_matches_section_3_1_derivation():
 
 
 def test_eq11_17_19_geyer_state_at_matches_derivation():
-    assert _params(g_geyer.geyer_state_at) == ["t", *STANCE_ARGS]
     pts = []
     rng = _rng("state_at")
     for env in _touchdown_points("state_at"):
-        t_stance = g_geyer.geyer_stance(*(env[k] for k in STANCE_ARGS))[1]
+        t_stance = _geyer("geyer_stance", env)[1]
         pts.append({**env, "t": rng.uniform(0.0, t_stance)})
 
     def ref(env, cse):
@@ -989,11 +1001,10 @@ def test_eq11_17_19_geyer_state_at_matches_derivation():
 def test_geyer_state_at_reproduces_stance_outputs():
     """The trajectory kernel at t = 0, t_bottom and t_stance gives the map's touchdown, bottom, liftoff."""
     for env in _touchdown_points("consistency", n=10):
-        args = [env[k] for k in STANCE_ARGS]
-        res = g_geyer.geyer_stance(*args)
-        at0 = g_geyer.geyer_state_at(0.0, *args)
-        at_b = g_geyer.geyer_state_at(res[0], *args)
-        at_lo = g_geyer.geyer_state_at(res[1], *args)
+        res = _geyer("geyer_stance", env)
+        at0 = _geyer("geyer_state_at", {**env, "t": 0.0})
+        at_b = _geyer("geyer_state_at", {**env, "t": res[0]})
+        at_lo = _geyer("geyer_state_at", {**env, "t": res[1]})
         assert at0[-1] == at_b[-1] == at_lo[-1] == OK
         scale = [env["l0"], abs(env["q_rd_td"]), 1.0, abs(env["q_thd_td"])]
         # Touchdown: q_r and q_th exactly (the phase is built from them); q_rd is the approximate
@@ -1014,9 +1025,9 @@ APEX_OUT = [r["name"] for r in maps_index.APEX_OUTPUTS]
 def test_apex_return_is_flight_stance_flight_composition(row):
     """<map>_apex_return = flight.apex_to_touchdown -> <map>_stance -> flight.liftoff_to_apex, bit for bit,
     with the map's default options; a failing stage's status is the kernel's status."""
-    mod = MAP_MODULES[row["name"]]
     spec_ap, spec_st = row["kernels"]["apex_return"], row["kernels"]["stance"]
-    apex_return, stance = getattr(mod, spec_ap["name"]), getattr(mod, spec_st["name"])
+    apex_return = kernels.declaration(spec_ap["module"], spec_ap["name"])
+    stance = kernels.declaration(spec_st["module"], spec_st["name"])
     extras = [e["name"] for e in row["extras"]]
     stance_names = STANCE_OUT + extras
     opts = option_defaults(row)
@@ -1032,11 +1043,11 @@ def test_apex_return_is_flight_stance_flight_composition(row):
             env["ground"] + env["q_r_td"] * math.cos(env["q_th_td"]) + rng.uniform(-0.01, 0.2) * env["l0"]
         )
         env["b_xd_apex"] = rng.uniform(0.3, 2.5) * math.sqrt(env["g_f"] * env["l0"])
-        got = apex_return(*(env[a] for a in spec_ap["args"]))
+        got = kernels.invoke(apex_return, env)
         assert len(got) == len(APEX_OUT) + len(extras) + 1
         td = g_flight.apex_to_touchdown(*(env[k] for k in A2T_ARGS))
         stance_env = {**env, **dict(zip(maps_index.TOUCHDOWN, td[:4], strict=True))}
-        st = stance(*(stance_env[a] for a in spec_st["args"]))
+        st = kernels.invoke(stance, stance_env)
         failed = next((res[-1] for res in (td, st) if res[-1] != OK), None)
         if failed is None:
             out = dict(zip(stance_names, st[:-1], strict=True))

@@ -1,4 +1,4 @@
-"""The compiled exact simulator (runtime/exact/compiled.py, runtime/exact/dop853.py) against the solve_ivp
+"""The compiled exact simulator (generated/exact_stance.py, generated/dop853.py) against the solve_ivp
 reference (runtime/exact/reference.py), and the ``"exact"`` map's ``method`` option.
 
 Both integrate the polar stance equations (2)-(3) of the report with the same DOP853 algorithm,
@@ -16,13 +16,13 @@ import slipmaps
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
+from slipmaps.generated import exact_stance as ec
+from slipmaps.generated import exact_stance as ek
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated import slip_model as gen
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
 from slipmaps.runtime.api.results import GROUPS
-from slipmaps.runtime.exact import compiled as ec
-from slipmaps.runtime.exact import kernels as ek
 from slipmaps.runtime.exact import reference as sim
 
 RTOL, ATOL = sim.DEFAULT_RTOL, sim.DEFAULT_ATOL
@@ -72,7 +72,7 @@ def _compiled_step(params: SlipParams, height, speed, angle) -> tuple[Status, di
 def _compiled_stance(p: SlipParams, td, t_max: float | None = None) -> tuple[Status, np.ndarray]:
     out = np.empty(ec.N_STANCE)
     t_end = sim.default_t_max(p) if t_max is None else t_max
-    code = ec.stance_into(*td, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL, t_end, out)
+    code = ec.stance_into(*td, ec.Stance(p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL, t_end), out)
     return Status(int(code)), out
 
 
@@ -146,7 +146,7 @@ def _compressions(field, tds, p: SlipParams):
     steps, evaluations) and the end state, per row."""
     if not _SOLVE:
         from numba import njit
-        from slipmaps.runtime.exact import dop853
+        from slipmaps.generated import dop853
 
         @njit
         def run(field, tds, p4, pe, direction, cap, out):
@@ -188,7 +188,7 @@ def test_written_out_step_equals_the_loops_bitwise(q_rd, q_th, q_thd):
 
 
 def test_static_refuses_a_length_it_does_not_write_out():
-    from slipmaps.runtime.exact import dop853
+    from slipmaps.generated import dop853
 
     with pytest.raises(ValueError, match="state_length"):
         dop853.static(ec.stance_events, 28)
@@ -303,7 +303,7 @@ def test_method_option_defaults_to_compiled_and_scipy_is_the_reference():
 
 
 # ----------------------------------------------------------------------------------------------
-# 5. The external kernels (runtime/exact/kernels.py): the halves and the state at a time
+# 5. The external kernels (generated/exact_stance.py): the halves and the state at a time
 # ----------------------------------------------------------------------------------------------
 def _args(p: SlipParams) -> tuple[float, ...]:
     """kernels.stance / state_at's parameters after the touchdown state."""
@@ -463,6 +463,14 @@ def test_state_at_has_the_stance_status():
         assert got[-1] == Status.NO_LIFTOFF and all(math.isnan(x) for x in got[:4])
 
 
+def _jacobian_tuple(*args):
+    """The external stance Jacobian (it writes its 70 values into an array, derive/lower.py's abi)
+    as a tuple of its values and the status, like the other external kernels."""
+    out = np.empty(70)
+    code = ek.stance_jacobian(*args, out)
+    return (*out, code)
+
+
 def test_external_kernels_refuse_invalid_inputs():
     p = HUMAN_RUNNER
     td = (0.99, -1.5, 0.35, -4.5)
@@ -471,7 +479,7 @@ def test_external_kernels_refuse_invalid_inputs():
     params_d = (p.m, p.l0, p.k_d, p.g_s, p.q_r_lo, RTOL, ATOL)
     calls = {
         "stance": (ek.stance, (*td, *_args(p))),
-        "stance_jacobian": (ek.stance_jacobian, (*td, *_args(p))),
+        "stance_jacobian": (_jacobian_tuple, (*td, *_args(p))),
         "compression": (ek.compression, (*td, *params_c)),
         "decompression": (ek.decompression, (*bottom, *params_d)),
         "state_at": (ek.state_at, (0.05, *td, *_args(p))),

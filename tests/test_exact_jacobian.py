@@ -1,6 +1,6 @@
-"""Exact stance derivatives (runtime/exact/jacobian.py, through slipmaps.stance_jacobian("exact")):
+"""Exact stance derivatives (generated/exact_stance.py, through slipmaps.stance_jacobian("exact")):
 the variational equations of (2)-(3) with saltation matrices at the bottom (k_c -> k_d) and at
-liftoff, against central differences of the compiled simulator itself (runtime/exact/compiled.py).
+liftoff, against central differences of the compiled simulator itself (generated/exact_stance.py).
 
 Central-difference step: h = 1e-5 times each input's scale (l0, sqrt(g_s l0), 1 rad, sqrt(g_s/l0),
 k_c, k_d), the best of 1e-4 ... 1e-7 measured on every case below (truncation error ~ h^2 above,
@@ -15,10 +15,10 @@ import math
 import numpy as np
 import pytest
 import slipmaps
+from slipmaps.generated import exact_stance as ej
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER, SlipParams
-from slipmaps.runtime.exact import jacobian as ej
 
 FD_STEP = 1e-5
 
@@ -51,9 +51,9 @@ CASES = [
 
 def _outputs(p: SlipParams, w: np.ndarray) -> np.ndarray:
     stiffness = p.with_(k_c=w[ej.K_C], k_d=w[ej.K_D])
-    res = slipmaps.stance("exact", stiffness, w[list(ej.TOUCHDOWN)])
+    res = slipmaps.stance("exact", stiffness, w[: ej.N_POLAR])
     assert res.status == Status.OK
-    return np.array([res.values[n] for n in ej.OUTPUTS])
+    return np.array([res.values[n] for n in ej.STANCE_NAMES])
 
 
 @pytest.mark.parametrize(("params", "touchdown"), CASES)
@@ -92,14 +92,14 @@ def test_batch_rows_equal_scalar_calls_and_failures_are_nan():
     vertical = _touchdown(p, 1.1, 0.0, 0.0)  # RECOMPRESSION with the soft k_d (test_simulator.py)
     rows = np.array([(0.99, -1.5, 0.35, -4.5), vertical, (1.0, 0.5, 0.3, -4.0), (math.nan, -1.0, 0.3, -4.0)])
     batch = slipmaps.stance_jacobian_batch("exact", p, rows)
-    out = np.column_stack([batch.result[n] for n in ej.OUTPUTS])
+    out = np.column_stack([batch.result[n] for n in ej.STANCE_NAMES])
     jac, status = batch.matrix, batch.status
     expected = [Status.OK, Status.RECOMPRESSION, Status.TOUCHDOWN_NOT_COMPRESSING, Status.INVALID_INPUT]
     assert list(status) == expected
     one = slipmaps.stance_jacobian("exact", p, rows[0])
     values = one.values
     assert one.status == Status.OK and np.array_equal(jac[0], one.matrix)
-    assert np.array_equal(out[0], [values[n] for n in ej.OUTPUTS])
+    assert np.array_equal(out[0], [values[n] for n in ej.STANCE_NAMES])
     assert np.isnan(out[1:]).all() and np.isnan(jac[1:]).all()
     one = slipmaps.stance_jacobian("exact", p, vertical)
     assert one.status == Status.RECOMPRESSION and np.isnan(one.matrix).all()

@@ -2,9 +2,9 @@
 follows rtol and every event is still found, against its own result at the default rtol 1e-11.
 
 The compiled stance caps its steps at the solve_ivp reference's cap only at the default rtol and
-scales the cap with the tolerance elsewhere (runtime/exact/compiled.py, ``step_cap``); an event that
+scales the cap with the tolerance elsewhere (generated/exact_stance.py, ``step_cap``); an event that
 a long step would carry past (a function that crosses 0 and comes back within the step) is found by
-the integrator's checks inside the step (runtime/exact/dop853.py). The hard cases below are chosen
+the integrator's checks inside the step (generated/dop853.py). The hard cases below are chosen
 next to the events' edges, on the side that each status holds at every tolerance tested; without
 the checks inside a step (measured by disabling them), the grazing vertical-hop liftoff was missed
 at rtol 1e-3, 1e-6 and 1e-8 (RECOMPRESSION instead of OK).
@@ -18,10 +18,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import slipmaps
+from slipmaps.generated import exact_stance as ec
 from slipmaps.generated import flight as gen_flight
 from slipmaps.generated.status import Status
 from slipmaps.runtime.api.params import HUMAN_RUNNER, ROBOT_HOPPER
-from slipmaps.runtime.exact import compiled as ec
 from slipmaps.runtime.exact.reference import stance_time_limit
 from slipmaps.runtime.studies.grids import GRIDS
 
@@ -90,11 +90,9 @@ def test_evaluations_fall_with_rtol(grid):
     t_max = stance_time_limit(p.m, p.l0, p.k_c, p.k_d, p.g_s)
     tds = [_touchdown(p, *row) for row in grid.points()]
     mean = {}
+    stance_params = (p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo)
     for rtol in (*RTOLS, DEFAULT):
-        counts = [
-            ec.stance_evaluations(*td, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo, rtol, 1e-12, t_max)
-            for td in tds
-        ]
+        counts = [ec.stance_evaluations(*td, ec.Stance(*stance_params, rtol, 1e-12, t_max)) for td in tds]
         mean[rtol] = np.mean([n for status, n in counts if status == OK])
     values = [mean[r] for r in (*RTOLS, DEFAULT)]
     assert all(a < b for a, b in zip(values[:-1], values[1:], strict=True)), mean

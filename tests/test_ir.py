@@ -29,6 +29,7 @@ import math
 import re
 import sys
 
+import kernels as kernels_
 import numpy as np
 import pytest
 import sympy as sp
@@ -38,13 +39,13 @@ from numba.core.registry import CPUDispatcher
 from slipmaps.derive import generate
 from slipmaps.derive.ir import (
     Arg,
-    Batch,
     Call,
     Field,
     Group,
     Guard,
     Iterate,
     Kernel,
+    Layout,
     Stage,
     Switch,
     real,
@@ -100,6 +101,7 @@ def render_module(kernels) -> str:
         depends=[],
         imports=[],
         status_module="slipmaps.generated.status",
+        support_module="slipmaps.generated.support",
     )
 
 
@@ -365,21 +367,15 @@ def _input_checks_without_status(bad):
     return _kernel("k_checks", _args(x), (Stage(((u, x),)),), _out("u"), status=False, check_inputs=bad)
 
 
-def _batch_without_status(bad):
+def _layout_without_status(bad):
     return _kernel(
-        "k_batch_status",
-        _args(x),
-        (Stage(((u, x),)),),
+        "k_layout_status",
+        _args(y),
+        (Stage(((u, y),)),),
         _out("u"),
         status=not bad,
         check_inputs=False,
-        batch=Batch(("x",)),
-    )
-
-
-def _batch_unknown_row(bad):
-    return _kernel(
-        "k_batch_rows", _args(x), (Stage(((u, x),)),), _out("u"), batch=Batch(("y",) if bad else ("x",))
+        layout=Layout(("y",), ()),
     )
 
 
@@ -406,8 +402,7 @@ STRUCTURE_CASES = {
     "switch without status": (_switch_without_status, ["kernel k_switch_status", "status"]),
     "failing iteration without status": (_iterate_without_status, ["kernel k_iter_status", "status"]),
     "input checks without status": (_input_checks_without_status, ["kernel k_checks", "status"]),
-    "batch without status": (_batch_without_status, ["kernel k_batch_status", "status"]),
-    "batch row not an argument": (_batch_unknown_row, ["kernel k_batch_rows", "['y']"]),
+    "role kernel without status": (_layout_without_status, ["kernel k_layout_status", "status"]),
     "duplicate argument": (_duplicate_argument, ["kernel k_dup_arg", "duplicate argument(s) ['x']"]),
     "duplicate output": (_duplicate_output, ["kernel k_dup_out", "duplicate output(s) ['u']"]),
 }
@@ -443,6 +438,16 @@ def test_iterate_needs_one_update_and_scale_per_state_variable():
         Iterate(((u, x),), (), (u,), n_it, tol, (sp.S.One,), passes, fail_status="NOPE")
 
 
+def test_layout_holds_exactly_the_arguments():
+    """A role kernel's layout reads every argument from x or p, and x holds arguments only."""
+    with pytest.raises(ValueError, match=r"kernel k_layout: .*missing \['y'\]"):
+        _kernel("k_layout", _args(x, y), (Stage(((u, x + y),)),), _out("u"), layout=Layout(("x",), ()))
+    with pytest.raises(ValueError, match=r"kernel k_layout: .*not \['z'\]"):
+        _kernel("k_layout", _args(x), (Stage(((u, x),)),), _out("u"), layout=Layout(("x", "z"), ()))
+    with pytest.raises(ValueError, match="names a field twice"):
+        Layout(("x", "x"), ())
+
+
 def test_argument_domain_folded_by_assumptions_is_refused():
     """A domain SymPy folds to True through the symbol's assumptions would never be checked."""
     m_pos = sp.Symbol("m", positive=True)
@@ -451,7 +456,8 @@ def test_argument_domain_folded_by_assumptions_is_refused():
 
 
 @pytest.mark.parametrize(
-    "name", ["_x0", "_c3", "_it0", "_n0_1", "_conv2", "STATUS_OK", "store_row_12_72", "res", "out", "i"]
+    "name",
+    ["_x0", "_c3", "_it0", "_n0_1", "_conv2", "_a1", "_o3", "_p2", "_code", "STATUS_OK", "out", "i", "stack"],
 )
 def test_names_of_the_generated_code_are_reserved(name):
     """A local named like a CSE temporary (``_x0``) would be overwritten by a later stage's temporary
@@ -618,14 +624,22 @@ def _switch_in_loop():
 
 
 def _batched():
-    """Rows x, y; scalar k. Domain y > 0; guard x > y; one NaN-producing output scale."""
-    k_ = sym("k")
-    args = (Arg(x, "x"), Arg(k_, "k", real(k_) > 0), Arg(y, "y", real(y) > 0))
+    """Rows a, y; parameter k. Domain y > 0; guard a > y; one NaN-producing output scale (a role
+    kernel: its inputs are not named x or p, its layouts' names)."""
+    k_, a = sym("k"), sym("a")
+    args = (Arg(a, "a"), Arg(k_, "k", real(k_) > 0), Arg(y, "y", real(y) > 0))
     steps = (
-        Stage(((sym("d"), x - y),), (Guard(real(sym("d")) > 0, "FALL"),)),
-        Stage(((r, k_ * sp.sqrt(sym("d"))), (s, x / y + sp.log(k_)))),
+        Stage(((sym("d"), a - y),), (Guard(real(sym("d")) > 0, "FALL"),)),
+        Stage(((r, k_ * sp.sqrt(sym("d"))), (s, a / y + sp.log(k_)))),
     )
-    return _kernel("batched", args, steps, _out("r", "s"), batch=Batch(("x", "y")))
+    return _kernel("batched", args, steps, _out("r", "s"), layout=Layout(("a", "y"), ("k",)))
+
+
+def _row(fn, xv, k_, yv) -> tuple:
+    """The role kernel ``batched`` at one point: (r, s, status)."""
+    out = np.empty(2)
+    status = fn(np.array([xv, yv], dtype=float), np.array([k_], dtype=float), out)
+    return (*map(float, out), int(status))
 
 
 def _all_kernels():
@@ -718,9 +732,9 @@ def test_input_domain_violations_give_invalid_input(gen):
 
 def test_nonfinite_output_gives_numerical_range(gen):
     """The final all-finite check: x / y overflows although every guard passed."""
-    res = gen.batched(1e308, 2.0, 1e-10)
+    res = _row(gen.batched, 1e308, 2.0, 1e-10)
     assert res[-1] == NUMERICAL_RANGE and all(math.isnan(val) for val in res[:-1]), res
-    assert gen.batched(1e300, 2.0, 1e-5)[-1] == OK
+    assert _row(gen.batched, 1e300, 2.0, 1e-5)[-1] == OK
 
 
 def test_call_passes_arguments_by_name(gen):
@@ -864,24 +878,32 @@ def _batch_rows():
 def test_batch_equals_scalar_bit_for_bit(gen, k_):
     xs, ys = _batch_rows()
     n = len(xs)
-    # Strided row arrays: every second element of one buffer, every third (reversed) of another.
-    xbuf = np.full(2 * n, -7.0)
-    xbuf[::2] = xs
-    ybuf = np.full(3 * n, -7.0)
-    ybuf[::-3] = ys
-    xrow, yrow = xbuf[::2], ybuf[::-3]
-    assert not xrow.flags.c_contiguous and not yrow.flags.c_contiguous
-    out = np.full((n, 2), -123.0)
-    status = np.full(n, -1, dtype=np.int64)
-    gen.batched_batch(xrow, yrow, k_, out, status)
-    ref = [gen.batched(xv, k_, yv) for xv, yv in zip(xs, ys, strict=True)]
-    np.testing.assert_array_equal(out, np.array([rr[:2] for rr in ref]))
-    np.testing.assert_array_equal(status, [rr[2] for rr in ref])
-    statuses = set(status.tolist())
+    X = np.ascontiguousarray(np.column_stack([xs, ys]))
+    OUT = np.full((n, 2), -123.0)
+    STATUS = np.full(n, -1, dtype=np.int64)
+    gen.batched_rows(X, np.array([[k_]]), OUT, STATUS)
+    ref = [_row(gen.batched, xv, k_, yv) for xv, yv in zip(xs, ys, strict=True)]
+    np.testing.assert_array_equal(OUT, np.array([rr[:2] for rr in ref]))
+    np.testing.assert_array_equal(STATUS, [rr[2] for rr in ref])
+    statuses = set(STATUS.tolist())
     if math.isfinite(k_) and k_ > 0:
         assert {OK, FALL, INVALID, NUMERICAL_RANGE} <= statuses  # the rows exercise every path
     else:
-        assert statuses == {INVALID}  # a bad scalar argument invalidates every row
+        assert statuses == {INVALID}  # a bad parameter invalidates every row
+
+
+def test_batch_takes_a_parameter_record_per_row(gen):
+    """P of one row serves every row; P of n rows gives row i its own record."""
+    xs, ys = _batch_rows()
+    n = len(xs)
+    X = np.ascontiguousarray(np.column_stack([xs, ys]))
+    ks = np.linspace(0.5, 3.0, n)
+    OUT, STATUS = np.empty((n, 2)), np.empty(n, dtype=np.int64)
+    gen.batched_rows(X, ks[:, None].copy(), OUT, STATUS)
+    for i in range(n):
+        ref = _row(gen.batched, xs[i], ks[i], ys[i])
+        np.testing.assert_array_equal(OUT[i], ref[:2])
+        assert STATUS[i] == ref[2]
 
 
 @SETTINGS
@@ -897,41 +919,46 @@ def test_batch_equals_scalar_bit_for_bit(gen, k_):
     st.floats(0.1, 10),
 )
 def test_batch_equals_scalar_property(gen, rows, k_):
-    xs = np.array([rw[0] for rw in rows])
-    ys = np.array([rw[1] for rw in rows])
-    out = np.empty((len(rows), 2))
-    status = np.empty(len(rows), dtype=np.int64)
-    gen.batched_batch(xs, ys, k_, out, status)
+    X = np.array(rows, dtype=float).reshape(-1, 2)
+    OUT = np.empty((len(rows), 2))
+    STATUS = np.empty(len(rows), dtype=np.int64)
+    gen.batched_rows(X, np.array([[k_]]), OUT, STATUS)
     for i, (xv, yv) in enumerate(rows):
-        ref = gen.batched(xv, k_, yv)
-        np.testing.assert_array_equal(out[i], ref[:2])
-        assert status[i] == ref[2]
+        ref = _row(gen.batched, xv, k_, yv)
+        np.testing.assert_array_equal(OUT[i], ref[:2])
+        assert STATUS[i] == ref[2]
 
 
-def test_batch_signature_rows_then_scalars(gen):
-    assert list(inspect.signature(gen.batched.py_func).parameters) == ["x", "k", "y"]
-    assert list(inspect.signature(gen.batched_batch.py_func).parameters) == ["x", "y", "k", "out", "status"]
+def test_role_kernel_signature_is_its_layouts(gen):
+    assert list(inspect.signature(gen.batched.py_func).parameters) == ["x", "p", "out"]
+    assert list(inspect.signature(gen.batched_rows.py_func).parameters) == ["X", "P", "OUT", "STATUS"]
 
 
 def test_every_function_is_a_numba_dispatcher_and_compiles(gen):
     """No silent pure-Python fallback: every function the module defines is jitted and compiles."""
     kernels = _all_kernels()
-    names = {k.name for k in kernels} | {f"{k.name}_batch" for k in kernels if k.batch}
+    names = {k.name for k in kernels} | {f"{k.name}_rows" for k in kernels if k.layout}
     plain = [
         nm for nm, obj in vars(gen).items() if inspect.isfunction(obj) and obj.__module__ == gen.__name__
     ]
     assert plain == []
-    assert {nm for nm, obj in vars(gen).items() if isinstance(obj, CPUDispatcher)} == names
+    own = {
+        nm
+        for nm, obj in vars(gen).items()
+        if isinstance(obj, CPUDispatcher) and obj.__module__ == gen.__name__
+    }
+    assert own == names  # (and the support module's functions it imports)
     text = render_module(kernels)
     decorators = re.findall(r"^@(.*)\ndef (\w+)\(", text, re.MULTILINE)
     assert sorted(nm for _, nm in decorators) == sorted(re.findall(r"^def (\w+)\(", text, re.MULTILINE))
     for deco, nm in decorators:
         assert deco.startswith("njit(cache=True") and "fastmath" not in deco, (nm, deco)
-        assert ("parallel=True" in deco) == nm.endswith("_batch"), (nm, deco)
-    # Compile every scalar kernel (float arguments) in nopython mode: a signature is produced.
+        assert "parallel=True" not in deco, (nm, deco)  # the runtime spreads batches over threads
+        assert ("nogil=True" in deco) == nm.endswith("_rows"), (nm, deco)
+    # Compile every kernel in nopython mode, whatever its convention: a signature is produced.
     for kern in kernels:
         disp = getattr(gen, kern.name)
-        disp(*([1.0] * len(kern.args)))
+        kernels_.invoke(kern, dict.fromkeys(kern.arg_names, 1.0), disp)
         assert disp.signatures, kern.name
 
 
@@ -1291,10 +1318,10 @@ def test_choices_share_one_docstring(tmp_path):
             name=name,
             summary="test kernel of two choices",
             equations=("test",),
-            args=(Arg(x, "x"), Arg(arg_y, "second argument")),
-            steps=(Stage(((u, scale * x + arg_y),)),),
+            args=(Arg(w, "w"), Arg(arg_y, "second argument")),
+            steps=(Stage(((u, scale * w + arg_y),)),),
             outputs=_out("u"),
-            batch=Batch(("x",)),
+            layout=Layout(("w",), (arg_y.name,)),
         )
 
     kernels = [choice("choice_a"), choice("choice_b", scale=2), choice("other", arg_y=z)]
@@ -1302,10 +1329,9 @@ def test_choices_share_one_docstring(tmp_path):
     docs = dict(re.findall(r'^def (\w+)\(.*?\n    """(.*?)"""', text, re.MULTILINE | re.DOTALL))
     assert "Arguments:" in docs["choice_a"] and "second argument" in docs["choice_a"]
     assert "Arguments:" not in docs["choice_b"] and ":func:`choice_a`" in docs["choice_b"]
-    assert (
-        ":func:`choice_a_batch`" in docs["choice_b_batch"] and "Row arguments" not in docs["choice_b_batch"]
-    )
+    assert ":func:`choice_b`" in docs["choice_b_rows"]
     assert "Arguments:" in docs["other"] and "choice_a" not in docs["other"]
     mod = load_module(tmp_path, "choices", kernels)
-    assert mod.choice_a(1.0, 2.0)[:1] == (3.0,) and mod.choice_b(1.0, 2.0)[:1] == (4.0,)
-    assert mod.other(1.0, 2.0)[:1] == (3.0,)
+    for name, expected in (("choice_a", 3.0), ("choice_b", 4.0)):
+        assert kernels_.invoke(kernels[0], {"w": 1.0, "y": 2.0}, getattr(mod, name))[:1] == (expected,)
+    assert kernels_.invoke(kernels[2], {"w": 1.0, "z": 2.0}, mod.other)[:1] == (3.0,)

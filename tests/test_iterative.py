@@ -5,6 +5,7 @@ Tolerances are measured (see each docstring).
 
 from __future__ import annotations
 
+import kernels
 import numpy as np
 import pytest
 import slipmaps
@@ -124,10 +125,13 @@ def test_pass_bound_is_enforced():
     with pytest.raises(ValueError, match="iterations"):
         slipmaps.stance("iterative", HUMAN_RUNNER, (1.0, -1.0, 0.4, -4.0), iterations=101)
     p = HUMAN_RUNNER
-    base = (1.0, -1.0, 0.4, -4.0, p.m, p.l0, p.k_c, p.k_d, p.g_s, p.q_r_lo)
-    stance = iterative.iterative_stance_nodes_4_zeroth_geyer  # nodes, zeroth: kernels per choice
-    assert stance(*base, 100.0, 0.0)[-1] == Status.OK
-    assert stance(*base, 101.0, 0.0)[-1] == Status.INVALID_INPUT
+    touchdown = dict(zip(("q_r_td", "q_rd_td", "q_th_td", "q_thd_td"), (1.0, -1.0, 0.4, -4.0), strict=True))
+    base = {**touchdown, **p.values()}
+    stance = kernels.declaration("iterative", "iterative_stance_zeroth_geyer")  # zeroth: kernels per choice
+    assert iterative.iterative_stance_zeroth_geyer is kernels.function(stance)
+    nodes = {"nodes": 3.0, "tol": 0.0}  # the code of 4 nodes
+    assert kernels.invoke(stance, {**base, **nodes, "iterations": 100.0})[-1] == Status.OK
+    assert kernels.invoke(stance, {**base, **nodes, "iterations": 101.0})[-1] == Status.INVALID_INPUT
 
 
 # ----------------------------------------------------------------------------------------------

@@ -21,10 +21,12 @@ the others <= 1.9e-6) and 1.3e-7 for "exact" (the quotient's O(h^2) error).
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import numpy as np
 import pytest
 import slipmaps
+import slipmaps.generated
 
 P = slipmaps.HUMAN_RUNNER
 VS = slipmaps.SlipParams(m=80.0, l0=1.0, k_c=20_000.0, k_d=24_000.0)
@@ -243,68 +245,25 @@ def test_readme_derivatives_example_runs():
     assert namespace["jac"].ok and namespace["jac"].inputs[-1] == "k"
 
 
-def _row_stores() -> list[tuple[str, str]]:
-    """(module, function) of every layout of a Jacobian batch's row store: the functions of
-    generated/rows.py (``store_row_<first>_<n>``: the derivatives from column ``first`` of ``n``
-    outputs; one template writes them all), each of them imported by a generated module."""
-    from pathlib import Path
+def test_a_row_with_a_derivative_that_is_not_finite_is_numerical_range():
+    """Every role kernel checks its whole row before it returns (generated/support.py's ``finite``,
+    then ``fail``): a Jacobian whose values exist but a derivative does not (inf or NaN, at the first
+    or the last derivative column) is NUMERICAL_RANGE with NaN everywhere, as the scalar API reports
+    it; a finite row passes."""
+    from slipmaps.generated import support
 
-    from slipmaps import generated as package
-
-    generated = Path(package.__file__).resolve().parent
-    stores = [
-        line[4 : line.index("(")]
-        for line in (generated / "rows.py").read_text().splitlines()
-        if line.startswith("def store_row_")
-    ]
-    users = "\n".join(path.read_text() for path in sorted(generated.glob("*_jacobian.py")))
-    return [("rows", store) for store in stores if f"{store}(out, status, i, res)" in users]
-
-
-ROW_STORES = _row_stores()
-
-
-def test_row_stores_found():
-    """generated/rows.py holds the stance and the apex-return layouts at least, each one used (a
-    layout no module calls would be generated for nothing)."""
-    from slipmaps.generated import rows
-
-    defined = [n for n in dir(rows) if n.startswith("store_row_")]
-    assert len(ROW_STORES) >= 2 and sorted(store for _, store in ROW_STORES) == sorted(defined)
-
-
-@pytest.mark.parametrize("module, store", ROW_STORES)
-def test_batch_row_store_flags_a_derivative_that_is_not_finite(module, store):
-    """A batch row whose values exist but a derivative does not (inf or NaN, at the first or the
-    last derivative column) is NUMERICAL_RANGE with NaN everywhere, as the scalar API reports it; a
-    finite row, a non-finite value (not a derivative) and a failed row are stored as they are."""
-    import importlib
-
-    fn = getattr(importlib.import_module(f"slipmaps.generated.{module}"), store)
-    first, n = map(int, store.removeprefix("store_row_").split("_"))
-    ok, failed, numerical = (
-        int(s) for s in (slipmaps.Status.OK, slipmaps.Status.FALL, slipmaps.Status.NUMERICAL_RANGE)
-    )
-    out = np.zeros((2, n))
-    status = np.zeros(2, dtype=np.int64)
-    good = tuple(float(j) for j in range(n))
-
-    def put(values, code):
-        fn(out, status, 1, (*values, code))
-        return out[1].copy(), int(status[1])
-
-    row, code = put(good, ok)
-    assert code == ok and np.array_equal(row, good)
-    for column in (first, n - 1):
+    n = 12
+    good = np.arange(float(n))
+    assert support.finite(good)
+    for column in (4, n - 1):
         for bad in (np.inf, -np.inf, np.nan):
-            values = list(good)
-            values[column] = bad
-            row, code = put(values, ok)
-            assert code == numerical and np.isnan(row).all(), (column, bad)
-            row, code = put(values, failed)  # a failed row is not checked again
-            assert code == failed and np.array_equal(row, values, equal_nan=True)
-    values = list(good)
-    values[first - 1] = np.inf  # a value, not a derivative
-    row, code = put(values, ok)
-    assert code == ok and np.array_equal(row, values)
-    assert np.array_equal(out[0], np.zeros(n)) and status[0] == 0  # only row 1 written
+            row = good.copy()
+            row[column] = bad
+            assert not support.finite(row), (column, bad)
+            code = support.fail(row, int(slipmaps.Status.NUMERICAL_RANGE))
+            assert code == int(slipmaps.Status.NUMERICAL_RANGE) and np.isnan(row).all()
+    text = "\n".join(
+        p.read_text() for p in (Path(slipmaps.generated.__file__).resolve().parent).glob("*_jacobian.py")
+    )
+    # every role kernel ends in that check (the batch form runs the same kernel per row)
+    assert text.count("if not finite(out):") >= 2 * len(slipmaps.maps()), "role Jacobians check their rows"

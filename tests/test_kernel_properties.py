@@ -32,6 +32,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import kernels
 import numpy as np
 import pytest
 import slipmaps
@@ -85,11 +86,17 @@ class Kernel:
         return tuple(self.row["options"]) if self.row else ()
 
     def call(self, env: dict):
-        return self.scalar(*(env[a] for a in self.args))
+        """The kernel at the arguments of ``env`` (by name, whatever its calling convention)."""
+        return kernels.invoke(kernels.declaration(self.module, self.name), env)
+
+    @property
+    def module(self) -> str:
+        return self.scalar.py_func.__module__
 
 
 def _map_kernels(row: dict) -> list[Kernel]:
-    """A map's stance, state-at-time and apex-return kernels, as the index publishes them."""
+    """A map's stance, state-at-time and apex-return role kernels, as the index publishes them (the
+    arguments each reads: its declaration's)."""
     extras = tuple(e["name"] for e in row["extras"])
     expected = {"stance": STANCE + extras, "state_at": TRAJECTORY, "apex_return": APEX + extras}
     out = []
@@ -97,12 +104,11 @@ def _map_kernels(row: dict) -> list[Kernel]:
         spec = row["kernels"].get(role)
         if spec is None:
             continue
-        assert tuple(spec["outputs"]) == outputs, (row["name"], role)
+        assert tuple(spec["out"]) == outputs, (row["name"], role)
         module = importlib.import_module(f"slipmaps.generated.{spec['module']}")
-        scalar, batch = getattr(module, spec["name"]), getattr(module, f"{spec['name']}_batch")
-        out.append(
-            Kernel(spec["name"], role, row, scalar, batch, tuple(spec["args"]), outputs, tuple(spec["rows"]))
-        )
+        scalar, batch = getattr(module, spec["name"]), getattr(module, f"{spec['name']}_rows")
+        args = kernels.declaration(spec["module"], spec["name"]).arg_names
+        out.append(Kernel(spec["name"], role, row, scalar, batch, args, outputs, tuple(spec["x"])))
     return out
 
 
@@ -367,11 +373,12 @@ def check_physics(kernel: Kernel, env: dict, res) -> None:
 # ----------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("kernel", MAP_KERNELS, ids=_ids(MAP_KERNELS))
 def test_kernel_signatures_match_the_index(kernel):
-    """The argument names this file calls the kernels with are the kernels' own."""
-    assert _signature(kernel.scalar) == kernel.args
-    assert _signature(kernel.batch) == (*kernel.args, "out", "status")
+    """The argument names this file calls the kernels with are the kernels' own: role kernels of
+    the index's layouts, the inputs x among the arguments, the options that are kernel arguments
+    last."""
+    assert _signature(kernel.scalar) == ("x", "p", "out")
+    assert _signature(kernel.batch) == ("X", "P", "OUT", "STATUS")
     assert set(kernel.rows) <= set(kernel.args)
-    # the options that are kernel arguments come last (one with kernels per choice is none)
     options = tuple(o["name"] for o in kernel.options if o["kernel"])
     assert kernel.args[len(kernel.args) - len(options) :] == options
 
@@ -680,23 +687,15 @@ def test_apex_return_is_descent_then_stance_then_ascent(kernel, data):
 # Batch forms == scalar forms, row by row
 # ----------------------------------------------------------------------------------------------
 def run_batch(kernel: Kernel, env: dict, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The batch kernel over ``rows`` (one column per batch argument) with the scalars of ``env``.
-
-    The rows are passed as the public API passes them (one compiled specialization each): stance
-    rows as column views of one (n, 4) array, apex rows as read-only contiguous arrays, times as a
-    contiguous array.
-    """
+    """The batch form over ``rows`` (one column per input of x) with the parameter record of
+    ``env`` (its fields by the index's names), as the public API calls it."""
     n = rows.shape[0]
-    if kernel.role == "stance":
-        cols = {a: rows[:, j] for j, a in enumerate(kernel.rows)}
-    else:
-        cols = {a: np.ascontiguousarray(rows[:, j]) for j, a in enumerate(kernel.rows)}
-        if kernel.role == "apex_return":
-            for col in cols.values():
-                col.flags.writeable = False
+    spec = kernel.row["kernels"][kernel.role]
+    X = np.ascontiguousarray(rows, dtype=float)
+    P = np.array([[float(env.get(f, math.nan)) for f in spec["p"]]])
     out = np.empty((n, len(kernel.outputs)))
     status = np.empty(n, dtype=np.int64)
-    kernel.batch(*(cols[a] if a in cols else env[a] for a in kernel.args), out, status)
+    kernel.batch(X, P, out, status)
     return out, status
 
 
@@ -1043,7 +1042,10 @@ def test_regression_underflow_is_a_status(kernel):
 def test_regression_flight_overflow_is_numerical_range(name, args):
     # These used to return inf / NaN outputs with status OK.
     kernel = next(k for k in FLIGHT_KERNELS if k.name == name)
-    assert check_contract(kernel, kernel.scalar(*args)) == Status.NUMERICAL_RANGE
+    assert (
+        check_contract(kernel, kernel.call(dict(zip(kernel.args, args, strict=True))))
+        == Status.NUMERICAL_RANGE
+    )
 
 
 @pytest.mark.parametrize("kernel", ROLE["state_at"], ids=_ids(ROLE["state_at"]))

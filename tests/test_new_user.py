@@ -186,8 +186,9 @@ def test_read_only_install_without_a_writable_home(tmp_path):
 def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp_path):
     """Issue 16's root cause: numba wrote its cache into the installed package, and the files left by
     `pip uninstall` shadowed the next (editable) install. Every compiled kernel of slipmaps, generated
-    or the exact simulator's, is cached under $XDG_CACHE_HOME/slipmaps/numba (or NUMBA_CACHE_DIR when
-    set), in a folder per source directory; other numba code keeps numba's own default."""
+    (the exact simulator's included) or hand-written, is cached under $XDG_CACHE_HOME/slipmaps/numba
+    (or NUMBA_CACHE_DIR when set), in a folder per source directory; other numba code keeps numba's
+    own default."""
     site = _installed_copy(tmp_path / "install")
     foreign = tmp_path / "foreign"
     foreign.mkdir()
@@ -214,7 +215,7 @@ def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp
     assert Path(root) == xdg / "slipmaps" / "numba" and Path(kernel_dir).parent == Path(root)
     assert Path(other_dir) == foreign / "__pycache__", other_dir  # numba's default for other code
     cached = {p.parent.name.split("_")[0] for p in Path(root).rglob("*.nbi")}
-    assert cached == {"generated", "exact"}, cached  # the generated maps and the exact simulator
+    assert cached == {"generated"}, cached  # the generated maps and the exact simulator
     assert not list(site.rglob("*.nbi")) and not list(site.rglob("*.nbc")), "numba cached inside the install"
     # NUMBA_CACHE_DIR, numba's own setting, still wins
     mine = tmp_path / "mine"
@@ -231,16 +232,16 @@ def test_kernels_are_cached_outside_the_package_reinstall_cannot_be_shadowed(tmp
 
 def test_a_kernel_calling_other_files_is_cached_under_the_digest_of_the_kernel_sources(tmp_path):
     """numba checks only a cached kernel's own file, but the kernel holds the compiled code of what it
-    calls: with runtime/exact/compiled.py changed and runtime/exact/kernels.py not, the cached exact
-    stance would keep the old integrator. A kernel outside the generated
-    modules (whose headers hash their callees) is cached in a folder named after the digest of every
-    kernel source's content, which any edit of one changes."""
+    calls: the deadbeat solver's cached solve (runtime/control/compiled.py) holds the generated
+    kernels it calls. A kernel outside the generated modules (whose headers hash the generated
+    modules they import) is cached in a folder named after the digest of every kernel source's
+    content, which any edit of one changes."""
     from slipmaps import kernel_cache
-    from slipmaps.runtime.exact import kernels
+    from slipmaps.runtime.control import compiled
 
     sources = kernel_cache.kernel_sources()
     names = {Path(p).name for p in sources}
-    assert {"compiled.py", "kernels.py", "dop853.py", "flight.py", "geyer.py"} <= names, names
+    assert {"compiled.py", "exact_stance.py", "dop853.py", "flight.py", "geyer.py"} <= names, names
     files = [tmp_path / "a.py", tmp_path / "b.py"]
     for f, text in zip(files, ("x = 1\n", "y = 2\n"), strict=True):
         f.write_text(text)
@@ -251,7 +252,7 @@ def test_a_kernel_calling_other_files_is_cached_under_the_digest_of_the_kernel_s
     if kernel_cache.cache_root() is not None:  # (NUMBA_CACHE_DIR set: numba's own folders)
         from slipmaps.generated import geyer
 
-        assert kernels.stance._cache._cache_path.endswith("-" + kernel_cache.sources_digest())
+        assert compiled.solve_rows._cache._cache_path.endswith("-" + kernel_cache.sources_digest())
         assert kernel_cache.sources_digest() not in geyer.geyer_stance._cache._cache_path
 
 

@@ -3,7 +3,7 @@
 Declared like every other map (a :class:`~..mapspec.MapSpec`), so the generated composition that
 gives every map its apex return (the exact flights, the ground, the signed speed, the step
 geometry) and its Jacobians gives the exact map the same ones. Only its stance is not a closed
-form: it is the hand-written kernel ``slipmaps.runtime.exact.kernels.stance`` (numba-compiled
+form: it is the kernel ``stance`` of the generator's support module ``exact_stance`` (numba-compiled
 DOP853 with events for the bottom, where k_c switches to k_d, liftoff and the failures), declared
 here as an *external* kernel with its Jacobian (the variational equations with saltation at the
 bottom, ``stance_jacobian``), which the generated derivatives go through.
@@ -24,9 +24,11 @@ from .. import catalog
 from ..halfspec import HALF_OUTPUTS, HalfInputs, HalfSpec, start_args
 from ..ir import Call, Group, Kernel
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
+from ..model.simulation import DEFAULT_ATOL, DEFAULT_RTOL
 from ..tangent import derivative_fields
 
-_MODULE = "slipmaps.runtime.exact.kernels"
+#: The support module of the exact stance's kernels (derive/templates/exact_stance.py.j2).
+_MODULE = "exact_stance"
 _PARAMS = ("m", "l0", "k_c", "k_d", "g_s")
 
 _OPTIONS = (
@@ -40,8 +42,8 @@ _OPTIONS = (
         ),
         backends=(("scipy", "slipmaps.runtime.exact.reference"),),
     ),
-    Option("rtol", "relative tolerance of the DOP853 integration", 1e-11, low=1e-14, high=1e-3),
-    Option("atol", "absolute tolerance of the DOP853 integration", 1e-12, low=1e-16, high=1e-3),
+    Option("rtol", "relative tolerance of the DOP853 integration", DEFAULT_RTOL, low=1e-14, high=1e-3),
+    Option("atol", "absolute tolerance of the DOP853 integration", DEFAULT_ATOL, low=1e-16, high=1e-3),
 )
 
 #: The arguments of the external stance kernels, in their order: the stance kernel's.
@@ -95,13 +97,11 @@ def _build(inputs: MapInputs) -> MapBuild:
 
     def state_at(t) -> tuple:
         bind = {name: name for name in STATE_AT.output_names}
-        return (
-            Call(STATE_AT, {"t": t, **args}, bind, comment="the exact state at t (runtime/exact/kernels.py)"),
-        )
+        return (Call(STATE_AT, {"t": t, **args}, bind, comment="the exact state at t (exact_stance)"),)
 
     bind = {name: name for name in STANCE.output_names}
     return MapBuild(
-        steps=(Call(STANCE, args, bind, comment="the exact stance (runtime/exact/kernels.py)"),),
+        steps=(Call(STANCE, args, bind, comment="the exact stance (exact_stance)"),),
         state_at=state_at,
     )
 
@@ -135,7 +135,12 @@ def _half_build(kernel: Kernel):
     def build(inputs: HalfInputs) -> tuple:
         bind = {name: name for name in kernel.output_names}
         return (
-            Call(kernel, {a.name: a.symbol for a in kernel.args}, bind, comment="runtime/exact/kernels.py"),
+            Call(
+                kernel,
+                {a.name: a.symbol for a in kernel.args},
+                bind,
+                comment="the exact half (exact_stance)",
+            ),
         )
 
     return build

@@ -165,7 +165,7 @@ def quartic_kernel() -> Kernel:
     start is the larger of two points where V >= E: the smaller root of the spring-and-gravity part
     alone and |p_th| / sqrt(2 m (E - its minimum)). A root above l0 or no root at all (E below the
     minimum of V: the Newton step turns back) is a status."""
-    p, energy = sym("p"), sym("E_ab")
+    p, energy = sym("p_b"), sym("E_ab")
     stiffness = k_c
     # V - E from the quartic (153) (the registry checks it): q^2 (V - E) / q^2
     gap = sp.expand(bottom_quartic() / q_r**2).subs({q_r: _Q, p_th: p, E: energy})
@@ -181,7 +181,7 @@ def quartic_kernel() -> Kernel:
         summary="Bottom leg length of (153): the compressing root of the quartic in (0, l0] (Newton).",
         equations=("153",),
         args=(
-            Arg(p, "angular momentum p_th [kg m^2/s]"),
+            Arg(p, "angular momentum p_th at the bottom [kg m^2/s]"),
             Arg(energy, "total energy E_ab [J]"),
             catalog.PARAMS["m"],
             catalog.PARAMS["l0"],

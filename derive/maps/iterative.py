@@ -31,7 +31,7 @@ import sympy as sp
 
 from .. import catalog
 from ..halfspec import HalfInputs, HalfSpec
-from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
+from ..ir import Arg, Call, Field, Group, Guard, Iterate, Kernel, Lookup, Nodes, Reduce, Stage, Step, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import g_s, k_c, k_d, l0, m, p_th, q_r, q_th
@@ -40,9 +40,11 @@ from .iterative_helpers import (
     held_liftoff,
     leg_length_derivatives,
     radial_force,
+    zeroth_arguments,
     zeroth_bottom,
     zeroth_liftoff,
     zeroth_option,
+    zeroth_values,
 )
 
 __all__ = ["NODE_COUNTS", "u_rates", "half_kernel", "declare_maps", "declare_halves"]
@@ -67,112 +69,152 @@ def u_rates(stiffness: sp.Symbol) -> tuple[sp.Basic, sp.Basic, sp.Basic]:
     return tuple(sp.simplify((r * 2 * _D * _U).subs(p_r, momentum)) for r in rates)
 
 
-def _n(prefix: str, name: str, j: int | None = None) -> sp.Symbol:
-    return sym(f"{prefix}{name}" if j is None else f"{prefix}{name}{j}")
+def rule_tables(selector: sp.Symbol) -> Lookup:
+    """The Gauss-Legendre rules of every node count as data (:mod:`.quadrature_helpers`), chosen by
+    option ``nodes``' code: the count ``nq``, the nodes ``u``, the weights ``w`` (of int_0^1) and
+    ``w1`` (of int_0^1 v), the integration matrices ``S`` and ``S1`` (of int_0^{u_j})."""
+    rules = {NODES.code(str(n)): quadrature_helpers.rule(n) for n in NODE_COUNTS}
 
+    def table(get) -> tuple:
+        return tuple((code, get(r)) for code, r in rules.items())
 
-def _dot(row, values) -> sp.Basic:
-    return sp.Add(*(c * v for c, v in zip(row, values, strict=True)))
+    def vector(v) -> tuple:
+        return tuple(float(x) for x in v)
 
-
-def _evaluate(prefix: str, rule: quadrature_helpers.Rule, stiffness, base, D, Q, P) -> Stage:
-    """Node quantities of one pass: sigma, F_r, Psi and the u-rates (t, q_th, p_th) at each node."""
-    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
-    rows, guards = [], []
-    F = [_n(prefix, "F", j) for j in range(rule.n)]
-    for j, u in enumerate(rule.nodes):
-        sigma = _n(prefix, "sigma", j)
-        rows += [(sigma, base + D * u**2), (F[j], F_r.subs({q_r: sigma, q_th: Q[j], p_th: P[j]}))]
-    for j, u in enumerate(rule.nodes):
-        psi, sigma = _n(prefix, "Psi", j), _n(prefix, "sigma", j)
-        rows.append((psi, _dot(rule.S1[j], F) / u**2))
-        guards.append(Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"))
-        at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q[j], p_th: P[j]}
-        rows += [
-            (_n(prefix, "ft", j), dt.subs(at)),
-            (_n(prefix, "fq", j), dq.subs(at)),
-            (_n(prefix, "fp", j), dp.subs(at)),
-        ]
-    return Stage(
-        tuple(rows), tuple(guards), comment="node values: sigma, F_r (29), Psi, u-rates of (30)-(32)"
+    return Lookup(
+        selector,
+        (
+            ("nq", table(lambda r: float(r.n))),
+            ("u", table(lambda r: vector(r.nodes))),
+            ("w", table(lambda r: vector(r.w))),
+            ("w1", table(lambda r: vector(r.w1))),
+            ("S", table(lambda r: tuple(vector(row) for row in r.S))),
+            ("S1", table(lambda r: tuple(vector(row) for row in r.S1))),
+        ),
+        comment="the Gauss-Legendre rule of the node count: nodes u, weights, integration matrices",
     )
 
 
-def _rates(prefix: str, rule: quadrature_helpers.Rule, name: str) -> list[sp.Symbol]:
-    return [_n(prefix, name, j) for j in range(rule.n)]
-
-
-def _bottom_quadratic(rule, prefix, stiffness, top, p_r_top, D) -> sp.Basic:
-    """D = q_r_td - q_r_b from p_r_td^2/(2 m) = k (l0 - q_r_td) D + k D^2/2 + D Rbar, Rbar the mean
-    of F_r minus the spring term (2 int_0^1 (F_r - k (l0 - sigma)) u du); its positive root."""
-    spring = [stiffness * (l0 - _n(prefix, "sigma", j)) for j in range(rule.n)]
-    rbar = 2 * _dot(rule.w1, [f - s for f, s in zip(_rates(prefix, rule, "F"), spring, strict=True)])
-    b, c = stiffness * (l0 - top) + rbar, p_r_top**2 / (2 * m)
-    return 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
-
-
-def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step, ...]:
-    """Steps of one half-stance with ``rule``; ``kind`` "compression" or "decompression"."""
-    n = rule.n
+def _half_steps(kind: str, a: dict) -> tuple[Step, ...]:
+    """Steps of one half-stance (``kind`` "compression" or "decompression"): Picard passes on the
+    node values Q_j = q_th(u_j), P_j = p_th(u_j) of the rule chosen by option ``nodes`` (node
+    loops over the rule's data: one kernel for every node count)."""
     compress = kind == "compression"
     stiffness = k_c if compress else k_d
+    nq, u, D = sym("nq"), sym("_u"), sym("_D")
+    Q, P = sym("_Qj"), sym("_Pj")
     th0, pth0 = a["q_th"], m * a["q_r"] ** 2 * a["q_thd"]
     # zeroth iterate: linear in u between the bottom (u = 0) and the far end (u = 1)
     if compress:
         guess_b = m * a["guess_q_r"] ** 2 * a["guess_q_thd"]
-        start_q = [a["guess_q_th"] + (th0 - a["guess_q_th"]) * u for u in rule.nodes]
-        start_p = [guess_b + (pth0 - guess_b) * u for u in rule.nodes]
+        start_q = a["guess_q_th"] + (th0 - a["guess_q_th"]) * u
+        start_p = guess_b + (pth0 - guess_b) * u
     else:
         guess_lo = m * catalog.PARAMS["q_r_lo"].symbol ** 2 * a["guess_q_thd"]
-        start_q = [th0 + (a["guess_q_th"] - th0) * u for u in rule.nodes]
-        start_p = [pth0 + (guess_lo - pth0) * u for u in rule.nodes]
-    Q = [_n("_", "Q", j) for j in range(n)]
-    P = [_n("_", "P", j) for j in range(n)]
-    D = sym("_D")
+        start_q = th0 + (a["guess_q_th"] - th0) * u
+        start_p = pth0 + (guess_lo - pth0) * u
     top = a["q_r"]
     if compress:
-        d0 = top - a["guess_q_r"]
-        base = top - D
+        d0, base = top - a["guess_q_r"], top - D
     else:
-        d0 = catalog.PARAMS["q_r_lo"].symbol - top
-        base = top
-    fq, fp = _rates("_i", rule, "fq"), _rates("_i", rule, "fp")
+        d0, base = catalog.PARAMS["q_r_lo"].symbol - top, top
+    F_r, (dt, dq, dp) = radial_force(stiffness), u_rates(stiffness)
+    sigma, F, psi, s1f = sym("_sigma"), sym("_F"), sym("_Psi"), sym("_S1F")
+    at = {_D: D, _PSI: psi, _U: u, q_r: sigma, q_th: Q, p_th: P}
+    evaluate = (
+        Nodes(
+            nq,
+            ((Q, "Q"), (P, "P"), (u, "u")),
+            (),
+            (Stage(((sigma, base + D * u**2), (F, F_r.subs({q_r: sigma, q_th: Q, p_th: P})))),),
+            ((sigma, "sigma"), (F, "F")),
+            comment="node values of the pass: sigma, F_r (29)",
+        ),
+        Nodes(
+            nq,
+            ((Q, "Q"), (P, "P"), (u, "u"), (sigma, "sigma")),
+            ((s1f, "S1", "F"),),
+            (
+                Stage(
+                    (
+                        (psi, s1f / u**2),
+                        (sym("_ft"), dt.subs(at)),
+                        (sym("_fq"), dq.subs(at)),
+                        (sym("_fp"), dp.subs(at)),
+                    ),
+                    (Guard(psi > 0, "IMAGINARY_MOMENTUM", "p_r^2 = 2 m int F_r > 0 at every node"),),
+                ),
+            ),
+            ((sym("_ft"), "ft"), (sym("_fq"), "fq"), (sym("_fp"), "fp")),
+            comment="Psi and the u-rates of (30)-(32) at the nodes",
+        ),
+    )
+    sfq, sfp, wfq, wfp = sym("_Sfq"), sym("_Sfp"), sym("_wfq"), sym("_wfp")
     if compress:  # from the touchdown end: y(u_j) = y_td + int_{u_j}^1
-        new_q = [th0 + _dot(rule.w, fq) - _dot(rule.S[j], fq) for j in range(n)]
-        new_p = [pth0 + _dot(rule.w, fp) - _dot(rule.S[j], fp) for j in range(n)]
-        new_d = _bottom_quadratic(rule, "_i", stiffness, top, m * a["q_rd"], D)
+        new_q, new_p = th0 + wfq - sfq, pth0 + wfp - sfp
+        rbar = sym("_rbar")
+        spring = Nodes(
+            nq,
+            ((F, "F"), (sigma, "sigma")),
+            (),
+            (),
+            ((F - stiffness * (l0 - sigma), "G"),),
+            comment="F_r minus its spring term",
+        )
+        b, c = stiffness * (l0 - top) + 2 * rbar, (m * a["q_rd"]) ** 2 / (2 * m)
+        new_d = 2 * c / (b + sp.sqrt(b**2 + 2 * stiffness * c))
+        update_d = (spring, Reduce(rbar, "w1", "G", nq))
     else:  # from the bottom: y(u_j) = y_b + int_0^{u_j}
-        new_q = [th0 + _dot(rule.S[j], fq) for j in range(n)]
-        new_p = [pth0 + _dot(rule.S[j], fp) for j in range(n)]
-        new_d = D
+        new_q, new_p = th0 + sfq, pth0 + sfp
+        new_d, update_d = D, ()
+    body = (
+        Reduce(wfq, "w", "fq", nq),
+        Reduce(wfp, "w", "fp", nq),
+        *update_d,
+        Nodes(
+            nq,
+            (),
+            ((sfq, "S", "fq"), (sfp, "S", "fp")),
+            (),
+            ((new_q, "Q_next"), (new_p, "P_next")),
+            comment="the next iterate at the nodes",
+        ),
+        Stage(
+            ((sym("_D_next"), new_d),), comment="D = q_r_td - q_r_b from the radial work" if compress else ""
+        ),
+    )
     scale_p = sp.Abs(pth0) + m * l0 * sp.sqrt(g_s * l0)
     iterate = Iterate(
-        state=((D, d0), *zip(Q, start_q, strict=True), *zip(P, start_p, strict=True)),
-        evaluate=(_evaluate("_i", rule, stiffness, base, D, Q, P),),
-        body=(),
-        update=(new_d, *new_q, *new_p),
+        state=((D, d0),),
+        arrays=(("Q", "Q0", "Q_next", sp.S.One), ("P", "P0", "P_next", scale_p)),
+        nodes=nq,
+        evaluate=evaluate,
+        body=body,
+        update=(sym("_D_next"),),
         max_iter=sym("iterations"),
         tol=sym("tol"),
-        scales=(l0,) + (sp.S.One,) * n + (scale_p,) * n,
+        scales=(l0,),
         count=sym("_passes"),
-        comment=f"Picard passes on the {n} node values (collocation in u)",
+        comment="Picard passes on the node values (collocation in u)",
     )
-    # The node values at the final iterate are the loop's last evaluation (Iterate.evaluate).
+    start = Nodes(
+        nq, ((u, "u"),), (), (), ((start_q, "Q0"), (start_p, "P0")), comment="the zeroth iterate at the nodes"
+    )
     # Both halves: y_end = y_anchor + int_0^1 (the compression half runs toward u = 0 in time, the
     # decompression half toward u = 1; in both the u-rates point along the motion).
-    q_th_end = th0 + _dot(rule.w, _rates("_i", rule, "fq"))
-    p_th_end = pth0 + _dot(rule.w, _rates("_i", rule, "fp"))
-    common = ((sym("t_half"), _dot(rule.w, _rates("_i", rule, "ft"))), (sym("end_q_th"), q_th_end))
+    t_half, q_end, p_end = sym("_t_end"), sym("_q_end"), sym("_p_end")
+    sums = (Reduce(t_half, "w", "ft", nq), Reduce(q_end, "w", "fq", nq), Reduce(p_end, "w", "fp", nq))
+    common = ((sym("t_half"), t_half), (sym("end_q_th"), th0 + q_end))
+    steps = (rule_tables(sym("nodes")), start, iterate, *sums)
     if compress:
         q_r_b = sym("end_q_r")
-        return (
-            iterate,
+        return steps + (
             Stage(
                 (
                     *common,
                     (q_r_b, top - D),
                     (sym("end_q_rd"), sp.S.Zero),
-                    (sym("end_q_thd"), p_th_end / (m * q_r_b**2)),
+                    (sym("end_q_thd"), (pth0 + p_end) / (m * q_r_b**2)),
                     (sym("passes"), sym("_passes")),
                 ),
                 (Guard(q_r_b > 0, "FALL", "bottom leg length q_r_b > 0"),),
@@ -180,18 +222,15 @@ def _half_case(rule: quadrature_helpers.Rule, kind: str, a: dict) -> tuple[Step,
             ),
         )
     work, q_r_lo = sym("_work"), catalog.PARAMS["q_r_lo"].symbol
-    return (
-        iterate,
-        Stage(
-            ((work, _dot(rule.w1, _rates("_i", rule, "F"))),),
-            (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),),
-        ),
+    return steps + (
+        Reduce(work, "w1", "F", nq),
+        Stage((), (Guard(work > 0, "NO_LIFTOFF", "p_r_lo^2 = 4 m D int_0^1 F_r u du > 0"),)),
         Stage(
             (
                 *common,
                 (sym("end_q_r"), q_r_lo),
                 (sym("end_q_rd"), sp.sqrt(4 * m * D * work) / m),
-                (sym("end_q_thd"), p_th_end / (m * q_r_lo**2)),
+                (sym("end_q_thd"), (pth0 + p_end) / (m * q_r_lo**2)),
                 (sym("passes"), sym("_passes")),
             ),
             comment="liftoff state: p_r_lo^2 = 2 m int F_r (work form)",
@@ -205,7 +244,6 @@ NODES = Option(
     "4",
     tuple((str(n), f"{n} node{'s' if n > 1 else ''}") for n in NODE_COUNTS),
     roles=("accuracy-variants",),
-    specialize=True,
 )
 ITERATIONS = Option(
     "iterations",
@@ -256,7 +294,6 @@ def half_kernel(kind: str) -> Kernel:
             Guard(radial_force(k_d).subs(at_start) > 0, "RECOMPRESSION", "F_r > 0 at the bottom with k_d"),
         )
     )
-    cases = tuple((NODES.code(str(n)), _half_case(quadrature_helpers.rule(n), kind, a)) for n in NODE_COUNTS)
     outputs = Group(
         "",
         (
@@ -273,10 +310,7 @@ def half_kernel(kind: str) -> Kernel:
         if not compress
         else ("115", "116", "117", "118", "123"),
         args=anchor + params + guess + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
-        steps=(
-            Stage((), first),
-            Switch(NODES.symbol, cases, comment="node count"),
-        ),
+        steps=(Stage((), first), *_half_steps(kind, a)),
         outputs=outputs,
         module="iterative",
     )
@@ -285,16 +319,19 @@ def half_kernel(kind: str) -> Kernel:
 _POLAR_NAMES = tuple(f.name for f in catalog.POLAR)
 
 
-def _build(inp: MapInputs) -> MapBuild:
-    q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
-    p = inp.params
-    options = {o: inp.opt(o) for o in ("nodes", "iterations", "tol")}
-    before, after = zeroth_bottom(inp.touchdown, p, p["q_r_lo"]), zeroth_liftoff(p["q_r_lo"])
+@cache
+def core_kernel() -> Kernel:
+    """The whole stance from the touchdown state and a zeroth iterate (:func:`~.iterative_helpers.
+    zeroth_arguments`): the compression half, the zeroth iterate's liftoff, the decompression half.
+    One kernel for every choice of ``zeroth``: a choice's stance calls its zeroth map, then this."""
+    from ..catalog import PARAMS, TOUCHDOWN
+
+    q_r_td, q_rd_td, q_th_td, q_thd_td = (a.symbol for a in TOUCHDOWN)
+    p = {n: PARAMS[n].symbol for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")}
+    options = {o: sym(o) for o in ("nodes", "iterations", "tol")}
     compression, decompression = half_kernel("compression"), half_kernel("decompression")
     physical = {q: p[q] for q in ("m", "l0", "g_s")}
     steps = (
-        Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
-        before,
         Call(
             compression,
             {
@@ -314,7 +351,7 @@ def _build(inp: MapInputs) -> MapBuild:
             },
             comment="compression half, k_c (report 5.2.1)",
         ),
-        after,
+        zeroth_liftoff(p["q_r_lo"]),
         Call(
             decompression,
             {
@@ -345,7 +382,38 @@ def _build(inp: MapInputs) -> MapBuild:
             (Guard(sp.Abs(sym("liftoff_q_th")) < sp.pi / 2, "FALL", "the leg stays above horizontal"),),
         ),
     )
-    return MapBuild(steps=steps, helpers=(compression, decompression))
+    return Kernel(
+        name="iterative_core",
+        summary="Schwind and Koditschek's iteration, converging form: the stance from the touchdown state "
+        "and a zeroth iterate.",
+        equations=_EQUATIONS,
+        args=TOUCHDOWN
+        + tuple(PARAMS[n] for n in p)
+        + zeroth_arguments()
+        + (NODES.arg(), ITERATIONS.arg(), TOL.arg()),
+        steps=steps,
+        outputs=catalog.STANCE + Group("", (_PASSES_WHOLE,)),
+        module="iterative",
+        check_inputs=False,
+    )
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    q_r_td, q_rd_td, q_th_td, q_thd_td = inp.touchdown
+    p = inp.params
+    core = core_kernel()
+    args = {
+        **dict(zip((a.name for a in catalog.TOUCHDOWN), inp.touchdown, strict=True)),
+        **{n: p[n] for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")},
+        **zeroth_values(),
+        **{o: inp.opt(o) for o in ("nodes", "iterations", "tol")},
+    }
+    steps = (
+        Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
+        zeroth_bottom(inp.touchdown, p, p["q_r_lo"]),
+        Call(core, args, {n: n for n in core.output_names}, comment="the iteration from the zeroth iterate"),
+    )
+    return MapBuild(steps=steps, helpers=(half_kernel("compression"), half_kernel("decompression")))
 
 
 _EQUATIONS = ("27", "29", "30", "31", "32", "33", "35", "37", "41", "114", "115", "116", "117", "118", "137")
@@ -364,7 +432,7 @@ def declare_maps() -> tuple[MapSpec, ...]:
             params=("m", "l0", "k_c", "k_d", "g_s"),
             build=_build,
             options=(NODES, ITERATIONS, TOL, zeroth_option()),
-            extras=(Field("passes", "Picard passes run (the larger of the two halves)", "1"),),
+            extras=(_PASSES_WHOLE,),
             summary="both halves by Picard passes on Gauss nodes in u = sqrt(q_r - q_r_b); p_r from the "
             "radial work; k_c before the bottom, k_d after",
             notes="Converging form of (30)-(45) and (116)-(151): p_r^2 = 2 m int F_r (work form) instead "
@@ -375,6 +443,7 @@ def declare_maps() -> tuple[MapSpec, ...]:
     )
 
 
+_PASSES_WHOLE = Field("passes", "Picard passes run (the larger of the two halves)", "1")
 _HALF_OUTPUTS = {"t_half": "t_half", **{f"end_{q}": f"end_{q}" for q in _POLAR_NAMES}, "passes": "passes"}
 _PASSES = Field("passes", "Picard passes run", "1")
 

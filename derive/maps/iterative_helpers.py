@@ -40,7 +40,7 @@ from functools import cache
 import sympy as sp
 
 from .. import catalog
-from ..ir import Stage, Switch, sym
+from ..ir import Arg, Call, Field, Group, Kernel, Stage, Switch, sym
 from ..mapspec import MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, k_c, k_d, m, p_r, p_th, q_r, q_r_td, q_th, q_th_td, t
@@ -84,8 +84,12 @@ __all__ = [
     "zeroth_maps",
     "zeroth_option",
     "zeroth_bottom",
+    "held_kernel",
     "held_liftoff",
+    "zeroth_arguments",
+    "zeroth_values",
     "zeroth_liftoff",
+    "ZEROTH_OUTPUTS",
 ]
 
 sigma = sp.Symbol("sigma", positive=True)  # leg length as the integration variable
@@ -376,30 +380,60 @@ def zeroth_option() -> Option:
     )
 
 
+#: What a zeroth iterate gives the iteration: its bottom's leg length, angle and angle rate, its
+#: liftoff's angle and angle rate.
+ZEROTH_OUTPUTS = ("z_b_q_r", "z_b_q_th", "z_b_q_thd", "z_lo_q_th", "z_lo_q_thd")
+
+
+@cache
+def held_kernel() -> Kernel:
+    """The held touchdown state as a zeroth iterate, a kernel (so that every choice of ``zeroth`` is a
+    call, and the iteration's kernels are one for all of them): the bottom from p_r_td^2 = 2 m F_r(td)
+    D + k_c D^2, the touchdown angle and angular momentum held; the liftoff is the held bottom's,
+    taken after the compression half (:func:`zeroth_liftoff`, flag ``held``)."""
+    from ..catalog import PARAMS, TOUCHDOWN
+
+    q_r_td, q_rd_td, q_th_td, q_thd_td = (a.symbol for a in TOUCHDOWN)
+    p_td = m * q_r_td**2 * q_thd_td
+    b = radial_force(k_c).subs({q_r: q_r_td, q_th: q_th_td, p_th: p_td})
+    c = (m * q_rd_td) ** 2 / (2 * m)
+    z_b = sym("z_b_q_r")
+    return Kernel(
+        name="zeroth_held",
+        summary="The zeroth iterate 'held': the touchdown state held, the bottom from the radial work.",
+        equations=(),
+        args=TOUCHDOWN + tuple(PARAMS[n] for n in ("m", "l0", "k_c", "g_s")),
+        steps=(
+            Stage(
+                (
+                    (z_b, q_r_td - 2 * c / (b + sp.sqrt(b**2 + 2 * k_c * c))),
+                    (sym("z_b_q_th"), q_th_td),
+                    (sym("z_b_q_thd"), p_td / (m * z_b**2)),
+                    (sym("z_lo_q_th"), sp.S.Zero),  # replaced after the bottom
+                    (sym("z_lo_q_thd"), sp.S.Zero),
+                ),
+                comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
+            ),
+        ),
+        outputs=Group("", tuple(Field(n, f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS)),
+        module="iterative",
+        check_inputs=False,
+        check_outputs=False,
+    )
+
+
 def zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
-    """The zeroth iterate's bottom (``z_b_*``; a map's choice also its liftoff, ``z_lo_*``) from
-    the touchdown state, before the compression half. A map runs at its default options with the
-    stiffness k_c (q_r_lo as given: a compression half passes q_r_td, as only the bottom is used)."""
+    """The zeroth iterate (:data:`ZEROTH_OUTPUTS`) from the touchdown state, before the compression
+    half: a call of the chosen map's stance at its default options with the stiffness k_c (q_r_lo
+    as given: a compression half passes q_r_td, as only the bottom is used), or of
+    :func:`held_kernel`. A choice's kernels differ in this call only."""
     zeroth = zeroth_option()
-    q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
     given = {**p, "k": p["k_c"], "k_d": p.get("k_d", p["k_c"]), "q_r_lo": q_r_lo}
     bind = {f"bottom_{q}": f"z_b_{q}" for q in ("q_r", "q_th", "q_thd")}
     bind.update({f"liftoff_{q}": f"z_lo_{q}" for q in ("q_th", "q_thd")})
-    p_td = m * q_r_td**2 * q_thd_td
-    force = radial_force(k_c).subs({q_r: q_r_td, q_th: q_th_td, p_th: p_td})
-    b = force  # k_c (l0 - q_r_td) + Rbar, Rbar = F_r(td) - k_c (l0 - q_r_td)
-    c = (m * q_rd_td) ** 2 / (2 * m)
-    z_b = sym("z_b_q_r")
-    held = Stage(
-        (
-            (z_b, q_r_td - 2 * c / (b + sp.sqrt(b**2 + 2 * k_c * c))),
-            (sym("z_b_q_th"), q_th_td),
-            (sym("z_b_q_thd"), p_td / (m * z_b**2)),
-            (sym("z_lo_q_th"), sp.S.Zero),  # replaced after the bottom
-            (sym("z_lo_q_thd"), sp.S.Zero),
-        ),
-        comment="held touchdown state; bottom from p_r_td^2 = 2 m F_r(td) D + k_c D^2",
-    )
+    held = held_kernel()
+    names = [a.name for a in held.args]
+    held_args = dict(zip(names, (*touchdown, p["m"], p["l0"], p["k_c"], p["g_s"]), strict=True))
     from_maps = tuple(
         (
             zeroth.code(spec.name),
@@ -407,7 +441,25 @@ def zeroth_bottom(touchdown, p: dict, q_r_lo) -> Switch:
         )
         for spec in zeroth_maps()
     )
-    return Switch(sym(zeroth.name), ((zeroth.code(HELD), (held,)),) + from_maps, comment="zeroth iterate")
+    call_held = Call(held, held_args, {n: n for n in ZEROTH_OUTPUTS}, comment="zeroth iterate: held")
+    return Switch(
+        sym(zeroth.name), ((zeroth.code(HELD), (call_held,)),) + from_maps, comment="zeroth iterate"
+    )
+
+
+def zeroth_arguments() -> tuple[Arg, ...]:
+    """The zeroth iterate (:data:`ZEROTH_OUTPUTS`) and the flag ``held`` (1 for the held choice) as
+    arguments of an iteration's kernel."""
+    return tuple(Arg(sym(n), f"zeroth iterate: {n}") for n in ZEROTH_OUTPUTS) + (
+        Arg(sym("held"), "1 when the zeroth iterate is the held touchdown state, else 0"),
+    )
+
+
+def zeroth_values() -> dict[str, sp.Basic]:
+    """What a map's steps pass for :func:`zeroth_arguments` (after :func:`zeroth_bottom`): the
+    zeroth iterate's names, and ``held`` (a number once the choice is specialized)."""
+    held = sp.Piecewise((sp.S.One, zeroth_option().is_(HELD)), (sp.S.Zero, True))
+    return {**{n: sym(n) for n in ZEROTH_OUTPUTS}, "held": held}
 
 
 def held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
@@ -418,9 +470,10 @@ def held_liftoff(bottom: tuple, q_r_lo) -> tuple[sp.Basic, sp.Basic]:
 
 def zeroth_liftoff(q_r_lo) -> Stage:
     """The zeroth iterate's liftoff ``g_lo_q_th``, ``g_lo_q_thd`` before the decompression half:
-    the map's (``z_lo_*`` of :func:`zeroth_bottom`) or, held, the computed bottom state's."""
+    the map's (``z_lo_*`` of :func:`zeroth_bottom`) or, held (the flag ``held`` of
+    :func:`zeroth_arguments`), the computed bottom state's."""
     held = held_liftoff(tuple(sym(f"bottom_{q}") for q in _POLAR_NAMES), q_r_lo)
-    is_held = zeroth_option().is_(HELD)
+    is_held = sp.Eq(sym("held"), 1)
     return Stage(
         (
             (sym("g_lo_q_th"), sp.Piecewise((held[0], is_held), (sym("z_lo_q_th"), True))),

@@ -55,13 +55,22 @@ from functools import cache
 
 import sympy as sp
 
+from .. import catalog
 from ..halfspec import HalfInputs, HalfSpec
-from ..ir import Call, Guard, Iterate, Stage, Step, Switch, sym
+from ..ir import Call, Field, Group, Guard, Iterate, Kernel, Stage, Step, Switch, sym
 from ..mapspec import MapBuild, MapInputs, MapSpec, Option
 from ..model import mechanics
 from ..symbols import E, g_s, k_c, k_d, l0, m, p_th, q_r, q_rd, q_th, q_thd
 from . import geyer_vs
-from .iterative_helpers import held_liftoff, radial_momentum, zeroth_bottom, zeroth_liftoff, zeroth_option
+from .iterative_helpers import (
+    held_liftoff,
+    radial_momentum,
+    zeroth_arguments,
+    zeroth_bottom,
+    zeroth_liftoff,
+    zeroth_option,
+    zeroth_values,
+)
 
 __all__ = ["VARIANT", "ITERATIONS", "radicand", "chain_steps", "declare_maps", "declare_halves"]
 
@@ -191,11 +200,16 @@ def chain_steps(
     return (start, loop)
 
 
-def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) -> tuple[Step, ...]:
-    """Touchdown -> bottom (k_c): defines E_ab, ``bottom_q_r`` ... ``bottom_q_thd``, ``t_bottom``,
-    after the zeroth iterate's bottom (:func:`.iterative_helpers.zeroth_bottom`; its Geyer call takes
-    ``geyer_q_r_lo``)."""
+@cache
+def compression_kernel() -> Kernel:
+    """Touchdown -> bottom (k_c) from a zeroth iterate's bottom (``z_b_*``): E_ab, the bottom leg
+    length (option ``bottom_length``), the chain; ``t_bottom``, ``bottom_q_r`` ... ``bottom_q_thd``
+    and ``E_ab``. One kernel for every choice of ``zeroth`` (a choice calls its zeroth map first)."""
+    from ..catalog import PARAMS, TOUCHDOWN
+
+    touchdown = tuple(a.symbol for a in TOUCHDOWN)
     q_r_td, q_rd_td, q_th_td, q_thd_td = touchdown
+    p = {n: PARAMS[n].symbol for n in ("m", "l0", "k_c", "g_s")}
     q_r_b, e_ab = sym("bottom_q_r"), sym("E_ab")
     p_td = m * q_r_td**2 * q_thd_td
     at_td = {q_r: q_r_td, q_rd: q_rd_td, q_th: q_th_td, q_thd: q_thd_td}
@@ -206,9 +220,8 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
         return sym("z_b_q_th") + (q_th_td - sym("z_b_q_th")) * u, z_p_b + (p_td - z_p_b) * u
 
     quartic = geyer_vs.quartic_kernel()
-    return (
+    steps = (
         Stage((), (Guard(q_rd_td < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
-        zeroth_bottom(touchdown, p, geyer_q_r_lo),
         Stage(
             ((e_ab, mechanics.stance_energy(k_c).subs(at_td, simultaneous=True)),),
             comment="E_ab (114) of the touchdown state",
@@ -222,7 +235,7 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
                     (
                         Call(
                             quartic,
-                            {"p": p_td, "E_ab": e_ab, **{q: p[q] for q in ("m", "l0", "k_c", "g_s")}},
+                            {"p_b": p_td, "E_ab": e_ab, **p},
                             {"q_r_b": "bottom_q_r"},
                             comment="(153): the vertical bottom's quartic",
                         ),
@@ -246,8 +259,8 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
             anchor=(q_r_td, sp.S.Zero, q_th_td, p_td),
             offset=q_r_b - q_r_td,
             zeroth=zeroth,
-            iterations=iterations,
-            variant=variant,
+            iterations=sym("iterations"),
+            variant=sym("variant"),
         ),
         Stage(
             (
@@ -259,6 +272,39 @@ def _compression_steps(touchdown, p: dict, geyer_q_r_lo, iterations, variant) ->
             comment="bottom state (p_r = 0)",
         ),
     )
+    return Kernel(
+        name="report_compression",
+        summary="Schwind and Koditschek's iteration as printed, compression half from a zeroth iterate's "
+        "bottom.",
+        equations=tuple(str(i) for i in (*range(114, 127), *range(128, 136))) + ("154",),
+        args=TOUCHDOWN
+        + tuple(PARAMS[n] for n in p)
+        + zeroth_arguments()[:3]
+        + (VARIANT.arg(), ITERATIONS.arg(), BOTTOM_LENGTH.arg()),
+        steps=steps,
+        outputs=Group(
+            "",
+            (
+                Field("t_bottom", "time from touchdown to the bottom", "s"),
+                Group("bottom", catalog.POLAR, "state at the bottom (q_rd = 0)"),
+                Field("E_ab", "the energy (114) of the touchdown state", "J"),
+            ),
+        ),
+        module="iterative_report",
+        check_inputs=False,
+    )
+
+
+def _compression_call(touchdown, p: dict) -> Call:
+    """A call of :func:`compression_kernel` after :func:`~.iterative_helpers.zeroth_bottom`."""
+    k = compression_kernel()
+    args = {
+        **dict(zip((a.name for a in catalog.TOUCHDOWN), touchdown, strict=True)),
+        **{n: p[n] for n in ("m", "l0", "k_c", "g_s")},
+        **{n: sym(n) for n in ("z_b_q_r", "z_b_q_th", "z_b_q_thd")},
+        **{o: sym(o) for o in ("variant", "iterations", "bottom_length")},
+    }
+    return Call(k, args, {n: n for n in k.output_names}, comment="the compression half as printed")
 
 
 def _decompression_steps(bottom, t_b, energy, guess, q_r_lo, iterations, variant) -> tuple[Step, ...]:
@@ -305,13 +351,19 @@ def _decompression_steps(bottom, t_b, energy, guess, q_r_lo, iterations, variant
     )
 
 
-def _build(inp: MapInputs) -> MapBuild:
-    p = inp.params
-    iterations, variant = inp.opt("iterations"), inp.opt("variant")
+@cache
+def core_kernel() -> Kernel:
+    """The whole stance as printed from the touchdown state and a zeroth iterate
+    (:func:`~.iterative_helpers.zeroth_arguments`): the compression half, E_ba, the zeroth
+    iterate's liftoff, the decompression half. One kernel for every choice of ``zeroth``."""
+    from ..catalog import PARAMS, TOUCHDOWN
+
+    touchdown = tuple(a.symbol for a in TOUCHDOWN)
+    p = {n: PARAMS[n].symbol for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")}
     bottom = tuple(sym(f"bottom_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd"))
     e_ba = sym("E_ba")
     steps = (
-        *_compression_steps(inp.touchdown, p, p["q_r_lo"], iterations, variant),
+        _compression_call(touchdown, p),
         Stage(
             ((e_ba, sym("E_ab") + (k_d - k_c) / 2 * (l0 - bottom[0]) ** 2),),
             comment="E_ba of (98): the energy jump of the stiffness switch",
@@ -323,9 +375,39 @@ def _build(inp: MapInputs) -> MapBuild:
             e_ba,
             (sym("g_lo_q_th"), sym("g_lo_q_thd")),
             p["q_r_lo"],
-            iterations,
-            variant,
+            sym("iterations"),
+            sym("variant"),
         ),
+    )
+    return Kernel(
+        name="report_core",
+        summary="Schwind and Koditschek's iteration as printed: the stance from the touchdown state and a "
+        "zeroth iterate.",
+        equations=_EQUATIONS,
+        args=TOUCHDOWN
+        + tuple(PARAMS[n] for n in p)
+        + zeroth_arguments()
+        + (VARIANT.arg(), ITERATIONS.arg(), BOTTOM_LENGTH.arg()),
+        steps=steps,
+        outputs=catalog.STANCE,
+        module="iterative_report",
+        check_inputs=False,
+    )
+
+
+def _build(inp: MapInputs) -> MapBuild:
+    p = inp.params
+    core = core_kernel()
+    args = {
+        **dict(zip((a.name for a in catalog.TOUCHDOWN), inp.touchdown, strict=True)),
+        **{n: p[n] for n in ("m", "l0", "k_c", "k_d", "g_s", "q_r_lo")},
+        **zeroth_values(),
+        **{o: inp.opt(o) for o in ("variant", "iterations", "bottom_length")},
+    }
+    steps = (
+        Stage((), (Guard(inp.touchdown[1] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
+        zeroth_bottom(inp.touchdown, p, p["q_r_lo"]),
+        Call(core, args, {n: n for n in core.output_names}, comment="the iteration from the zeroth iterate"),
     )
     return MapBuild(steps=steps)
 
@@ -333,12 +415,15 @@ def _build(inp: MapInputs) -> MapBuild:
 def _compression_half(inp: HalfInputs) -> tuple[Step, ...]:
     """Touchdown -> bottom; the zeroth iterate's Geyer call takes q_r_lo = q_r_td (only its bottom
     is used)."""
-    iterations, variant = inp.opt("iterations"), inp.opt("variant")
-    steps = _compression_steps(inp.state, inp.params, inp.state[0], iterations, variant)
     out = ((sym("t_half"), sym("t_bottom")),) + tuple(
         (sym(f"end_{q}"), sym(f"bottom_{q}")) for q in ("q_r", "q_rd", "q_th", "q_thd")
     )
-    return (*steps, Stage(out, comment="the bottom state"))
+    return (
+        Stage((), (Guard(inp.state[1] < 0, "TOUCHDOWN_NOT_COMPRESSING", "q_rd_td < 0"),)),
+        zeroth_bottom(inp.state, inp.params, inp.state[0]),
+        _compression_call(inp.state, inp.params),
+        Stage(out, comment="the bottom state"),
+    )
 
 
 def _decompression_half(inp: HalfInputs) -> tuple[Step, ...]:

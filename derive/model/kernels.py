@@ -10,9 +10,9 @@ from functools import cache
 import sympy as sp
 
 from ..catalog import APEX_ARGS, DIRECTION, GROUND, PARAMS, POLAR
-from ..ir import Arg, Field, Group, Guard, Kernel, Module, Stage, positive, real, sym
+from ..ir import Arg, Call, Field, Group, Guard, Kernel, Layout, Module, Stage, positive, real, sym
 from ..symbols import b_x, b_xd, b_xd_apex, b_y, b_yd, g_f, k, q_r, q_rd, q_th, q_thd
-from . import flight, mechanics
+from . import flight, mechanics, simulation
 
 #: Liftoff with a horizontal speed against the step's direction by more than BACKWARD_TOLERANCE *
 #: sqrt(g_f q_r) is backward (the body reversed in the stance); a hop in place (direction 0) may lift
@@ -65,7 +65,7 @@ def _stance_polar_tangent() -> Kernel:
     the polar stance state: ds/dt = J s + f_k s_k, J = d(stance_polar_rhs)/d(state) and f_k =
     d(stance_polar_rhs)/dk, s_k = dk/dw (1 for the stiffness's own column, else 0). Written out,
     the Jacobian's structural zeros and ones dropped (the exact simulator's Jacobian carries six
-    columns through every stage of its integration: runtime/exact/jacobian.py)."""
+    columns through every stage of its integration: generated/exact_stance.py)."""
     rhs = sp.Matrix(mechanics.stance_polar_rhs())
     states = (q_r, q_rd, q_th, q_thd)
     column = [sym(f"s_{name}") for name, _, _ in _STATE]
@@ -86,10 +86,43 @@ def _stance_polar_tangent() -> Kernel:
     )
 
 
+def _periods(k_: sp.Basic) -> tuple[sp.Basic, sp.Basic]:
+    """The stance's natural periods [s]: the spring's 2 pi sqrt(m/k) and the pendulum's 2 pi sqrt(l0/g_s)."""
+    m, l0, g_s = (PARAMS[n].symbol for n in ("m", "l0", "g_s"))
+    return 2 * sp.pi * sp.sqrt(m / k_), 2 * sp.pi * sp.sqrt(l0 / g_s)
+
+
+def _simulation_kernels() -> tuple[Kernel, ...]:
+    """The exact simulator's step cap and stance time limit (derive/model/simulation.py)."""
+    k_c, k_d = PARAMS["k_c"].symbol, PARAMS["k_d"].symbol
+    spring, pendulum = _periods(k)
+    softer, _ = _periods(sp.Min(real(k_c), real(k_d)))
+    return (
+        _plain(
+            "max_step",
+            "The step cap of a stance subphase with stiffness k: MAX_STEP_FRACTION of the shorter natural "
+            "period.",
+            (),
+            _MODEL_PARAMS,
+            [("step", "the largest step of the integration", "s")],
+            (simulation.MAX_STEP_FRACTION * sp.Min(spring, pendulum),),
+        ),
+        _plain(
+            "stance_time_limit",
+            "The stance time limit: T_MAX_PERIODS times the spring period of the softer spring plus the "
+            "pendulum period.",
+            (),
+            (PARAMS["m"], PARAMS["l0"], PARAMS["k_c"], PARAMS["k_d"], PARAMS["g_s"]),
+            [("t_max", "the stance time limit", "s")],
+            (simulation.T_MAX_PERIODS * (softer + pendulum),),
+        ),
+    )
+
+
 @cache
 def slip_model_kernels() -> tuple[Kernel, ...]:
-    """Equations of motion, energy and coordinate maps used by the exact simulator."""
-    return (
+    """Equations of motion, energy, coordinate maps and the settings of the exact simulator."""
+    return _simulation_kernels() + (
         _plain(
             "stance_polar_rhs",
             "Polar stance vector field d/dt (q_r, q_rd, q_th, q_thd) from the Euler-Lagrange equations.",
@@ -258,6 +291,62 @@ def flight_kernels() -> dict[str, Kernel]:
     )
     return {"apex_to_touchdown": apex_to_td, "liftoff_to_apex": lo_to_apex}
 
+
+def role_form(kernel: Kernel, module: str = "model") -> Kernel:
+    """``kernel`` as a role kernel ``<name>_entry`` of module ``module``: ``x`` all its arguments in
+    order, an empty parameter record, its outputs into ``out`` (every one checked to be finite),
+    for the runtime to call by name (the generated index's ``MODEL``)."""
+    return Kernel(
+        name=f"{kernel.name}_entry",
+        summary=kernel.summary,
+        equations=kernel.equations,
+        args=kernel.args,
+        steps=(
+            Call(
+                kernel,
+                {a.name: a.symbol for a in kernel.args},
+                {n: n for n in kernel.output_names},
+                comment=f"{kernel.module}.{kernel.name}",
+            ),
+        ),
+        outputs=kernel.outputs,
+        layout=Layout(kernel.arg_names, ()),
+        module=module,
+        check_inputs=False,
+        doc_args=f"those of {kernel.module}.{kernel.name}, in x.",
+    )
+
+
+@cache
+def public_kernels() -> dict[str, Kernel]:
+    """The model's kernels the runtime calls by name (flights, equations of motion, energy,
+    coordinate maps, the bottom of (153)), each as a role kernel (:func:`role_form`)."""
+    from ..maps.geyer_vs import quartic_kernel
+
+    flights = flight_kernels()
+    model = {k.name: k for k in slip_model_kernels()}
+    chosen = [
+        flights["apex_to_touchdown"],
+        flights["liftoff_to_apex"],
+        model["stance_polar_rhs"],
+        model["stance_cartesian_rhs"],
+        model["stance_energy"],
+        model["polar_to_cartesian"],
+        model["cartesian_to_polar"],
+        model["max_step"],
+        model["stance_time_limit"],
+        quartic_kernel(),
+    ]
+    return {k.name: role_form(k) for k in chosen}
+
+
+#: The module of the public model kernels (generated after the maps: it calls one of geyer_vs).
+PUBLIC = Module(
+    "model",
+    "The model's kernels the runtime calls by name (the index's MODEL), as role kernels.",
+    "derive/model/kernels.py",
+    lambda: tuple(public_kernels().values()),
+)
 
 MODULES = (
     Module(

@@ -24,14 +24,16 @@ b_xd_apex, q_th_td, ground``, a time ``t``, a half's start state.
 from __future__ import annotations
 
 import importlib
+import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from typing import Protocol
 
 import numpy as np
 from slipmaps.generated.status import Status
 
+from .batch import run_rows
 from .index import MapInfo, get, get_half
 from .params import SlipParams
 
@@ -41,8 +43,7 @@ __all__ = ["Backend", "Call", "KernelBackend", "KERNELS", "column_count"]
 def column_count(call: Call, role: str) -> int:
     """The number of columns a role's batch writes: its outputs, and for a Jacobian d output /
     d input for every (output, input) pair after them."""
-    spec = call.spec(role)
-    return len(spec.outputs) * (1 + len(spec.wrt))
+    return call.spec(role).width
 
 
 class Backend(Protocol):
@@ -60,21 +61,39 @@ class Backend(Protocol):
 
 
 class KernelBackend:
-    """The generated kernels, called with their arguments filled by name."""
+    """The generated role kernels, their ``x`` and ``p`` filled by name (the index's layouts)."""
 
     def scalar(self, call: Call, role: str, inputs: Mapping[str, float]) -> tuple[float, ...]:
         spec = call.spec(role)
-        values = {**call.values, **inputs}
-        return _functions(spec)[0](*(values[a] for a in spec.args))
+        x = np.array([inputs[a] for a in spec.x], dtype=np.float64)
+        out = np.empty(spec.width)
+        status = kernel_functions(spec)[0](x, call.record(spec), out)
+        return (*out, status)
 
     def rows(self, call, role, rows, inputs, n, show):
         spec = call.spec(role)
-        values = {**call.values, **inputs}
-        out = np.empty((n, column_count(call, role)))
+        out = np.empty((n, spec.width))
         status = np.empty(n, dtype=np.int64)
-        args = (rows[a] if a in spec.rows else values[a] for a in spec.batch)
-        _functions(spec)[1](*args, out, status)
+        run_rows(
+            kernel_functions(spec)[1], *layout_rows(spec, call.record(spec), rows, inputs, n), out, status
+        )
         return out, status
+
+
+def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int):
+    """``(X, P)`` of ``n`` rows of a role kernel: ``X`` (n, len(x)) its inputs by name from the
+    per-row arrays ``rows`` or the per-call ``inputs``; ``P`` the parameter ``record`` (1, k), or
+    one per row (n, k) when ``rows`` also holds a parameter (a plant's stiffness per run)."""
+    X = np.empty((n, len(spec.x)))
+    for j, a in enumerate(spec.x):
+        X[:, j] = rows[a] if a in rows else inputs[a]
+    varying = [(j, f) for j, f in enumerate(spec.p) if f in rows]
+    if not varying:
+        return X, record[None, :]
+    P = np.repeat(record[None, :], n, axis=0)
+    for j, f in varying:
+        P[:, j] = rows[f]
+    return X, P
 
 
 #: The generated kernels' backend (stateless).
@@ -82,7 +101,7 @@ KERNELS = KernelBackend()
 
 
 @cache
-def _functions(spec):
+def kernel_functions(spec):
     return spec.functions()
 
 
@@ -102,6 +121,8 @@ class Call:
     backend: Backend
     #: Every role's kernel for these options (the kernel of the choice of a specialized option).
     kernels: Mapping[str, object]
+    #: The parameter records built (:meth:`record`), by layout.
+    _records: dict = field(default_factory=dict, compare=False, repr=False)
 
     @classmethod
     def of(cls, name: str, params: SlipParams, options: dict, half: bool = False) -> Call:
@@ -129,6 +150,16 @@ class Call:
         module = info.backend(resolved)
         backend = KERNELS if module is None else _backend_module(module)
         return cls(info, params, resolved, values, backend, info.kernels_for(resolved))
+
+    def record(self, spec) -> np.ndarray:
+        """The parameter record ``p`` of a role kernel (the map's parameters and kernel options by
+        the index's names; one per call, shared by its roles)."""
+        record = self._records.get(spec.p)
+        if record is None:
+            # writable, as every array a kernel is given (numba compiles a read-only one apart)
+            record = np.array([self.values.get(f, math.nan) for f in spec.p], dtype=np.float64)
+            self._records[spec.p] = record
+        return record
 
     def spec(self, role: str):
         """The role's kernel spec; ValueError when the map has none (naming the maps that have one)."""

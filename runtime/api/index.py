@@ -36,6 +36,7 @@ __all__ = [
     "halves",
     "lookup",
     "maps",
+    "model_kernels",
     "names",
 ]
 
@@ -45,14 +46,15 @@ EXACT: str = maps_index.EXACT["name"]
 
 @dataclass(frozen=True)
 class KernelSpec:
-    """One generated kernel's calling convention (the index's ``kernels`` entry of a role)."""
+    """One role kernel's calling convention (the index's ``kernels`` entry of a role):
+    ``kernel(x, p, out) -> status`` and its batch form ``kernel_rows(X, p, OUT, STATUS)``, the
+    vectors laid out by the names :attr:`x`, :attr:`p` and :attr:`out` (derive/ir.py, ``Layout``)."""
 
     module: str
     name: str
-    args: tuple[str, ...]
-    rows: tuple[str, ...]  # the batch form's row arguments
-    batch: tuple[str, ...]  # the batch form's arguments, before ``out, status``
-    outputs: tuple[str, ...]  # the scalar form's outputs (the status follows); values of a Jacobian
+    x: tuple[str, ...]  # the inputs, in the order of ``x`` (a batch's columns of ``X``)
+    p: tuple[str, ...]  # the map's parameter record: parameters and kernel options
+    outputs: tuple[str, ...]  # the values written into ``out`` (a Jacobian's derivatives follow)
     wrt: tuple[str, ...] = ()  # a Jacobian's inputs: its columns
     #: With specialized options (a kernel per choice; ``name`` is the default choice's): the generic
     #: name, which the suffix of a choice (the row's ``choices``) completes.
@@ -63,22 +65,27 @@ class KernelSpec:
         return cls(
             module=row["module"],
             name=row["name"],
-            args=tuple(row["args"]),
-            rows=tuple(row["rows"] or ()),
-            batch=tuple(row["batch"] or ()),
-            outputs=tuple(row["outputs"]),
+            x=tuple(row["x"]),
+            p=tuple(row["p"]),
+            outputs=tuple(row["out"]),
             wrt=tuple(row.get("wrt", ())),
             base=row.get("base"),
         )
+
+    @property
+    def width(self) -> int:
+        """The length of ``out``: the outputs, and for a Jacobian d output / d input for every
+        (output, input) pair after them (row-major)."""
+        return len(self.outputs) * (1 + len(self.wrt))
 
     def chosen(self, suffix: str) -> KernelSpec:
         """The kernel of a choice of the specialized options, by its name suffix (itself without)."""
         return self if self.base is None else replace(self, name=self.base + suffix)
 
     def functions(self):
-        """(scalar, batch) functions of the generated module (imported on first use)."""
+        """(row kernel, batch form) of the generated module (imported on first use)."""
         module = importlib.import_module(f"slipmaps.generated.{self.module}")
-        return getattr(module, self.name), getattr(module, f"{self.name}_batch")
+        return getattr(module, self.name), getattr(module, f"{self.name}_rows")
 
 
 @dataclass(frozen=True)
@@ -310,6 +317,13 @@ def halves() -> tuple[HalfInfo, ...]:
     return tuple(
         _info(r, HalfInfo, whole=r["whole"], start=r["start"], end=r["end"]) for r in maps_index.HALVES
     )
+
+
+@cache
+def model_kernels() -> Mapping[str, KernelSpec]:
+    """The model's kernels the runtime calls by name (the index's ``MODEL``: the flights, the
+    equations of motion, the energy, the coordinate maps, ...), each a role kernel."""
+    return {name: KernelSpec.of(row) for name, row in maps_index.MODEL.items()}
 
 
 def lookup(name: str) -> MapInfo:

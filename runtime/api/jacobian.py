@@ -18,7 +18,7 @@ How they are computed. Every map's Jacobian kernels are generated from its decla
 forward-mode differentiation (``derive/tangent.py``): closed-form maps symbolically, iterative maps
 through their iterations (the derivative of the iterate the map returns), and the exact map
 through its stance's own Jacobian (the compiled simulator's variational equations with saltation
-at the bottom and the map to the liftoff surface, ``runtime/exact/jacobian.py``), composed with
+at the bottom and the map to the liftoff surface, ``generated/exact_stance.py``), composed with
 the flights' derivatives like every map's; ``method="scipy"`` has no Jacobian. They are called
 like the maps, arguments by name (:mod:`.calls`). Agreement with central differences is measured in
 tests/test_jacobian.py.
@@ -230,7 +230,7 @@ def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) 
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    cols = {a: np.ascontiguousarray(arr[:, j]) for j, a in enumerate(call.spec("stance_jacobian").rows)}
+    cols = {a: np.ascontiguousarray(arr[:, j]) for j, a in enumerate(call.spec("stance_jacobian").x)}
     out, status = call.rows("stance_jacobian", cols, {}, n)
     return _batch(call, "stance_jacobian", out, status, (n,))
 

@@ -67,7 +67,7 @@ def _result(call: Call, role: str, status: Status, row, inputs: dict, message: s
 
 def touchdown_inputs(call: Call, state) -> dict[str, float]:
     """A validated polar state (:func:`~.validate.polar_state`) by the role's state arguments."""
-    return dict(zip(call.spec("stance").rows, state, strict=True))
+    return dict(zip(call.spec("stance").x, state, strict=True))
 
 
 def apex_inputs(given: dict) -> dict[str, float]:
@@ -125,7 +125,7 @@ def stance_batch(
     call = Call.of(name, params, options)
     arr = state_rows(params, touchdowns)
     n = arr.shape[0]
-    out, status = call.rows("stance", _columns(arr, call.spec("stance").rows), {}, n, progress)
+    out, status = call.rows("stance", _columns(arr, call.spec("stance").x), {}, n, progress)
     return BatchResult(call.info.name, "stance", call.spec("stance").outputs, out, status, (n,))
 
 
@@ -196,7 +196,7 @@ def half_stance(name: str, params: SlipParams, state, **options) -> Result:
     touchdown state for a compression half, a bottom state for a decompression half."""
     call = Call.of(name, params, options, half=True)
     start = polar_state(params, state, what=f"{call.info.start} state")
-    status, row, message = call.scalar("half", dict(zip(call.spec("half").rows, start, strict=True)))
+    status, row, message = call.scalar("half", dict(zip(call.spec("half").x, start, strict=True)))
     return _result(
         call, "half", status, row, {call.info.start: start, "options": dict(call.options)}, message
     )
@@ -207,5 +207,5 @@ def half_stance_batch(name: str, params: SlipParams, states, **options) -> Batch
     call = Call.of(name, params, options, half=True)
     arr = state_rows(params, states, "states")
     n = arr.shape[0]
-    out, status = call.rows("half", _columns(arr, call.spec("half").rows), {}, n)
+    out, status = call.rows("half", _columns(arr, call.spec("half").x), {}, n)
     return BatchResult(call.info.name, "half", call.spec("half").outputs, out, status, (n,))

@@ -13,9 +13,10 @@ scales them: height / l0, speed / sqrt(g_f l0); ``aim="both"``, the default), or
 so with both targets the next apex is generally not reached exactly: the closest in the scaled norm,
 status UNREACHABLE with its residual, is the normal outcome unless the apex stage's plan was right.
 
-The same compiled solver as the apex stage (:func:`~.compiled.bottom_kernels_for`); the half maps
-have no Jacobian kernel, so d/d k_d is a central difference (relative step
-:data:`~.compiled.FD_STEP`). Bounds of k_d as the apex stage's (default [0.5, 2] x params.k_c).
+The same compiled solver as the apex stage (:class:`~.compiled.Solver`) on the half map's ``apex``
+role (the half, then the flight; derive/halfspec.py); the half maps have no Jacobian kernel, so
+d/d k_d is a central difference (relative step :data:`FD_STEP`). Bounds of k_d as the apex stage's
+(default [0.5, 2] x params.k_c).
 """
 
 from __future__ import annotations
@@ -29,10 +30,14 @@ from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.validate import check_params, polar_state, real
 from . import compiled
-from .compiled import BOTTOM_OUTPUTS, N_FLOATS, N_HEAD, N_INTS
+from .compiled import HEAD_AT as _HEAD
+from .compiled import N_HEAD
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, MAX_EVALUATIONS, SCAN, TOL, SolveStatus
 
-__all__ = ["AIMS", "BottomDeadbeat", "BottomResult"]
+__all__ = ["AIMS", "FD_STEP", "BottomDeadbeat", "BottomResult"]
+
+#: Relative step of the central difference in k_d (the half maps have no Jacobian kernel).
+FD_STEP = 1e-5
 
 #: What the bottom stage aims at: both components (least squares), or one.
 AIMS = {"both": (1, 1), "height": (1, 0), "speed": (0, 1)}
@@ -44,25 +49,25 @@ class BottomResult(SolveStatus):
     ``t_ascent``, ``liftoff`` (the polar state), ``evaluations``; ``reached``, ``ok`` as a
     :class:`~.deadbeat.DeadbeatResult`'s."""
 
-    __slots__ = ("_out", "half", "targets")
+    __slots__ = ("_out", "half", "targets", "_outputs")
 
-    def __init__(self, half: str, out: np.ndarray, targets):
-        self._out, self.half, self.targets = out, half, targets
+    def __init__(self, half: str, out: np.ndarray, targets, outputs: tuple[str, ...]):
+        self._out, self.half, self.targets, self._outputs = out, half, targets, outputs
 
     @property
     def k_d(self) -> float:
-        return float(self._out[5])
+        return float(self._out[_HEAD["u0"]])
 
     @property
     def residual(self) -> float:
-        return float(self._out[8])
+        return float(self._head("residual"))
 
     @property
     def evaluations(self) -> int:
-        return int(self._out[2]) * 3 + int(self._out[3])
+        return int(self._head("jacobians")) * 3 + int(self._head("evaluations"))
 
     def _value(self, name: str) -> float:
-        return float(self._out[N_HEAD + BOTTOM_OUTPUTS.index(name)])
+        return float(self._out[N_HEAD + self._outputs.index(name)])
 
     @property
     def apex_height(self) -> float:
@@ -82,7 +87,7 @@ class BottomResult(SolveStatus):
 
     @property
     def liftoff(self) -> tuple[float, float, float, float]:
-        j = N_HEAD + BOTTOM_OUTPUTS.index("liftoff_q_r")
+        j = N_HEAD + self._outputs.index("liftoff_q_r")
         return tuple(float(x) for x in self._out[j : j + 4])
 
     def __repr__(self) -> str:
@@ -126,36 +131,29 @@ class BottomDeadbeat:
         self.call = call
         self.bounds = (lo, hi)
         self.aim = aim
-        spec = call.spec("half")
-        self.args = spec.args
-        self._kernels = compiled.bottom_kernels_for(call)
-        n = len(spec.args)
-        # a row: the half's arguments, g_f, then the target height and speed
-        self._template = np.array(
-            [float(call.values.get(a, math.nan)) for a in spec.args] + [params.g_f, 0, 0]
+        spec = call.spec("apex")
+        self.solver = compiled.Solver(spec)
+        self.outputs = spec.outputs
+        self._state = [spec.x.index(a) for a in call.spec("half").x]
+        self._record = call.record(spec)
+        self._i_kd = spec.p.index("k_d")
+        self._settings = self.solver.settings(
+            ["k_d"],
+            [lo],
+            [hi],
+            [params.k_c],
+            targeted=AIMS[aim],
+            fd_step=FD_STEP,
+            kd="k_d",
+            kd_bounds=(lo, hi),
+            weight=[1.0 / params.l0, 1.0 / math.sqrt(params.g_f * params.l0)],
+            tol=real("tol", tol),
+            mass=params.m,
+            g_f=params.g_f,
+            max_evaluations=MAX_EVALUATIONS,
+            broyden=1,
+            scan=scan,
         )
-        self._state = [spec.args.index(a) for a in spec.rows]
-        self._i_kd = spec.args.index("k_d")
-        fi, ff = compiled.INT_FIELDS, compiled.FLOAT_FIELDS
-        ints = np.zeros(N_INTS, dtype=np.int64)
-        floats = np.zeros(N_FLOATS)
-        ints[fi["n_out"]], ints[fi["n_wrt"]] = len(BOTTOM_OUTPUTS), 1
-        ints[fi["out_height"]], ints[fi["out_speed"]] = 0, 1
-        ints[fi["n_controls"]], ints[fi["arg"]], ints[fi["col"]] = 1, self._i_kd, 0
-        ints[fi["kd_col"]] = 0
-        ints[fi["max_evaluations"]] = MAX_EVALUATIONS
-        ints[fi["broyden"]] = 1
-        ints[fi["scan"]] = scan
-        ints[fi["targeted"]], ints[fi["targeted"] + 1] = AIMS[aim]
-        ints[fi["n_args"]] = n + 1
-        ints[fi["kd_arg"]] = self._i_kd
-        floats[ff["lo"]], floats[ff["hi"]], floats[ff["scale"]] = lo, hi, params.k_c
-        floats[ff["weight"]] = 1.0 / params.l0
-        floats[ff["weight"] + 1] = 1.0 / math.sqrt(params.g_f * params.l0)
-        floats[ff["tol"]] = real("tol", tol)
-        floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
-        floats[ff["kd_lo"]], floats[ff["kd_hi"]] = lo, hi
-        self._ints, self._floats = ints, floats
 
     def warm(self, batch: bool = False) -> BottomDeadbeat:
         """Compile the solver now (``batch``: the parallel form too); returns self."""
@@ -173,22 +171,30 @@ class BottomDeadbeat:
         V = real("target_speed", target_speed) if tv else math.nan
         return H, V
 
+    def _records(self, k_d, n: int) -> np.ndarray:
+        """The parameter records: the half's, with the starting k_d (one for all rows, or one per
+        row), clipped into the bounds."""
+        P = self._record[None, :].copy()
+        if k_d is not None:
+            kd = np.asarray(k_d, dtype=float)
+            if kd.ndim:
+                P = np.repeat(P, n, axis=0)
+                P[:, self._i_kd] = np.broadcast_to(kd, (n,))
+            else:
+                P[:, self._i_kd] = real("k_d", float(kd))
+        P[:, self._i_kd] = np.clip(P[:, self._i_kd], *self.bounds)
+        return P
+
     def plan(self, bottom, target_height, target_speed, *, k_d=None) -> BottomResult:
         """k_d from the bottom state (q_r, q_rd, q_th, q_thd; q_rd is 0 at a bottom) for the target;
         ``k_d`` the starting value (default the parameters' k_d)."""
         state = polar_state(self.params, bottom, what="bottom")
         H, V = self._targets(target_height, target_speed)
-        a = self._template.copy()
-        for i, x in zip(self._state, state, strict=True):
-            a[i] = x
-        if k_d is not None:
-            a[self._i_kd] = real("k_d", k_d)
-        a[self._i_kd] = min(max(a[self._i_kd], self.bounds[0]), self.bounds[1])
-        a[-2] = 0.0 if math.isnan(H) else H
-        a[-1] = 0.0 if math.isnan(V) else V
-        out = np.empty(self._kernels.width)
-        self._kernels.scalar(a, self._ints, self._floats, out)
-        return BottomResult(self.name, out, (H, V))
+        X = np.empty((1, len(self.solver.x)))
+        X[0, self._state] = state
+        T = np.array([[0.0 if math.isnan(H) else H, 0.0 if math.isnan(V) else V]])
+        out = self.solver.run(X, self._records(k_d, 1), T, self._settings)[0]
+        return BottomResult(self.name, out, (H, V), self.outputs)
 
     def plan_batch(self, bottoms, target_height, target_speed, *, k_d=None) -> dict[str, np.ndarray]:
         """:meth:`plan` over bottom states of shape (n, 4) in parallel (targets and starting k_d
@@ -199,20 +205,18 @@ class BottomDeadbeat:
             raise ValueError(f"bottoms must have shape (n, 4), got {B.shape}")
         n = B.shape[0]
         th, tv = AIMS[self.aim]
-        A = np.tile(self._template, (n, 1))
-        for j, i in enumerate(self._state):
-            A[:, i] = B[:, j]
-        if k_d is not None:
-            A[:, self._i_kd] = np.broadcast_to(np.asarray(k_d, dtype=float), (n,))
-        A[:, self._i_kd] = np.clip(A[:, self._i_kd], *self.bounds)
-        A[:, -2] = np.broadcast_to(np.asarray(target_height if th else 0.0, dtype=float), (n,))
-        A[:, -1] = np.broadcast_to(np.asarray(target_speed if tv else 0.0, dtype=float), (n,))
-        OUT = np.empty((n, self._kernels.width))
-        if n:
-            self._kernels.batch(A, self._ints, self._floats, OUT)
-        cols = {"status": OUT[:, 0].astype(np.int64), "map_status": OUT[:, 1].astype(np.int64)}
-        cols["k_d"] = OUT[:, 5]
-        cols["residual"] = OUT[:, 8]
-        for j, name in enumerate(BOTTOM_OUTPUTS):
+        X = np.empty((n, len(self.solver.x)))
+        X[:, self._state] = B
+        T = np.empty((n, 2))
+        T[:, 0] = np.broadcast_to(np.asarray(target_height if th else 0.0, dtype=float), (n,))
+        T[:, 1] = np.broadcast_to(np.asarray(target_speed if tv else 0.0, dtype=float), (n,))
+        OUT = self.solver.run(X, self._records(k_d, n), T, self._settings)
+        cols = {
+            "status": OUT[:, _HEAD["plan_status"]].astype(np.int64),
+            "map_status": OUT[:, _HEAD["map_status"]].astype(np.int64),
+            "k_d": OUT[:, _HEAD["u0"]],
+            "residual": OUT[:, _HEAD["residual"]],
+        }
+        for j, name in enumerate(self.outputs):
             cols[name] = OUT[:, N_HEAD + j]
         return cols

@@ -64,11 +64,13 @@ from slipmaps.generated.status import MESSAGES, Status
 
 from ..api.calls import KERNELS, Call
 from ..api.index import maps
+from ..api.maps import APEX_INPUTS
 from ..api.numeric import num
 from ..api.params import SlipParams
 from ..api.validate import check_params, leg_angle, non_negative, real, real_array
 from . import compiled
-from .compiled import N_FLOATS, N_HEAD, N_INTS
+from .compiled import HEAD_AT as _HEAD
+from .compiled import N_HEAD
 
 __all__ = [
     "ANGLE_SCALE",
@@ -144,22 +146,26 @@ class SolveStatus:
     __slots__ = ()
     _out: np.ndarray
 
+    def _head(self, name: str) -> float:
+        """A field of the solver row's head (:data:`~.compiled.HEAD`), by name."""
+        return self._out[_HEAD[name]]
+
     @property
     def status(self) -> PlanStatus:
-        return PLAN_STATUS[int(self._out[0])]
+        return PLAN_STATUS[int(self._head("plan_status"))]
 
     @property
     def map_status(self) -> Status:
-        return Status(int(self._out[1]))
+        return Status(int(self._head("map_status")))
 
     @property
     def reached(self) -> bool:
-        return int(self._out[0]) == compiled.REACHED
+        return int(self._head("plan_status")) == compiled.REACHED
 
     @property
     def ok(self) -> bool:
         """True unless the map failed (a reached or the closest reachable apex is returned)."""
-        return int(self._out[0]) != compiled.MAP_FAILED
+        return int(self._head("plan_status")) != compiled.MAP_FAILED
 
 
 class DeadbeatResult(SolveStatus):
@@ -176,10 +182,10 @@ class DeadbeatResult(SolveStatus):
     done (``jacobians``, ``evaluations``, ``iterations``).
     """
 
-    __slots__ = ("_ctl", "_out", "_a", "_apex", "_targets", "_angle")
+    __slots__ = ("_ctl", "_out", "_p", "_apex", "_targets", "_angle")
 
-    def __init__(self, ctl: Deadbeat, out: np.ndarray, a: np.ndarray, apex, targets, angle: float):
-        self._ctl, self._out, self._a, self._apex, self._targets = ctl, out, a, apex, targets
+    def __init__(self, ctl: Deadbeat, out: np.ndarray, p: np.ndarray, apex, targets, angle: float):
+        self._ctl, self._out, self._p, self._apex, self._targets = ctl, out, p, apex, targets
         self._angle = angle  # the starting (or, not a control, the fixed) touchdown angle
 
     # the solve
@@ -193,24 +199,24 @@ class DeadbeatResult(SolveStatus):
 
     @property
     def jacobians(self) -> int:
-        return int(self._out[2])
+        return int(self._head("jacobians"))
 
     @property
     def evaluations(self) -> int:
-        return int(self._out[3])
+        return int(self._head("evaluations"))
 
     @property
     def iterations(self) -> int:
-        return int(self._out[4])
+        return int(self._head("iterations"))
 
     # the controls
     def _control(self, name: str) -> float:
         ctl = self._ctl
         if name in ctl.controls:
-            return float(self._out[5 + ctl.controls.index(name)])
+            return float(self._out[_HEAD["u0"] + ctl.controls.index(name)])
         if name == "touchdown_angle":
             return self._angle  # not a control: the fixed value
-        return float(self._a[ctl._pos[CONTROLS[name]]])
+        return float(self._p[ctl.solver.p.index(CONTROLS[name])])  # a stiffness, not a control
 
     @property
     def touchdown_angle(self) -> float:
@@ -230,7 +236,7 @@ class DeadbeatResult(SolveStatus):
         out = []
         for j, c in enumerate(ctl.controls):
             lo, hi = ctl.bounds[c]
-            if self._out[5 + j] <= lo or self._out[5 + j] >= hi:
+            if self._out[_HEAD["u0"] + j] <= lo or self._out[_HEAD["u0"] + j] >= hi:
                 out.append(c)
         return tuple(out)
 
@@ -249,7 +255,7 @@ class DeadbeatResult(SolveStatus):
 
     @property
     def residual(self) -> float:
-        return float(self._out[8])
+        return float(self._head("residual"))
 
     @property
     def target_height(self) -> float:
@@ -288,14 +294,14 @@ class DeadbeatResult(SolveStatus):
     @property
     def authority(self) -> float:
         """dE'/dk_d at the controls [J per N/m] (NaN for a constant-stiffness map)."""
-        return float(self._out[9])
+        return float(self._head("authority"))
 
     @property
     def energy_range(self) -> tuple[float, float]:
         """E' - E with k_d at its lower and at its upper bound, the angle and k_c as found [J]
         (NaN for a constant-stiffness map, or where the map fails at the bound)."""
         e_in = self._energy_in()
-        return (float(self._out[10]) - e_in, float(self._out[11]) - e_in)
+        return (float(self._head("energy_low")) - e_in, float(self._head("energy_high")) - e_in)
 
     @property
     def message(self) -> str:
@@ -499,54 +505,40 @@ class Deadbeat:
                 raise ValueError(f"{key} must be an integer >= 2, got {value!r}")
         self.options = dict(call.options)
         self.tol = tol
-        spec = call.spec("apex_return_jacobian")
-        self.args = spec.args
-        self.outputs = call.spec("apex_return").outputs
-        self.wrt = spec.wrt
+        apex, jac = call.spec("apex_return"), call.spec("apex_return_jacobian")
+        self.solver = compiled.Solver(apex, jac)
+        self.outputs = apex.outputs
+        self.wrt = jac.wrt
         self._out_h = self.outputs.index("apex_height")
         self._out_v = self.outputs.index("apex_speed")
-        self._pos = {a: i for i, a in enumerate(self.args)}
-        # a row: the kernel's arguments, then the target height and speed
-        self._template = np.array([float(call.values.get(a, math.nan)) for a in self.args] + [0.0, 0.0])
-        ints = np.zeros(N_INTS, dtype=np.int64)
-        floats = np.zeros(N_FLOATS)
-        fi, ff = compiled.INT_FIELDS, compiled.FLOAT_FIELDS
-        ints[fi["n_out"]] = len(self.outputs)
-        ints[fi["n_wrt"]] = len(self.wrt)
-        ints[fi["out_height"]] = self.outputs.index("apex_height")
-        ints[fi["out_speed"]] = self.outputs.index("apex_speed")
-        ints[fi["n_controls"]] = len(self.controls)
-        for j, c in enumerate(self.controls):
-            ints[fi["arg"] + j] = self._pos[CONTROLS[c]]
-            ints[fi["col"] + j] = self.wrt.index(CONTROLS[c])
-            lo, hi = self.bounds[c]
-            floats[ff["lo"] + j], floats[ff["hi"] + j] = lo, hi
-            floats[ff["scale"] + j] = ANGLE_SCALE if c == "touchdown_angle" else params.k_c
-        ints[fi["kd_col"]] = self.wrt.index("k_d") if "k_d" in self.wrt else -1
-        ints[fi["kd_arg"]] = self._pos["k_d"] if "k_d" in self._pos else -1
-        for j, arg in enumerate(("b_y_apex", "b_xd_apex", "ground", "q_th_td")):
-            ints[fi["positions"] + j] = self._pos[arg]
-        ints[fi["max_evaluations"]] = max_evaluations
-        ints[fi["broyden"]] = int(jacobian == "broyden")
-        ints[fi["scan"]] = scan
-        ints[fi["targeted"]] = ints[fi["targeted"] + 1] = 1
-        floats[ff["weight"]] = 1.0 / params.l0
-        floats[ff["weight"] + 1] = 1.0 / math.sqrt(params.g_f * params.l0)
-        floats[ff["tol"]] = tol
-        floats[ff["m"]], floats[ff["g_f"]] = params.m, params.g_f
-        ints[fi["n_args"]] = len(self.args)
+        # the inputs x of a row, by name: every apex-return input at its default, the apex and the
+        # angle set per step (derive/params.py's APEX_INPUTS)
+        defaults = {r["arg"]: float(r.get("default", math.nan)) for r in APEX_INPUTS.values()}
+        self._x = np.array([defaults[a] for a in apex.x])
+        self._at = {key: apex.x.index(APEX_INPUTS[key]["arg"]) for key in APEX_INPUTS}
+        self._record = call.record(apex)
+        # the energy budget's stiffness: k_d (none for a constant-stiffness map)
+        kd = "k_d" if "k_d" in self.wrt else None
         kd_bounds = self.bounds.get("k_d", tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
-        floats[ff["kd_lo"]], floats[ff["kd_hi"]] = kd_bounds
-        self._ints, self._floats = ints, floats
-        self._kernels = compiled.kernels_for(call)
-        self._i_h, self._i_v = self._pos["b_y_apex"], self._pos["b_xd_apex"]
-        self._i_gr, self._i_th = self._pos["ground"], self._pos["q_th_td"]
-        self._clip = tuple((self._pos[CONTROLS[c]], *self.bounds[c]) for c in self.controls)
-        self._ints_by = {t: self._ints_for(t) for t in ((1, 1), (1, 0), (0, 1))}
-        self._width = self._kernels.width
-        self._one = self._kernels.one
-        kd = "k_d" if "k_d" in self.wrt else "k"
-        self._kd_bounds = self.bounds.get(kd, tuple(f * params.k_c for f in DEFAULT_STIFFNESS_RANGE))
+        names = [CONTROLS[c] for c in self.controls]
+        fields = dict(
+            controls=names,
+            lo=[self.bounds[c][0] for c in self.controls],
+            hi=[self.bounds[c][1] for c in self.controls],
+            scale=[ANGLE_SCALE if c == "touchdown_angle" else params.k_c for c in self.controls],
+            weight=[1.0 / params.l0, 1.0 / math.sqrt(params.g_f * params.l0)],
+            tol=tol,
+            kd=kd,
+            kd_bounds=kd_bounds,
+            mass=params.m,
+            g_f=params.g_f,
+            max_evaluations=max_evaluations,
+            broyden=int(jacobian == "broyden"),
+            scan=scan,
+        )
+        self._settings = {t: self.solver.settings(targeted=t, **fields) for t in ((1, 1), (1, 0), (0, 1))}
+        places = [self.solver.place(n) for n in names]
+        self._clip = tuple((at, *self.bounds[c]) for at, c in zip(places, self.controls, strict=True))
         self._angle_alone = "touchdown_angle" in self.controls and len(self.controls) == 1
 
     # ------------------------------------------------------------------------------------------
@@ -560,25 +552,31 @@ class Deadbeat:
             return 0, 1
         return int(th), int(tv)
 
-    def _template_with(self, k_c, k_d, k) -> np.ndarray:
-        """The row template with given starting (or fixed) stiffness values."""
-        T = self._template
+    def _record_with(self, k_c, k_d, k) -> np.ndarray:
+        """The parameter record with given starting (or fixed) stiffness values."""
+        p = self._record
         for key, value in (("k_c", k_c), ("k_d", k_d), ("k", k)):
             if value is not None:
-                if key not in self._pos:
+                if key not in self.solver.p:
                     raise ValueError(f"map {self.name!r} has no stiffness {key!r}")
                 x = _finite(key, value)
                 if x <= 0.0:
                     raise ValueError(f"{key} must be positive, got {num(x)}")
-                T = T.copy() if T is self._template else T
-                T[self._pos[key]] = x
-        return T
+                p = p.copy() if p is self._record else p
+                p[self.solver.p.index(key)] = x
+        return p
 
-    def _ints_for(self, tgt: tuple[int, int]) -> np.ndarray:
-        ints = self._ints.copy()
-        t = compiled.INT_FIELDS["targeted"]
-        ints[t], ints[t + 1] = tgt
-        return ints
+    def _inputs(self, cols: dict, n: int) -> np.ndarray:
+        """The rows' inputs ``x`` (n, len(x)): the given apex-return inputs by their API names, the
+        others at their defaults; the controls clipped into their bounds."""
+        X = np.tile(self._x, (n, 1))
+        for key, j in self._at.items():
+            if key in cols:
+                X[:, j] = cols[key]
+        for (in_p, j), lo, hi in self._clip:
+            if not in_p:
+                X[:, j] = np.clip(X[:, j], lo, hi)
+        return X
 
     def plan(
         self,
@@ -611,12 +609,11 @@ class Deadbeat:
         )
         if not -_HALF_PI < th < _HALF_PI:
             leg_angle("touchdown_angle", th)
-        T = self._template if k_c is None and k_d is None and k is None else self._template_with(k_c, k_d, k)
-        out = np.empty(self._width)
-        self._one(
-            T, h, v, gr, th, H if tgt[0] else 0.0, V if tgt[1] else 0.0, self._ints_by[tgt], self._floats, out
-        )
-        return DeadbeatResult(self, out, T, (h, v, gr), (H, V), th)
+        p = self._record if k_c is None and k_d is None and k is None else self._record_with(k_c, k_d, k)
+        X = self._inputs({"apex_height": h, "apex_speed": v, "ground": gr, "touchdown_angle": th}, 1)
+        T = np.array([[H if tgt[0] else 0.0, V if tgt[1] else 0.0]])
+        out = self.solver.run(X, p[None, :], T, self._settings[tgt])[0]
+        return DeadbeatResult(self, out, p, (h, v, gr), (H, V), th)
 
     def plan_batch(
         self, apex_height, apex_speed, target_height, target_speed, *, ground=0.0, touchdown_angle=None
@@ -639,54 +636,54 @@ class Deadbeat:
         cols = {k: np.ascontiguousarray(p.reshape(n)) for k, p in zip(given, parts, strict=True)}
         if touchdown_angle is None:
             cols["touchdown_angle"] = default_angle(self.params, cols["apex_speed"])
-        A = np.tile(self._template, (n, 1))
-        for key, arg in (
-            ("apex_height", "b_y_apex"),
-            ("apex_speed", "b_xd_apex"),
-            ("touchdown_angle", "q_th_td"),
-            ("ground", "ground"),
-        ):
-            A[:, self._pos[arg]] = cols[key]
-        A[:, -2], A[:, -1] = cols["target_height"], cols["target_speed"]
-        for c in self.controls:
-            pos = self._pos[CONTROLS[c]]
-            lo, hi = self.bounds[c]
-            A[:, pos] = np.clip(A[:, pos], lo, hi)
-        ints = self._ints if tgt == (1, 1) else self._ints_for(tgt)
-        OUT = np.empty((n, self._kernels.width))
-        if n:
-            self._kernels.batch(A, ints, self._floats, OUT)
-        return self._batch_result(OUT, A, cols, tgt, shape)
+        X = self._inputs(cols, n)
+        T = np.ascontiguousarray(np.stack([cols["target_height"], cols["target_speed"]], axis=1))
+        P = self._record_clipped()[None, :]
+        OUT = self.solver.run(X, P, T, self._settings[tgt])
+        return self._batch_result(OUT, X, P, cols, tgt, shape)
 
-    def _batch_result(self, OUT, A, cols, tgt, shape) -> DeadbeatBatch:
+    def _record_clipped(self) -> np.ndarray:
+        """The parameter record with the stiffness controls clipped into their bounds."""
+        p = self._record.copy()
+        for (in_p, j), lo, hi in self._clip:
+            if in_p:
+                p[j] = min(max(p[j], lo), hi)
+        return p
+
+    def _batch_result(self, OUT, X, P, cols, tgt, shape) -> DeadbeatBatch:
         p = self.params
         H, V = cols["target_height"], cols["target_speed"]
         out: dict[str, np.ndarray] = {}
-        out["status"] = OUT[:, 0].astype(np.int64)
-        out["map_status"] = OUT[:, 1].astype(np.int64)
-        u = {c: OUT[:, 5 + j] for j, c in enumerate(self.controls)}
-        out["touchdown_angle"] = u.get("touchdown_angle", A[:, self._pos["q_th_td"]])
+        out["status"] = OUT[:, _HEAD["plan_status"]].astype(np.int64)
+        out["map_status"] = OUT[:, _HEAD["map_status"]].astype(np.int64)
+        u = {c: OUT[:, _HEAD["u0"] + j] for j, c in enumerate(self.controls)}
+
+        def given(name):  # a quantity that is not a control, as the rows had it
+            in_p, j = self.solver.place(CONTROLS[name])
+            return np.broadcast_to(P[:, j], (OUT.shape[0],)) if in_p else X[:, j]
+
+        out["touchdown_angle"] = u.get("touchdown_angle", given("touchdown_angle"))
         if "k" in self.wrt:
-            out["k_c"] = out["k_d"] = u.get("k", A[:, self._pos["k"]])
+            out["k_c"] = out["k_d"] = u.get("k", given("k"))
         else:
-            out["k_c"] = u.get("k_c", A[:, self._pos["k_c"]])
-            out["k_d"] = u.get("k_d", A[:, self._pos["k_d"]])
+            out["k_c"] = u.get("k_c", given("k_c"))
+            out["k_d"] = u.get("k_d", given("k_d"))
         for j, name in enumerate(self.outputs):
             out[f"next_{name}"] = OUT[:, N_HEAD + j]
         out["apex_height"] = out["next_apex_height"]
         out["apex_speed"] = out["next_apex_speed"]
         out["target_height"] = H if tgt[0] else np.full_like(H, math.nan)
         out["target_speed"] = V if tgt[1] else np.full_like(V, math.nan)
-        out["residual"] = OUT[:, 8]
-        out["authority"] = OUT[:, 9]
-        for k, name in ((2, "jacobians"), (3, "evaluations"), (4, "iterations")):
-            out[name] = OUT[:, k].astype(np.int64)
+        out["residual"] = OUT[:, _HEAD["residual"]]
+        out["authority"] = OUT[:, _HEAD["authority"]]
+        for name in ("jacobians", "evaluations", "iterations"):
+            out[name] = OUT[:, _HEAD[name]].astype(np.int64)
         h, v, gr = cols["apex_height"], cols["apex_speed"], cols["ground"]
         e_in = p.m * (p.g_f * (h - gr) + 0.5 * v * v)
         hn, vn = out["apex_height"], out["apex_speed"]
         out["energy_change"] = p.m * (p.g_f * hn + 0.5 * vn * vn) - e_in
-        out["energy_low"] = OUT[:, 10] - e_in
-        out["energy_high"] = OUT[:, 11] - e_in
+        out["energy_low"] = OUT[:, _HEAD["energy_low"]] - e_in
+        out["energy_high"] = OUT[:, _HEAD["energy_high"]] - e_in
         shaped = {k: np.asarray(x).reshape(shape) for k, x in out.items()}
         return DeadbeatBatch(self.name, shaped, shape)
 

@@ -2,13 +2,15 @@
 controller commands, over many runs at once.
 
 A step of the plant is the composition every apex-return map is (the generated ``exact`` step's,
-``generated/exact.py``): the exact ballistic descent (``flight.apex_to_touchdown``), the map's stance
-(its generated stance kernel) with the step's k_c and k_d, the exact ascent to the next apex
-(:func:`~.compiled.ascent`). One difference, on purpose: the ascent flies in the direction the body
-moves at liftoff, so a stance that reverses the direction (a turn from a hop in place, the slight
-overshoot of a stop) continues as the body does, where ``slipmaps.apex_return`` reports
-LIFTOFF_BACKWARD (a model convention: a step keeps its direction). Otherwise a plant step equals
-``slipmaps.apex_return`` of the same map bitwise (tests/test_control_runs.py).
+``generated/exact.py``): the exact ballistic descent (the model kernel ``apex_to_touchdown``), the
+map's stance (its role kernel, the step's k_c and k_d per row) and the exact ascent to the next apex
+(``liftoff_to_apex``), every kernel called by name through the index
+(:mod:`~slipmaps.runtime.api.model`, :mod:`~slipmaps.runtime.api.calls`). One difference, on
+purpose: the ascent flies in the direction the body moves at liftoff, so a stance that reverses the
+direction (a turn from a hop in place, the slight overshoot of a stop) continues as the body does,
+where ``slipmaps.apex_return`` reports LIFTOFF_BACKWARD (a model convention: a step keeps its
+direction). Otherwise a plant step equals ``slipmaps.apex_return`` of the same map bitwise
+(tests/test_control_runs.py).
 
 Every quantity is per row (a run of a batch): apex, touchdown angle, ground, k_c and k_d, so one
 call steps every run of an evaluation in parallel. The two-stage form splits the stance at the
@@ -27,44 +29,28 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
-from slipmaps.generated.flight import apex_to_touchdown
 from slipmaps.generated.status import Status
 
+from ..api import model
 from ..api.calls import KERNELS, Call
 from ..api.index import halves
 from ..api.params import SlipParams
-from .compiled import ascent, in_threads
 
-__all__ = ["Plant", "PlantSteps", "row_caller"]
+__all__ = ["Plant", "PlantSteps", "ascent"]
 
-_ROWS: dict = {}
-
-
-def row_caller(fn, n_args: int, n_ret: int):
-    """A loop calling the scalar njit function ``fn`` on each row of A (n, n_args), its n_ret return
-    values written into D (n, n_ret) (a status returned as a float); compiled once per function,
-    releasing the GIL (:func:`_call` runs it in threads)."""
-    key = (fn, n_args, n_ret)
-    hit = _ROWS.get(key)
-    if hit is not None:
-        return hit
-    args = ", ".join(f"A[i, {j}]" for j in range(n_args))
-    stores = "\n".join(f"        D[i, {j}] = r[{j}]" for j in range(n_ret))
-    source = f"def rows(A, D):\n    for i in range(A.shape[0]):\n        r = F({args})\n{stores}\n"
-    ns = {"F": fn}
-    exec(source, ns)  # the source is built here, from the kernel's arity
-    caller = njit(error_model="numpy", nogil=True)(ns["rows"])
-    _ROWS[key] = caller
-    return caller
+_POLAR = ("q_r", "q_rd", "q_th", "q_thd")
 
 
-def _call(fn, n_ret: int, columns: list[np.ndarray]) -> np.ndarray:
-    A = np.ascontiguousarray(np.stack(columns, axis=1), dtype=np.float64)
-    D = np.empty((A.shape[0], n_ret))
-    if A.shape[0]:
-        in_threads(row_caller(fn, A.shape[1], n_ret), A, D)
-    return D
+def ascent(liftoff: np.ndarray, g_f: float):
+    """The exact flight from liftoff states (n, 4) to the next apex, in the direction the body moves
+    at liftoff (a stance that reverses the direction, a turn from a hop in place or the slight
+    overshoot of a stop, flies on as the body does): ``(status, outputs by name)`` of the model
+    kernel ``liftoff_to_apex``."""
+    q_r, q_rd, q_th, q_thd = liftoff.T
+    b_xd = -np.sin(q_th) * q_rd - q_r * np.cos(q_th) * q_thd
+    return model.rows(
+        "liftoff_to_apex", q_r=q_r, q_rd=q_rd, q_th=q_th, q_thd=q_thd, g_f=g_f, direction=np.sign(b_xd)
+    )
 
 
 @dataclass
@@ -109,9 +95,9 @@ class Plant:
         self.call = call
         spec = call.spec("stance")
         self._stance = spec
-        self._constant = "k" in spec.args
-        self._lo = [spec.outputs.index(f"liftoff_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]
-        self._bo = [spec.outputs.index(f"bottom_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]
+        self._constant = "k" in spec.p
+        self._lo = [spec.outputs.index(f"liftoff_{q}") for q in _POLAR]
+        self._bo = [spec.outputs.index(f"bottom_{q}") for q in _POLAR]
         self._halves = {h.start: h.name for h in halves() if h.whole == self.name}
 
     @property
@@ -121,16 +107,17 @@ class Plant:
     # ------------------------------------------------------------------------------------------
     def _descent(self, h, v, th, ground):
         p = self.params
-        n = h.shape[0]
-        D = _call(apex_to_touchdown, 7, [h, v, th, np.full(n, p.q_r_td), np.full(n, p.g_f), ground])
-        return D[:, 6].astype(np.int64), D[:, 0:4], D[:, 4], D[:, 5]
-
-    def _args(self, spec, values: dict, n: int) -> list[np.ndarray]:
-        base = {**self.call.values, **self.params.values()}
-        cols = []
-        for a in spec.args:
-            cols.append(values[a] if a in values else np.full(n, float(base[a])))
-        return cols
+        code, out = model.rows(
+            "apex_to_touchdown",
+            b_y_apex=h,
+            b_xd_apex=v,
+            q_th_td=th,
+            q_r_td=p.q_r_td,
+            g_f=p.g_f,
+            ground=ground,
+        )
+        td = np.stack([out[f"touchdown_{q}"] for q in _POLAR], axis=1)
+        return code, td, out["t_flight"], out["foot_x"]
 
     def _stiffness(self, k_c, k_d, status) -> dict:
         if self._constant:
@@ -140,11 +127,10 @@ class Plant:
         return {"k_c": k_c, "k_d": k_d}
 
     def _ascent(self, lo, status, foot_x):
-        n = lo.shape[0]
-        D = _call(ascent, 6, [lo[:, 0], lo[:, 1], lo[:, 2], lo[:, 3], np.full(n, self.params.g_f)])
-        code = D[:, 5].astype(np.int64)
-        status[(status == 0) & (code != 0)] = code[(status == 0) & (code != 0)]
-        return D[:, 0], D[:, 1], D[:, 2], foot_x + D[:, 4]
+        code, out = ascent(lo, self.params.g_f)
+        fresh = (status == 0) & (code != 0)
+        status[fresh] = code[fresh]
+        return out["apex_b_y"], out["apex_b_xd"], out["t_flight"], foot_x + out["apex_b_x"]
 
     def step(self, apex_height, apex_speed, touchdown_angle, ground, k_c, k_d) -> PlantSteps:
         """One step of every row (module docstring)."""
@@ -154,12 +140,9 @@ class Plant:
         )
         n = h.shape[0]
         status, td, t_descent, foot_x = self._descent(h, v, th, gr)
-        values = {a: td[:, j] for j, a in enumerate(self._stance.rows)}
+        values = {a: td[:, j] for j, a in enumerate(self._stance.x)}
         values.update(self._stiffness(kc, kd, status))
-        S = _call(
-            self._stance.functions()[0], len(self._stance.outputs) + 1, self._args(self._stance, values, n)
-        )
-        code = S[:, -1].astype(np.int64)
+        S, code = KERNELS.rows(self.call, "stance", values, {}, n, False)
         fresh = (status == 0) & (code != 0)
         status[fresh] = code[fresh]
         lo = S[:, self._lo]
@@ -223,14 +206,11 @@ class Plant:
         state (NaN where a row failed) and its duration; a fresh failure's code into ``status``."""
         call, spec = self._half(start)
         n = status.shape[0]
-        values = {a: rows[:, j] for j, a in enumerate(spec.rows)} | {key: stiffness}
-        base = {**call.values, **self.params.values()}
-        cols = [values[a] if a in values else np.full(n, float(base[a])) for a in spec.args]
-        D = _call(spec.functions()[0], len(spec.outputs) + 1, cols)
-        code = D[:, -1].astype(np.int64)
+        values = {a: rows[:, j] for j, a in enumerate(spec.x)} | {key: stiffness}
+        D, code = KERNELS.rows(call, "half", values, {}, n, False)
         fresh = (status == 0) & (code != 0)
         status[fresh] = code[fresh]
-        end = D[:, [spec.outputs.index(f"end_{q}") for q in ("q_r", "q_rd", "q_th", "q_thd")]]
+        end = D[:, [spec.outputs.index(f"end_{q}") for q in _POLAR]]
         end[status != 0] = math.nan
         return end, D[:, spec.outputs.index("t_half")]
 

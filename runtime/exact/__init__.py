@@ -1,2 +1,2 @@
-"""The exact simulator (the ground truth): the compiled DOP853 integrator, the hybrid stance and its
-Jacobian, and the ``solve_ivp`` reference."""
+"""The exact simulator's ``solve_ivp`` reference (the map ``"exact"``'s ``method="scipy"``); the compiled
+simulator is the generator's support module ``exact_stance`` (derive/templates/exact_stance.py.j2)."""

@@ -66,11 +66,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit
 from scipy.integrate import solve_ivp
-from slipmaps.generated import flight as gen_flight
-from slipmaps.generated import slip_model as gen
+from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
+from slipmaps.runtime.api import model
 from slipmaps.runtime.api.params import SlipParams
 from slipmaps.runtime.api.validate import POLAR_NAMES, PolarState, polar_state
 from slipmaps.runtime.api.validate import check_params as _check_params
@@ -94,15 +93,12 @@ __all__ = [
     "simulate_step",
 ]
 
-#: Default relative / absolute tolerances of the DOP853 integration.
-DEFAULT_RTOL = 1e-11
-DEFAULT_ATOL = 1e-12
-#: The stance ends with ``Status.FALL`` when the leg length drops to this fraction of ``l0``.
-COLLAPSE_FRACTION = 1e-3
-#: Number of (spring + pendulum) periods in the default stance time limit.
-T_MAX_PERIODS = 20
-#: Steps are capped at this fraction of the shortest natural period of the phase.
-_MAX_STEP_FRACTION = 1.0 / 16.0
+#: The simulator's settings, the compiled one's too (derive/model/simulation.py, through the index):
+#: the default relative / absolute tolerances of the DOP853 integration; the stance ends with
+#: ``Status.FALL`` when the leg length drops to COLLAPSE_FRACTION of ``l0``.
+DEFAULT_RTOL = maps_index.SIMULATION["DEFAULT_RTOL"]
+DEFAULT_ATOL = maps_index.SIMULATION["DEFAULT_ATOL"]
+COLLAPSE_FRACTION = maps_index.SIMULATION["COLLAPSE_FRACTION"]
 #: With ``dense=True``, each integrator step is sampled at this many equispaced points.
 _DENSE_PER_STEP = 8
 
@@ -145,7 +141,7 @@ class StanceResult:
         """The liftoff state as ``(b_x, b_xd, b_y, b_yd)`` relative to the toe, or None."""
         if self.liftoff is None:
             return None
-        return tuple(float(v) for v in gen.polar_to_cartesian(*self.liftoff))
+        return _to_cartesian(self.liftoff)
 
 
 @dataclass(frozen=True)
@@ -214,11 +210,31 @@ class _Coords:
     from_polar: Callable[[PolarState], np.ndarray]
 
 
-def _polar_coords(p: SlipParams) -> _Coords:
-    m, l0, g_s = p.m, p.l0, p.g_s
+def _to_cartesian(s) -> tuple[float, float, float, float]:
+    """A polar state as ``(b_x, b_xd, b_y, b_yd)`` relative to the toe (the model kernel)."""
+    _, out = model.call("polar_to_cartesian", **dict(zip(POLAR_NAMES, s, strict=True)))
+    return tuple(out[f"out_{n}"] for n in _CARTESIAN)
 
-    def rhs(y: np.ndarray, k: float) -> Sequence[float]:
-        return gen.stance_polar_rhs(y[0], y[1], y[2], y[3], m, l0, k, g_s)
+
+_CARTESIAN = ("b_x", "b_xd", "b_y", "b_yd")
+
+
+def _field(name: str, state: tuple[str, ...], p: SlipParams):
+    """The stance vector field ``name`` (a model kernel) as ``rhs(y, k)`` of the state ``y`` and
+    the stiffness ``k``, the other parameters ``p``'s."""
+    f = model.bind(name, (*state, "k"), m=p.m, l0=p.l0, g_s=p.g_s)
+    values = np.empty(len(state) + 1)
+
+    def rhs(y: np.ndarray, k: float) -> np.ndarray:
+        values[:-1] = y[: len(state)]
+        values[-1] = k
+        return f(values)[1]
+
+    return rhs
+
+
+def _polar_coords(p: SlipParams) -> _Coords:
+    rhs = _field("stance_polar_rhs", POLAR_NAMES, p)
 
     def q_rdd(y: np.ndarray, k: float) -> float:
         return float(rhs(y, k)[1])
@@ -241,10 +257,7 @@ def _polar_coords(p: SlipParams) -> _Coords:
 
 
 def _cartesian_coords(p: SlipParams) -> _Coords:
-    m, l0, g_s = p.m, p.l0, p.g_s
-
-    def rhs(y: np.ndarray, k: float) -> Sequence[float]:
-        return gen.stance_cartesian_rhs(y[0], y[1], y[2], y[3], m, l0, k, g_s)
+    rhs = _field("stance_cartesian_rhs", _CARTESIAN, p)
 
     def q_r(y: np.ndarray) -> float:
         return math.hypot(y[0], y[2])
@@ -269,10 +282,11 @@ def _cartesian_coords(p: SlipParams) -> _Coords:
         return z
 
     def to_polar(y: np.ndarray) -> PolarState:
-        return tuple(float(v) for v in gen.cartesian_to_polar(y[0], y[1], y[2], y[3]))
+        _, out = model.call("cartesian_to_polar", **dict(zip(_CARTESIAN, map(float, y), strict=True)))
+        return tuple(out[f"out_{n}"] for n in POLAR_NAMES)
 
     def from_polar(s: PolarState) -> np.ndarray:
-        return np.array(gen.polar_to_cartesian(*s), dtype=float)
+        return np.array(_to_cartesian(s), dtype=float)
 
     return _Coords(
         rhs=rhs,
@@ -414,29 +428,17 @@ def _step_samples(sol) -> tuple[np.ndarray, np.ndarray]:
     return t, y
 
 
-@njit(cache=True, error_model="numpy")
-def natural_periods(m: float, l0: float, k: float, g_s: float) -> tuple[float, float]:
-    """The stance's natural periods [s]: the spring's 2 pi sqrt(m/k) and the pendulum's
-    2 pi sqrt(l0/g_s), the scales of :func:`max_step` and :func:`stance_time_limit`."""
-    return 2.0 * math.pi * math.sqrt(m / k), 2.0 * math.pi * math.sqrt(l0 / g_s)
-
-
-@njit(cache=True, error_model="numpy")
 def max_step(m: float, l0: float, k: float, g_s: float) -> float:
-    """The step cap of a stance subphase with stiffness k: 1/16 of the shorter of the spring period
-    and the pendulum period [s] (the compiled simulator's at the default rtol:
-    :func:`.compiled.step_cap`)."""
-    spring, pendulum = natural_periods(m, l0, k, g_s)
-    return _MAX_STEP_FRACTION * min(spring, pendulum)
+    """The step cap of a stance subphase with stiffness k [s] (the model kernel ``max_step``: a
+    fraction of the shorter of the spring period and the pendulum period; the compiled simulator's at
+    the default rtol)."""
+    return model.call("max_step", m=m, l0=l0, k=k, g_s=g_s)[1]["step"]
 
 
-@njit(cache=True, error_model="numpy")
 def stance_time_limit(m: float, l0: float, k_c: float, k_d: float, g_s: float) -> float:
-    """The stance time limit [s]: T_MAX_PERIODS times (the spring period of the softer spring + the
-    pendulum period), shared with the compiled simulator; a stance still on the ground then is
-    NO_LIFTOFF."""
-    spring, pendulum = natural_periods(m, l0, min(k_c, k_d), g_s)
-    return T_MAX_PERIODS * (spring + pendulum)
+    """The stance time limit [s] (the model kernel ``stance_time_limit``, shared with the compiled
+    simulator): a stance still on the ground then is NO_LIFTOFF."""
+    return model.call("stance_time_limit", m=m, l0=l0, k_c=k_c, k_d=k_d, g_s=g_s)[1]["t_max"]
 
 
 def _max_step(p: SlipParams, k: float) -> float:
@@ -654,10 +656,15 @@ def _step_from_touchdown(
     }
     if not stance.ok:
         return StepResult(stance.status, f"stance: {stance.message}", **common)
-    y_apex, xd_apex, t_ascent, dx_ascent, apex_b_x, code = gen_flight.liftoff_to_apex(
-        *stance.liftoff, params.g_f, direction
+    status, up = model.call(
+        "liftoff_to_apex",
+        **dict(zip(POLAR_NAMES, stance.liftoff, strict=True)),
+        g_f=params.g_f,
+        direction=direction,
     )
-    status = Status(int(code))
+    y_apex, xd_apex, t_ascent, dx_ascent, apex_b_x = (
+        up[n] for n in ("apex_b_y", "apex_b_xd", "t_flight", "dx_flight", "apex_b_x")
+    )
     if status != Status.OK:
         b_x, b_xd, b_y, b_yd = stance.liftoff_cartesian
         detail = f"liftoff b_xd={b_xd!r}, b_yd={b_yd!r}"
@@ -685,9 +692,11 @@ def simulate_step(
     dense: bool = False,
     rtol: float = DEFAULT_RTOL,
     atol: float = DEFAULT_ATOL,
+    **inputs: float,
 ) -> StepResult:
     """One exact step: apex ``(apex_height, apex_speed)`` -> next apex, leg held at ``q_th_td``,
-    touching down on ground ``ground`` higher than the ground under the apex.
+    touching down on ground ``ground`` higher than the ground under the apex; ``inputs`` the other
+    apex-return inputs by their kernel argument names (derive/params.py), passed to the descent.
 
     The descent to the touchdown of a leg of length ``params.q_r_td`` at angle ``q_th_td`` and the
     ascent from liftoff to the next apex are ballistic with ``g_f`` (generated kernels); the stance
@@ -708,8 +717,18 @@ def simulate_step(
         # q_th_td; checked here as well as in the kernel so that no NaN state can reach the stance.
         status = Status.APEX_TOO_LOW
         return StepResult(status, f"apex -> touchdown: {_message(status, detail)}", apex=(h, v))
-    *td, t_descent, foot_x, code = gen_flight.apex_to_touchdown(h, v, th, params.q_r_td, params.g_f, ground)
-    status = Status(int(code))
+    status, down = model.call(
+        "apex_to_touchdown",
+        b_y_apex=h,
+        b_xd_apex=v,
+        q_th_td=th,
+        q_r_td=params.q_r_td,
+        g_f=params.g_f,
+        ground=ground,
+        **inputs,
+    )
+    td = tuple(down[f"touchdown_{n}"] for n in POLAR_NAMES)
+    t_descent, foot_x = down["t_flight"], down["foot_x"]
     if status == Status.OK and not all(math.isfinite(x) for x in (*td, t_descent)):
         status, detail = Status.INVALID_INPUT, f"{detail}; apex_to_touchdown returned {(*td, t_descent)!r}"
     if status != Status.OK:
@@ -734,7 +753,7 @@ def simulate_from_touchdown(
     _check_params(params)
     rtol_f, atol_f = _tolerances(rtol, atol)
     td = polar_state(params, touchdown)
-    direction = float(np.sign(gen.polar_to_cartesian(*td)[1]))  # the touchdown's horizontal velocity
+    direction = float(np.sign(_to_cartesian(td)[1]))  # the touchdown's horizontal velocity
     return _step_from_touchdown(params, td, _NAN2, math.nan, dense, rtol_f, atol_f, direction)
 
 
@@ -788,13 +807,15 @@ class ReferenceBackend:
         names = call.spec(role).outputs
         p = call.params
         if role == "stance":
-            td = tuple(inputs[n] for n in call.spec("stance").rows)
+            td = tuple(inputs[n] for n in call.spec("stance").x)
             r = simulate_stance(p, td, **self._tolerances(call))
             return _row(names, stance_values(r), r.status, r.message)
         if role == "apex_return":
+            first = ("b_y_apex", "b_xd_apex", "q_th_td", "ground")
+            others = {k: v for k, v in inputs.items() if k not in first}
             r = simulate_step(
                 p, inputs["b_y_apex"], inputs["b_xd_apex"], inputs["q_th_td"], ground=inputs["ground"],
-                **self._tolerances(call),
+                **self._tolerances(call), **others,
             )  # fmt: skip
             return _row(names, step_values(r), r.status, r.message)
         if role.endswith("_jacobian"):
@@ -826,7 +847,7 @@ class ReferenceBackend:
     def _states(self, call, times: np.ndarray, inputs):
         """The state at ``times`` from solve_ivp's dense output of the stance (its 7th-order
         interpolants; a time past the stance's end is the end's status, NaN)."""
-        td = tuple(inputs[n] for n in call.spec("stance").rows)
+        td = tuple(inputs[n] for n in call.spec("stance").x)
         order = np.argsort(times, kind="stable")
         r = _stance(
             call.params, td, _polar_coords, times[order], call.values["rtol"], call.values["atol"], None

@@ -16,14 +16,15 @@ install (``import slipmaps`` finds an empty namespace package). So slipmaps' ker
 Inside it numba keeps one folder per source directory (its name and a hash of its path), and checks
 each entry against its source file's stamp (modification time and size) and numba's version, so two
 installs never share entries. A cached kernel holds the compiled code of every kernel it calls, in
-other files too, and numba checks only the caller's file (numba's documented limitation): after an
-edit of ``runtime/exact/compiled.py`` alone, ``runtime/exact/kernels.py``'s cached stance would keep
-running the old integrator. So the folder of a kernel outside ``slipmaps.generated`` carries a
-digest of the contents of every slipmaps source that defines kernels (:func:`kernel_sources`; the
-generated modules included), and any change to one of them recompiles those kernels. The
-generated modules need none: each states the hashes of the modules it calls in its header
-(``slipmaps generate``; for the exact map's modules also those of ``runtime/exact/`` and of the
-generated modules it imports), so a change in a callee changes the caller's file. With
+other files too, and numba checks only the caller's file (numba's documented limitation): the
+deadbeat solver's cached entry points (runtime/control/compiled.py) hold the generated kernels
+they call. So the folder of a kernel outside ``slipmaps.generated`` carries a digest of the
+contents of every slipmaps source that defines kernels (:func:`kernel_sources`; the generated
+modules included), and any change to one of them recompiles those kernels. The generated modules
+need none: each states the hashes of the generated modules it imports in its header (``slipmaps
+generate``; generated code imports only generated code, the exact simulator's support modules
+included), so a change in a callee changes the caller's file, and an edit of a hand-written runtime
+module never touches a generated one. With
 ``NUMBA_CACHE_DIR`` set, numba's own rules apply (without the digest). Clearing the cache is
 removing the directory (:func:`cache_root` names it).
 

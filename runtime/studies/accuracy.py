@@ -35,10 +35,9 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from slipmaps.generated.flight import apex_to_touchdown
 from slipmaps.generated.status import Status
 
-from ..api import index
+from ..api import index, model
 from ..api.maps import apex_return_batch, stance_batch
 from ..api.progress import progress
 from ..api.results import APEX_RETURN, STANCE
@@ -223,16 +222,23 @@ def run_maps(
 
 def run_batch(grid: Grid, points: np.ndarray, chosen: Sequence[Variant]) -> GridRun:
     """As :func:`run_maps`, the exact steps by the compiled exact map's batches instead of
-    ``solve_ivp`` (the same steps to ~1e-14, :mod:`~slipmaps.runtime.exact.compiled`; for grids of
+    ``solve_ivp`` (the same steps to ~1e-14, the compiled simulator, generated/exact_stance.py; for grids of
     thousands of points): the exact apex return from each point, the exact stance from its
-    closed-form touchdown (``flight.apex_to_touchdown``). ``exact`` is empty (no StepResult)."""
+    closed-form touchdown (the model kernel ``apex_to_touchdown``). ``exact`` is empty (no
+    StepResult)."""
     p = grid.params
     ap = apex_return_batch(index.EXACT, p, points[:, 0], points[:, 1], points[:, 2])
-    tds = np.full((len(points), 4), math.nan)
-    for i, (h, v, a) in enumerate(points):
-        td = apex_to_touchdown(h, v, a, p.q_r_td, p.g_f, 0.0)  # (q_r, q_rd, q_th, q_thd, t, foot_x, status)
-        if td[-1] == _OK:
-            tds[i] = td[:4]
+    code, td = model.rows(
+        "apex_to_touchdown",
+        b_y_apex=points[:, 0],
+        b_xd_apex=points[:, 1],
+        q_th_td=points[:, 2],
+        q_r_td=p.q_r_td,
+        g_f=p.g_f,
+        ground=0.0,
+    )
+    tds = np.column_stack([td[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd")])
+    tds[code != _OK] = math.nan
     st = stance_batch(index.EXACT, p, tds)
     ok = ap.status == _OK
     cols = {n: np.where(ok, st[n], math.nan) for n in STANCE}

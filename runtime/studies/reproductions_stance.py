@@ -21,10 +21,9 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
-from slipmaps.generated.flight import apex_to_touchdown
 
 from ..analysis.gait import fixed_points
-from ..api import index
+from ..api import index, model
 from ..api.calls import Call
 from ..api.maps import stance, touchdown_inputs
 from ..api.params import SlipParams
@@ -150,8 +149,11 @@ def geyer_rows(states, show_progress: bool | None = None, label: str = "") -> tu
     rows, failed = [], 0
     for k, h, v, th in progress(states, len(states), f"Geyer et al. 2005 {label}".strip(), show_progress):
         p = SlipParams(k=k)
-        td = apex_to_touchdown(h, v, th, p.q_r_td, p.g_f, 0.0)
-        err = stance_errors(p, td[:4]) if td[-1] == 0 else None
+        status, td = model.call(
+            "apex_to_touchdown", b_y_apex=h, b_xd_apex=v, q_th_td=th, q_r_td=p.q_r_td, g_f=p.g_f, ground=0.0
+        )
+        state = tuple(td[f"touchdown_{q}"] for q in ("q_r", "q_rd", "q_th", "q_thd"))
+        err = stance_errors(p, state) if status == 0 else None
         if err is None:
             failed += 1
             continue

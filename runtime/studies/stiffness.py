@@ -36,11 +36,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
-from slipmaps.generated import slip_model
-from slipmaps.generated.geyer_vs import bottom_quartic
 from slipmaps.generated.status import Status
 
-from ..api import index
+from ..api import index, model
 from ..api.maps import stance_batch
 from ..api.params import SlipParams
 from ..api.progress import progress
@@ -200,12 +198,19 @@ def _states(source, group: str) -> np.ndarray:
 
 def _energy(states: np.ndarray, p: SlipParams, k: float) -> np.ndarray:
     """The total energy (27) with stiffness ``k`` of each polar state (NaN rows stay NaN)."""
-    return np.array([slip_model.stance_energy(*s, p.m, p.l0, k, p.g_s) for s in states])
+    _, out = model.rows("stance_energy", **_polar(states), m=p.m, l0=p.l0, k=k, g_s=p.g_s)
+    return out["energy"]
 
 
 def _velocity(states: np.ndarray) -> np.ndarray:
     """(n, 2) Cartesian body velocity (b_xd, b_yd) of each polar state."""
-    return np.array([slip_model.polar_to_cartesian(*s) for s in states]).reshape(-1, 4)[:, [1, 3]]
+    _, out = model.rows("polar_to_cartesian", **_polar(states))
+    return np.column_stack([out["out_b_xd"], out["out_b_yd"]])
+
+
+def _polar(states: np.ndarray) -> dict[str, np.ndarray]:
+    """The columns of (n, 4) polar states by the model kernels' argument names."""
+    return {q: states[:, j] for j, q in enumerate(("q_r", "q_rd", "q_th", "q_thd"))}
 
 
 def errors(run: GridRun, label: str) -> dict[str, np.ndarray]:
@@ -239,11 +244,9 @@ def _stats(values: np.ndarray) -> dict[str, float]:
 def _quartic(p: SlipParams, p_th: np.ndarray, touchdowns: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The root of (153) (kernel ``bottom_quartic``) per row: angular momentum ``p_th``, the energy
     (27) with k_c of the touchdown state; and its status."""
-    rows = [
-        bottom_quartic(pt, slip_model.stance_energy(*td, p.m, p.l0, p.k_c, p.g_s), p.m, p.l0, p.k_c, p.g_s)
-        for pt, td in zip(p_th, touchdowns, strict=True)
-    ]
-    return np.array([r[0] for r in rows], dtype=float), np.array([int(r[-1]) for r in rows], dtype=np.int64)
+    energy = _energy(np.asarray(touchdowns, dtype=float).reshape(-1, 4), p, p.k_c)
+    status, out = model.rows("bottom_quartic", p_b=p_th, E_ab=energy, m=p.m, l0=p.l0, k_c=p.k_c, g_s=p.g_s)
+    return out["q_r_b"], status
 
 
 #: The bottom leg length estimates, by key: how each is computed.

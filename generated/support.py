@@ -1,0 +1,64 @@
+# ----------------------------------------------------------------------------------------------
+# GENERATED FILE -- DO NOT EDIT. Any hand edit is overwritten and fails `slipmaps generate --check`.
+# Source:    derive/templates/support.py.j2
+# Template:  derive/templates/support.py.j2
+# Rebuild:   slipmaps generate        (check: slipmaps generate --check)
+# Tools:     sympy 1.14.0, jinja2 3.1.6
+# Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
+# ----------------------------------------------------------------------------------------------
+"""What the generated kernels share, owned by the generator (derive/templates/support.py.j2): arrays
+on a kernel's stack, a row's store and its checks.
+
+- ``carray(stack(n), n)``: an array of ``n`` float64 (``n`` a literal integer) in the stack frame of
+  the kernel that writes it: the arguments and outputs a kernel passes through an array (a role
+  kernel's ``x``, ``p`` and ``out``, a call with more than 16 of them; derive/lower.py) cost no
+  allocation. Valid until that kernel returns; never returned or kept.
+- ``put(out, values)``: the tuple ``values`` into ``out[0], out[1], ...``.
+- ``fail(out, status)``: ``out`` all NaN; returns ``status`` (a failed row).
+- ``finite(out)``: every entry of ``out`` finite.
+"""
+
+import math
+
+from numba import njit, types
+from numba.core import cgutils
+from numba.extending import intrinsic
+
+
+@intrinsic
+def stack(typingctx, n):
+    """A pointer to ``n`` float64 on the calling function's stack (``n`` a literal integer), allocated
+    once in its entry block (LLVM's ``alloca``), so a loop reuses it."""
+    if not isinstance(n, types.IntegerLiteral) or n.literal_value < 1:
+        return None
+    size = n.literal_value
+
+    def codegen(context, builder, signature, args):
+        return cgutils.alloca_once(builder, context.get_value_type(types.float64), size=size)
+
+    return types.CPointer(types.float64)(n), codegen
+
+
+@njit(cache=True, error_model="numpy")
+def put(out, values):
+    """``out[j] = values[j]`` for every entry of the tuple ``values``."""
+    for j in range(len(values)):
+        out[j] = values[j]
+
+
+@njit(cache=True, error_model="numpy")
+def fail(out, status):
+    """A failed row: ``out`` all NaN; returns ``status``."""
+    for j in range(out.shape[0]):
+        out[j] = math.nan
+    return status
+
+
+@njit(cache=True, error_model="numpy")
+def finite(out):
+    """Whether every entry of ``out`` is finite (one branch-free pass: v - v == 0 exactly then)."""
+    ok = True
+    for j in range(out.shape[0]):
+        v = out[j]
+        ok &= v - v == 0.0
+    return ok

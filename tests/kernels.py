@@ -1,0 +1,65 @@
+"""Calling a generated kernel by its arguments' names in tests, whatever its calling convention.
+
+The generator chooses each kernel's convention (derive/lower.py's ``abi``): a role kernel takes its
+layouts ``(x, p, out)``; another kernel takes up to 16 scalars, else one array of them, and returns
+a tuple of up to 16 values, else writes them into an array ``out``. The tests call kernels by the
+names of their declared arguments (the IR, ``slipmaps generate``'s modules) and read results by
+the names of their declared outputs, so they do not restate any of that.
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+from collections.abc import Mapping
+from functools import cache
+
+import numpy as np
+from slipmaps.derive import generate
+from slipmaps.derive.ir import Kernel
+from slipmaps.derive.lower import abi
+
+
+@cache
+def declared() -> dict[tuple[str, str], Kernel]:
+    """Every generated kernel's declaration by (module, name)."""
+    return {(k.module, k.name): k for mod in generate.modules() for k in mod.kernels()}
+
+
+def declaration(module: str, name: str) -> Kernel:
+    return declared()[(module.rsplit(".", 1)[-1], name)]
+
+
+def function(kernel: Kernel):
+    """The generated function of a declared kernel."""
+    return getattr(importlib.import_module(f"slipmaps.generated.{kernel.module}"), kernel.name)
+
+
+def invoke(kernel: Kernel, values: Mapping[str, float], fn=None) -> tuple:
+    """``kernel`` at the arguments ``values`` (by name; a role kernel's parameter record takes the
+    fields it does not read as NaN): its outputs in order, then its status when it has one (a kernel
+    of one output and no status: that value alone). ``fn``: another function of the kernel's
+    convention to call instead (its ``.py_func``)."""
+    fn = function(kernel) if fn is None else fn
+    how = abi(kernel)
+    n_out = len(kernel.output_names)
+    if how.layout is not None:
+        x = np.array([float(values[a]) for a in how.layout.x])
+        p = np.array([float(values.get(f, math.nan)) for f in how.layout.p] or [math.nan])
+        out = np.empty(n_out)
+        status = fn(x, p, out)
+        return (*map(float, out), int(status))
+    args = [float(values[a]) for a in kernel.arg_names]
+    if how.args_array:
+        args = [np.array(args)]
+    if how.out_array:
+        out = np.empty(n_out)
+        status = fn(*args, out)
+        return (*map(float, out), int(status))
+    return fn(*args)
+
+
+def outputs(kernel: Kernel, result: tuple) -> dict[str, float]:
+    """A result of :func:`invoke` by output name (the status left out)."""
+    values = result if isinstance(result, tuple) else (result,)
+    return dict(zip(kernel.output_names, values, strict=False))
