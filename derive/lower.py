@@ -726,6 +726,76 @@ def _unpack(names: list[str], array: str, order) -> str:
     return f"({', '.join(names)}) = ({items})"
 
 
+_SOURCE = re.compile(r"(_o\d+\[\d+\]|-?\d+\.\d*(e[-+]?\d+)?)$")
+_WORD = re.compile(r"[A-Za-z_]\w*")
+
+
+def _strings(node, skip) -> list[str]:
+    """Every code string in a lowered node tree, except the entries in ``skip`` (by identity) and
+    the argument lists of calls (``setup``: where :func:`_forward` substitutes)."""
+    if isinstance(node, str):
+        return [node]
+    if isinstance(node, list):
+        return [t for n in node for t in _strings(n, skip)]
+    if isinstance(node, dict):
+        if id(node) in skip:
+            return []
+        return [t for k, v in node.items() if k != "setup" for t in _strings(v, skip)]
+    return []
+
+
+def _forward(body: list[dict]) -> dict[str, str]:
+    """Forward the values a kernel only passes on: a top-level call's output read from its out
+    array (``_o1[7]``), or a constant assignment, that nothing but later calls' argument lists and
+    the kernel's outputs use is not named; those lists and the outputs read it where it is. The
+    source arrays are written once, by their call, so the read gives the same value anywhere
+    after it. Returns the outputs' codes by name (the others stay their names)."""
+    defs: dict[str, tuple[dict, dict | None]] = {}
+    for n in body:
+        if n["kind"] == "call":
+            for b in n["binds"]:
+                if _SOURCE.match(b["code"]):
+                    defs[b["name"]] = (n, b)
+        elif n["kind"] == "assign" and _SOURCE.match(n["code"]):
+            defs[n["name"]] = (n, None)
+    if not defs:
+        return {}
+    skip = {id(b if b is not None else n) for n, b in defs.values()}
+    used = Counter(w for t in _strings(body, skip) for w in _WORD.findall(t))
+    forward = {name: (b or n)["code"] for name, (n, b) in defs.items() if not used[name]}
+    if not forward:
+        return {}
+    word = re.compile(r"\b(" + "|".join(map(re.escape, sorted(forward))) + r")\b")
+
+    def sub(text: str) -> str:
+        return word.sub(lambda m: forward[m.group(1)], text)
+
+    def walk(nodes: list[dict]) -> list[dict]:
+        kept = []
+        for n in nodes:
+            if n["kind"] == "assign" and n["name"] in forward and any(n is d[0] for d in defs.values()):
+                continue
+            if "setup" in n:
+                n["setup"] = [sub(line) for line in n["setup"]]
+            if n["kind"] == "call":
+                n["binds"] = [b for b in n["binds"] if b["name"] not in forward]
+            for key in ("evaluate", "body"):
+                if key in n:
+                    n[key] = walk(n[key])
+            for c in n.get("cases", ()):
+                c["body"] = walk(c["body"])
+            kept.append(n)
+        # a comment whose statements all went stays out too
+        return [
+            n
+            for i, n in enumerate(kept)
+            if n["kind"] != "comment" or (i + 1 < len(kept) and kept[i + 1]["kind"] != "comment")
+        ]
+
+    body[:] = walk(body)
+    return forward
+
+
 def lower(kernel: Kernel) -> dict:
     """Template data for one kernel (signature, docstring, nested statement nodes, returns)."""
     names = kernel.arg_names
@@ -755,6 +825,7 @@ def lower(kernel: Kernel) -> dict:
         input_guard = " and ".join(conds)
         ctx.statuses.add("INVALID_INPUT")
     body = _lower_steps(ctx, kernel.steps)
+    forward = _forward(body)
     if ctx.rows:
         ctx.rows = _compact_rows(body)
     tails = [i for i, s in enumerate(kernel.steps) if isinstance(s, Call) and s.tail]
@@ -805,7 +876,10 @@ def lower(kernel: Kernel) -> dict:
         "out_array": how.out_array,
         "support": ctx.uses_support,
         "doc_args": kernel.doc_args,
-        "outputs": [{"name": f.name, "checked": f.name not in kernel.unchecked} for f in outputs],
+        "outputs": [
+            {"name": f.name, "code": forward.get(f.name, f.name), "checked": f.name not in kernel.unchecked}
+            for f in outputs
+        ],
         "partial_check": any(f.name in kernel.unchecked for f in outputs),
         "returns": docs,
         "n_out": len(outputs),

@@ -157,7 +157,6 @@ def exact_decompression_apex(x, p, out):
     _c0 = exact_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    t_half = _o0[0]
     liftoff_q_r = _o0[1]
     liftoff_q_rd = _o0[2]
     liftoff_q_th = _o0[3]
@@ -173,7 +172,7 @@ def exact_decompression_apex(x, p, out):
     apex_height = _c1[0]
     apex_speed = _c1[1]
     t_ascent = _c1[2]
-    put(out, (apex_height, apex_speed, t_half, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, _o0[0], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):

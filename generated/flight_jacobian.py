@@ -103,32 +103,21 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
     d_foot_x__b_xd_apex = _x13
     d_foot_x__q_th_td = _pd__3*d_drop__q_th_td + _x1*q_r_td
     # derivatives of the outputs
-    d_touchdown_q_r__b_y_apex = 0.0
-    d_touchdown_q_r__b_xd_apex = 0.0
-    d_touchdown_q_r__q_th_td = 0.0
-    d_touchdown_q_r__ground = 0.0
     d_touchdown_q_rd__b_y_apex = _pd__0
     d_touchdown_q_rd__ground = -_pd__0
-    d_touchdown_q_th__b_y_apex = 0.0
-    d_touchdown_q_th__b_xd_apex = 0.0
-    d_touchdown_q_th__q_th_td = 1.0
-    d_touchdown_q_th__ground = 0.0
     d_touchdown_q_thd__b_y_apex = _pd__1
     d_touchdown_q_thd__ground = -_pd__1
     d_t_flight__b_y_apex = _pd__2
-    d_t_flight__b_xd_apex = 0.0
     d_t_flight__ground = -_pd__2
     d_foot_x__b_y_apex = _pd__3
     d_foot_x__ground = -_pd__3
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x,
-        d_touchdown_q_r__b_y_apex, d_touchdown_q_r__b_xd_apex, d_touchdown_q_r__q_th_td,
-        d_touchdown_q_r__ground, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex,
-        d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, d_touchdown_q_th__b_y_apex,
-        d_touchdown_q_th__b_xd_apex, d_touchdown_q_th__q_th_td, d_touchdown_q_th__ground,
-        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
-        d_touchdown_q_thd__ground, d_t_flight__b_y_apex, d_t_flight__b_xd_apex, d_t_flight__q_th_td,
-        d_t_flight__ground, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground))
+    put(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, 0.0, 0.0, 0.0,
+        0.0, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td,
+        d_touchdown_q_rd__ground, 0.0, 0.0, 1.0, 0.0, d_touchdown_q_thd__b_y_apex,
+        d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td, d_touchdown_q_thd__ground,
+        d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground, d_foot_x__b_y_apex,
+        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground))
     return STATUS_OK
 
 

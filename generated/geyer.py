@@ -247,7 +247,6 @@ def geyer_stance(x, p, out):
     t_bottom = _x0*(-phase_td + (1.5)*math.pi)
     t_stance = _x0*(phase_lo - phase_td)
     bottom_q_r = _x2*l0
-    bottom_q_rd = 0.0
     bottom_q_th = -3.0*math.pi*_x3*a + (1.5)*math.pi*_x3 + _x7
     bottom_q_thd = omega/_x2**2
     liftoff_q_r = q_r_lo
@@ -257,8 +256,8 @@ def geyer_stance(x, p, out):
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return fail(out, STATUS_FALL)
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -421,7 +420,6 @@ def geyer_apex_return(x, p, out):
     _c1 = geyer_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -437,7 +435,7 @@ def geyer_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):

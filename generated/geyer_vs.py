@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:9b82b46142822163
+#   geyer.py sha256:6c76d7d4aabf633d
 # ----------------------------------------------------------------------------------------------
 """Simple variable-stiffness map (Geyer et al. per half) (report section 5.1): stance, state-at-time and
 apex-return kernels."""
@@ -721,14 +721,10 @@ def geyer_vs_apex_return(x, p, out):
     _c1 = geyer_vs_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    P_c_compression = _o1[10]
-    P_c_decompression = _o1[11]
-    passes = _o1[12]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -740,8 +736,8 @@ def geyer_vs_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11], _o1[12]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   flight_jacobian.py sha256:f3da99deace8dd95
-#   geyer_jacobian.py sha256:5917ec562dff88f1
+#   flight_jacobian.py sha256:b4f0a702d6e8de9a
+#   geyer_jacobian.py sha256:b49d619c3d362964
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module geyer_vs: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -1032,12 +1032,6 @@ def geyer_vs_stance_jacobian(x, p, out):
     d_bottom_q_r__q_thd_td = d_i_bottom_q_r__q_thd_td
     d_bottom_q_r__k_c = d_i_bottom_q_r__k_c
     d_bottom_q_r__k_d = d_i_bottom_q_r__k_d
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
     d_bottom_q_th__q_r_td = d_i_bottom_q_th__q_r_td
     d_bottom_q_th__q_rd_td = d_i_bottom_q_th__q_rd_td
     d_bottom_q_th__q_th_td = d_i_bottom_q_th__q_th_td
@@ -1050,12 +1044,6 @@ def geyer_vs_stance_jacobian(x, p, out):
     d_bottom_q_thd__q_thd_td = d_i_bottom_q_thd__q_thd_td
     d_bottom_q_thd__k_c = d_i_bottom_q_thd__k_c
     d_bottom_q_thd__k_d = d_i_bottom_q_thd__k_d
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
     d_liftoff_q_rd__q_r_td = d_i_liftoff_q_rd__q_r_td
     d_liftoff_q_rd__q_rd_td = d_i_liftoff_q_rd__q_rd_td
     d_liftoff_q_rd__q_th_td = d_i_liftoff_q_rd__q_th_td
@@ -1074,34 +1062,24 @@ def geyer_vs_stance_jacobian(x, p, out):
     d_liftoff_q_thd__q_thd_td = d_i_liftoff_q_thd__q_thd_td
     d_liftoff_q_thd__k_c = d_i_liftoff_q_thd__k_c
     d_liftoff_q_thd__k_d = d_i_liftoff_q_thd__k_d
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
     put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
         liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c_compression, P_c_decompression, passes,
         d_t_bottom__q_r_td, d_t_bottom__q_rd_td, d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c,
         d_t_bottom__k_d, d_t_stance__q_r_td, d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td,
         d_t_stance__k_c, d_t_stance__k_d, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td,
-        d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td,
-        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c,
-        d_bottom_q_rd__k_d, d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td,
-        d_bottom_q_th__q_thd_td, d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td,
-        d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c,
-        d_bottom_q_thd__k_d, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td,
-        d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td,
-        d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td, d_P_c_compression__q_rd_td,
-        d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td, d_P_c_compression__k_c,
-        d_P_c_compression__k_d, d_P_c_decompression__q_r_td, d_P_c_decompression__q_rd_td,
-        d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td, d_P_c_decompression__k_c,
-        d_P_c_decompression__k_d, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k_c, d_passes__k_d))
+        d_bottom_q_r__q_thd_td, d_bottom_q_r__k_c, d_bottom_q_r__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
+        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
+        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__q_r_td,
+        d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_P_c_compression__q_r_td,
+        d_P_c_compression__q_rd_td, d_P_c_compression__q_th_td, d_P_c_compression__q_thd_td,
+        d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__q_r_td,
+        d_P_c_decompression__q_rd_td, d_P_c_decompression__q_th_td, d_P_c_decompression__q_thd_td,
+        d_P_c_decompression__k_c, d_P_c_decompression__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1204,11 +1182,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[10]
     _j_td_q_rd__b_xd_apex = _o0[11]
@@ -1228,19 +1201,15 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     _j_foot_x__ground = _o0[29]
     # stance: Simple variable-stiffness map (Geyer et al. per half)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(91), 91)
     _c1 = geyer_vs_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    P_c_compression = _o1[10]
-    P_c_decompression = _o1[11]
-    passes = _o1[12]
     _j_t_stance__q_rd_td = _o1[20]
     _j_t_stance__q_th_td = _o1[21]
     _j_t_stance__q_thd_td = _o1[22]
@@ -1326,9 +1295,6 @@ def geyer_vs_apex_return_jacobian(x, p, out):
         direction, _o2))
     if _c2 != STATUS_OK:
         return fail(out, _c2)
-    apex_height = _o2[0]
-    apex_speed = _o2[1]
-    t_ascent = _o2[2]
     next_apex_x = _o2[4]
     _j_apex_height__q_rd = _o2[5]
     _j_apex_height__q_th = _o2[6]
@@ -1400,19 +1366,10 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     foot_y = -b_y_apex + ground
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
     d_t_stance__k_c = _j_t_stance__k_c
     d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
     d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
     d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
     d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
@@ -1425,48 +1382,30 @@ def geyer_vs_apex_return_jacobian(x, p, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
     d_P_c_compression__k_c = _j_P_c_compression__k_c
     d_P_c_compression__k_d = _j_P_c_compression__k_d
     d_P_c_decompression__k_c = _j_P_c_decompression__k_c
     d_P_c_decompression__k_d = _j_P_c_decompression__k_d
-    d_passes__b_y_apex = 0.0
-    d_passes__b_xd_apex = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__ground = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c_compression, P_c_decompression, passes,
-        d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
-        d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
-        d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d,
-        d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td, d_t_descent__ground,
-        d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
-        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, d_liftoff_q_r__b_y_apex,
-        d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k_c,
-        d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+    put(out, (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        step_length, foot_x, foot_y, _o1[10], _o1[11], _o1[12], d_apex_height__b_y_apex,
+        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c,
+        d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td,
+        d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0,
+        d_t_descent__q_th_td, d_t_descent__ground, 0.0, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex,
+        d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
         d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
         d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c,
         d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex,
         d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c,
-        d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,
-        d_foot_x__k_c, d_foot_x__k_d, d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td,
-        d_foot_y__ground, d_foot_y__k_c, d_foot_y__k_d, d_P_c_compression__b_y_apex,
-        d_P_c_compression__b_xd_apex, d_P_c_compression__q_th_td, d_P_c_compression__ground,
-        d_P_c_compression__k_c, d_P_c_compression__k_d, d_P_c_decompression__b_y_apex,
-        d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td, d_P_c_decompression__ground,
-        d_P_c_decompression__k_c, d_P_c_decompression__k_d, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k_c, d_passes__k_d))
+        d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0,
+        0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, d_P_c_compression__b_y_apex, d_P_c_compression__b_xd_apex,
+        d_P_c_compression__q_th_td, d_P_c_compression__ground, d_P_c_compression__k_c, d_P_c_compression__k_d,
+        d_P_c_decompression__b_y_apex, d_P_c_decompression__b_xd_apex, d_P_c_decompression__q_th_td,
+        d_P_c_decompression__ground, d_P_c_decompression__k_c, d_P_c_decompression__k_d, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:9b82b46142822163
+#   geyer.py sha256:6c76d7d4aabf633d
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 1 (leg length (l0 + q_r_b)/2) (report section 4.2): stance, state-at-time and
 apex-return kernels."""
@@ -182,7 +182,6 @@ def gravity_type1_stance(x, p, out):
     t_bottom = i_t_bottom
     t_stance = i_t_stance
     bottom_q_r = i_bottom_q_r
-    bottom_q_rd = 0.0
     bottom_q_th = i_bottom_q_th
     bottom_q_thd = _x15*(P_c*(i_t_bottom*ramp/i_t_stance - ramp + 1.0) + p_td)/i_bottom_q_r**2
     liftoff_q_r = q_r_lo
@@ -204,8 +203,8 @@ def gravity_type1_stance(x, p, out):
         liftoff_q_rd = i_liftoff_q_rd
     else:
         return fail(out, STATUS_INVALID_INPUT)
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes))
+    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -470,13 +469,10 @@ def gravity_type1_apex_return(x, p, out):
     _c1 = gravity_type1_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    P_c = _o1[10]
-    passes = _o1[11]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -488,8 +484,8 @@ def gravity_type1_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   flight_jacobian.py sha256:f3da99deace8dd95
-#   geyer_jacobian.py sha256:5917ec562dff88f1
+#   flight_jacobian.py sha256:b4f0a702d6e8de9a
+#   geyer_jacobian.py sha256:b49d619c3d362964
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type1: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -423,7 +423,6 @@ def gravity_type1_stance_jacobian(x, p, out):
     t_bottom = i_t_bottom
     t_stance = i_t_stance
     bottom_q_r = i_bottom_q_r
-    bottom_q_rd = 0.0
     bottom_q_th = i_bottom_q_th
     _x76 = (1.0/i_t_stance)
     _x68 = _x76*ramp
@@ -524,47 +523,29 @@ def gravity_type1_stance_jacobian(x, p, out):
     d_bottom_q_r__q_th_td = d_i_bottom_q_r__q_th_td
     d_bottom_q_r__q_thd_td = d_i_bottom_q_r__q_thd_td
     d_bottom_q_r__k = d_i_bottom_q_r__k
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k = 0.0
     d_bottom_q_th__q_r_td = d_i_bottom_q_th__q_r_td
     d_bottom_q_th__q_rd_td = d_i_bottom_q_th__q_rd_td
     d_bottom_q_th__q_th_td = d_i_bottom_q_th__q_th_td
     d_bottom_q_th__q_thd_td = d_i_bottom_q_th__q_thd_td
     d_bottom_q_th__k = d_i_bottom_q_th__k
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k = 0.0
     d_liftoff_q_th__q_r_td = d_i_liftoff_q_th__q_r_td
     d_liftoff_q_th__q_rd_td = d_i_liftoff_q_th__q_rd_td
     d_liftoff_q_th__q_th_td = d_i_liftoff_q_th__q_th_td
     d_liftoff_q_th__q_thd_td = d_i_liftoff_q_th__q_thd_td
     d_liftoff_q_th__k = d_i_liftoff_q_th__k
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
         d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
         d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
-        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
-        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0, 0.0, 0.0, 0.0,
         d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
         d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
-        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
-        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td,
         d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
         d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
         d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
-        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k))
+        d_P_c__q_thd_td, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -662,11 +643,6 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[10]
     _j_td_q_rd__b_xd_apex = _o0[11]
@@ -686,18 +662,15 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     _j_foot_x__ground = _o0[29]
     # stance: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(72), 72)
     _c1 = gravity_type1_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    P_c = _o1[10]
-    passes = _o1[11]
     _j_t_stance__q_rd_td = _o1[18]
     _j_t_stance__q_th_td = _o1[19]
     _j_t_stance__q_thd_td = _o1[20]
@@ -761,9 +734,6 @@ def gravity_type1_apex_return_jacobian(x, p, out):
         direction, _o2))
     if _c2 != STATUS_OK:
         return fail(out, _c2)
-    apex_height = _o2[0]
-    apex_speed = _o2[1]
-    t_ascent = _o2[2]
     next_apex_x = _o2[4]
     _j_apex_height__q_rd = _o2[5]
     _j_apex_height__q_th = _o2[6]
@@ -827,16 +797,9 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     foot_y = -b_y_apex + ground
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k = 0.0
     d_t_stance__k = _j_t_stance__k
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k = 0.0
     d_liftoff_q_rd__k = _j_liftoff_q_rd__k
     d_liftoff_q_th__k = _j_liftoff_q_th__k
     d_liftoff_q_thd__k = _j_liftoff_q_thd__k
@@ -845,36 +808,22 @@ def gravity_type1_apex_return_jacobian(x, p, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k = 0.0
     d_P_c__k = _j_P_c__k
-    d_passes__b_y_apex = 0.0
-    d_passes__b_xd_apex = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__ground = 0.0
-    d_passes__k = 0.0
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
-        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
-        d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
-        d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
-        d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
-        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
-        d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
-        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
-        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
-        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k))
+    put(out, (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        step_length, foot_x, foot_y, _o1[10], _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex,
+        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k,
+        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, 0.0, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0,
+        0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex,
+        d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k,
+        d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+        d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0,
+        -1.0, 0.0, 0.0, 1.0, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k,
+        0.0, 0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -7,8 +7,8 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   flight_jacobian.py sha256:f3da99deace8dd95
-#   geyer_jacobian.py sha256:5917ec562dff88f1
+#   flight_jacobian.py sha256:b4f0a702d6e8de9a
+#   geyer_jacobian.py sha256:b49d619c3d362964
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -185,17 +185,10 @@ def type5_solution_jac_q_r_td_q_rd_td_omega_g_eff_r_c_k(q_r_td, q_rd_td, omega, 
     d_phase_td__g_eff = _pd__11*d_s_td__g_eff
     d_phase_td__r_c = _pd__11*d_s_td__r_c
     d_phase_td__k = _pd__11*d_s_td__k
-    # derivatives of the outputs
-    d_omega0_hat__q_r_td = 0.0
-    d_omega0_hat__q_rd_td = 0.0
-    d_omega0_hat__g_eff = 0.0
-    d_a__q_r_td = 0.0
-    d_a__q_rd_td = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (omega0_hat, a, b, phase_td, s_td, d_omega0_hat__q_r_td, d_omega0_hat__q_rd_td,
-        d_omega0_hat__omega, d_omega0_hat__g_eff, d_omega0_hat__r_c, d_omega0_hat__k, d_a__q_r_td,
-        d_a__q_rd_td, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td, d_b__omega,
-        d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
+    put(out, (omega0_hat, a, b, phase_td, s_td, 0.0, 0.0, d_omega0_hat__omega, 0.0, d_omega0_hat__r_c,
+        d_omega0_hat__k, 0.0, 0.0, d_a__omega, d_a__g_eff, d_a__r_c, d_a__k, d_b__q_r_td, d_b__q_rd_td,
+        d_b__omega, d_b__g_eff, d_b__r_c, d_b__k, d_phase_td__q_r_td, d_phase_td__q_rd_td, d_phase_td__omega,
         d_phase_td__g_eff, d_phase_td__r_c, d_phase_td__k, d_s_td__q_r_td, d_s_td__q_rd_td, d_s_td__omega,
         d_s_td__g_eff, d_s_td__r_c, d_s_td__k))
     return STATUS_OK
@@ -358,10 +351,8 @@ def type5_leg_angle_jac_t_q_th_td_p_td_c0_c1_c2_k0_k1_k2_omega0_hat_phase_td(t, 
     d_q_th__phase_td = (_x70*(-_x10*_x11*_x15 + _x100*_x103 + _x101*_x95 + _x11*_x74 + _x11*_x78
         - _x14*_x19*c0 + _x19*_x82 + _x21*_x30 - 0.25*_x22*_x86*c2 + _x25*_x88 + _x25*(_x51*_x53 - _x92)
         - _x27*_x37*p_td + (0.25)*_x30*_x34 + _x72*_x98 + _x75*(_x48*_x53 + _x89) + _x93*_x96*k1))
-    # derivatives of the outputs
-    d_q_th__q_th_td = 1.0
-    return (q_th, d_q_th__t, d_q_th__q_th_td, d_q_th__p_td, d_q_th__c0, d_q_th__c1, d_q_th__c2, d_q_th__k0,
-        d_q_th__k1, d_q_th__k2, d_q_th__omega0_hat, d_q_th__phase_td)
+    return (q_th, d_q_th__t, 1.0, d_q_th__p_td, d_q_th__c0, d_q_th__c1, d_q_th__c2, d_q_th__k0, d_q_th__k1,
+        d_q_th__k2, d_q_th__omega0_hat, d_q_th__phase_td)
 
 
 @njit(cache=True, error_model="numpy")
@@ -862,7 +853,6 @@ def gravity_type5_stance_jacobian(x, p, out):
     t_stance = i_t_stance
     _x90 = i_a - i_b + 1.0
     bottom_q_r = _x90*l0
-    bottom_q_rd = 0.0
     _x91 = i_t_bottom**2
     _x92 = (0.5)*_x91
     _x93 = (0.3333333333333333)*i_t_bottom**3
@@ -999,38 +989,19 @@ def gravity_type5_stance_jacobian(x, p, out):
         d_liftoff_q_thd__k, ) = (_T[36, 0], _T[36, 1], _T[36, 2], _T[36, 3], _T[36, 4], )
     (d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td,
         d_liftoff_q_rd__k, ) = (_T[37, 0], _T[37, 1], _T[37, 2], _T[37, 3], _T[37, 4], )
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
+    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
         d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k, d_t_stance__q_r_td, d_t_stance__q_rd_td,
         d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k, d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td,
-        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, d_bottom_q_rd__q_r_td,
-        d_bottom_q_rd__q_rd_td, d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k,
+        d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td, d_bottom_q_r__k, 0.0, 0.0, 0.0, 0.0, 0.0,
         d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
         d_bottom_q_th__k, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td, d_bottom_q_thd__q_th_td,
-        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td,
-        d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td, d_liftoff_q_r__k, d_liftoff_q_rd__q_r_td,
+        d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__q_r_td,
         d_liftoff_q_rd__q_rd_td, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k,
         d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
         d_liftoff_q_th__k, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td, d_liftoff_q_thd__q_th_td,
         d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k, d_P_c__q_r_td, d_P_c__q_rd_td, d_P_c__q_th_td,
-        d_P_c__q_thd_td, d_P_c__k, d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td,
-        d_passes__k))
+        d_P_c__q_thd_td, d_P_c__k, 0.0, 0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1123,11 +1094,6 @@ def gravity_type5_apex_return_jacobian(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
     foot_x = _o0[5]
     _j_td_q_rd__b_y_apex = _o0[10]
     _j_td_q_rd__b_xd_apex = _o0[11]
@@ -1147,18 +1113,15 @@ def gravity_type5_apex_return_jacobian(x, p, out):
     _j_foot_x__ground = _o0[29]
     # stance: Gravity correction type 5 (time-varying momentum)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(72), 72)
     _c1 = gravity_type5_stance_jacobian(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    P_c = _o1[10]
-    passes = _o1[11]
     _j_t_stance__q_rd_td = _o1[18]
     _j_t_stance__q_th_td = _o1[19]
     _j_t_stance__q_thd_td = _o1[20]
@@ -1222,9 +1185,6 @@ def gravity_type5_apex_return_jacobian(x, p, out):
         direction, _o2))
     if _c2 != STATUS_OK:
         return fail(out, _c2)
-    apex_height = _o2[0]
-    apex_speed = _o2[1]
-    t_ascent = _o2[2]
     next_apex_x = _o2[4]
     _j_apex_height__q_rd = _o2[5]
     _j_apex_height__q_th = _o2[6]
@@ -1288,16 +1248,9 @@ def gravity_type5_apex_return_jacobian(x, p, out):
     foot_y = -b_y_apex + ground
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k = 0.0
     d_t_stance__k = _j_t_stance__k
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k = 0.0
     d_liftoff_q_rd__k = _j_liftoff_q_rd__k
     d_liftoff_q_th__k = _j_liftoff_q_th__k
     d_liftoff_q_thd__k = _j_liftoff_q_thd__k
@@ -1306,36 +1259,22 @@ def gravity_type5_apex_return_jacobian(x, p, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k = 0.0
     d_P_c__k = _j_P_c__k
-    d_passes__b_y_apex = 0.0
-    d_passes__b_xd_apex = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__ground = 0.0
-    d_passes__k = 0.0
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, P_c, passes, d_apex_height__b_y_apex,
-        d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k, d_t_descent__b_y_apex, d_t_descent__b_xd_apex, d_t_descent__q_th_td,
-        d_t_descent__ground, d_t_descent__k, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td,
-        d_t_ascent__ground, d_t_ascent__k, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex,
-        d_liftoff_q_r__q_th_td, d_liftoff_q_r__ground, d_liftoff_q_r__k, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k,
-        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
-        d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__ground, d_liftoff_q_thd__k, d_step_length__b_y_apex, d_step_length__b_xd_apex,
-        d_step_length__q_th_td, d_step_length__ground, d_step_length__k, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k, d_foot_y__b_y_apex,
-        d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k, d_P_c__b_y_apex,
-        d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k, d_passes__b_y_apex, d_passes__b_xd_apex,
-        d_passes__q_th_td, d_passes__ground, d_passes__k))
+    put(out, (_o2[0], _o2[1], _o0[4], _o1[1], _o2[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,
+        step_length, foot_x, foot_y, _o1[10], _o1[11], d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
+        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k, d_apex_speed__b_y_apex,
+        d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k,
+        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, 0.0, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k, d_t_ascent__b_y_apex,
+        d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k, 0.0, 0.0, 0.0, 0.0,
+        0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__ground, d_liftoff_q_rd__k, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex,
+        d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k, d_liftoff_q_thd__b_y_apex,
+        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k,
+        d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+        d_step_length__k, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0,
+        -1.0, 0.0, 0.0, 1.0, 0.0, d_P_c__b_y_apex, d_P_c__b_xd_apex, d_P_c__q_th_td, d_P_c__ground, d_P_c__k,
+        0.0, 0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:9b82b46142822163
-#   geyer_vs.py sha256:737db40f2d14d3b0
-#   gravity_type0.py sha256:7cc8e309dce39d36
-#   gravity_type1.py sha256:e8b38ab1e805eb17
-#   gravity_type2.py sha256:e59759572d4ea2db
-#   gravity_type3.py sha256:1a97aa9ed6004f9c
-#   gravity_type4.py sha256:26cecb3b9648aef8
-#   gravity_type5.py sha256:9598921c04c34961
+#   geyer.py sha256:6c76d7d4aabf633d
+#   geyer_vs.py sha256:f7c6be48db357647
+#   gravity_type0.py sha256:ad9aa94b60a46520
+#   gravity_type1.py sha256:fc634911adabfb0d
+#   gravity_type2.py sha256:dd0df0db4aa00774
+#   gravity_type3.py sha256:11357cd1a11e4f30
+#   gravity_type4.py sha256:4568d8e48fe34d06
+#   gravity_type5.py sha256:d9220d83b1ceb140
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -342,17 +342,16 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     t_half = _t_end
     end_q_th = _q_end + q_th
     end_q_r = _x6
-    end_q_rd = 0.0
     end_q_thd = (_p_end + m*q_r**2*q_thd)/(_x6**2*m)
     passes = _passes
     # bottom leg length q_r_b > 0
     if not ((end_q_r > 0.0)):
         return _NAN6 + (STATUS_FALL,)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(end_q_rd)
+    if not (math.isfinite(t_half) and math.isfinite(end_q_r) and math.isfinite(0.0)
             and math.isfinite(end_q_th) and math.isfinite(end_q_thd) and math.isfinite(passes)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
-    return (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, STATUS_OK)
+    return (t_half, end_q_r, 0.0, end_q_th, end_q_thd, passes, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -663,10 +662,8 @@ def zeroth_held(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s):
     z_b_q_r = _x4
     z_b_q_th = q_th_td
     z_b_q_thd = q_r_td**2*q_thd_td/_x4**2
-    z_lo_q_th = 0.0
-    z_lo_q_thd = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    return (z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, STATUS_OK)
+    return (z_b_q_r, z_b_q_th, z_b_q_thd, 0.0, 0.0, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -744,15 +741,10 @@ def iterative_stance_zeroth_geyer(x, p, out):
     _c0 = geyer_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -871,12 +863,10 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
     _c1 = iterative_stance_zeroth_geyer(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -888,8 +878,8 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1024,12 +1014,10 @@ def iterative_apex_return_zeroth_held(x, p, out):
     _c1 = iterative_stance_zeroth_held(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1041,8 +1029,8 @@ def iterative_apex_return_zeroth_held(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1096,15 +1084,10 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
     _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1182,12 +1165,10 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type0(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1199,8 +1180,8 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1254,15 +1235,10 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
     _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1340,12 +1316,10 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type1(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1357,8 +1331,8 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1412,15 +1386,10 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
     _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1498,12 +1467,10 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type2(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1515,8 +1482,8 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1570,15 +1537,10 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
     _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1656,12 +1618,10 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type3(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1673,8 +1633,8 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1728,15 +1688,10 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
     _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1814,12 +1769,10 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type4(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1831,8 +1784,8 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1886,15 +1839,10 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
     _c0 = gravity_type5_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -1972,12 +1920,10 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     _c1 = iterative_stance_zeroth_gravity_type5(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -1989,8 +1935,8 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2044,15 +1990,10 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
     _c0 = geyer_vs_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol))
     _c1 = iterative_core(_a1)
     if _c1[11] != STATUS_OK:
         return fail(out, _c1[11])
@@ -2130,12 +2071,10 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     _c1 = iterative_stance_zeroth_geyer_vs(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
     liftoff_q_thd = _o1[9]
-    passes = _o1[10]
     # liftoff -> next apex: exact ballistic ascent
     _c2 = liftoff_to_apex(liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, g_f, direction)
     if _c2[5] != STATUS_OK:
@@ -2147,8 +2086,8 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, passes))
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10]))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   geyer.py sha256:9b82b46142822163
-#   geyer_vs.py sha256:737db40f2d14d3b0
-#   gravity_type0.py sha256:7cc8e309dce39d36
-#   gravity_type1.py sha256:e8b38ab1e805eb17
-#   gravity_type2.py sha256:e59759572d4ea2db
-#   gravity_type3.py sha256:1a97aa9ed6004f9c
-#   gravity_type4.py sha256:26cecb3b9648aef8
-#   gravity_type5.py sha256:9598921c04c34961
-#   iterative.py sha256:c7a0a0a5a3b98d5d
+#   geyer.py sha256:6c76d7d4aabf633d
+#   geyer_vs.py sha256:f7c6be48db357647
+#   gravity_type0.py sha256:ad9aa94b60a46520
+#   gravity_type1.py sha256:fc634911adabfb0d
+#   gravity_type2.py sha256:dd0df0db4aa00774
+#   gravity_type3.py sha256:11357cd1a11e4f30
+#   gravity_type4.py sha256:4568d8e48fe34d06
+#   gravity_type5.py sha256:d9220d83b1ceb140
+#   iterative.py sha256:63e580948b506fde
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half (touchdown to bottom, k_c; converging form) (report section 5.2.1): touchdown ->
 bottom."""
@@ -104,8 +104,6 @@ def iterative_compression_zeroth_geyer(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -229,8 +227,6 @@ def iterative_compression_zeroth_gravity_type0(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -294,8 +290,6 @@ def iterative_compression_zeroth_gravity_type1(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -359,8 +353,6 @@ def iterative_compression_zeroth_gravity_type2(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -424,8 +416,6 @@ def iterative_compression_zeroth_gravity_type3(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -489,8 +479,6 @@ def iterative_compression_zeroth_gravity_type4(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -554,8 +542,6 @@ def iterative_compression_zeroth_gravity_type5(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))
@@ -619,8 +605,6 @@ def iterative_compression_zeroth_geyer_vs(x, p, out):
     z_b_q_r = _o0[2]
     z_b_q_th = _o0[4]
     z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # compression half, k_c (report 5.2.1)
     _c1 = (schwind_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th,
         z_b_q_thd, nodes, iterations, tol))

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   iterative.py sha256:c7a0a0a5a3b98d5d
+#   iterative.py sha256:63e580948b506fde
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -173,7 +173,6 @@ def iterative_decompression_apex(x, p, out):
     _c0 = iterative_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    t_half = _o0[0]
     liftoff_q_r = _o0[1]
     liftoff_q_rd = _o0[2]
     liftoff_q_th = _o0[3]
@@ -189,7 +188,7 @@ def iterative_decompression_apex(x, p, out):
     apex_height = _c1[0]
     apex_speed = _c1[1]
     t_ascent = _c1[2]
-    put(out, (apex_height, apex_speed, t_half, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, _o0[0], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):

@@ -7,15 +7,15 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   flight_jacobian.py sha256:f3da99deace8dd95
-#   geyer_jacobian.py sha256:5917ec562dff88f1
-#   geyer_vs_jacobian.py sha256:ef5e80e66a922da0
-#   gravity_type0_jacobian.py sha256:6a94a13e2f687109
-#   gravity_type1_jacobian.py sha256:96904bc70acc4290
-#   gravity_type2_jacobian.py sha256:48fdeb260a998058
-#   gravity_type3_jacobian.py sha256:cd93bc57544e5668
-#   gravity_type4_jacobian.py sha256:c748803e221d8a1c
-#   gravity_type5_jacobian.py sha256:f5af8a328b1f002f
+#   flight_jacobian.py sha256:b4f0a702d6e8de9a
+#   geyer_jacobian.py sha256:b49d619c3d362964
+#   geyer_vs_jacobian.py sha256:8689ff27abdd4d40
+#   gravity_type0_jacobian.py sha256:e596abc1e98bdb79
+#   gravity_type1_jacobian.py sha256:1f9f5bd72c4e22e9
+#   gravity_type2_jacobian.py sha256:2d9246dcd5de802b
+#   gravity_type3_jacobian.py sha256:d84ed4196ee0f997
+#   gravity_type4_jacobian.py sha256:127303ff852a839f
+#   gravity_type5_jacobian.py sha256:c53566e98c8ad550
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -232,32 +232,11 @@ def zeroth_held_jac_q_r_td_q_rd_td_q_th_td_q_thd_td_k_c(q_r_td, q_rd_td, q_th_td
     d_z_b_q_thd__q_th_td = _pd__0*d_z_b_q_r__q_th_td
     d_z_b_q_thd__q_thd_td = _pd__0*d_z_b_q_r__q_thd_td + _x23
     d_z_b_q_thd__k_c = _pd__0*d_z_b_q_r__k_c
-    z_lo_q_th = 0.0
-    z_lo_q_thd = 0.0
-    # derivatives of the outputs
-    d_z_b_q_th__q_r_td = 0.0
-    d_z_b_q_th__q_rd_td = 0.0
-    d_z_b_q_th__q_th_td = 1.0
-    d_z_b_q_th__q_thd_td = 0.0
-    d_z_b_q_th__k_c = 0.0
-    d_z_lo_q_th__q_r_td = 0.0
-    d_z_lo_q_th__q_rd_td = 0.0
-    d_z_lo_q_th__q_th_td = 0.0
-    d_z_lo_q_th__q_thd_td = 0.0
-    d_z_lo_q_th__k_c = 0.0
-    d_z_lo_q_thd__q_r_td = 0.0
-    d_z_lo_q_thd__q_rd_td = 0.0
-    d_z_lo_q_thd__q_th_td = 0.0
-    d_z_lo_q_thd__q_thd_td = 0.0
-    d_z_lo_q_thd__k_c = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, d_z_b_q_r__q_r_td, d_z_b_q_r__q_rd_td,
-        d_z_b_q_r__q_th_td, d_z_b_q_r__q_thd_td, d_z_b_q_r__k_c, d_z_b_q_th__q_r_td, d_z_b_q_th__q_rd_td,
-        d_z_b_q_th__q_th_td, d_z_b_q_th__q_thd_td, d_z_b_q_th__k_c, d_z_b_q_thd__q_r_td, d_z_b_q_thd__q_rd_td,
-        d_z_b_q_thd__q_th_td, d_z_b_q_thd__q_thd_td, d_z_b_q_thd__k_c, d_z_lo_q_th__q_r_td,
-        d_z_lo_q_th__q_rd_td, d_z_lo_q_th__q_th_td, d_z_lo_q_th__q_thd_td, d_z_lo_q_th__k_c,
-        d_z_lo_q_thd__q_r_td, d_z_lo_q_thd__q_rd_td, d_z_lo_q_thd__q_th_td, d_z_lo_q_thd__q_thd_td,
-        d_z_lo_q_thd__k_c))
+    put(out, (z_b_q_r, z_b_q_th, z_b_q_thd, 0.0, 0.0, d_z_b_q_r__q_r_td, d_z_b_q_r__q_rd_td,
+        d_z_b_q_r__q_th_td, d_z_b_q_r__q_thd_td, d_z_b_q_r__k_c, 0.0, 0.0, 1.0, 0.0, 0.0, d_z_b_q_thd__q_r_td,
+        d_z_b_q_thd__q_rd_td, d_z_b_q_thd__q_th_td, d_z_b_q_thd__q_thd_td, d_z_b_q_thd__k_c, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
     return STATUS_OK
 
 
@@ -960,7 +939,6 @@ def schwind_compression_jvp6_4eaacb(_a, out):
     _x39 = -_D + q_r
     end_q_r = _x39
     d_end_q_r__0 = 1.0 - _d_D__0
-    end_q_rd = 0.0
     _x40 = q_r**2
     _x41 = _p_end + _x40*m*q_thd
     _x42 = (1.0/m)
@@ -992,30 +970,17 @@ def schwind_compression_jvp6_4eaacb(_a, out):
     d_end_q_r__3 = -_d_D__3
     d_end_q_r__4 = -_d_D__4
     d_end_q_r__5 = -_d_D__5
-    d_end_q_rd__0 = 0.0
-    d_end_q_rd__1 = 0.0
-    d_end_q_rd__2 = 0.0
-    d_end_q_rd__3 = 0.0
-    d_end_q_rd__4 = 0.0
-    d_end_q_rd__5 = 0.0
     d_end_q_th__0 = _d_q_end__0
     d_end_q_th__1 = _d_q_end__1
     d_end_q_th__3 = _d_q_end__3
     d_end_q_th__4 = _d_q_end__4
     d_end_q_th__5 = _d_q_end__5
-    d_passes__0 = 0.0
-    d_passes__1 = 0.0
-    d_passes__2 = 0.0
-    d_passes__3 = 0.0
-    d_passes__4 = 0.0
-    d_passes__5 = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
+    put(out, (t_half, end_q_r, 0.0, end_q_th, end_q_thd, passes, d_t_half__0, d_t_half__1, d_t_half__2,
         d_t_half__3, d_t_half__4, d_t_half__5, d_end_q_r__0, d_end_q_r__1, d_end_q_r__2, d_end_q_r__3,
-        d_end_q_r__4, d_end_q_r__5, d_end_q_rd__0, d_end_q_rd__1, d_end_q_rd__2, d_end_q_rd__3, d_end_q_rd__4,
-        d_end_q_rd__5, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2, d_end_q_th__3, d_end_q_th__4,
-        d_end_q_th__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2, d_end_q_thd__3, d_end_q_thd__4,
-        d_end_q_thd__5, d_passes__0, d_passes__1, d_passes__2, d_passes__3, d_passes__4, d_passes__5))
+        d_end_q_r__4, d_end_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_end_q_th__0, d_end_q_th__1, d_end_q_th__2,
+        d_end_q_th__3, d_end_q_th__4, d_end_q_th__5, d_end_q_thd__0, d_end_q_thd__1, d_end_q_thd__2,
+        d_end_q_thd__3, d_end_q_thd__4, d_end_q_thd__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
     return STATUS_OK
 
 
@@ -1658,33 +1623,19 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     d_t_half__k_d = _d_t_end__k_d
     d_t_half__guess_q_th = _d_t_end__guess_q_th
     d_t_half__guess_q_thd = _d_t_end__guess_q_thd
-    d_end_q_r__q_r = 0.0
-    d_end_q_r__q_th = 0.0
-    d_end_q_r__q_thd = 0.0
-    d_end_q_r__k_d = 0.0
-    d_end_q_r__guess_q_th = 0.0
-    d_end_q_r__guess_q_thd = 0.0
     d_end_q_th__q_r = _d_q_end__q_r
     d_end_q_th__q_thd = _d_q_end__q_thd
     d_end_q_th__k_d = _d_q_end__k_d
     d_end_q_th__guess_q_th = _d_q_end__guess_q_th
     d_end_q_th__guess_q_thd = _d_q_end__guess_q_thd
-    d_passes__q_r = 0.0
-    d_passes__q_th = 0.0
-    d_passes__q_thd = 0.0
-    d_passes__k_d = 0.0
-    d_passes__guess_q_th = 0.0
-    d_passes__guess_q_thd = 0.0
     # (internal helper: its callers check that their outputs are finite)
     put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd, passes, d_t_half__q_r, d_t_half__q_th,
-        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, d_end_q_r__q_r,
-        d_end_q_r__q_th, d_end_q_r__q_thd, d_end_q_r__k_d, d_end_q_r__guess_q_th, d_end_q_r__guess_q_thd,
-        d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
+        d_t_half__q_thd, d_t_half__k_d, d_t_half__guess_q_th, d_t_half__guess_q_thd, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, d_end_q_rd__q_r, d_end_q_rd__q_th, d_end_q_rd__q_thd, d_end_q_rd__k_d, d_end_q_rd__guess_q_th,
         d_end_q_rd__guess_q_thd, d_end_q_th__q_r, d_end_q_th__q_th, d_end_q_th__q_thd, d_end_q_th__k_d,
         d_end_q_th__guess_q_th, d_end_q_th__guess_q_thd, d_end_q_thd__q_r, d_end_q_thd__q_th,
-        d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd,
-        d_passes__q_r, d_passes__q_th, d_passes__q_thd, d_passes__k_d, d_passes__guess_q_th,
-        d_passes__guess_q_thd))
+        d_end_q_thd__q_thd, d_end_q_thd__k_d, d_end_q_thd__guess_q_th, d_end_q_thd__guess_q_thd, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     return STATUS_OK
 
 
@@ -1854,10 +1805,7 @@ def iterative_core_jvp6_b60fdf(_a, out):
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     t_decompression = _o1[0]
-    liftoff_q_r = _o1[1]
-    liftoff_q_rd = _o1[2]
     liftoff_q_th = _o1[3]
-    liftoff_q_thd = _o1[4]
     d_passes = _o1[5]
     _j_t_decompression__q_r = _o1[6]
     _j_t_decompression__q_th = _o1[7]
@@ -1971,40 +1919,19 @@ def iterative_core_jvp6_b60fdf(_a, out):
     # the leg stays above horizontal
     if not ((abs(liftoff_q_th) < (0.5)*math.pi)):
         return fail(out, STATUS_FALL)
-    # derivatives of the outputs
-    d_bottom_q_rd__0 = 0.0
-    d_bottom_q_rd__1 = 0.0
-    d_bottom_q_rd__2 = 0.0
-    d_bottom_q_rd__3 = 0.0
-    d_bottom_q_rd__4 = 0.0
-    d_bottom_q_rd__5 = 0.0
-    d_liftoff_q_r__0 = 0.0
-    d_liftoff_q_r__1 = 0.0
-    d_liftoff_q_r__2 = 0.0
-    d_liftoff_q_r__3 = 0.0
-    d_liftoff_q_r__4 = 0.0
-    d_liftoff_q_r__5 = 0.0
-    d_passes__0 = 0.0
-    d_passes__1 = 0.0
-    d_passes__2 = 0.0
-    d_passes__3 = 0.0
-    d_passes__4 = 0.0
-    d_passes__5 = 0.0
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2,
-        d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2,
-        d_t_stance__3, d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2,
-        d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, d_bottom_q_rd__0, d_bottom_q_rd__1,
-        d_bottom_q_rd__2, d_bottom_q_rd__3, d_bottom_q_rd__4, d_bottom_q_rd__5, d_bottom_q_th__0,
-        d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5,
-        d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4,
-        d_bottom_q_thd__5, d_liftoff_q_r__0, d_liftoff_q_r__1, d_liftoff_q_r__2, d_liftoff_q_r__3,
-        d_liftoff_q_r__4, d_liftoff_q_r__5, d_liftoff_q_rd__0, d_liftoff_q_rd__1, d_liftoff_q_rd__2,
-        d_liftoff_q_rd__3, d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0, d_liftoff_q_th__1,
-        d_liftoff_q_th__2, d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5, d_liftoff_q_thd__0,
-        d_liftoff_q_thd__1, d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4, d_liftoff_q_thd__5,
-        d_passes__0, d_passes__1, d_passes__2, d_passes__3, d_passes__4, d_passes__5))
+    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, _o1[1], _o1[2],
+        liftoff_q_th, _o1[4], passes, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2, d_t_bottom__3,
+        d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2, d_t_stance__3,
+        d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2, d_bottom_q_r__3,
+        d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0, d_bottom_q_th__1,
+        d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5, d_bottom_q_thd__0,
+        d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4, d_bottom_q_thd__5, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__0, d_liftoff_q_rd__1, d_liftoff_q_rd__2, d_liftoff_q_rd__3,
+        d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0, d_liftoff_q_th__1, d_liftoff_q_th__2,
+        d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5, d_liftoff_q_thd__0, d_liftoff_q_thd__1,
+        d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4, d_liftoff_q_thd__5, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0))
     return STATUS_OK
 
 
@@ -2084,142 +2011,23 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
     _c0 = geyer_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[20]
-    _j_z_b_q_r__q_rd_td = _o0[21]
-    _j_z_b_q_r__q_thd_td = _o0[23]
-    _j_z_b_q_r__k = _o0[24]
-    _j_z_b_q_th__q_r_td = _o0[30]
-    _j_z_b_q_th__q_rd_td = _o0[31]
-    _j_z_b_q_th__q_th_td = _o0[32]
-    _j_z_b_q_th__q_thd_td = _o0[33]
-    _j_z_b_q_th__k = _o0[34]
-    _j_z_b_q_thd__q_r_td = _o0[35]
-    _j_z_b_q_thd__q_rd_td = _o0[36]
-    _j_z_b_q_thd__q_thd_td = _o0[38]
-    _j_z_b_q_thd__k = _o0[39]
-    _j_z_lo_q_th__q_r_td = _o0[50]
-    _j_z_lo_q_th__q_rd_td = _o0[51]
-    _j_z_lo_q_th__q_th_td = _o0[52]
-    _j_z_lo_q_th__q_thd_td = _o0[53]
-    _j_z_lo_q_th__k = _o0[54]
-    _j_z_lo_q_thd__q_r_td = _o0[55]
-    _j_z_lo_q_thd__q_rd_td = _o0[56]
-    _j_z_lo_q_thd__q_thd_td = _o0[58]
-    _j_z_lo_q_thd__k = _o0[59]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td, 0.0,
-        _j_z_b_q_th__q_th_td, 0.0, _j_z_lo_q_th__q_th_td, 0.0, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td,
-        _j_z_b_q_thd__q_thd_td, _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k,
-        _j_z_b_q_th__k, _j_z_b_q_thd__k, _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[20], _o0[30], _o0[35], _o0[50], _o0[55], _o0[21],
+        _o0[31], _o0[36], _o0[51], _o0[56], 0.0, _o0[32], 0.0, _o0[52], 0.0, _o0[23], _o0[33], _o0[38],
+        _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2321,9 +2129,6 @@ def iterative_apex_return_jacobian_tail_03c072(_a, out):
         direction, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    apex_height = _o0[0]
-    apex_speed = _o0[1]
-    t_ascent = _o0[2]
     next_apex_x = _o0[4]
     _j_apex_height__q_rd = _o0[5]
     _j_apex_height__q_th = _o0[6]
@@ -2395,19 +2200,10 @@ def iterative_apex_return_jacobian_tail_03c072(_a, out):
     foot_y = -b_y_apex + ground
     # derivatives of the outputs
     d_t_descent__b_y_apex = _j_t_descent__b_y_apex
-    d_t_descent__b_xd_apex = 0.0
     d_t_descent__q_th_td = _j_t_descent__q_th_td
     d_t_descent__ground = _j_t_descent__ground
-    d_t_descent__k_c = 0.0
-    d_t_descent__k_d = 0.0
     d_t_stance__k_c = _j_t_stance__k_c
     d_t_stance__k_d = _j_t_stance__k_d
-    d_liftoff_q_r__b_y_apex = 0.0
-    d_liftoff_q_r__b_xd_apex = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__ground = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
     d_liftoff_q_rd__k_c = _j_liftoff_q_rd__k_c
     d_liftoff_q_rd__k_d = _j_liftoff_q_rd__k_d
     d_liftoff_q_th__k_c = _j_liftoff_q_th__k_c
@@ -2420,48 +2216,30 @@ def iterative_apex_return_jacobian_tail_03c072(_a, out):
     d_foot_x__b_xd_apex = _j_foot_x__b_xd_apex
     d_foot_x__q_th_td = _j_foot_x__q_th_td
     d_foot_x__ground = _j_foot_x__ground
-    d_foot_x__k_c = 0.0
-    d_foot_x__k_d = 0.0
-    d_foot_y__b_y_apex = -1.0
-    d_foot_y__b_xd_apex = 0.0
-    d_foot_y__q_th_td = 0.0
-    d_foot_y__ground = 1.0
-    d_foot_y__k_c = 0.0
-    d_foot_y__k_d = 0.0
-    d_passes__b_y_apex = 0.0
-    d_passes__b_xd_apex = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__ground = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
     # every value output finite, or the inputs were far outside a physical range (the
     # derivatives are checked by the role kernels that return them)
-    if not (math.isfinite(apex_height) and math.isfinite(apex_speed) and math.isfinite(t_descent)
-            and math.isfinite(t_stance) and math.isfinite(t_ascent) and math.isfinite(liftoff_q_r)
+    if not (math.isfinite(_o0[0]) and math.isfinite(_o0[1]) and math.isfinite(t_descent)
+            and math.isfinite(t_stance) and math.isfinite(_o0[2]) and math.isfinite(liftoff_q_r)
             and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
             and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)
             and math.isfinite(passes)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (_o0[0], _o0[1], t_descent, t_stance, _o0[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y, passes, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
         d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
         d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, d_t_descent__b_xd_apex,
-        d_t_descent__q_th_td, d_t_descent__ground, d_t_descent__k_c, d_t_descent__k_d, d_t_stance__b_y_apex,
-        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
-        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
-        d_t_ascent__k_d, d_liftoff_q_r__b_y_apex, d_liftoff_q_r__b_xd_apex, d_liftoff_q_r__q_th_td,
-        d_liftoff_q_r__ground, d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__b_y_apex,
-        d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c,
-        d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td,
-        d_liftoff_q_th__ground, d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex,
-        d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c,
-        d_liftoff_q_thd__k_d, d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td,
-        d_step_length__ground, d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, d_foot_x__k_c, d_foot_x__k_d,
-        d_foot_y__b_y_apex, d_foot_y__b_xd_apex, d_foot_y__q_th_td, d_foot_y__ground, d_foot_y__k_c,
-        d_foot_y__k_d, d_passes__b_y_apex, d_passes__b_xd_apex, d_passes__q_th_td, d_passes__ground,
-        d_passes__k_c, d_passes__k_d))
+        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
+        d_t_descent__ground, 0.0, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
+        d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
+        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
+        d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
+        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c,
+        d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
+        d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex,
+        d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c,
+        d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0,
+        0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
     return STATUS_OK
 
 
@@ -2544,74 +2322,20 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_geyer(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2662,130 +2386,23 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
         g_s, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[0]
-    z_b_q_th = _o0[1]
-    z_b_q_thd = _o0[2]
-    z_lo_q_th = _o0[3]
-    z_lo_q_thd = _o0[4]
-    _j_z_b_q_r__q_r_td = _o0[5]
-    _j_z_b_q_r__q_rd_td = _o0[6]
-    _j_z_b_q_r__q_th_td = _o0[7]
-    _j_z_b_q_r__q_thd_td = _o0[8]
-    _j_z_b_q_r__k_c = _o0[9]
-    _j_z_b_q_th__q_th_td = _o0[12]
-    _j_z_b_q_thd__q_r_td = _o0[15]
-    _j_z_b_q_thd__q_rd_td = _o0[16]
-    _j_z_b_q_thd__q_th_td = _o0[17]
-    _j_z_b_q_thd__q_thd_td = _o0[18]
-    _j_z_b_q_thd__k_c = _o0[19]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 1.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, 0.0, _j_z_b_q_thd__q_r_td,
-        0.0, 0.0, _j_z_b_q_r__q_rd_td, 0.0, _j_z_b_q_thd__q_rd_td, 0.0, 0.0, _j_z_b_q_r__q_th_td,
-        _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, 0.0, 0.0, _j_z_b_q_r__q_thd_td, 0.0,
-        _j_z_b_q_thd__q_thd_td, 0.0, 0.0, _j_z_b_q_r__k_c, 0.0, _j_z_b_q_thd__k_c, 0.0, 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[0], _o0[1], _o0[2],
+        _o0[3], _o0[4], 1.0, nodes, iterations, tol, _o0[5], 0.0, _o0[15], 0.0, 0.0, _o0[6], 0.0, _o0[16],
+        0.0, 0.0, _o0[7], _o0[12], _o0[17], 0.0, 0.0, _o0[8], 0.0, _o0[18], 0.0, 0.0, _o0[9], 0.0, _o0[19],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2836,74 +2453,20 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_held(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2957,146 +2520,23 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
     _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3147,74 +2587,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type0(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3268,146 +2654,23 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
     _c0 = gravity_type1_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3458,74 +2721,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type1(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3579,146 +2788,23 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
     _c0 = gravity_type2_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3769,74 +2855,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type2(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -3890,146 +2922,23 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
     _c0 = gravity_type3_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4080,74 +2989,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type3(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4201,146 +3056,23 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
     _c0 = gravity_type4_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4391,74 +3123,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type4(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4512,146 +3190,23 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
     _c0 = gravity_type5_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[22]
-    _j_z_b_q_r__q_rd_td = _o0[23]
-    _j_z_b_q_r__q_th_td = _o0[24]
-    _j_z_b_q_r__q_thd_td = _o0[25]
-    _j_z_b_q_r__k = _o0[26]
-    _j_z_b_q_th__q_r_td = _o0[32]
-    _j_z_b_q_th__q_rd_td = _o0[33]
-    _j_z_b_q_th__q_th_td = _o0[34]
-    _j_z_b_q_th__q_thd_td = _o0[35]
-    _j_z_b_q_th__k = _o0[36]
-    _j_z_b_q_thd__q_r_td = _o0[37]
-    _j_z_b_q_thd__q_rd_td = _o0[38]
-    _j_z_b_q_thd__q_th_td = _o0[39]
-    _j_z_b_q_thd__q_thd_td = _o0[40]
-    _j_z_b_q_thd__k = _o0[41]
-    _j_z_lo_q_th__q_r_td = _o0[52]
-    _j_z_lo_q_th__q_rd_td = _o0[53]
-    _j_z_lo_q_th__q_th_td = _o0[54]
-    _j_z_lo_q_th__q_thd_td = _o0[55]
-    _j_z_lo_q_th__k = _o0[56]
-    _j_z_lo_q_thd__q_r_td = _o0[57]
-    _j_z_lo_q_thd__q_rd_td = _o0[58]
-    _j_z_lo_q_thd__q_th_td = _o0[59]
-    _j_z_lo_q_thd__q_thd_td = _o0[60]
-    _j_z_lo_q_thd__k = _o0[61]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k, _j_z_b_q_th__k, _j_z_b_q_thd__k,
-        _j_z_lo_q_th__k, _j_z_lo_q_thd__k, 0.0, 0.0, 0.0, 0.0, 0.0))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57], _o0[23],
+        _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25], _o0[35],
+        _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4702,74 +3257,20 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_gravity_type5(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -4823,152 +3324,24 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
     _c0 = geyer_vs_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
-    _j_z_b_q_r__q_r_td = _o0[25]
-    _j_z_b_q_r__q_rd_td = _o0[26]
-    _j_z_b_q_r__q_th_td = _o0[27]
-    _j_z_b_q_r__q_thd_td = _o0[28]
-    _j_z_b_q_r__k_c = _o0[29]
-    _j_z_b_q_r__k_d = _o0[30]
-    _j_z_b_q_th__q_r_td = _o0[37]
-    _j_z_b_q_th__q_rd_td = _o0[38]
-    _j_z_b_q_th__q_th_td = _o0[39]
-    _j_z_b_q_th__q_thd_td = _o0[40]
-    _j_z_b_q_th__k_c = _o0[41]
-    _j_z_b_q_th__k_d = _o0[42]
-    _j_z_b_q_thd__q_r_td = _o0[43]
-    _j_z_b_q_thd__q_rd_td = _o0[44]
-    _j_z_b_q_thd__q_th_td = _o0[45]
-    _j_z_b_q_thd__q_thd_td = _o0[46]
-    _j_z_b_q_thd__k_c = _o0[47]
-    _j_z_b_q_thd__k_d = _o0[48]
-    _j_z_lo_q_th__q_r_td = _o0[61]
-    _j_z_lo_q_th__q_rd_td = _o0[62]
-    _j_z_lo_q_th__q_th_td = _o0[63]
-    _j_z_lo_q_th__q_thd_td = _o0[64]
-    _j_z_lo_q_th__k_c = _o0[65]
-    _j_z_lo_q_th__k_d = _o0[66]
-    _j_z_lo_q_thd__q_r_td = _o0[67]
-    _j_z_lo_q_thd__q_rd_td = _o0[68]
-    _j_z_lo_q_thd__q_th_td = _o0[69]
-    _j_z_lo_q_thd__q_thd_td = _o0[70]
-    _j_z_lo_q_thd__k_c = _o0[71]
-    _j_z_lo_q_thd__k_d = _o0[72]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, nodes, iterations, tol, _j_z_b_q_r__q_r_td, _j_z_b_q_th__q_r_td,
-        _j_z_b_q_thd__q_r_td, _j_z_lo_q_th__q_r_td, _j_z_lo_q_thd__q_r_td, _j_z_b_q_r__q_rd_td,
-        _j_z_b_q_th__q_rd_td, _j_z_b_q_thd__q_rd_td, _j_z_lo_q_th__q_rd_td, _j_z_lo_q_thd__q_rd_td,
-        _j_z_b_q_r__q_th_td, _j_z_b_q_th__q_th_td, _j_z_b_q_thd__q_th_td, _j_z_lo_q_th__q_th_td,
-        _j_z_lo_q_thd__q_th_td, _j_z_b_q_r__q_thd_td, _j_z_b_q_th__q_thd_td, _j_z_b_q_thd__q_thd_td,
-        _j_z_lo_q_th__q_thd_td, _j_z_lo_q_thd__q_thd_td, _j_z_b_q_r__k_c, _j_z_b_q_th__k_c, _j_z_b_q_thd__k_c,
-        _j_z_lo_q_th__k_c, _j_z_lo_q_thd__k_c, _j_z_b_q_r__k_d, _j_z_b_q_th__k_d, _j_z_b_q_thd__k_d,
-        _j_z_lo_q_th__k_d, _j_z_lo_q_thd__k_d))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, nodes, iterations, tol, _o0[25], _o0[37], _o0[43], _o0[61], _o0[67], _o0[26],
+        _o0[38], _o0[44], _o0[62], _o0[68], _o0[27], _o0[39], _o0[45], _o0[63], _o0[69], _o0[28], _o0[40],
+        _o0[46], _o0[64], _o0[70], _o0[29], _o0[41], _o0[47], _o0[65], _o0[71], _o0[30], _o0[42], _o0[48],
+        _o0[66], _o0[72]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_bottom = _o1[0]
-    t_stance = _o1[1]
-    bottom_q_r = _o1[2]
-    bottom_q_rd = _o1[3]
-    bottom_q_th = _o1[4]
-    bottom_q_thd = _o1[5]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    d_t_bottom__q_r_td = _o1[11]
-    d_t_bottom__q_rd_td = _o1[12]
-    d_t_bottom__q_th_td = _o1[13]
-    d_t_bottom__q_thd_td = _o1[14]
-    d_t_bottom__k_c = _o1[15]
-    d_t_bottom__k_d = _o1[16]
-    d_t_stance__q_r_td = _o1[17]
-    d_t_stance__q_rd_td = _o1[18]
-    d_t_stance__q_th_td = _o1[19]
-    d_t_stance__q_thd_td = _o1[20]
-    d_t_stance__k_c = _o1[21]
-    d_t_stance__k_d = _o1[22]
-    d_bottom_q_r__q_r_td = _o1[23]
-    d_bottom_q_r__q_rd_td = _o1[24]
-    d_bottom_q_r__q_th_td = _o1[25]
-    d_bottom_q_r__q_thd_td = _o1[26]
-    d_bottom_q_r__k_c = _o1[27]
-    d_bottom_q_r__k_d = _o1[28]
-    d_bottom_q_th__q_r_td = _o1[35]
-    d_bottom_q_th__q_rd_td = _o1[36]
-    d_bottom_q_th__q_th_td = _o1[37]
-    d_bottom_q_th__q_thd_td = _o1[38]
-    d_bottom_q_th__k_c = _o1[39]
-    d_bottom_q_th__k_d = _o1[40]
-    d_bottom_q_thd__q_r_td = _o1[41]
-    d_bottom_q_thd__q_rd_td = _o1[42]
-    d_bottom_q_thd__q_th_td = _o1[43]
-    d_bottom_q_thd__q_thd_td = _o1[44]
-    d_bottom_q_thd__k_c = _o1[45]
-    d_bottom_q_thd__k_d = _o1[46]
-    d_liftoff_q_rd__q_r_td = _o1[53]
-    d_liftoff_q_rd__q_rd_td = _o1[54]
-    d_liftoff_q_rd__q_th_td = _o1[55]
-    d_liftoff_q_rd__q_thd_td = _o1[56]
-    d_liftoff_q_rd__k_c = _o1[57]
-    d_liftoff_q_rd__k_d = _o1[58]
-    d_liftoff_q_th__q_r_td = _o1[59]
-    d_liftoff_q_th__q_rd_td = _o1[60]
-    d_liftoff_q_th__q_th_td = _o1[61]
-    d_liftoff_q_th__q_thd_td = _o1[62]
-    d_liftoff_q_th__k_c = _o1[63]
-    d_liftoff_q_th__k_d = _o1[64]
-    d_liftoff_q_thd__q_r_td = _o1[65]
-    d_liftoff_q_thd__q_rd_td = _o1[66]
-    d_liftoff_q_thd__q_th_td = _o1[67]
-    d_liftoff_q_thd__q_thd_td = _o1[68]
-    d_liftoff_q_thd__k_c = _o1[69]
-    d_liftoff_q_thd__k_d = _o1[70]
-    # derivatives of the outputs
-    d_bottom_q_rd__q_r_td = 0.0
-    d_bottom_q_rd__q_rd_td = 0.0
-    d_bottom_q_rd__q_th_td = 0.0
-    d_bottom_q_rd__q_thd_td = 0.0
-    d_bottom_q_rd__k_c = 0.0
-    d_bottom_q_rd__k_d = 0.0
-    d_liftoff_q_r__q_r_td = 0.0
-    d_liftoff_q_r__q_rd_td = 0.0
-    d_liftoff_q_r__q_th_td = 0.0
-    d_liftoff_q_r__q_thd_td = 0.0
-    d_liftoff_q_r__k_c = 0.0
-    d_liftoff_q_r__k_d = 0.0
-    d_passes__q_r_td = 0.0
-    d_passes__q_rd_td = 0.0
-    d_passes__q_th_td = 0.0
-    d_passes__q_thd_td = 0.0
-    d_passes__k_c = 0.0
-    d_passes__k_d = 0.0
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd, passes, d_t_bottom__q_r_td, d_t_bottom__q_rd_td,
-        d_t_bottom__q_th_td, d_t_bottom__q_thd_td, d_t_bottom__k_c, d_t_bottom__k_d, d_t_stance__q_r_td,
-        d_t_stance__q_rd_td, d_t_stance__q_th_td, d_t_stance__q_thd_td, d_t_stance__k_c, d_t_stance__k_d,
-        d_bottom_q_r__q_r_td, d_bottom_q_r__q_rd_td, d_bottom_q_r__q_th_td, d_bottom_q_r__q_thd_td,
-        d_bottom_q_r__k_c, d_bottom_q_r__k_d, d_bottom_q_rd__q_r_td, d_bottom_q_rd__q_rd_td,
-        d_bottom_q_rd__q_th_td, d_bottom_q_rd__q_thd_td, d_bottom_q_rd__k_c, d_bottom_q_rd__k_d,
-        d_bottom_q_th__q_r_td, d_bottom_q_th__q_rd_td, d_bottom_q_th__q_th_td, d_bottom_q_th__q_thd_td,
-        d_bottom_q_th__k_c, d_bottom_q_th__k_d, d_bottom_q_thd__q_r_td, d_bottom_q_thd__q_rd_td,
-        d_bottom_q_thd__q_th_td, d_bottom_q_thd__q_thd_td, d_bottom_q_thd__k_c, d_bottom_q_thd__k_d,
-        d_liftoff_q_r__q_r_td, d_liftoff_q_r__q_rd_td, d_liftoff_q_r__q_th_td, d_liftoff_q_r__q_thd_td,
-        d_liftoff_q_r__k_c, d_liftoff_q_r__k_d, d_liftoff_q_rd__q_r_td, d_liftoff_q_rd__q_rd_td,
-        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__q_thd_td, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
-        d_liftoff_q_th__q_r_td, d_liftoff_q_th__q_rd_td, d_liftoff_q_th__q_th_td, d_liftoff_q_th__q_thd_td,
-        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__q_r_td, d_liftoff_q_thd__q_rd_td,
-        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__q_thd_td, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
-        d_passes__q_r_td, d_passes__q_rd_td, d_passes__q_th_td, d_passes__q_thd_td, d_passes__k_c,
-        d_passes__k_d))
+    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
+        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
+        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], _o1[28], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[35],
+        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], _o1[46],
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
+        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69], _o1[70], 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -5019,74 +3392,20 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
         ground, _o0))
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    td_q_r = _o0[0]
-    td_q_rd = _o0[1]
-    td_q_th = _o0[2]
-    td_q_thd = _o0[3]
-    t_descent = _o0[4]
-    foot_x = _o0[5]
-    _j_td_q_rd__b_y_apex = _o0[10]
-    _j_td_q_rd__b_xd_apex = _o0[11]
-    _j_td_q_rd__q_th_td = _o0[12]
-    _j_td_q_rd__ground = _o0[13]
-    _j_td_q_th__q_th_td = _o0[16]
-    _j_td_q_thd__b_y_apex = _o0[18]
-    _j_td_q_thd__b_xd_apex = _o0[19]
-    _j_td_q_thd__q_th_td = _o0[20]
-    _j_td_q_thd__ground = _o0[21]
-    _j_t_descent__b_y_apex = _o0[22]
-    _j_t_descent__q_th_td = _o0[24]
-    _j_t_descent__ground = _o0[25]
-    _j_foot_x__b_y_apex = _o0[26]
-    _j_foot_x__b_xd_apex = _o0[27]
-    _j_foot_x__q_th_td = _o0[28]
-    _j_foot_x__ground = _o0[29]
     # stance: Iterative stance map (Schwind and Koditschek, converging form)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
     _o1 = carray(stack(77), 77)
     _c1 = iterative_stance_jacobian_zeroth_geyer_vs(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
-    liftoff_q_r = _o1[6]
-    liftoff_q_rd = _o1[7]
-    liftoff_q_th = _o1[8]
-    liftoff_q_thd = _o1[9]
-    passes = _o1[10]
-    _j_t_stance__q_rd_td = _o1[18]
-    _j_t_stance__q_th_td = _o1[19]
-    _j_t_stance__q_thd_td = _o1[20]
-    _j_t_stance__k_c = _o1[21]
-    _j_t_stance__k_d = _o1[22]
-    _j_liftoff_q_rd__q_rd_td = _o1[54]
-    _j_liftoff_q_rd__q_th_td = _o1[55]
-    _j_liftoff_q_rd__q_thd_td = _o1[56]
-    _j_liftoff_q_rd__k_c = _o1[57]
-    _j_liftoff_q_rd__k_d = _o1[58]
-    _j_liftoff_q_th__q_rd_td = _o1[60]
-    _j_liftoff_q_th__q_th_td = _o1[61]
-    _j_liftoff_q_th__q_thd_td = _o1[62]
-    _j_liftoff_q_th__k_c = _o1[63]
-    _j_liftoff_q_th__k_d = _o1[64]
-    _j_liftoff_q_thd__q_rd_td = _o1[66]
-    _j_liftoff_q_thd__q_th_td = _o1[67]
-    _j_liftoff_q_thd__q_thd_td = _o1[68]
-    _j_liftoff_q_thd__k_c = _o1[69]
-    _j_liftoff_q_thd__k_d = _o1[70]
     # the code shared between choices
     _a2 = carray(stack(48), 48)
-    put(_a2, (_j_foot_x__b_xd_apex, _j_foot_x__b_y_apex, _j_foot_x__ground, _j_foot_x__q_th_td,
-        _j_liftoff_q_rd__k_c, _j_liftoff_q_rd__k_d, _j_liftoff_q_rd__q_rd_td, _j_liftoff_q_rd__q_th_td,
-        _j_liftoff_q_rd__q_thd_td, _j_liftoff_q_th__k_c, _j_liftoff_q_th__k_d, _j_liftoff_q_th__q_rd_td,
-        _j_liftoff_q_th__q_th_td, _j_liftoff_q_th__q_thd_td, _j_liftoff_q_thd__k_c, _j_liftoff_q_thd__k_d,
-        _j_liftoff_q_thd__q_rd_td, _j_liftoff_q_thd__q_th_td, _j_liftoff_q_thd__q_thd_td,
-        _j_t_descent__b_y_apex, _j_t_descent__ground, _j_t_descent__q_th_td, _j_t_stance__k_c,
-        _j_t_stance__k_d, _j_t_stance__q_rd_td, _j_t_stance__q_th_td, _j_t_stance__q_thd_td,
-        _j_td_q_rd__b_xd_apex, _j_td_q_rd__b_y_apex, _j_td_q_rd__ground, _j_td_q_rd__q_th_td,
-        _j_td_q_th__q_th_td, _j_td_q_thd__b_xd_apex, _j_td_q_thd__b_y_apex, _j_td_q_thd__ground,
-        _j_td_q_thd__q_th_td, b_y_apex, direction, foot_x, g_f, ground, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, passes, t_descent, t_stance))
+    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[57], _o1[58], _o1[54], _o1[55], _o1[56], _o1[63],
+        _o1[64], _o1[60], _o1[61], _o1[62], _o1[69], _o1[70], _o1[66], _o1[67], _o1[68], _o0[22], _o0[25],
+        _o0[24], _o1[21], _o1[22], _o1[18], _o1[19], _o1[20], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
+        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o0[4], _o1[1]))
     _status = iterative_apex_return_jacobian_tail_03c072(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -8,15 +8,15 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:9b82b46142822163
-#   geyer_vs.py sha256:737db40f2d14d3b0
-#   gravity_type0.py sha256:7cc8e309dce39d36
-#   gravity_type1.py sha256:e8b38ab1e805eb17
-#   gravity_type2.py sha256:e59759572d4ea2db
-#   gravity_type3.py sha256:1a97aa9ed6004f9c
-#   gravity_type4.py sha256:26cecb3b9648aef8
-#   gravity_type5.py sha256:9598921c04c34961
-#   iterative.py sha256:c7a0a0a5a3b98d5d
+#   geyer.py sha256:6c76d7d4aabf633d
+#   geyer_vs.py sha256:f7c6be48db357647
+#   gravity_type0.py sha256:ad9aa94b60a46520
+#   gravity_type1.py sha256:fc634911adabfb0d
+#   gravity_type2.py sha256:dd0df0db4aa00774
+#   gravity_type3.py sha256:11357cd1a11e4f30
+#   gravity_type4.py sha256:4568d8e48fe34d06
+#   gravity_type5.py sha256:d9220d83b1ceb140
+#   iterative.py sha256:63e580948b506fde
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -180,14 +180,13 @@ def report_compression(q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_
             break
     # bottom state (p_r = 0)
     t_bottom = c_T
-    bottom_q_rd = 0.0
     bottom_q_th = c_Q
     bottom_q_thd = c_P/(bottom_q_r**2*m)
     # every output finite, or the inputs were far outside a physical range
-    if not (math.isfinite(t_bottom) and math.isfinite(bottom_q_r) and math.isfinite(bottom_q_rd)
+    if not (math.isfinite(t_bottom) and math.isfinite(bottom_q_r) and math.isfinite(0.0)
             and math.isfinite(bottom_q_th) and math.isfinite(bottom_q_thd) and math.isfinite(E_ab)):
         return _NAN6 + (STATUS_NUMERICAL_RANGE,)
-    return (t_bottom, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
+    return (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, STATUS_OK)
 
 
 @njit(cache=True, error_model="numpy")
@@ -429,15 +428,10 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
     _c0 = geyer_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -554,7 +548,6 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     _c1 = iterative_report_stance_zeroth_geyer(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -570,7 +563,7 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -707,7 +700,6 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     _c1 = iterative_report_stance_zeroth_held(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -723,7 +715,7 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -779,15 +771,10 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -865,7 +852,6 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type0(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -881,7 +867,7 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -937,15 +923,10 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1023,7 +1004,6 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type1(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1039,7 +1019,7 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -1095,15 +1075,10 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1181,7 +1156,6 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type2(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1197,7 +1171,7 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -1253,15 +1227,10 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1339,7 +1308,6 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type3(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1355,7 +1323,7 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -1411,15 +1379,10 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1497,7 +1460,6 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type4(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1513,7 +1475,7 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -1569,15 +1531,10 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     _c0 = gravity_type5_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1655,7 +1612,6 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     _c1 = iterative_report_stance_zeroth_gravity_type5(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1671,7 +1627,7 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
@@ -1727,15 +1683,10 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     _c0 = geyer_vs_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
-    z_b_q_r = _o0[2]
-    z_b_q_th = _o0[4]
-    z_b_q_thd = _o0[5]
-    z_lo_q_th = _o0[8]
-    z_lo_q_thd = _o0[9]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 0.0, variant, iterations, bottom_length))
+    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
+        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1813,7 +1764,6 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     _c1 = iterative_report_stance_zeroth_geyer_vs(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    t_stance = _o1[1]
     liftoff_q_r = _o1[6]
     liftoff_q_rd = _o1[7]
     liftoff_q_th = _o1[8]
@@ -1829,7 +1779,7 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, t_stance, t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
         liftoff_q_thd, step_length, foot_x, foot_y))
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):

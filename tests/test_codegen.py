@@ -245,8 +245,11 @@ def _header(text: str) -> str:
 
 
 def _imports(text: str) -> set[str]:
-    """The generated modules a generated module imports (``from .flight import ...``)."""
-    return set(re.findall(r"^from \.(\w+) import ", text, re.MULTILINE))
+    """The generated modules a generated module imports (``from .flight import ...``,
+    ``from . import dop853``)."""
+    return set(re.findall(r"^from \.(\w+) import ", text, re.MULTILINE)) | set(
+        re.findall(r"^from \. import (\w+)$", text, re.MULTILINE)
+    )
 
 
 def _depends(text: str) -> dict[str, str]:
