@@ -20,7 +20,6 @@ import difflib
 import hashlib
 import json
 import math
-import pprint
 from pathlib import Path
 
 import jinja2
@@ -40,7 +39,7 @@ from .model.kernels import flight_kernels, public_kernels
 from .render import render
 from .status import STATUS_CODES
 from .tangent import Differentiator, widened
-from .wrap import LIMIT, wrap
+from .wrap import dense, wrap
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
@@ -337,7 +336,7 @@ def build_files() -> dict[str, str]:
             depends=[],
             tables=[
                 # the first line holds "NAME = " too: every line within the limit
-                (name, pprint.pformat(value, width=LIMIT - len(name) - 3, sort_dicts=False))
+                (name, dense(value, first=len(name) + 3))
                 for name, value in index.items()
             ],
             **common,

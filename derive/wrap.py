@@ -17,6 +17,7 @@ compiled code is too; ``tests/test_codegen.py`` checks the limit on every genera
 
 from __future__ import annotations
 
+import ast
 import io
 import re
 import textwrap
@@ -163,3 +164,49 @@ def _wrap_code(line: str, limit: int) -> list[str]:
 
 
 __all__ = ["LIMIT", "wrap"]
+
+
+def dense(value, indent: int = 4, limit: int = LIMIT, first: int = 0) -> str:
+    """``repr(value)`` of plain data (the generated index) packed into lines of at most ``limit``
+    characters: breaks after a comma, a colon or an opening bracket (Python joins the lines of an open
+    bracket), a long string into adjacent literals; continuations indented by ``indent``. Linear
+    in the length (:func:`wrap` re-reads a statement per break, too slow for a table of 50,000
+    characters). ``first``: the characters before the value on its first line."""
+    text = repr(value)
+    width = limit - max(indent, first) - 2
+    pieces, start = [], 0
+    for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+        if tok.type == tokenize.STRING and len(tok.string) > width:
+            pieces.append(text[start : tok.start[1]].strip())
+            words = []
+            for w in re.split(r"(?<= )", ast.literal_eval(tok.string)):
+                words += [w] if len(repr(w)) <= width else list(w)
+            chunk = ""
+            for w in words:
+                if chunk and len(repr(chunk + w)) > width:
+                    pieces.append(repr(chunk))
+                    chunk = ""
+                chunk += w
+            pieces.append(repr(chunk))
+            start = tok.end[1]
+        elif tok.type == tokenize.OP and (tok.string in ",:" or tok.string in _OPEN):
+            end = tok.end[1]
+            if pieces and start == tok.start[1] and tok.string in ",:":
+                pieces[-1] += tok.string
+            else:
+                pieces.append(text[start:end].strip())
+            start = end
+    pieces.append(text[start:].strip())
+    lines, line = [], ""
+    for piece in filter(None, pieces):
+        joined = f"{line} {piece}" if line and not line.endswith(tuple(_OPEN)) else line + piece
+        if line and len(joined) + (indent if lines else first) > limit:
+            lines.append(line)
+            line = piece
+        else:
+            line = joined
+    lines.append(line)
+    out = ("\n" + " " * indent).join(lines)
+    if ast.literal_eval(out.replace("\n", " ")) != value:
+        raise AssertionError("dense(): the packed text does not read back as the value")
+    return out

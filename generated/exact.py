@@ -104,9 +104,7 @@ def exact_stance(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_stance_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`exact_stance`: ``STATUS[i] = exact_stance(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_stance(X[i], P[min(i, last)], OUT[i])
@@ -175,10 +173,7 @@ def exact_state_at(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_state_at_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`exact_state_at`: ``STATUS[i] = exact_state_at(X[i], P[i], OUT[i])`` for every row
-    i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_state_at(X[i], P[min(i, last)], OUT[i])
@@ -287,10 +282,7 @@ def exact_apex_return(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_apex_return_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`exact_apex_return`: ``STATUS[i] = exact_apex_return(X[i], P[i], OUT[i])`` for
-    every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_apex_return(X[i], P[min(i, last)], OUT[i])

@@ -90,10 +90,7 @@ def exact_decompression(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_decompression_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`exact_decompression`: ``STATUS[i] = exact_decompression(X[i], P[i], OUT[i])`` for
-    every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_decompression(X[i], P[min(i, last)], OUT[i])
@@ -182,10 +179,7 @@ def exact_decompression_apex(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_decompression_apex_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`exact_decompression_apex`: ``STATUS[i] = exact_decompression_apex(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_decompression_apex(X[i], P[min(i, last)], OUT[i])

@@ -266,9 +266,7 @@ def geyer_stance(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_stance_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`geyer_stance`: ``STATUS[i] = geyer_stance(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_stance(X[i], P[min(i, last)], OUT[i])
@@ -340,10 +338,7 @@ def geyer_state_at(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_state_at_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`geyer_state_at`: ``STATUS[i] = geyer_state_at(X[i], P[i], OUT[i])`` for every row
-    i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_state_at(X[i], P[min(i, last)], OUT[i])
@@ -445,10 +440,7 @@ def geyer_apex_return(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_apex_return_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`geyer_apex_return`: ``STATUS[i] = geyer_apex_return(X[i], P[i], OUT[i])`` for
-    every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_apex_return(X[i], P[min(i, last)], OUT[i])

@@ -465,10 +465,7 @@ def geyer_stance_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_stance_jacobian_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`geyer_stance_jacobian`: ``STATUS[i] = geyer_stance_jacobian(X[i], P[i], OUT[i])``
-    for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_stance_jacobian(X[i], P[min(i, last)], OUT[i])
@@ -715,10 +712,7 @@ def geyer_apex_return_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_apex_return_jacobian_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`geyer_apex_return_jacobian`: ``STATUS[i] = geyer_apex_return_jacobian(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

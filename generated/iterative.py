@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:6c76d7d4aabf633d
-#   geyer_vs.py sha256:f7c6be48db357647
-#   gravity_type0.py sha256:ad9aa94b60a46520
-#   gravity_type1.py sha256:fc634911adabfb0d
-#   gravity_type2.py sha256:dd0df0db4aa00774
-#   gravity_type3.py sha256:11357cd1a11e4f30
-#   gravity_type4.py sha256:4568d8e48fe34d06
-#   gravity_type5.py sha256:d9220d83b1ceb140
+#   geyer.py sha256:d78b00f9641cf5a8
+#   geyer_vs.py sha256:6fc86b21313d1d56
+#   gravity_type0.py sha256:284c200e9ccf875c
+#   gravity_type1.py sha256:ab9f09ae94108ba1
+#   gravity_type2.py sha256:23fd1d3b48a4d32a
+#   gravity_type3.py sha256:2f8bddab630aa4ae
+#   gravity_type4.py sha256:957f2caf6167c8ff
+#   gravity_type5.py sha256:a33b115946cc4f5d
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -769,10 +769,7 @@ def iterative_stance_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_geyer`: ``STATUS[i] = iterative_stance_zeroth_geyer(X[i],
-    P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -888,10 +885,7 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_geyer`: ``STATUS[i] =
-    iterative_apex_return_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -961,10 +955,7 @@ def iterative_stance_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_held`: ``STATUS[i] = iterative_stance_zeroth_held(X[i],
-    P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1039,10 +1030,7 @@ def iterative_apex_return_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_held`: ``STATUS[i] =
-    iterative_apex_return_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1112,10 +1100,7 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1190,10 +1175,7 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1263,10 +1245,7 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1341,10 +1320,7 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1414,10 +1390,7 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1492,10 +1465,7 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1565,10 +1535,7 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1643,10 +1610,7 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1716,10 +1680,7 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1794,10 +1755,7 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1867,10 +1825,7 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_stance_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -1945,10 +1900,7 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_apex_return_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -2018,10 +1970,7 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_stance_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -2096,10 +2045,7 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_apex_return_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

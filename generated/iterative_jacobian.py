@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight_jacobian.py sha256:b4f0a702d6e8de9a
-#   geyer_jacobian.py sha256:b49d619c3d362964
-#   geyer_vs_jacobian.py sha256:8689ff27abdd4d40
-#   gravity_type0_jacobian.py sha256:e596abc1e98bdb79
-#   gravity_type1_jacobian.py sha256:1f9f5bd72c4e22e9
-#   gravity_type2_jacobian.py sha256:2d9246dcd5de802b
-#   gravity_type3_jacobian.py sha256:d84ed4196ee0f997
-#   gravity_type4_jacobian.py sha256:127303ff852a839f
-#   gravity_type5_jacobian.py sha256:c53566e98c8ad550
+#   geyer_jacobian.py sha256:59fe43c38f278ca8
+#   geyer_vs_jacobian.py sha256:860b07e2a814f785
+#   gravity_type0_jacobian.py sha256:aefa2aea80229a5a
+#   gravity_type1_jacobian.py sha256:11e5d180daa64aba
+#   gravity_type2_jacobian.py sha256:0cbb931302917e62
+#   gravity_type3_jacobian.py sha256:870fa6fb11a432ca
+#   gravity_type4_jacobian.py sha256:5c0e61bfc54a3cb7
+#   gravity_type5_jacobian.py sha256:5333fe71e2d8db9a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -2036,10 +2036,7 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_geyer`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -2344,10 +2341,7 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_geyer`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -2411,10 +2405,7 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_held`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -2475,10 +2466,7 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_held`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -2545,10 +2533,7 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -2609,10 +2594,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -2679,10 +2661,7 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -2743,10 +2722,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -2813,10 +2789,7 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -2877,10 +2850,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -2947,10 +2917,7 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -3011,10 +2978,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -3081,10 +3045,7 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -3145,10 +3106,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -3215,10 +3173,7 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -3279,10 +3234,7 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -3350,10 +3302,7 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_stance_jacobian_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_stance_jacobian_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -3414,10 +3363,7 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_apex_return_jacobian_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_apex_return_jacobian_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

@@ -8,15 +8,15 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:6c76d7d4aabf633d
-#   geyer_vs.py sha256:f7c6be48db357647
-#   gravity_type0.py sha256:ad9aa94b60a46520
-#   gravity_type1.py sha256:fc634911adabfb0d
-#   gravity_type2.py sha256:dd0df0db4aa00774
-#   gravity_type3.py sha256:11357cd1a11e4f30
-#   gravity_type4.py sha256:4568d8e48fe34d06
-#   gravity_type5.py sha256:d9220d83b1ceb140
-#   iterative.py sha256:63e580948b506fde
+#   geyer.py sha256:d78b00f9641cf5a8
+#   geyer_vs.py sha256:6fc86b21313d1d56
+#   gravity_type0.py sha256:284c200e9ccf875c
+#   gravity_type1.py sha256:ab9f09ae94108ba1
+#   gravity_type2.py sha256:23fd1d3b48a4d32a
+#   gravity_type3.py sha256:2f8bddab630aa4ae
+#   gravity_type4.py sha256:957f2caf6167c8ff
+#   gravity_type5.py sha256:a33b115946cc4f5d
+#   iterative.py sha256:5de7b4711d03da52
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -455,10 +455,7 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_geyer`: ``STATUS[i] =
-    iterative_report_stance_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -573,10 +570,7 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_geyer`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -646,10 +640,7 @@ def iterative_report_stance_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_held`: ``STATUS[i] =
-    iterative_report_stance_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -725,10 +716,7 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_held`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -798,10 +786,7 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -877,10 +862,7 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -950,10 +932,7 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1029,10 +1008,7 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1102,10 +1078,7 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1181,10 +1154,7 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1254,10 +1224,7 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1333,10 +1300,7 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1406,10 +1370,7 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1485,10 +1446,7 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1558,10 +1516,7 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_report_stance_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -1637,10 +1592,7 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -1710,10 +1662,7 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_stance_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_report_stance_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -1789,10 +1738,7 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_apex_return_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_report_apex_return_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   geyer.py sha256:6c76d7d4aabf633d
-#   geyer_vs.py sha256:f7c6be48db357647
-#   gravity_type0.py sha256:ad9aa94b60a46520
-#   gravity_type1.py sha256:fc634911adabfb0d
-#   gravity_type2.py sha256:dd0df0db4aa00774
-#   gravity_type3.py sha256:11357cd1a11e4f30
-#   gravity_type4.py sha256:4568d8e48fe34d06
-#   gravity_type5.py sha256:d9220d83b1ceb140
-#   iterative.py sha256:63e580948b506fde
-#   iterative_report.py sha256:9b94e90e457d78bd
+#   geyer.py sha256:d78b00f9641cf5a8
+#   geyer_vs.py sha256:6fc86b21313d1d56
+#   gravity_type0.py sha256:284c200e9ccf875c
+#   gravity_type1.py sha256:ab9f09ae94108ba1
+#   gravity_type2.py sha256:23fd1d3b48a4d32a
+#   gravity_type3.py sha256:2f8bddab630aa4ae
+#   gravity_type4.py sha256:957f2caf6167c8ff
+#   gravity_type5.py sha256:a33b115946cc4f5d
+#   iterative.py sha256:5de7b4711d03da52
+#   iterative_report.py sha256:1bb49a910b9f0ff5
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -134,10 +134,7 @@ def iterative_report_compression_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_geyer`: ``STATUS[i] =
-    iterative_report_compression_zeroth_geyer(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -203,10 +200,7 @@ def iterative_report_compression_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_held_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_held`: ``STATUS[i] =
-    iterative_report_compression_zeroth_held(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -275,10 +269,7 @@ def iterative_report_compression_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type0`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type0(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -347,10 +338,7 @@ def iterative_report_compression_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type1`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type1(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -419,10 +407,7 @@ def iterative_report_compression_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type2`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type2(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -491,10 +476,7 @@ def iterative_report_compression_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type3`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type3(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -563,10 +545,7 @@ def iterative_report_compression_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type4`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type4(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -635,10 +614,7 @@ def iterative_report_compression_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_gravity_type5`: ``STATUS[i] =
-    iterative_report_compression_zeroth_gravity_type5(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -707,10 +683,7 @@ def iterative_report_compression_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_compression_zeroth_geyer_vs`: ``STATUS[i] =
-    iterative_report_compression_zeroth_geyer_vs(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

@@ -178,10 +178,7 @@ def iterative_report_decompression(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_decompression_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_decompression`: ``STATUS[i] =
-    iterative_report_decompression(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_decompression(X[i], P[min(i, last)], OUT[i])
@@ -272,10 +269,7 @@ def iterative_report_decompression_apex(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_decompression_apex_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`iterative_report_decompression_apex`: ``STATUS[i] =
-    iterative_report_decompression_apex(X[i], P[i], OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_decompression_apex(X[i], P[min(i, last)], OUT[i])

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer_vs.py sha256:f7c6be48db357647
+#   geyer_vs.py sha256:6fc86b21313d1d56
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -74,10 +74,7 @@ def apex_to_touchdown_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def apex_to_touchdown_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`apex_to_touchdown_entry`: ``STATUS[i] = apex_to_touchdown_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = apex_to_touchdown_entry(X[i], P[min(i, last)], OUT[i])
@@ -124,10 +121,7 @@ def liftoff_to_apex_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def liftoff_to_apex_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`liftoff_to_apex_entry`: ``STATUS[i] = liftoff_to_apex_entry(X[i], P[i], OUT[i])``
-    for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = liftoff_to_apex_entry(X[i], P[min(i, last)], OUT[i])
@@ -170,10 +164,7 @@ def stance_polar_rhs_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_polar_rhs_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`stance_polar_rhs_entry`: ``STATUS[i] = stance_polar_rhs_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_polar_rhs_entry(X[i], P[min(i, last)], OUT[i])
@@ -216,10 +207,7 @@ def stance_cartesian_rhs_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_cartesian_rhs_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`stance_cartesian_rhs_entry`: ``STATUS[i] = stance_cartesian_rhs_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_cartesian_rhs_entry(X[i], P[min(i, last)], OUT[i])
@@ -256,10 +244,7 @@ def stance_energy_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_energy_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`stance_energy_entry`: ``STATUS[i] = stance_energy_entry(X[i], P[i], OUT[i])`` for
-    every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_energy_entry(X[i], P[min(i, last)], OUT[i])
@@ -302,10 +287,7 @@ def polar_to_cartesian_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def polar_to_cartesian_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`polar_to_cartesian_entry`: ``STATUS[i] = polar_to_cartesian_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = polar_to_cartesian_entry(X[i], P[min(i, last)], OUT[i])
@@ -348,10 +330,7 @@ def cartesian_to_polar_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def cartesian_to_polar_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`cartesian_to_polar_entry`: ``STATUS[i] = cartesian_to_polar_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = cartesian_to_polar_entry(X[i], P[min(i, last)], OUT[i])
@@ -386,10 +365,7 @@ def max_step_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def max_step_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`max_step_entry`: ``STATUS[i] = max_step_entry(X[i], P[i], OUT[i])`` for every row
-    i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = max_step_entry(X[i], P[min(i, last)], OUT[i])
@@ -425,10 +401,7 @@ def stance_time_limit_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_time_limit_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`stance_time_limit_entry`: ``STATUS[i] = stance_time_limit_entry(X[i], P[i],
-    OUT[i])`` for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_time_limit_entry(X[i], P[min(i, last)], OUT[i])
@@ -467,10 +440,7 @@ def bottom_quartic_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def bottom_quartic_entry_rows(X, P, OUT, STATUS):
-    """Batch form of :func:`bottom_quartic_entry`: ``STATUS[i] = bottom_quartic_entry(X[i], P[i], OUT[i])``
-    for every row i,
-    ``P`` one parameter record for all rows or one per row (serial, without the GIL: the runtime
-    runs blocks of rows on threads)."""
+    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = bottom_quartic_entry(X[i], P[min(i, last)], OUT[i])

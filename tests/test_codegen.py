@@ -49,6 +49,8 @@ import kernels
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
 from numba.core.registry import CPUDispatcher
 from slipmaps.derive import generate
 from slipmaps.derive import symbols as S
@@ -294,7 +296,7 @@ def test_generated_code_imports_only_generated_code(built):
     the generator's support modules, generated/exact_stance.py and dop853.py, whose headers hash
     the generated modules they import): an edit of the hand-written runtime never requires a
     regeneration, and a regenerated equation of motion re-keys the exact map's caches."""
-    allowed = {"math", "numpy", "numba", "numba.core", "numba.extending", "collections", "__future__"}
+    allowed = {"math", "numpy", "numba", "numba.core", "numba.extending", "collections", "enum", "__future__"}
     for rel in GENERATED_PY:
         tree = ast.parse(built[rel])
         for node in ast.walk(tree):
@@ -385,6 +387,36 @@ def test_line_breaking_keeps_the_code():
     assert _without_docstrings(out) == _without_docstrings(source)
     assert wrap(out) == out
     assert len(out.splitlines()) < 2 * len(source) / 110 + len(source.splitlines())
+
+
+_PLAIN = st.recursive(
+    st.none()
+    | st.booleans()
+    | st.integers()
+    | st.floats(allow_nan=False, allow_infinity=False)
+    | st.text(max_size=300),
+    lambda inner: (
+        st.lists(inner, max_size=8)
+        | st.dictionaries(st.text(max_size=20), inner, max_size=8)
+        | st.tuples(inner, inner)
+    ),
+    max_leaves=60,
+)
+
+
+@given(value=_PLAIN, first=st.integers(0, 40))
+def test_dense_reads_back_within_the_limit(value, first):
+    """derive/wrap.py's dense(): the generated index's data packed into lines that read back as the
+    same value, none longer than the limit (the first after ``first`` characters of its statement)."""
+    import ast
+
+    from slipmaps.derive.wrap import LIMIT, dense
+
+    out = dense(value, first=first)
+    assert ast.literal_eval(out) == value
+    lines = out.split("\n")
+    assert len(lines[0]) + first <= LIMIT
+    assert all(len(ln) <= LIMIT for ln in lines[1:])
 
 
 def test_docs_table_header(built):
