@@ -200,3 +200,42 @@ def test_readme_python_example_runs():
     exec(compile(block, "docs/getting_started.md", "exec"), namespace)  # noqa: S102 - the project's own docs
     assert namespace["step"].ok and namespace["st"].ok
     assert namespace["res"]["apex_height"].shape == (300, 400)
+
+
+_APEX_FUNCTIONS = ("apex_return", "apex_return_batch", "apex_return_jacobian", "apex_return_jacobian_batch")
+
+
+@pytest.mark.parametrize("fname", _APEX_FUNCTIONS)
+def test_apex_signatures_come_from_the_inputs_table(fname):
+    """The public apex-return functions take the inputs table's rows (derive/params.py): those
+    without a default positionally after name and params, in order, those with one as keywords
+    with it; wrong calls raise TypeError like a Python signature."""
+    import inspect
+
+    from slipmaps.derive.params import APEX_INPUTS
+
+    func = getattr(slipmaps, fname)
+    params = list(inspect.signature(func).parameters.values())[2:]
+    table = [(r["name"], r.get("default", inspect.Parameter.empty)) for r in APEX_INPUTS]
+    assert [(p.name, p.default) for p in params[: len(table)]] == table
+    kinds = [p.kind for p in params[: len(table)]]
+    assert kinds == [
+        inspect.Parameter.KEYWORD_ONLY if "default" in r else inspect.Parameter.POSITIONAL_OR_KEYWORD
+        for r in APEX_INPUTS
+    ]
+    p = slipmaps.HUMAN_RUNNER
+    with pytest.raises(TypeError, match="missing required argument: 'touchdown_angle'"):
+        func("geyer", p, 1.0, 5.0)
+    with pytest.raises(TypeError, match="positional arguments"):
+        func("geyer", p, 1.0, 5.0, 0.35, 0.0)
+    with pytest.raises(TypeError, match="multiple values for argument 'apex_speed'"):
+        func("geyer", p, 1.0, 5.0, 0.35, apex_speed=4.0)
+
+
+def test_apex_inputs_by_position_and_by_name_agree():
+    p = slipmaps.HUMAN_RUNNER
+    a = slipmaps.apex_return("geyer", p, 1.0, 5.0, 0.35, ground=0.02)
+    b = slipmaps.apex_return("geyer", p, touchdown_angle=0.35, apex_height=1.0, apex_speed=5.0, ground=0.02)
+    assert a.ok and a.values == b.values
+    c = slipmaps.apex_return("geyer", p, 1.0, 5.0, 0.35)
+    assert c.inputs["ground"] == 0.0 and c.values != a.values

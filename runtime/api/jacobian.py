@@ -41,6 +41,7 @@ from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
 from .calls import Call
+from .inputs import apex_signature
 from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
 from .params import SlipParams
 from .results import GROUPS, BatchResult, Result
@@ -192,14 +193,11 @@ def stance_jacobian(name: str, params: SlipParams, touchdown, **options) -> Jaco
     return _jacobian(call, "stance_jacobian", status, row, {"touchdown": td, "options": dict(call.options)})
 
 
-def apex_return_jacobian(
-    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
-) -> Jacobian:
+@apex_signature
+def apex_return_jacobian(name: str, params: SlipParams, given: dict, **options) -> Jacobian:
     """One step of map ``name`` (as :func:`slipmaps.apex_return`) and its derivatives with respect to
     the apex height and speed, the touchdown angle, the ground and the stiffness (module docstring)."""
     call = Call.of(name, params, options)
-    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
-    given["ground"] = ground
     inputs = apex_inputs(given)
     status, row, _ = call.scalar("apex_return_jacobian", inputs)
     point = {k: inputs[_ARG[k]] for k in given} | {"options": dict(call.options)}
@@ -235,13 +233,11 @@ def stance_jacobian_batch(name: str, params: SlipParams, touchdowns, **options) 
     return _batch(call, "stance_jacobian", out, status, (n,))
 
 
-def apex_return_jacobian_batch(
-    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
-) -> JacobianBatch:
+@apex_signature
+def apex_return_jacobian_batch(name: str, params: SlipParams, given: dict, **options) -> JacobianBatch:
     """:func:`apex_return_jacobian` over arrays (broadcast against each other), in parallel; a
     status per row; the result has the broadcast shape."""
     call = Call.of(name, params, options)
-    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
-    cols, shape = apex_rows({**given, "ground": ground})
+    cols, shape = apex_rows(given)
     out, status = call.rows("apex_return_jacobian", cols, {}, int(np.prod(shape)))
     return _batch(call, "apex_return_jacobian", out, status, shape)

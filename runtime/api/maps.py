@@ -36,6 +36,7 @@ from slipmaps.generated.status import MESSAGES, Status
 
 from .calls import Call
 from .index import maps
+from .inputs import apex_signature
 from .params import SlipParams
 from .results import BatchResult, Result
 from .validate import CHECKS, L0_SLACK, float_array, polar_state, real_array
@@ -83,14 +84,11 @@ def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
     return _result(call, "stance", status, row, {"touchdown": td, "options": dict(call.options)}, message)
 
 
-def apex_return(
-    name: str, params: SlipParams, apex_height, apex_speed, touchdown_angle, *, ground=0.0, **options
-) -> Result:
+@apex_signature
+def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result:
     """One step of map ``name``: apex -> touchdown (leg at ``touchdown_angle``, on ground ``ground``
-    higher) -> stance -> next apex (module docstring)."""
+    higher) -> stance -> next apex (module docstring; the inputs are the table's, :mod:`.inputs`)."""
     call = Call.of(name, params, options)
-    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
-    given["ground"] = ground
     inputs = apex_inputs(given)
     status, row, message = call.scalar("apex_return", inputs)
     point = {k: inputs[APEX_INPUTS[k]["arg"]] for k in given} | {"options": dict(call.options)}
@@ -142,24 +140,16 @@ def apex_rows(given: dict) -> tuple[dict[str, np.ndarray], tuple[int, ...]]:
     return cols, shape
 
 
+@apex_signature
 def apex_return_batch(
-    name: str,
-    params: SlipParams,
-    apex_height,
-    apex_speed,
-    touchdown_angle,
-    *,
-    ground=0.0,
-    progress: bool | None = None,
-    **options,
+    name: str, params: SlipParams, given: dict, *, progress: bool | None = None, **options
 ) -> BatchResult:
     """Map ``name`` over apexes, touchdown angles and grounds (arrays broadcast); a status per row.
 
     The result's columns have the broadcast shape of the inputs.
     """
     call = Call.of(name, params, options)
-    given = {"apex_height": apex_height, "apex_speed": apex_speed, "touchdown_angle": touchdown_angle}
-    cols, shape = apex_rows({**given, "ground": ground})
+    cols, shape = apex_rows(given)
     out, status = call.rows("apex_return", cols, {}, int(np.prod(shape)), progress)
     return BatchResult(call.info.name, "apex_return", call.spec("apex_return").outputs, out, status, shape)
 
