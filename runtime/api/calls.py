@@ -68,7 +68,7 @@ class KernelBackend:
         x = np.array([inputs[a] for a in spec.x], dtype=np.float64)
         out = np.empty(spec.width)
         status = kernel_functions(spec)[0](x, call.record(spec), out)
-        return (*out, status)
+        return (*out.tolist(), status)
 
     def rows(self, call, role, rows, inputs, n, show):
         spec = call.spec(role)
@@ -100,9 +100,17 @@ def layout_rows(spec, record: np.ndarray, rows: Mapping, inputs: Mapping, n: int
 KERNELS = KernelBackend()
 
 
-@cache
+_FUNCTIONS: dict = {}
+
+
 def kernel_functions(spec):
-    return spec.functions()
+    """(row kernel, batch form) of a role kernel spec, imported once (by module and name: a spec's
+    own hash would hash its name tuples on every call)."""
+    key = (spec.module, spec.name)
+    functions = _FUNCTIONS.get(key)
+    if functions is None:
+        functions = _FUNCTIONS[key] = spec.functions()
+    return functions
 
 
 @cache

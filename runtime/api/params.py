@@ -80,7 +80,7 @@ class SlipParams:
     Fields (``derive/params.py``): m [kg], l0 [m], k_c and k_d [N/m], g_s and g_f [m/s^2], q_r_td
     and q_r_lo [m]; ``k=`` sets k_c = k_d. Frozen, hashable, compared by value."""
 
-    __slots__ = FIELDS
+    __slots__ = (*FIELDS, "_k", "_h")
 
     def __init__(self, *args, **kwargs) -> None:
         bound = _SIGNATURE.bind(self, *args, **kwargs)
@@ -125,6 +125,9 @@ class SlipParams:
                     )
         for name in FIELDS:
             object.__setattr__(self, name, given[name])
+        # the key and hash once (every map call hashes its parameters to find its cached Call)
+        object.__setattr__(self, "_k", tuple(given[n] for n in FIELDS))
+        object.__setattr__(self, "_h", hash(self._k))
 
     def __setattr__(self, name, value):
         raise AttributeError(f"SlipParams is frozen: use .with_({name}=...) for a changed copy")
@@ -133,13 +136,13 @@ class SlipParams:
         raise AttributeError("SlipParams is frozen")
 
     def _key(self) -> tuple[float, ...]:
-        return tuple(getattr(self, n) for n in FIELDS)
+        return self._k
 
     def __eq__(self, other):
-        return type(other) is SlipParams and self._key() == other._key()
+        return type(other) is SlipParams and self._k == other._k
 
     def __hash__(self):
-        return hash(self._key())
+        return self._h
 
     def __repr__(self):
         return "SlipParams(" + ", ".join(f"{n}={getattr(self, n)!r}" for n in FIELDS) + ")"
