@@ -4,23 +4,23 @@ Both integrate the same stances with DOP853 at equal tolerances (rtol 1e-11, ato
 ``"exact"`` map's defaults), human runner (``slipmaps.HUMAN_RUNNER``), touchdowns reached from apex
 heights 1.0-1.1 m, speeds 3-7 m/s and touchdown angles 0.30-0.50 rad (bench_maps.py's states):
 
-(a) per stance: ``runtime.simulate.simulate_stance`` (solve_ivp) per call over 50 states, against the
+(a) per stance: ``runtime.exact.reference.simulate_stance`` (solve_ivp) per call over 50 states, against the
     compiled batch kernel on one numba thread (per state) and the public scalar call
     ``slipmaps.stance("exact", ...)`` (Python validation included); the speed-up (target >= 100x)
     and the agreement on the 50 states (same statuses, max relative difference);
 (b) batch throughput of ``slipmaps.stance_batch("exact", ...)`` and ``apex_return_batch`` on all
     of numba's threads, and its speed-up over one thread;
-(c) the stance with its Jacobian (``runtime/exact/jacobian.py``, variational equations), per state
-    on one thread, and its cost relative to the stance alone;
+(c) the stance with its Jacobian (``generated/exact_stance.py``'s ``jacobian_into``, variational
+    equations), per state on one thread, and its cost relative to the stance alone;
 (d) with ``--first-class``: the right-hand side passed to the integrator as a first-class function
     (a function pointer, no inlining) instead of an njit dispatcher (the shipped form), compression
     phases per microsecond of each (compiles two extra specialisations: ~15 s);
-(e) the external kernels of ``runtime/exact/kernels.py`` (the map ``"exact"``'s generated code
+(e) the external kernels of ``generated/exact_stance.py`` (the map ``"exact"``'s generated code
     calls them), per state in an njit loop on one thread: ``stance``, ``compression`` then
     ``decompression`` (the same stance in two calls), ``state_at`` at mid-stance, each relative
     to ``stance``;
 (f) the stance against its floor (issue 19 item 3): the right-hand side's evaluations per stance
-    (``compiled.stance_evaluations``) times the cost of one evaluation (an njit loop of
+    (``exact_stance.stance_evaluations``) times the cost of one evaluation (an njit loop of
     evaluations, each from the state the one before moved: the latency a Runge-Kutta stage waits
     for; independent evaluations' throughput printed too), against the stance's time from (e);
     target: within 2.5x.
@@ -43,10 +43,12 @@ import numba
 import numpy as np
 import slipmaps
 from numba import njit
-from slipmaps.runtime.exact import compiled as ec
-from slipmaps.runtime.exact import dop853
-from slipmaps.runtime.exact import kernels as ek
-from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance, stance_time_limit
+from slipmaps.generated import dop853
+from slipmaps.generated import exact_stance as ec
+from slipmaps.generated.slip_model import stance_time_limit
+from slipmaps.runtime.exact.reference import DEFAULT_ATOL, DEFAULT_RTOL, simulate_stance
+
+ek = ec  # the external kernels the map "exact" calls live in the same generated module
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import best_of, machine, states, with_threads  # noqa: E402
@@ -192,7 +194,8 @@ def floor(td: np.ndarray, repeat: int) -> dict:
     rows = np.ascontiguousarray(td[:20_000])
     t_max = stance_time_limit(P.m, P.l0, P.k_c, P.k_d, P.g_s)
     args = (P.m, P.l0, P.k_c, P.k_d, P.g_s, P.q_r_lo, DEFAULT_RTOL, DEFAULT_ATOL)
-    counts = [ec.stance_evaluations(*row, *args, t_max) for row in rows[:2000]]
+    record = ec.Stance(*args, t_max)
+    counts = [ec.stance_evaluations(*row, record) for row in rows[:2000]]
     evaluations = float(np.mean([n for status, n in counts if status == ec.OK]))
     p = (P.m, P.l0, P.k_c, P.g_s)
     reps = 1_000_000
@@ -374,7 +377,7 @@ def report(r: dict) -> str:
     e = r["external"]
     lines += [
         "",
-        "(e) external kernels (runtime/exact/kernels.py, njit loop, 1 thread): "
+        "(e) external kernels (generated/exact_stance.py, njit loop, 1 thread): "
         f"stance {e['stance_us']:.2f} us, compression + decompression {e['halves_us']:.2f} us "
         f"({e['halves_ratio']:.2f}x), "
         f"state_at mid-stance {e['state_at_us']:.2f} us ({e['state_at_ratio']:.2f}x)",

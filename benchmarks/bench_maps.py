@@ -224,60 +224,36 @@ def run(n: int, repeat: int, sections: str = "abcdefg") -> dict:
     return out
 
 
-#: The apex-return kernels' per-state arguments (the index's names), in the loop's array order.
-_APEX = ("b_y_apex", "b_xd_apex", "q_th_td")
-
-
-def _pairwise(terms: list[str]) -> str:
-    """Source of the sum of ``terms`` as a balanced tree of additions."""
-    while len(terms) > 1:
-        terms = [f"({' + '.join(terms[i : i + 2])})" for i in range(0, len(terms), 2)]
-    return terms[0]
-
-
-def _kernel_loop(kernel, args: tuple[str, ...], width: int):
-    """A numba loop calling the scalar apex-return ``kernel`` once per state: its arguments
-    ``args`` (the index's order) from the arrays ``h, v, th`` for :data:`_APEX` and from the tuple
-    ``rest`` for the others, in order; returns a checksum of all ``width`` entries of every result
-    (a checksum of fewer would let the compiler drop the code of the others), summed pairwise (a
-    tree a few additions deep, not a chain whose latency grows with the width)."""
-    arrays = dict(zip(_APEX, ("h[i]", "v[i]", "th[i]"), strict=True))
-    others = [a for a in args if a not in arrays]
-    fill = [arrays.get(a) or f"rest[{others.index(a)}]" for a in args]
-    namespace = {"kernel": kernel}
-    exec(  # noqa: S102 - a benchmark's loop over one kernel
-        "def run(h, v, th, rest):\n"
-        "    s = 0.0\n"
-        "    for i in range(h.shape[0]):\n"
-        f"        r = kernel({', '.join(fill)})\n"
-        f"        s += {_pairwise([f'r[{j}]' for j in range(width)])}\n"
-        "    return s\n",
-        namespace,
-    )
-    return numba.njit(namespace["run"])
+@numba.njit
+def _kernel_loop(kernel, X, p, out):
+    """Calls the role ``kernel`` once per row of ``X`` (its ``x`` layout) with the parameter record
+    ``p``, writing ``out``: the writes go to an array the caller holds, so the compiler cannot drop
+    any output's code; returns the sum of the first outputs and statuses (a checksum)."""
+    s = 0.0
+    for i in range(X.shape[0]):
+        s += kernel(X[i], p, out) + out[0]
+    return s
 
 
 def kernel_seconds(info, h, v, th, repeat: int) -> tuple[float, float]:
     """CPU seconds of the scalar apex-return kernel and of its Jacobian kernel over the states, on
-    one thread (best of ``repeat``): arguments by name from the index (runtime/api/calls.py), the
-    ground 0."""
-    from slipmaps.runtime.api.calls import Call
+    one thread (best of ``repeat``): inputs and parameters by name from the index's layouts
+    (runtime/api/calls.py), the ground 0."""
+    from slipmaps.runtime.api.calls import Call, kernel_functions, layout_rows
 
     call = Call.of(info.name, P, {})
-    values = {**call.values, "ground": 0.0}
+    rows = {"b_y_apex": h, "b_xd_apex": v, "q_th_td": th}
     out = []
     for role in ("apex_return", "apex_return_jacobian"):
         spec = call.spec(role)
-        kern = spec.functions()[0]
-        rest = tuple(values[a] for a in spec.args if a not in _APEX)
-        first = {a: x[0] for a, x in zip(_APEX, (h, v, th), strict=True)}
-        width = len(kern(*(first[a] if a in first else values[a] for a in spec.args)))
-        run = _kernel_loop(kern, spec.args, width)
-        run(h[:10], v[:10], th[:10], rest)
+        kern = kernel_functions(spec)[0]
+        X, p = layout_rows(spec, call.record(spec), rows, {"ground": 0.0}, len(h))
+        res = np.empty(spec.width)
+        _kernel_loop(kern, X[:10], p[0], res)
         best = math.inf
         for _ in range(repeat):
             c0 = time.process_time()
-            run(h, v, th, rest)
+            _kernel_loop(kern, X, p[0], res)
             best = min(best, time.process_time() - c0)
         out.append(best)
     return out[0], out[1]

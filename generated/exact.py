@@ -104,7 +104,7 @@ def exact_stance(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_stance_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_stance(X[i], P[min(i, last)], OUT[i])
@@ -173,7 +173,8 @@ def exact_state_at(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_state_at_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_state_at(X[i], P[min(i, last)], OUT[i])
@@ -282,7 +283,8 @@ def exact_apex_return(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_apex_return_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_apex_return(X[i], P[min(i, last)], OUT[i])

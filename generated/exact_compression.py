@@ -88,7 +88,8 @@ def exact_compression(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_compression_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_compression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_compression(X[i], P[min(i, last)], OUT[i])

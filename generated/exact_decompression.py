@@ -90,7 +90,8 @@ def exact_decompression(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_decompression_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_decompression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_decompression(X[i], P[min(i, last)], OUT[i])
@@ -179,7 +180,8 @@ def exact_decompression_apex(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_decompression_apex_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_decompression_apex` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_decompression_apex(X[i], P[min(i, last)], OUT[i])

@@ -237,7 +237,8 @@ def exact_stance_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_stance_jacobian_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_stance_jacobian(X[i], P[min(i, last)], OUT[i])
@@ -547,7 +548,8 @@ def exact_apex_return_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def exact_apex_return_jacobian_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`exact_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = exact_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

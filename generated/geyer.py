@@ -266,7 +266,7 @@ def geyer_stance(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_stance_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`geyer_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_stance(X[i], P[min(i, last)], OUT[i])
@@ -338,7 +338,8 @@ def geyer_state_at(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_state_at_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`geyer_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_state_at(X[i], P[min(i, last)], OUT[i])
@@ -440,7 +441,8 @@ def geyer_apex_return(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def geyer_apex_return_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`geyer_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = geyer_apex_return(X[i], P[min(i, last)], OUT[i])

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:d78b00f9641cf5a8
+#   geyer.py sha256:1fc87ef6cb992a85
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and
 apex-return kernels."""
@@ -363,7 +363,8 @@ def gravity_type5_stance(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def gravity_type5_stance_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`gravity_type5_stance` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = gravity_type5_stance(X[i], P[min(i, last)], OUT[i])
@@ -534,7 +535,8 @@ def gravity_type5_state_at(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def gravity_type5_state_at_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`gravity_type5_state_at` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = gravity_type5_state_at(X[i], P[min(i, last)], OUT[i])
@@ -645,7 +647,8 @@ def gravity_type5_apex_return(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def gravity_type5_apex_return_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`gravity_type5_apex_return` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = gravity_type5_apex_return(X[i], P[min(i, last)], OUT[i])

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight_jacobian.py sha256:b4f0a702d6e8de9a
-#   geyer_jacobian.py sha256:59fe43c38f278ca8
+#   geyer_jacobian.py sha256:a7af18b6c691011d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module gravity_type5: JVP kernels, and for
 a map its stance and apex-return Jacobians."""
@@ -1010,7 +1010,8 @@ def gravity_type5_stance_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def gravity_type5_stance_jacobian_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`gravity_type5_stance_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
+    -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = gravity_type5_stance_jacobian(X[i], P[min(i, last)], OUT[i])
@@ -1280,7 +1281,8 @@ def gravity_type5_apex_return_jacobian(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def gravity_type5_apex_return_jacobian_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`gravity_type5_apex_return_jacobian` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = gravity_type5_apex_return_jacobian(X[i], P[min(i, last)], OUT[i])

@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:d78b00f9641cf5a8
-#   geyer_vs.py sha256:6fc86b21313d1d56
-#   gravity_type0.py sha256:284c200e9ccf875c
-#   gravity_type1.py sha256:ab9f09ae94108ba1
-#   gravity_type2.py sha256:23fd1d3b48a4d32a
-#   gravity_type3.py sha256:2f8bddab630aa4ae
-#   gravity_type4.py sha256:957f2caf6167c8ff
-#   gravity_type5.py sha256:a33b115946cc4f5d
+#   geyer.py sha256:1fc87ef6cb992a85
+#   geyer_vs.py sha256:26f78981a9f3779d
+#   gravity_type0.py sha256:083ff9fb9f4096ff
+#   gravity_type1.py sha256:a2df9e1c49f33988
+#   gravity_type2.py sha256:481d6eb78f04773c
+#   gravity_type3.py sha256:f9ed86cd909d6c3d
+#   gravity_type4.py sha256:c12b63b3bd6a0a5c
+#   gravity_type5.py sha256:ceffd37c232dc11d
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, converging form) (report section 5.2): stance, state-at-time
 and apex-return kernels."""
@@ -209,18 +209,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    Q0 = carray(stack(12), 12)
-    P0 = carray(stack(12), 12)
-    Q = carray(stack(12), 12)
-    P = carray(stack(12), 12)
-    sigma = carray(stack(12), 12)
-    F = carray(stack(12), 12)
-    ft = carray(stack(12), 12)
-    fq = carray(stack(12), 12)
-    fp = carray(stack(12), 12)
-    G = carray(stack(12), 12)
-    Q_next = carray(stack(12), 12)
-    P_next = carray(stack(12), 12)
+    _S = carray(stack(144), (12, 12))
+    (Q0, P0, Q, P, sigma, F, ft, fq, fp, G, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5],
+        _S[6], _S[7], _S[8], _S[9], _S[10], _S[11])
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return _NAN6 + (STATUS_TOUCHDOWN_NOT_COMPRESSING,)
@@ -401,17 +392,9 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
             and ((tol >= 0.0) and (tol <= 1.0))):
         return _NAN6 + (STATUS_INVALID_INPUT,)
     # node arrays (the nodes' values of a collocation), on the stack
-    Q0 = carray(stack(12), 12)
-    P0 = carray(stack(12), 12)
-    Q = carray(stack(12), 12)
-    P = carray(stack(12), 12)
-    sigma = carray(stack(12), 12)
-    F = carray(stack(12), 12)
-    ft = carray(stack(12), 12)
-    fq = carray(stack(12), 12)
-    fp = carray(stack(12), 12)
-    Q_next = carray(stack(12), 12)
-    P_next = carray(stack(12), 12)
+    _S = carray(stack(132), (11, 12))
+    (Q0, P0, Q, P, sigma, F, ft, fq, fp, Q_next, P_next) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5], _S[6],
+        _S[7], _S[8], _S[9], _S[10])
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)
@@ -769,7 +752,8 @@ def iterative_stance_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i]
+    -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -885,7 +869,8 @@ def iterative_apex_return_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -955,7 +940,8 @@ def iterative_stance_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1030,7 +1016,8 @@ def iterative_apex_return_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1100,7 +1087,8 @@ def iterative_stance_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1175,7 +1163,8 @@ def iterative_apex_return_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1245,7 +1234,8 @@ def iterative_stance_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1320,7 +1310,8 @@ def iterative_apex_return_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1390,7 +1381,8 @@ def iterative_stance_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1465,7 +1457,8 @@ def iterative_apex_return_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1535,7 +1528,8 @@ def iterative_stance_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1610,7 +1604,8 @@ def iterative_apex_return_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -1680,7 +1675,8 @@ def iterative_stance_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1755,7 +1751,8 @@ def iterative_apex_return_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -1825,7 +1822,8 @@ def iterative_stance_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -1900,7 +1898,8 @@ def iterative_apex_return_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -1970,7 +1969,8 @@ def iterative_stance_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -2045,7 +2045,8 @@ def iterative_apex_return_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   iterative.py sha256:5de7b4711d03da52
+#   iterative.py sha256:a1938ded169afdbb
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""
@@ -99,7 +99,8 @@ def iterative_decompression(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_decompression_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_decompression` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_decompression(X[i], P[min(i, last)], OUT[i])
@@ -195,7 +196,8 @@ def iterative_decompression_apex(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_decompression_apex_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_decompression_apex` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_decompression_apex(X[i], P[min(i, last)], OUT[i])

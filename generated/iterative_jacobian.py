@@ -8,14 +8,14 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight_jacobian.py sha256:b4f0a702d6e8de9a
-#   geyer_jacobian.py sha256:59fe43c38f278ca8
-#   geyer_vs_jacobian.py sha256:860b07e2a814f785
-#   gravity_type0_jacobian.py sha256:aefa2aea80229a5a
-#   gravity_type1_jacobian.py sha256:11e5d180daa64aba
-#   gravity_type2_jacobian.py sha256:0cbb931302917e62
-#   gravity_type3_jacobian.py sha256:870fa6fb11a432ca
-#   gravity_type4_jacobian.py sha256:5c0e61bfc54a3cb7
-#   gravity_type5_jacobian.py sha256:5333fe71e2d8db9a
+#   geyer_jacobian.py sha256:a7af18b6c691011d
+#   geyer_vs_jacobian.py sha256:952da54b86ee3a56
+#   gravity_type0_jacobian.py sha256:d0baa0982cef9a01
+#   gravity_type1_jacobian.py sha256:59b7913175115d8f
+#   gravity_type2_jacobian.py sha256:2a4db16a128bb3a3
+#   gravity_type3_jacobian.py sha256:6d51c67853964703
+#   gravity_type4_jacobian.py sha256:82d02e54fa9f383c
+#   gravity_type5_jacobian.py sha256:0d2e2dfd9ddd2679
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative: JVP kernels, and for a
 map its stance and apex-return Jacobians."""
@@ -317,90 +317,22 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             and (iterations >= 0.0) and (iterations <= 100.0)) and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
-    Q0 = carray(stack(12), 12)
-    P0 = carray(stack(12), 12)
-    d_Q0__0 = carray(stack(12), 12)
-    d_Q0__1 = carray(stack(12), 12)
-    d_Q0__2 = carray(stack(12), 12)
-    d_Q0__3 = carray(stack(12), 12)
-    d_Q0__4 = carray(stack(12), 12)
-    d_Q0__5 = carray(stack(12), 12)
-    d_P0__0 = carray(stack(12), 12)
-    d_P0__1 = carray(stack(12), 12)
-    d_P0__2 = carray(stack(12), 12)
-    d_P0__3 = carray(stack(12), 12)
-    d_P0__4 = carray(stack(12), 12)
-    d_P0__5 = carray(stack(12), 12)
-    Q = carray(stack(12), 12)
-    P = carray(stack(12), 12)
-    d_Q__0 = carray(stack(12), 12)
-    d_Q__1 = carray(stack(12), 12)
-    d_Q__2 = carray(stack(12), 12)
-    d_Q__3 = carray(stack(12), 12)
-    d_Q__4 = carray(stack(12), 12)
-    d_Q__5 = carray(stack(12), 12)
-    d_P__0 = carray(stack(12), 12)
-    d_P__1 = carray(stack(12), 12)
-    d_P__2 = carray(stack(12), 12)
-    d_P__3 = carray(stack(12), 12)
-    d_P__4 = carray(stack(12), 12)
-    d_P__5 = carray(stack(12), 12)
-    sigma = carray(stack(12), 12)
-    F = carray(stack(12), 12)
-    d_sigma__0 = carray(stack(12), 12)
-    d_sigma__1 = carray(stack(12), 12)
-    d_sigma__2 = carray(stack(12), 12)
-    d_sigma__3 = carray(stack(12), 12)
-    d_sigma__4 = carray(stack(12), 12)
-    d_sigma__5 = carray(stack(12), 12)
-    d_F__0 = carray(stack(12), 12)
-    d_F__1 = carray(stack(12), 12)
-    d_F__2 = carray(stack(12), 12)
-    d_F__3 = carray(stack(12), 12)
-    d_F__4 = carray(stack(12), 12)
-    d_F__5 = carray(stack(12), 12)
-    ft = carray(stack(12), 12)
-    fq = carray(stack(12), 12)
-    fp = carray(stack(12), 12)
-    d_ft__0 = carray(stack(12), 12)
-    d_ft__1 = carray(stack(12), 12)
-    d_ft__2 = carray(stack(12), 12)
-    d_ft__3 = carray(stack(12), 12)
-    d_ft__4 = carray(stack(12), 12)
-    d_ft__5 = carray(stack(12), 12)
-    d_fq__0 = carray(stack(12), 12)
-    d_fq__1 = carray(stack(12), 12)
-    d_fq__2 = carray(stack(12), 12)
-    d_fq__3 = carray(stack(12), 12)
-    d_fq__4 = carray(stack(12), 12)
-    d_fq__5 = carray(stack(12), 12)
-    d_fp__0 = carray(stack(12), 12)
-    d_fp__1 = carray(stack(12), 12)
-    d_fp__2 = carray(stack(12), 12)
-    d_fp__3 = carray(stack(12), 12)
-    d_fp__4 = carray(stack(12), 12)
-    d_fp__5 = carray(stack(12), 12)
-    G = carray(stack(12), 12)
-    d_G__0 = carray(stack(12), 12)
-    d_G__1 = carray(stack(12), 12)
-    d_G__2 = carray(stack(12), 12)
-    d_G__3 = carray(stack(12), 12)
-    d_G__4 = carray(stack(12), 12)
-    d_G__5 = carray(stack(12), 12)
-    Q_next = carray(stack(12), 12)
-    P_next = carray(stack(12), 12)
-    d_Q_next__0 = carray(stack(12), 12)
-    d_Q_next__1 = carray(stack(12), 12)
-    d_Q_next__2 = carray(stack(12), 12)
-    d_Q_next__3 = carray(stack(12), 12)
-    d_Q_next__4 = carray(stack(12), 12)
-    d_Q_next__5 = carray(stack(12), 12)
-    d_P_next__0 = carray(stack(12), 12)
-    d_P_next__1 = carray(stack(12), 12)
-    d_P_next__2 = carray(stack(12), 12)
-    d_P_next__3 = carray(stack(12), 12)
-    d_P_next__4 = carray(stack(12), 12)
-    d_P_next__5 = carray(stack(12), 12)
+    _S = carray(stack(1008), (84, 12))
+    (Q0, P0, d_Q0__0, d_Q0__1, d_Q0__2, d_Q0__3, d_Q0__4, d_Q0__5, d_P0__0, d_P0__1, d_P0__2, d_P0__3,
+        d_P0__4, d_P0__5, Q, P, d_Q__0, d_Q__1, d_Q__2, d_Q__3, d_Q__4, d_Q__5, d_P__0, d_P__1, d_P__2,
+        d_P__3, d_P__4, d_P__5, sigma, F, d_sigma__0, d_sigma__1, d_sigma__2, d_sigma__3, d_sigma__4,
+        d_sigma__5, d_F__0, d_F__1, d_F__2, d_F__3, d_F__4, d_F__5, ft, fq, fp, d_ft__0, d_ft__1, d_ft__2,
+        d_ft__3, d_ft__4, d_ft__5, d_fq__0, d_fq__1, d_fq__2, d_fq__3, d_fq__4, d_fq__5, d_fp__0, d_fp__1,
+        d_fp__2, d_fp__3, d_fp__4, d_fp__5, G, d_G__0, d_G__1, d_G__2, d_G__3, d_G__4, d_G__5, Q_next, P_next,
+        d_Q_next__0, d_Q_next__1, d_Q_next__2, d_Q_next__3, d_Q_next__4, d_Q_next__5, d_P_next__0,
+        d_P_next__1, d_P_next__2, d_P_next__3, d_P_next__4, d_P_next__5) = (_S[0], _S[1], _S[2], _S[3], _S[4],
+        _S[5], _S[6], _S[7], _S[8], _S[9], _S[10], _S[11], _S[12], _S[13], _S[14], _S[15], _S[16], _S[17],
+        _S[18], _S[19], _S[20], _S[21], _S[22], _S[23], _S[24], _S[25], _S[26], _S[27], _S[28], _S[29],
+        _S[30], _S[31], _S[32], _S[33], _S[34], _S[35], _S[36], _S[37], _S[38], _S[39], _S[40], _S[41],
+        _S[42], _S[43], _S[44], _S[45], _S[46], _S[47], _S[48], _S[49], _S[50], _S[51], _S[52], _S[53],
+        _S[54], _S[55], _S[56], _S[57], _S[58], _S[59], _S[60], _S[61], _S[62], _S[63], _S[64], _S[65],
+        _S[66], _S[67], _S[68], _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76], _S[77],
+        _S[78], _S[79], _S[80], _S[81], _S[82], _S[83])
     # q_rd_td < 0
     if not ((q_rd < 0.0)):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
@@ -1037,83 +969,24 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             and ((tol >= 0.0) and (tol <= 1.0))):
         return fail(out, STATUS_INVALID_INPUT)
     # node arrays (the nodes' values of a collocation), on the stack
-    Q0 = carray(stack(12), 12)
-    P0 = carray(stack(12), 12)
-    d_Q0__q_th = carray(stack(12), 12)
-    d_Q0__guess_q_th = carray(stack(12), 12)
-    d_P0__q_r = carray(stack(12), 12)
-    d_P0__q_thd = carray(stack(12), 12)
-    d_P0__guess_q_thd = carray(stack(12), 12)
-    d_Q0__q_r = carray(stack(12), 12)
-    d_Q0__q_thd = carray(stack(12), 12)
-    d_Q0__k_d = carray(stack(12), 12)
-    d_Q0__guess_q_thd = carray(stack(12), 12)
-    d_P0__q_th = carray(stack(12), 12)
-    d_P0__k_d = carray(stack(12), 12)
-    d_P0__guess_q_th = carray(stack(12), 12)
-    Q = carray(stack(12), 12)
-    P = carray(stack(12), 12)
-    d_Q__q_r = carray(stack(12), 12)
-    d_Q__q_th = carray(stack(12), 12)
-    d_Q__q_thd = carray(stack(12), 12)
-    d_Q__k_d = carray(stack(12), 12)
-    d_Q__guess_q_th = carray(stack(12), 12)
-    d_Q__guess_q_thd = carray(stack(12), 12)
-    d_P__q_r = carray(stack(12), 12)
-    d_P__q_th = carray(stack(12), 12)
-    d_P__q_thd = carray(stack(12), 12)
-    d_P__k_d = carray(stack(12), 12)
-    d_P__guess_q_th = carray(stack(12), 12)
-    d_P__guess_q_thd = carray(stack(12), 12)
-    sigma = carray(stack(12), 12)
-    F = carray(stack(12), 12)
-    d_sigma__q_r = carray(stack(12), 12)
-    d_sigma__q_th = carray(stack(12), 12)
-    d_sigma__q_thd = carray(stack(12), 12)
-    d_sigma__k_d = carray(stack(12), 12)
-    d_sigma__guess_q_th = carray(stack(12), 12)
-    d_sigma__guess_q_thd = carray(stack(12), 12)
-    d_F__q_r = carray(stack(12), 12)
-    d_F__q_th = carray(stack(12), 12)
-    d_F__q_thd = carray(stack(12), 12)
-    d_F__k_d = carray(stack(12), 12)
-    d_F__guess_q_th = carray(stack(12), 12)
-    d_F__guess_q_thd = carray(stack(12), 12)
-    ft = carray(stack(12), 12)
-    fq = carray(stack(12), 12)
-    fp = carray(stack(12), 12)
-    d_ft__q_r = carray(stack(12), 12)
-    d_ft__q_th = carray(stack(12), 12)
-    d_ft__q_thd = carray(stack(12), 12)
-    d_ft__k_d = carray(stack(12), 12)
-    d_ft__guess_q_th = carray(stack(12), 12)
-    d_ft__guess_q_thd = carray(stack(12), 12)
-    d_fq__q_r = carray(stack(12), 12)
-    d_fq__q_th = carray(stack(12), 12)
-    d_fq__q_thd = carray(stack(12), 12)
-    d_fq__k_d = carray(stack(12), 12)
-    d_fq__guess_q_th = carray(stack(12), 12)
-    d_fq__guess_q_thd = carray(stack(12), 12)
-    d_fp__q_r = carray(stack(12), 12)
-    d_fp__q_th = carray(stack(12), 12)
-    d_fp__q_thd = carray(stack(12), 12)
-    d_fp__k_d = carray(stack(12), 12)
-    d_fp__guess_q_th = carray(stack(12), 12)
-    d_fp__guess_q_thd = carray(stack(12), 12)
-    Q_next = carray(stack(12), 12)
-    P_next = carray(stack(12), 12)
-    d_Q_next__q_r = carray(stack(12), 12)
-    d_Q_next__q_th = carray(stack(12), 12)
-    d_Q_next__q_thd = carray(stack(12), 12)
-    d_Q_next__k_d = carray(stack(12), 12)
-    d_Q_next__guess_q_th = carray(stack(12), 12)
-    d_Q_next__guess_q_thd = carray(stack(12), 12)
-    d_P_next__q_r = carray(stack(12), 12)
-    d_P_next__q_th = carray(stack(12), 12)
-    d_P_next__q_thd = carray(stack(12), 12)
-    d_P_next__k_d = carray(stack(12), 12)
-    d_P_next__guess_q_th = carray(stack(12), 12)
-    d_P_next__guess_q_thd = carray(stack(12), 12)
+    _S = carray(stack(924), (77, 12))
+    (Q0, P0, d_Q0__q_th, d_Q0__guess_q_th, d_P0__q_r, d_P0__q_thd, d_P0__guess_q_thd, d_Q0__q_r, d_Q0__q_thd,
+        d_Q0__k_d, d_Q0__guess_q_thd, d_P0__q_th, d_P0__k_d, d_P0__guess_q_th, Q, P, d_Q__q_r, d_Q__q_th,
+        d_Q__q_thd, d_Q__k_d, d_Q__guess_q_th, d_Q__guess_q_thd, d_P__q_r, d_P__q_th, d_P__q_thd, d_P__k_d,
+        d_P__guess_q_th, d_P__guess_q_thd, sigma, F, d_sigma__q_r, d_sigma__q_th, d_sigma__q_thd,
+        d_sigma__k_d, d_sigma__guess_q_th, d_sigma__guess_q_thd, d_F__q_r, d_F__q_th, d_F__q_thd, d_F__k_d,
+        d_F__guess_q_th, d_F__guess_q_thd, ft, fq, fp, d_ft__q_r, d_ft__q_th, d_ft__q_thd, d_ft__k_d,
+        d_ft__guess_q_th, d_ft__guess_q_thd, d_fq__q_r, d_fq__q_th, d_fq__q_thd, d_fq__k_d, d_fq__guess_q_th,
+        d_fq__guess_q_thd, d_fp__q_r, d_fp__q_th, d_fp__q_thd, d_fp__k_d, d_fp__guess_q_th, d_fp__guess_q_thd,
+        Q_next, P_next, d_Q_next__q_r, d_Q_next__q_th, d_Q_next__q_thd, d_Q_next__k_d, d_Q_next__guess_q_th,
+        d_Q_next__guess_q_thd, d_P_next__q_r, d_P_next__q_th, d_P_next__q_thd, d_P_next__k_d,
+        d_P_next__guess_q_th, d_P_next__guess_q_thd) = (_S[0], _S[1], _S[2], _S[3], _S[4], _S[5], _S[6],
+        _S[7], _S[8], _S[9], _S[10], _S[11], _S[12], _S[13], _S[14], _S[15], _S[16], _S[17], _S[18], _S[19],
+        _S[20], _S[21], _S[22], _S[23], _S[24], _S[25], _S[26], _S[27], _S[28], _S[29], _S[30], _S[31],
+        _S[32], _S[33], _S[34], _S[35], _S[36], _S[37], _S[38], _S[39], _S[40], _S[41], _S[42], _S[43],
+        _S[44], _S[45], _S[46], _S[47], _S[48], _S[49], _S[50], _S[51], _S[52], _S[53], _S[54], _S[55],
+        _S[56], _S[57], _S[58], _S[59], _S[60], _S[61], _S[62], _S[63], _S[64], _S[65], _S[66], _S[67],
+        _S[68], _S[69], _S[70], _S[71], _S[72], _S[73], _S[74], _S[75], _S[76])
     # bottom below q_r_lo
     if not ((-q_r + q_r_lo > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)
@@ -2036,7 +1909,8 @@ def iterative_stance_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -2341,7 +2215,8 @@ def iterative_apex_return_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -2405,7 +2280,8 @@ def iterative_stance_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one row),
+    OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -2466,7 +2342,8 @@ def iterative_apex_return_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -2533,7 +2410,8 @@ def iterative_stance_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -2594,7 +2472,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -2661,7 +2540,8 @@ def iterative_stance_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -2722,7 +2602,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -2789,7 +2670,8 @@ def iterative_stance_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -2850,7 +2732,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -2917,7 +2800,8 @@ def iterative_stance_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -2978,7 +2862,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -3045,7 +2930,8 @@ def iterative_stance_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -3106,7 +2992,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -3173,7 +3060,8 @@ def iterative_stance_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -3234,7 +3122,8 @@ def iterative_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -3302,7 +3191,8 @@ def iterative_stance_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_stance_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_stance_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -3363,7 +3253,8 @@ def iterative_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_apex_return_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_apex_return_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

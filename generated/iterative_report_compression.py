@@ -7,16 +7,16 @@
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
-#   geyer.py sha256:d78b00f9641cf5a8
-#   geyer_vs.py sha256:6fc86b21313d1d56
-#   gravity_type0.py sha256:284c200e9ccf875c
-#   gravity_type1.py sha256:ab9f09ae94108ba1
-#   gravity_type2.py sha256:23fd1d3b48a4d32a
-#   gravity_type3.py sha256:2f8bddab630aa4ae
-#   gravity_type4.py sha256:957f2caf6167c8ff
-#   gravity_type5.py sha256:a33b115946cc4f5d
-#   iterative.py sha256:5de7b4711d03da52
-#   iterative_report.py sha256:1bb49a910b9f0ff5
+#   geyer.py sha256:1fc87ef6cb992a85
+#   geyer_vs.py sha256:26f78981a9f3779d
+#   gravity_type0.py sha256:083ff9fb9f4096ff
+#   gravity_type1.py sha256:a2df9e1c49f33988
+#   gravity_type2.py sha256:481d6eb78f04773c
+#   gravity_type3.py sha256:f9ed86cd909d6c3d
+#   gravity_type4.py sha256:c12b63b3bd6a0a5c
+#   gravity_type5.py sha256:ceffd37c232dc11d
+#   iterative.py sha256:a1938ded169afdbb
+#   iterative_report.py sha256:1dd0b9ed9abb98eb
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -134,7 +134,8 @@ def iterative_report_compression_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -200,7 +201,8 @@ def iterative_report_compression_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -269,7 +271,8 @@ def iterative_report_compression_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -338,7 +341,8 @@ def iterative_report_compression_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -407,7 +411,8 @@ def iterative_report_compression_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -476,7 +481,8 @@ def iterative_report_compression_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -545,7 +551,8 @@ def iterative_report_compression_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -614,7 +621,8 @@ def iterative_report_compression_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -683,7 +691,8 @@ def iterative_report_compression_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_compression_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_compression_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_compression_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

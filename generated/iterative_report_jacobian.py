@@ -8,15 +8,15 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight_jacobian.py sha256:b4f0a702d6e8de9a
-#   geyer_jacobian.py sha256:59fe43c38f278ca8
-#   geyer_vs_jacobian.py sha256:860b07e2a814f785
-#   gravity_type0_jacobian.py sha256:aefa2aea80229a5a
-#   gravity_type1_jacobian.py sha256:11e5d180daa64aba
-#   gravity_type2_jacobian.py sha256:0cbb931302917e62
-#   gravity_type3_jacobian.py sha256:870fa6fb11a432ca
-#   gravity_type4_jacobian.py sha256:5c0e61bfc54a3cb7
-#   gravity_type5_jacobian.py sha256:5333fe71e2d8db9a
-#   iterative_jacobian.py sha256:a41826d83cc52a10
+#   geyer_jacobian.py sha256:a7af18b6c691011d
+#   geyer_vs_jacobian.py sha256:952da54b86ee3a56
+#   gravity_type0_jacobian.py sha256:d0baa0982cef9a01
+#   gravity_type1_jacobian.py sha256:59b7913175115d8f
+#   gravity_type2_jacobian.py sha256:2a4db16a128bb3a3
+#   gravity_type3_jacobian.py sha256:6d51c67853964703
+#   gravity_type4_jacobian.py sha256:82d02e54fa9f383c
+#   gravity_type5_jacobian.py sha256:0d2e2dfd9ddd2679
+#   iterative_jacobian.py sha256:35e1bbe295142b4d
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -1132,7 +1132,8 @@ def iterative_report_stance_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -1437,7 +1438,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_geyer_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_geyer` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_geyer(X[i], P[min(i, last)], OUT[i])
@@ -1501,7 +1503,8 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0] if one
+    row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1564,7 +1567,8 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_held_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_held` (serial, nogil): ``X[i], P[i] (P[0]
+    if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_held(X[i], P[min(i, last)], OUT[i])
@@ -1632,7 +1636,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1695,7 +1700,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type0_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type0` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type0(X[i], P[min(i, last)], OUT[i])
@@ -1763,7 +1769,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1826,7 +1833,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type1_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type1` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type1(X[i], P[min(i, last)], OUT[i])
@@ -1894,7 +1902,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -1957,7 +1966,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type2_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type2` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type2(X[i], P[min(i, last)], OUT[i])
@@ -2025,7 +2035,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -2088,7 +2099,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type3_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type3` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type3(X[i], P[min(i, last)], OUT[i])
@@ -2156,7 +2168,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -2219,7 +2232,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type4_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type4` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type4(X[i], P[min(i, last)], OUT[i])
@@ -2287,7 +2301,8 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -2350,7 +2365,8 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_gravity_type5_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_gravity_type5` (serial, nogil): ``X[i],
+    P[i] (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_gravity_type5(X[i], P[min(i, last)], OUT[i])
@@ -2418,7 +2434,8 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_stance_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_stance_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i] (P[0] if
+    one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_stance_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])
@@ -2481,7 +2498,8 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def iterative_report_apex_return_jacobian_zeroth_geyer_vs_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`iterative_report_apex_return_jacobian_zeroth_geyer_vs` (serial, nogil): ``X[i], P[i]
+    (P[0] if one row), OUT[i] -> STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = iterative_report_apex_return_jacobian_zeroth_geyer_vs(X[i], P[min(i, last)], OUT[i])

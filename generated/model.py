@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:192d8d7121590e49
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer_vs.py sha256:6fc86b21313d1d56
+#   geyer_vs.py sha256:26f78981a9f3779d
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -74,7 +74,8 @@ def apex_to_touchdown_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def apex_to_touchdown_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`apex_to_touchdown_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = apex_to_touchdown_entry(X[i], P[min(i, last)], OUT[i])
@@ -121,7 +122,8 @@ def liftoff_to_apex_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def liftoff_to_apex_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`liftoff_to_apex_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = liftoff_to_apex_entry(X[i], P[min(i, last)], OUT[i])
@@ -164,7 +166,8 @@ def stance_polar_rhs_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_polar_rhs_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`stance_polar_rhs_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_polar_rhs_entry(X[i], P[min(i, last)], OUT[i])
@@ -207,7 +210,8 @@ def stance_cartesian_rhs_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_cartesian_rhs_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`stance_cartesian_rhs_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_cartesian_rhs_entry(X[i], P[min(i, last)], OUT[i])
@@ -244,7 +248,8 @@ def stance_energy_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_energy_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`stance_energy_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_energy_entry(X[i], P[min(i, last)], OUT[i])
@@ -287,7 +292,8 @@ def polar_to_cartesian_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def polar_to_cartesian_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`polar_to_cartesian_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = polar_to_cartesian_entry(X[i], P[min(i, last)], OUT[i])
@@ -330,7 +336,8 @@ def cartesian_to_polar_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def cartesian_to_polar_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`cartesian_to_polar_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = cartesian_to_polar_entry(X[i], P[min(i, last)], OUT[i])
@@ -365,7 +372,8 @@ def max_step_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def max_step_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`max_step_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = max_step_entry(X[i], P[min(i, last)], OUT[i])
@@ -401,7 +409,8 @@ def stance_time_limit_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def stance_time_limit_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`stance_time_limit_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = stance_time_limit_entry(X[i], P[min(i, last)], OUT[i])
@@ -440,7 +449,8 @@ def bottom_quartic_entry(x, p, out):
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def bottom_quartic_entry_rows(X, P, OUT, STATUS):
-    """Rows of the kernel above: ``X[i], P[i] (P[0] if one row), OUT[i] -> STATUS[i]`` (serial, nogil)."""
+    """Rows of :func:`bottom_quartic_entry` (serial, nogil): ``X[i], P[i] (P[0] if one row), OUT[i] ->
+    STATUS[i]``."""
     last = P.shape[0] - 1
     for i in range(X.shape[0]):
         STATUS[i] = bottom_quartic_entry(X[i], P[min(i, last)], OUT[i])
