@@ -6,16 +6,46 @@
 ``what`` (the flag as typed, or the argument's name) and the path when it cannot be written: an
 existing file where a directory belongs (also a file as a component of the path, ``c.pdf/x.png``
 with ``c.pdf`` a file), a directory where a file belongs, a suffix the writer does not know, a
-directory that cannot be created or is not writable.
+directory that cannot be created or is not writable. Writability is tried, not inferred from
+permissions: a probe file is created in the directory and removed (``/proc`` passes a permission
+check and refuses every new file).
+
+:func:`writing` is the one guard around every write the package does (figures, GIFs, JSON, CSV,
+Parquet, reports): an OSError while writing becomes a one-line ValueError naming the path and the
+reason (the command line prints it and exits 2).
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
-from collections.abc import Sequence
+import tempfile
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 
-__all__ = ["writable_file", "writable_dir"]
+__all__ = ["writable_file", "writable_dir", "writing"]
+
+
+@contextlib.contextmanager
+def writing(path: str | os.PathLike, what: str | None = None) -> Iterator[Path]:
+    """Guard one write of ``path``: an OSError inside becomes ValueError ``[what ]path: reason``."""
+    try:
+        yield Path(path)
+    except OSError as exc:
+        label = f"{what} {path}" if what else f"cannot write {path}"
+        raise ValueError(f"{label}: {exc.strerror or exc}") from None
+
+
+def _probe(folder: Path) -> str | None:
+    """Why a file cannot be created in ``folder`` (a probe created and removed), or None."""
+    try:
+        fd, name = tempfile.mkstemp(prefix=".slipmaps-probe-", dir=folder)
+    except OSError as exc:
+        return f"cannot create a file in {folder}: {exc.strerror or exc}"
+    os.close(fd)
+    with contextlib.suppress(OSError):
+        os.remove(name)
+    return None
 
 
 def _problem(folder: Path) -> str | None:
@@ -31,7 +61,7 @@ def _problem(folder: Path) -> str | None:
         return f"cannot create the directory {folder}: {exc.strerror or exc}"
     if not os.access(folder, os.W_OK):
         return f"the directory {folder} is not writable"
-    return None
+    return _probe(folder)
 
 
 def writable_dir(what: str, path: str | os.PathLike) -> Path:

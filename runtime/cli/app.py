@@ -35,9 +35,12 @@ Subcommands (``slipmaps --version`` prints the installed version):
 A user error (bad value, unknown map or option, a map that refuses the parameters, a path to write
 that cannot be written) is one line on standard error and exit code 2, never a traceback; it names
 the flag as typed. Every path a command writes (``compare --plot``, ``gait --figure``, ``sweep
---out``, ``accuracy --out``) is checked by one helper (:mod:`.paths`) before any work. A reader that
-closes standard output early (``slipmaps maps | head -1``) ends any command quietly with exit
-status :data:`BROKEN_PIPE`. The map names and options come from the generated index.
+--out``, ``accuracy --out``, ``run --figure/--gif``) is checked by one helper (:mod:`.paths`: a
+probe file created and removed) before any work. A reader that closes standard output early
+(``slipmaps maps | head -1``) ends any command quietly with exit status :data:`BROKEN_PIPE`;
+Ctrl-C ends any command with one line and :data:`INTERRUPTED` (130). An OSError while writing is
+one line naming the path and the reason, exit 2 (``paths.writing``).
+The map names and options come from the generated index.
 """
 
 from __future__ import annotations
@@ -65,11 +68,14 @@ from .defaults import (
     stiffness_number,
 )
 
-__all__ = ["main", "build_parser", "BROKEN_PIPE"]
+__all__ = ["main", "build_parser", "BROKEN_PIPE", "INTERRUPTED"]
 
 #: The exit status when standard output's reader closed the pipe early (128 + SIGPIPE, the status
 #: of a process that the signal ended): no traceback, nothing on standard error.
 BROKEN_PIPE = 141
+
+#: The exit status of a command ended by Ctrl-C (128 + SIGINT): one line on standard error.
+INTERRUPTED = 130
 
 
 def _step(args: argparse.Namespace, params: SlipParams) -> dict:
@@ -448,6 +454,15 @@ def _run(argv: list[str] | None) -> int:
     except (ValueError, TypeError) as exc:
         print(f"slipmaps {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        raise
+    except OSError as exc:  # a write no command guarded: still one line naming the path
+        where = exc.filename if exc.filename is not None else "a file"
+        print(f"slipmaps {args.command}: error: cannot write {where}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"slipmaps {args.command}: interrupted", file=sys.stderr)
+        return INTERRUPTED
     sys.stdout.flush()  # a closed pipe shows here, inside main, not at the interpreter's exit
     return code
 

@@ -14,15 +14,18 @@ records as JSON.
 map as the controller's model on the exact plant; :mod:`slipmaps.runtime.control.evaluation`) into
 the checkout's docs/ or ``--out DIR``; ``--quick`` the small version the tests re-run.
 
-Every path written is checked before any work (one line naming the flag, exit 2). Exit status: 0
-the run completed (or the evaluation was written), 1 the plant fell (a step failed: its status in
-the last row), 2 a user error.
+Every path written is checked before any work (a probe file created and removed; one line naming the
+flag, exit 2), and so is the run's memory (``--steps`` beyond the machine's memory is refused with
+the estimate). Ctrl-C prints the steps already run, then one line, exit 130. Exit status: 0 the run
+completed (or the evaluation was written), 1 the plant fell (a step failed: its status in the last
+row), 2 a user error, 130 interrupted.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 __all__ = ["add_parser", "run"]
@@ -110,6 +113,12 @@ def _overrides(args: argparse.Namespace, sc) -> dict:
     if args.steps is not None:
         if args.steps < 1:
             raise ValueError(f"--steps must be at least 1, got {args.steps}")
+        from ..control.runs import check_memory
+
+        try:
+            check_memory(1, args.steps)  # before the scenario's profiles grow to --steps
+        except ValueError as exc:
+            raise ValueError(f"--steps {args.steps}: {exc}") from None
         out["steps"] = args.steps
     if args.known is not None:
         if args.known < 0:
@@ -148,7 +157,16 @@ def run(args: argparse.Namespace) -> int:
 
     check(sc)  # the maps and their options, before any work
 
-    result = run_scenario(sc)
+    from ..control.runs import RunInterrupted
+
+    try:
+        result = run_scenario(sc)
+    except RunInterrupted as stop:
+        partial = stop.batch.run(0)
+        if len(partial):
+            print(partial.table())
+        print(f"slipmaps run: interrupted after {len(partial)} step(s); nothing written", file=sys.stderr)
+        return 130
     written = []
     if figure:
         from ..control.figures import run_figure

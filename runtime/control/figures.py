@@ -88,8 +88,13 @@ def run_figure(run, out_path, *, title: str | None = None):
         a.grid(alpha=0.3)
         if col == 0:
             a.legend(fontsize=8, frameon=False)
-    fig.savefig(out_path, dpi=110)
-    plt.close(fig)
+    from ..api.paths import writing
+
+    try:
+        with writing(out_path):
+            fig.savefig(out_path, dpi=110)
+    finally:
+        plt.close(fig)
     return out_path
 
 
@@ -144,6 +149,11 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
         return body, leg, label
 
     anim = FuncAnimation(fig, frame, frames=frames, blit=False)
-    anim.save(str(out_path), writer=PillowWriter(fps=fps), dpi=72)
-    plt.close(fig)
+    from ..api.paths import writing
+
+    try:
+        with writing(out_path):
+            anim.save(str(out_path), writer=PillowWriter(fps=fps), dpi=72)
+    finally:
+        plt.close(fig)
     return out_path

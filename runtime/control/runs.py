@@ -28,11 +28,16 @@ self-stable baseline), the plant status, the next apex and its error against the
 the step length, the controller's solve time (us; the scalar run times :meth:`Deadbeat.plan` itself,
 a batch the parallel call per run), and the stance states and times that make the continuous path
 (:meth:`Run.path`, for the figures).
+
+A run's memory is estimated before any work (:func:`memory_estimate`, bytes); one beyond the
+machine's memory is refused with the estimate (ValueError). Ctrl-C during a run raises
+:class:`RunInterrupted` (a KeyboardInterrupt) whose ``batch`` holds the steps already run.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -49,7 +54,19 @@ from .planner import plan_targets
 from .plant import Plant
 from .scenarios import Scenario, from_dict, load
 
-__all__ = ["Run", "RunBatch", "V_REVERSE", "check", "run", "run_batch", "PLAN_NAMES", "scenario_of"]
+__all__ = [
+    "Run",
+    "RunBatch",
+    "RunInterrupted",
+    "V_REVERSE",
+    "check",
+    "check_memory",
+    "memory_estimate",
+    "run",
+    "run_batch",
+    "PLAN_NAMES",
+    "scenario_of",
+]
 
 #: Below this measured apex speed [m/s] a step that reverses the direction is planned from a hop in
 #: place; above it the target becomes a hop in place first.
@@ -105,6 +122,54 @@ def scenario_of(scenario, overrides: dict) -> Scenario:
     else:
         raise TypeError(f"scenario must be a Scenario, a TOML path or a dict, got {type(scenario).__name__}")
     return sc.with_(**overrides) if overrides else sc
+
+
+class RunInterrupted(KeyboardInterrupt):
+    """Ctrl-C during :func:`run_batch`: ``batch`` (a :class:`RunBatch`) holds the steps already run."""
+
+    def __init__(self, batch: RunBatch):
+        super().__init__("interrupted")
+        self.batch = batch
+
+
+#: Bytes a scenario holds per step besides the records (its target and ground profiles as tuples of
+#: Python floats, about 32 bytes an entry, three of them).
+_SCENARIO_BYTES_PER_STEP = 3 * 32
+
+
+def memory_estimate(runs: int, steps: int) -> int:
+    """The bytes a run of ``runs`` x ``steps`` allocates for its records (float64 values, the three
+    stance states of 4 floats, int64 codes, the noise and the grounds) and its scenario's profiles."""
+    per = 8 * len(_FIELDS) + 8 * 4 * len(_STATES) + 8 * len(_CODES) + 8 * 2 + 8
+    return int(runs) * int(steps) * per + int(steps) * _SCENARIO_BYTES_PER_STEP
+
+
+def _machine_memory() -> int | None:
+    """The machine's available memory in bytes (MemAvailable, else the physical memory), or None."""
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        return None
+
+
+def check_memory(runs: int, steps: int, available: int | None = None) -> int:
+    """The estimate of :func:`memory_estimate`; ValueError (one line with the estimate) when it
+    exceeds ``available`` bytes (default: the machine's available memory)."""
+    need = memory_estimate(runs, steps)
+    have = _machine_memory() if available is None else available
+    if have is not None and need > have:
+        raise ValueError(
+            f"{runs} run(s) of {steps} steps need about {need / 1e9:.3g} GB of memory, more than the "
+            f"{have / 1e9:.3g} GB available: run fewer steps"
+        )
+    return need
 
 
 @dataclass
@@ -335,6 +400,7 @@ def run_batch(
     if G.shape[1] != sc.steps:
         raise ValueError(f"grounds must have {sc.steps} columns (one per step), got shape {G.shape}")
     R, S = G.shape
+    check_memory(R, S)
     seeds = np.arange(R) if seeds is None else np.asarray(seeds)
     scalar = (R == 1) if scalar is None else scalar
     ctl = _Controller(sc)
@@ -352,36 +418,39 @@ def run_batch(
     authority = np.full(R, math.nan)
     Ht_all = np.asarray(sc.target_height)
     Vt_all = np.asarray(sc.target_speed)
-    with Bar(S, f"{sc.name} ({R} runs)", progress) as bar:
-        for n in range(S):
-            if not alive.any():
-                break
-            idx = np.flatnonzero(alive)
-            _step(
-                ctl,
-                sc,
-                n,
-                idx,
-                h,
-                v,
-                ground_prev,
-                G,
-                noise,
-                angle_prev,
-                authority,
-                Ht_all,
-                Vt_all,
-                values,
-                states,
-                codes,
-                scalar,
-            )
-            ok = codes["plant_status"][idx, n] == int(Status.OK)
-            alive[idx[~ok]] = False
-            h[idx] = values["next_height"][idx, n]
-            v[idx] = values["next_speed"][idx, n]
-            ground_prev[idx] = G[idx, n]
-            bar.update(1)
+    try:
+        with Bar(S, f"{sc.name} ({R} runs)", progress) as bar:
+            for n in range(S):
+                if not alive.any():
+                    break
+                idx = np.flatnonzero(alive)
+                _step(
+                    ctl,
+                    sc,
+                    n,
+                    idx,
+                    h,
+                    v,
+                    ground_prev,
+                    G,
+                    noise,
+                    angle_prev,
+                    authority,
+                    Ht_all,
+                    Vt_all,
+                    values,
+                    states,
+                    codes,
+                    scalar,
+                )
+                ok = codes["plant_status"][idx, n] == int(Status.OK)
+                alive[idx[~ok]] = False
+                h[idx] = values["next_height"][idx, n]
+                v[idx] = values["next_speed"][idx, n]
+                ground_prev[idx] = G[idx, n]
+                bar.update(1)
+    except KeyboardInterrupt:
+        raise RunInterrupted(RunBatch(sc, G, values, states, codes)) from None
     del p
     return RunBatch(sc, G, values, states, codes)
 
