@@ -16,7 +16,8 @@ from enum import IntEnum
 
 
 class Status(IntEnum):
-    """Outcome of a kernel call or a simulation."""
+    """Outcome of a kernel call or a simulation: an int (its code) that prints its name
+    (``str(Status.OK) == "OK"``, also in f-strings; ``int(Status.OK) == 0``)."""
 
     OK = 0
     INVALID_INPUT = 1
@@ -34,6 +35,15 @@ class Status(IntEnum):
     NOT_CONVERGED = 13
     ENERGY_DEFICIT = 14
     IMAGINARY_MOMENTUM = 15
+
+    def __str__(self) -> str:
+        return self.name
+
+    def __format__(self, spec: str) -> str:
+        # a numeric spec (d, x, ...) formats the code; any other the name
+        if spec and spec[-1] in "bcdoxXn":
+            return int.__format__(int(self), spec)
+        return format(self.name, spec)
 
 
 # The codes as plain ints, which the generated kernel modules import (numba freezes a module-level

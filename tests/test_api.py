@@ -239,3 +239,21 @@ def test_apex_inputs_by_position_and_by_name_agree():
     assert a.ok and a.values == b.values
     c = slipmaps.apex_return("geyer", p, 1.0, 5.0, 0.35)
     assert c.inputs["ground"] == 0.0 and c.values != a.values
+
+
+def test_status_prints_its_name_and_formats_its_code_on_request():
+    """``print(result.status)`` shows the name (as PlanStatus does); a numeric format spec and JSON
+    give the code."""
+    import json
+
+    assert str(Status.FALL) == "FALL" and f"{Status.OK}" == "OK" and f"{Status.OK:>4}" == "  OK"
+    assert f"{Status.FALL:d}" == str(int(Status.FALL)) and json.dumps(Status.FALL) == str(int(Status.FALL))
+    res = slipmaps.apex_return("geyer", slipmaps.HUMAN_RUNNER, 1.0, 5.0, 0.35)
+    assert str(res.status) == "OK"
+
+
+def test_jacobian_batch_counts_rows_per_status_like_batch_result():
+    jb = slipmaps.apex_return_jacobian_batch("geyer", slipmaps.HUMAN_RUNNER, [1.0, 1.0, 0.1], 5.0, 0.35)
+    counts = jb.counts()
+    assert counts == jb.result.counts() and sum(counts.values()) == 3
+    assert counts["OK"] == 2 and len(counts) == 2

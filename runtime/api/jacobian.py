@@ -138,6 +138,10 @@ class JacobianBatch:
     def ok(self) -> np.ndarray:
         return self.result.ok
 
+    def counts(self) -> dict[str, int]:
+        """Rows per status name, most common first (as :meth:`BatchResult.counts`)."""
+        return self.result.counts()
+
     def __getitem__(self, key):
         return _block(self.matrix, self.outputs, self.inputs, key)
 
