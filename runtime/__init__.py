@@ -1,11 +1,11 @@
 """slipmaps.runtime: everything that runs the generated kernels, in subpackages by job.
 
 Imports run one way (a test checks it): ``api`` (the public names, parameters, validation, results,
-the index) < ``exact`` (the exact simulator: the compiled DOP853 integrator, its stance and
-Jacobian, the ``solve_ivp`` reference) < ``analysis`` (periodic gaits), ``sweep`` (parameter
-sweeps), ``studies`` (the accuracy, convergence, stiffness and stability studies and their
-reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it uses ``api``,
-``exact`` and ``analysis``) < ``report`` (the report's sections 6-8, written from the studies' and
+the index) < ``exact`` (the ``solve_ivp`` reference of the exact stance; the compiled simulator
+is generated: generated/exact_stance.py, generated/dop853.py) < ``analysis`` (periodic gaits),
+``sweep`` (parameter sweeps), ``studies`` (the accuracy, convergence, stiffness and stability
+studies and their reports) < ``control`` (deadbeat steps, runs, scenarios and their evaluation: it
+uses ``api`` and ``analysis``) < ``report`` (the report's sections 6-8, written from the studies' and
 the control evaluation's records) < ``cli`` (one module per command). Where numba caches the compiled
 kernels is set up by the top-level package (``slipmaps.kernel_cache``).
 """

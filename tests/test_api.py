@@ -257,3 +257,15 @@ def test_jacobian_batch_counts_rows_per_status_like_batch_result():
     counts = jb.counts()
     assert counts == jb.result.counts() and sum(counts.values()) == 3
     assert counts["OK"] == 2 and len(counts) == 2
+
+
+def test_deadbeat_picks_the_controls_a_map_has():
+    """Without ``controls`` a constant-stiffness map is steered by the angle alone (it has no k_d),
+    a map with k_c and k_d by the angle and k_d."""
+    from slipmaps.runtime.control.deadbeat import Deadbeat
+
+    P = slipmaps.HUMAN_RUNNER
+    res = slipmaps.deadbeat("geyer", P, 1.0, 5.0, None, 5.0)
+    assert res.status == "REACHED" and abs(res.apex_speed - 5.0) < 1e-6
+    assert Deadbeat("geyer", P).controls == ("touchdown_angle",)
+    assert Deadbeat("iterative", P).controls == ("touchdown_angle", "k_d")

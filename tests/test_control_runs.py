@@ -240,7 +240,7 @@ def test_cli_errors_are_one_line_before_any_work(extra, needle, tmp_path, capsys
     assert "give a scenario file" in capsys.readouterr().err
 
 
-def test_a_gif_is_written_with_the_pillow_writer(tmp_path):
+def test_a_gif_is_written_frame_by_frame_with_a_progress_bar(tmp_path, capsys):
     from PIL import Image
 
     r = slipmaps.run(
@@ -248,9 +248,16 @@ def test_a_gif_is_written_with_the_pillow_writer(tmp_path):
     )
     from slipmaps.runtime.control.figures import animate
 
-    path = animate(r, tmp_path / "stop.gif", fps=10)
+    path = animate(r, tmp_path / "stop.gif", fps=10, progress=True)
     with Image.open(path) as im:
         assert im.format == "GIF" and im.n_frames > 5
+        frames = im.n_frames
+        im.seek(frames // 2)
+        middle = np.asarray(im.convert("RGB"))
+    # the frames move (the body and the view), and the bar counted every one of them
+    with Image.open(path) as im:
+        assert not np.array_equal(np.asarray(im.convert("RGB")), middle)
+    assert f"{frames}/{frames} frames" in capsys.readouterr().err
 
 
 def test_control_imports_only_the_layers_below_it_and_nothing_below_imports_it():
@@ -326,3 +333,22 @@ def test_every_map_has_its_cost_recorded(record):
     for row in cost.values():
         assert row["scalar_us_median"] > 0 and math.isfinite(row["batch_us_per_row"])
         assert row["jacobians_mean"] >= 1.0
+
+
+def test_the_table_gives_absolute_speed_errors_also_where_the_target_is_a_stop(example_runs):
+    """A stop's target speed is 0: the table's speed error is absolute (mm/s), never nan."""
+    r = example_runs["stop"]
+    assert np.any(r.column("target_speed") == 0.0)
+    rows = r.table().splitlines()
+    assert "err v mm/s" in rows[0]
+    assert not any("nan" in line.split() for line in rows[2 : 2 + len(r)]), rows
+
+
+def test_a_run_to_pandas_has_a_row_per_step_and_the_states_by_coordinate(example_runs):
+    r = example_runs["stairs"]
+    df = r.to_pandas()
+    assert len(df) == len(r) and list(df["step"]) == list(range(len(r)))
+    assert {"touchdown_q_r", "liftoff_q_thd", "plan_status", "plant_status", "plant_status_code"} <= set(df)
+    assert (df["plant_status"] == "OK").all() and (df["plan_status"] == "REACHED").all()
+    assert np.array_equal(df["next_speed"].to_numpy(), r.column("next_speed"))
+    assert df["liftoff_q_th"].to_numpy().tolist() == [s["liftoff"][2] for s in r.steps]

@@ -344,7 +344,9 @@ def test_a_search_says_how_it_went():
     found = slipmaps.fixed_points("geyer", P, apex_height=1.0, speed=5.0)
     assert isinstance(found, gait.FixedPoints) and isinstance(found, tuple) and len(found) == 1
     assert found.ok and sum(found.scan.values()) == gait.SCAN and found.scan["OK"] > 0
-    assert found.message == "" or found.message.endswith(")")
+    # a success says what it found first, then how much of the scan left the map's domain
+    assert found.message.startswith("found 1 fixed point"), found.message
+    assert ("failed" not in found.message) and (found.scan["OK"] == gait.SCAN or "angles" in found.message)
     again = pickle.loads(pickle.dumps(found))
     assert again == found and again.scan == found.scan and again.status == found.status
     failed = slipmaps.fixed_points("gravity-type2", P, apex_height=1.0, speed=5.0, iterations=1)

@@ -36,7 +36,7 @@ import kernels
 import numpy as np
 import pytest
 import slipmaps
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from slipmaps.generated import flight as g_flight
 from slipmaps.generated import maps_index
@@ -636,8 +636,7 @@ def test_state_at_starts_at_touchdown_and_reaches_liftoff(kernel, data):
     env = data.draw(gait(kernel.row))
     stance = next(k for k in ROLE["stance"] if k.row is kernel.row)
     res = stance.call(env)
-    if res[-1] != OK:
-        return
+    assume(res[-1] == OK)  # a failed stance has no trajectory (Hypothesis' health check counts these)
     lo = dict(zip(stance.outputs, res[:-1], strict=True))
     r0 = kernel.call({**env, "t": 0.0})
     r1 = kernel.call({**env, "t": lo["t_stance"]})

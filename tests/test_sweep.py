@@ -66,6 +66,9 @@ def test_grid_sweep_equals_direct_batch_calls(tmp_path):
         }
         assert_rows(part, sw, res, inputs)
     assert summary.counts == dict(zip(*np.unique(got["status_name"], return_counts=True), strict=True))
+    frame = read_sweep(tmp_path / "g", frame=True)  # pandas: in the test extra
+    assert list(frame.columns) == list(got) and len(frame) == 42
+    assert np.array_equal(frame["status"].to_numpy(), got["status"])
 
 
 def test_random_sweep_equals_direct_batch_calls(tmp_path):
@@ -322,3 +325,24 @@ def test_a_worker_killed_mid_sweep_loses_nothing(tmp_path, cluster):
         "geyer", P, 1.0, np.linspace(3.0, 7.0, 400)[:, None], np.linspace(0.2, 0.45, 200)
     )
     assert_rows(got, sw, res, {})
+
+
+def test_cli_a_huge_sweep_states_its_estimate_and_needs_yes(tmp_path, capsys, monkeypatch):
+    """10^4 x 10^4 rows (a plausible typo) is refused before anything is written, with its size;
+    ``--yes`` runs it (the sweep itself replaced here: only the guard is under test)."""
+    import slipmaps.runtime.sweep.run as sweep_run
+
+    argv = ["sweep", "--map", "geyer", "--fixed", "apex_height=1.0", "--axis", "apex_speed=3:7:10000"]
+    argv += ["--axis", "touchdown_angle=0.2:0.4:10000", "--out", str(tmp_path / "big")]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "100,000,000 rows" in err and "GB of csv" in err and "--yes" in err
+    assert not (tmp_path / "big").exists() or not any((tmp_path / "big").iterdir())
+    ran = []
+
+    def interrupted(*args, **kwargs):
+        ran.append(args)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(sweep_run, "sweep", interrupted)
+    assert main([*argv, "--yes"]) == 130 and len(ran) == 1

@@ -247,10 +247,15 @@ def _searched(points, counts: dict[str, int]) -> FixedPoints:
             f"every step of the scan failed ({total} steps: {steps}): {worst}: {MESSAGES[int(Status[worst])]}"
         )
         return FixedPoints(points, scan=counts, status=Status[worst], message=message)
-    message = ""
+    found = f"found {len(points)} fixed point{'' if len(points) == 1 else 's'}"
+    message = found
     if failed:
         steps = ", ".join(f"{k} {n}" for k, n in failed.items())
-        message = f"{sum(failed.values())} of {total} steps of the scan failed ({steps})"
+        ok = counts.get(Status.OK.name, 0)
+        message = (
+            f"{found}; the scan's step succeeded at {ok} of {total} angles "
+            f"(the others leave the map's domain: {steps})"
+        )
     return FixedPoints(points, scan=counts, message=message)
 
 

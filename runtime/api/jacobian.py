@@ -41,6 +41,7 @@ from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
 from .calls import Call
+from .frames import to_arrow, to_pandas
 from .inputs import apex_signature
 from .maps import apex_inputs, apex_rows, state_rows, touchdown_inputs
 from .params import SlipParams
@@ -141,6 +142,24 @@ class JacobianBatch:
     def counts(self) -> dict[str, int]:
         """Rows per status name, most common first (as :meth:`BatchResult.counts`)."""
         return self.result.counts()
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The values' columns (:meth:`BatchResult.columns`), then a column per derivative named
+        ``d(output)/d(input)``, a row per point (``slipmaps.runtime.api.frames``)."""
+        out = self.result.columns()
+        m = self.matrix.reshape(-1, len(self.outputs), len(self.inputs))
+        for a, o in enumerate(self.outputs):
+            for b, i in enumerate(self.inputs):
+                out[f"d({o})/d({i})"] = m[:, a, b]
+        return out
+
+    def to_pandas(self):
+        """A pandas DataFrame of :meth:`columns`."""
+        return to_pandas(self.columns())
+
+    def to_arrow(self):
+        """A pyarrow Table of :meth:`columns`."""
+        return to_arrow(self.columns())
 
     def __getitem__(self, key):
         return _block(self.matrix, self.outputs, self.inputs, key)

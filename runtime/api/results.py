@@ -24,6 +24,8 @@ import numpy as np
 from slipmaps.generated import maps_index
 from slipmaps.generated.status import MESSAGES, Status
 
+from .frames import status_columns, to_arrow, to_pandas
+
 __all__ = ["Result", "BatchResult", "STANCE", "APEX_RETURN", "HALF", "GROUPS", "columns"]
 
 #: Output names of every stance map and of every apex-return map (before a map's extras).
@@ -146,6 +148,20 @@ class BatchResult(Mapping):
         codes, counts = np.unique(self._status, return_counts=True)
         order = np.argsort(-counts, kind="stable")
         return {Status(int(codes[i])).name: int(counts[i]) for i in order}
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """A 1-D column per output and the status (name and code), a row per point in C order of
+        the input shape (``slipmaps.runtime.api.frames``)."""
+        out = {n: self._data[:, j] for n, j in self._index.items()}
+        return out | status_columns(self._status)
+
+    def to_pandas(self):
+        """A pandas DataFrame of :meth:`columns` (pandas is the optional extra ``[pandas]``)."""
+        return to_pandas(self.columns())
+
+    def to_arrow(self):
+        """A pyarrow Table of :meth:`columns`."""
+        return to_arrow(self.columns())
 
     def __repr__(self) -> str:
         return (

@@ -1,4 +1,4 @@
-"""The ``slipmaps`` command line: one module per command, the parser and ``main`` in :mod:`.main`."""
+"""The ``slipmaps`` command line: one module per command, the parser and ``main`` in :mod:`.app`."""
 
 from .app import build_parser, main
 

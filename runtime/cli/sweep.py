@@ -1,4 +1,4 @@
-"""``slipmaps sweep``: the command line of :mod:`.sweep` (registered by ``cli.py``).
+"""``slipmaps sweep``: the command line of :mod:`.sweep` (registered by :mod:`.app`).
 
 A TOML file (``examples/sweep.toml``) and/or flags; a flag replaces the file's value, ``--axis`` and
 ``--fixed`` the file's entry of that quantity. A quantity given twice on the command line (two
@@ -15,6 +15,7 @@ import argparse
 import json
 import sys
 import textwrap
+from pathlib import Path
 
 from ..api.paths import writable_dir
 from ..sweep.axes import CHUNK_ROWS_EXACT, CHUNK_ROWS_GENERATED, KINDS, quantities
@@ -82,6 +83,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
     )
     p.add_argument("--combine", action="store_true", default=None, help="also write OUT/sweep.<format>")
     p.add_argument("--max-chunks", type=int, help="compute at most this many chunks now (resume later)")
+    p.add_argument(
+        "--yes",
+        action="store_true",
+        help=f"run a sweep over {LARGE_ROWS:.0e} rows or beyond the free disk (refused without it)",
+    )
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     return p
@@ -148,6 +154,33 @@ def _definition(args: argparse.Namespace) -> tuple[dict, dict]:
     return split_keys(data, args.config or "sweep")
 
 
+#: A sweep over at least this many rows runs only with ``--yes`` (a plausible typo of a grid).
+LARGE_ROWS = 10**8
+
+#: Bytes a row's value takes in a file, about: a float64 printed in full and its comma (CSV), the
+#: float64 itself (Parquet, before compression).
+BYTES_PER_VALUE = {"csv": 24, "parquet": 8}
+
+
+def check_size(definition, out, fmt: str) -> int:
+    """The estimated bytes of the sweep's files; ValueError with the estimate when the sweep has
+    :data:`LARGE_ROWS` rows or more, or when the estimate exceeds the free disk under ``out``."""
+    import shutil
+
+    rows = definition.rows
+    size = rows * len(definition.columns) * BYTES_PER_VALUE.get(fmt, 24)
+    folder = Path(out)
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent
+    free = shutil.disk_usage(folder).free
+    if rows >= LARGE_ROWS or size > free:
+        raise ValueError(
+            f"the sweep has {rows:,} rows, about {size / 1e9:,.3g} GB of {fmt} ({free / 1e9:,.3g} GB free "
+            f"under {folder}): check the axes, or give --yes to run it"
+        )
+    return size
+
+
 def run(args: argparse.Namespace) -> int:
     from ..sweep.run import sweep
     from ..sweep.spec import Sweep
@@ -157,6 +190,8 @@ def run(args: argparse.Namespace) -> int:
     if "out" not in settings:
         raise ValueError("give an output directory: --out DIR (or out in the TOML file)")
     writable_dir("--out" if args.out is not None else f"out (in {args.config})", settings["out"])
+    if not args.yes:
+        check_size(definition, settings["out"], settings.get("format") or "csv")
     try:
         summary = sweep(
             definition,

@@ -17,7 +17,8 @@ controller's model, any map of ``slipmaps.maps()``):
 Control sets: the angle alone (one target: the speed when ``target_speed`` is given, else the
 height; the other is predicted and reported), the angle and k_d (the default), the angle and k_c,
 all three (two targets, one control to spare: the stiffness nearest the nominal, below), and for a
-constant-stiffness map the angle and k.
+constant-stiffness map the angle and k. Without ``controls`` (None) the solve takes the angle and
+k_d, or the angle alone for a constant-stiffness map (:func:`default_controls`).
 
 The solve (:mod:`.compiled`): Newton's method with the map's generated apex-return Jacobian (its
 d/d touchdown_angle, d/d k_c, d/d k_d or d/d k columns), by default refreshed once and then updated
@@ -75,6 +76,7 @@ from .compiled import N_HEAD
 __all__ = [
     "ANGLE_SCALE",
     "CONTROLS",
+    "default_controls",
     "DEFAULT_ANGLE_BOUNDS",
     "DEFAULT_STIFFNESS_RANGE",
     "Deadbeat",
@@ -391,8 +393,19 @@ def _const_maps() -> tuple[str, str]:
     return ", ".join(cs), ", ".join(vs)
 
 
+def default_controls(call: Call) -> tuple[str, ...]:
+    """The controls when none are given: the angle and k_d, the angle alone for a map that needs a
+    constant stiffness (it has no k_d; as the scenario runner does)."""
+    if "k" in call.spec("apex_return_jacobian").wrt:
+        return ("touchdown_angle",)
+    return ("touchdown_angle", "k_d")
+
+
 def _controls(call: Call, controls) -> tuple[str, ...]:
-    """The controls validated against the map (ValueError naming the problem), the angle first."""
+    """The controls validated against the map (ValueError naming the problem), the angle first;
+    None: :func:`default_controls`."""
+    if controls is None:
+        return default_controls(call)
     if isinstance(controls, str):
         controls = (controls,)
     try:
@@ -475,7 +488,7 @@ class Deadbeat:
         name: str,
         params: SlipParams,
         *,
-        controls=("touchdown_angle", "k_d"),
+        controls=None,
         bounds=None,
         tol: float = TOL,
         jacobian: str = "broyden",
@@ -756,7 +769,9 @@ def _controller(name, params, controls, bounds, options) -> Deadbeat:
     settings, rest = _split(dict(options))
     try:
         key_bounds = tuple(sorted((k, tuple(v)) for k, v in dict(bounds or {}).items()))
-        controls_key = (controls,) if isinstance(controls, str) else tuple(controls)
+        controls_key = (
+            None if controls is None else (controls,) if isinstance(controls, str) else tuple(controls)
+        )
         hash((name, params, controls_key, key_bounds, settings, rest))
     except TypeError:
         return Deadbeat(name, params, controls=controls, bounds=bounds, **options)
@@ -772,7 +787,7 @@ def deadbeat(
     target_speed,
     *,
     ground=0.0,
-    controls=("touchdown_angle", "k_d"),
+    controls=None,
     bounds=None,
     touchdown_angle=None,
     k_c=None,
@@ -809,7 +824,7 @@ def deadbeat_batch(
     target_speed,
     *,
     ground=0.0,
-    controls=("touchdown_angle", "k_d"),
+    controls=None,
     bounds=None,
     touchdown_angle=None,
     **map_options,

@@ -1,6 +1,6 @@
 """Figures of runs: the body path over the terrain with the leg at every touchdown and liftoff and
-the targets; the apex per step against its targets; an animation (GIF through matplotlib's Pillow
-writer).
+the targets; the apex per step against its targets; an animation (GIF: matplotlib's Agg canvas, frames
+saved by Pillow).
 
 Every path written is checked before any work by the callers (:mod:`slipmaps.runtime.cli.run`);
 here the figure is drawn and saved.
@@ -98,15 +98,21 @@ def run_figure(run, out_path, *, title: str | None = None):
     return out_path
 
 
-def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
-    """A GIF of the run (matplotlib's Pillow writer): the body, the leg (from the foot in stance; at
-    its touchdown angle in flight), the terrain and the targets; ``speed`` the playback speed
-    (0.5: half real time). Returns the path."""
+def animate(run, out_path, *, fps: int = 20, speed: float = 0.5, progress=None):
+    """A GIF of the run: the body, the leg (from the foot in stance; at its touchdown angle in
+    flight), the terrain and the targets; ``speed`` the playback speed (0.5: half real time). The
+    view follows the body; its position is printed in the frame's label (a moving axis's tick
+    labels cost most of a frame's drawing). Each frame is drawn once on the Agg canvas and handed to
+    Pillow; the layout is computed on the first frame only. ``progress``: a bar of the frames drawn
+    (None: on a terminal, after a second). Returns the path."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.animation import FuncAnimation, PillowWriter
+    from PIL import Image
+
+    from ..api.paths import writing
+    from ..api.progress import Bar
 
     path = run.path(samples=30)
     sc = run.scenario
@@ -115,7 +121,7 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
     angles = b.values["touchdown_angle"][run.index][: len(run)]
     frames = max(2, int(math.ceil(float(path.t[-1]) / speed * fps))) if path.t.size else 2
     times = np.linspace(0.0, float(path.t[-1]) if path.t.size else 0.0, frames)
-    fig, ax = plt.subplots(figsize=(8, 3.6), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(8, 3.6), dpi=72, constrained_layout=True)
     ax.plot(path.terrain[:, 0], path.terrain[:, 1], color=_GROUND, lw=1.5)
     ax.plot(path.x, path.y, color=_BODY, lw=0.8, alpha=0.3)
     if path.target.size:
@@ -130,7 +136,8 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
     half = 4.0 * l0
     ax.set_ylim(y_lo, y_hi)
     ax.set_aspect("equal")
-    ax.set_xlabel("x [m]")
+    ax.set_xticks([])
+    ax.set_xlabel(f"x (the view follows the body; {2 * half:g} m wide)")
     ax.set_ylabel("y [m]")
 
     def frame(k):
@@ -144,16 +151,38 @@ def animate(run, out_path, *, fps: int = 20, speed: float = 0.5):
         else:
             th = angles[min(step, angles.size - 1)] if angles.size else 0.0
             leg.set_data([x, x + l0 * math.sin(th)], [y, y - l0 * math.cos(th)])
-        label.set_text(f"t = {t:.2f} s, step {min(step, max(len(run) - 1, 0))}")
+        label.set_text(f"t = {t:.2f} s, x = {x:.2f} m, step {min(step, max(len(run) - 1, 0))}")
         ax.set_xlim(x - half, x + half)
-        return body, leg, label
 
-    anim = FuncAnimation(fig, frame, frames=frames, blit=False)
-    from ..api.paths import writing
-
+    # The frame around the axes (title, labels, the y axis) is drawn once: every frame restores it
+    # and draws the axes' background, its lines and its label over it (blitting on the Agg canvas).
+    canvas = fig.canvas
+    moving = [*ax.lines, label]
+    frame(0)
+    canvas.draw()  # the constrained layout once, then frozen
+    fig.set_layout_engine("none")
+    for artist in moving:
+        artist.set_visible(False)
+    canvas.draw()
+    around = canvas.copy_from_bbox(fig.bbox)
+    for artist in moving:
+        artist.set_visible(True)
+    images, palette = [], None
     try:
-        with writing(out_path):
-            anim.save(str(out_path), writer=PillowWriter(fps=fps), dpi=72)
+        with Bar(frames, f"GIF {out_path}", progress, unit="frames") as bar:
+            for k in range(frames):
+                frame(k)
+                canvas.restore_region(around)
+                ax.draw_artist(ax.patch)
+                for artist in (*moving, *ax.spines.values()):
+                    ax.draw_artist(artist)
+                image = Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy())
+                if palette is None:  # one palette for every frame (the colours do not change)
+                    palette = image.quantize(colors=64)
+                images.append(image.quantize(palette=palette, dither=Image.Dither.NONE))
+                bar.update(1)
     finally:
         plt.close(fig)
+    with writing(out_path):
+        images[0].save(out_path, save_all=True, append_images=images[1:], duration=round(1000 / fps), loop=0)
     return out_path

@@ -45,8 +45,10 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api.frames import status_columns, to_pandas
 from ..api.index import get
 from ..api.progress import Bar
+from ..api.validate import POLAR_NAMES
 from . import compiled
 from .bottom import BottomDeadbeat
 from .deadbeat import DEFAULT_STIFFNESS_RANGE, Deadbeat, PlanStatus, default_angle
@@ -251,6 +253,22 @@ class Run:
             out.append(row)
         return out
 
+    def columns(self) -> dict[str, np.ndarray]:
+        """A row per step run: ``step``, every value, the stance states split into a column per
+        coordinate (``touchdown_q_r``, ...), the statuses by name (``slipmaps.runtime.api.frames``)."""
+        n, i = len(self), self.index
+        out = {"step": np.arange(n)}
+        out |= {k: v[i, :n] for k, v in self.batch.values.items()}
+        for k, v in self.batch.states.items():
+            out |= {f"{k}_{q}": v[i, :n, j] for j, q in enumerate(POLAR_NAMES)}
+        for k in ("plan_status", "bottom_status"):
+            out[k] = np.array([PLAN_NAMES[int(c)] for c in self.batch.codes[k][i, :n]], dtype=object)
+        return out | status_columns(self.batch.codes["plant_status"][i, :n], "plant_status")
+
+    def to_pandas(self):
+        """A pandas DataFrame of :meth:`columns`, a row per step."""
+        return to_pandas(self.columns())
+
     @property
     def status(self) -> str:
         n = len(self)
@@ -264,25 +282,24 @@ class Run:
         return dh[self.index][: len(self)], dv[self.index][: len(self)]
 
     def table(self) -> str:
-        """The run as a table, a row per step."""
+        """The run as a table, a row per step: the next apex's errors against the target in mm and
+        mm/s (absolute, so a target speed of 0, a stop, has one too)."""
         sc = self.scenario
         head = (
             f"{'step':>4} {'ground':>7} {'apex h':>8} {'apex v':>8} {'target h':>9} {'target v':>9} "
             f"{'angle':>8} {'k_c':>8} {'k_d':>8} {'plan':>11} {'next h':>8} {'next v':>8} {'err h mm':>9} "
-            f"{'err v %':>8} {'plant':>16} {'length':>7} {'us':>6}"
+            f"{'err v mm/s':>10} {'plant':>16} {'length':>7} {'us':>6}"
         )
         lines = [head, "-" * len(head)]
         for r in self.steps:
             err_h = 1000.0 * (r["next_height"] - r["target_height"])
-            err_v = 100.0 * (r["next_speed"] - r["target_speed"]) / max(abs(r["target_speed"]), 1e-9)
-            if r["target_speed"] == 0.0:
-                err_v = math.nan
+            err_v = 1000.0 * (r["next_speed"] - r["target_speed"])  # absolute: a target of 0 is common
             plan = r["plan_status"] + ("*" if r["bottom_status"] not in ("-",) else "")
             lines.append(
                 f"{r['step']:4d} {_zero(r['ground']):7.3f} {r['apex_height']:8.4f} {r['apex_speed']:8.4f} "
                 f"{r['target_height']:9.4f} {r['target_speed']:9.4f} {r['touchdown_angle']:8.4f} "
                 f"{r['k_c']:8.0f} {r['k_d']:8.0f} {plan:>11} {r['next_height']:8.4f} {r['next_speed']:8.4f} "
-                f"{err_h:9.3f} {err_v:8.3f} {r['plant_status']:>16} {r['step_length']:7.3f} "
+                f"{err_h:9.3f} {err_v:10.3f} {r['plant_status']:>16} {r['step_length']:7.3f} "
                 f"{r['solve_us'] + (r['bottom_us'] if math.isfinite(r['bottom_us']) else 0.0):6.0f}"
             )
         lines.append("")
@@ -340,14 +357,10 @@ class _Controller:
         self.fixed = sc.fixed_angle is not None
         self.deadbeat = None
         if not self.fixed:
-            controls = sc.controls
-            if controls is None:
-                constant = "constant_stiffness" in get(sc.model).requires
-                controls = ("touchdown_angle",) if constant else ("touchdown_angle", "k_d")
             self.deadbeat = Deadbeat(
                 sc.model,
                 p,
-                controls=controls,
+                controls=sc.controls,  # None: the map's default (deadbeat.default_controls)
                 bounds=sc.bounds,
                 tol=sc.tol,
                 jacobian=sc.jacobian,

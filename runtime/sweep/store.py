@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..api.frames import to_pandas
 from ..api.paths import writable_dir
 from .files import check_format, combine, csv_header, read
 from .spec import Sweep
@@ -154,10 +155,12 @@ def iter_sweep(out: str | Path) -> Iterator[dict[str, np.ndarray]]:
         yield read(p)[0]
 
 
-def read_sweep(out: str | Path) -> dict[str, np.ndarray]:
+def read_sweep(out: str | Path, *, frame: bool = False):
     """Every written row of the sweep in ``out`` as one dict of columns (in memory: for sweeps that
-    fit; :func:`iter_sweep` streams)."""
+    fit; :func:`iter_sweep` streams); ``frame=True``: as a pandas DataFrame (the optional extra
+    ``[pandas]``)."""
     parts = list(iter_sweep(out))
     if not parts:
         raise ValueError(f"{out}: no chunk written yet")
-    return {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
+    columns = {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
+    return to_pandas(columns) if frame else columns
