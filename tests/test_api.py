@@ -269,3 +269,14 @@ def test_deadbeat_picks_the_controls_a_map_has():
     assert res.status == "REACHED" and abs(res.apex_speed - 5.0) < 1e-6
     assert Deadbeat("geyer", P).controls == ("touchdown_angle",)
     assert Deadbeat("iterative", P).controls == ("touchdown_angle", "k_d")
+
+
+def test_an_unreachable_step_names_the_touchdown_geometry_when_it_binds():
+    """From a 0.9 m apex no angle below acos(0.9) touches down; a target that needs a steeper leg
+    ends there, and the message says so (not an energy range suggesting it could be reached)."""
+    P = slipmaps.HUMAN_RUNNER
+    res = slipmaps.deadbeat("iterative", P, 0.9, 5.0, 1.2, 5.0)
+    assert res.status == "UNREACHABLE" and res.touchdown_limit == pytest.approx(math.acos(0.9 / P.q_r_td))
+    assert "touchdown geometry binds" in res.message and f"{res.touchdown_limit:.6g} rad" in res.message
+    other = slipmaps.deadbeat("iterative", P, 0.9, 5.0, 2.0, 5.0)  # k_d's bound binds there instead
+    assert other.status == "UNREACHABLE" and "geometry" not in other.message and "k_d at its" in other.message

@@ -156,6 +156,12 @@ def run(args: argparse.Namespace) -> int:
     from ..control.runs import run as run_scenario
 
     check(sc)  # the maps and their options, before any work
+    if sys.stderr.isatty():  # the first steps wait for the kernels: say so rather than sit silent
+        print(
+            f"slipmaps run: {sc.name}: {sc.steps} steps; the maps' kernels load first (numba compiles them "
+            "on a first run, about a minute, and caches them)",
+            file=sys.stderr,
+        )
 
     from ..control.runs import RunInterrupted
 

@@ -275,6 +275,14 @@ class DeadbeatResult(SolveStatus):
     def speed_error(self) -> float:
         return self.apex_speed - self.target_speed
 
+    @property
+    def touchdown_limit(self) -> float:
+        """The smallest touchdown angle magnitude [rad] at which the leg (length q_r_td) reaches the
+        ground from this apex: acos((apex height - ground) / q_r_td); 0 when every angle does."""
+        h, _, gr = self._apex
+        ratio = (h - gr) / self._ctl.params.q_r_td
+        return math.acos(ratio) if ratio < 1.0 else 0.0
+
     # the energy
     def _energy_in(self) -> float:
         p = self._ctl.params
@@ -729,6 +737,12 @@ def message_of(res: DeadbeatResult, bounds: dict) -> str:
         f" (target {_t(res.target_height, 'm')}, {_t(res.target_speed, 'm/s')}; scaled residual "
         f"{res.residual:.3g})"
     ]
+    limit = res.touchdown_limit
+    if "touchdown_angle" in res.controls and limit > 0.0 and abs(abs(res.touchdown_angle) - limit) < 1e-3:
+        parts.append(
+            f"the touchdown geometry binds: from this apex no angle below {limit:.6g} rad in magnitude "
+            f"reaches the ground (acos of the apex height over the leg length), and the angle is at it"
+        )
     for c in res.at_bounds:
         lo, hi = bounds[c]
         value = res.touchdown_angle if c == "touchdown_angle" else getattr(res, "k_c" if c == "k" else c)

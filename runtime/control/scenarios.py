@@ -33,7 +33,8 @@ each touchdown (``ground``: absolute heights, the ground under the start apex at
 ``kind = "random"`` draws each step's ground change uniformly in +-``amplitude`` [m] (seeded by the
 terrain's ``seed``); ``stairs`` rises by ``rise`` per stair (``before``, ``up``, ``flat``, ``down``
 steps). :func:`load` reads a file, :func:`from_dict` a table of the same keys; unknown keys are refused
-naming the accepted ones.
+naming the accepted ones. Every key with its type, default, unit and meaning: the site's scenario
+reference (docs/scenarios.md, from :mod:`.scenario_keys`).
 """
 
 from __future__ import annotations

@@ -1,0 +1,214 @@
+"""The scenario file's keys, documented: every key the loader accepts (:data:`.scenarios.KEYS`)
+with its type, default, unit and meaning, rendered as the site's scenario reference
+(docs/scenarios.md, between its ``scenario-keys`` markers; a test keeps the page, this table and
+the loader's keys equal, and the defaults equal to what :func:`.scenarios.from_dict` gives).
+
+Each entry: ``(table, key) -> (type, default, unit, meaning, field)``; ``field`` names the
+:class:`~.scenarios.Scenario` field whose default is the entry's (None where the key has no field
+of its own: a table, or a terrain key that shapes ``ground``).
+"""
+
+from __future__ import annotations
+
+__all__ = ["KEY_DOCS", "reference_markdown"]
+
+_NUM_PROFILE = "number, list or ramp"
+
+#: (table, key) -> (type, default as written in TOML, unit, meaning, Scenario field or None).
+KEY_DOCS: dict[tuple[str, str], tuple[str, str, str, str, str | None]] = {
+    ("", "name"): ("string", "the file's name", "", "the run's name (titles, tables)", None),
+    ("", "description"): ("string", '""', "", "free text", "description"),
+    ("", "steps"): ("integer >= 1", "10", "", "steps (apex to apex) to run", "steps"),
+    ("", "model"): (
+        "map name",
+        '"iterative"',
+        "",
+        "the controller's model: any map of `slipmaps maps`",
+        "model",
+    ),
+    ("", "plant"): ("map name", '"exact"', "", "the plant the run happens on: any map", "plant"),
+    ("", "start"): ("table", "", "", "the first apex: `height`, `speed`", None),
+    ("", "targets"): ("table", "", "", "the target of each step's next apex: `height`, `speed`", None),
+    ("", "terrain"): ("table", "", "", "the ground of each touchdown: `kind` and its keys, `known`", None),
+    ("", "control"): ("table", "", "", "the controller: controls, bounds, two-stage steps, ...", None),
+    ("", "params"): (
+        "table",
+        "the human runner",
+        "SI",
+        "the controller's SLIP parameters (SlipParams fields)",
+        None,
+    ),
+    ("", "mismatch"): ("table", "", "", "how the plant differs from the model: `mass`, `stiffness`", None),
+    ("", "noise"): ("table", "", "", "apex measurement noise: `height`, `speed`, `seed`", None),
+    ("", "model_options"): (
+        "table",
+        "{}",
+        "",
+        "the model map's options (`slipmaps maps NAME`)",
+        "model_options",
+    ),
+    ("", "plant_options"): ("table", "{}", "", "the plant map's options", "plant_options"),
+    ("start", "height"): ("number >= 0", "1.0", "m", "apex height above the ground under it", "start_height"),
+    ("start", "speed"): (
+        "number",
+        "5.0",
+        "m/s",
+        "horizontal apex speed, signed (negative: toward -x)",
+        "start_speed",
+    ),
+    ("targets", "height"): (
+        _NUM_PROFILE,
+        "start height",
+        "m",
+        "next apex height above that step's touchdown ground; a list per step (the last value held) or a "
+        "ramp `{from, to, steps, start}`",
+        None,
+    ),
+    ("targets", "speed"): (_NUM_PROFILE, "start speed", "m/s", "next apex speed, signed; as `height`", None),
+    ("terrain", "kind"): ("flat, steps, stairs, random", '"flat"', "", "the terrain's shape", None),
+    ("terrain", "heights"): (
+        _NUM_PROFILE,
+        "",
+        "m",
+        "kind steps: the ground of each touchdown (absolute)",
+        None,
+    ),
+    ("terrain", "rise"): ("number", "0.1", "m", "kind stairs: height of a stair", None),
+    ("terrain", "before"): ("integer", "2", "", "kind stairs: flat steps before the stairs", None),
+    ("terrain", "up"): ("integer", "4", "", "kind stairs: stairs up", None),
+    ("terrain", "flat"): ("integer", "2", "", "kind stairs: flat steps on top", None),
+    ("terrain", "down"): ("integer", "up", "", "kind stairs: stairs down", None),
+    ("terrain", "amplitude"): (
+        "number >= 0",
+        "0.1",
+        "m",
+        "kind random: each step's ground change, uniform in +-amplitude",
+        None,
+    ),
+    ("terrain", "seed"): ("integer", "0", "", "kind random: the ground's seed", None),
+    ("terrain", "known"): (
+        "integer >= 0",
+        "3",
+        "steps",
+        "touchdown grounds the controller knows ahead (0: unknown, it assumes flat ground)",
+        "known",
+    ),
+    ("control", "controls"): (
+        "list of names",
+        "angle and k_d",
+        "",
+        "touchdown_angle, k_c, k_d, k; default the angle and k_d (the angle alone for a "
+        "constant-stiffness model)",
+        "controls",
+    ),
+    ("control", "bounds"): ("table of [low, high]", "{}", "rad, N/m", "bounds per control", "bounds"),
+    ("control", "two_stage"): (
+        "boolean",
+        "false",
+        "",
+        "choose k_d again at the measured bottom",
+        "two_stage",
+    ),
+    ("control", "decompression"): (
+        "half-map name",
+        '"iterative-decompression"',
+        "",
+        "the model of the decompression a two-stage step plans with",
+        "decompression",
+    ),
+    ("control", "aim"): (
+        "both, height, speed",
+        '"both"',
+        "",
+        "which components of the target to reach",
+        "aim",
+    ),
+    ("control", "min_height"): (
+        "number > 0",
+        "l0",
+        "m",
+        "the planner's floor of a target apex above the next ground",
+        "min_height",
+    ),
+    ("control", "fixed_angle"): (
+        "number, abs < pi/2",
+        "none",
+        "rad",
+        "no controller: this touchdown angle and the nominal stiffness every step",
+        "fixed_angle",
+    ),
+    ("control", "jacobian"): (
+        "broyden, newton",
+        '"broyden"',
+        "",
+        "the deadbeat solve's Jacobian updates",
+        "jacobian",
+    ),
+    ("control", "tol"): ("number > 0", "1e-9", "scaled", "the deadbeat solve's tolerance", "tol"),
+    ("mismatch", "mass"): (
+        "number > -1",
+        "0.0",
+        "fraction",
+        "the plant's mass is (1 + mass) times the model's",
+        "mismatch_mass",
+    ),
+    ("mismatch", "stiffness"): (
+        "number > -1",
+        "0.0",
+        "fraction",
+        "the plant's springs are (1 + stiffness) times what is commanded",
+        "mismatch_stiffness",
+    ),
+    ("noise", "height"): (
+        "number >= 0",
+        "0.0",
+        "m",
+        "standard deviation of the apex height measurement",
+        "noise_height",
+    ),
+    ("noise", "speed"): (
+        "number >= 0",
+        "0.0",
+        "m/s",
+        "standard deviation of the apex speed measurement",
+        "noise_speed",
+    ),
+    ("noise", "seed"): (
+        "integer",
+        "0",
+        "",
+        "the noise's seed (run i of a batch draws from the pair (seed, i))",
+        "seed",
+    ),
+}
+
+
+def _params_rows() -> list[tuple[str, str, str, str, str]]:
+    from ..api.params import FIELDS, HUMAN_RUNNER, PARAMETERS
+
+    docs = {p["name"]: p for p in PARAMETERS}
+    rows = [
+        (f"`{f}`", "number > 0", repr(getattr(HUMAN_RUNNER, f)), docs[f]["unit"], docs[f]["doc"])
+        for f in FIELDS
+    ]
+    rows.append(("`k`", "number > 0", "", "N/m", "both stiffnesses, k_c = k_d = k"))
+    return rows
+
+
+def reference_markdown() -> str:
+    """The reference as Markdown: a table per TOML table, its keys in the loader's order."""
+    from .scenarios import KEYS
+
+    out = []
+    for table, keys in KEYS.items():
+        out.append(f"### {'Top level' if not table else f'[{table}]'}")
+        out.append("")
+        out.append("| key | type | default | unit | meaning |")
+        out.append("|---|---|---|---|---|")
+        if table == "params":
+            rows = _params_rows()
+        else:
+            rows = [(f"`{k}`", *KEY_DOCS[table, k][:4]) for k in keys]
+        out.extend("| " + " | ".join(r) + " |" for r in rows)
+        out.append("")
+    return "\n".join(out).rstrip() + "\n"
