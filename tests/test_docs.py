@@ -36,7 +36,7 @@ MOVED = {
     "# Accuracy (report sections 6-8, measured)": "findings.md",
     "# Performance": "performance.md",
     "## Cost against accuracy": "performance.md",
-    "## Performance of the exact map (issue 19)": "performance.md",
+    "## The exact map": "performance.md",
     "# Layout": "layout.md",
     "# Adding a map": "adding_a_map.md",
     "## Regenerating": "adding_a_map.md",

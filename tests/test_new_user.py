@@ -680,11 +680,14 @@ def test_a_grid_of_1e11_points_is_planned_without_allocating_the_axis():
 
 
 def test_a_grid_of_1e11_points_runs_from_the_command_line(tmp_path, capsys):
-    """The whole command without computing a row (--max-chunks 0): the output directory, its
-    manifest and the summary, no per-row or per-chunk list up front."""
+    """The whole command without computing a row (--max-chunks 0): refused without --yes (its
+    size stated), then with it the output directory, its manifest and the summary, no per-row or
+    per-chunk list up front."""
     argv = ["sweep", "--map", "geyer", "--fixed", "apex_height=1", "--axis", "apex_speed=1:2:100000000000"]
     argv += ["--axis", "touchdown_angle=0.3:0.4:3", "--out", str(tmp_path / "huge"), "--max-chunks", "0"]
-    assert main([*argv, "--json"]) == 0
+    assert main([*argv, "--json"]) == 2
+    assert "300,000,000,000 rows" in capsys.readouterr().err
+    assert main([*argv, "--json", "--yes"]) == 0
     summary = json.loads(capsys.readouterr().out)
     assert summary["rows"] == 300_000_000_000 and summary["rows_done"] == 0 and not summary["complete"]
     manifest = json.loads((tmp_path / "huge" / "manifest.json").read_text())

@@ -87,7 +87,8 @@ def stance(name: str, params: SlipParams, touchdown, **options) -> Result:
 @apex_signature
 def apex_return(name: str, params: SlipParams, given: dict, **options) -> Result:
     """One step of map ``name``: apex -> touchdown (leg at ``touchdown_angle``, on ground ``ground``
-    higher) -> stance -> next apex (module docstring; the inputs are the table's, :mod:`.inputs`)."""
+    higher) -> stance -> next apex (module docstring; the inputs are the table's: ``APEX_INPUTS`` of
+    derive/params.py)."""
     call = Call.of(name, params, options)
     inputs = apex_inputs(given)
     status, row, message = call.scalar("apex_return", inputs)
