@@ -54,6 +54,9 @@ def test_an_oserror_while_writing_is_one_line_naming_the_path(tmp_path):
         ["gait", "--figure", "/proc/g.png"],
         ["compare", "--plot", "/proc/c.png"],
         ["sweep", str(ROOT / "examples" / "sweep.toml"), "--out", "/proc/sweep"],
+        ["accuracy", "--map", "geyer", "--out", "/proc/acc"],
+        ["report", "--quick", "--out", "/proc/report"],
+        ["run", "--evaluate", "--quick", "--out", "/proc/evaluation"],
     ],
 )
 def test_every_command_refuses_a_path_under_proc_before_the_work(argv, capsys, monkeypatch):
@@ -119,3 +122,13 @@ def test_the_memory_estimate_grows_with_the_steps_and_refuses_beyond_the_availab
     assert runs.check_memory(1, 10, available=10**9) == runs.memory_estimate(1, 10)
     with pytest.raises(ValueError, match="GB of memory"):
         runs.check_memory(1, 10**6, available=10**6)
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full on this system")
+def test_a_full_device_while_writing_is_one_line_naming_the_path(tmp_path, capsys):
+    """/dev/full accepts the open and fails every write with ENOSPC: the figure's path is named."""
+    link = tmp_path / "c.png"
+    link.symlink_to("/dev/full")
+    assert main(["compare", "--map", "geyer", "--plot", str(link)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and str(link) in err[0] and "No space left on device" in err[0], err

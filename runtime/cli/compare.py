@@ -30,6 +30,7 @@ from ..api import index
 from ..api.maps import half_stance, stance, trajectory
 from ..api.numeric import num
 from ..api.params import HUMAN_RUNNER, SlipParams
+from ..api.paths import writing
 from ..api.results import Result
 from ..api.validate import leg_angle, non_negative, polar_state
 from ..studies.quantities import QUANTITIES
@@ -416,6 +417,9 @@ def plot(c: Comparison, path: str) -> str:
         + f", q_th_td={td[2]:.3f} rad"
     )
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    try:
+        with writing(path):
+            fig.savefig(path, dpi=110)
+    finally:
+        plt.close(fig)
     return path

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..api.files import rounded
 from ..api.index import get
+from ..api.paths import writing
 from .evaluation import D_MIN as EVAL_D_MIN
 from .evaluation import MISMATCH_D, SPEED_FLOOR, evaluate
 
@@ -386,8 +387,11 @@ def rough_figure(rec: dict, path) -> Path:
     fig.legend(handles, labels, loc="lower center", ncol=7, fontsize=8, frameon=False)
     fig.suptitle(f"Rough ground at 5 m/s, {r['steps']} steps per run", fontsize=11)
     fig.tight_layout(rect=(0, 0.1, 1, 0.96))
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    try:
+        with writing(path):
+            fig.savefig(path, dpi=110)
+    finally:
+        plt.close(fig)
     return Path(path)
 
 
@@ -404,7 +408,8 @@ def write(out: str | Path, examples: str | Path, *, quick: bool = False, progres
     small = evaluate(examples, quick=True, progress=progress)
     if quick:
         path = out / "control_quick.json"
-        path.write_text(json.dumps(rounded(small), indent=1) + "\n")
+        with writing(path):
+            path.write_text(json.dumps(rounded(small), indent=1) + "\n")
         return [path]
     record = evaluate(examples, progress=progress)
     record["quick"] = small
@@ -412,13 +417,15 @@ def write(out: str | Path, examples: str | Path, *, quick: bool = False, progres
     record = rounded(record)
     written = []
     path = out / "control.json"
-    path.write_text(json.dumps(record, indent=1) + "\n")
+    with writing(path):
+        path.write_text(json.dumps(record, indent=1) + "\n")
     written.append(path)
     written.append(rough_figure(record, out / "control_rough.png"))
     for name in record["settings"]["scenarios"]:
         sc = scenario_of(Path(examples) / f"{name}.toml", {})
         written.append(Path(run_figure(run(sc, model="iterative"), out / f"control_{name}.png")))
     path = out / "control.md"
-    path.write_text(render(record))
+    with writing(path):
+        path.write_text(render(record))
     written.append(path)
     return written

@@ -30,6 +30,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from ..api.paths import writing
 from ..studies.accuracy_report import error_heatmaps
 from .facts import CLAIMS, TABLES, MissingData, Numbers, claims, need
 
@@ -163,8 +164,11 @@ def figure(records: dict, path: str | Path) -> Path:
     mesh = error_heatmaps(heat, axes)  # the color scale: the decades of the errors drawn
     fig.colorbar(mesh, ax=axes, label="next-apex error |(dh, dv)| / |(h, v)| (white: a side fails)")
     fig.suptitle(f"{heat['grid']}, apex height {heat['apex_height']:g} m", fontsize=11)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    try:
+        with writing(path):
+            fig.savefig(path, dpi=90)
+    finally:
+        plt.close(fig)
     return Path(path)
 
 
@@ -185,7 +189,8 @@ def write(
     page, fig = out / PAGE, out / FIGURE
     text = render(records, strict)
     if not page.is_file() or page.read_text(encoding="utf-8") != text:
-        page.write_text(text, encoding="utf-8")
+        with writing(page):
+            page.write_text(text, encoding="utf-8")
     if draw and "accuracy" in records:
         figure(records, fig)
     return [page, fig]

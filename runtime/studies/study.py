@@ -18,6 +18,7 @@ import json
 from abc import ABC, abstractmethod
 from pathlib import Path
 
+from ..api.paths import writing
 from .report_format import rounded
 
 __all__ = ["VERSION", "Study", "to_json", "from_json", "paths", "write"]
@@ -75,7 +76,10 @@ def write(study: Study, md: str | Path, show_progress: bool | None = None) -> li
     (report, record, figure)."""
     md, js, png = paths(md)
     text = to_json(study.measure(show_progress))
-    js.write_text(text, encoding="utf-8")
+    with writing(js):
+        js.write_text(text, encoding="utf-8")
     record = from_json(text)
-    md.write_text(study.markdown(record, png.name), encoding="utf-8")
-    return [md, js, study.figure(record, png)]
+    with writing(md):
+        md.write_text(study.markdown(record, png.name), encoding="utf-8")
+    with writing(png):
+        return [md, js, study.figure(record, png)]

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from ..api.frames import to_pandas
-from ..api.paths import writable_dir
+from ..api.paths import writable_dir, writing
 from .files import check_format, combine, csv_header, read
 from .spec import Sweep
 
@@ -35,7 +35,7 @@ VERSION = 1
 
 def _write_atomic(path: Path, data: bytes) -> None:
     tmp = path.with_name(f".{path.name}.tmp")
-    with open(tmp, "wb") as f:
+    with writing(path), open(tmp, "wb") as f:
         f.write(data)
     os.replace(tmp, path)
 
