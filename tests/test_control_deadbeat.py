@@ -121,7 +121,7 @@ def test_bounds_hold_and_bad_bounds_are_refused():
 
 def test_controls_a_map_does_not_have_are_refused_naming_the_maps_that_do():
     with pytest.raises(ValueError, match="constant stiffness.*iterative"):
-        slipmaps.deadbeat("geyer", P, 1.0, 5.0, 1.0, 5.0)
+        slipmaps.deadbeat("geyer", P, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle", "k_d"))
     with pytest.raises(ValueError, match="constant-stiffness maps"):
         slipmaps.deadbeat("iterative", P, 1.0, 5.0, 1.0, 5.0, controls=("touchdown_angle", "k"))
     with pytest.raises(ValueError, match="unknown control"):
