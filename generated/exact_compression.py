@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   exact_stance.py sha256:299560de25340ae1
 # ----------------------------------------------------------------------------------------------
 """Exact compression half (touchdown to bottom, k_c; DOP853 integration) (report section 2.2): touchdown ->
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .exact_stance import compression
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -79,7 +79,7 @@ def exact_compression(x, p, out):
     end_q_rd = _c0[2]
     end_q_th = _c0[3]
     end_q_thd = _c0[4]
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

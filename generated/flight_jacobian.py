@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module flight: JVP kernels, and for a map
 its stance and apex-return Jacobians."""
@@ -16,7 +16,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
 # freeze them into this module's cached machine code although its cache does not see status.py.
@@ -112,12 +112,14 @@ def apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground(b_y_apex, b_xd_apex,
     d_foot_x__b_y_apex = _pd__3
     d_foot_x__ground = -_pd__3
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x, 0.0, 0.0, 0.0,
-        0.0, d_touchdown_q_rd__b_y_apex, d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td,
-        d_touchdown_q_rd__ground, 0.0, 0.0, 1.0, 0.0, d_touchdown_q_thd__b_y_apex,
-        d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td, d_touchdown_q_thd__ground,
-        d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground, d_foot_x__b_y_apex,
-        d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29],) = (touchdown_q_r, touchdown_q_rd,
+        touchdown_q_th, touchdown_q_thd, t_flight, foot_x, 0.0, 0.0, 0.0, 0.0, d_touchdown_q_rd__b_y_apex,
+        d_touchdown_q_rd__b_xd_apex, d_touchdown_q_rd__q_th_td, d_touchdown_q_rd__ground, 0.0, 0.0, 1.0, 0.0,
+        d_touchdown_q_thd__b_y_apex, d_touchdown_q_thd__b_xd_apex, d_touchdown_q_thd__q_th_td,
+        d_touchdown_q_thd__ground, d_t_flight__b_y_apex, 0.0, d_t_flight__q_th_td, d_t_flight__ground,
+        d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground,)
     return STATUS_OK
 
 
@@ -216,10 +218,12 @@ def liftoff_to_apex_jac_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, direction, 
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th,
-        d_apex_b_y__q_thd, d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd,
-        d_t_flight__q_th, d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
-        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19],) = (apex_b_y, apex_b_xd,
+        t_flight, dx_flight, apex_b_x, d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd,
+        d_apex_b_xd__q_rd, d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_rd, d_t_flight__q_th,
+        d_t_flight__q_thd, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_rd,
+        d_apex_b_x__q_th, d_apex_b_x__q_thd,)
     return STATUS_OK
 
 
@@ -328,9 +332,11 @@ def liftoff_to_apex_jac_q_r_q_rd_q_th_q_thd(q_r, q_rd, q_th, q_thd, g_f, directi
     d_apex_b_xd__q_th = d_b_xd__q_th
     d_apex_b_xd__q_thd = d_b_xd__q_thd
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r, d_apex_b_y__q_rd,
-        d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd, d_apex_b_xd__q_th,
-        d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th, d_t_flight__q_thd,
-        d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd, d_apex_b_x__q_r,
-        d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x, d_apex_b_y__q_r,
+        d_apex_b_y__q_rd, d_apex_b_y__q_th, d_apex_b_y__q_thd, d_apex_b_xd__q_r, d_apex_b_xd__q_rd,
+        d_apex_b_xd__q_th, d_apex_b_xd__q_thd, d_t_flight__q_r, d_t_flight__q_rd, d_t_flight__q_th,
+        d_t_flight__q_thd, d_dx_flight__q_r, d_dx_flight__q_rd, d_dx_flight__q_th, d_dx_flight__q_thd,
+        d_apex_b_x__q_r, d_apex_b_x__q_rd, d_apex_b_x__q_th, d_apex_b_x__q_thd,)
     return STATUS_OK

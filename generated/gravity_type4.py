@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:1fc87ef6cb992a85
+#   geyer.py sha256:caaa594dd2a4e99a
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 4 (average leg length on [t_i, t_f]) (report section 4.5): stance, state-at-time
 and apex-return kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase, geyer_solution, geyer_state
 
@@ -291,8 +291,9 @@ def gravity_type4_stance(x, p, out):
         liftoff_q_rd = i_liftoff_q_rd
     else:
         return fail(out, STATUS_INVALID_INPUT)
-    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -539,7 +540,7 @@ def gravity_type4_state_at(x, p, out):
     q_th = _c2[2]
     # the momentum at t
     q_thd = (P_c*(-ramp + 1.0 + ramp*t/i_t_stance) + p_td)/(m*q_r**2)
-    put(out, (q_r, q_rd, q_th, q_thd))
+    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -637,7 +638,7 @@ def gravity_type4_apex_return(x, p, out):
     foot_x = _c0[5]
     # stance: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(12), 12)
     _c1 = gravity_type4_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -657,8 +658,9 @@ def gravity_type4_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:1fc87ef6cb992a85
+#   geyer.py sha256:caaa594dd2a4e99a
 # ----------------------------------------------------------------------------------------------
 """Gravity correction type 5 (time-varying momentum) (report section 4.6): stance, state-at-time and
 apex-return kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_liftoff_phase
 
@@ -353,8 +353,9 @@ def gravity_type5_stance(x, p, out):
         return fail(out, STATUS_ENERGY_DEFICIT)
     # q_rd_lo from the energy
     liftoff_q_rd = math.sqrt(_q_rd_lo_sq)
-    put(out, (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, P_c, passes))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (t_bottom, t_stance, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, P_c, passes,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -526,7 +527,7 @@ def gravity_type5_state_at(x, p, out):
     q_r = _x19*l0
     q_rd = i_b*i_omega0_hat*l0*math.cos(_x18)
     q_thd = (i_c0*t + (0.5)*i_c1*t**2 + (0.3333333333333333)*i_c2*t**3 + p_td)/(_x19**2*l0**2*m)
-    put(out, (q_r, q_rd, q_th, q_thd))
+    (out[0], out[1], out[2], out[3],) = (q_r, q_rd, q_th, q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -617,7 +618,7 @@ def gravity_type5_apex_return(x, p, out):
     foot_x = _c0[5]
     # stance: Gravity correction type 5 (time-varying momentum)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(12), 12)
     _c1 = gravity_type5_stance(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -637,8 +638,9 @@ def gravity_type5_apex_return(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13],) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd,
+        liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y, _o1[10], _o1[11],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

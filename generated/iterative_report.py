@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer.py sha256:1fc87ef6cb992a85
-#   geyer_vs.py sha256:26f78981a9f3779d
-#   gravity_type0.py sha256:083ff9fb9f4096ff
-#   gravity_type1.py sha256:a2df9e1c49f33988
-#   gravity_type2.py sha256:481d6eb78f04773c
-#   gravity_type3.py sha256:f9ed86cd909d6c3d
-#   gravity_type4.py sha256:c12b63b3bd6a0a5c
-#   gravity_type5.py sha256:ceffd37c232dc11d
-#   iterative.py sha256:a1938ded169afdbb
+#   geyer.py sha256:caaa594dd2a4e99a
+#   geyer_vs.py sha256:083f4e79a9d597a8
+#   gravity_type0.py sha256:48f9e2c74b125b9b
+#   gravity_type1.py sha256:9312d42b8548e805
+#   gravity_type2.py sha256:2870da2fec148d61
+#   gravity_type3.py sha256:6c299a7bffcc2197
+#   gravity_type4.py sha256:78a8ace9d2aef2ce
+#   gravity_type5.py sha256:f0af2779ab7a22f1
+#   iterative.py sha256:363c44dec9e43e11
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""
@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer import geyer_stance
 from .geyer_vs import bottom_quartic, geyer_vs_stance
@@ -421,17 +421,19 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(7), 7)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
     _o0 = carray(stack(10), 10)
     _c0 = geyer_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -445,8 +447,9 @@ def iterative_report_stance_zeroth_geyer(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -541,7 +544,7 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_geyer(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -561,8 +564,9 @@ def iterative_report_apex_return_zeroth_geyer(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -617,8 +621,10 @@ def iterative_report_stance_zeroth_held(x, p, out):
     z_lo_q_thd = _c0[4]
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd,
-        z_lo_q_th, z_lo_q_thd, 1.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, z_b_q_r, z_b_q_th, z_b_q_thd, z_lo_q_th, z_lo_q_thd, 1.0, variant,
+        iterations, bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -632,8 +638,9 @@ def iterative_report_stance_zeroth_held(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -689,7 +696,7 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_held(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -709,8 +716,9 @@ def iterative_report_apex_return_zeroth_held(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -756,17 +764,20 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -780,8 +791,9 @@ def iterative_report_stance_zeroth_gravity_type0(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -837,7 +849,7 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type0(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -857,8 +869,9 @@ def iterative_report_apex_return_zeroth_gravity_type0(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -904,17 +917,20 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -928,8 +944,9 @@ def iterative_report_stance_zeroth_gravity_type1(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -985,7 +1002,7 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type1(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1005,8 +1022,9 @@ def iterative_report_apex_return_zeroth_gravity_type1(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1052,17 +1070,20 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1076,8 +1097,9 @@ def iterative_report_stance_zeroth_gravity_type2(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1133,7 +1155,7 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type2(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1153,8 +1175,9 @@ def iterative_report_apex_return_zeroth_gravity_type2(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1200,17 +1223,20 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1224,8 +1250,9 @@ def iterative_report_stance_zeroth_gravity_type3(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1281,7 +1308,7 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type3(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1301,8 +1328,9 @@ def iterative_report_apex_return_zeroth_gravity_type3(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1348,17 +1376,20 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1372,8 +1403,9 @@ def iterative_report_stance_zeroth_gravity_type4(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1429,7 +1461,7 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type4(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1449,8 +1481,9 @@ def iterative_report_apex_return_zeroth_gravity_type4(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1496,17 +1529,20 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(9), 9)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
+        q_r_lo, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type5_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1520,8 +1556,9 @@ def iterative_report_stance_zeroth_gravity_type5(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1577,7 +1614,7 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_gravity_type5(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1597,8 +1634,9 @@ def iterative_report_apex_return_zeroth_gravity_type5(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1644,17 +1682,20 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(13), 13)
     _c0 = geyer_vs_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(19), 19)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,
+        m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations,
+        bottom_length,)
     _c1 = report_core(_a1)
     if _c1[10] != STATUS_OK:
         return fail(out, _c1[10])
@@ -1668,8 +1709,9 @@ def iterative_report_stance_zeroth_geyer_vs(x, p, out):
     liftoff_q_rd = _c1[7]
     liftoff_q_th = _c1[8]
     liftoff_q_thd = _c1[9]
-    put(out, (t_bottom, t_stance, bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r,
-        liftoff_q_rd, liftoff_q_th, liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9],) = (t_bottom, t_stance,
+        bottom_q_r, bottom_q_rd, bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1725,7 +1767,7 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     foot_x = _c0[5]
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (td_q_r, td_q_rd, td_q_th, td_q_thd))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (td_q_r, td_q_rd, td_q_th, td_q_thd,)
     _o1 = carray(stack(10), 10)
     _c1 = iterative_report_stance_zeroth_geyer_vs(_x1, p, _o1)
     if _c1 != STATUS_OK:
@@ -1745,8 +1787,9 @@ def iterative_report_apex_return_zeroth_geyer_vs(x, p, out):
     # the step: apex to the foot, the foot to the next apex
     step_length = foot_x + next_apex_x
     foot_y = -b_y_apex + ground
-    put(out, (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        ) = (apex_height, apex_speed, t_descent, _o1[1], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
+        liftoff_q_thd, step_length, foot_x, foot_y,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
-#   geyer.py sha256:1fc87ef6cb992a85
-#   geyer_vs.py sha256:26f78981a9f3779d
-#   gravity_type0.py sha256:083ff9fb9f4096ff
-#   gravity_type1.py sha256:a2df9e1c49f33988
-#   gravity_type2.py sha256:481d6eb78f04773c
-#   gravity_type3.py sha256:f9ed86cd909d6c3d
-#   gravity_type4.py sha256:c12b63b3bd6a0a5c
-#   gravity_type5.py sha256:ceffd37c232dc11d
-#   iterative.py sha256:a1938ded169afdbb
-#   iterative_report.py sha256:1dd0b9ed9abb98eb
+#   support.py sha256:e0347acdae98a5cd
+#   geyer.py sha256:caaa594dd2a4e99a
+#   geyer_vs.py sha256:083f4e79a9d597a8
+#   gravity_type0.py sha256:48f9e2c74b125b9b
+#   gravity_type1.py sha256:9312d42b8548e805
+#   gravity_type2.py sha256:2870da2fec148d61
+#   gravity_type3.py sha256:6c299a7bffcc2197
+#   gravity_type4.py sha256:78a8ace9d2aef2ce
+#   gravity_type5.py sha256:f0af2779ab7a22f1
+#   iterative.py sha256:363c44dec9e43e11
+#   iterative_report.py sha256:5c829098a3fd1a2e
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""
@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .geyer import geyer_stance
 from .geyer_vs import geyer_vs_stance
 from .gravity_type0 import gravity_type0_stance
@@ -98,9 +98,9 @@ def iterative_report_compression_zeroth_geyer(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(7), 7)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_td,)
     _o0 = carray(stack(10), 10)
     _c0 = geyer_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -125,7 +125,7 @@ def iterative_report_compression_zeroth_geyer(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -192,7 +192,7 @@ def iterative_report_compression_zeroth_held(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -235,9 +235,10 @@ def iterative_report_compression_zeroth_gravity_type0(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 1.0, 0.0))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 1.0, 0.0,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type0_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -262,7 +263,7 @@ def iterative_report_compression_zeroth_gravity_type0(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -305,9 +306,10 @@ def iterative_report_compression_zeroth_gravity_type1(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type1_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -332,7 +334,7 @@ def iterative_report_compression_zeroth_gravity_type1(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -375,9 +377,10 @@ def iterative_report_compression_zeroth_gravity_type2(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type2_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -402,7 +405,7 @@ def iterative_report_compression_zeroth_gravity_type2(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -445,9 +448,10 @@ def iterative_report_compression_zeroth_gravity_type3(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type3_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -472,7 +476,7 @@ def iterative_report_compression_zeroth_gravity_type3(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -515,9 +519,10 @@ def iterative_report_compression_zeroth_gravity_type4(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_td, 0.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type4_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -542,7 +547,7 @@ def iterative_report_compression_zeroth_gravity_type4(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -585,9 +590,10 @@ def iterative_report_compression_zeroth_gravity_type5(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(9), 9)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_td, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
+        q_r_td, 100.0, 1e-12,)
     _o0 = carray(stack(12), 12)
     _c0 = gravity_type5_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -612,7 +618,7 @@ def iterative_report_compression_zeroth_gravity_type5(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -655,9 +661,10 @@ def iterative_report_compression_zeroth_geyer_vs(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, k_c, g_s, NAN, q_r_td, q_r_td, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, k_c, g_s, NAN, q_r_td, q_r_td, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(13), 13)
     _c0 = geyer_vs_stance(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -682,7 +689,7 @@ def iterative_report_compression_zeroth_geyer_vs(x, p, out):
     end_q_rd = bottom_q_rd
     end_q_th = bottom_q_th
     end_q_thd = bottom_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

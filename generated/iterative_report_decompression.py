@@ -6,7 +6,7 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half as printed (bottom to liftoff, k_d) (report section 5.2.2): bottom ->
@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight import liftoff_to_apex
 
 # The status codes are fixed constants (derive/status.py: append-only, never renumbered), so numba may
@@ -169,7 +169,7 @@ def iterative_report_decompression(x, p, out):
     end_q_rd = liftoff_q_rd
     end_q_th = liftoff_q_th
     end_q_thd = liftoff_q_thd
-    put(out, (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd))
+    (out[0], out[1], out[2], out[3], out[4],) = (t_half, end_q_r, end_q_rd, end_q_th, end_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -238,9 +238,10 @@ def iterative_report_decompression_apex(x, p, out):
         return fail(out, STATUS_INVALID_INPUT)
     # the half: Iterative decompression half as printed (bottom to liftoff, k_d)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_b, q_rd_b, q_th_b, q_thd_b))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_b, q_rd_b, q_th_b, q_thd_b,)
     _p0 = carray(stack(7), 7)
-    put(_p0, (m, l0, k_d, g_s, q_r_lo, variant, iterations))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_d, g_s, q_r_lo, variant, iterations,
+        )
     _o0 = carray(stack(5), 5)
     _c0 = iterative_report_decompression(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
@@ -260,8 +261,8 @@ def iterative_report_decompression_apex(x, p, out):
     apex_height = _c1[0]
     apex_speed = _c1[1]
     t_ascent = _c1[2]
-    put(out, (apex_height, apex_speed, _o0[0], t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7],) = (apex_height, apex_speed, _o0[0],
+        t_ascent, liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

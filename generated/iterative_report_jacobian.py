@@ -6,17 +6,17 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
-#   flight_jacobian.py sha256:b4f0a702d6e8de9a
-#   geyer_jacobian.py sha256:a7af18b6c691011d
-#   geyer_vs_jacobian.py sha256:952da54b86ee3a56
-#   gravity_type0_jacobian.py sha256:d0baa0982cef9a01
-#   gravity_type1_jacobian.py sha256:59b7913175115d8f
-#   gravity_type2_jacobian.py sha256:2a4db16a128bb3a3
-#   gravity_type3_jacobian.py sha256:6d51c67853964703
-#   gravity_type4_jacobian.py sha256:82d02e54fa9f383c
-#   gravity_type5_jacobian.py sha256:0d2e2dfd9ddd2679
-#   iterative_jacobian.py sha256:35e1bbe295142b4d
+#   support.py sha256:e0347acdae98a5cd
+#   flight_jacobian.py sha256:ca85a70881dc80e6
+#   geyer_jacobian.py sha256:2b212fb80a417ed7
+#   geyer_vs_jacobian.py sha256:b714100afbf6ef71
+#   gravity_type0_jacobian.py sha256:d17d011ce55cfb35
+#   gravity_type1_jacobian.py sha256:76da5d750d466103
+#   gravity_type2_jacobian.py sha256:c0d8dc3526315529
+#   gravity_type3_jacobian.py sha256:b6ee937e6eb7580e
+#   gravity_type4_jacobian.py sha256:4d8527bb3f9a9320
+#   gravity_type5_jacobian.py sha256:3274b0353ed302fb
+#   iterative_jacobian.py sha256:accc11df0062ba1a
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight_jacobian import (apex_to_touchdown_jac_b_y_apex_b_xd_apex_q_th_td_ground,
     liftoff_to_apex_jac_q_rd_q_th_q_thd)
 from .geyer_jacobian import geyer_stance_jacobian
@@ -473,12 +473,16 @@ def report_compression_jvp6_4eaacb(_a, out):
     d_bottom_q_th__4 = d_c_Q__4
     d_bottom_q_th__5 = d_c_Q__5
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (t_bottom, bottom_q_r, 0.0, bottom_q_th, bottom_q_thd, E_ab, d_t_bottom__0, d_t_bottom__1,
-        d_t_bottom__2, d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_bottom_q_r__0, d_bottom_q_r__1,
-        d_bottom_q_r__2, d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        d_bottom_q_th__0, d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4,
-        d_bottom_q_th__5, d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3,
-        d_bottom_q_thd__4, d_bottom_q_thd__5, d_E_ab__0, d_E_ab__1, d_E_ab__2, d_E_ab__3, d_E_ab__4, 0.0))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41],) = (t_bottom, bottom_q_r, 0.0,
+        bottom_q_th, bottom_q_thd, E_ab, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2, d_t_bottom__3,
+        d_t_bottom__4, d_t_bottom__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2, d_bottom_q_r__3,
+        d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0, d_bottom_q_th__1,
+        d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5, d_bottom_q_thd__0,
+        d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4, d_bottom_q_thd__5,
+        d_E_ab__0, d_E_ab__1, d_E_ab__2, d_E_ab__3, d_E_ab__4, 0.0,)
     return STATUS_OK
 
 
@@ -577,11 +581,13 @@ def report_core_jvp6_b60fdf(_a, out):
         _a[42], _a[43], _a[44], _a[45], _a[46], _a[47], _a[48])
     # the compression half as printed
     _a0 = carray(stack(32), 32)
-    put(_a0, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, variant,
-        iterations, bottom_length, d_z_b_q_r__0, d_z_b_q_th__0, d_z_b_q_thd__0, d_z_b_q_r__1, d_z_b_q_th__1,
-        d_z_b_q_thd__1, d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3,
-        d_z_b_q_thd__3, d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_b_q_r__5, d_z_b_q_th__5,
-        d_z_b_q_thd__5))
+    (_a0[0], _a0[1], _a0[2], _a0[3], _a0[4], _a0[5], _a0[6], _a0[7], _a0[8], _a0[9], _a0[10], _a0[11],
+        _a0[12], _a0[13], _a0[14], _a0[15], _a0[16], _a0[17], _a0[18], _a0[19], _a0[20], _a0[21], _a0[22],
+        _a0[23], _a0[24], _a0[25], _a0[26], _a0[27], _a0[28], _a0[29], _a0[30], _a0[31],) = (q_r_td, q_rd_td,
+        q_th_td, q_thd_td, m, l0, k_c, g_s, z_b_q_r, z_b_q_th, z_b_q_thd, variant, iterations, bottom_length,
+        d_z_b_q_r__0, d_z_b_q_th__0, d_z_b_q_thd__0, d_z_b_q_r__1, d_z_b_q_th__1, d_z_b_q_thd__1,
+        d_z_b_q_r__2, d_z_b_q_th__2, d_z_b_q_thd__2, d_z_b_q_r__3, d_z_b_q_th__3, d_z_b_q_thd__3,
+        d_z_b_q_r__4, d_z_b_q_th__4, d_z_b_q_thd__4, d_z_b_q_r__5, d_z_b_q_th__5, d_z_b_q_thd__5,)
     _o0 = carray(stack(42), 42)
     _c0 = report_compression_jvp6_4eaacb(_a0, _o0)
     if _c0 != STATUS_OK:
@@ -1019,17 +1025,24 @@ def report_core_jvp6_b60fdf(_a, out):
     d_liftoff_q_th__4 = d_d_Q__4
     d_liftoff_q_th__5 = d_d_Q__5
     # (internal helper: its callers check that their outputs are finite)
-    put(out, (t_bottom, t_stance, bottom_q_r, _o0[2], bottom_q_th, bottom_q_thd, liftoff_q_r, liftoff_q_rd,
-        liftoff_q_th, liftoff_q_thd, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2, d_t_bottom__3,
-        d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2, d_t_stance__3,
-        d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2, d_bottom_q_r__3,
-        d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0, d_bottom_q_th__1,
-        d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5, d_bottom_q_thd__0,
-        d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4, d_bottom_q_thd__5, 0.0,
-        0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__0, d_liftoff_q_rd__1, d_liftoff_q_rd__2, d_liftoff_q_rd__3,
-        d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0, d_liftoff_q_th__1, d_liftoff_q_th__2,
-        d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5, d_liftoff_q_thd__0, d_liftoff_q_thd__1,
-        d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4, d_liftoff_q_thd__5))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (t_bottom, t_stance, bottom_q_r, _o0[2], bottom_q_th, bottom_q_thd,
+        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, d_t_bottom__0, d_t_bottom__1, d_t_bottom__2,
+        d_t_bottom__3, d_t_bottom__4, d_t_bottom__5, d_t_stance__0, d_t_stance__1, d_t_stance__2,
+        d_t_stance__3, d_t_stance__4, d_t_stance__5, d_bottom_q_r__0, d_bottom_q_r__1, d_bottom_q_r__2,
+        d_bottom_q_r__3, d_bottom_q_r__4, d_bottom_q_r__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_bottom_q_th__0,
+        d_bottom_q_th__1, d_bottom_q_th__2, d_bottom_q_th__3, d_bottom_q_th__4, d_bottom_q_th__5,
+        d_bottom_q_thd__0, d_bottom_q_thd__1, d_bottom_q_thd__2, d_bottom_q_thd__3, d_bottom_q_thd__4,
+        d_bottom_q_thd__5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__0, d_liftoff_q_rd__1,
+        d_liftoff_q_rd__2, d_liftoff_q_rd__3, d_liftoff_q_rd__4, d_liftoff_q_rd__5, d_liftoff_q_th__0,
+        d_liftoff_q_th__1, d_liftoff_q_th__2, d_liftoff_q_th__3, d_liftoff_q_th__4, d_liftoff_q_th__5,
+        d_liftoff_q_thd__0, d_liftoff_q_thd__1, d_liftoff_q_thd__2, d_liftoff_q_thd__3, d_liftoff_q_thd__4,
+        d_liftoff_q_thd__5,)
     return STATUS_OK
 
 
@@ -1101,29 +1114,40 @@ def iterative_report_stance_jacobian_zeroth_geyer(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Geyer et al.'s approximate stance map
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(7), 7)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6],) = (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo,)
     _o0 = carray(stack(60), 60)
     _c0 = geyer_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[20], _o0[30], _o0[35], _o0[50], _o0[55],
-        _o0[21], _o0[31], _o0[36], _o0[51], _o0[56], 0.0, _o0[32], 0.0, _o0[52], 0.0, _o0[23], _o0[33],
-        _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], 0.0, 0.0, 0.0, 0.0, 0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[20],
+        _o0[30], _o0[35], _o0[50], _o0[55], _o0[21], _o0[31], _o0[36], _o0[51], _o0[56], 0.0, _o0[32], 0.0,
+        _o0[52], 0.0, _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54],
+        _o0[59], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1318,22 +1342,29 @@ def iterative_report_apex_return_jacobian_tail_063bb0(_a, out):
             and math.isfinite(liftoff_q_rd) and math.isfinite(liftoff_q_th) and math.isfinite(liftoff_q_thd)
             and math.isfinite(step_length) and math.isfinite(foot_x) and math.isfinite(foot_y)):
         return fail(out, STATUS_NUMERICAL_RANGE)
-    put(out, (_o0[0], _o0[1], t_descent, t_stance, _o0[2], liftoff_q_r, liftoff_q_rd, liftoff_q_th,
-        liftoff_q_thd, step_length, foot_x, foot_y, d_apex_height__b_y_apex, d_apex_height__b_xd_apex,
-        d_apex_height__q_th_td, d_apex_height__ground, d_apex_height__k_c, d_apex_height__k_d,
-        d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex, d_apex_speed__q_th_td, d_apex_speed__ground,
-        d_apex_speed__k_c, d_apex_speed__k_d, d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td,
-        d_t_descent__ground, 0.0, 0.0, d_t_stance__b_y_apex, d_t_stance__b_xd_apex, d_t_stance__q_th_td,
-        d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d, d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex,
-        d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c, d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0,
-        0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex, d_liftoff_q_rd__q_th_td,
-        d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d, d_liftoff_q_th__b_y_apex,
-        d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground, d_liftoff_q_th__k_c,
-        d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex, d_liftoff_q_thd__q_th_td,
-        d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d, d_step_length__b_y_apex,
-        d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground, d_step_length__k_c,
-        d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td, d_foot_x__ground, 0.0,
-        0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69], out[70], out[71], out[72], out[73], out[74], out[75], out[76], out[77],
+        out[78], out[79], out[80], out[81], out[82], out[83],) = (_o0[0], _o0[1], t_descent, t_stance, _o0[2],
+        liftoff_q_r, liftoff_q_rd, liftoff_q_th, liftoff_q_thd, step_length, foot_x, foot_y,
+        d_apex_height__b_y_apex, d_apex_height__b_xd_apex, d_apex_height__q_th_td, d_apex_height__ground,
+        d_apex_height__k_c, d_apex_height__k_d, d_apex_speed__b_y_apex, d_apex_speed__b_xd_apex,
+        d_apex_speed__q_th_td, d_apex_speed__ground, d_apex_speed__k_c, d_apex_speed__k_d,
+        d_t_descent__b_y_apex, 0.0, d_t_descent__q_th_td, d_t_descent__ground, 0.0, 0.0, d_t_stance__b_y_apex,
+        d_t_stance__b_xd_apex, d_t_stance__q_th_td, d_t_stance__ground, d_t_stance__k_c, d_t_stance__k_d,
+        d_t_ascent__b_y_apex, d_t_ascent__b_xd_apex, d_t_ascent__q_th_td, d_t_ascent__ground, d_t_ascent__k_c,
+        d_t_ascent__k_d, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, d_liftoff_q_rd__b_y_apex, d_liftoff_q_rd__b_xd_apex,
+        d_liftoff_q_rd__q_th_td, d_liftoff_q_rd__ground, d_liftoff_q_rd__k_c, d_liftoff_q_rd__k_d,
+        d_liftoff_q_th__b_y_apex, d_liftoff_q_th__b_xd_apex, d_liftoff_q_th__q_th_td, d_liftoff_q_th__ground,
+        d_liftoff_q_th__k_c, d_liftoff_q_th__k_d, d_liftoff_q_thd__b_y_apex, d_liftoff_q_thd__b_xd_apex,
+        d_liftoff_q_thd__q_th_td, d_liftoff_q_thd__ground, d_liftoff_q_thd__k_c, d_liftoff_q_thd__k_d,
+        d_step_length__b_y_apex, d_step_length__b_xd_apex, d_step_length__q_th_td, d_step_length__ground,
+        d_step_length__k_c, d_step_length__k_d, d_foot_x__b_y_apex, d_foot_x__b_xd_apex, d_foot_x__q_th_td,
+        d_foot_x__ground, 0.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0,)
     return STATUS_OK
 
 
@@ -1418,18 +1449,22 @@ def iterative_report_apex_return_jacobian_zeroth_geyer(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_geyer(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1481,20 +1516,30 @@ def iterative_report_stance_jacobian_zeroth_held(x, p, out):
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[0], _o0[1], _o0[2],
-        _o0[3], _o0[4], 1.0, variant, iterations, bottom_length, _o0[5], 0.0, _o0[15], 0.0, 0.0, _o0[6], 0.0,
-        _o0[16], 0.0, 0.0, _o0[7], _o0[12], _o0[17], 0.0, 0.0, _o0[8], 0.0, _o0[18], 0.0, 0.0, _o0[9], 0.0,
-        _o0[19], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[0], _o0[1], _o0[2], _o0[3], _o0[4], 1.0, variant, iterations, bottom_length, _o0[5], 0.0,
+        _o0[15], 0.0, 0.0, _o0[6], 0.0, _o0[16], 0.0, 0.0, _o0[7], _o0[12], _o0[17], 0.0, 0.0, _o0[8], 0.0,
+        _o0[18], 0.0, 0.0, _o0[9], 0.0, _o0[19], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1547,18 +1592,22 @@ def iterative_report_apex_return_jacobian_zeroth_held(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_held(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1604,30 +1653,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type0(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 0 (leg length l0)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 1.0, 0.0,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type0_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1680,18 +1740,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type0(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type0(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1737,30 +1801,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type1(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 1 (leg length (l0 + q_r_b)/2)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type1_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1813,18 +1888,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type1(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type1(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1870,30 +1949,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type2(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 2 (average leg length)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type2_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -1946,18 +2036,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type2(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type2(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2003,30 +2097,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type3(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 3 (trapezoid on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(11), 11)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10],) = (m, l0, k_c,
+        g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type3_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2079,18 +2184,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type3(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type3(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2136,30 +2245,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type4(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 4 (average leg length on [t_i, t_f])
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, g_s, NAN, q_r_td, q_r_lo, 0.0, 1.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type4_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2212,18 +2332,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type4(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type4(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2269,30 +2393,41 @@ def iterative_report_stance_jacobian_zeroth_gravity_type5(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Gravity correction type 5 (time-varying momentum)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(9), 9)
-    put(_p0, (m, l0, k_c, g_s, NAN, q_r_td, q_r_lo, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8],) = (m, l0, k_c, g_s, NAN, q_r_td,
+        q_r_lo, 100.0, 1e-12,)
     _o0 = carray(stack(72), 72)
     _c0 = gravity_type5_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22], _o0[32], _o0[37], _o0[52], _o0[57],
-        _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34], _o0[39], _o0[54], _o0[59], _o0[25],
-        _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41], _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0,
-        0.0))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[22],
+        _o0[32], _o0[37], _o0[52], _o0[57], _o0[23], _o0[33], _o0[38], _o0[53], _o0[58], _o0[24], _o0[34],
+        _o0[39], _o0[54], _o0[59], _o0[25], _o0[35], _o0[40], _o0[55], _o0[60], _o0[26], _o0[36], _o0[41],
+        _o0[56], _o0[61], 0.0, 0.0, 0.0, 0.0, 0.0,)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2345,18 +2480,22 @@ def iterative_report_apex_return_jacobian_zeroth_gravity_type5(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_gravity_type5(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2402,30 +2541,41 @@ def iterative_report_stance_jacobian_zeroth_geyer_vs(x, p, out):
         return fail(out, STATUS_TOUCHDOWN_NOT_COMPRESSING)
     # zeroth iterate: Simple variable-stiffness map (Geyer et al. per half)
     _x0 = carray(stack(4), 4)
-    put(_x0, (q_r_td, q_rd_td, q_th_td, q_thd_td))
+    (_x0[0], _x0[1], _x0[2], _x0[3],) = (q_r_td, q_rd_td, q_th_td, q_thd_td,)
     _p0 = carray(stack(12), 12)
-    put(_p0, (m, l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12))
+    (_p0[0], _p0[1], _p0[2], _p0[3], _p0[4], _p0[5], _p0[6], _p0[7], _p0[8], _p0[9], _p0[10], _p0[11],) = (m,
+        l0, k_c, k_d, g_s, NAN, q_r_td, q_r_lo, 2.0, 0.0, 100.0, 1e-12,)
     _o0 = carray(stack(91), 91)
     _c0 = geyer_vs_stance_jacobian(_x0, _p0, _o0)
     if _c0 != STATUS_OK:
         return fail(out, _c0)
     # the iteration from the zeroth iterate
     _a1 = carray(stack(49), 49)
-    put(_a1, (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s, q_r_lo, _o0[2], _o0[4], _o0[5],
-        _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[25], _o0[37], _o0[43], _o0[61], _o0[67],
-        _o0[26], _o0[38], _o0[44], _o0[62], _o0[68], _o0[27], _o0[39], _o0[45], _o0[63], _o0[69], _o0[28],
-        _o0[40], _o0[46], _o0[64], _o0[70], _o0[29], _o0[41], _o0[47], _o0[65], _o0[71], _o0[30], _o0[42],
-        _o0[48], _o0[66], _o0[72]))
+    (_a1[0], _a1[1], _a1[2], _a1[3], _a1[4], _a1[5], _a1[6], _a1[7], _a1[8], _a1[9], _a1[10], _a1[11],
+        _a1[12], _a1[13], _a1[14], _a1[15], _a1[16], _a1[17], _a1[18], _a1[19], _a1[20], _a1[21], _a1[22],
+        _a1[23], _a1[24], _a1[25], _a1[26], _a1[27], _a1[28], _a1[29], _a1[30], _a1[31], _a1[32], _a1[33],
+        _a1[34], _a1[35], _a1[36], _a1[37], _a1[38], _a1[39], _a1[40], _a1[41], _a1[42], _a1[43], _a1[44],
+        _a1[45], _a1[46], _a1[47], _a1[48],) = (q_r_td, q_rd_td, q_th_td, q_thd_td, m, l0, k_c, k_d, g_s,
+        q_r_lo, _o0[2], _o0[4], _o0[5], _o0[8], _o0[9], 0.0, variant, iterations, bottom_length, _o0[25],
+        _o0[37], _o0[43], _o0[61], _o0[67], _o0[26], _o0[38], _o0[44], _o0[62], _o0[68], _o0[27], _o0[39],
+        _o0[45], _o0[63], _o0[69], _o0[28], _o0[40], _o0[46], _o0[64], _o0[70], _o0[29], _o0[41], _o0[47],
+        _o0[65], _o0[71], _o0[30], _o0[42], _o0[48], _o0[66], _o0[72],)
     _o1 = carray(stack(70), 70)
     _c1 = report_core_jvp6_b60fdf(_a1, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
-    put(out, (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8], _o1[9], _o1[10],
-        _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19], _o1[20], _o1[21],
-        _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[34], _o1[35],
-        _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44], _o1[45], 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58], _o1[59], _o1[60],
-        _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69]))
+    (out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8], out[9], out[10], out[11],
+        out[12], out[13], out[14], out[15], out[16], out[17], out[18], out[19], out[20], out[21], out[22],
+        out[23], out[24], out[25], out[26], out[27], out[28], out[29], out[30], out[31], out[32], out[33],
+        out[34], out[35], out[36], out[37], out[38], out[39], out[40], out[41], out[42], out[43], out[44],
+        out[45], out[46], out[47], out[48], out[49], out[50], out[51], out[52], out[53], out[54], out[55],
+        out[56], out[57], out[58], out[59], out[60], out[61], out[62], out[63], out[64], out[65], out[66],
+        out[67], out[68], out[69],) = (_o1[0], _o1[1], _o1[2], _o1[3], _o1[4], _o1[5], _o1[6], _o1[7], _o1[8],
+        _o1[9], _o1[10], _o1[11], _o1[12], _o1[13], _o1[14], _o1[15], _o1[16], _o1[17], _o1[18], _o1[19],
+        _o1[20], _o1[21], _o1[22], _o1[23], _o1[24], _o1[25], _o1[26], _o1[27], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        _o1[34], _o1[35], _o1[36], _o1[37], _o1[38], _o1[39], _o1[40], _o1[41], _o1[42], _o1[43], _o1[44],
+        _o1[45], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, _o1[52], _o1[53], _o1[54], _o1[55], _o1[56], _o1[57], _o1[58],
+        _o1[59], _o1[60], _o1[61], _o1[62], _o1[63], _o1[64], _o1[65], _o1[66], _o1[67], _o1[68], _o1[69],)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -2478,18 +2628,22 @@ def iterative_report_apex_return_jacobian_zeroth_geyer_vs(x, p, out):
         return fail(out, _c0)
     # stance: Iterative stance map (Schwind and Koditschek, as printed)
     _x1 = carray(stack(4), 4)
-    put(_x1, (_o0[0], _o0[1], _o0[2], _o0[3]))
+    (_x1[0], _x1[1], _x1[2], _x1[3],) = (_o0[0], _o0[1], _o0[2], _o0[3],)
     _o1 = carray(stack(70), 70)
     _c1 = iterative_report_stance_jacobian_zeroth_geyer_vs(_x1, p, _o1)
     if _c1 != STATUS_OK:
         return fail(out, _c1)
     # the code shared between choices
     _a2 = carray(stack(47), 47)
-    put(_a2, (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55], _o1[62],
-        _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22], _o0[25],
-        _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12], _o0[16],
-        _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7], _o1[8],
-        _o1[9], _o0[4], _o1[1]))
+    (_a2[0], _a2[1], _a2[2], _a2[3], _a2[4], _a2[5], _a2[6], _a2[7], _a2[8], _a2[9], _a2[10], _a2[11],
+        _a2[12], _a2[13], _a2[14], _a2[15], _a2[16], _a2[17], _a2[18], _a2[19], _a2[20], _a2[21], _a2[22],
+        _a2[23], _a2[24], _a2[25], _a2[26], _a2[27], _a2[28], _a2[29], _a2[30], _a2[31], _a2[32], _a2[33],
+        _a2[34], _a2[35], _a2[36], _a2[37], _a2[38], _a2[39], _a2[40], _a2[41], _a2[42], _a2[43], _a2[44],
+        _a2[45], _a2[46],) = (_o0[27], _o0[26], _o0[29], _o0[28], _o1[56], _o1[57], _o1[53], _o1[54], _o1[55],
+        _o1[62], _o1[63], _o1[59], _o1[60], _o1[61], _o1[68], _o1[69], _o1[65], _o1[66], _o1[67], _o0[22],
+        _o0[25], _o0[24], _o1[20], _o1[21], _o1[17], _o1[18], _o1[19], _o0[11], _o0[10], _o0[13], _o0[12],
+        _o0[16], _o0[19], _o0[18], _o0[21], _o0[20], b_y_apex, direction, _o0[5], g_f, ground, _o1[6], _o1[7],
+        _o1[8], _o1[9], _o0[4], _o1[1],)
     _status = iterative_report_apex_return_jacobian_tail_063bb0(_a2, out)
     if _status == STATUS_OK and not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

@@ -6,9 +6,9 @@
 # Tools:     sympy 1.14.0, jinja2 3.1.6
 # Lines:     at most 110 characters (derive/wrap.py breaks longer statements inside their brackets)
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
-#   support.py sha256:192d8d7121590e49
+#   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
-#   geyer_vs.py sha256:26f78981a9f3779d
+#   geyer_vs.py sha256:083f4e79a9d597a8
 #   slip_model.py sha256:8dd852be8d841fbc
 # ----------------------------------------------------------------------------------------------
 """The model's kernels the runtime calls by name (the index's MODEL), as role kernels."""
@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import carray, njit
 
-from .support import fail, finite, put, stack
+from .support import fail, finite, stack
 from .flight import apex_to_touchdown, liftoff_to_apex
 from .geyer_vs import bottom_quartic
 from .slip_model import (cartesian_to_polar, max_step, polar_to_cartesian, stance_cartesian_rhs,
@@ -65,7 +65,8 @@ def apex_to_touchdown_entry(x, p, out):
     touchdown_q_thd = _c0[3]
     t_flight = _c0[4]
     foot_x = _c0[5]
-    put(out, (touchdown_q_r, touchdown_q_rd, touchdown_q_th, touchdown_q_thd, t_flight, foot_x))
+    (out[0], out[1], out[2], out[3], out[4], out[5],) = (touchdown_q_r, touchdown_q_rd, touchdown_q_th,
+        touchdown_q_thd, t_flight, foot_x,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -113,7 +114,7 @@ def liftoff_to_apex_entry(x, p, out):
     t_flight = _c0[2]
     dx_flight = _c0[3]
     apex_b_x = _c0[4]
-    put(out, (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x))
+    (out[0], out[1], out[2], out[3], out[4],) = (apex_b_y, apex_b_xd, t_flight, dx_flight, apex_b_x,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -157,7 +158,7 @@ def stance_polar_rhs_entry(x, p, out):
     d_q_rd = _c0[1]
     d_q_th = _c0[2]
     d_q_thd = _c0[3]
-    put(out, (d_q_r, d_q_rd, d_q_th, d_q_thd))
+    (out[0], out[1], out[2], out[3],) = (d_q_r, d_q_rd, d_q_th, d_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -201,7 +202,7 @@ def stance_cartesian_rhs_entry(x, p, out):
     d_b_xd = _c0[1]
     d_b_y = _c0[2]
     d_b_yd = _c0[3]
-    put(out, (d_b_x, d_b_xd, d_b_y, d_b_yd))
+    (out[0], out[1], out[2], out[3],) = (d_b_x, d_b_xd, d_b_y, d_b_yd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -239,7 +240,7 @@ def stance_energy_entry(x, p, out):
     # slip_model.stance_energy
     _c0 = stance_energy(q_r, q_rd, q_th, q_thd, m, l0, k, g_s)
     energy = _c0
-    put(out, (energy,))
+    (out[0],) = (energy,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -283,7 +284,7 @@ def polar_to_cartesian_entry(x, p, out):
     out_b_xd = _c0[1]
     out_b_y = _c0[2]
     out_b_yd = _c0[3]
-    put(out, (out_b_x, out_b_xd, out_b_y, out_b_yd))
+    (out[0], out[1], out[2], out[3],) = (out_b_x, out_b_xd, out_b_y, out_b_yd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -327,7 +328,7 @@ def cartesian_to_polar_entry(x, p, out):
     out_q_rd = _c0[1]
     out_q_th = _c0[2]
     out_q_thd = _c0[3]
-    put(out, (out_q_r, out_q_rd, out_q_th, out_q_thd))
+    (out[0], out[1], out[2], out[3],) = (out_q_r, out_q_rd, out_q_th, out_q_thd,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -363,7 +364,7 @@ def max_step_entry(x, p, out):
     # slip_model.max_step
     _c0 = max_step(m, l0, k, g_s)
     step = _c0
-    put(out, (step,))
+    (out[0],) = (step,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -400,7 +401,7 @@ def stance_time_limit_entry(x, p, out):
     # slip_model.stance_time_limit
     _c0 = stance_time_limit(m, l0, k_c, k_d, g_s)
     t_max = _c0
-    put(out, (t_max,))
+    (out[0],) = (t_max,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)
@@ -440,7 +441,7 @@ def bottom_quartic_entry(x, p, out):
     if _c0[1] != STATUS_OK:
         return fail(out, _c0[1])
     q_r_b = _c0[0]
-    put(out, (q_r_b,))
+    (out[0],) = (q_r_b,)
     # every output finite, or the inputs were far outside a physical range
     if not finite(out):
         return fail(out, STATUS_NUMERICAL_RANGE)

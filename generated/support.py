@@ -13,7 +13,6 @@ on a kernel's stack, a row's store and its checks.
   the kernel that writes it: the arguments and outputs a kernel passes through an array (a role
   kernel's ``x``, ``p`` and ``out``, a call with more than 16 of them; derive/lower.py) cost no
   allocation. Valid until that kernel returns; never returned or kept.
-- ``put(out, values)``: the tuple ``values`` into ``out[0], out[1], ...``.
 - ``fail(out, status)``: ``out`` all NaN; returns ``status`` (a failed row).
 - ``finite(out)``: every entry of ``out`` finite.
 """
@@ -37,13 +36,6 @@ def stack(typingctx, n):
         return cgutils.alloca_once(builder, context.get_value_type(types.float64), size=size)
 
     return types.CPointer(types.float64)(n), codegen
-
-
-@njit(cache=True, error_model="numpy")
-def put(out, values):
-    """``out[j] = values[j]`` for every entry of the tuple ``values``."""
-    for j in range(len(values)):
-        out[j] = values[j]
 
 
 @njit(cache=True, error_model="numpy")
