@@ -16,15 +16,22 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 from slipmaps.generated.status import Status
 
-__all__ = ["flat_columns", "status_columns", "to_arrow", "to_pandas"]
+__all__ = ["flat_columns", "status_columns", "status_names", "to_arrow", "to_pandas"]
 
-_NAMES = np.array([s.name for s in sorted(Status, key=int)], dtype=object)
+_CODES = {int(s): s.name for s in Status}
+#: The name of every code from 0 to the largest (a gap, if the codes had one, by its number).
+_TABLE = np.array([_CODES.get(i, str(i)) for i in range(max(_CODES) + 1)])
+
+
+def status_names(codes: np.ndarray) -> np.ndarray:
+    """The :class:`~slipmaps.Status` name of each code (a numpy string array of the codes' shape)."""
+    return _TABLE[np.asarray(codes, dtype=np.int64)]
 
 
 def status_columns(codes: np.ndarray, prefix: str = "status") -> dict[str, np.ndarray]:
     """``{prefix: names, prefix_code: codes}`` of int64 status codes (any shape, flattened)."""
     codes = np.asarray(codes, dtype=np.int64).reshape(-1)
-    return {prefix: _NAMES[codes], f"{prefix}_code": codes}
+    return {prefix: status_names(codes), f"{prefix}_code": codes}
 
 
 def flat_columns(

@@ -45,7 +45,7 @@ from pathlib import Path
 import numpy as np
 from slipmaps.generated.status import Status
 
-from ..api.frames import status_columns, to_pandas
+from ..api.frames import flat_columns, status_columns, to_pandas
 from ..api.index import get
 from ..api.progress import Bar
 from ..api.validate import POLAR_NAMES
@@ -259,8 +259,8 @@ class Run:
         n, i = len(self), self.index
         out = {"step": np.arange(n)}
         out |= {k: v[i, :n] for k, v in self.batch.values.items()}
-        for k, v in self.batch.states.items():
-            out |= {f"{k}_{q}": v[i, :n, j] for j, q in enumerate(POLAR_NAMES)}
+        states = {k: v[i, :n] for k, v in self.batch.states.items()}
+        out |= flat_columns(states, 1, {k: [f"{k}_{q}" for q in POLAR_NAMES] for k in states})
         for k in ("plan_status", "bottom_status"):
             out[k] = np.array([PLAN_NAMES[int(c)] for c in self.batch.codes[k][i, :n]], dtype=object)
         return out | status_columns(self.batch.codes["plant_status"][i, :n], "plant_status")

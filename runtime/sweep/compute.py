@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from slipmaps.generated.status import Status
 
+from ..api.frames import status_names
 from ..api.maps import apex_return_batch, stance_batch
 from .axes import KINDS
 from .spec import Sweep, slip_params
@@ -22,12 +23,6 @@ from .spec import Sweep, slip_params
 __all__ = ["Chunk", "compute", "compute_rows", "status_names"]
 
 _NAMES = {int(s): s.name for s in Status}
-
-
-def status_names(codes: np.ndarray) -> np.ndarray:
-    """The :class:`~slipmaps.Status` name of each code (a numpy string array)."""
-    table = np.array([_NAMES.get(i, str(i)) for i in range(max(_NAMES) + 1)])
-    return table[codes]
 
 
 @dataclass(frozen=True)
