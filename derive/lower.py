@@ -661,10 +661,28 @@ def _lower_reduce(ctx: _Ctx, rd: Reduce, idx: str) -> list[dict]:
     term = f"{rd.weights}[{{k}}]*{rd.array}[{{k}}]" if rd.weights else f"{rd.array}[{{k}}]"
     k = _node_index(ctx)
     nodes = [{"kind": "comment", "text": rd.comment}] if rd.comment else []
-    nodes.append(
-        {"kind": "reduce", "name": rd.name.name, "k": k, "count": to_code(rd.count), "term": term.format(k=k)}
-    )
+    sums = [{"name": rd.name.name, "term": term.format(k=k)}]
+    nodes.append({"kind": "reduce", "k": k, "count": to_code(rd.count), "sums": sums})
     return nodes
+
+
+def _fuse_reduces(nodes: list[dict]) -> list[dict]:
+    """Consecutive sums over the same nodes in one loop (a derivative kernel's sums come one per
+    direction: one loop instead of seven keeps numba's and LLVM's work per kernel down). A sum joins
+    the loop before it unless it reads one of that loop's sums."""
+    out: list[dict] = []
+    for n in nodes:
+        prev = out[-1] if out else None
+        fusable = prev is not None and prev["kind"] == n["kind"] == "reduce" and prev["count"] == n["count"]
+        if fusable:
+            names = {sm["name"] for sm in prev["sums"]}
+            k = re.compile(rf"\b{n['k']}\b")
+            renamed = [{"name": sm["name"], "term": k.sub(prev["k"], sm["term"])} for sm in n["sums"]]
+            if not any(names & set(_WORD.findall(sm["term"])) for sm in renamed):
+                prev["sums"] = prev["sums"] + renamed
+                continue
+        out.append(n)
+    return out
 
 
 def _compact_rows(nodes: list[dict]) -> int:
@@ -717,7 +735,7 @@ def _lower_steps(ctx: _Ctx, steps, prefix: str = "") -> list[dict]:
             nodes += _lower_reduce(ctx, step, idx)
         else:
             raise LoweringError(ctx.where(f"step {idx}: unknown step type {type(step).__name__}"))
-    return nodes
+    return _fuse_reduces(nodes)
 
 
 def _unpack(names: list[str], array: str, order) -> str:

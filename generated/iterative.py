@@ -233,7 +233,6 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
     # Picard passes on the node values (collocation in u)
     for _j1013 in range(int(nq)):
         Q[_j1013] = Q0[_j1013]
-    for _j1013 in range(int(nq)):
         P[_j1013] = P0[_j1013]
     _D = -guess_q_r + q_r
     _passes = 0.0
@@ -279,11 +278,10 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
+        _wfp = 0.0
         for _j1006 in range(int(nq)):
             _wfq += w[_j1006]*fq[_j1006]
-        _wfp = 0.0
-        for _j1007 in range(int(nq)):
-            _wfp += w[_j1007]*fp[_j1007]
+            _wfp += w[_j1006]*fp[_j1006]
         # F_r minus its spring term
         for _j1008 in range(int(nq)):
             _F = F[_j1008]
@@ -295,10 +293,9 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         # the next iterate at the nodes
         for _j1011 in range(int(nq)):
             _Sfq = 0.0
-            for _j1012 in range(int(nq)):
-                _Sfq += S[_j1011, _j1012]*fq[_j1012]
             _Sfp = 0.0
             for _j1012 in range(int(nq)):
+                _Sfq += S[_j1011, _j1012]*fq[_j1012]
                 _Sfp += S[_j1011, _j1012]*fp[_j1012]
             Q_next[_j1011] = -_Sfq + _wfq + q_th
             P_next[_j1011] = -_Sfp + _wfp + m*q_r**2*q_thd
@@ -313,21 +310,18 @@ def schwind_compression(q_r, q_rd, q_th, q_thd, m, l0, k_c, g_s, guess_q_r, gues
         for _j1013 in range(int(nq)):
             _conv0 = _conv0 and abs(Q_next[_j1013] - Q[_j1013]) <= tol*(1.0)
             Q[_j1013] = Q_next[_j1013]
-        for _j1013 in range(int(nq)):
             _conv0 = (_conv0 and abs(P_next[_j1013] - P[_j1013]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
             P[_j1013] = P_next[_j1013]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
+    _q_end = 0.0
+    _p_end = 0.0
     for _j1014 in range(int(nq)):
         _t_end += w[_j1014]*ft[_j1014]
-    _q_end = 0.0
-    for _j1015 in range(int(nq)):
-        _q_end += w[_j1015]*fq[_j1015]
-    _p_end = 0.0
-    for _j1016 in range(int(nq)):
-        _p_end += w[_j1016]*fp[_j1016]
+        _q_end += w[_j1014]*fq[_j1014]
+        _p_end += w[_j1014]*fp[_j1014]
     # bottom state
     _x6 = -_D + q_r
     t_half = _t_end
@@ -419,7 +413,6 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
     # Picard passes on the node values (collocation in u)
     for _j1010 in range(int(nq)):
         Q[_j1010] = Q0[_j1010]
-    for _j1010 in range(int(nq)):
         P[_j1010] = P0[_j1010]
     _D = -q_r + q_r_lo
     _passes = 0.0
@@ -465,18 +458,16 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
+        _wfp = 0.0
         for _j1006 in range(int(nq)):
             _wfq += w[_j1006]*fq[_j1006]
-        _wfp = 0.0
-        for _j1007 in range(int(nq)):
-            _wfp += w[_j1007]*fp[_j1007]
+            _wfp += w[_j1006]*fp[_j1006]
         # the next iterate at the nodes
         for _j1008 in range(int(nq)):
             _Sfq = 0.0
-            for _j1009 in range(int(nq)):
-                _Sfq += S[_j1008, _j1009]*fq[_j1009]
             _Sfp = 0.0
             for _j1009 in range(int(nq)):
+                _Sfq += S[_j1008, _j1009]*fq[_j1009]
                 _Sfp += S[_j1008, _j1009]*fp[_j1009]
             Q_next[_j1008] = _Sfq + q_th
             P_next[_j1008] = _Sfp + m*q_r**2*q_thd
@@ -488,24 +479,20 @@ def schwind_decompression(q_r, q_rd, q_th, q_thd, m, l0, k_d, g_s, q_r_lo, guess
         for _j1010 in range(int(nq)):
             _conv0 = _conv0 and abs(Q_next[_j1010] - Q[_j1010]) <= tol*(1.0)
             Q[_j1010] = Q_next[_j1010]
-        for _j1010 in range(int(nq)):
             _conv0 = (_conv0 and abs(P_next[_j1010] - P[_j1010]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
             P[_j1010] = P_next[_j1010]
         _D = _n0_0
         _passes += 1.0
     _t_end = 0.0
+    _q_end = 0.0
+    _p_end = 0.0
+    _work = 0.0
     for _j1011 in range(int(nq)):
         _t_end += w[_j1011]*ft[_j1011]
-    _q_end = 0.0
-    for _j1012 in range(int(nq)):
-        _q_end += w[_j1012]*fq[_j1012]
-    _p_end = 0.0
-    for _j1013 in range(int(nq)):
-        _p_end += w[_j1013]*fp[_j1013]
-    _work = 0.0
-    for _j1014 in range(int(nq)):
-        _work += w1[_j1014]*F[_j1014]
+        _q_end += w[_j1011]*fq[_j1011]
+        _p_end += w[_j1011]*fp[_j1011]
+        _work += w1[_j1011]*F[_j1011]
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return _NAN6 + (STATUS_NO_LIFTOFF,)

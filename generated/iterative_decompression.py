@@ -8,7 +8,7 @@
 # Depends on (content hashes; a change here re-keys numba's cache of this file):
 #   support.py sha256:e0347acdae98a5cd
 #   flight.py sha256:c8466d021d7dd8ec
-#   iterative.py sha256:363c44dec9e43e11
+#   iterative.py sha256:5d15c297562fa6ba
 # ----------------------------------------------------------------------------------------------
 """Iterative decompression half (bottom to liftoff, k_d; converging form) (report section 5.2.2): bottom ->
 liftoff."""

@@ -374,31 +374,18 @@ def schwind_compression_jvp6_4eaacb(_a, out):
     # Picard passes on the node values (collocation in u)
     for _j1031 in range(int(nq)):
         Q[_j1031] = Q0[_j1031]
-    for _j1031 in range(int(nq)):
         P[_j1031] = P0[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__0[_j1031] = d_Q0__0[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__1[_j1031] = d_Q0__1[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__2[_j1031] = d_Q0__2[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__3[_j1031] = d_Q0__3[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__4[_j1031] = d_Q0__4[_j1031]
-    for _j1031 in range(int(nq)):
         d_Q__5[_j1031] = d_Q0__5[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__0[_j1031] = d_P0__0[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__1[_j1031] = d_P0__1[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__2[_j1031] = d_P0__2[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__3[_j1031] = d_P0__3[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__4[_j1031] = d_P0__4[_j1031]
-    for _j1031 in range(int(nq)):
         d_P__5[_j1031] = d_P0__5[_j1031]
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
@@ -494,25 +481,19 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             _d_sigma__4 = d_sigma__4[_j1004]
             _d_sigma__5 = d_sigma__5[_j1004]
             _S1F = 0.0
-            for _j1005 in range(int(nq)):
-                _S1F += S1[_j1004, _j1005]*F[_j1005]
             _d_S1F__0 = 0.0
-            for _j1005 in range(int(nq)):
-                _d_S1F__0 += S1[_j1004, _j1005]*d_F__0[_j1005]
             _d_S1F__1 = 0.0
-            for _j1005 in range(int(nq)):
-                _d_S1F__1 += S1[_j1004, _j1005]*d_F__1[_j1005]
             _d_S1F__2 = 0.0
-            for _j1005 in range(int(nq)):
-                _d_S1F__2 += S1[_j1004, _j1005]*d_F__2[_j1005]
             _d_S1F__3 = 0.0
-            for _j1005 in range(int(nq)):
-                _d_S1F__3 += S1[_j1004, _j1005]*d_F__3[_j1005]
             _d_S1F__4 = 0.0
-            for _j1005 in range(int(nq)):
-                _d_S1F__4 += S1[_j1004, _j1005]*d_F__4[_j1005]
             _d_S1F__5 = 0.0
             for _j1005 in range(int(nq)):
+                _S1F += S1[_j1004, _j1005]*F[_j1005]
+                _d_S1F__0 += S1[_j1004, _j1005]*d_F__0[_j1005]
+                _d_S1F__1 += S1[_j1004, _j1005]*d_F__1[_j1005]
+                _d_S1F__2 += S1[_j1004, _j1005]*d_F__2[_j1005]
+                _d_S1F__3 += S1[_j1004, _j1005]*d_F__3[_j1005]
+                _d_S1F__4 += S1[_j1004, _j1005]*d_F__4[_j1005]
                 _d_S1F__5 += S1[_j1004, _j1005]*d_F__5[_j1005]
             _x8 = _u**-2
             _x9 = _S1F*_x8
@@ -600,47 +581,34 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         if _conv0 or _it0 == _last0:
             break
         _wfq = 0.0
+        _d_wfq__0 = 0.0
+        _d_wfq__1 = 0.0
+        _d_wfq__2 = 0.0
+        _d_wfq__3 = 0.0
+        _d_wfq__4 = 0.0
+        _d_wfq__5 = 0.0
+        _wfp = 0.0
+        _d_wfp__0 = 0.0
+        _d_wfp__1 = 0.0
+        _d_wfp__2 = 0.0
+        _d_wfp__3 = 0.0
+        _d_wfp__4 = 0.0
+        _d_wfp__5 = 0.0
         for _j1006 in range(int(nq)):
             _wfq += w[_j1006]*fq[_j1006]
-        _d_wfq__0 = 0.0
-        for _j1007 in range(int(nq)):
-            _d_wfq__0 += w[_j1007]*d_fq__0[_j1007]
-        _d_wfq__1 = 0.0
-        for _j1008 in range(int(nq)):
-            _d_wfq__1 += w[_j1008]*d_fq__1[_j1008]
-        _d_wfq__2 = 0.0
-        for _j1009 in range(int(nq)):
-            _d_wfq__2 += w[_j1009]*d_fq__2[_j1009]
-        _d_wfq__3 = 0.0
-        for _j1010 in range(int(nq)):
-            _d_wfq__3 += w[_j1010]*d_fq__3[_j1010]
-        _d_wfq__4 = 0.0
-        for _j1011 in range(int(nq)):
-            _d_wfq__4 += w[_j1011]*d_fq__4[_j1011]
-        _d_wfq__5 = 0.0
-        for _j1012 in range(int(nq)):
-            _d_wfq__5 += w[_j1012]*d_fq__5[_j1012]
-        _wfp = 0.0
-        for _j1013 in range(int(nq)):
-            _wfp += w[_j1013]*fp[_j1013]
-        _d_wfp__0 = 0.0
-        for _j1014 in range(int(nq)):
-            _d_wfp__0 += w[_j1014]*d_fp__0[_j1014]
-        _d_wfp__1 = 0.0
-        for _j1015 in range(int(nq)):
-            _d_wfp__1 += w[_j1015]*d_fp__1[_j1015]
-        _d_wfp__2 = 0.0
-        for _j1016 in range(int(nq)):
-            _d_wfp__2 += w[_j1016]*d_fp__2[_j1016]
-        _d_wfp__3 = 0.0
-        for _j1017 in range(int(nq)):
-            _d_wfp__3 += w[_j1017]*d_fp__3[_j1017]
-        _d_wfp__4 = 0.0
-        for _j1018 in range(int(nq)):
-            _d_wfp__4 += w[_j1018]*d_fp__4[_j1018]
-        _d_wfp__5 = 0.0
-        for _j1019 in range(int(nq)):
-            _d_wfp__5 += w[_j1019]*d_fp__5[_j1019]
+            _d_wfq__0 += w[_j1006]*d_fq__0[_j1006]
+            _d_wfq__1 += w[_j1006]*d_fq__1[_j1006]
+            _d_wfq__2 += w[_j1006]*d_fq__2[_j1006]
+            _d_wfq__3 += w[_j1006]*d_fq__3[_j1006]
+            _d_wfq__4 += w[_j1006]*d_fq__4[_j1006]
+            _d_wfq__5 += w[_j1006]*d_fq__5[_j1006]
+            _wfp += w[_j1006]*fp[_j1006]
+            _d_wfp__0 += w[_j1006]*d_fp__0[_j1006]
+            _d_wfp__1 += w[_j1006]*d_fp__1[_j1006]
+            _d_wfp__2 += w[_j1006]*d_fp__2[_j1006]
+            _d_wfp__3 += w[_j1006]*d_fp__3[_j1006]
+            _d_wfp__4 += w[_j1006]*d_fp__4[_j1006]
+            _d_wfp__5 += w[_j1006]*d_fp__5[_j1006]
         # F_r minus its spring term
         for _j1020 in range(int(nq)):
             _F = F[_j1020]
@@ -665,69 +633,50 @@ def schwind_compression_jvp6_4eaacb(_a, out):
             d_G__4[_j1020] = _d_F__4 + _d_sigma__4*k_c + _sigma - l0
             d_G__5[_j1020] = _d_F__5 + _d_sigma__5*k_c
         _rbar = 0.0
+        _d_rbar__0 = 0.0
+        _d_rbar__1 = 0.0
+        _d_rbar__2 = 0.0
+        _d_rbar__3 = 0.0
+        _d_rbar__4 = 0.0
+        _d_rbar__5 = 0.0
         for _j1022 in range(int(nq)):
             _rbar += w1[_j1022]*G[_j1022]
-        _d_rbar__0 = 0.0
-        for _j1023 in range(int(nq)):
-            _d_rbar__0 += w1[_j1023]*d_G__0[_j1023]
-        _d_rbar__1 = 0.0
-        for _j1024 in range(int(nq)):
-            _d_rbar__1 += w1[_j1024]*d_G__1[_j1024]
-        _d_rbar__2 = 0.0
-        for _j1025 in range(int(nq)):
-            _d_rbar__2 += w1[_j1025]*d_G__2[_j1025]
-        _d_rbar__3 = 0.0
-        for _j1026 in range(int(nq)):
-            _d_rbar__3 += w1[_j1026]*d_G__3[_j1026]
-        _d_rbar__4 = 0.0
-        for _j1027 in range(int(nq)):
-            _d_rbar__4 += w1[_j1027]*d_G__4[_j1027]
-        _d_rbar__5 = 0.0
-        for _j1028 in range(int(nq)):
-            _d_rbar__5 += w1[_j1028]*d_G__5[_j1028]
+            _d_rbar__0 += w1[_j1022]*d_G__0[_j1022]
+            _d_rbar__1 += w1[_j1022]*d_G__1[_j1022]
+            _d_rbar__2 += w1[_j1022]*d_G__2[_j1022]
+            _d_rbar__3 += w1[_j1022]*d_G__3[_j1022]
+            _d_rbar__4 += w1[_j1022]*d_G__4[_j1022]
+            _d_rbar__5 += w1[_j1022]*d_G__5[_j1022]
         # the next iterate at the nodes
         for _j1029 in range(int(nq)):
             _Sfq = 0.0
-            for _j1030 in range(int(nq)):
-                _Sfq += S[_j1029, _j1030]*fq[_j1030]
             _Sfp = 0.0
-            for _j1030 in range(int(nq)):
-                _Sfp += S[_j1029, _j1030]*fp[_j1030]
             _d_Sfq__0 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__0 += S[_j1029, _j1030]*d_fq__0[_j1030]
             _d_Sfq__1 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__1 += S[_j1029, _j1030]*d_fq__1[_j1030]
             _d_Sfq__2 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__2 += S[_j1029, _j1030]*d_fq__2[_j1030]
             _d_Sfq__3 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__3 += S[_j1029, _j1030]*d_fq__3[_j1030]
             _d_Sfq__4 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__4 += S[_j1029, _j1030]*d_fq__4[_j1030]
             _d_Sfq__5 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfq__5 += S[_j1029, _j1030]*d_fq__5[_j1030]
             _d_Sfp__0 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfp__0 += S[_j1029, _j1030]*d_fp__0[_j1030]
             _d_Sfp__1 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfp__1 += S[_j1029, _j1030]*d_fp__1[_j1030]
             _d_Sfp__2 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfp__2 += S[_j1029, _j1030]*d_fp__2[_j1030]
             _d_Sfp__3 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfp__3 += S[_j1029, _j1030]*d_fp__3[_j1030]
             _d_Sfp__4 = 0.0
-            for _j1030 in range(int(nq)):
-                _d_Sfp__4 += S[_j1029, _j1030]*d_fp__4[_j1030]
             _d_Sfp__5 = 0.0
             for _j1030 in range(int(nq)):
+                _Sfq += S[_j1029, _j1030]*fq[_j1030]
+                _Sfp += S[_j1029, _j1030]*fp[_j1030]
+                _d_Sfq__0 += S[_j1029, _j1030]*d_fq__0[_j1030]
+                _d_Sfq__1 += S[_j1029, _j1030]*d_fq__1[_j1030]
+                _d_Sfq__2 += S[_j1029, _j1030]*d_fq__2[_j1030]
+                _d_Sfq__3 += S[_j1029, _j1030]*d_fq__3[_j1030]
+                _d_Sfq__4 += S[_j1029, _j1030]*d_fq__4[_j1030]
+                _d_Sfq__5 += S[_j1029, _j1030]*d_fq__5[_j1030]
+                _d_Sfp__0 += S[_j1029, _j1030]*d_fp__0[_j1030]
+                _d_Sfp__1 += S[_j1029, _j1030]*d_fp__1[_j1030]
+                _d_Sfp__2 += S[_j1029, _j1030]*d_fp__2[_j1030]
+                _d_Sfp__3 += S[_j1029, _j1030]*d_fp__3[_j1030]
+                _d_Sfp__4 += S[_j1029, _j1030]*d_fp__4[_j1030]
                 _d_Sfp__5 += S[_j1029, _j1030]*d_fp__5[_j1030]
             Q_next[_j1029] = -_Sfq + _wfq + q_th
             P_next[_j1029] = -_Sfp + _wfp + m*q_r**2*q_thd
@@ -771,101 +720,68 @@ def schwind_compression_jvp6_4eaacb(_a, out):
         for _j1031 in range(int(nq)):
             _conv0 = _conv0 and abs(Q_next[_j1031] - Q[_j1031]) <= tol*(1.0)
             Q[_j1031] = Q_next[_j1031]
-        for _j1031 in range(int(nq)):
             _conv0 = (_conv0 and abs(P_next[_j1031] - P[_j1031]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
             P[_j1031] = P_next[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__0[_j1031] = d_Q_next__0[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__1[_j1031] = d_Q_next__1[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__2[_j1031] = d_Q_next__2[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__3[_j1031] = d_Q_next__3[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__4[_j1031] = d_Q_next__4[_j1031]
-        for _j1031 in range(int(nq)):
             d_Q__5[_j1031] = d_Q_next__5[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__0[_j1031] = d_P_next__0[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__1[_j1031] = d_P_next__1[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__2[_j1031] = d_P_next__2[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__3[_j1031] = d_P_next__3[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__4[_j1031] = d_P_next__4[_j1031]
-        for _j1031 in range(int(nq)):
             d_P__5[_j1031] = d_P_next__5[_j1031]
         _pkn0 = (_D__next, _d_D_next__0, _d_D_next__1, _d_D_next__2, _d_D_next__3, _d_D_next__4, _d_D_next__5,
             )
         _pk0 = _pkn0
         _passes += 1.0
     _t_end = 0.0
+    _d_t_end__0 = 0.0
+    _d_t_end__1 = 0.0
+    _d_t_end__2 = 0.0
+    _d_t_end__3 = 0.0
+    _d_t_end__4 = 0.0
+    _d_t_end__5 = 0.0
+    _q_end = 0.0
+    _d_q_end__0 = 0.0
+    _d_q_end__1 = 0.0
+    _d_q_end__2 = 0.0
+    _d_q_end__3 = 0.0
+    _d_q_end__4 = 0.0
+    _d_q_end__5 = 0.0
+    _p_end = 0.0
+    _d_p_end__0 = 0.0
+    _d_p_end__1 = 0.0
+    _d_p_end__2 = 0.0
+    _d_p_end__3 = 0.0
+    _d_p_end__4 = 0.0
+    _d_p_end__5 = 0.0
     for _j1032 in range(int(nq)):
         _t_end += w[_j1032]*ft[_j1032]
-    _d_t_end__0 = 0.0
-    for _j1033 in range(int(nq)):
-        _d_t_end__0 += w[_j1033]*d_ft__0[_j1033]
-    _d_t_end__1 = 0.0
-    for _j1034 in range(int(nq)):
-        _d_t_end__1 += w[_j1034]*d_ft__1[_j1034]
-    _d_t_end__2 = 0.0
-    for _j1035 in range(int(nq)):
-        _d_t_end__2 += w[_j1035]*d_ft__2[_j1035]
-    _d_t_end__3 = 0.0
-    for _j1036 in range(int(nq)):
-        _d_t_end__3 += w[_j1036]*d_ft__3[_j1036]
-    _d_t_end__4 = 0.0
-    for _j1037 in range(int(nq)):
-        _d_t_end__4 += w[_j1037]*d_ft__4[_j1037]
-    _d_t_end__5 = 0.0
-    for _j1038 in range(int(nq)):
-        _d_t_end__5 += w[_j1038]*d_ft__5[_j1038]
-    _q_end = 0.0
-    for _j1039 in range(int(nq)):
-        _q_end += w[_j1039]*fq[_j1039]
-    _d_q_end__0 = 0.0
-    for _j1040 in range(int(nq)):
-        _d_q_end__0 += w[_j1040]*d_fq__0[_j1040]
-    _d_q_end__1 = 0.0
-    for _j1041 in range(int(nq)):
-        _d_q_end__1 += w[_j1041]*d_fq__1[_j1041]
-    _d_q_end__2 = 0.0
-    for _j1042 in range(int(nq)):
-        _d_q_end__2 += w[_j1042]*d_fq__2[_j1042]
-    _d_q_end__3 = 0.0
-    for _j1043 in range(int(nq)):
-        _d_q_end__3 += w[_j1043]*d_fq__3[_j1043]
-    _d_q_end__4 = 0.0
-    for _j1044 in range(int(nq)):
-        _d_q_end__4 += w[_j1044]*d_fq__4[_j1044]
-    _d_q_end__5 = 0.0
-    for _j1045 in range(int(nq)):
-        _d_q_end__5 += w[_j1045]*d_fq__5[_j1045]
-    _p_end = 0.0
-    for _j1046 in range(int(nq)):
-        _p_end += w[_j1046]*fp[_j1046]
-    _d_p_end__0 = 0.0
-    for _j1047 in range(int(nq)):
-        _d_p_end__0 += w[_j1047]*d_fp__0[_j1047]
-    _d_p_end__1 = 0.0
-    for _j1048 in range(int(nq)):
-        _d_p_end__1 += w[_j1048]*d_fp__1[_j1048]
-    _d_p_end__2 = 0.0
-    for _j1049 in range(int(nq)):
-        _d_p_end__2 += w[_j1049]*d_fp__2[_j1049]
-    _d_p_end__3 = 0.0
-    for _j1050 in range(int(nq)):
-        _d_p_end__3 += w[_j1050]*d_fp__3[_j1050]
-    _d_p_end__4 = 0.0
-    for _j1051 in range(int(nq)):
-        _d_p_end__4 += w[_j1051]*d_fp__4[_j1051]
-    _d_p_end__5 = 0.0
-    for _j1052 in range(int(nq)):
-        _d_p_end__5 += w[_j1052]*d_fp__5[_j1052]
+        _d_t_end__0 += w[_j1032]*d_ft__0[_j1032]
+        _d_t_end__1 += w[_j1032]*d_ft__1[_j1032]
+        _d_t_end__2 += w[_j1032]*d_ft__2[_j1032]
+        _d_t_end__3 += w[_j1032]*d_ft__3[_j1032]
+        _d_t_end__4 += w[_j1032]*d_ft__4[_j1032]
+        _d_t_end__5 += w[_j1032]*d_ft__5[_j1032]
+        _q_end += w[_j1032]*fq[_j1032]
+        _d_q_end__0 += w[_j1032]*d_fq__0[_j1032]
+        _d_q_end__1 += w[_j1032]*d_fq__1[_j1032]
+        _d_q_end__2 += w[_j1032]*d_fq__2[_j1032]
+        _d_q_end__3 += w[_j1032]*d_fq__3[_j1032]
+        _d_q_end__4 += w[_j1032]*d_fq__4[_j1032]
+        _d_q_end__5 += w[_j1032]*d_fq__5[_j1032]
+        _p_end += w[_j1032]*fp[_j1032]
+        _d_p_end__0 += w[_j1032]*d_fp__0[_j1032]
+        _d_p_end__1 += w[_j1032]*d_fp__1[_j1032]
+        _d_p_end__2 += w[_j1032]*d_fp__2[_j1032]
+        _d_p_end__3 += w[_j1032]*d_fp__3[_j1032]
+        _d_p_end__4 += w[_j1032]*d_fp__4[_j1032]
+        _d_p_end__5 += w[_j1032]*d_fp__5[_j1032]
     # bottom state
     t_half = _t_end
     end_q_th = _q_end + q_th
@@ -1043,31 +959,18 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
     # Picard passes on the node values (collocation in u)
     for _j1022 in range(int(nq)):
         Q[_j1022] = Q0[_j1022]
-    for _j1022 in range(int(nq)):
         P[_j1022] = P0[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__q_r[_j1022] = d_Q0__q_r[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__q_th[_j1022] = d_Q0__q_th[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__q_thd[_j1022] = d_Q0__q_thd[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__k_d[_j1022] = d_Q0__k_d[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__guess_q_th[_j1022] = d_Q0__guess_q_th[_j1022]
-    for _j1022 in range(int(nq)):
         d_Q__guess_q_thd[_j1022] = d_Q0__guess_q_thd[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__q_r[_j1022] = d_P0__q_r[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__q_th[_j1022] = d_P0__q_th[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__q_thd[_j1022] = d_P0__q_thd[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__k_d[_j1022] = d_P0__k_d[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__guess_q_th[_j1022] = d_P0__guess_q_th[_j1022]
-    for _j1022 in range(int(nq)):
         d_P__guess_q_thd[_j1022] = d_P0__guess_q_thd[_j1022]
     # the loop's variables in one tuple, unpacked at the top of every pass, the final one
     # included (its values are visible after the loop)
@@ -1164,25 +1067,19 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
             _d_sigma__guess_q_th = d_sigma__guess_q_th[_j1018]
             _d_sigma__guess_q_thd = d_sigma__guess_q_thd[_j1018]
             _S1F = 0.0
-            for _j1019 in range(int(nq)):
-                _S1F += S1[_j1018, _j1019]*F[_j1019]
             _d_S1F__q_r = 0.0
-            for _j1019 in range(int(nq)):
-                _d_S1F__q_r += S1[_j1018, _j1019]*d_F__q_r[_j1019]
             _d_S1F__q_th = 0.0
-            for _j1019 in range(int(nq)):
-                _d_S1F__q_th += S1[_j1018, _j1019]*d_F__q_th[_j1019]
             _d_S1F__q_thd = 0.0
-            for _j1019 in range(int(nq)):
-                _d_S1F__q_thd += S1[_j1018, _j1019]*d_F__q_thd[_j1019]
             _d_S1F__k_d = 0.0
-            for _j1019 in range(int(nq)):
-                _d_S1F__k_d += S1[_j1018, _j1019]*d_F__k_d[_j1019]
             _d_S1F__guess_q_th = 0.0
-            for _j1019 in range(int(nq)):
-                _d_S1F__guess_q_th += S1[_j1018, _j1019]*d_F__guess_q_th[_j1019]
             _d_S1F__guess_q_thd = 0.0
             for _j1019 in range(int(nq)):
+                _S1F += S1[_j1018, _j1019]*F[_j1019]
+                _d_S1F__q_r += S1[_j1018, _j1019]*d_F__q_r[_j1019]
+                _d_S1F__q_th += S1[_j1018, _j1019]*d_F__q_th[_j1019]
+                _d_S1F__q_thd += S1[_j1018, _j1019]*d_F__q_thd[_j1019]
+                _d_S1F__k_d += S1[_j1018, _j1019]*d_F__k_d[_j1019]
+                _d_S1F__guess_q_th += S1[_j1018, _j1019]*d_F__guess_q_th[_j1019]
                 _d_S1F__guess_q_thd += S1[_j1018, _j1019]*d_F__guess_q_thd[_j1019]
             _x8 = _u**-2
             _x9 = _S1F*_x8
@@ -1280,46 +1177,33 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
         # the next iterate at the nodes
         for _j1020 in range(int(nq)):
             _Sfq = 0.0
-            for _j1021 in range(int(nq)):
-                _Sfq += S[_j1020, _j1021]*fq[_j1021]
             _Sfp = 0.0
-            for _j1021 in range(int(nq)):
-                _Sfp += S[_j1020, _j1021]*fp[_j1021]
             _d_Sfq__q_r = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__q_r += S[_j1020, _j1021]*d_fq__q_r[_j1021]
             _d_Sfq__q_th = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__q_th += S[_j1020, _j1021]*d_fq__q_th[_j1021]
             _d_Sfq__q_thd = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__q_thd += S[_j1020, _j1021]*d_fq__q_thd[_j1021]
             _d_Sfq__k_d = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__k_d += S[_j1020, _j1021]*d_fq__k_d[_j1021]
             _d_Sfq__guess_q_th = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__guess_q_th += S[_j1020, _j1021]*d_fq__guess_q_th[_j1021]
             _d_Sfq__guess_q_thd = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfq__guess_q_thd += S[_j1020, _j1021]*d_fq__guess_q_thd[_j1021]
             _d_Sfp__q_r = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfp__q_r += S[_j1020, _j1021]*d_fp__q_r[_j1021]
             _d_Sfp__q_th = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfp__q_th += S[_j1020, _j1021]*d_fp__q_th[_j1021]
             _d_Sfp__q_thd = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfp__q_thd += S[_j1020, _j1021]*d_fp__q_thd[_j1021]
             _d_Sfp__k_d = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfp__k_d += S[_j1020, _j1021]*d_fp__k_d[_j1021]
             _d_Sfp__guess_q_th = 0.0
-            for _j1021 in range(int(nq)):
-                _d_Sfp__guess_q_th += S[_j1020, _j1021]*d_fp__guess_q_th[_j1021]
             _d_Sfp__guess_q_thd = 0.0
             for _j1021 in range(int(nq)):
+                _Sfq += S[_j1020, _j1021]*fq[_j1021]
+                _Sfp += S[_j1020, _j1021]*fp[_j1021]
+                _d_Sfq__q_r += S[_j1020, _j1021]*d_fq__q_r[_j1021]
+                _d_Sfq__q_th += S[_j1020, _j1021]*d_fq__q_th[_j1021]
+                _d_Sfq__q_thd += S[_j1020, _j1021]*d_fq__q_thd[_j1021]
+                _d_Sfq__k_d += S[_j1020, _j1021]*d_fq__k_d[_j1021]
+                _d_Sfq__guess_q_th += S[_j1020, _j1021]*d_fq__guess_q_th[_j1021]
+                _d_Sfq__guess_q_thd += S[_j1020, _j1021]*d_fq__guess_q_thd[_j1021]
+                _d_Sfp__q_r += S[_j1020, _j1021]*d_fp__q_r[_j1021]
+                _d_Sfp__q_th += S[_j1020, _j1021]*d_fp__q_th[_j1021]
+                _d_Sfp__q_thd += S[_j1020, _j1021]*d_fp__q_thd[_j1021]
+                _d_Sfp__k_d += S[_j1020, _j1021]*d_fp__k_d[_j1021]
+                _d_Sfp__guess_q_th += S[_j1020, _j1021]*d_fp__guess_q_th[_j1021]
                 _d_Sfp__guess_q_thd += S[_j1020, _j1021]*d_fp__guess_q_thd[_j1021]
             Q_next[_j1020] = _Sfq + q_th
             P_next[_j1020] = _Sfp + m*q_r**2*q_thd
@@ -1350,121 +1234,81 @@ def schwind_decompression_jac_q_r_q_th_q_thd_k_d_guess_q_th_guess_q_thd(q_r, q_r
         for _j1022 in range(int(nq)):
             _conv0 = _conv0 and abs(Q_next[_j1022] - Q[_j1022]) <= tol*(1.0)
             Q[_j1022] = Q_next[_j1022]
-        for _j1022 in range(int(nq)):
             _conv0 = (_conv0 and abs(P_next[_j1022] - P[_j1022]) <= tol*(math.sqrt(g_s)*(l0*math.sqrt(l0))*m
                 + m*q_r**2*abs(q_thd)))
             P[_j1022] = P_next[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__q_r[_j1022] = d_Q_next__q_r[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__q_th[_j1022] = d_Q_next__q_th[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__q_thd[_j1022] = d_Q_next__q_thd[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__k_d[_j1022] = d_Q_next__k_d[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__guess_q_th[_j1022] = d_Q_next__guess_q_th[_j1022]
-        for _j1022 in range(int(nq)):
             d_Q__guess_q_thd[_j1022] = d_Q_next__guess_q_thd[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__q_r[_j1022] = d_P_next__q_r[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__q_th[_j1022] = d_P_next__q_th[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__q_thd[_j1022] = d_P_next__q_thd[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__k_d[_j1022] = d_P_next__k_d[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__guess_q_th[_j1022] = d_P_next__guess_q_th[_j1022]
-        for _j1022 in range(int(nq)):
             d_P__guess_q_thd[_j1022] = d_P_next__guess_q_thd[_j1022]
         _pkn0 = (_D__next, _n0_1, _n0_2, _n0_3, _n0_4, _n0_5, _n0_6, )
         _pk0 = _pkn0
         _passes += 1.0
     _t_end = 0.0
+    _d_t_end__q_r = 0.0
+    _d_t_end__q_th = 0.0
+    _d_t_end__q_thd = 0.0
+    _d_t_end__k_d = 0.0
+    _d_t_end__guess_q_th = 0.0
+    _d_t_end__guess_q_thd = 0.0
+    _q_end = 0.0
+    _d_q_end__q_r = 0.0
+    _d_q_end__q_th = 0.0
+    _d_q_end__q_thd = 0.0
+    _d_q_end__k_d = 0.0
+    _d_q_end__guess_q_th = 0.0
+    _d_q_end__guess_q_thd = 0.0
+    _p_end = 0.0
+    _d_p_end__q_r = 0.0
+    _d_p_end__q_th = 0.0
+    _d_p_end__q_thd = 0.0
+    _d_p_end__k_d = 0.0
+    _d_p_end__guess_q_th = 0.0
+    _d_p_end__guess_q_thd = 0.0
+    _work = 0.0
+    _d_work__q_r = 0.0
+    _d_work__q_th = 0.0
+    _d_work__q_thd = 0.0
+    _d_work__k_d = 0.0
+    _d_work__guess_q_th = 0.0
+    _d_work__guess_q_thd = 0.0
     for _j1023 in range(int(nq)):
         _t_end += w[_j1023]*ft[_j1023]
-    _d_t_end__q_r = 0.0
-    for _j1024 in range(int(nq)):
-        _d_t_end__q_r += w[_j1024]*d_ft__q_r[_j1024]
-    _d_t_end__q_th = 0.0
-    for _j1025 in range(int(nq)):
-        _d_t_end__q_th += w[_j1025]*d_ft__q_th[_j1025]
-    _d_t_end__q_thd = 0.0
-    for _j1026 in range(int(nq)):
-        _d_t_end__q_thd += w[_j1026]*d_ft__q_thd[_j1026]
-    _d_t_end__k_d = 0.0
-    for _j1027 in range(int(nq)):
-        _d_t_end__k_d += w[_j1027]*d_ft__k_d[_j1027]
-    _d_t_end__guess_q_th = 0.0
-    for _j1028 in range(int(nq)):
-        _d_t_end__guess_q_th += w[_j1028]*d_ft__guess_q_th[_j1028]
-    _d_t_end__guess_q_thd = 0.0
-    for _j1029 in range(int(nq)):
-        _d_t_end__guess_q_thd += w[_j1029]*d_ft__guess_q_thd[_j1029]
-    _q_end = 0.0
-    for _j1030 in range(int(nq)):
-        _q_end += w[_j1030]*fq[_j1030]
-    _d_q_end__q_r = 0.0
-    for _j1031 in range(int(nq)):
-        _d_q_end__q_r += w[_j1031]*d_fq__q_r[_j1031]
-    _d_q_end__q_th = 0.0
-    for _j1032 in range(int(nq)):
-        _d_q_end__q_th += w[_j1032]*d_fq__q_th[_j1032]
-    _d_q_end__q_thd = 0.0
-    for _j1033 in range(int(nq)):
-        _d_q_end__q_thd += w[_j1033]*d_fq__q_thd[_j1033]
-    _d_q_end__k_d = 0.0
-    for _j1034 in range(int(nq)):
-        _d_q_end__k_d += w[_j1034]*d_fq__k_d[_j1034]
-    _d_q_end__guess_q_th = 0.0
-    for _j1035 in range(int(nq)):
-        _d_q_end__guess_q_th += w[_j1035]*d_fq__guess_q_th[_j1035]
-    _d_q_end__guess_q_thd = 0.0
-    for _j1036 in range(int(nq)):
-        _d_q_end__guess_q_thd += w[_j1036]*d_fq__guess_q_thd[_j1036]
-    _p_end = 0.0
-    for _j1037 in range(int(nq)):
-        _p_end += w[_j1037]*fp[_j1037]
-    _d_p_end__q_r = 0.0
-    for _j1038 in range(int(nq)):
-        _d_p_end__q_r += w[_j1038]*d_fp__q_r[_j1038]
-    _d_p_end__q_th = 0.0
-    for _j1039 in range(int(nq)):
-        _d_p_end__q_th += w[_j1039]*d_fp__q_th[_j1039]
-    _d_p_end__q_thd = 0.0
-    for _j1040 in range(int(nq)):
-        _d_p_end__q_thd += w[_j1040]*d_fp__q_thd[_j1040]
-    _d_p_end__k_d = 0.0
-    for _j1041 in range(int(nq)):
-        _d_p_end__k_d += w[_j1041]*d_fp__k_d[_j1041]
-    _d_p_end__guess_q_th = 0.0
-    for _j1042 in range(int(nq)):
-        _d_p_end__guess_q_th += w[_j1042]*d_fp__guess_q_th[_j1042]
-    _d_p_end__guess_q_thd = 0.0
-    for _j1043 in range(int(nq)):
-        _d_p_end__guess_q_thd += w[_j1043]*d_fp__guess_q_thd[_j1043]
-    _work = 0.0
-    for _j1044 in range(int(nq)):
-        _work += w1[_j1044]*F[_j1044]
-    _d_work__q_r = 0.0
-    for _j1045 in range(int(nq)):
-        _d_work__q_r += w1[_j1045]*d_F__q_r[_j1045]
-    _d_work__q_th = 0.0
-    for _j1046 in range(int(nq)):
-        _d_work__q_th += w1[_j1046]*d_F__q_th[_j1046]
-    _d_work__q_thd = 0.0
-    for _j1047 in range(int(nq)):
-        _d_work__q_thd += w1[_j1047]*d_F__q_thd[_j1047]
-    _d_work__k_d = 0.0
-    for _j1048 in range(int(nq)):
-        _d_work__k_d += w1[_j1048]*d_F__k_d[_j1048]
-    _d_work__guess_q_th = 0.0
-    for _j1049 in range(int(nq)):
-        _d_work__guess_q_th += w1[_j1049]*d_F__guess_q_th[_j1049]
-    _d_work__guess_q_thd = 0.0
-    for _j1050 in range(int(nq)):
-        _d_work__guess_q_thd += w1[_j1050]*d_F__guess_q_thd[_j1050]
+        _d_t_end__q_r += w[_j1023]*d_ft__q_r[_j1023]
+        _d_t_end__q_th += w[_j1023]*d_ft__q_th[_j1023]
+        _d_t_end__q_thd += w[_j1023]*d_ft__q_thd[_j1023]
+        _d_t_end__k_d += w[_j1023]*d_ft__k_d[_j1023]
+        _d_t_end__guess_q_th += w[_j1023]*d_ft__guess_q_th[_j1023]
+        _d_t_end__guess_q_thd += w[_j1023]*d_ft__guess_q_thd[_j1023]
+        _q_end += w[_j1023]*fq[_j1023]
+        _d_q_end__q_r += w[_j1023]*d_fq__q_r[_j1023]
+        _d_q_end__q_th += w[_j1023]*d_fq__q_th[_j1023]
+        _d_q_end__q_thd += w[_j1023]*d_fq__q_thd[_j1023]
+        _d_q_end__k_d += w[_j1023]*d_fq__k_d[_j1023]
+        _d_q_end__guess_q_th += w[_j1023]*d_fq__guess_q_th[_j1023]
+        _d_q_end__guess_q_thd += w[_j1023]*d_fq__guess_q_thd[_j1023]
+        _p_end += w[_j1023]*fp[_j1023]
+        _d_p_end__q_r += w[_j1023]*d_fp__q_r[_j1023]
+        _d_p_end__q_th += w[_j1023]*d_fp__q_th[_j1023]
+        _d_p_end__q_thd += w[_j1023]*d_fp__q_thd[_j1023]
+        _d_p_end__k_d += w[_j1023]*d_fp__k_d[_j1023]
+        _d_p_end__guess_q_th += w[_j1023]*d_fp__guess_q_th[_j1023]
+        _d_p_end__guess_q_thd += w[_j1023]*d_fp__guess_q_thd[_j1023]
+        _work += w1[_j1023]*F[_j1023]
+        _d_work__q_r += w1[_j1023]*d_F__q_r[_j1023]
+        _d_work__q_th += w1[_j1023]*d_F__q_th[_j1023]
+        _d_work__q_thd += w1[_j1023]*d_F__q_thd[_j1023]
+        _d_work__k_d += w1[_j1023]*d_F__k_d[_j1023]
+        _d_work__guess_q_th += w1[_j1023]*d_F__guess_q_th[_j1023]
+        _d_work__guess_q_thd += w1[_j1023]*d_F__guess_q_thd[_j1023]
     # p_r_lo^2 = 4 m D int_0^1 F_r u du > 0
     if not ((_work > 0.0)):
         return fail(out, STATUS_NO_LIFTOFF)

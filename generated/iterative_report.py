@@ -16,7 +16,7 @@
 #   gravity_type3.py sha256:6c299a7bffcc2197
 #   gravity_type4.py sha256:78a8ace9d2aef2ce
 #   gravity_type5.py sha256:f0af2779ab7a22f1
-#   iterative.py sha256:363c44dec9e43e11
+#   iterative.py sha256:5d15c297562fa6ba
 # ----------------------------------------------------------------------------------------------
 """Iterative stance map (Schwind and Koditschek, as printed) (report section 3.2): stance, state-at-time and
 apex-return kernels."""

@@ -15,8 +15,8 @@
 #   gravity_type3.py sha256:6c299a7bffcc2197
 #   gravity_type4.py sha256:78a8ace9d2aef2ce
 #   gravity_type5.py sha256:f0af2779ab7a22f1
-#   iterative.py sha256:363c44dec9e43e11
-#   iterative_report.py sha256:5c829098a3fd1a2e
+#   iterative.py sha256:5d15c297562fa6ba
+#   iterative_report.py sha256:092c9918552f2101
 # ----------------------------------------------------------------------------------------------
 """Iterative compression half as printed (touchdown to bottom, k_c) (report section 5.2.1): touchdown ->
 bottom."""

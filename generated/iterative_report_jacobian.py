@@ -16,7 +16,7 @@
 #   gravity_type3_jacobian.py sha256:b6ee937e6eb7580e
 #   gravity_type4_jacobian.py sha256:4d8527bb3f9a9320
 #   gravity_type5_jacobian.py sha256:3274b0353ed302fb
-#   iterative_jacobian.py sha256:accc11df0062ba1a
+#   iterative_jacobian.py sha256:0b066bd0eadb6d53
 # ----------------------------------------------------------------------------------------------
 """Derivatives (forward mode, derive/tangent.py) of the kernels of module iterative_report: JVP kernels, and
 for a map its stance and apex-return Jacobians."""
